@@ -1,0 +1,113 @@
+#include "mesh/surface_mesh.h"
+
+#include <algorithm>
+#include <limits>
+
+#include <OpenMesh/Core/System/omstream.hh>
+
+namespace grass::core {
+
+glm::vec3 toGlm(const OpenMesh::Vec3f& v) { return {v[0], v[1], v[2]}; }
+glm::vec2 toGlm(const OpenMesh::Vec2f& v) { return {v[0], v[1]}; }
+
+std::uint32_t SurfaceMeshBuilder::addVertex(glm::vec3 position, glm::vec3 normal, glm::vec2 uv) {
+    const auto vh = mMesh.add_vertex(OpenMesh::Vec3f(position.x, position.y, position.z));
+    mMesh.set_normal(vh, OpenMesh::Vec3f(normal.x, normal.y, normal.z));
+    mMesh.set_texcoord2D(vh, OpenMesh::Vec2f(uv.x, uv.y));
+    return static_cast<std::uint32_t>(vh.idx());
+}
+
+void SurfaceMeshBuilder::addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    if (a == b || b == c || a == c) {
+        ++mDegenerate;
+        return;
+    }
+    const SurfaceMesh::VertexHandle handles[3] = {
+        mMesh.vertex_handle(static_cast<int>(a)), mMesh.vertex_handle(static_cast<int>(b)),
+        mMesh.vertex_handle(static_cast<int>(c))};
+    // OpenMesh logs "complex edge" when it refuses a face; the refusal is handled below, so
+    // the log line would only alarm the user.
+    omerr().disable();
+    const bool added = mMesh.add_face(handles[0], handles[1], handles[2]).is_valid();
+    omerr().enable();
+    if (added) return;
+    SurfaceMesh::VertexHandle copies[3];
+    for (int i = 0; i < 3; ++i) {
+        copies[i] = mMesh.add_vertex(mMesh.point(handles[i]));
+        mMesh.set_normal(copies[i], mMesh.normal(handles[i]));
+        mMesh.set_texcoord2D(copies[i], mMesh.texcoord2D(handles[i]));
+    }
+    mMesh.add_face(copies[0], copies[1], copies[2]);
+    ++mDuplicated;
+}
+
+double surfaceArea(const SurfaceMesh& mesh) {
+    double area = 0.0;
+    for (const auto fh : mesh.faces()) {
+        auto fv = mesh.cfv_iter(fh);
+        const glm::dvec3 a = toGlm(mesh.point(*fv++));
+        const glm::dvec3 b = toGlm(mesh.point(*fv++));
+        const glm::dvec3 c = toGlm(mesh.point(*fv));
+        area += 0.5 * glm::length(glm::cross(b - a, c - a));
+    }
+    return area;
+}
+
+Bounds meshBounds(const SurfaceMesh& mesh) {
+    if (mesh.n_vertices() == 0) return {};
+    Bounds bounds{glm::vec3(std::numeric_limits<float>::max()),
+                  glm::vec3(std::numeric_limits<float>::lowest())};
+    for (const auto vh : mesh.vertices()) {
+        const glm::vec3 p = toGlm(mesh.point(vh));
+        bounds.min = glm::min(bounds.min, p);
+        bounds.max = glm::max(bounds.max, p);
+    }
+    return bounds;
+}
+
+void computeAreaWeightedNormals(SurfaceMesh& mesh) {
+    std::vector<glm::vec3> sums(mesh.n_vertices(), glm::vec3(0.0f));
+    for (const auto fh : mesh.faces()) {
+        SurfaceMesh::VertexHandle v[3];
+        int i = 0;
+        for (const auto vh : mesh.fv_range(fh)) v[i++] = vh;
+        const glm::vec3 a = toGlm(mesh.point(v[0]));
+        const glm::vec3 b = toGlm(mesh.point(v[1]));
+        const glm::vec3 c = toGlm(mesh.point(v[2]));
+        const glm::vec3 weighted = glm::cross(b - a, c - a);  // length = 2·area
+        for (const auto vh : v) sums[static_cast<std::size_t>(vh.idx())] += weighted;
+    }
+    for (const auto vh : mesh.vertices()) {
+        const glm::vec3 sum = sums[static_cast<std::size_t>(vh.idx())];
+        const float length = glm::length(sum);
+        const glm::vec3 n = length > 0.0f ? sum / length : glm::vec3(0, 1, 0);
+        mesh.set_normal(vh, OpenMesh::Vec3f(n.x, n.y, n.z));
+    }
+}
+
+void generatePlanarUVs(SurfaceMesh& mesh) {
+    const Bounds bounds = meshBounds(mesh);
+    const glm::vec3 size = bounds.size();
+    // The two axes with the largest extent span the projection plane.
+    int axes[3] = {0, 1, 2};
+    std::sort(axes, axes + 3, [&](int l, int r) { return size[l] > size[r]; });
+    const float scale = size[axes[0]] > 0.0f ? 1.0f / size[axes[0]] : 1.0f;
+    for (const auto vh : mesh.vertices()) {
+        const glm::vec3 p = toGlm(mesh.point(vh)) - bounds.min;
+        mesh.set_texcoord2D(vh, OpenMesh::Vec2f(p[axes[0]] * scale, p[axes[1]] * scale));
+    }
+}
+
+std::vector<std::array<std::uint32_t, 3>> triangleIndices(const SurfaceMesh& mesh) {
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    triangles.reserve(mesh.n_faces());
+    for (const auto fh : mesh.faces()) {
+        std::array<std::uint32_t, 3> t{};
+        int i = 0;
+        for (const auto vh : mesh.fv_range(fh)) t[static_cast<std::size_t>(i++)] = static_cast<std::uint32_t>(vh.idx());
+        triangles.push_back(t);
+    }
+    return triangles;
+}
+
+}  // namespace grass::core

@@ -1,0 +1,69 @@
+// SurfaceMesh: the triangle mesh grass grows on (SPEC §2), an OpenMesh TriMesh with per-vertex
+// position, normal and UV0. World units are the source file's (metres for glTF). Vertices are
+// not welded: a glTF vertex with its own normal/UV stays its own vertex, as the file has it.
+#pragma once
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <array>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace grass::core {
+
+struct SurfaceMeshTraits : public OpenMesh::DefaultTraits {
+    using Point = OpenMesh::Vec3f;
+    using Normal = OpenMesh::Vec3f;
+    using TexCoord2D = OpenMesh::Vec2f;
+    VertexAttributes(OpenMesh::Attributes::Normal | OpenMesh::Attributes::TexCoord2D);
+};
+
+using SurfaceMesh = OpenMesh::TriMesh_ArrayKernelT<SurfaceMeshTraits>;
+
+struct Bounds {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+    glm::vec3 centre() const { return 0.5f * (min + max); }
+    glm::vec3 size() const { return max - min; }
+    bool operator==(const Bounds&) const = default;
+};
+
+// Builds a SurfaceMesh from a triangle soup. OpenMesh refuses faces that would make the mesh
+// non-manifold (real files have such faces); those triangles get their own copies of their
+// three vertices, so nothing a file contains is dropped. Degenerate triangles (a repeated
+// index) have no area and are skipped and counted.
+class SurfaceMeshBuilder {
+public:
+    std::uint32_t addVertex(glm::vec3 position, glm::vec3 normal, glm::vec2 uv);
+    void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+    std::size_t degenerateTriangles() const { return mDegenerate; }
+    std::size_t duplicatedForManifold() const { return mDuplicated; }
+    SurfaceMesh& mesh() { return mMesh; }
+    SurfaceMesh take() { return std::move(mMesh); }
+
+private:
+    SurfaceMesh mMesh;
+    std::size_t mDegenerate = 0;
+    std::size_t mDuplicated = 0;
+};
+
+glm::vec3 toGlm(const OpenMesh::Vec3f& v);
+glm::vec2 toGlm(const OpenMesh::Vec2f& v);
+
+// Sum of triangle areas, in squared file units.
+double surfaceArea(const SurfaceMesh& mesh);
+Bounds meshBounds(const SurfaceMesh& mesh);
+
+// Vertex normals as the area-weighted sum of the adjacent face normals (cross products are
+// already area-weighted). For meshes that come without normals.
+void computeAreaWeightedNormals(SurfaceMesh& mesh);
+
+// UVs for meshes that come without UV0. Scheme: planar projection onto the two largest axes
+// of the bounding box, scaled by the largest of them so texels stay square, in [0, 1]².
+// Documented in docs/meshes.md.
+void generatePlanarUVs(SurfaceMesh& mesh);
+
+// The three vertex indices of every face, in face order: what GPU index buffers take.
+std::vector<std::array<std::uint32_t, 3>> triangleIndices(const SurfaceMesh& mesh);
+
+}  // namespace grass::core

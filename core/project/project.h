@@ -1,0 +1,106 @@
+// Project: everything a grass scene is, as stored in projects/<name>/project.json (issue 3,
+// SPEC §12). A versioned JSON document: {"format": "grass-project", "version": 1, ...}. Asset
+// paths are relative to the project folder and may not leave it. Load validates every field
+// and names the file, the JSON path and the problem; save is atomic; load → save → load gives
+// an identical document. Field reference: docs/project-format.md.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "mesh/procedural.h"
+#include "scatter/scatter.h"
+#include "util/result.h"
+
+namespace grass::core {
+
+inline constexpr int PROJECT_FORMAT_VERSION = 1;
+
+// Where the surface comes from: a procedural shape by name, or a glTF file.
+struct MeshSource {
+    bool isFile = false;
+    std::string file;                  // relative to the project folder (when isFile)
+    ProceduralMeshParams procedural;   // (when !isFile)
+    bool operator==(const MeshSource&) const = default;
+};
+
+struct GrassLayer {
+    std::string name = "grass";
+    ScatterParams scatter;
+    std::string densityMap;            // relative path, empty = uniform
+    glm::vec3 rootColor{0.10f, 0.28f, 0.05f};  // linear RGB
+    glm::vec3 tipColor{0.45f, 0.70f, 0.20f};
+    bool operator==(const GrassLayer&) const = default;
+};
+
+struct CameraDesc {
+    std::string name = "default";
+    glm::vec3 position{8.0f, 5.0f, 8.0f};
+    glm::vec3 target{0.0f};
+    float fovYDeg = 45.0f;
+    bool operator==(const CameraDesc&) const = default;
+};
+
+struct SunDesc {
+    glm::vec3 direction{-0.4f, -1.0f, -0.3f};  // direction the light travels (normalized on use)
+    glm::vec3 color{1.0f, 0.96f, 0.88f};
+    float intensity = 1.0f;
+    bool operator==(const SunDesc&) const = default;
+};
+
+enum class GeometryPath { Auto, Tessellation, Strips };
+
+struct RenderSettings {
+    int width = 1280;
+    int height = 720;
+    GeometryPath geometry = GeometryPath::Auto;  // Auto: strips on software GL, tessellation on GPUs
+    int tessLevel = 8;          // tessellation level along the blade (1..64)
+    int stripSegments = 8;      // segments of an instanced strip (1..32)
+    int msaaSamples = 4;        // 0, 1, 2, 4 or 8
+    glm::vec3 skyColor{0.55f, 0.70f, 0.90f};
+    glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
+    std::uint32_t patchSize = 256;  // blades per patch, a multiple of 32 (the cull work-group)
+    bool operator==(const RenderSettings&) const = default;
+};
+
+struct Project {
+    std::string name = "untitled";
+    std::uint64_t seed = 1;
+    MeshSource mesh;
+    std::vector<GrassLayer> layers{GrassLayer{}};
+    std::vector<CameraDesc> cameras{CameraDesc{}};
+    SunDesc sun;
+    RenderSettings render;
+    bool operator==(const Project&) const = default;
+};
+
+std::string_view geometryPathName(GeometryPath path);
+Result<GeometryPath> parseGeometryPath(std::string_view name);  // "auto" | "tess" | "strips"
+
+// Load: `path` is a project folder (reads path/project.json) or a .json file.
+// On success, `folder` receives the folder assets are relative to.
+struct LoadedProject {
+    Project project;
+    std::filesystem::path folder;
+    std::filesystem::path file;
+};
+Result<LoadedProject> loadProject(const std::filesystem::path& path);
+
+// Parses a document already in memory; `sourceName` names it in errors.
+Result<Project> parseProject(std::string_view jsonText, const std::string& sourceName);
+// The full document (every field, defaults included), 2-space indented, newline-terminated.
+std::string serializeProject(const Project& project);
+// Atomic save to a .json file.
+Result<void> saveProject(const Project& project, const std::filesystem::path& file);
+
+// Resolves an asset path relative to the project folder; refuses absolute paths and paths that
+// leave the folder (".."), naming the JSON field.
+Result<std::filesystem::path> resolveAssetPath(const std::filesystem::path& folder,
+                                               const std::string& relative,
+                                               const std::string& fieldPath);
+
+}  // namespace grass::core

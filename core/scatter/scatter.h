@@ -1,0 +1,50 @@
+// Scattering blades over any triangle mesh (SPEC §2). Two distributions, combinable:
+//  - uniform: expected count = density × ∫ map dA; area-weighted triangle pick, uniform
+//    barycentrics;
+//  - clumps: centres by Poisson-disk sampling on the surface (minimum distance clumpSpacing),
+//    blades scattered around each centre within clumpRadius and projected back to the surface.
+// A density map in UV space (values in [0, 1]) scales the local density. Deterministic per seed.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "blade/blade.h"
+#include "maps/map_image.h"
+#include "mesh/surface_mesh.h"
+
+namespace grass::core {
+
+struct BladeRanges {
+    float heightMin = 0.25f;  // metres
+    float heightMax = 0.55f;
+    float widthMin = 0.012f;  // metres, full blade width is 2w at the root (SPEC §7 c ± w·t1)
+    float widthMax = 0.022f;
+    float stiffnessMin = 2.0f;
+    float stiffnessMax = 6.0f;
+    bool operator==(const BladeRanges&) const = default;
+};
+
+struct ScatterParams {
+    float density = 300.0f;        // uniform blades per square metre (0 = none)
+    float clumpSpacing = 0.0f;     // Poisson-disk minimum distance between clump centres (0 = none)
+    int bladesPerClump = 12;
+    float clumpRadius = 0.15f;     // metres
+    BladeRanges blade;
+    bool operator==(const ScatterParams&) const = default;
+};
+
+// A scattered blade, before patching: the GPU layout plus the surface point it came from.
+struct ScatterResult {
+    std::vector<Blade> blades;
+    std::vector<glm::vec2> uvs;        // UV0 of each blade's root, same order as blades
+    std::size_t uniformCount = 0;       // blades from the uniform distribution
+    std::size_t clumpCount = 0;         // number of clump centres
+    std::vector<glm::vec3> clumpCentres;
+};
+
+// densityMap may be null (density 1 everywhere).
+ScatterResult scatterBlades(const SurfaceMesh& mesh, const ScatterParams& params,
+                            const MapImage* densityMap, std::uint64_t seed);
+
+}  // namespace grass::core

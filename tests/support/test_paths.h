@@ -1,0 +1,13 @@
+// Where tests find the source tree (projects, shaders) and where they may write scratch files.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace grass::test {
+
+std::filesystem::path sourceDir();
+// A fresh, empty folder for one test: <build>/test-tmp/<name>.
+std::filesystem::path scratchDir(const std::string& name);
+
+}  // namespace grass::test
