@@ -19,8 +19,8 @@ namespace grass::core {
 
 struct GltfImport {
     SurfaceMesh mesh;
-    bool hasNormals = false;  // every merged primitive carried NORMAL
-    bool hasUv = false;       // every merged primitive carried TEXCOORD_0
+    bool hasNormals = false;         // every merged primitive carried NORMAL
+    bool hasUv = false;              // every merged primitive carried TEXCOORD_0
     std::vector<std::string> notes;  // things skipped or generated, one line each
 };
 

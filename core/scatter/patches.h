@@ -27,6 +27,10 @@ struct PatchedBlades {
     std::vector<std::uint32_t> sourceIndex;  // blade i came from input blade sourceIndex[i] (padding: UINT32_MAX)
 };
 
+// The 63-bit Morton code of p quantised to 21 bits per axis within box (clamped to it): the
+// order of blades inside a patch.
+std::uint64_t mortonCode(glm::vec3 p, const Bounds& box);
+
 // patchSize must be > 0; an empty input gives no patches.
 PatchedBlades buildPatches(const std::vector<Blade>& blades, std::uint32_t patchSize);
 

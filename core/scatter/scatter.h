@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "blade/blade.h"
@@ -41,7 +42,12 @@ struct ScatterResult {
     std::size_t uniformCount = 0;       // blades from the uniform distribution
     std::size_t clumpCount = 0;         // number of clump centres
     std::vector<glm::vec3> clumpCentres;
+    std::vector<std::string> warnings;  // e.g. a clamped huge request, for the caller to print
 };
+
+// The most blades one call produces: a guard against a typo'd density (50 M blades are 3.2 GB
+// of GPU data), reported through ScatterResult::warnings.
+inline constexpr std::size_t MAX_SCATTER_BLADES = 50'000'000;
 
 // densityMap may be null (density 1 everywhere).
 ScatterResult scatterBlades(const SurfaceMesh& mesh, const ScatterParams& params,

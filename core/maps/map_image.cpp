@@ -1,0 +1,242 @@
+#include "maps/map_image.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <exception>
+#include <string>
+
+#include "util/atomic_file.h"
+
+namespace grass::core {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Past this, a "map" is a mistake (a 16k² float map is already 1 GiB); refused before any
+// pixel is allocated.
+constexpr int MAX_MAP_SIDE = 16384;
+// Rows read at a time from scanline files, so an RGBA file never needs its whole float copy.
+constexpr int ROWS_PER_BAND = 256;
+// Rec. 709 luma weights.
+constexpr float LUMA_R = 0.2126f, LUMA_G = 0.7152f, LUMA_B = 0.0722f;
+
+// OIIO's messages can span lines; our errors are one line (STYLE.md §4).
+std::string firstLine(std::string text) {
+    const auto end = text.find_first_of("\r\n");
+    if (end != std::string::npos)
+        text.resize(end);
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+        text.pop_back();
+    return text.empty() ? "unknown reason" : text;
+}
+
+std::string lowerExtension(const fs::path& file) {
+    std::string ext = file.extension().string();
+    for (char& c : ext)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+// Folds `channels` interleaved floats per pixel into one value per pixel, appended to `out`.
+void appendGrey(const std::vector<float>& pixels, int channels, std::vector<float>& out) {
+    const auto stride = static_cast<std::size_t>(channels);
+    for (std::size_t i = 0; i + stride <= pixels.size(); i += stride) {
+        out.push_back(channels >= 3
+                          ? LUMA_R * pixels[i] + LUMA_G * pixels[i + 1] + LUMA_B * pixels[i + 2]
+                          : pixels[i]);
+    }
+}
+
+Result<MapImage> readMap(const fs::path& file) {
+    const std::string name = file.string();
+    std::error_code ec;
+    if (!fs::exists(file, ec))
+        return makeError(name, "file not found");
+    if (fs::is_directory(file, ec))
+        return makeError(name, "is a folder, not an image");
+    // The stored values, not colour premultiplied by alpha: alpha is not density.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(name, &config);
+    if (!in)
+        return makeError(name, "not an image OpenImageIO can read: " + firstLine(OIIO::geterror()));
+    const OIIO::ImageSpec spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+        return makeError(name, "the image has zero size (" + std::to_string(spec.width) + "×" +
+                                   std::to_string(spec.height) + ", " +
+                                   std::to_string(spec.nchannels) + " channels)");
+    if (spec.width > MAX_MAP_SIDE || spec.height > MAX_MAP_SIDE)
+        return makeError(name, "the image is " + std::to_string(spec.width) + "×" +
+                                   std::to_string(spec.height) + "; maps may be at most " +
+                                   std::to_string(MAX_MAP_SIDE) + "×" +
+                                   std::to_string(MAX_MAP_SIDE) + " texels");
+    if (spec.depth > 1)
+        return makeError(name, "a volume image cannot be a map");
+
+    MapImage map;
+    map.width = spec.width;
+    map.height = spec.height;
+    // Only the channels we use: grey, or R, G, B for luminance (alpha is not density).
+    const int channels = spec.nchannels >= 3 ? 3 : 1;
+    if (spec.nchannels == 2)
+        map.warnings.push_back(name + ": 2 channels (grey + alpha?); using the first");
+    if (spec.nchannels >= 3)
+        map.warnings.push_back(name + ": " + std::to_string(spec.nchannels) +
+                               " channels converted to luminance (Rec. 709 weights on the stored "
+                               "values" +
+                               std::string(spec.nchannels > 3 ? "; alpha ignored)" : ")"));
+    const auto rowFloats =
+        static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(channels);
+    map.texels.reserve(static_cast<std::size_t>(spec.width) *
+                       static_cast<std::size_t>(spec.height));
+    std::vector<float> band;
+    if (spec.tile_width == 0) {
+        for (int row = 0; row < spec.height; row += ROWS_PER_BAND) {
+            const int rows = std::min(ROWS_PER_BAND, spec.height - row);
+            band.assign(rowFloats * static_cast<std::size_t>(rows), 0.0f);
+            if (!in->read_scanlines(0, 0, spec.y + row, spec.y + row + rows, 0, 0, channels,
+                                    OIIO::TypeDesc::FLOAT, band.data()))
+                return makeError(name, "cannot read the pixels: " + firstLine(in->geterror()));
+            appendGrey(band, channels, map.texels);
+        }
+    } else {
+        band.assign(rowFloats * static_cast<std::size_t>(spec.height), 0.0f);
+        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, band.data()))
+            return makeError(name, "cannot read the pixels: " + firstLine(in->geterror()));
+        appendGrey(band, channels, map.texels);
+    }
+    in->close();
+
+    bool clamped = false;
+    for (std::size_t i = 0; i < map.texels.size(); ++i) {
+        float& t = map.texels[i];
+        if (!std::isfinite(t)) {
+            const std::size_t x = i % static_cast<std::size_t>(map.width);
+            const std::size_t y = i / static_cast<std::size_t>(map.width);
+            return makeError(name, std::string("texel (") + std::to_string(x) + ", " +
+                                       std::to_string(y) + ") is " +
+                                       (std::isnan(t) ? "NaN" : "infinite") +
+                                       "; maps must hold finite values in [0, 1]");
+        }
+        if (t < 0.0f || t > 1.0f) {
+            clamped = true;
+            t = std::clamp(t, 0.0f, 1.0f);
+        }
+    }
+    if (clamped)
+        map.warnings.push_back(name + ": values outside [0, 1] were clamped");
+    return map;
+}
+
+Result<void> writeMap(const MapImage& map, const fs::path& file, MapSampleFormat format) {
+    const std::string name = file.string();
+    if (map.width <= 0 || map.height <= 0 ||
+        map.texels.size() !=
+            static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height))
+        return makeError(name, "internal: the map's size does not match its texels");
+    const std::string ext = lowerExtension(file);
+    const bool png = ext == ".png", exr = ext == ".exr", tiff = ext == ".tif" || ext == ".tiff";
+    if (format == MapSampleFormat::Auto)
+        format = exr ? MapSampleFormat::Float
+                     : (png || tiff ? MapSampleFormat::UInt16 : MapSampleFormat::UInt8);
+    if (png && format == MapSampleFormat::Float)
+        return makeError(name, "PNG holds 8 or 16 bits per texel, not float; use .exr or .tif");
+    if (exr && format != MapSampleFormat::Float)
+        return makeError(name, "EXR holds float texels; use .png or .tif for 8 or 16 bits");
+    const OIIO::TypeDesc type = format == MapSampleFormat::Float    ? OIIO::TypeDesc::FLOAT
+                                : format == MapSampleFormat::UInt16 ? OIIO::TypeDesc::UINT16
+                                                                    : OIIO::TypeDesc::UINT8;
+    std::error_code ec;
+    if (file.has_parent_path() && !fs::is_directory(file.parent_path(), ec))
+        return makeError(name, "the folder " + file.parent_path().string() + " does not exist");
+
+    const fs::path temporary = temporaryPathFor(file);
+    auto out = OIIO::ImageOutput::create(name);
+    if (!out)
+        return makeError(name, "cannot write this image format (use .png, .tif or .exr): " +
+                                   firstLine(OIIO::geterror()));
+    OIIO::ImageSpec spec(map.width, map.height, 1, type);
+    // The texels are data (density, soil, light), not colour: no transfer curve.
+    spec.attribute("oiio:ColorSpace", "Linear");
+    if (exr)
+        spec.attribute("compression", "zip");
+    if (!out->open(temporary.string(), spec)) {
+        fs::remove(temporary, ec);
+        return makeError(name, "cannot write: " + firstLine(out->geterror()));
+    }
+    // Clamp on the way out so the integer formats never wrap or saturate unexpectedly.
+    std::vector<float> clamped(map.texels.size());
+    for (std::size_t i = 0; i < clamped.size(); ++i) {
+        const float t = map.texels[i];
+        clamped[i] = t == t ? std::clamp(t, 0.0f, 1.0f) : 0.0f;
+    }
+    const bool written = out->write_image(OIIO::TypeDesc::FLOAT, clamped.data());
+    const bool closed = out->close();
+    if (!written || !closed) {
+        const std::string reason = firstLine(out->geterror());
+        out.reset();
+        fs::remove(temporary, ec);
+        return makeError(name, "write failed: " + reason);
+    }
+    out.reset();
+    return commitTemporaryFile(temporary, file);
+}
+
+}  // namespace
+
+float MapImage::sample(glm::vec2 uv) const {
+    if (width <= 0 || height <= 0 || texels.empty())
+        return 0.0f;
+    // Texel centres sit at (i + 0.5) / width; NaN coordinates read texel 0.
+    const auto coordinate = [](float t, int size) {
+        const float x = t * static_cast<float>(size) - 0.5f;
+        return std::clamp(x == x ? x : 0.0f, 0.0f, static_cast<float>(size - 1));
+    };
+    const float x = coordinate(uv.x, width), y = coordinate(uv.y, height);
+    const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+    const int x1 = std::min(x0 + 1, width - 1), y1 = std::min(y0 + 1, height - 1);
+    const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
+    const float top = at(x0, y0) + fx * (at(x1, y0) - at(x0, y0));
+    const float bottom = at(x0, y1) + fx * (at(x1, y1) - at(x0, y1));
+    return top + fy * (bottom - top);
+}
+
+float MapImage::maxValue() const {
+    float best = 0.0f;
+    for (const float t : texels)
+        best = std::max(best, t);
+    return best;
+}
+
+MapImage makeConstantMap(int width, int height, float value) {
+    MapImage map;
+    map.width = std::max(width, 0);
+    map.height = std::max(height, 0);
+    const float v = value == value ? std::clamp(value, 0.0f, 1.0f) : 0.0f;
+    map.texels.assign(static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height),
+                      v);
+    return map;
+}
+
+Result<MapImage> loadMapImage(const fs::path& file) {
+    // OIIO and the standard library may throw (bad_alloc, filesystem errors); nothing escapes.
+    try {
+        return readMap(file);
+    } catch (const std::exception& e) {
+        return makeError(file.string(), std::string("cannot read the map: ") + e.what());
+    }
+}
+
+Result<void> saveMapImage(const MapImage& map, const fs::path& file, MapSampleFormat format) {
+    try {
+        return writeMap(map, file, format);
+    } catch (const std::exception& e) {
+        return makeError(file.string(), std::string("cannot write the map: ") + e.what());
+    }
+}
+
+}  // namespace grass::core

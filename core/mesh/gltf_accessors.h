@@ -1,0 +1,47 @@
+// Reading glTF 2.0 accessors and triangle primitives out of a parsed tinygltf::Model, with every
+// index and byte range checked before memory is touched (the file is outside input). Values
+// come back in the file's own space (node transforms are applied by the caller). Internal to
+// the glTF loader (gltf_loader.cpp); errors carry no path, the loader adds the file's.
+// Besides the core types: KHR_mesh_quantization and EXT_mesh_gpu_instancing.
+#pragma once
+
+#include <tiny_gltf.h>
+#include <array>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "util/result.h"
+
+namespace grass::core::gltf {
+
+// "mesh "Rock"" when the mesh has a name, else "mesh 3": how messages and notes name a mesh.
+std::string describeMesh(const tinygltf::Model& model, std::size_t meshIndex);
+
+// One triangle primitive, decoded: vertices as the accessors hold them, triangles as vertex
+// indices in the file's winding (strips and fans already unrolled, spec §3.7.2.1).
+struct PrimitiveData {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;  // empty when the primitive has no NORMAL
+    std::vector<glm::vec2> uvs;      // empty when the primitive has no TEXCOORD_0
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+// Decodes a primitive whose mode is TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN and which has a
+// POSITION attribute. `where` names it in messages: `mesh "Rock" primitive 0`. Accepts float
+// attributes, normalized integer TEXCOORD_0 and KHR_mesh_quantization's integer POSITION,
+// NORMAL and TEXCOORD_0; honours byteStride and sparse accessors. Errors: any index out of
+// range, an accessor reading past its bufferView or buffer, a non-finite position, attribute
+// counts that differ, a vertex index not below the vertex count.
+Result<PrimitiveData> readTrianglePrimitive(const tinygltf::Model& model,
+                                            const tinygltf::Primitive& primitive,
+                                            const std::string& where);
+
+// EXT_mesh_gpu_instancing: the instance transforms (T * R * S, each applied before the node's
+// world transform) listed by a node's extension object; `where` names the node in messages.
+Result<std::vector<glm::dmat4>> readInstanceTransforms(const tinygltf::Model& model,
+                                                       const tinygltf::Value& extension,
+                                                       const std::string& where);
+
+}  // namespace grass::core::gltf

@@ -1,0 +1,25 @@
+// Turning a glTF 2.0 file on disk into a tinygltf::Model for geometry import: picks .glb or
+// .gltf by the magic bytes, checks the GLB container, the JSON, asset.version and
+// extensionsRequired, and every buffer's URI (base64 data: URIs, or files that must stay in the
+// glTF file's folder) before tinygltf sees the file. tinygltf then reads only the buffer files
+// approved here (through our FsCallbacks) and decodes no image. Internal to the glTF loader.
+#pragma once
+
+#include <tiny_gltf.h>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "util/result.h"
+
+namespace grass::core::gltf {
+
+struct GltfSource {
+    tinygltf::Model model;  // images, textures, materials, animations, skins, cameras left out
+    std::vector<std::string> notes;  // things ignored, one line each
+};
+
+// Errors name `file` as given and say what is wrong in one line.
+Result<GltfSource> parseGltfFile(const std::filesystem::path& file);
+
+}  // namespace grass::core::gltf

@@ -1,0 +1,96 @@
+// Project files on disk: finding project.json, asset paths relative to its folder, atomic saves.
+// The JSON schema itself (both directions) is in project_json.cpp.
+#include "project/project.h"
+
+#include <system_error>
+
+#include "project/json_reader.h"
+#include "util/atomic_file.h"
+
+namespace grass::core {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* PROJECT_FILE_NAME = "project.json";
+
+}  // namespace
+
+Result<fs::path> resolveAssetPath(const fs::path& folder, const std::string& relative,
+                                  const std::string& fieldPath) {
+    if (relative.empty())
+        return makeError(fieldPath, "must name a file (got an empty path)");
+    if (relative.find('\0') != std::string::npos)
+        return makeError(fieldPath, "must not contain a NUL character");
+    // A backslash is a file-name character on Linux but a separator on Windows: refuse it so a
+    // project means the same file everywhere.
+    if (relative.find('\\') != std::string::npos)
+        return makeError(fieldPath, "must separate folders with '/', not '\\' (got " +
+                                        json::quote(relative) + ")");
+    const fs::path path(relative);
+    if (path.has_root_path())
+        return makeError(fieldPath, "must be relative to the project folder, not absolute (got " +
+                                        json::quote(relative) + ")");
+    // Lexical: "a/../b" is "b", "a/../../b" leaves the folder. Symbolic links are the
+    // user's own business.
+    const fs::path normal = path.lexically_normal();
+    if (!normal.empty() && *normal.begin() == "..")
+        return makeError(fieldPath, "leaves the project folder (got " + json::quote(relative) +
+                                        "); assets must sit inside it");
+    if (normal.empty() || normal == "." || !normal.has_filename())
+        return makeError(fieldPath,
+                         "must name a file, not a folder (got " + json::quote(relative) + ")");
+    return folder.empty() ? normal : folder / normal;
+}
+
+Result<LoadedProject> loadProject(const fs::path& path) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    LoadedProject loaded;
+    if (fs::is_directory(status)) {
+        loaded.folder = path;
+        loaded.file = path / PROJECT_FILE_NAME;
+        if (!fs::exists(loaded.file, ec))
+            return makeError(path.string(), std::string("this folder has no ") + PROJECT_FILE_NAME +
+                                                " (a project folder holds one)");
+    } else if (!fs::exists(status)) {
+        return makeError(path.string(), "no such project file or folder");
+    } else {
+        if (path.extension() != ".json")
+            return makeError(path.string(),
+                             "not a project: give a project folder or its .json file");
+        loaded.file = path;
+        loaded.folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    }
+    auto text = readFile(loaded.file);
+    if (!text)
+        return text.error();
+    auto project = parseProject(*text, loaded.file.string());
+    if (!project)
+        return project.error();
+    loaded.project = std::move(*project);
+    return loaded;
+}
+
+Result<void> saveProject(const Project& project, const fs::path& file) {
+    std::error_code ec;
+    if (fs::is_directory(file, ec))
+        return makeError(file.string(), std::string("is a folder; save to ") +
+                                            (file / PROJECT_FILE_NAME).string());
+    if (file.extension() != ".json")
+        return makeError(file.string(), "a project file name must end in .json");
+    const std::string text = serializeProject(project);
+    // Never write a file this build would refuse to load.
+    if (auto check = parseProject(text, file.string()); !check)
+        return makeError(check.error().path, "not saved: " + check.error().message);
+    if (file.has_parent_path()) {
+        fs::create_directories(file.parent_path(), ec);
+        if (ec)
+            return makeError(file.parent_path().string(),
+                             "cannot create the folder: " + ec.message());
+    }
+    return writeFileAtomic(file, text);
+}
+
+}  // namespace grass::core

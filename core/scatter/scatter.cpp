@@ -1,0 +1,148 @@
+#include "scatter/scatter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "scatter/poisson_disk.h"
+#include "scatter/surface_sampler.h"
+#include "util/rng.h"
+
+namespace grass::core {
+
+namespace {
+
+constexpr float TWO_PI = 6.28318530717958647692f;
+// Darts per point the surface can hold (poissonDiskCapacity): random sequential adsorption is
+// within a few per cent of jamming after ~30 darts per final point.
+constexpr double DARTS_PER_CAPACITY = 30.0;
+// Proposals per clump blade before a clump gives up: the sampler's acceptance rate is the
+// surface area inside the ball over the sum of its proposal domains, about 1/4 at worst for
+// ordinary meshes (a flat neighbourhood is ≥ πr²·¾ of a domain sum ≤ 3πr²).
+constexpr std::size_t ATTEMPTS_PER_CLUMP_BLADE = 64;
+
+// Separate streams: changing the clump settings leaves the uniform blades where they were,
+// which is what an artist tweaking one layer of a field expects.
+constexpr std::uint64_t STREAM_UNIFORM = 0;
+constexpr std::uint64_t STREAM_CLUMP_CENTRES = 1;
+constexpr std::uint64_t STREAM_CLUMP_BLADES = 2;
+
+float mapValue(const MapImage* map, glm::vec2 uv) {
+    if (map == nullptr || map->texels.empty()) return 1.0f;
+    return map->sample(uv);
+}
+
+void addBlade(ScatterResult& result, const SurfaceSample& at, const BladeRanges& ranges,
+              Rng& rng) {
+    const float h = rng.uniform(ranges.heightMin, ranges.heightMax);
+    const float w = rng.uniform(ranges.widthMin, ranges.widthMax);
+    const float s = rng.uniform(ranges.stiffnessMin, ranges.stiffnessMax);
+    const float theta = rng.uniform(0.0f, TWO_PI);
+    result.blades.push_back(makeRestBlade(at.position, at.normal, h, w, s, theta));
+    result.uvs.push_back(at.uv);
+}
+
+std::string countText(double count) {
+    return std::to_string(static_cast<unsigned long long>(std::llround(count)));
+}
+
+void scatterUniform(const SurfaceSampler& sampler, const ScatterParams& params,
+                    const MapImage* densityMap, std::uint64_t seed, ScatterResult& result) {
+    const double density = static_cast<double>(params.density);
+    if (!(density > 0.0) || !std::isfinite(density)) return;
+    const double expected = density * sampler.totalArea();
+    const double candidates = std::min(expected, static_cast<double>(MAX_SCATTER_BLADES));
+    if (expected > static_cast<double>(MAX_SCATTER_BLADES)) {
+        result.warnings.push_back("density × area asks for " + countText(expected) +
+                                  " blade candidates; clamped to " + countText(candidates) +
+                                  " (the limit per layer)");
+    }
+    // A map painted out everywhere keeps no candidate: skip drawing them.
+    if (densityMap != nullptr && !densityMap->texels.empty() && !(densityMap->maxValue() > 0.0f))
+        return;
+    const auto count = static_cast<std::size_t>(std::llround(candidates));
+    Rng rng(seed, STREAM_UNIFORM);
+    result.blades.reserve(count);
+    result.uvs.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const SurfaceSample at = sampler.sample(rng);
+        // Thinning by the map: a candidate survives with probability map(uv), so the expected
+        // count is density × ∫ map dA. Always draw, so the stream does not depend on the map.
+        const float keep = rng.uniform();
+        if (densityMap != nullptr && !(keep < mapValue(densityMap, at.uv))) continue;
+        addBlade(result, at, params.blade, rng);
+    }
+    result.uniformCount = result.blades.size();
+}
+
+void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params,
+                   const MapImage* densityMap, std::uint64_t seed, ScatterResult& result) {
+    const float spacing = params.clumpSpacing;
+    if (!(spacing > 0.0f) || !std::isfinite(spacing) || params.bladesPerClump <= 0) return;
+    const auto perClump = static_cast<std::size_t>(params.bladesPerClump);
+    const std::size_t budget = MAX_SCATTER_BLADES - std::min(MAX_SCATTER_BLADES, result.blades.size());
+    const std::size_t maxCentres = budget / perClump;
+    const double capacity = poissonDiskCapacity(sampler.totalArea(), spacing);
+    if (capacity * static_cast<double>(perClump) > static_cast<double>(budget)) {
+        result.warnings.push_back("clumps could reach " + countText(capacity * static_cast<double>(perClump)) +
+                                  " blades; stopping at " + countText(static_cast<double>(budget)) +
+                                  " (the limit per layer)");
+    }
+    if (maxCentres == 0) return;
+
+    // Centres over the whole surface, then thinned by the map: a subset keeps the minimum
+    // distance, and the expected clump count follows ∫ map dA (thinning the darts instead
+    // would saturate anyway and only tell 0 from non-0).
+    Rng centreRng(seed, STREAM_CLUMP_CENTRES);
+    PoissonDiskParams disk;
+    disk.minDistance = spacing;
+    disk.maxPoints = maxCentres;
+    disk.maxAttempts = static_cast<std::size_t>(
+        DARTS_PER_CAPACITY * std::min(capacity, static_cast<double>(maxCentres)) + 1.0);
+    const PoissonDiskResult centres = poissonDiskSample(sampler, disk, centreRng);
+
+    sampler.buildNeighbourhoodIndex();
+    result.blades.reserve(result.blades.size() + centres.points.size() * perClump);
+    result.uvs.reserve(result.blades.capacity());
+    Rng bladeRng(seed, STREAM_CLUMP_BLADES);
+    const float radius = std::isfinite(params.clumpRadius) ? std::max(params.clumpRadius, 0.0f) : 0.0f;
+    std::vector<SurfaceSample> around;
+    for (const SurfaceSample& centre : centres.points) {
+        const float centreValue = mapValue(densityMap, centre.uv);
+        const float keepCentre = bladeRng.uniform();
+        if (densityMap != nullptr && !(keepCentre < centreValue)) continue;
+        result.clumpCentres.push_back(centre.position);
+        around.clear();
+        if (radius > 0.0f) {
+            sampler.sampleNear(centre.position, radius, perClump, ATTEMPTS_PER_CLUMP_BLADE * perClump,
+                               bladeRng, around);
+        } else {
+            around.assign(perClump, centre);
+        }
+        for (const SurfaceSample& at : around) {
+            // Inside a clump the map thins relative to its centre: a blade survives with
+            // probability min(1, map(blade)/map(centre)), so the expected density is
+            // min(map(centre), map(blade)) ≈ map, and a clump at the edge of a painted-out area
+            // stops at that edge instead of spilling over it.
+            const float keep = bladeRng.uniform();
+            if (densityMap != nullptr && !(keep * centreValue < mapValue(densityMap, at.uv)))
+                continue;
+            addBlade(result, at, params.blade, bladeRng);
+        }
+    }
+    result.clumpCount = result.clumpCentres.size();
+}
+
+}  // namespace
+
+ScatterResult scatterBlades(const SurfaceMesh& mesh, const ScatterParams& params,
+                            const MapImage* densityMap, std::uint64_t seed) {
+    ScatterResult result;
+    SurfaceSampler sampler(mesh);
+    if (sampler.empty()) return result;
+    scatterUniform(sampler, params, densityMap, seed, result);
+    scatterClumps(sampler, params, densityMap, seed, result);
+    return result;
+}
+
+}  // namespace grass::core

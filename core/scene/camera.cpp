@@ -1,0 +1,72 @@
+#include "scene/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace grass::core {
+
+namespace {
+constexpr float MAX_PITCH = 1.553f;  // 89°: looking straight down flips the up vector
+}
+
+glm::vec3 OrbitCamera::position() const {
+    const float cp = std::cos(pitchRad);
+    return target + distance * glm::vec3(cp * std::sin(yawRad), std::sin(pitchRad), cp * std::cos(yawRad));
+}
+
+glm::mat4 OrbitCamera::view() const { return glm::lookAt(position(), target, glm::vec3(0, 1, 0)); }
+
+glm::mat4 OrbitCamera::projection(float aspect) const {
+    return glm::perspective(fovYRad, std::max(aspect, 1e-3f), nearPlane, farPlane);
+}
+
+void OrbitCamera::orbit(float dxPixels, float dyPixels) {
+    constexpr float RAD_PER_PIXEL = 0.005f;
+    yawRad -= dxPixels * RAD_PER_PIXEL;
+    pitchRad = std::clamp(pitchRad + dyPixels * RAD_PER_PIXEL, -MAX_PITCH, MAX_PITCH);
+}
+
+void OrbitCamera::zoom(float wheelSteps) {
+    // Multiplicative, so zooming feels the same at every scale.
+    distance = std::clamp(distance * std::pow(0.9f, wheelSteps), 1e-3f, 1e5f);
+}
+
+void OrbitCamera::pan(float dxPixels, float dyPixels, float viewportHeightPixels) {
+    const glm::mat4 v = view();
+    const glm::vec3 right(v[0][0], v[1][0], v[2][0]);
+    const glm::vec3 up(v[0][1], v[1][1], v[2][1]);
+    const float worldPerPixel = 2.0f * distance * std::tan(0.5f * fovYRad) / std::max(viewportHeightPixels, 1.0f);
+    target += (-dxPixels * right + dyPixels * up) * worldPerPixel;
+}
+
+OrbitCamera OrbitCamera::lookAt(glm::vec3 eye, glm::vec3 target, float fovYRad) {
+    OrbitCamera camera;
+    camera.target = target;
+    const glm::vec3 offset = eye - target;
+    camera.distance = std::max(glm::length(offset), 1e-3f);
+    camera.yawRad = std::atan2(offset.x, offset.z);
+    camera.pitchRad = std::clamp(std::asin(std::clamp(offset.y / camera.distance, -1.0f, 1.0f)),
+                                 -MAX_PITCH, MAX_PITCH);
+    camera.fovYRad = fovYRad;
+    camera.nearPlane = std::max(camera.distance * 1e-3f, 1e-4f);
+    camera.farPlane = camera.distance * 20.0f + 100.0f;
+    return camera;
+}
+
+OrbitCamera frameBounds(const Bounds& bounds, float fovYRad) {
+    OrbitCamera camera;
+    camera.target = bounds.centre();
+    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
+    camera.fovYRad = fovYRad;
+    // Distance at which the bounding sphere fits the vertical field of view, with a margin.
+    camera.distance = 1.1f * radius / std::sin(0.5f * fovYRad);
+    camera.yawRad = 0.785f;
+    camera.pitchRad = 0.5f;
+    camera.nearPlane = std::max(camera.distance - 2.0f * radius, camera.distance * 1e-3f);
+    camera.farPlane = camera.distance + 4.0f * radius;
+    return camera;
+}
+
+}  // namespace grass::core

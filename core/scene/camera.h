@@ -1,0 +1,37 @@
+// Cameras: an orbit camera (target, distance, yaw, pitch) for the editor's viewport and for
+// framing any mesh, and the view/projection matrices both renderers use. Right-handed, +Y up,
+// metres, angles in radians; projection to OpenGL clip space (z in [−1, 1]).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "mesh/surface_mesh.h"
+
+namespace grass::core {
+
+struct OrbitCamera {
+    glm::vec3 target{0.0f};
+    float distance = 10.0f;
+    float yawRad = 0.785f;    // about +Y, 0 looks along −Z from +Z
+    float pitchRad = 0.45f;   // above the horizon, clamped to (−89°, 89°)
+    float fovYRad = 0.785f;
+    float nearPlane = 0.05f;
+    float farPlane = 500.0f;
+
+    glm::vec3 position() const;
+    glm::mat4 view() const;
+    glm::mat4 projection(float aspect) const;
+
+    // Mouse interaction (pixels): drag orbits, wheel zooms, pan moves the target in the
+    // view plane by the amount that keeps the point under the cursor under it.
+    void orbit(float dxPixels, float dyPixels);
+    void zoom(float wheelSteps);
+    void pan(float dxPixels, float dyPixels, float viewportHeightPixels);
+
+    static OrbitCamera lookAt(glm::vec3 eye, glm::vec3 target, float fovYRad);
+};
+
+// A camera that sees the whole box from a 3/4 view above, near/far fitted to it.
+OrbitCamera frameBounds(const Bounds& bounds, float fovYRad);
+
+}  // namespace grass::core

@@ -1,0 +1,111 @@
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "maps/map_image.h"
+#include "mesh/gltf_loader.h"
+#include "mesh/procedural.h"
+#include "scene/camera.h"
+#include "util/rng.h"
+
+namespace grass::core {
+
+std::size_t Scene::totalBlades() const {
+    std::size_t total = 0;
+    for (const auto& layer : layers) total += layer.liveBlades;
+    return total;
+}
+
+Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes) {
+    const MeshSource& source = loaded.project.mesh;
+    if (!source.isFile) return makeProceduralMesh(source.procedural);
+    auto path = resolveAssetPath(loaded.folder, source.file, "/mesh/file");
+    if (!path) return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
+    auto imported = loadGltf(*path);
+    if (!imported) return imported.error();
+    if (notes)
+        for (auto& note : imported->notes) notes->push_back(path->string() + ": " + note);
+    return std::move(imported->mesh);
+}
+
+Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
+                                 std::vector<std::string> notes) {
+    Scene scene;
+    scene.mesh = std::move(mesh);
+    scene.bounds = meshBounds(scene.mesh);
+    scene.area = surfaceArea(scene.mesh);
+    scene.notes = std::move(notes);
+    const Project& project = loaded.project;
+    for (std::size_t i = 0; i < project.layers.size(); ++i) {
+        const GrassLayer& layer = project.layers[i];
+        MapImage density;
+        const MapImage* densityMap = nullptr;
+        if (!layer.densityMap.empty()) {
+            const std::string field = "/layers/" + std::to_string(i) + "/density_map";
+            auto path = resolveAssetPath(loaded.folder, layer.densityMap, field);
+            if (!path) return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
+            auto map = loadMapImage(*path);
+            if (!map) return map.error();
+            density = std::move(*map);
+            for (const auto& warning : density.warnings) scene.notes.push_back(path->string() + ": " + warning);
+            densityMap = &density;
+        }
+        // Each layer its own stream, so adding a layer does not reshuffle the others.
+        const std::uint64_t layerSeed = Rng::splitMix(project.seed ^ (0x9E3779B97F4A7C15ULL * (i + 1)));
+        ScatterResult scattered = scatterBlades(scene.mesh, layer.scatter, densityMap, layerSeed);
+        for (auto& warning : scattered.warnings) scene.notes.push_back("layer \"" + layer.name + "\": " + warning);
+        LayerField field;
+        field.name = layer.name;
+        field.liveBlades = scattered.blades.size();
+        field.patched = buildPatches(scattered.blades, project.render.patchSize);
+        field.rootColor = layer.rootColor;
+        field.tipColor = layer.tipColor;
+        scene.layers.push_back(std::move(field));
+    }
+    return scene;
+}
+
+Result<Scene> buildScene(const LoadedProject& loaded) {
+    std::vector<std::string> notes;
+    auto mesh = loadProjectMesh(loaded, &notes);
+    if (!mesh) return mesh.error();
+    return buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes));
+}
+
+Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, const SurfaceMesh& mesh,
+                                     std::size_t targetBlades) {
+    const double area = surfaceArea(mesh);
+    const Bounds bounds = meshBounds(mesh);
+    if (!(area > 0.0)) return makeError(meshFile.string(), "the mesh has no surface area");
+
+    LoadedProject loaded;
+    loaded.folder = std::filesystem::absolute(meshFile).parent_path();
+    loaded.file = meshFile;
+    Project& project = loaded.project;
+    project.name = meshFile.stem().string();
+    project.mesh.isFile = true;
+    project.mesh.file = meshFile.filename().string();
+    GrassLayer& layer = project.layers.front();
+    layer.scatter.density = static_cast<float>(static_cast<double>(targetBlades) / area);
+    layer.scatter.clumpSpacing = 0.0f;
+    // Blades sized to the mesh whatever its units: a few blade spacings tall, but never more
+    // than a small fraction of the object, so a bunny gets fur-like grass and a terrain a lawn.
+    const float spacing = static_cast<float>(std::sqrt(area / static_cast<double>(targetBlades)));
+    const float diagonal = glm::length(bounds.size());
+    const float height = std::min(6.0f * spacing, 0.06f * diagonal);
+    layer.scatter.blade.heightMin = 0.7f * height;
+    layer.scatter.blade.heightMax = 1.3f * height;
+    layer.scatter.blade.widthMin = 0.03f * height;
+    layer.scatter.blade.widthMax = 0.05f * height;
+
+    const OrbitCamera framed = frameBounds(bounds, 0.785f);
+    CameraDesc& camera = project.cameras.front();
+    camera.name = "framed";
+    camera.position = framed.position();
+    camera.target = framed.target;
+    camera.fovYDeg = 45.0f;
+    return loaded;
+}
+
+}  // namespace grass::core

@@ -1,0 +1,50 @@
+// Scene: what a project becomes once its files are read and its grass grown: the surface mesh
+// and, per grass layer, the patched blades ready for the GPU. The CLI and the editor both build
+// scenes through buildScene, so they show the same field (ARCHITECTURE.md).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mesh/surface_mesh.h"
+#include "project/project.h"
+#include "scatter/patches.h"
+
+namespace grass::core {
+
+struct LayerField {
+    std::string name;
+    PatchedBlades patched;
+    std::size_t liveBlades = 0;
+    glm::vec3 rootColor{0.0f};
+    glm::vec3 tipColor{0.0f};
+};
+
+struct Scene {
+    SurfaceMesh mesh;
+    Bounds bounds;
+    double area = 0.0;
+    std::vector<LayerField> layers;
+    std::vector<std::string> notes;  // warnings from loading (mesh notes, map conversions)
+    std::size_t totalBlades() const;
+};
+
+// Loads the mesh (file or procedural), each layer's density map, scatters and patches.
+// Errors name the file (mesh, map) or the project field.
+Result<Scene> buildScene(const LoadedProject& project);
+
+// The mesh of a project alone (no grass), for `render --mesh` and mesh-info.
+Result<SurfaceMesh> loadProjectMesh(const LoadedProject& project, std::vector<std::string>* notes);
+
+// Grows the layers of `project` on a mesh already loaded (so a file is read once).
+Result<Scene> buildSceneFromMesh(const LoadedProject& project, SurfaceMesh mesh,
+                                 std::vector<std::string> notes);
+
+// A default project growing grass on a loaded glTF file: density scaled so the field has about
+// `targetBlades` blades whatever the file's units, blade size relative to the mesh, and a
+// camera framing its bounds (issue 3: `grass render --mesh`). Null when the mesh has no area.
+Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, const SurfaceMesh& mesh,
+                                     std::size_t targetBlades);
+
+}  // namespace grass::core

@@ -1,0 +1,71 @@
+#include "util/image_file.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include "util/atomic_file.h"
+
+namespace grass {
+
+namespace fs = std::filesystem;
+
+static std::string oneLine(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    return text;
+}
+
+Result<void> writeRgba8Image(const fs::path& file, int width, int height,
+                             std::span<const std::uint8_t> pixels) {
+    if (width <= 0 || height <= 0 ||
+        pixels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4)
+        return makeError(file.string(), "internal: image size does not match its pixels");
+    std::error_code ec;
+    if (file.has_parent_path() && !fs::exists(file.parent_path(), ec))
+        return makeError(file.string(), "the folder " + file.parent_path().string() + " does not exist");
+    const fs::path temporary = temporaryPathFor(file);
+    auto out = OIIO::ImageOutput::create(file.string());
+    if (!out)
+        return makeError(file.string(), "cannot write this image format (use .png, .tif, .jpg or .exr)");
+    OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
+    if (!out->open(temporary.string(), spec)) {
+        fs::remove(temporary, ec);
+        return makeError(file.string(), "cannot write: " + oneLine(out->geterror()));
+    }
+    const bool written = out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
+    const bool closed = out->close();
+    if (!written || !closed) {
+        fs::remove(temporary, ec);
+        return makeError(file.string(), "write failed: " + oneLine(out->geterror()));
+    }
+    return commitTemporaryFile(temporary, file);
+}
+
+Result<Rgba8Pixels> readRgba8Image(const fs::path& file) {
+    std::error_code ec;
+    if (!fs::exists(file, ec)) return makeError(file.string(), "file not found");
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in) return makeError(file.string(), "not a readable image: " + oneLine(OIIO::geterror()));
+    const OIIO::ImageSpec& spec = in->spec();
+    const int channels = spec.nchannels;
+    std::vector<std::uint8_t> raw(static_cast<std::size_t>(spec.width) *
+                                  static_cast<std::size_t>(spec.height) *
+                                  static_cast<std::size_t>(channels));
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
+        return makeError(file.string(), "cannot read: " + oneLine(in->geterror()));
+    Rgba8Pixels image;
+    image.width = spec.width;
+    image.height = spec.height;
+    image.pixels.resize(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) * 4);
+    for (std::size_t i = 0; i < image.pixels.size() / 4; ++i) {
+        const std::uint8_t* p = raw.data() + i * static_cast<std::size_t>(channels);
+        const bool grey = channels < 3;
+        image.pixels[4 * i + 0] = p[0];
+        image.pixels[4 * i + 1] = grey ? p[0] : p[1];
+        image.pixels[4 * i + 2] = grey ? p[0] : p[2];
+        image.pixels[4 * i + 3] = channels == 4 ? p[3] : (channels == 2 ? p[1] : 255);
+    }
+    return image;
+}
+
+}  // namespace grass

@@ -1,0 +1,26 @@
+// Writing 8-bit RGBA images (renders, screenshots) through OpenImageIO; the format follows the
+// extension (.png, .tif, .jpg, .exr...). Atomic: a temporary file, then rename.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include "util/result.h"
+
+namespace grass {
+
+// `pixels`: width × height × 4 bytes, row 0 = top.
+Result<void> writeRgba8Image(const std::filesystem::path& file, int width, int height,
+                             std::span<const std::uint8_t> pixels);
+
+struct Rgba8Pixels {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> pixels;  // RGBA, row 0 = top
+};
+// Reads any image as RGBA8 (grey → RGB, no alpha → 255). For tests and goldens.
+Result<Rgba8Pixels> readRgba8Image(const std::filesystem::path& file);
+
+}  // namespace grass

@@ -1,0 +1,92 @@
+#include "window.h"
+
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+
+namespace grass::editor {
+
+struct WindowCallbacks {
+    static Window* self(GLFWwindow* w) { return static_cast<Window*>(glfwGetWindowUserPointer(w)); }
+    static void cursor(GLFWwindow* w, double x, double y) {
+        InputState& input = self(w)->mInput;
+        if (input.leftDown || input.middleDown || input.rightDown) {
+            input.dragDx += x - input.cursorX;
+            input.dragDy += y - input.cursorY;
+        }
+        input.cursorX = x;
+        input.cursorY = y;
+    }
+    static void button(GLFWwindow* w, int button, int action, int mods) {
+        InputState& input = self(w)->mInput;
+        const bool down = action == GLFW_PRESS;
+        if (button == GLFW_MOUSE_BUTTON_LEFT) input.leftDown = down;
+        if (button == GLFW_MOUSE_BUTTON_MIDDLE) input.middleDown = down;
+        if (button == GLFW_MOUSE_BUTTON_RIGHT) input.rightDown = down;
+        input.shiftDown = (mods & GLFW_MOD_SHIFT) != 0;
+    }
+    static void scroll(GLFWwindow* w, double, double dy) { self(w)->mInput.scrollSteps += dy; }
+    static void key(GLFWwindow* w, int key, int, int action, int mods) {
+        InputState& input = self(w)->mInput;
+        input.shiftDown = (mods & GLFW_MOD_SHIFT) != 0 ||
+                          (action != GLFW_RELEASE && (key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT));
+        if (action == GLFW_PRESS && key == GLFW_KEY_F) input.frameRequested = true;
+        if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
+    }
+};
+
+static void onGlfwError(int, const char*) {
+    // Reported through Result by create(); GLFW's own message would be a second line.
+}
+
+Result<std::unique_ptr<Window>> Window::create(int width, int height, const std::string& title) {
+    glfwSetErrorCallback(onGlfwError);
+    if (!glfwInit())
+        return makeError("grass-editor", "cannot open a window: no display (set DISPLAY, or run "
+                                         "under xvfb-run; 'grass render' renders without one)");
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+    GLFWwindow* handle = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (!handle) {
+        const char* why = nullptr;
+        glfwGetError(&why);
+        glfwTerminate();
+        return makeError("grass-editor", std::string("cannot create an OpenGL 4.5 core window: ") +
+                                             (why ? why : "unknown reason"));
+    }
+    std::unique_ptr<Window> window(new Window());
+    window->mWindow = handle;
+    glfwSetWindowUserPointer(handle, window.get());
+    glfwSetCursorPosCallback(handle, WindowCallbacks::cursor);
+    glfwSetMouseButtonCallback(handle, WindowCallbacks::button);
+    glfwSetScrollCallback(handle, WindowCallbacks::scroll);
+    glfwSetKeyCallback(handle, WindowCallbacks::key);
+    glfwMakeContextCurrent(handle);
+    glfwSwapInterval(1);
+    glfwGetCursorPos(handle, &window->mInput.cursorX, &window->mInput.cursorY);
+    return window;
+}
+
+Window::~Window() {
+    glfwDestroyWindow(mWindow);
+    glfwTerminate();
+}
+
+bool Window::shouldClose() const { return glfwWindowShouldClose(mWindow) != 0; }
+void Window::requestClose() { glfwSetWindowShouldClose(mWindow, GLFW_TRUE); }
+void Window::setTitle(const std::string& title) { glfwSetWindowTitle(mWindow, title.c_str()); }
+void Window::swapBuffers() { glfwSwapBuffers(mWindow); }
+void Window::framebufferSize(int* width, int* height) const {
+    glfwGetFramebufferSize(mWindow, width, height);
+}
+
+InputState Window::pollInput() {
+    mInput.dragDx = mInput.dragDy = mInput.scrollSteps = 0.0;
+    mInput.frameRequested = false;
+    glfwPollEvents();
+    return mInput;
+}
+
+}  // namespace grass::editor

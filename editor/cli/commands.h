@@ -1,0 +1,20 @@
+// The sub-commands of `grass`. Each takes its arguments (after the sub-command name), prints
+// errors as one line "grass <command>: <file or option>: <problem>" and returns the exit code.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace grass::cli {
+
+int runRender(const std::vector<std::string>& args);
+int runMeshInfo(const std::vector<std::string>& args);
+
+// Exit codes: 0 success, 1 failed (bad file, GL failure), 2 bad command line.
+inline constexpr int EXIT_FAILED = 1;
+inline constexpr int EXIT_USAGE = 2;
+
+// Prints "grass <command>: <message>" on stderr.
+void printError(const std::string& command, const std::string& message);
+
+}  // namespace grass::cli

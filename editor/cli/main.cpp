@@ -1,0 +1,41 @@
+// grass: the command-line face of the editor. Sub-commands share the editor's code paths
+// (ARCHITECTURE.md): what `grass render` draws is what the viewport draws.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+
+namespace {
+
+constexpr const char* HELP = R"(usage: grass <command> [options]
+
+grass grows, simulates and renders grass fields on any mesh.
+
+commands:
+  render      render a project (or any glTF mesh) headless to an image
+  mesh-info   print vertex/triangle counts, area, bounds of a glTF file
+
+Run 'grass <command> --help' for the options of a command.
+The editor window is 'grass-editor'.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        std::fputs(HELP, args.empty() ? stderr : stdout);
+        return args.empty() ? grass::cli::EXIT_USAGE : 0;
+    }
+    if (args[0] == "--version") {
+        std::puts("grass 0.1.0");
+        return 0;
+    }
+    const std::string command = args[0];
+    args.erase(args.begin());
+    if (command == "render") return grass::cli::runRender(args);
+    if (command == "mesh-info") return grass::cli::runMeshInfo(args);
+    grass::cli::printError(command, "unknown command (commands: render, mesh-info; see grass --help)");
+    return grass::cli::EXIT_USAGE;
+}

@@ -1,0 +1,43 @@
+// Framebuffer: an offscreen colour + depth target, optionally multisampled, with a resolve to
+// RGBA8 pixels. The headless renderer draws here; the editor blits it to the window.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gl_handle.h"
+
+namespace grass::gl {
+
+struct Rgba8Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> pixels;  // row 0 = TOP of the image, 4 bytes per pixel
+};
+
+class Framebuffer {
+public:
+    Framebuffer(int width, int height, int samples);
+    GLuint id() const { return mFramebuffer.id(); }
+    int width() const { return mWidth; }
+    int height() const { return mHeight; }
+    int samples() const { return mSamples; }
+    void bind() const;
+    // Resolves (if multisampled) and reads back the colour, flipped so row 0 is the top.
+    Rgba8Image readPixels() const;
+    // Resolves into another framebuffer (0 = the window's).
+    void blitTo(GLuint target, int targetWidth, int targetHeight) const;
+
+private:
+    int mWidth, mHeight, mSamples;
+    FramebufferHandle mFramebuffer;
+    RenderbufferHandle mColor, mDepth;
+    // Single-sampled resolve target for readback.
+    FramebufferHandle mResolve;
+    RenderbufferHandle mResolveColor;
+};
+
+// Reads the currently bound read framebuffer (e.g. the window's back buffer).
+Rgba8Image readFramebuffer(GLuint framebuffer, int width, int height);
+
+}  // namespace grass::gl

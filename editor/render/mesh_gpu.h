@@ -1,0 +1,23 @@
+// MeshGpu: a SurfaceMesh uploaded for drawing: interleaved position/normal/uv, 32-bit indices.
+#pragma once
+
+#include "buffer.h"
+#include "gl_handle.h"
+#include "mesh/surface_mesh.h"
+
+namespace grass::render {
+
+class MeshGpu {
+public:
+    explicit MeshGpu(const core::SurfaceMesh& mesh);
+    void draw() const;
+    std::size_t triangleCount() const { return mIndexCount / 3; }
+
+private:
+    gl::Buffer mVertices;
+    gl::Buffer mIndices;
+    gl::VertexArrayHandle mVertexArray;
+    std::size_t mIndexCount = 0;
+};
+
+}  // namespace grass::render

@@ -1,0 +1,111 @@
+#include "scene_renderer.h"
+
+namespace grass::render {
+
+RenderOptions renderOptionsFor(const core::RenderSettings& settings, const core::SunDesc& sun,
+                               bool softwareRenderer) {
+    RenderOptions options;
+    switch (settings.geometry) {
+        case core::GeometryPath::Tessellation: options.geometry = GeometryPath::Tessellation; break;
+        case core::GeometryPath::Strips: options.geometry = GeometryPath::Strips; break;
+        case core::GeometryPath::Auto:
+            options.geometry = softwareRenderer ? GeometryPath::Strips : GeometryPath::Tessellation;
+            break;
+    }
+    options.tessLevel = settings.tessLevel;
+    options.stripSegments = settings.stripSegments;
+    options.sun = sun;
+    options.skyColor = settings.skyColor;
+    options.groundColor = settings.groundColor;
+    return options;
+}
+
+const char* geometryPathLabel(GeometryPath path) {
+    return path == GeometryPath::Tessellation ? "tess" : "strips";
+}
+
+Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene) {
+    std::unique_ptr<SceneRenderer> renderer(new SceneRenderer());
+    renderer->mScene = &scene;
+    auto mesh = gl::Program::load({{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}},
+                                  "mesh");
+    if (!mesh) return mesh.error();
+    auto strips = gl::Program::load(
+        {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}}, "blade strips");
+    if (!strips) return strips.error();
+    auto tess = gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
+                                   {GL_TESS_CONTROL_SHADER, "blade.tesc"},
+                                   {GL_TESS_EVALUATION_SHADER, "blade.tese"},
+                                   {GL_FRAGMENT_SHADER, "blade.frag"}},
+                                  "blade tessellation");
+    if (!tess) return tess.error();
+    renderer->mMeshProgram = std::move(*mesh);
+    renderer->mStripProgram = std::move(*strips);
+    renderer->mTessProgram = std::move(*tess);
+    renderer->mMesh = std::make_unique<MeshGpu>(scene.mesh);
+    renderer->mFields.reserve(scene.layers.size());
+    for (const auto& layer : scene.layers) renderer->mFields.emplace_back(layer);
+    return renderer;
+}
+
+static void setLighting(const gl::Program& program, const RenderOptions& options) {
+    const glm::vec3 direction = glm::length(options.sun.direction) > 0.0f
+                                    ? glm::normalize(options.sun.direction)
+                                    : glm::vec3(0, -1, 0);
+    program.set("uSunDirection", direction);
+    program.set("uSunColor", options.sun.color * options.sun.intensity);
+    program.set("uSkyColor", options.skyColor);
+    program.set("uGroundColor", options.groundColor);
+}
+
+void SceneRenderer::render(const core::OrbitCamera& camera, int width, int height,
+                           GLuint framebuffer, const RenderOptions& options) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(0, 0, width, height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);  // blades and open meshes are two-sided
+    glEnable(GL_MULTISAMPLE);
+    glClearColor(options.skyColor.r, options.skyColor.g, options.skyColor.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+    const glm::mat4 viewProj = camera.projection(aspect) * camera.view();
+
+    mMeshTimer.begin();
+    mMeshProgram.use();
+    mMeshProgram.set("uViewProj", viewProj);
+    mMeshProgram.set("uAlbedo", options.groundColor);
+    setLighting(mMeshProgram, options);
+    mMesh->draw();
+    mMeshTimer.end();
+
+    mGrassTimer.begin();
+    const bool tessellate = options.geometry == GeometryPath::Tessellation;
+    const gl::Program& program = tessellate ? mTessProgram : mStripProgram;
+    program.use();
+    program.set("uViewProj", viewProj);
+    program.set("uShape", 1);  // triangle; per-layer shapes arrive with issue 5
+    program.set("uFirstBlade", 0);
+    program.set("uSegments", std::max(options.stripSegments, 1));
+    program.set("uTessLevel", static_cast<float>(std::max(options.tessLevel, 1)));
+    setLighting(program, options);
+    mBladesDrawn = 0;
+    for (auto& field : mFields) {
+        program.set("uRootColor", field.field().rootColor);
+        program.set("uTipColor", field.field().tipColor);
+        if (tessellate)
+            field.drawTessellated();
+        else
+            field.drawStrips(std::max(options.stripSegments, 1));
+        mBladesDrawn += field.field().liveBlades;
+    }
+    mGrassTimer.end();
+    glBindVertexArray(0);
+}
+
+FrameTimings SceneRenderer::lastTimings() const {
+    return {mMeshTimer.milliseconds(), mGrassTimer.milliseconds(), mBladesDrawn};
+}
+
+}  // namespace grass::render

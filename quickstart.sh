@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# grass quick start: installs what is missing (as root) or says what to install, builds, then
+#   ./quickstart.sh run    opens the editor on projects/meadow (or, with no display, renders it
+#                          headless to build/meadow.png and prints the frame timings)
+#   ./quickstart.sh test   runs the whole test suite (what CI runs: .ci/run)
+set -euo pipefail
+cd "$(dirname "$0")"
+
+mode="${1:-}"
+case "$mode" in
+  run|test) ;;
+  *) echo "usage: ./quickstart.sh run|test" >&2; exit 2 ;;
+esac
+
+# Debian 12 packages: toolchain, the libraries of the design card, Mesa for headless GL, Xvfb
+# for the editor's window test.
+packages=(g++ cmake ninja-build pkg-config ccache
+  libglfw3-dev libglm-dev libtinygltf-dev libopenmesh-dev libopenimageio-dev libepoxy-dev
+  libegl-dev libegl-mesa0 libgl1-mesa-dri nlohmann-json3-dev libgtest-dev libbenchmark-dev
+  libstb-dev fonts-dejavu-core xvfb xauth)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  if [ "$(id -u)" = 0 ]; then
+    echo "== installing ${#missing[@]} missing Debian packages: ${missing[*]}"
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null
+  else
+    echo "Missing Debian packages. Install them, then run this again:" >&2
+    echo "  sudo apt-get install -y ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+
+jobs=$(nproc 2>/dev/null || echo 2)
+echo "== configuring and building (build/, $jobs jobs)"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_WERROR=ON >/dev/null
+cmake --build build -j "$jobs"
+
+if [ "$mode" = run ]; then
+  if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+    exec build/bin/grass-editor projects/meadow
+  fi
+  echo "== no display: rendering projects/meadow headless"
+  exec build/bin/grass render projects/meadow --out build/meadow.png
+fi
+
+echo "== running the tests"
+exec ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600

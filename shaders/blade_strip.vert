@@ -1,0 +1,27 @@
+#version 450 core
+// Instanced-strip path (SPEC §7): one instance per blade, a triangle strip of
+// 2·(uSegments + 1) vertices; the curve is evaluated here. Cheap on software rasterizers.
+#include "blade_geometry.glsl"
+
+uniform mat4 uViewProj;
+uniform int uSegments;
+uniform int uShape;
+uniform int uFirstBlade;  // first blade of this draw in the buffer
+
+out vec3 vPosition;
+out vec3 vNormal;
+out float vHeight;
+
+void main() {
+    Blade blade = blades[gl_InstanceID + uFirstBlade];
+    int segment = gl_VertexID >> 1;
+    float u = float(gl_VertexID & 1);
+    float v = float(segment) / float(uSegments);
+    BladeSurfacePoint point = bladeSurface(blade, u, v, uShape);
+    // Padding blades (h = 0) collapse to a point and produce no fragments.
+    if (blade.v1H.w <= 0.0) point.position = blade.v0Theta.xyz;
+    vPosition = point.position;
+    vNormal = point.normal;
+    vHeight = v;
+    gl_Position = uViewProj * vec4(point.position, 1.0);
+}

@@ -1,0 +1,215 @@
+# End-to-end tests of the command-line tools (grass, grass-editor), run as a user runs them:
+# exit codes, help text, outputs, and the one-line error every bad input must give (STYLE.md
+# §4). Each test is a call to a small bash driver in tests/cli/ (bash and coreutils only):
+#   expect_ok.sh     exit 0; optional stdout patterns and a PNG of a given size
+#   expect_error.sh  exit 1..127 (no crash, no hang), exactly one stderr line naming the culprit
+# Inputs are committed in tests/data/ (see tests/data/README.md); outputs go to
+# test-tmp/cli/ in the build folder. Tests that open a GL context carry the label "gl" too.
+# The suite stays fast on llvmpipe: tiny images, --frames 1.
+
+if(NOT TARGET grass)
+    return()
+endif()
+find_program(GRASS_BASH bash)
+find_program(GRASS_TIMEOUT timeout)
+if(NOT GRASS_BASH OR NOT GRASS_TIMEOUT)
+    message(WARNING "bash or timeout (coreutils) not found: the CLI tests (label cli) are not added")
+    return()
+endif()
+
+set(GRASS_CLI_DIR ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+set(GRASS_CLI_DATA ${CMAKE_CURRENT_SOURCE_DIR}/data)
+set(GRASS_CLI_TMP ${CMAKE_BINARY_DIR}/test-tmp/cli)
+set(GRASS_CLI_GLTF ${GRASS_CLI_DATA}/gltf)
+set(GRASS_CLI_PROJECTS ${GRASS_CLI_DATA}/projects)
+file(MAKE_DIRECTORY ${GRASS_CLI_TMP})
+set(GRASS_BIN $<TARGET_FILE:grass>)
+
+# grass_cli_test(NAME [GL] OK|ERROR <driver arguments>... -- <command>...)
+function(grass_cli_test name)
+    cmake_parse_arguments(PARSE_ARGV 1 ARG "GL;OK;ERROR" "" "")
+    if(ARG_OK)
+        set(driver ${GRASS_CLI_DIR}/expect_ok.sh)
+    elseif(ARG_ERROR)
+        set(driver ${GRASS_CLI_DIR}/expect_error.sh)
+    else()
+        message(FATAL_ERROR "grass_cli_test(${name}): say OK or ERROR")
+    endif()
+    add_test(NAME cli.${name} COMMAND ${GRASS_BASH} ${driver} ${ARG_UNPARSED_ARGUMENTS}
+             WORKING_DIRECTORY ${GRASS_CLI_TMP})
+    set(labels cli)
+    if(ARG_GL)
+        list(APPEND labels gl)
+    endif()
+    set_tests_properties(cli.${name} PROPERTIES LABELS "${labels}" TIMEOUT 150)
+endfunction()
+
+# The drivers catch what they claim to catch (success, crash, hang, extra lines, ...).
+add_test(NAME cli.driver_self_test
+         COMMAND ${GRASS_BASH} ${GRASS_CLI_DIR}/driver_self_test.sh ${GRASS_CLI_TMP}/self-test)
+set_tests_properties(cli.driver_self_test PROPERTIES LABELS cli TIMEOUT 60)
+
+# --- help and version ------------------------------------------------------------------------
+grass_cli_test(help OK --no-stderr
+    --stdout "^usage: grass <command>" --stdout "^  render " --stdout "^  mesh-info "
+    -- ${GRASS_BIN} --help)
+grass_cli_test(version OK --no-stderr --stdout "^grass [0-9]+\\.[0-9]+\\.[0-9]+$"
+    -- ${GRASS_BIN} --version)
+grass_cli_test(render_help OK --no-stderr
+    --stdout "^usage: grass render" --stdout "^  --mesh FILE" --stdout "^  --out FILE"
+    --stdout "^  --width N" --stdout "^  --height N" --stdout "^  --seed N"
+    --stdout "^  --camera NAME" --stdout "^  --geometry project\\|auto\\|tess\\|strips"
+    --stdout "^  --frames N" --stdout "^  --blades N" --stdout "^  --help"
+    -- ${GRASS_BIN} render --help)
+grass_cli_test(mesh_info_help OK --no-stderr
+    --stdout "^usage: grass mesh-info" --stdout "^  file" --stdout "^  --json" --stdout "^  --help"
+    -- ${GRASS_BIN} mesh-info --help)
+if(TARGET grass-editor)
+    # --help must answer before any window or GL context is made (CI has no display).
+    grass_cli_test(editor_help OK --no-stderr
+        --stdout "^usage: grass-editor" --stdout "^  --screenshot FILE" --stdout "^  --frames N"
+        -- $<TARGET_FILE:grass-editor> --help)
+endif()
+
+# --- mesh-info -------------------------------------------------------------------------------
+# quad.gltf: a 2x2 quad (y = 0, x and z in [-1, 1]) with normals and UVs, placed by a node with
+# scale 3 and translation [1, 0, 0]: a 6x6 square, area 36, x in [-2, 4], z in [-3, 3].
+grass_cli_test(mesh_info_gltf_json OK --no-stderr
+    --stdout "^\\{\"vertices\":4,\"triangles\":2,\"area\":36(\\.0+)?,"
+    --stdout "\"has_normals\":true,\"has_uv\":true,"
+    --stdout "\"bounds\":\\[\\[-2(\\.0+)?,0(\\.0+)?,-3(\\.0+)?\\],\\[4(\\.0+)?,0(\\.0+)?,3(\\.0+)?\\]\\]\\}$"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/quad.gltf --json)
+grass_cli_test(mesh_info_gltf_text OK --no-stderr
+    --stdout "quad\\.gltf$" --stdout "^  vertices +4$" --stdout "^  triangles +2$"
+    --stdout "^  area +36$" --stdout "^  normals +from file$" --stdout "^  uv0 +from file$"
+    --stdout "^  bounds +\\[-2 0 -3\\] \\.\\. \\[4 0 3\\]$"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/quad.gltf)
+# cube.glb: a 2x2x2 cube around the origin (8 shared corners, 12 triangles, no normals, no UVs)
+# placed by a node matrix (uniform scale 0.5, translation [0, 1, 0]): a unit cube, area 6,
+# bounds [-0.5, 0.5, -0.5] .. [0.5, 1.5, 0.5].
+grass_cli_test(mesh_info_glb_json OK --no-stderr
+    --stdout "^\\{\"vertices\":8,\"triangles\":12,\"area\":6(\\.0+)?,"
+    --stdout "\"has_normals\":false,\"has_uv\":false,"
+    --stdout "\"bounds\":\\[\\[-0\\.5,0\\.5,-0\\.5\\],\\[0\\.5,1\\.5,0\\.5\\]\\]\\}$"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/cube.glb --json)
+
+# --- render (GL) -----------------------------------------------------------------------------
+grass_cli_test(render_meadow GL OK --png ${GRASS_CLI_TMP}/meadow.png 160 90
+    --stdout "^wrote .*meadow\\.png \\(160x90\\)$" --stdout "^  frames +1,"
+    -- ${GRASS_BIN} render ${GRASS_SOURCE_DIR}/projects/meadow --out ${GRASS_CLI_TMP}/meadow.png
+       --width 160 --height 90 --frames 1)
+grass_cli_test(render_mesh GL OK --png ${GRASS_CLI_TMP}/quad.png 128 128
+    --stdout "^wrote .*quad\\.png \\(128x128\\)$" --stdout "^  scene +2 triangles, [1-9][0-9]* blades"
+    -- ${GRASS_BIN} render --mesh ${GRASS_CLI_GLTF}/quad.gltf --out ${GRASS_CLI_TMP}/quad.png
+       --width 128 --height 128 --frames 1 --blades 2000)
+grass_cli_test(render_project_camera GL OK --png ${GRASS_CLI_TMP}/tiny-top.png 64 48
+    --stdout "^wrote .*tiny-top\\.png \\(64x48\\)$"
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_TMP}/tiny-top.png
+       --camera top --seed 5 --geometry strips --frames 1)
+# The image is written only after a full render: a folder that does not exist must be named,
+# and nothing may be created (neither the folder nor a partial file).
+grass_cli_test(render_out_folder_missing GL ERROR "no-such-folder"
+    --absent ${GRASS_CLI_TMP}/no-such-folder
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_TMP}/no-such-folder/out.png
+       --frames 1)
+grass_cli_test(render_out_unknown_format GL ERROR "never.xyz"
+    --absent ${GRASS_CLI_TMP}/never.xyz
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_TMP}/never.xyz --frames 1)
+
+# --- render: bad command lines (no GL needed: they fail before a context is made) -------------
+set(TINY ${GRASS_CLI_PROJECTS}/tiny)
+set(OUT ${GRASS_CLI_TMP}/never.png)
+grass_cli_test(render_width_zero ERROR "--width" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} --out ${OUT} --width 0)
+grass_cli_test(render_width_not_a_number ERROR "--width" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} --out ${OUT} --width abc)
+grass_cli_test(render_width_missing_value ERROR "--width" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} --out ${OUT} --width)
+grass_cli_test(render_height_too_large ERROR "--height" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} --out ${OUT} --height 100000)
+grass_cli_test(render_frames_negative ERROR "--frames" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} --out ${OUT} --frames -1)
+grass_cli_test(render_seed_negative ERROR "--seed" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} --out ${OUT} --seed -3)
+grass_cli_test(render_geometry_unknown ERROR "--geometry" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} --out ${OUT} --geometry wires)
+grass_cli_test(render_unknown_option ERROR "--no-such-option" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} --out ${OUT} --no-such-option)
+grass_cli_test(render_flag_with_value ERROR "--gl-debug" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} --out ${OUT} --gl-debug=yes)
+grass_cli_test(render_extra_argument ERROR "extra-argument" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} extra-argument --out ${OUT})
+grass_cli_test(render_no_input ERROR "--mesh" --absent ${OUT}
+    -- ${GRASS_BIN} render --out ${OUT})
+grass_cli_test(render_project_and_mesh ERROR "--mesh" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} --mesh ${GRASS_CLI_GLTF}/quad.gltf --out ${OUT})
+# The message names the camera asked for and lists those there are, so the user can pick one.
+grass_cli_test(render_camera_unknown ERROR "--camera" --also "nosuch" --also "front" --also "top"
+    --absent ${OUT} -- ${GRASS_BIN} render ${TINY} --out ${OUT} --camera nosuch)
+grass_cli_test(unknown_command ERROR "rnder"
+    -- ${GRASS_BIN} rnder ${TINY})
+grass_cli_test(unknown_top_level_option ERROR "--frobnicate"
+    -- ${GRASS_BIN} --frobnicate)
+
+# --- render: bad projects --------------------------------------------------------------------
+grass_cli_test(render_project_missing ERROR "no-such-project" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_TMP}/no-such-project --out ${OUT})
+grass_cli_test(render_gltf_as_project ERROR "quad.gltf" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_GLTF}/quad.gltf --out ${OUT})
+grass_cli_test(render_folder_without_project ERROR "project.json" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_GLTF} --out ${OUT})
+grass_cli_test(render_project_unknown_format ERROR "/format" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/unknown_format --out ${OUT})
+grass_cli_test(render_project_unknown_version ERROR "/version" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/unknown_version --out ${OUT})
+grass_cli_test(render_project_infinite_density ERROR "/layers/0/density" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/inf_density --out ${OUT})
+grass_cli_test(render_project_negative_density ERROR "/layers/0/density" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/negative_density --out ${OUT})
+# 1e8 blades/m² on 4 m² is 4e8 blades: refused with a message naming the layer, not grown
+# for minutes into gigabytes. DISABLED until the project loader or the scatter has a limit
+# (today it runs past 60 s and 3.8 GB); enable it with the fix.
+grass_cli_test(render_project_density_too_high ERROR "/layers/0" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/huge_density --out ${OUT})
+set_tests_properties(cli.render_project_density_too_high PROPERTIES DISABLED TRUE
+                     ENVIRONMENT GRASS_CLI_TIMEOUT=30)
+grass_cli_test(render_project_density_map_missing ERROR "maps/missing.png" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/missing_density_map --out ${OUT})
+grass_cli_test(render_project_density_map_not_image ERROR "maps/density.png" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/density_map_not_image --out ${OUT})
+grass_cli_test(render_project_mesh_truncated ERROR "field.gltf" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/truncated_mesh --out ${OUT})
+grass_cli_test(render_mesh_missing ERROR "no-such-mesh.gltf" --absent ${OUT}
+    -- ${GRASS_BIN} render --mesh ${GRASS_CLI_TMP}/no-such-mesh.gltf --out ${OUT})
+grass_cli_test(render_mesh_not_gltf ERROR "not_gltf.gltf" --absent ${OUT}
+    -- ${GRASS_BIN} render --mesh ${GRASS_CLI_GLTF}/not_gltf.gltf --out ${OUT})
+
+# --- mesh-info: bad files --------------------------------------------------------------------
+grass_cli_test(mesh_info_no_file ERROR "file"
+    -- ${GRASS_BIN} mesh-info --json)
+grass_cli_test(mesh_info_missing_file ERROR "no-such-mesh.gltf"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_TMP}/no-such-mesh.gltf)
+grass_cli_test(mesh_info_truncated ERROR "truncated.gltf"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/truncated.gltf)
+grass_cli_test(mesh_info_accessor_past_buffer ERROR "accessor_past_buffer.gltf"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/accessor_past_buffer.gltf)
+grass_cli_test(mesh_info_index_out_of_range ERROR "index_out_of_range.gltf"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/index_out_of_range.gltf)
+grass_cli_test(mesh_info_uri_outside_folder ERROR "../outside.bin"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/outside_uri.gltf)
+grass_cli_test(mesh_info_draco_required ERROR "KHR_draco_mesh_compression"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/draco_required.gltf)
+grass_cli_test(mesh_info_not_gltf ERROR "not_gltf.gltf"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/not_gltf.gltf)
+grass_cli_test(mesh_info_folder ERROR "gltf"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF})
+
+# --- grass-editor: bad command lines fail before a window is opened -------------------------
+if(TARGET grass-editor)
+    grass_cli_test(editor_project_missing ERROR "no-such-project"
+        -- $<TARGET_FILE:grass-editor> ${GRASS_CLI_TMP}/no-such-project)
+    grass_cli_test(editor_frames_zero ERROR "--frames"
+        -- $<TARGET_FILE:grass-editor> --screenshot ${OUT} --frames 0)
+    grass_cli_test(editor_project_negative_density ERROR "/layers/0/density"
+        -- $<TARGET_FILE:grass-editor> ${GRASS_CLI_PROJECTS}/negative_density)
+endif()

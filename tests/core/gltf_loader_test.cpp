@@ -1,0 +1,685 @@
+#include "mesh/gltf_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <iterator>
+#include <limits>
+
+#include "support/gltf_writer.h"
+#include "support/test_paths.h"
+
+namespace grass::core {
+namespace {
+
+namespace fs = std::filesystem;
+using test::BufferStorage;
+using test::GltfAsset;
+using test::GltfNode;
+using test::GltfPrimitive;
+
+testing::AssertionResult contains(const std::string& text, const std::string& part) {
+    if (text.find(part) != std::string::npos)
+        return testing::AssertionSuccess();
+    return testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
+}
+
+bool anyNoteContains(const GltfImport& import, const std::string& part) {
+    for (const auto& note : import.notes)
+        if (note.find(part) != std::string::npos)
+            return true;
+    return false;
+}
+
+// The error of a load that must fail; it must name the file.
+std::string loadError(const fs::path& file) {
+    const auto result = loadGltf(file);
+    EXPECT_FALSE(result.ok()) << file << " loaded, but should not have";
+    if (result.ok())
+        return {};
+    const std::string message = result.error().str();
+    EXPECT_TRUE(contains(message, file.filename().string()));
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    return message;
+}
+
+GltfImport loadOk(const fs::path& file) {
+    auto result = loadGltf(file);
+    EXPECT_TRUE(result.ok()) << result.error().str();
+    return result.ok() ? std::move(result).value() : GltfImport{};
+}
+
+glm::vec3 point(const SurfaceMesh& mesh, SurfaceMesh::VertexHandle vh) {
+    return toGlm(mesh.point(vh));
+}
+
+// Unit normal of a face from its winding (right-hand rule).
+glm::vec3 windingNormal(const SurfaceMesh& mesh, SurfaceMesh::FaceHandle fh) {
+    glm::vec3 p[3];
+    int i = 0;
+    for (const auto vh : mesh.fv_range(fh))
+        p[i++] = point(mesh, vh);
+    return glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+}
+
+glm::vec3 faceCentroid(const SurfaceMesh& mesh, SurfaceMesh::FaceHandle fh) {
+    glm::vec3 sum(0.0f);
+    for (const auto vh : mesh.fv_range(fh))
+        sum += point(mesh, vh);
+    return sum / 3.0f;
+}
+
+void expectNear(glm::vec3 actual, glm::vec3 expected, float tolerance, const std::string& what) {
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(actual[i], expected[i], tolerance) << what << " component " << i;
+}
+
+// Every face's winding and its vertices' normals point away from `centre`: a closed convex
+// shape seen from outside.
+void expectOutwardFacesAndNormals(const SurfaceMesh& mesh, glm::vec3 centre) {
+    for (const auto fh : mesh.faces()) {
+        const glm::vec3 n = windingNormal(mesh, fh);
+        EXPECT_GT(glm::dot(n, faceCentroid(mesh, fh) - centre), 0.0f) << "face " << fh.idx();
+        for (const auto vh : mesh.fv_range(fh))
+            EXPECT_GT(glm::dot(toGlm(mesh.normal(vh)), n), 0.99f)
+                << "vertex " << vh.idx() << " of face " << fh.idx();
+    }
+}
+
+void expectSameMesh(const GltfImport& a, const GltfImport& b) {
+    ASSERT_EQ(a.mesh.n_vertices(), b.mesh.n_vertices());
+    ASSERT_EQ(a.mesh.n_faces(), b.mesh.n_faces());
+    for (const auto vh : a.mesh.vertices()) {
+        EXPECT_EQ(a.mesh.point(vh), b.mesh.point(vh)) << "vertex " << vh.idx();
+        EXPECT_EQ(a.mesh.normal(vh), b.mesh.normal(vh)) << "vertex " << vh.idx();
+        EXPECT_EQ(a.mesh.texcoord2D(vh), b.mesh.texcoord2D(vh)) << "vertex " << vh.idx();
+    }
+    EXPECT_EQ(triangleIndices(a.mesh), triangleIndices(b.mesh));
+}
+
+glm::mat4 trs(const GltfNode& node) {
+    return glm::translate(glm::mat4(1.0f), node.translation) * glm::mat4_cast(node.rotation) *
+           glm::scale(glm::mat4(1.0f), node.scale);
+}
+
+// A grid placed by a rotated, scaled parent, a child under it, and a root given by a matrix.
+GltfNode node(const std::string& name, int mesh) {
+    GltfNode n;
+    n.name = name;
+    n.mesh = mesh;
+    return n;
+}
+
+GltfAsset hierarchyAsset() {
+    GltfAsset asset;
+    asset.meshes.push_back({"Grid", {test::gridPrimitive(2.0f, 4.0f, 3)}});
+    GltfNode parent = node("Parent", 0);
+    parent.children = {1};
+    parent.translation = {10.0f, 0.0f, -3.0f};
+    parent.rotation = glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 1, 0));
+    // Non-uniform scale above the child's rotation: normals then need the inverse-transpose.
+    parent.scale = {2.0f, 1.5f, 0.5f};
+    GltfNode child = node("Child", 0);
+    child.translation = {0.0f, 1.0f, 5.0f};
+    child.rotation = glm::angleAxis(glm::radians(30.0f), glm::vec3(1, 0, 0));
+    child.scale = {1.0f, 3.0f, 0.5f};
+    GltfNode byMatrix = node("ByMatrix", 0);
+    byMatrix.matrix = glm::translate(glm::mat4(1.0f), glm::vec3(-5.0f, 2.0f, 0.0f)) *
+                      glm::rotate(glm::mat4(1.0f), glm::radians(45.0f), glm::vec3(0, 0, 1));
+    asset.nodes = {parent, child, byMatrix};
+    return asset;
+}
+
+TEST(GltfLoader, AppliesNodeHierarchyTransforms) {
+    const fs::path file = test::scratchDir("gltf_hierarchy") / "scene.gltf";
+    const GltfAsset asset = hierarchyAsset();
+    test::writeGltf(file, asset);
+    const GltfImport import = loadOk(file);
+
+    const glm::mat4 parent = trs(asset.nodes[0]);
+    const glm::mat4 worlds[] = {parent, parent * trs(asset.nodes[1]), *asset.nodes[2].matrix};
+    const std::size_t gridVertices = asset.meshes[0].primitives[0].positions.size();
+    const std::size_t gridTriangles = asset.meshes[0].primitives[0].indices.size() / 3;
+    EXPECT_EQ(import.mesh.n_vertices(), 3 * gridVertices);
+    EXPECT_EQ(import.mesh.n_faces(), 3 * gridTriangles);
+
+    Bounds expected{glm::vec3(std::numeric_limits<float>::max()),
+                    glm::vec3(std::numeric_limits<float>::lowest())};
+    double expectedArea = 0.0;
+    for (const glm::mat4& world : worlds) {
+        for (const glm::vec3 corner :
+             {glm::vec3(-1, 0, -2), glm::vec3(1, 0, -2), glm::vec3(-1, 0, 2), glm::vec3(1, 0, 2)}) {
+            const glm::vec3 p(world * glm::vec4(corner, 1.0f));
+            expected.min = glm::min(expected.min, p);
+            expected.max = glm::max(expected.max, p);
+        }
+        const glm::mat3 linear(world);
+        expectedArea +=
+            glm::length(glm::cross(linear * glm::vec3(2, 0, 0), linear * glm::vec3(0, 0, 4)));
+    }
+    const Bounds bounds = meshBounds(import.mesh);
+    expectNear(bounds.min, expected.min, 1e-4f, "bounds min");
+    expectNear(bounds.max, expected.max, 1e-4f, "bounds max");
+    EXPECT_NEAR(surfaceArea(import.mesh), expectedArea, 1e-4 * expectedArea);
+    // A flat grid's transformed normal (inverse-transpose) is its transformed plane's normal,
+    // so every vertex normal must match its face's winding even under non-uniform scale.
+    for (const auto fh : import.mesh.faces())
+        for (const auto vh : import.mesh.fv_range(fh))
+            EXPECT_GT(glm::dot(toGlm(import.mesh.normal(vh)), windingNormal(import.mesh, fh)),
+                      0.9999f);
+    EXPECT_TRUE(import.hasNormals);
+    EXPECT_TRUE(import.hasUv);
+}
+
+TEST(GltfLoader, PlacesEveryGpuInstanceOfANode) {
+    const fs::path file = test::scratchDir("gltf_gpu_instancing") / "instanced.gltf";
+    GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(1, 1, 1));
+    GltfNode& node = asset.nodes[0];
+    node.translation = {0.0f, 0.0f, 10.0f};
+    node.scale = {1.0f, 1.0f, 3.0f};
+    node.instances.resize(3);
+    node.instances[1].translation = {5.0f, 0.0f, 0.0f};
+    node.instances[1].scale = {2.0f, 1.0f, 2.0f};
+    node.instances[2].translation = {0.0f, 5.0f, 0.0f};
+    node.instances[2].rotation = glm::angleAxis(glm::radians(90.0f), glm::vec3(1, 0, 0));
+    asset.extensionsRequired = {"EXT_mesh_gpu_instancing"};
+    test::writeGltf(file, asset);
+    const GltfImport import = loadOk(file);
+    EXPECT_EQ(import.mesh.n_faces(), 2u * node.instances.size()) << "the plain mesh is not drawn";
+
+    Bounds expected{glm::vec3(std::numeric_limits<float>::max()),
+                    glm::vec3(std::numeric_limits<float>::lowest())};
+    double expectedArea = 0.0;
+    for (const auto& instance : node.instances) {
+        GltfNode instanceTrs;
+        instanceTrs.translation = instance.translation;
+        instanceTrs.rotation = instance.rotation;
+        instanceTrs.scale = instance.scale;
+        const glm::mat4 world = trs(node) * trs(instanceTrs);
+        for (const glm::vec3 corner : {glm::vec3(-0.5f, 0, -0.5f), glm::vec3(0.5f, 0, -0.5f),
+                                       glm::vec3(-0.5f, 0, 0.5f), glm::vec3(0.5f, 0, 0.5f)}) {
+            const glm::vec3 p(world * glm::vec4(corner, 1.0f));
+            expected.min = glm::min(expected.min, p);
+            expected.max = glm::max(expected.max, p);
+        }
+        const glm::mat3 linear(world);
+        expectedArea +=
+            glm::length(glm::cross(linear * glm::vec3(1, 0, 0), linear * glm::vec3(0, 0, 1)));
+    }
+    expectNear(meshBounds(import.mesh).min, expected.min, 1e-4f, "bounds min");
+    expectNear(meshBounds(import.mesh).max, expected.max, 1e-4f, "bounds max");
+    EXPECT_NEAR(surfaceArea(import.mesh), expectedArea, 1e-4 * expectedArea);
+}
+
+TEST(GltfLoader, ReportsNodeCycleInsteadOfHanging) {
+    const fs::path file = test::scratchDir("gltf_cycle") / "cycle.gltf";
+    GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(1, 1, 1));
+    asset.nodes[0].children = {1};
+    asset.nodes.push_back(node("Loop", -1));
+    asset.nodes.back().children = {0};
+    asset.sceneNodes = {0};
+    test::writeGltf(file, asset);
+    EXPECT_TRUE(contains(loadError(file), "cycle"));
+}
+
+TEST(GltfLoader, NegativeScaleKeepsOutwardWindingAndNormals) {
+    const fs::path dir = test::scratchDir("gltf_mirror");
+    GltfAsset asset = test::singleMeshAsset(test::boxPrimitive({-1, -2, -3}, {1, 2, 3}));
+    asset.nodes[0].translation = {4.0f, 0.0f, 0.0f};
+    asset.nodes[0].rotation =
+        glm::angleAxis(glm::radians(20.0f), glm::normalize(glm::vec3(1, 1, 0)));
+    for (const glm::vec3 scale :
+         {glm::vec3(-1, 1, 1), glm::vec3(-2, 1, 0.5f), glm::vec3(-1, -1, -1)}) {
+        asset.nodes[0].scale = scale;
+        const fs::path file = dir / "mirror.gltf";
+        test::writeGltf(file, asset);
+        const GltfImport import = loadOk(file);
+        ASSERT_EQ(import.mesh.n_faces(), 12u);
+        SCOPED_TRACE("scale " + std::to_string(scale.x) + " " + std::to_string(scale.y) + " " +
+                     std::to_string(scale.z));
+        expectOutwardFacesAndNormals(import.mesh, glm::vec3(4.0f, 0.0f, 0.0f));
+    }
+}
+
+TEST(GltfLoader, LoadsGlbLikeTheSameGltf) {
+    const fs::path dir = test::scratchDir("gltf_glb");
+    const GltfAsset asset = hierarchyAsset();
+    test::writeGltf(dir / "scene.gltf", asset);
+    fs::remove(dir / "scene.bin");
+    test::writeGltf(dir / "scene.glb", asset, BufferStorage::Glb);
+    ASSERT_FALSE(fs::exists(dir / "scene.bin")) << "a .glb carries its buffer inside";
+    test::writeGltf(dir / "scene.gltf", asset);
+    expectSameMesh(loadOk(dir / "scene.gltf"), loadOk(dir / "scene.glb"));
+}
+
+TEST(GltfLoader, RecognisesGlbByMagicNotByExtension) {
+    const fs::path dir = test::scratchDir("gltf_magic");
+    const GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(1, 1, 2));
+    test::writeGltf(dir / "binary.gltf", asset, BufferStorage::Glb);
+    test::writeGltf(dir / "text.glb", asset, BufferStorage::DataUri);
+    expectSameMesh(loadOk(dir / "binary.gltf"), loadOk(dir / "text.glb"));
+}
+
+TEST(GltfLoader, LoadsEmbeddedBase64Buffers) {
+    const fs::path dir = test::scratchDir("gltf_base64");
+    const GltfAsset asset = hierarchyAsset();
+    test::writeGltf(dir / "external.gltf", asset);
+    test::writeGltf(dir / "embedded.gltf", asset, BufferStorage::DataUri);
+    std::ifstream in(dir / "embedded.gltf");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_TRUE(contains(text, "data:application/octet-stream;base64,"));
+    expectSameMesh(loadOk(dir / "external.gltf"), loadOk(dir / "embedded.gltf"));
+}
+
+TEST(GltfLoader, DecodesPercentEncodedBufferUri) {
+    const fs::path dir = test::scratchDir("gltf_percent");
+    const GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(1, 1, 2));
+    // A '+' is literal in a URI (RFC 3986), not a space.
+    test::writeGltf(dir / "scene.gltf", asset, BufferStorage::ExternalFile, "my buffer+1.bin");
+    std::ifstream in(dir / "scene.gltf");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_TRUE(contains(text, "my%20buffer%2B1.bin"));
+    const GltfImport import = loadOk(dir / "scene.gltf");
+    EXPECT_EQ(import.mesh.n_faces(), asset.meshes[0].primitives[0].indices.size() / 3);
+}
+
+TEST(GltfLoader, ReadsInterleavedAttributesWithByteStride) {
+    const fs::path dir = test::scratchDir("gltf_interleaved");
+    GltfPrimitive grid = test::gridPrimitive(3, 2, 4);
+    test::writeGltf(dir / "separate.gltf", test::singleMeshAsset(grid));
+    grid.interleaved = true;
+    const test::GltfDocument doc = test::buildGltf(test::singleMeshAsset(grid));
+    ASSERT_EQ(doc.json["bufferViews"][0]["byteStride"], 32);
+    test::writeGltf(dir / "interleaved.gltf", doc);
+    expectSameMesh(loadOk(dir / "separate.gltf"), loadOk(dir / "interleaved.gltf"));
+}
+
+TEST(GltfLoader, AppliesSparseAccessorOverBufferView) {
+    const fs::path file = test::scratchDir("gltf_sparse") / "sparse.gltf";
+    GltfPrimitive grid = test::gridPrimitive(2, 2, 2);  // vertex 4 is the centre
+    const glm::vec3 raised(0.0f, 0.75f, 0.0f);
+    grid.sparsePositions = {{4, raised}};
+    test::writeGltf(file, test::singleMeshAsset(grid));
+    const GltfImport import = loadOk(file);
+    EXPECT_NEAR(meshBounds(import.mesh).max.y, raised.y, 1e-6f);
+    EXPECT_NEAR(meshBounds(import.mesh).min.y, 0.0f, 1e-6f);
+    // Four triangles meet at the raised centre; each now leans out of the plane.
+    const double flatArea = 4.0;
+    EXPECT_GT(surfaceArea(import.mesh), flatArea + 1e-3);
+}
+
+TEST(GltfLoader, AppliesSparseAccessorOverZerosWithoutBufferView) {
+    const fs::path file = test::scratchDir("gltf_sparse_zero") / "sparse.gltf";
+    GltfPrimitive triangle;
+    triangle.positions.assign(3, glm::vec3(99.0f));  // ignored: only the count is written
+    triangle.sparseWithoutBufferView = true;
+    triangle.sparsePositions = {{1, {0.0f, 0.0f, 2.0f}}, {2, {3.0f, 0.0f, 0.0f}}};
+    test::writeGltf(file, test::singleMeshAsset(triangle));
+    const GltfImport import = loadOk(file);
+    ASSERT_EQ(import.mesh.n_faces(), 1u);
+    EXPECT_NEAR(surfaceArea(import.mesh), 0.5 * 2.0 * 3.0, 1e-6);
+    EXPECT_EQ(meshBounds(import.mesh).min, glm::vec3(0.0f));
+}
+
+TEST(GltfLoader, ComputesOutwardNormalsWhenMissing) {
+    const fs::path file = test::scratchDir("gltf_no_normals") / "box.gltf";
+    GltfPrimitive box = test::boxPrimitive({-1, -1, -1}, {1, 1, 1});
+    box.normals.clear();
+    test::writeGltf(file, test::singleMeshAsset(box));
+    const GltfImport import = loadOk(file);
+    EXPECT_FALSE(import.hasNormals);
+    EXPECT_TRUE(import.hasUv);
+    EXPECT_TRUE(anyNoteContains(import, "normals computed"));
+    expectOutwardFacesAndNormals(import.mesh, glm::vec3(0.0f));
+    for (const auto vh : import.mesh.vertices())
+        EXPECT_NEAR(glm::length(toGlm(import.mesh.normal(vh))), 1.0f, 1e-5f);
+}
+
+TEST(GltfLoader, KeepsFileNormalsAndUvsOfPrimitivesThatHaveThem) {
+    const fs::path file = test::scratchDir("gltf_mixed_attributes") / "mixed.gltf";
+    GltfPrimitive tilted = test::gridPrimitive(1, 1, 1);
+    const glm::vec3 tilt = glm::normalize(glm::vec3(1, 1, 0));
+    tilted.normals.assign(tilted.positions.size(), tilt);
+    GltfPrimitive bare = test::gridPrimitive(1, 1, 1);
+    bare.normals.clear();
+    bare.uvs.clear();
+    for (auto& p : bare.positions)
+        p.y = 5.0f;
+    GltfAsset asset = test::singleMeshAsset(tilted);
+    asset.meshes[0].primitives.push_back(bare);
+    test::writeGltf(file, asset);
+    const GltfImport import = loadOk(file);
+    EXPECT_FALSE(import.hasNormals);
+    EXPECT_FALSE(import.hasUv);
+    for (const auto vh : import.mesh.vertices()) {
+        const glm::vec3 p = point(import.mesh, vh);
+        const bool fromFile = p.y < 1.0f;
+        expectNear(toGlm(import.mesh.normal(vh)), fromFile ? tilt : glm::vec3(0, 1, 0), 1e-5f,
+                   "normal");
+        const glm::vec2 uv = toGlm(import.mesh.texcoord2D(vh));
+        EXPECT_TRUE(std::isfinite(uv.x) && std::isfinite(uv.y));
+        // The grid's own UV is its position remapped to [0, 1]².
+        if (fromFile) {
+            EXPECT_NEAR(uv.x, p.x + 0.5f, 1e-6f);
+            EXPECT_NEAR(uv.y, p.z + 0.5f, 1e-6f);
+        }
+    }
+}
+
+TEST(GltfLoader, GeneratesUvsInUnitSquareWhenMissing) {
+    const fs::path file = test::scratchDir("gltf_no_uv") / "grid.gltf";
+    GltfPrimitive grid = test::gridPrimitive(4, 2, 4);
+    grid.uvs.clear();
+    test::writeGltf(file, test::singleMeshAsset(grid));
+    const GltfImport import = loadOk(file);
+    EXPECT_FALSE(import.hasUv);
+    EXPECT_TRUE(import.hasNormals);
+    EXPECT_TRUE(anyNoteContains(import, "UVs generated"));
+    glm::vec2 lo(1e9f), hi(-1e9f);
+    for (const auto vh : import.mesh.vertices()) {
+        const glm::vec2 uv = toGlm(import.mesh.texcoord2D(vh));
+        lo = glm::min(lo, uv);
+        hi = glm::max(hi, uv);
+    }
+    EXPECT_GE(lo.x, 0.0f);
+    EXPECT_GE(lo.y, 0.0f);
+    EXPECT_LE(hi.x, 1.0f);
+    EXPECT_LE(hi.y, 1.0f);
+    EXPECT_GT(hi.x - lo.x, 0.5f) << "UVs must spread over the mesh, not collapse";
+}
+
+TEST(GltfLoader, DecodesNormalizedIntegerUvs) {
+    const fs::path dir = test::scratchDir("gltf_uv_norm");
+    for (const auto type :
+         {test::ComponentEncoding::UnsignedByte, test::ComponentEncoding::UnsignedShort}) {
+        GltfPrimitive grid = test::gridPrimitive(1, 1, 3);
+        grid.uvEncoding = {type, true};
+        test::writeGltf(dir / "uv.gltf", test::singleMeshAsset(grid));
+        const GltfImport import = loadOk(dir / "uv.gltf");
+        ASSERT_TRUE(import.hasUv);
+        const float step =
+            type == test::ComponentEncoding::UnsignedByte ? 1.0f / 255 : 1.0f / 65535;
+        // The grid's UV is its position remapped to [0, 1]².
+        for (const auto vh : import.mesh.vertices()) {
+            const glm::vec3 p = point(import.mesh, vh);
+            const glm::vec2 uv = toGlm(import.mesh.texcoord2D(vh));
+            EXPECT_NEAR(uv.x, p.x + 0.5f, step);
+            EXPECT_NEAR(uv.y, p.z + 0.5f, step);
+        }
+    }
+}
+
+TEST(GltfLoader, ReadsQuantizedPositionsAndNormals) {
+    const fs::path file = test::scratchDir("gltf_quantized") / "quantized.gltf";
+    GltfPrimitive box = test::boxPrimitive({-100, -50, -20}, {100, 50, 20});
+    box.positionEncoding = {test::ComponentEncoding::Short, false};
+    box.normalEncoding = {test::ComponentEncoding::Byte, true};
+    GltfAsset asset = test::singleMeshAsset(box);
+    asset.nodes[0].scale = glm::vec3(0.01f);  // dequantization, as KHR_mesh_quantization does it
+    asset.extensionsUsed = asset.extensionsRequired = {"KHR_mesh_quantization"};
+    test::writeGltf(file, asset);
+    const GltfImport import = loadOk(file);
+    expectNear(meshBounds(import.mesh).min, {-1.0f, -0.5f, -0.2f}, 1e-6f, "min");
+    expectNear(meshBounds(import.mesh).max, {1.0f, 0.5f, 0.2f}, 1e-6f, "max");
+    EXPECT_TRUE(import.hasNormals);
+    expectOutwardFacesAndNormals(import.mesh, glm::vec3(0.0f));
+}
+
+TEST(GltfLoader, LoadsNonIndexedTriangles) {
+    const fs::path file = test::scratchDir("gltf_non_indexed") / "soup.gltf";
+    const GltfPrimitive grid = test::gridPrimitive(2, 3, 3);
+    GltfPrimitive soup;
+    for (const std::uint32_t i : grid.indices) {
+        soup.positions.push_back(grid.positions[i]);
+        soup.normals.push_back(grid.normals[i]);
+        soup.uvs.push_back(grid.uvs[i]);
+    }
+    test::writeGltf(file, test::singleMeshAsset(soup));
+    const GltfImport import = loadOk(file);
+    EXPECT_EQ(import.mesh.n_faces(), grid.indices.size() / 3);
+    EXPECT_NEAR(surfaceArea(import.mesh), 2.0 * 3.0, 1e-5);
+    for (const auto fh : import.mesh.faces())
+        expectNear(windingNormal(import.mesh, fh), {0, 1, 0}, 1e-5f, "face normal");
+}
+
+TEST(GltfLoader, UnrollsTriangleStripsWithAlternatingWinding) {
+    const fs::path file = test::scratchDir("gltf_strip") / "strip.gltf";
+    // A ribbon along x: even vertices at z = 0, odd ones at z = 1.
+    GltfPrimitive strip;
+    strip.mode = test::PrimitiveMode::TriangleStrip;
+    const int length = 5;
+    for (int i = 0; i <= length; ++i)
+        for (const float z : {0.0f, 1.0f})
+            strip.positions.push_back({float(i), 0.0f, z});
+    test::writeGltf(file, test::singleMeshAsset(strip));
+    const GltfImport import = loadOk(file);
+    EXPECT_EQ(import.mesh.n_faces(), strip.positions.size() - 2);
+    EXPECT_NEAR(surfaceArea(import.mesh), double(length), 1e-5);
+    for (const auto fh : import.mesh.faces())
+        expectNear(windingNormal(import.mesh, fh), {0, 1, 0}, 1e-5f, "face normal");
+}
+
+TEST(GltfLoader, UnrollsIndexedTriangleFans) {
+    const fs::path file = test::scratchDir("gltf_fan") / "fan.gltf";
+    // Hub at the origin, rim on the unit circle turning from +x towards -z: seen from +Y,
+    // each (rim, next rim, hub) turns counter-clockwise.
+    GltfPrimitive fan;
+    fan.mode = test::PrimitiveMode::TriangleFan;
+    const int spokes = 5;
+    const float step = glm::radians(45.0f);
+    fan.positions.push_back(glm::vec3(0.0f));
+    for (int k = 0; k < spokes; ++k)
+        fan.positions.push_back({std::cos(-step * float(k)), 0.0f, std::sin(-step * float(k))});
+    // Indices in reverse storage order, to check the fan follows the indices.
+    std::reverse(fan.positions.begin() + 1, fan.positions.end());
+    fan.indices = {0};
+    for (int k = spokes; k >= 1; --k)
+        fan.indices.push_back(static_cast<std::uint32_t>(k));
+    fan.indexType = test::IndexType::UnsignedByte;
+    test::writeGltf(file, test::singleMeshAsset(fan));
+    const GltfImport import = loadOk(file);
+    EXPECT_EQ(import.mesh.n_faces(), std::size_t(spokes - 1));
+    EXPECT_NEAR(surfaceArea(import.mesh), (spokes - 1) * 0.5 * std::sin(double(step)), 1e-5);
+    for (const auto fh : import.mesh.faces())
+        expectNear(windingNormal(import.mesh, fh), {0, 1, 0}, 1e-5f, "face normal");
+}
+
+TEST(GltfLoader, IgnoresLinesAndPointsWithANote) {
+    const fs::path file = test::scratchDir("gltf_lines") / "lines.gltf";
+    const GltfPrimitive grid = test::gridPrimitive(1, 1, 2);
+    GltfPrimitive lines;
+    lines.mode = test::PrimitiveMode::Lines;
+    lines.positions = {{0, 0, 0}, {10, 10, 10}};
+    GltfPrimitive points = lines;
+    points.mode = test::PrimitiveMode::Points;
+    GltfAsset asset = test::singleMeshAsset(grid, "Fence");
+    asset.meshes[0].primitives.push_back(lines);
+    asset.meshes[0].primitives.push_back(points);
+    test::writeGltf(file, asset);
+    const GltfImport import = loadOk(file);
+    EXPECT_EQ(import.mesh.n_faces(), grid.indices.size() / 3);
+    EXPECT_LT(meshBounds(import.mesh).max.y, 1.0f) << "line vertices must not enter the mesh";
+    EXPECT_TRUE(anyNoteContains(import, "mesh \"Fence\" primitive 1: lines ignored"));
+    EXPECT_TRUE(anyNoteContains(import, "mesh \"Fence\" primitive 2: points ignored"));
+}
+
+TEST(GltfLoader, PlacesEveryMeshOnceWhenTheFileHasNoScene) {
+    const fs::path file = test::scratchDir("gltf_no_scene") / "loose.gltf";
+    GltfAsset asset;
+    asset.meshes.push_back({"A", {test::gridPrimitive(1, 1, 1)}});
+    asset.meshes.push_back({"B", {test::gridPrimitive(1, 1, 2)}});
+    asset.withScene = false;
+    test::writeGltf(file, asset);
+    const GltfImport import = loadOk(file);
+    EXPECT_EQ(import.mesh.n_faces(), 2u + 8u);
+    EXPECT_TRUE(anyNoteContains(import, "no scenes"));
+}
+
+TEST(GltfLoader, IgnoresMissingAndBrokenTextures) {
+    const fs::path file = test::scratchDir("gltf_textures") / "textured.gltf";
+    test::GltfDocument doc = test::buildGltf(test::singleMeshAsset(test::gridPrimitive(1, 1, 1)));
+    doc.json["images"] = {
+        {{"uri", "missing.png"}}, {{"uri", "../outside.png"}}, {{"bufferView", 99}}};
+    doc.json["textures"] = {{{"source", 0}}, {{"source", 2}}};
+    doc.json["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    doc.json["meshes"][0]["primitives"][0]["material"] = 0;
+    test::writeGltf(file, doc);
+    EXPECT_EQ(loadOk(file).mesh.n_faces(), 2u);
+}
+
+TEST(GltfLoader, IgnoresAppearanceOnlyRequiredExtensionsWithANote) {
+    const fs::path file = test::scratchDir("gltf_unlit") / "unlit.gltf";
+    GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(1, 1, 1));
+    asset.extensionsUsed = asset.extensionsRequired = {"KHR_materials_unlit"};
+    test::writeGltf(file, asset);
+    EXPECT_TRUE(anyNoteContains(loadOk(file), "KHR_materials_unlit"));
+}
+
+// --- Bad input: each load fails with one line naming the file and the problem. ---
+
+TEST(GltfLoader, ReportsMissingFile) {
+    const fs::path file = test::scratchDir("gltf_missing") / "nowhere.gltf";
+    EXPECT_TRUE(contains(loadError(file), "file not found"));
+}
+
+TEST(GltfLoader, ReportsMissingBufferFile) {
+    const fs::path dir = test::scratchDir("gltf_missing_bin");
+    test::writeGltf(dir / "scene.gltf", test::singleMeshAsset(test::gridPrimitive(1, 1, 1)));
+    fs::remove(dir / "scene.bin");
+    const std::string message = loadError(dir / "scene.gltf");
+    EXPECT_TRUE(contains(message, "scene.bin"));
+    EXPECT_TRUE(contains(message, "not found"));
+}
+
+TEST(GltfLoader, ReportsTruncatedJson) {
+    const fs::path file = test::scratchDir("gltf_truncated_json") / "cut.gltf";
+    test::writeGltf(file, test::singleMeshAsset(test::gridPrimitive(1, 1, 1)),
+                    BufferStorage::DataUri);
+    fs::resize_file(file, fs::file_size(file) / 2);
+    const std::string message = loadError(file);
+    EXPECT_TRUE(contains(message, "JSON"));
+    EXPECT_TRUE(contains(message, "truncated"));
+}
+
+TEST(GltfLoader, ReportsTruncatedGlb) {
+    const fs::path file = test::scratchDir("gltf_truncated_glb") / "cut.glb";
+    const GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(1, 1, 4));
+    for (const double keep : {0.9, 0.5, 0.05}) {
+        test::writeGltf(file, asset, BufferStorage::Glb);
+        fs::resize_file(file, static_cast<std::uintmax_t>(double(fs::file_size(file)) * keep));
+        EXPECT_TRUE(contains(loadError(file), "truncated")) << "kept " << keep;
+    }
+}
+
+TEST(GltfLoader, ReportsBufferShorterThanAccessor) {
+    const fs::path file = test::scratchDir("gltf_short_buffer") / "short.gltf";
+    test::GltfDocument doc = test::buildGltf(test::singleMeshAsset(test::gridPrimitive(1, 1, 2)));
+    auto& primitive = doc.json["meshes"][0]["primitives"][0];
+    const int position = primitive["attributes"]["POSITION"];
+    auto& accessor = doc.json["accessors"][static_cast<std::size_t>(position)];
+    accessor["count"] = accessor["count"].get<int>() * 100;
+    doc.json["bufferViews"][accessor["bufferView"].get<std::size_t>()]["byteLength"] = 1 << 20;
+    test::writeGltf(file, doc);
+    const std::string message = loadError(file);
+    EXPECT_TRUE(contains(message, "accessor " + std::to_string(position) + " (POSITION of mesh"));
+    EXPECT_TRUE(contains(message, "past the end of buffer 0"));
+    EXPECT_TRUE(contains(message, "truncated or corrupt"));
+}
+
+TEST(GltfLoader, ReportsTruncatedBufferFile) {
+    const fs::path dir = test::scratchDir("gltf_short_bin");
+    test::writeGltf(dir / "scene.gltf", test::singleMeshAsset(test::gridPrimitive(1, 1, 2)));
+    fs::resize_file(dir / "scene.bin", fs::file_size(dir / "scene.bin") / 2);
+    const std::string message = loadError(dir / "scene.gltf");
+    EXPECT_TRUE(contains(message, "buffer 0"));
+    EXPECT_TRUE(contains(message, "truncated"));
+}
+
+TEST(GltfLoader, ReportsIndexOutOfRange) {
+    const fs::path file = test::scratchDir("gltf_bad_index") / "bad.gltf";
+    GltfPrimitive grid = test::gridPrimitive(1, 1, 2);
+    grid.indices[4] = static_cast<std::uint32_t>(grid.positions.size());
+    test::writeGltf(file, test::singleMeshAsset(grid));
+    const std::string message = loadError(file);
+    EXPECT_TRUE(contains(message, "index out of range"));
+    EXPECT_TRUE(contains(message, std::to_string(grid.positions.size()) + " vertices"));
+}
+
+TEST(GltfLoader, ReportsNonFinitePosition) {
+    const fs::path file = test::scratchDir("gltf_nan") / "nan.gltf";
+    GltfPrimitive grid = test::gridPrimitive(1, 1, 1);
+    grid.positions[2].y = std::numeric_limits<float>::quiet_NaN();
+    test::writeGltf(file, test::singleMeshAsset(grid));
+    const std::string message = loadError(file);
+    EXPECT_TRUE(contains(message, "non-finite"));
+    EXPECT_TRUE(contains(message, "(POSITION of mesh \"Mesh\" primitive 0)"));
+}
+
+TEST(GltfLoader, ReportsAttributeCountMismatch) {
+    const fs::path file = test::scratchDir("gltf_count_mismatch") / "mismatch.gltf";
+    GltfPrimitive grid = test::gridPrimitive(1, 1, 2);
+    grid.normals.pop_back();
+    test::writeGltf(file, test::singleMeshAsset(grid));
+    EXPECT_TRUE(contains(loadError(file), "NORMAL of mesh"));
+}
+
+TEST(GltfLoader, RefusesBufferUriOutsideTheFolder) {
+    const fs::path dir = test::scratchDir("gltf_escape");
+    fs::create_directories(dir / "model");
+    const fs::path file = dir / "model" / "scene.gltf";
+    test::writeGltf(file, test::singleMeshAsset(test::gridPrimitive(1, 1, 1)),
+                    BufferStorage::ExternalFile, "../secret.bin");
+    ASSERT_TRUE(fs::exists(dir / "secret.bin"));
+    const std::string message = loadError(file);
+    EXPECT_TRUE(contains(message, "\"../secret.bin\""));
+    EXPECT_TRUE(contains(message, "folder"));
+}
+
+TEST(GltfLoader, RefusesAbsoluteBufferUri) {
+    const fs::path dir = test::scratchDir("gltf_absolute");
+    test::GltfDocument doc = test::buildGltf(test::singleMeshAsset(test::gridPrimitive(1, 1, 1)));
+    test::writeGltf(dir / "real.gltf", doc);
+    const std::string absolute = fs::absolute(dir / "real.bin").generic_string();
+    doc.json["buffers"][0]["uri"] = absolute;
+    test::writeGltf(dir / "absolute.gltf", doc);
+    const std::string message = loadError(dir / "absolute.gltf");
+    EXPECT_TRUE(contains(message, absolute));
+    EXPECT_TRUE(contains(message, "absolute"));
+}
+
+TEST(GltfLoader, RefusesRequiredDracoCompression) {
+    const fs::path file = test::scratchDir("gltf_draco") / "draco.gltf";
+    GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(1, 1, 1));
+    asset.extensionsUsed = asset.extensionsRequired = {"KHR_draco_mesh_compression"};
+    test::writeGltf(file, asset);
+    EXPECT_TRUE(contains(loadError(file), "KHR_draco_mesh_compression"));
+}
+
+TEST(GltfLoader, ReportsFilesThatAreNotGltf) {
+    const fs::path dir = test::scratchDir("gltf_not_gltf");
+    const std::pair<std::string, std::string> files[] = {
+        {"notes.gltf", "hello, this is text"},
+        {"image.glb", "\x89PNG\r\n\x1a\n not a model"},
+        {"package.gltf", R"({"name": "grass", "version": "1.0"})"},
+        {"empty.gltf", ""}};
+    for (const auto& [name, contents] : files) {
+        std::ofstream(dir / name, std::ios::binary) << contents;
+        const std::string message = loadError(dir / name);
+        EXPECT_TRUE(contains(message, "glTF")) << message;
+    }
+}
+
+TEST(GltfLoader, ReportsFileWithoutTriangles) {
+    const fs::path file = test::scratchDir("gltf_only_lines") / "lines.gltf";
+    GltfPrimitive lines;
+    lines.mode = test::PrimitiveMode::LineStrip;
+    lines.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    test::writeGltf(file, test::singleMeshAsset(lines));
+    EXPECT_TRUE(contains(loadError(file), "contains no triangles"));
+}
+
+}  // namespace
+}  // namespace grass::core

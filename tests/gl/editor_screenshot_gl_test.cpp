@@ -1,0 +1,64 @@
+// The editor window, seen without a person: grass-editor --screenshot under Xvfb must show the
+// same picture `grass render` writes headless for the same project.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+
+#include "gl_context_fixture.h"
+#include "offscreen_render.h"
+#include "support/test_paths.h"
+#include "util/image_file.h"
+
+namespace grass::test {
+namespace {
+
+using EditorScreenshotTest = GlTest;
+
+TEST_F(EditorScreenshotTest, WindowUnderXvfbShowsWhatHeadlessRenderShows) {
+    const auto dir = scratchDir("editor_screenshot");
+    std::ofstream(dir / "project.json") << R"({
+  "format": "grass-project", "version": 1, "name": "tiny",
+  "mesh": {"procedural": "plane", "size": 3, "resolution": 4},
+  "layers": [{"name": "grass", "density": 400}],
+  "cameras": [{"name": "near", "position": [2.5, 1.6, 2.5], "target": [0, 0.2, 0]}],
+  "render": {"width": 320, "height": 240, "geometry": "strips", "msaa": 4}
+})";
+    const std::string shot = (dir / "window.png").string();
+    const std::string command = "xvfb-run -a -s '-screen 0 640x480x24' " + std::string(GRASS_EDITOR_EXE) +
+                                " " + dir.string() + " --screenshot " + shot + " --frames 2 > " +
+                                (dir / "log.txt").string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    ASSERT_EQ(status, 0) << command << "\n(see " << (dir / "log.txt") << "; needs the xvfb package)";
+    auto window = readRgba8Image(shot);
+    ASSERT_TRUE(window.ok()) << window.error().str();
+    ASSERT_EQ(window->width, 320);
+    ASSERT_EQ(window->height, 240);
+
+    auto loaded = core::loadProject(dir);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+    auto scene = core::buildScene(*loaded);
+    ASSERT_TRUE(scene.ok());
+    render::OffscreenRequest request;
+    request.width = 320;
+    request.height = 240;
+    request.frames = 1;
+    request.options = render::renderOptionsFor(loaded->project.render, loaded->project.sun, true);
+    auto headless = render::renderOffscreen(*scene, *render::projectCamera(loaded->project, ""), request);
+    ASSERT_TRUE(headless.ok()) << headless.error().str();
+
+    // Same scene, camera, renderer (llvmpipe under both GLX and EGL), so the pictures match
+    // closely; a window that shows nothing, the wrong camera or no grass differs in most
+    // pixels. Tolerance: mean absolute difference under 3/255 per channel (MSAA resolve
+    // paths may differ slightly between a window and an offscreen target).
+    double sum = 0.0;
+    for (std::size_t i = 0; i < window->pixels.size(); i += 4)
+        for (std::size_t c = 0; c < 3; ++c)
+            sum += std::abs(int(window->pixels[i + c]) - int(headless->image.pixels[i + c]));
+    const double mean = sum / (static_cast<double>(window->pixels.size() / 4) * 3.0);
+    EXPECT_LT(mean, 3.0);
+    EXPECT_GT(grassPixelShare(window->pixels), 0.2);
+}
+
+}  // namespace
+}  // namespace grass::test

@@ -1,0 +1,24 @@
+// One headless GL context for every GL test of the executable. Without one, each test fails
+// with the reason (STYLE.md §9: never a silent skip; CI has llvmpipe).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "headless_context.h"
+
+namespace grass::test {
+
+class GlTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite();
+    void SetUp() override;
+    static std::unique_ptr<gl::HeadlessContext>& context();
+    static std::string& contextError();
+};
+
+// Share of pixels whose colour is grass-like: green clearly above red and blue.
+double grassPixelShare(const std::vector<std::uint8_t>& rgba);
+
+}  // namespace grass::test
