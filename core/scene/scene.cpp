@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "maps/map_image.h"
 #include "mesh/gltf_loader.h"
@@ -17,13 +18,28 @@ std::size_t Scene::totalBlades() const {
     return total;
 }
 
+// A file named by the project that cannot be read: say which project field named it, so the
+// user knows where to fix it ("project.json: /layers/0/density_map: maps/d.png: not found").
+static Error fromProjectField(const LoadedProject& loaded, const std::string& field, const Error& error) {
+    return Error{loaded.file.string(), field + ": " + error.str()};
+}
+
+double estimateLayerBlades(const ScatterParams& params, double area) {
+    double blades = static_cast<double>(params.density) * area;
+    if (params.clumpSpacing > 0.0f) {
+        const double spacing = static_cast<double>(params.clumpSpacing);
+        blades += 2.0 / (std::sqrt(3.0) * spacing * spacing) * area * params.bladesPerClump;
+    }
+    return blades;
+}
+
 Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes) {
     const MeshSource& source = loaded.project.mesh;
     if (!source.isFile) return makeProceduralMesh(source.procedural);
     auto path = resolveAssetPath(loaded.folder, source.file, "/mesh/file");
     if (!path) return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
     auto imported = loadGltf(*path);
-    if (!imported) return imported.error();
+    if (!imported) return fromProjectField(loaded, "/mesh/file", imported.error());
     if (notes)
         for (auto& note : imported->notes) notes->push_back(path->string() + ": " + note);
     return std::move(imported->mesh);
@@ -37,6 +53,20 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
     scene.area = surfaceArea(scene.mesh);
     scene.notes = std::move(notes);
     const Project& project = loaded.project;
+    double total = 0.0;
+    for (std::size_t i = 0; i < project.layers.size(); ++i) {
+        const double blades = estimateLayerBlades(project.layers[i].scatter, scene.area);
+        total += blades;
+        if (total > MAX_SCENE_BLADES) {
+            char message[256];
+            std::snprintf(message, sizeof message,
+                          "/layers/%zu: would grow about %.3g blades on %.4g m² of surface "
+                          "(limit %.0f million per scene): lower density, or raise clump_spacing "
+                          "or lower blades_per_clump",
+                          i, blades, scene.area, MAX_SCENE_BLADES / 1e6);
+            return Error{loaded.file.string(), message};
+        }
+    }
     for (std::size_t i = 0; i < project.layers.size(); ++i) {
         const GrassLayer& layer = project.layers[i];
         MapImage density;
@@ -46,7 +76,7 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
             auto path = resolveAssetPath(loaded.folder, layer.densityMap, field);
             if (!path) return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
             auto map = loadMapImage(*path);
-            if (!map) return map.error();
+            if (!map) return fromProjectField(loaded, field, map.error());
             density = std::move(*map);
             for (const auto& warning : density.warnings) scene.notes.push_back(path->string() + ": " + warning);
             densityMap = &density;

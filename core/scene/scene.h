@@ -30,6 +30,14 @@ struct Scene {
     std::size_t totalBlades() const;
 };
 
+// The most blades one scene may hold: 64 bytes each on the GPU plus the CPU copy, so 20 million
+// is ~2.6 GB; far beyond that a typo in a density would freeze the machine instead of failing.
+inline constexpr double MAX_SCENE_BLADES = 20.0e6;
+
+// Upper estimate of the blades a layer grows on `area` m²: uniform density × area plus, for
+// clumps, the densest Poisson-disk packing (hexagonal, 2/(√3·spacing²) centres per m²).
+double estimateLayerBlades(const ScatterParams& params, double area);
+
 // Loads the mesh (file or procedural), each layer's density map, scatters and patches.
 // Errors name the file (mesh, map) or the project field.
 Result<Scene> buildScene(const LoadedProject& project);

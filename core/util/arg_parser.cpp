@@ -113,7 +113,8 @@ Result<void> ArgParser::parse(const std::vector<std::string>& args) {
         mGiven.push_back(mPositionals[nextPositional - 1].name);
     }
     for (const auto& p : mPositionals)
-        if (p.required && !given(p.name)) return makeError(p.name, "missing (see --help)");
+        if (p.required && !given(p.name))
+            return makeError(p.name, "missing: give " + p.help + " (usage: " + mUsage + ")");
     return {};
 }
 

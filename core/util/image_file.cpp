@@ -15,18 +15,27 @@ static std::string oneLine(std::string text) {
     return text;
 }
 
+Result<void> checkImageWritable(const fs::path& file) {
+    std::error_code ec;
+    if (fs::is_directory(file, ec))
+        return makeError(file.string(), "is a folder: give an image file name such as render.png");
+    if (file.has_parent_path() && !fs::is_directory(file.parent_path(), ec))
+        return makeError(file.string(), "the folder " + file.parent_path().string() + " does not exist");
+    if (!OIIO::ImageOutput::create(file.string()))
+        return makeError(file.string(),
+                         "unknown image format \"" + file.extension().string() + "\" (use .png, .tif, .jpg or .exr)");
+    return {};
+}
+
 Result<void> writeRgba8Image(const fs::path& file, int width, int height,
                              std::span<const std::uint8_t> pixels) {
     if (width <= 0 || height <= 0 ||
         pixels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4)
         return makeError(file.string(), "internal: image size does not match its pixels");
+    if (auto writable = checkImageWritable(file); !writable) return writable;
     std::error_code ec;
-    if (file.has_parent_path() && !fs::exists(file.parent_path(), ec))
-        return makeError(file.string(), "the folder " + file.parent_path().string() + " does not exist");
     const fs::path temporary = temporaryPathFor(file);
     auto out = OIIO::ImageOutput::create(file.string());
-    if (!out)
-        return makeError(file.string(), "cannot write this image format (use .png, .tif, .jpg or .exr)");
     OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
     if (!out->open(temporary.string(), spec)) {
         fs::remove(temporary, ec);

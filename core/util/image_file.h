@@ -11,6 +11,10 @@
 
 namespace grass {
 
+// Checks before any work is done that `file` can be written: its folder exists, it is not a
+// folder, and OpenImageIO knows its extension.
+Result<void> checkImageWritable(const std::filesystem::path& file);
+
 // `pixels`: width × height × 4 bytes, row 0 = top.
 Result<void> writeRgba8Image(const std::filesystem::path& file, int width, int height,
                              std::span<const std::uint8_t> pixels);

@@ -24,9 +24,13 @@ The editor window is 'grass-editor'.
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-        std::fputs(HELP, args.empty() ? stderr : stdout);
-        return args.empty() ? grass::cli::EXIT_USAGE : 0;
+    if (args.empty()) {
+        grass::cli::printError("", "missing command: grass render|mesh-info ... (see grass --help)");
+        return grass::cli::EXIT_USAGE;
+    }
+    if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        std::fputs(HELP, stdout);
+        return 0;
     }
     if (args[0] == "--version") {
         std::puts("grass 0.1.0");
@@ -36,6 +40,9 @@ int main(int argc, char** argv) {
     args.erase(args.begin());
     if (command == "render") return grass::cli::runRender(args);
     if (command == "mesh-info") return grass::cli::runMeshInfo(args);
-    grass::cli::printError(command, "unknown command (commands: render, mesh-info; see grass --help)");
+    if (command.rfind("-", 0) == 0)
+        grass::cli::printError("", command + ": unknown option (see grass --help)");
+    else
+        grass::cli::printError(command, "unknown command (commands: render, mesh-info; see grass --help)");
     return grass::cli::EXIT_USAGE;
 }

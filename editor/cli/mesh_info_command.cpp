@@ -9,10 +9,6 @@
 
 namespace grass::cli {
 
-void printError(const std::string& command, const std::string& message) {
-    std::fprintf(stderr, "grass %s: %s\n", command.c_str(), message.c_str());
-}
-
 int runMeshInfo(const std::vector<std::string>& args) {
     std::string file;
     bool json = false;

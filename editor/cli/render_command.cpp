@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 #include "util/arg_parser.h"
 #include "commands.h"
@@ -21,7 +22,7 @@ double msSince(Clock::time_point start) {
 }
 
 struct RenderArgs {
-    std::string project, mesh, out, camera, geometry = "project";
+    std::string project, mesh, out, camera, geometry = "project", msaa = "project";
     int width = 0, height = 0, frames = 3, blades = 60000;
     std::uint64_t seed = 0;
     bool glDebug = false;
@@ -73,6 +74,8 @@ int runRender(const std::vector<std::string>& argv) {
     parser.choice("--geometry", {"project", "auto", "tess", "strips"},
                   "blade geometry path: tessellation shaders or instanced strips; auto = strips on "
                   "software GL, tessellation on a GPU", &args.geometry);
+    parser.choice("--msaa", {"project", "0", "1", "2", "4", "8"},
+                  "multisample anti-aliasing samples per pixel", &args.msaa);
     parser.integer("--frames", "frames to draw and time", &args.frames, 1, 1000);
     parser.integer("--blades", "with --mesh: about how many blades to grow", &args.blades, 1, 20000000);
     parser.flag("--gl-debug", "print GL debug output (errors and warnings from the driver)", &args.glDebug);
@@ -90,6 +93,20 @@ int runRender(const std::vector<std::string>& argv) {
                                                : "give either a project or --mesh, not both");
         return EXIT_USAGE;
     }
+
+    if (!args.project.empty()) {
+        const std::string extension = std::filesystem::path(args.project).extension().string();
+        if (extension == ".gltf" || extension == ".glb") {
+            printError("render", args.project + ": is a glTF mesh, not a project: use --mesh " + args.project);
+            return EXIT_USAGE;
+        }
+    }
+    // Fail before the (possibly long) scene build and render when the image can't be written.
+    if (!args.out.empty())
+        if (auto writable = checkImageWritable(args.out); !writable) {
+            printError("render", writable.error().str());
+            return EXIT_USAGE;
+        }
 
     const auto buildStart = Clock::now();
     core::Scene scene;
@@ -122,7 +139,7 @@ int runRender(const std::vector<std::string>& argv) {
     render::OffscreenRequest request;
     request.width = args.width > 0 ? args.width : settings.width;
     request.height = args.height > 0 ? args.height : settings.height;
-    request.msaaSamples = settings.msaaSamples;
+    request.msaaSamples = args.msaa == "project" ? settings.msaaSamples : std::stoi(args.msaa);
     request.frames = args.frames;
     request.options = render::renderOptionsFor(settings, project.sun, gl::isSoftwareRenderer());
 

@@ -171,7 +171,7 @@ grass_cli_test(render_project_negative_density ERROR "/layers/0/density" --absen
 # (today it runs past 60 s and 3.8 GB); enable it with the fix.
 grass_cli_test(render_project_density_too_high ERROR "/layers/0" --absent ${OUT}
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/huge_density --out ${OUT})
-set_tests_properties(cli.render_project_density_too_high PROPERTIES DISABLED TRUE
+set_tests_properties(cli.render_project_density_too_high PROPERTIES
                      ENVIRONMENT GRASS_CLI_TIMEOUT=30)
 grass_cli_test(render_project_density_map_missing ERROR "maps/missing.png" --absent ${OUT}
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/missing_density_map --out ${OUT})

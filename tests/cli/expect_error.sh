@@ -35,14 +35,17 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do
         *) echo "expect_error.sh: unknown option $1" >&2; usage ;;
     esac
 done
-[ $# -ge 2 ] && [ "$1" = "--" ] || usage
+if [ $# -lt 2 ] || [ "$1" != "--" ]; then usage; fi
 shift
 for text in "${expected[@]}"; do
     [ -n "$text" ] || { echo "expect_error.sh: SUBSTRING must not be empty" >&2; exit 2; }
 done
 
 for path in ${absent[@]+"${absent[@]}"}; do
-    [ -n "$path" ] && [ "$path" != "/" ] || { echo "expect_error.sh: bad --absent path" >&2; exit 2; }
+    if [ -z "$path" ] || [ "$path" = "/" ]; then
+        echo "expect_error.sh: bad --absent path" >&2
+        exit 2
+    fi
     rm -rf -- "$path"
 done
 

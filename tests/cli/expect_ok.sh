@@ -44,7 +44,7 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do
         *) echo "expect_ok.sh: unknown option $1" >&2; usage ;;
     esac
 done
-[ $# -ge 2 ] && [ "$1" = "--" ] || usage
+if [ $# -lt 2 ] || [ "$1" != "--" ]; then usage; fi
 shift
 
 if [ -n "$pngFile" ]; then
