@@ -33,9 +33,13 @@ void SurfaceMeshBuilder::addTriangle(std::uint32_t a, std::uint32_t b, std::uint
     if (added) return;
     SurfaceMesh::VertexHandle copies[3];
     for (int i = 0; i < 3; ++i) {
-        copies[i] = mMesh.add_vertex(mMesh.point(handles[i]));
-        mMesh.set_normal(copies[i], mMesh.normal(handles[i]));
-        mMesh.set_texcoord2D(copies[i], mMesh.texcoord2D(handles[i]));
+        // Copies, not references: add_vertex may reallocate the arrays they point into.
+        const OpenMesh::Vec3f point = mMesh.point(handles[i]);
+        const OpenMesh::Vec3f normal = mMesh.normal(handles[i]);
+        const OpenMesh::Vec2f uv = mMesh.texcoord2D(handles[i]);
+        copies[i] = mMesh.add_vertex(point);
+        mMesh.set_normal(copies[i], normal);
+        mMesh.set_texcoord2D(copies[i], uv);
     }
     mMesh.add_face(copies[0], copies[1], copies[2]);
     ++mDuplicated;

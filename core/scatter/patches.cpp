@@ -26,7 +26,8 @@ std::uint64_t spreadBits(std::uint64_t v) {
 }
 
 std::uint64_t quantise(float value, float lo, float extent) {
-    if (!(extent > 0.0f)) return 0;
+    if (!(extent > 0.0f))
+        return 0;
     const float t = std::clamp((value - lo) / extent, 0.0f, 1.0f);
     return static_cast<std::uint64_t>(t * MORTON_MAX);
 }
@@ -42,7 +43,8 @@ struct Root {
 // multiple of patchSize and the left part gets a whole number of patches, so every leaf starts
 // on a patch boundary and only the rightmost leaf can be short.
 void split(std::vector<Root>& roots, std::size_t first, std::size_t count, std::size_t patchSize) {
-    if (count <= patchSize) return;
+    if (count <= patchSize)
+        return;
     const std::size_t patches = (count + patchSize - 1) / patchSize;
     const std::size_t leftCount = (patches / 2) * patchSize;
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
@@ -56,11 +58,11 @@ void split(std::vector<Root>& roots, std::size_t first, std::size_t count, std::
     const auto begin = roots.begin() + static_cast<std::ptrdiff_t>(first);
     // Ties broken by input index: a total order, so the partition is the same on every
     // standard library.
-    std::nth_element(begin, begin + static_cast<std::ptrdiff_t>(leftCount),
-                     begin + static_cast<std::ptrdiff_t>(count), [axis](const Root& l, const Root& r) {
-                         return l.v0[axis] < r.v0[axis] ||
-                                (l.v0[axis] == r.v0[axis] && l.index < r.index);
-                     });
+    std::nth_element(
+        begin, begin + static_cast<std::ptrdiff_t>(leftCount),
+        begin + static_cast<std::ptrdiff_t>(count), [axis](const Root& l, const Root& r) {
+            return l.v0[axis] < r.v0[axis] || (l.v0[axis] == r.v0[axis] && l.index < r.index);
+        });
     split(roots, first, leftCount, patchSize);
     split(roots, first + leftCount, count - leftCount, patchSize);
 }
@@ -84,7 +86,8 @@ Patch makePatch(const std::vector<Blade>& blades, std::vector<Root>& roots, std:
     for (std::size_t i = first; i < first + count; ++i)
         keyed.emplace_back(mortonCode(roots[i].v0, patch.bounds), roots[i].index);
     std::sort(keyed.begin(), keyed.end());
-    for (std::size_t i = 0; i < count; ++i) roots[first + i] = {blades[keyed[i].second].v0(), keyed[i].second};
+    for (std::size_t i = 0; i < count; ++i)
+        roots[first + i] = {blades[keyed[i].second].v0(), keyed[i].second};
     return patch;
 }
 
@@ -102,7 +105,8 @@ PatchedBlades buildPatches(const std::vector<Blade>& blades, std::uint32_t patch
     GRASS_ASSERT(blades.size() < PADDING);
     PatchedBlades result;
     result.patchSize = patchSize;
-    if (blades.empty()) return result;
+    if (blades.empty())
+        return result;
 
     std::vector<Root> roots(blades.size());
     for (std::size_t i = 0; i < roots.size(); ++i)

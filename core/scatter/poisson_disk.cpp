@@ -23,7 +23,8 @@ public:
         const float d2 = distance * distance;
         const glm::ivec3 cell = cellOf(p);
         // The candidate's own cell first: at saturation that is where a conflict usually is.
-        if (cellHasPointWithin(key(cell), p, d2, points)) return true;
+        if (cellHasPointWithin(key(cell), p, d2, points))
+            return true;
         // Distance from p to the faces of its cell, in cell units, per axis and side, less a
         // margin for the rounding that assigned stored points to cells (a few ulps of p·inv).
         // Outside the clamped range cells are unbounded: no pruning there.
@@ -31,7 +32,8 @@ public:
         for (int axis = 0; axis < 3; ++axis) {
             const double scaled = static_cast<double>(p[axis]) * static_cast<double>(mInvCell);
             const double f = scaled - static_cast<double>(cell[axis]);
-            if (!(f >= 0.0 && f <= 1.0)) continue;
+            if (!(f >= 0.0 && f <= 1.0))
+                continue;
             const double margin = 1e-4 + 5e-7 * std::abs(scaled);
             low[axis] = static_cast<float>(std::max(f - margin, 0.0));
             high[axis] = static_cast<float>(std::max(1.0 - f - margin, 0.0));
@@ -43,8 +45,10 @@ public:
         for (int dz = -1; dz <= 1; ++dz) {
             for (int dy = -1; dy <= 1; ++dy) {
                 for (int dx = -1; dx <= 1; ++dx) {
-                    if (dx == 0 && dy == 0 && dz == 0) continue;
-                    if (gap(0, dx) + gap(1, dy) + gap(2, dz) >= 1.0f) continue;
+                    if (dx == 0 && dy == 0 && dz == 0)
+                        continue;
+                    if (gap(0, dx) + gap(1, dy) + gap(2, dz) >= 1.0f)
+                        continue;
                     if (cellHasPointWithin(key(clampCell(cell + glm::ivec3(dx, dy, dz))), p, d2,
                                            points))
                         return true;
@@ -55,7 +59,8 @@ public:
     }
 
     void insert(glm::vec3 p, std::uint32_t index) {
-        if (2 * (mUsed + 1) > mSlots.size()) rehash(2 * mSlots.size());
+        if (2 * (mUsed + 1) > mSlots.size())
+            rehash(2 * mSlots.size());
         const std::uint64_t k = key(cellOf(p));
         Slot& slot = mSlots[find(k)];
         if (slot.key == 0) {
@@ -111,7 +116,8 @@ private:
         const std::size_t mask = mSlots.size() - 1;
         const auto home = static_cast<std::size_t>(Rng::splitMix(k >> 2u) << 2u) | (k & 3u);
         for (std::size_t i = home & mask;; i = (i + 1) & mask) {
-            if (mSlots[i].key == k || mSlots[i].key == 0) return i;
+            if (mSlots[i].key == k || mSlots[i].key == 0)
+                return i;
         }
     }
 
@@ -119,18 +125,22 @@ private:
         std::vector<Slot> old = std::move(mSlots);
         mSlots.assign(size, Slot{});
         for (const Slot& slot : old) {
-            if (slot.key != 0) mSlots[find(slot.key)] = slot;
+            if (slot.key != 0)
+                mSlots[find(slot.key)] = slot;
         }
     }
 
     bool cellHasPointWithin(std::uint64_t k, glm::vec3 p, float d2,
                             const std::vector<SurfaceSample>& points) const {
         const Slot& slot = mSlots[find(k)];
-        if (slot.key == 0) return false;
-        if (glm::dot(slot.first - p, slot.first - p) < d2) return true;
+        if (slot.key == 0)
+            return false;
+        if (glm::dot(slot.first - p, slot.first - p) < d2)
+            return true;
         for (std::uint32_t i = slot.rest; i != NONE; i = mNext[i]) {
             const glm::vec3 d = points[i].position - p;
-            if (glm::dot(d, d) < d2) return true;
+            if (glm::dot(d, d) < d2)
+                return true;
         }
         return false;
     }
@@ -144,7 +154,8 @@ private:
 }  // namespace
 
 double poissonDiskCapacity(double area, float minDistance) {
-    if (!(area > 0.0) || !(minDistance > 0.0f)) return 0.0;
+    if (!(area > 0.0) || !(minDistance > 0.0f))
+        return 0.0;
     const double d = static_cast<double>(minDistance);
     return std::ceil(2.0 * area / (std::sqrt(3.0) * d * d));
 }
@@ -159,7 +170,8 @@ PoissonDiskResult poissonDiskSample(const SurfaceSampler& sampler, const Poisson
     const std::size_t pointLimit = std::min<std::size_t>(params.maxPoints, 0xFFFFFFFEu);
     for (; result.attempts < params.maxAttempts; ++result.attempts) {
         const SurfaceSampler::Location dart = sampler.locate(rng);
-        if (hash.anyWithin(dart.position, params.minDistance, result.points)) continue;
+        if (hash.anyWithin(dart.position, params.minDistance, result.points))
+            continue;
         hash.insert(dart.position, static_cast<std::uint32_t>(result.points.size()));
         result.points.push_back(sampler.evaluate(dart.triangle, dart.b1, dart.b2));
         if (result.points.size() >= pointLimit) {

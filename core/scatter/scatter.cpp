@@ -28,18 +28,17 @@ constexpr std::uint64_t STREAM_CLUMP_CENTRES = 1;
 constexpr std::uint64_t STREAM_CLUMP_BLADES = 2;
 
 float mapValue(const MapImage* map, glm::vec2 uv) {
-    if (map == nullptr || map->texels.empty()) return 1.0f;
+    if (map == nullptr || map->texels.empty())
+        return 1.0f;
     return map->sample(uv);
 }
 
-void addBlade(ScatterResult& result, const SurfaceSample& at, const BladeRanges& ranges,
-              Rng& rng) {
+Blade makeBlade(const SurfaceSample& at, const BladeRanges& ranges, Rng& rng) {
     const float h = rng.uniform(ranges.heightMin, ranges.heightMax);
     const float w = rng.uniform(ranges.widthMin, ranges.widthMax);
     const float s = rng.uniform(ranges.stiffnessMin, ranges.stiffnessMax);
     const float theta = rng.uniform(0.0f, TWO_PI);
-    result.blades.push_back(makeRestBlade(at.position, at.normal, h, w, s, theta));
-    result.uvs.push_back(at.uv);
+    return makeRestBlade(at.position, at.normal, h, w, s, theta);
 }
 
 std::string countText(double count) {
@@ -49,7 +48,8 @@ std::string countText(double count) {
 void scatterUniform(const SurfaceSampler& sampler, const ScatterParams& params,
                     const MapImage* densityMap, std::uint64_t seed, ScatterResult& result) {
     const double density = static_cast<double>(params.density);
-    if (!(density > 0.0) || !std::isfinite(density)) return;
+    if (!(density > 0.0) || !std::isfinite(density))
+        return;
     const double expected = density * sampler.totalArea();
     const double candidates = std::min(expected, static_cast<double>(MAX_SCATTER_BLADES));
     if (expected > static_cast<double>(MAX_SCATTER_BLADES)) {
@@ -67,28 +67,37 @@ void scatterUniform(const SurfaceSampler& sampler, const ScatterParams& params,
     for (std::size_t i = 0; i < count; ++i) {
         const SurfaceSample at = sampler.sample(rng);
         // Thinning by the map: a candidate survives with probability map(uv), so the expected
-        // count is density × ∫ map dA. Always draw, so the stream does not depend on the map.
+        // count is density × ∫ map dA. Every candidate draws the same numbers whether it is
+        // kept or not, so painting the map only adds or removes blades where it paints; the
+        // rest of the field does not reshuffle.
         const float keep = rng.uniform();
-        if (densityMap != nullptr && !(keep < mapValue(densityMap, at.uv))) continue;
-        addBlade(result, at, params.blade, rng);
+        const Blade blade = makeBlade(at, params.blade, rng);
+        if (densityMap != nullptr && !(keep < mapValue(densityMap, at.uv)))
+            continue;
+        result.blades.push_back(blade);
+        result.uvs.push_back(at.uv);
     }
     result.uniformCount = result.blades.size();
 }
 
-void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params,
-                   const MapImage* densityMap, std::uint64_t seed, ScatterResult& result) {
+void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params, const MapImage* densityMap,
+                   std::uint64_t seed, ScatterResult& result) {
     const float spacing = params.clumpSpacing;
-    if (!(spacing > 0.0f) || !std::isfinite(spacing) || params.bladesPerClump <= 0) return;
+    if (!(spacing > 0.0f) || !std::isfinite(spacing) || params.bladesPerClump <= 0)
+        return;
     const auto perClump = static_cast<std::size_t>(params.bladesPerClump);
-    const std::size_t budget = MAX_SCATTER_BLADES - std::min(MAX_SCATTER_BLADES, result.blades.size());
+    const std::size_t budget =
+        MAX_SCATTER_BLADES - std::min(MAX_SCATTER_BLADES, result.blades.size());
     const std::size_t maxCentres = budget / perClump;
     const double capacity = poissonDiskCapacity(sampler.totalArea(), spacing);
     if (capacity * static_cast<double>(perClump) > static_cast<double>(budget)) {
-        result.warnings.push_back("clumps could reach " + countText(capacity * static_cast<double>(perClump)) +
+        result.warnings.push_back("clumps could reach " +
+                                  countText(capacity * static_cast<double>(perClump)) +
                                   " blades; stopping at " + countText(static_cast<double>(budget)) +
                                   " (the limit per layer)");
     }
-    if (maxCentres == 0) return;
+    if (maxCentres == 0)
+        return;
 
     // Centres over the whole surface, then thinned by the map: a subset keeps the minimum
     // distance, and the expected clump count follows ∫ map dA (thinning the darts instead
@@ -104,18 +113,23 @@ void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params,
     sampler.buildNeighbourhoodIndex();
     result.blades.reserve(result.blades.size() + centres.points.size() * perClump);
     result.uvs.reserve(result.blades.capacity());
-    Rng bladeRng(seed, STREAM_CLUMP_BLADES);
-    const float radius = std::isfinite(params.clumpRadius) ? std::max(params.clumpRadius, 0.0f) : 0.0f;
+    const float radius =
+        std::isfinite(params.clumpRadius) ? std::max(params.clumpRadius, 0.0f) : 0.0f;
     std::vector<SurfaceSample> around;
-    for (const SurfaceSample& centre : centres.points) {
+    for (std::size_t k = 0; k < centres.points.size(); ++k) {
+        const SurfaceSample& centre = centres.points[k];
+        // A stream per clump: like the uniform blades, a clump does not change when the map
+        // removes another one.
+        Rng bladeRng(Rng::splitMix(seed) + k, STREAM_CLUMP_BLADES);
         const float centreValue = mapValue(densityMap, centre.uv);
         const float keepCentre = bladeRng.uniform();
-        if (densityMap != nullptr && !(keepCentre < centreValue)) continue;
+        if (densityMap != nullptr && !(keepCentre < centreValue))
+            continue;
         result.clumpCentres.push_back(centre.position);
         around.clear();
         if (radius > 0.0f) {
-            sampler.sampleNear(centre.position, radius, perClump, ATTEMPTS_PER_CLUMP_BLADE * perClump,
-                               bladeRng, around);
+            sampler.sampleNear(centre.position, radius, perClump,
+                               ATTEMPTS_PER_CLUMP_BLADE * perClump, bladeRng, around);
         } else {
             around.assign(perClump, centre);
         }
@@ -125,9 +139,11 @@ void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params,
             // min(map(centre), map(blade)) ≈ map, and a clump at the edge of a painted-out area
             // stops at that edge instead of spilling over it.
             const float keep = bladeRng.uniform();
+            const Blade blade = makeBlade(at, params.blade, bladeRng);
             if (densityMap != nullptr && !(keep * centreValue < mapValue(densityMap, at.uv)))
                 continue;
-            addBlade(result, at, params.blade, bladeRng);
+            result.blades.push_back(blade);
+            result.uvs.push_back(at.uv);
         }
     }
     result.clumpCount = result.clumpCentres.size();
@@ -139,7 +155,8 @@ ScatterResult scatterBlades(const SurfaceMesh& mesh, const ScatterParams& params
                             const MapImage* densityMap, std::uint64_t seed) {
     ScatterResult result;
     SurfaceSampler sampler(mesh);
-    if (sampler.empty()) return result;
+    if (sampler.empty())
+        return result;
     scatterUniform(sampler, params, densityMap, seed, result);
     scatterClumps(sampler, params, densityMap, seed, result);
     return result;

@@ -1,9 +1,13 @@
 // Scattering blades over any triangle mesh (SPEC §2). Two distributions, combinable:
 //  - uniform: expected count = density × ∫ map dA; area-weighted triangle pick, uniform
 //    barycentrics;
-//  - clumps: centres by Poisson-disk sampling on the surface (minimum distance clumpSpacing),
-//    blades scattered around each centre within clumpRadius and projected back to the surface.
-// A density map in UV space (values in [0, 1]) scales the local density. Deterministic per seed.
+//  - clumps: centres by Poisson-disk sampling on the surface (minimum distance clumpSpacing,
+//    3D Euclidean), blades uniform over the surface within clumpRadius (3D) of each centre.
+// A density map in UV space (values in [0, 1]) scales the local density. It only thins: each
+// candidate draws the same numbers whatever the map says, so repainting it adds or removes
+// blades where it changed and leaves the rest of the field in place. Deterministic per seed;
+// blades are uniform first, then clump by clump. Per-blade h, w, s are uniform in BladeRanges,
+// theta uniform in [0, 2π), up the interpolated surface normal.
 #pragma once
 
 #include <cstdint>

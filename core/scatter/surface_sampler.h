@@ -1,6 +1,7 @@
 // SurfaceSampler: uniform random points on a triangle mesh (SPEC §2), in the mesh's units.
-// Whole-surface sampling picks a triangle by area (binary search in the cumulative areas) and
-// a point in it by uniform barycentrics. Neighbourhood sampling (for clumps) draws points
+// Whole-surface sampling picks a triangle by area (Walker/Vose alias table: O(1), two memory
+// reads, where a binary search over millions of triangles misses the cache ~10 times) and a
+// point in it by uniform barycentrics. Neighbourhood sampling (for clumps) draws points
 // uniformly from the part of the surface inside a ball, through a bounding-volume hierarchy
 // over the triangles; the points lie on the triangles, never off an edge.
 #pragma once
@@ -65,26 +66,37 @@ public:
                            std::vector<SurfaceSample>& out) const;
 
 private:
-    struct Triangle {
-        std::array<glm::vec3, 3> p;
-        std::array<glm::vec3, 3> n;
-        std::array<glm::vec2, 3> uv;
-        glm::vec3 faceNormal{0.0f, 1.0f, 0.0f};
-        double area = 0.0;
-    };
     struct BvhNode {
         glm::vec3 min{0.0f};
         glm::vec3 max{0.0f};
         std::uint32_t first = 0;  // leaf: first index into mBvhOrder; inner: right child
         std::uint32_t count = 0;  // leaf: triangle count; inner: 0 (left child is next node)
     };
+    struct BvhItem {
+        glm::vec3 min;
+        glm::vec3 max;
+        std::uint32_t triangle;
+    };
 
     std::uint32_t pickTriangle(Rng& rng) const;
-    std::uint32_t buildNode(std::uint32_t first, std::uint32_t count);
+    glm::vec3 point(std::uint32_t triangle, int corner) const {
+        return mPositions[mTriangles[triangle][static_cast<std::size_t>(corner)]];
+    }
+    glm::vec3 faceNormal(std::uint32_t triangle) const;
+    std::uint32_t buildNode(std::vector<BvhItem>& items, std::uint32_t first, std::uint32_t count);
 
-    std::vector<Triangle> mTriangles;
-    std::vector<double> mCumulativeArea;
+    // The mesh's vertices and faces as plain arrays (32 bytes a vertex, 12 a face: 5× less
+    // than per-face copies, which matters at millions of faces).
+    std::vector<glm::vec3> mPositions;
+    std::vector<glm::vec3> mNormals;
+    std::vector<glm::vec2> mUvs;
+    std::vector<std::array<std::uint32_t, 3>> mTriangles;
+    std::vector<float> mArea;
     double mTotalArea = 0.0;
+    // Alias table: pick i uniformly, keep it with probability mAliasProbability[i], else take
+    // mAlias[i].
+    std::vector<float> mAliasProbability;
+    std::vector<std::uint32_t> mAlias;
     std::vector<BvhNode> mBvh;
     std::vector<std::uint32_t> mBvhOrder;
 };

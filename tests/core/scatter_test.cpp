@@ -7,6 +7,7 @@
 #include "mesh/procedural.h"
 #include "scatter/poisson_disk.h"
 #include "scatter/surface_sampler.h"
+#include "util/rng.h"
 
 namespace grass::core {
 namespace {
@@ -115,6 +116,31 @@ TEST(Scatter, UniformBladesAreUniformOnPlane) {
     }
 }
 
+// The same test on a UV sphere, whose triangles shrink towards the poles: it fails unless
+// triangles are picked by area. Cells of equal area by Archimedes: 10 bands of equal height
+// (y / r) × 10 sectors of longitude; 20 000 blades, 99 dof, critical value 148.2 at p = 0.001.
+// The inscribed mesh's cells differ from equal by < 1 %, a bias of < 2 blades per cell.
+TEST(Scatter, UniformBladesAreUniformOnSphere) {
+    const SurfaceMesh mesh = sphere(1.0f, 24);
+    const float density = static_cast<float>(20000.0 / surfaceArea(mesh));
+    for (const std::uint64_t seed : {24u, 25u}) {
+        const ScatterResult r = scatterBlades(mesh, uniformOnly(density), nullptr, seed);
+        ASSERT_EQ(r.blades.size(), 20000u);
+        std::vector<int> cells(100, 0);
+        for (const Blade& b : r.blades) {
+            const glm::vec3 d = glm::normalize(b.v0());
+            const int band = std::clamp(static_cast<int>((d.y + 1.0f) * 5.0f), 0, 9);
+            const float phi = std::atan2(d.z, d.x) + 3.14159265f;
+            const int sector = std::clamp(static_cast<int>(phi / TWO_PI * 10.0f), 0, 9);
+            ++cells[static_cast<std::size_t>(band * 10 + sector)];
+        }
+        double chi2 = 0.0;
+        for (const int c : cells)
+            chi2 += (c - 200.0) * (c - 200.0) / 200.0;
+        EXPECT_LT(chi2, 148.2) << "seed " << seed;
+    }
+}
+
 TEST(Scatter, BladesAreInRangesAndStandOnTheSurface) {
     ScatterParams params = uniformOnly(40.0f);
     params.blade = BladeRanges{0.3f, 0.4f, 0.01f, 0.02f, 3.0f, 5.0f};
@@ -194,6 +220,62 @@ TEST(Scatter, ClumpBladesLieOnSurfaceNearTheirCentre) {
     }
 }
 
+// Neighbourhood sampling is uniform over the surface inside the ball, whether it proposes
+// from whole triangles (a fine plane) or from the disc the ball cuts from a huge triangle (a
+// one-quad plane): on a flat surface ρ²/r² is then uniform on [0, 1], mean 1/2, σ of the mean
+// √(1/12)/√N = 0.002 for N = 20 000; we accept 3σ = 0.006.
+TEST(Scatter, NeighbourhoodSamplesAreUniformInTheDisc) {
+    for (const int resolution : {1, 64}) {
+        const SurfaceMesh mesh = plane(8.0f, resolution);
+        SurfaceSampler sampler(mesh);
+        sampler.buildNeighbourhoodIndex();
+        Rng rng(61);
+        std::vector<SurfaceSample> points;
+        const glm::vec3 centre(0.3f, 0.0f, -0.2f);
+        const float radius = 0.5f;
+        ASSERT_EQ(sampler.sampleNear(centre, radius, 20000, 1000000, rng, points), 20000u);
+        double meanRho2 = 0.0, meanX = 0.0;
+        for (const SurfaceSample& s : points) {
+            const glm::vec3 d = s.position - centre;
+            ASSERT_NEAR(s.position.y, 0.0f, 1e-6f);
+            ASSERT_LE(glm::length(d), radius * (1.0f + 1e-5f));
+            meanRho2 += static_cast<double>(glm::dot(d, d) / (radius * radius)) / 20000.0;
+            meanX += static_cast<double>(d.x / radius) / 20000.0;
+        }
+        EXPECT_NEAR(meanRho2, 0.5, 0.006) << "resolution " << resolution;
+        // x/r on a uniform disc: mean 0, σ = 1/2, σ of the mean 0.0035; 3σ = 0.011.
+        EXPECT_NEAR(meanX, 0.0, 0.011) << "resolution " << resolution;
+    }
+}
+
+// A face with no area (collinear corners) is never picked, alone or beside a real one.
+TEST(Scatter, SamplerNeverPicksZeroAreaTriangles) {
+    // A triangle soup (no shared vertices): faces 0 and 3 are collinear, 1 and 2 have area 1/2.
+    SurfaceMeshBuilder builder;
+    const auto addFace = [&builder](glm::vec3 p, glm::vec3 q, glm::vec3 r) {
+        const auto i = builder.addVertex(p, {0, 1, 0}, {0, 0});
+        const auto j = builder.addVertex(q, {0, 1, 0}, {1, 0});
+        const auto k = builder.addVertex(r, {0, 1, 0}, {0, 1});
+        builder.addTriangle(i, j, k);
+    };
+    addFace({0, 0, 0}, {2, 0, 0}, {1, 0, 0});
+    addFace({0, 0, 0}, {0, 0, 1}, {1, 0, 0});
+    addFace({1, 0, 0}, {0, 0, 1}, {1, 0, 1});
+    addFace({1, 0, 0}, {2, 0, 0}, {3, 0, 0});
+    const SurfaceMesh mesh = builder.take();
+    SurfaceSampler sampler(mesh);
+    ASSERT_NEAR(sampler.totalArea(), 1.0, 1e-6);
+    Rng rng(71);
+    int first = 0;
+    for (int i = 0; i < 10000; ++i) {
+        const SurfaceSample s = sampler.sample(rng);
+        ASSERT_TRUE(s.triangle == 1 || s.triangle == 2) << "picked face " << s.triangle;
+        first += s.triangle == 1 ? 1 : 0;
+    }
+    // Equal areas: Binomial(10 000, 1/2), σ = 50, 3σ = 150.
+    EXPECT_NEAR(first, 5000, 150);
+}
+
 TEST(Scatter, ClumpsFollowTheDensityMap) {
     const MapImage map = halfBlackMap();
     const SurfaceMesh mesh = plane(10.0f);
@@ -203,6 +285,25 @@ TEST(Scatter, ClumpsFollowTheDensityMap) {
         EXPECT_GT(c.x, -0.1f);
     for (std::size_t i = 0; i < r.blades.size(); ++i)
         EXPECT_GE(r.uvs[i].x, 31.5f / 64.0f);
+}
+
+// Painting the map only removes blades where it paints: every blade scattered with the map
+// is one of those scattered without it, identical (position, size, angle), uniform and clump.
+TEST(Scatter, MapOnlyThinsTheField) {
+    ScatterParams params = uniformOnly(40.0f);
+    params.clumpSpacing = 0.5f;
+    const SurfaceMesh mesh = plane(6.0f);
+    const MapImage map = halfBlackMap();
+    const ScatterResult full = scatterBlades(mesh, params, nullptr, 81);
+    const ScatterResult half = scatterBlades(mesh, params, &map, 81);
+    ASSERT_GT(half.blades.size(), full.blades.size() / 3);
+    ASSERT_LT(half.blades.size(), full.blades.size() * 2 / 3);
+    std::size_t j = 0;  // both lists keep the order of the candidates
+    for (const Blade& b : half.blades) {
+        while (j < full.blades.size() && !(full.blades[j] == b))
+            ++j;
+        ASSERT_LT(j, full.blades.size()) << "a blade moved when the map changed";
+    }
 }
 
 TEST(Scatter, SameSeedSameFieldOtherSeedOtherField) {
