@@ -11,6 +11,7 @@ uniform int uShape;
 
 out vec3 vPosition;
 out vec3 vNormal;
+out vec3 vUp;
 out float vHeight;
 
 void main() {
@@ -18,6 +19,7 @@ void main() {
     BladeSurfacePoint point = bladeSurface(blade, gl_TessCoord.x, gl_TessCoord.y, uShape);
     vPosition = point.position;
     vNormal = point.normal;
+    vUp = blade.upS.xyz;
     vHeight = point.v;
     gl_Position = uViewProj * vec4(point.position, 1.0);
 }

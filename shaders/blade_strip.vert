@@ -10,6 +10,7 @@ uniform int uFirstBlade;  // first blade of this draw in the buffer
 
 out vec3 vPosition;
 out vec3 vNormal;
+out vec3 vUp;
 out float vHeight;
 
 void main() {
@@ -22,6 +23,7 @@ void main() {
     if (blade.v1H.w <= 0.0) point.position = blade.v0Theta.xyz;
     vPosition = point.position;
     vNormal = point.normal;
+    vUp = blade.upS.xyz;
     vHeight = v;
     gl_Position = uViewProj * vec4(point.position, 1.0);
 }

@@ -55,6 +55,38 @@ OrbitCamera OrbitCamera::lookAt(glm::vec3 eye, glm::vec3 target, float fovYRad) 
     return camera;
 }
 
+OrbitCamera frameBounds(const Bounds& bounds, float fovYRad, glm::vec3 fromDirection) {
+    OrbitCamera camera = frameBounds(bounds, fovYRad);
+    const float length = glm::length(fromDirection);
+    if (!(length > 0.0f)) return camera;
+    const glm::vec3 d = fromDirection / length;
+    camera.yawRad = std::atan2(d.x, d.z);
+    camera.pitchRad = std::clamp(std::asin(std::clamp(d.y, -1.0f, 1.0f)), -1.4f, 1.4f);
+    return camera;
+}
+
+glm::vec3 preferredViewDirection(const SurfaceMesh& mesh) {
+    const OrbitCamera standard;
+    const glm::vec3 threeQuarter = glm::normalize(standard.position() - standard.target);
+    glm::dvec3 sum(0.0);
+    double area = 0.0;
+    for (const auto fh : mesh.faces()) {
+        auto fv = mesh.cfv_iter(fh);
+        const glm::dvec3 a = toGlm(mesh.point(*fv++));
+        const glm::dvec3 b = toGlm(mesh.point(*fv++));
+        const glm::dvec3 c = toGlm(mesh.point(*fv));
+        const glm::dvec3 cross = glm::cross(b - a, c - a);  // 2·area·normal
+        sum += cross;
+        area += glm::length(cross);
+    }
+    if (!(area > 0.0)) return threeQuarter;
+    // |mean normal| is ~0 for closed objects (look from the default side) and 1 for a flat
+    // sheet; past 0.35 most of the surface faces one way and the view turns towards it.
+    const glm::vec3 mean = glm::vec3(sum / area);
+    if (glm::length(mean) < 0.35f) return threeQuarter;
+    return glm::normalize(threeQuarter + 2.0f * mean);
+}
+
 OrbitCamera frameBounds(const Bounds& bounds, float fovYRad) {
     OrbitCamera camera;
     camera.target = bounds.centre();

@@ -33,5 +33,12 @@ struct OrbitCamera {
 
 // A camera that sees the whole box from a 3/4 view above, near/far fitted to it.
 OrbitCamera frameBounds(const Bounds& bounds, float fovYRad);
+// The same, looking from `fromDirection` (towards the camera, need not be normalized).
+OrbitCamera frameBounds(const Bounds& bounds, float fovYRad, glm::vec3 fromDirection);
+
+// Where to look at a mesh from: the default 3/4 view above, turned towards the side most of
+// the surface faces (an open surface standing upright, like a wall or a glTF quad in the XY
+// plane, is seen from its grassy front instead of edge-on from above).
+glm::vec3 preferredViewDirection(const SurfaceMesh& mesh);
 
 }  // namespace grass::core

@@ -129,7 +129,7 @@ Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, cons
     layer.scatter.blade.widthMin = 0.03f * height;
     layer.scatter.blade.widthMax = 0.05f * height;
 
-    const OrbitCamera framed = frameBounds(bounds, 0.785f);
+    const OrbitCamera framed = frameBounds(bounds, 0.785f, preferredViewDirection(mesh));
     CameraDesc& camera = project.cameras.front();
     camera.name = "framed";
     camera.position = framed.position();

@@ -69,5 +69,36 @@ TEST(Camera, PanKeepsThePointUnderTheCursor) {
     EXPECT_NEAR(movedPixels, -100.0f, 1.0f);
 }
 
+TEST(Camera, UprightSheetIsSeenFromTheFrontItFaces) {
+    // A quad in the XY plane facing +Z (as glTF samples often are).
+    SurfaceMeshBuilder builder;
+    const auto a = builder.addVertex({0, 0, 0}, {0, 0, 1}, {0, 0});
+    const auto b = builder.addVertex({1, 0, 0}, {0, 0, 1}, {1, 0});
+    const auto c = builder.addVertex({1, 1, 0}, {0, 0, 1}, {1, 1});
+    const auto d = builder.addVertex({0, 1, 0}, {0, 0, 1}, {0, 1});
+    builder.addTriangle(a, b, c);
+    builder.addTriangle(a, c, d);
+    const SurfaceMesh mesh = builder.take();
+    const glm::vec3 direction = preferredViewDirection(mesh);
+    EXPECT_GT(direction.z, 0.7f) << "the camera must be in front of the sheet";
+    const OrbitCamera camera = frameBounds(meshBounds(mesh), 0.785f, direction);
+    EXPECT_GT(camera.position().z, camera.target.z);
+}
+
+TEST(Camera, ClosedObjectKeepsTheThreeQuarterView) {
+    SurfaceMeshBuilder builder;
+    // A tetrahedron: face normals sum to zero.
+    const glm::vec3 p[4] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    std::uint32_t v[4];
+    for (int i = 0; i < 4; ++i) v[i] = builder.addVertex(p[i], {}, {});
+    builder.addTriangle(v[0], v[1], v[2]);
+    builder.addTriangle(v[0], v[3], v[1]);
+    builder.addTriangle(v[0], v[2], v[3]);
+    builder.addTriangle(v[1], v[3], v[2]);
+    const OrbitCamera standard;
+    const glm::vec3 expected = glm::normalize(standard.position() - standard.target);
+    EXPECT_NEAR(glm::length(preferredViewDirection(builder.take()) - expected), 0.0f, 1e-5f);
+}
+
 }  // namespace
 }  // namespace grass::core

@@ -48,6 +48,7 @@ TEST_F(SceneRenderTest, MeadowShowsGrassOverAStatedShareOfTheImage) {
     // roots are too dark to count. 25 % leaves room for lighting changes, while an empty
     // field (soil only: 0 %) or a broken blade pass fails clearly.
     const double share = grassPixelShare(result->image.pixels);
+    RecordProperty("grass_share", std::to_string(share));
     EXPECT_GT(share, 0.25) << "grass covers " << share * 100 << " % of the image";
     EXPECT_EQ(result->lastFrame.bladesDrawn, scene->totalBlades());
 }
