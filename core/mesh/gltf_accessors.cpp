@@ -374,6 +374,16 @@ int attributeAccessor(const tinygltf::Primitive& primitive, const char* name) {
 
 }  // namespace
 
+glm::dmat4 composeTrs(glm::dvec3 translation, glm::dvec4 rotationXyzw, glm::dvec3 scale) {
+    // glTF stores x, y, z, w; glm::dquat's constructor takes w first.
+    const glm::dquat q(rotationXyzw.w, rotationXyzw.x, rotationXyzw.y, rotationXyzw.z);
+    const double length = glm::length(q);
+    // A zero quaternion is no rotation at all; a non-finite one stays so, for callers to refuse.
+    const glm::dmat4 rotation = length == 0.0 ? glm::dmat4(1.0) : glm::mat4_cast(q / length);
+    return glm::translate(glm::dmat4(1.0), translation) * rotation *
+           glm::scale(glm::dmat4(1.0), scale);
+}
+
 std::string describeMesh(const tinygltf::Model& model, std::size_t meshIndex) {
     const std::string& name = model.meshes[meshIndex].name;
     return name.empty() ? "mesh " + std::to_string(meshIndex) : "mesh \"" + name + "\"";
@@ -493,28 +503,21 @@ Result<std::vector<glm::dmat4>> readInstanceTransforms(const tinygltf::Model& mo
         (!rotations->empty() && rotations->size() / 4 != count) ||
         (!scales->empty() && scales->size() / 3 != count))
         return makeError("", where + ": EXT_mesh_gpu_instancing attributes differ in count");
-    std::vector<glm::dmat4> transforms(count, glm::dmat4(1.0));
+    std::vector<glm::dmat4> transforms(count);
     for (std::size_t i = 0; i < count; ++i) {
-        glm::dmat4& m = transforms[i];
-        if (!translations->empty()) {
-            const float* t = translations->data() + 3 * i;
-            m = glm::translate(m, glm::dvec3(t[0], t[1], t[2]));
-        }
-        if (!rotations->empty()) {
-            const float* r = rotations->data() + 4 * i;
-            // Stored x, y, z, w; glm::dquat's constructor takes w first.
-            const glm::dquat q(r[3], r[0], r[1], r[2]);
-            const double length = glm::length(q);
-            if (length > 0.0 && std::isfinite(length))
-                m *= glm::mat4_cast(q / length);
-        }
-        if (!scales->empty()) {
-            const float* s = scales->data() + 3 * i;
-            m = glm::scale(m, glm::dvec3(s[0], s[1], s[2]));
-        }
+        const auto vec3 = [&](const std::vector<float>& values, glm::dvec3 absent) {
+            return values.empty() ? absent
+                                  : glm::dvec3(values[3 * i], values[3 * i + 1], values[3 * i + 2]);
+        };
+        const glm::dvec4 rotation =
+            rotations->empty() ? glm::dvec4(0, 0, 0, 1)
+                               : glm::dvec4((*rotations)[4 * i], (*rotations)[4 * i + 1],
+                                            (*rotations)[4 * i + 2], (*rotations)[4 * i + 3]);
+        transforms[i] = composeTrs(vec3(*translations, glm::dvec3(0.0)), rotation,
+                                   vec3(*scales, glm::dvec3(1.0)));
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r)
-                if (!std::isfinite(m[c][r]))
+                if (!std::isfinite(transforms[i][c][r]))
                     return makeError("", where + ": EXT_mesh_gpu_instancing instance " +
                                              std::to_string(i) + " has a non-finite transform");
     }

@@ -19,6 +19,10 @@ namespace grass::core::gltf {
 // "mesh "Rock"" when the mesh has a name, else "mesh 3": how messages and notes name a mesh.
 std::string describeMesh(const tinygltf::Model& model, std::size_t meshIndex);
 
+// T * R * S (spec §3.5.3), the rotation a quaternion stored x, y, z, w as glTF stores it and
+// normalized here (exporters write slightly off-unit ones).
+glm::dmat4 composeTrs(glm::dvec3 translation, glm::dvec4 rotationXyzw, glm::dvec3 scale);
+
 // One triangle primitive, decoded: vertices as the accessors hold them, triangles as vertex
 // indices in the file's winding (strips and fans already unrolled, spec §3.7.2.1).
 struct PrimitiveData {

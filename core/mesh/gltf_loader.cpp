@@ -1,8 +1,6 @@
 #include "mesh/gltf_loader.h"
 
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
 #include <limits>
 #include <optional>
 
@@ -58,17 +56,10 @@ Result<glm::dmat4> localTransform(const tinygltf::Model& model, std::size_t inde
         if ((!t.empty() && t.size() != 3) || (!r.empty() && r.size() != 4) ||
             (!s.empty() && s.size() != 3))
             return bad("a translation, rotation or scale with the wrong number of values");
-        if (!t.empty())
-            local = glm::translate(local, glm::dvec3(t[0], t[1], t[2]));
-        if (!r.empty()) {
-            // glTF stores x, y, z, w; glm::dquat's constructor takes w first.
-            const glm::dquat q(r[3], r[0], r[1], r[2]);
-            const double length = glm::length(q);
-            if (length > 0.0 && std::isfinite(length))
-                local *= glm::mat4_cast(q / length);
-        }
-        if (!s.empty())
-            local = glm::scale(local, glm::dvec3(s[0], s[1], s[2]));
+        local = gltf::composeTrs(
+            t.empty() ? glm::dvec3(0.0) : glm::dvec3(t[0], t[1], t[2]),
+            r.empty() ? glm::dvec4(0, 0, 0, 1) : glm::dvec4(r[0], r[1], r[2], r[3]),
+            s.empty() ? glm::dvec3(1.0) : glm::dvec3(s[0], s[1], s[2]));
     }
     if (!isFinite(local))
         return bad("a non-finite transform");
@@ -161,7 +152,7 @@ Result<std::vector<MeshInstance>> collectInstances(const tinygltf::Model& model,
                 if (!transforms)
                     return transforms.error();
                 for (const glm::dmat4& instance : *transforms)
-                    instances.push_back({mesh, instance * meshWorld});
+                    instances.push_back({mesh, meshWorld * instance});
             }
         }
         onPath[index] = 1;

@@ -18,6 +18,10 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
+// Far deeper than any glTF JSON (about 10 levels): nlohmann's dump and tinygltf's parsing of
+// extras recurse once per level, so a hostile file nested deeper could overflow the stack.
+constexpr std::size_t MAX_JSON_DEPTH = 256;
+
 // GLB container constants (glTF 2.0 §4.4).
 constexpr std::uint32_t GLB_VERSION = 2;
 constexpr std::uint32_t CHUNK_JSON = 0x4E4F534A;
@@ -129,6 +133,29 @@ Result<GlbChunks> splitGlb(std::string_view bytes, const std::string& display) {
     if (chunks.json.empty())
         return makeError(display, "GLB is corrupt: its JSON chunk is empty");
     return chunks;
+}
+
+// How deeply arrays and objects nest in JSON text (brackets inside strings do not count).
+std::size_t jsonDepth(std::string_view text) {
+    std::size_t depth = 0, deepest = 0;
+    bool inString = false, escaped = false;
+    for (const char c : text) {
+        if (inString) {
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '{' || c == '[') {
+            deepest = std::max(deepest, ++depth);
+        } else if ((c == '}' || c == ']') && depth > 0) {
+            --depth;
+        }
+    }
+    return deepest;
 }
 
 bool startsWithNoCase(std::string_view text, std::string_view prefix) {
@@ -382,6 +409,9 @@ Result<GltfSource> parseGltfFile(const fs::path& file) {
                              "(which starts with \"glTF\")");
     }
 
+    if (jsonDepth(jsonText) > MAX_JSON_DEPTH)
+        return makeError(display, "invalid glTF JSON: nested more than " +
+                                      std::to_string(MAX_JSON_DEPTH) + " levels deep");
     GltfSource source;
     Json doc;
     try {

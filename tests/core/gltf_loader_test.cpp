@@ -445,6 +445,25 @@ TEST(GltfLoader, LoadsNonIndexedTriangles) {
         expectNear(windingNormal(import.mesh, fh), {0, 1, 0}, 1e-5f, "face normal");
 }
 
+TEST(GltfLoader, KeepsNonManifoldTriangles) {
+    const fs::path file = test::scratchDir("gltf_non_manifold") / "pages.gltf";
+    // Three triangles share the edge 0-1, like the pages of a book: no manifold has that edge,
+    // yet every triangle is in the file and must be in the mesh. The third page comes when
+    // the mesh holds exactly 8 vertices, so copying its vertices grows the vertex arrays
+    // (under ASan this catches a reference into them kept across the growth).
+    GltfPrimitive pages;
+    pages.positions = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, 0, 1},
+                       {5, 0, 0}, {6, 0, 0}, {5, 0, 1}, {-1, 0, 0}};
+    pages.indices = {0, 1, 2, 0, 3, 1, 4, 6, 5, 1, 0, 7};
+    test::writeGltf(file, test::singleMeshAsset(pages));
+    const GltfImport import = loadOk(file);
+    EXPECT_EQ(import.mesh.n_faces(), 4u);
+    EXPECT_NEAR(surfaceArea(import.mesh), 4 * 0.5, 1e-6);
+    expectNear(meshBounds(import.mesh).min, {-1, 0, 0}, 0.0f, "min");
+    expectNear(meshBounds(import.mesh).max, {6, 1, 1}, 0.0f, "max");
+    EXPECT_TRUE(anyNoteContains(import, "non-manifold"));
+}
+
 TEST(GltfLoader, UnrollsTriangleStripsWithAlternatingWinding) {
     const fs::path file = test::scratchDir("gltf_strip") / "strip.gltf";
     // A ribbon along x: even vertices at z = 0, odd ones at z = 1.
@@ -670,6 +689,14 @@ TEST(GltfLoader, ReportsFilesThatAreNotGltf) {
         const std::string message = loadError(dir / name);
         EXPECT_TRUE(contains(message, "glTF")) << message;
     }
+}
+
+TEST(GltfLoader, ReportsAbsurdlyDeepJsonInsteadOfOverflowingTheStack) {
+    const fs::path file = test::scratchDir("gltf_deep_json") / "deep.gltf";
+    const std::size_t depth = 200000;
+    std::ofstream(file) << R"({"asset": {"version": "2.0"}, "extras": )" << std::string(depth, '[')
+                        << std::string(depth, ']') << "}";
+    EXPECT_TRUE(contains(loadError(file), "nested"));
 }
 
 TEST(GltfLoader, ReportsFileWithoutTriangles) {
