@@ -41,7 +41,8 @@ function(grass_cli_test name)
     if(ARG_GL)
         list(APPEND labels gl)
     endif()
-    set_tests_properties(cli.${name} PROPERTIES LABELS "${labels}" TIMEOUT 150)
+    set_tests_properties(cli.${name} PROPERTIES LABELS "${labels}" TIMEOUT 150
+        ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
 endfunction()
 
 # The drivers catch what they claim to catch (success, crash, hang, extra lines, ...).
