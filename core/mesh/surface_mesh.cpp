@@ -45,13 +45,20 @@ void SurfaceMeshBuilder::addTriangle(std::uint32_t a, std::uint32_t b, std::uint
     ++mDuplicated;
 }
 
+std::array<glm::vec3, 3> facePositions(const SurfaceMesh& mesh, SurfaceMesh::FaceHandle face) {
+    auto fv = mesh.cfv_iter(face);
+    std::array<glm::vec3, 3> p;
+    p[0] = toGlm(mesh.point(*fv++));
+    p[1] = toGlm(mesh.point(*fv++));
+    p[2] = toGlm(mesh.point(*fv));
+    return p;
+}
+
 double surfaceArea(const SurfaceMesh& mesh) {
     double area = 0.0;
     for (const auto fh : mesh.faces()) {
-        auto fv = mesh.cfv_iter(fh);
-        const glm::dvec3 a = toGlm(mesh.point(*fv++));
-        const glm::dvec3 b = toGlm(mesh.point(*fv++));
-        const glm::dvec3 c = toGlm(mesh.point(*fv));
+        const auto p = facePositions(mesh, fh);
+        const glm::dvec3 a = p[0], b = p[1], c = p[2];
         area += 0.5 * glm::length(glm::cross(b - a, c - a));
     }
     return area;

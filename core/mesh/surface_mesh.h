@@ -50,6 +50,9 @@ private:
 glm::vec3 toGlm(const OpenMesh::Vec3f& v);
 glm::vec2 toGlm(const OpenMesh::Vec2f& v);
 
+// The three corner positions of a face.
+std::array<glm::vec3, 3> facePositions(const SurfaceMesh& mesh, SurfaceMesh::FaceHandle face);
+
 // Sum of triangle areas, in squared file units.
 double surfaceArea(const SurfaceMesh& mesh);
 Bounds meshBounds(const SurfaceMesh& mesh);

@@ -71,10 +71,8 @@ glm::vec3 preferredViewDirection(const SurfaceMesh& mesh) {
     glm::dvec3 sum(0.0);
     double area = 0.0;
     for (const auto fh : mesh.faces()) {
-        auto fv = mesh.cfv_iter(fh);
-        const glm::dvec3 a = toGlm(mesh.point(*fv++));
-        const glm::dvec3 b = toGlm(mesh.point(*fv++));
-        const glm::dvec3 c = toGlm(mesh.point(*fv));
+        const auto p = facePositions(mesh, fh);
+        const glm::dvec3 a = p[0], b = p[1], c = p[2];
         const glm::dvec3 cross = glm::cross(b - a, c - a);  // 2·area·normal
         sum += cross;
         area += glm::length(cross);
