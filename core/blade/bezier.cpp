@@ -21,7 +21,8 @@ float bezierArcLength(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2) {
     const double A = glm::dot(a, a);
     const double B = 2.0 * glm::dot(a, b);
     const double C = glm::dot(b, b);
-    if (A < 1e-18) return static_cast<float>(2.0 * std::sqrt(C));  // straight, uniform speed
+    if (A < 1e-18)
+        return static_cast<float>(2.0 * std::sqrt(C));  // straight, uniform speed
     // A nearly collinear curve (discriminant ~ 0) folds back on itself: integrate numerically.
     const double disc = 4.0 * A * C - B * B;
     if (disc <= 1e-12 * A * A + 1e-30) {

@@ -17,10 +17,13 @@ namespace grass::core {
 struct MapImage {
     int width = 0;
     int height = 0;
-    std::vector<float> texels;  // row-major, row 0 = top of the image = v 0
+    std::vector<float> texels;          // row-major, row 0 = top of the image = v 0
     std::vector<std::string> warnings;  // e.g. channel conversion, for the caller to print
 
-    float at(int x, int y) const { return texels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)]; }
+    float at(int x, int y) const {
+        return texels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                      static_cast<std::size_t>(x)];
+    }
     float sample(glm::vec2 uv) const;  // bilinear, clamp to edge, uv wraps are clamped
     float maxValue() const;
 };

@@ -16,13 +16,13 @@ enum class ProceduralShape { Plane, Hills, Sphere, Torus, Moebius };
 
 struct ProceduralMeshParams {
     ProceduralShape shape = ProceduralShape::Plane;
-    float size = 10.0f;          // plane/hills: side length; sphere: radius; torus: major radius;
-                                 // Möbius: radius of the centre circle
-    float minorSize = 1.0f;      // torus: tube radius; Möbius: half width of the strip
-    float hillHeight = 1.0f;     // hills: peak-to-trough amplitude
-    float hillScale = 4.0f;      // hills: feature size (wavelength of the lowest octave)
-    int resolution = 64;         // quads along each parametric direction
-    std::uint64_t noiseSeed = 7; // hills: the noise seed
+    float size = 10.0f;           // plane/hills: side length; sphere: radius; torus: major radius;
+                                  // Möbius: radius of the centre circle
+    float minorSize = 1.0f;       // torus: tube radius; Möbius: half width of the strip
+    float hillHeight = 1.0f;      // hills: peak-to-trough amplitude
+    float hillScale = 4.0f;       // hills: feature size (wavelength of the lowest octave)
+    int resolution = 64;          // quads along each parametric direction
+    std::uint64_t noiseSeed = 7;  // hills: the noise seed
     bool operator==(const ProceduralMeshParams&) const = default;
 };
 

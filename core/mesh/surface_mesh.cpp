@@ -7,8 +7,12 @@
 
 namespace grass::core {
 
-glm::vec3 toGlm(const OpenMesh::Vec3f& v) { return {v[0], v[1], v[2]}; }
-glm::vec2 toGlm(const OpenMesh::Vec2f& v) { return {v[0], v[1]}; }
+glm::vec3 toGlm(const OpenMesh::Vec3f& v) {
+    return {v[0], v[1], v[2]};
+}
+glm::vec2 toGlm(const OpenMesh::Vec2f& v) {
+    return {v[0], v[1]};
+}
 
 std::uint32_t SurfaceMeshBuilder::addVertex(glm::vec3 position, glm::vec3 normal, glm::vec2 uv) {
     const auto vh = mMesh.add_vertex(OpenMesh::Vec3f(position.x, position.y, position.z));
@@ -22,15 +26,16 @@ void SurfaceMeshBuilder::addTriangle(std::uint32_t a, std::uint32_t b, std::uint
         ++mDegenerate;
         return;
     }
-    const SurfaceMesh::VertexHandle handles[3] = {
-        mMesh.vertex_handle(static_cast<int>(a)), mMesh.vertex_handle(static_cast<int>(b)),
-        mMesh.vertex_handle(static_cast<int>(c))};
+    const SurfaceMesh::VertexHandle handles[3] = {mMesh.vertex_handle(static_cast<int>(a)),
+                                                  mMesh.vertex_handle(static_cast<int>(b)),
+                                                  mMesh.vertex_handle(static_cast<int>(c))};
     // OpenMesh logs "complex edge" when it refuses a face; the refusal is handled below, so
     // the log line would only alarm the user.
     omerr().disable();
     const bool added = mMesh.add_face(handles[0], handles[1], handles[2]).is_valid();
     omerr().enable();
-    if (added) return;
+    if (added)
+        return;
     SurfaceMesh::VertexHandle copies[3];
     for (int i = 0; i < 3; ++i) {
         // Copies, not references: add_vertex may reallocate the arrays they point into.
@@ -65,7 +70,8 @@ double surfaceArea(const SurfaceMesh& mesh) {
 }
 
 Bounds meshBounds(const SurfaceMesh& mesh) {
-    if (mesh.n_vertices() == 0) return {};
+    if (mesh.n_vertices() == 0)
+        return {};
     Bounds bounds{glm::vec3(std::numeric_limits<float>::max()),
                   glm::vec3(std::numeric_limits<float>::lowest())};
     for (const auto vh : mesh.vertices()) {
@@ -81,12 +87,14 @@ void computeAreaWeightedNormals(SurfaceMesh& mesh) {
     for (const auto fh : mesh.faces()) {
         SurfaceMesh::VertexHandle v[3];
         int i = 0;
-        for (const auto vh : mesh.fv_range(fh)) v[i++] = vh;
+        for (const auto vh : mesh.fv_range(fh))
+            v[i++] = vh;
         const glm::vec3 a = toGlm(mesh.point(v[0]));
         const glm::vec3 b = toGlm(mesh.point(v[1]));
         const glm::vec3 c = toGlm(mesh.point(v[2]));
         const glm::vec3 weighted = glm::cross(b - a, c - a);  // length = 2·area
-        for (const auto vh : v) sums[static_cast<std::size_t>(vh.idx())] += weighted;
+        for (const auto vh : v)
+            sums[static_cast<std::size_t>(vh.idx())] += weighted;
     }
     for (const auto vh : mesh.vertices()) {
         const glm::vec3 sum = sums[static_cast<std::size_t>(vh.idx())];
@@ -115,7 +123,8 @@ std::vector<std::array<std::uint32_t, 3>> triangleIndices(const SurfaceMesh& mes
     for (const auto fh : mesh.faces()) {
         std::array<std::uint32_t, 3> t{};
         int i = 0;
-        for (const auto vh : mesh.fv_range(fh)) t[static_cast<std::size_t>(i++)] = static_cast<std::uint32_t>(vh.idx());
+        for (const auto vh : mesh.fv_range(fh))
+            t[static_cast<std::size_t>(i++)] = static_cast<std::uint32_t>(vh.idx());
         triangles.push_back(t);
     }
     return triangles;

@@ -23,15 +23,15 @@ inline constexpr int PROJECT_FORMAT_VERSION = 1;
 // Where the surface comes from: a procedural shape by name, or a glTF file.
 struct MeshSource {
     bool isFile = false;
-    std::string file;                  // relative to the project folder (when isFile)
-    ProceduralMeshParams procedural;   // (when !isFile)
+    std::string file;                 // relative to the project folder (when isFile)
+    ProceduralMeshParams procedural;  // (when !isFile)
     bool operator==(const MeshSource&) const = default;
 };
 
 struct GrassLayer {
     std::string name = "grass";
     ScatterParams scatter;
-    std::string densityMap;            // relative path, empty = uniform
+    std::string densityMap;                    // relative path, empty = uniform
     glm::vec3 rootColor{0.10f, 0.28f, 0.05f};  // linear RGB
     glm::vec3 tipColor{0.45f, 0.70f, 0.20f};
     bool operator==(const GrassLayer&) const = default;
@@ -57,10 +57,11 @@ enum class GeometryPath { Auto, Tessellation, Strips };
 struct RenderSettings {
     int width = 1280;
     int height = 720;
-    GeometryPath geometry = GeometryPath::Auto;  // Auto: strips on software GL, tessellation on GPUs
-    int tessLevel = 8;          // tessellation level along the blade (1..64)
-    int stripSegments = 8;      // segments of an instanced strip (1..32)
-    int msaaSamples = 4;        // 0, 1, 2, 4 or 8
+    GeometryPath geometry =
+        GeometryPath::Auto;  // Auto: strips on software GL, tessellation on GPUs
+    int tessLevel = 8;       // tessellation level along the blade (1..64)
+    int stripSegments = 8;   // segments of an instanced strip (1..32)
+    int msaaSamples = 4;     // 0, 1, 2, 4 or 8
     glm::vec3 skyColor{0.55f, 0.70f, 0.90f};
     glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
     std::uint32_t patchSize = 256;  // blades per patch, a multiple of 32 (the cull work-group)

@@ -22,9 +22,10 @@ struct Patch {
 
 struct PatchedBlades {
     std::uint32_t patchSize = 0;
-    std::vector<Blade> blades;     // patchCount × patchSize, patch-major
+    std::vector<Blade> blades;  // patchCount × patchSize, patch-major
     std::vector<Patch> patches;
-    std::vector<std::uint32_t> sourceIndex;  // blade i came from input blade sourceIndex[i] (padding: UINT32_MAX)
+    std::vector<std::uint32_t>
+        sourceIndex;  // blade i came from input blade sourceIndex[i] (padding: UINT32_MAX)
 };
 
 // The 63-bit Morton code of p quantised to 21 bits per axis within box (clamped to it): the

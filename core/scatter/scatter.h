@@ -31,10 +31,10 @@ struct BladeRanges {
 };
 
 struct ScatterParams {
-    float density = 300.0f;        // uniform blades per square metre (0 = none)
-    float clumpSpacing = 0.0f;     // Poisson-disk minimum distance between clump centres (0 = none)
+    float density = 300.0f;     // uniform blades per square metre (0 = none)
+    float clumpSpacing = 0.0f;  // Poisson-disk minimum distance between clump centres (0 = none)
     int bladesPerClump = 12;
-    float clumpRadius = 0.15f;     // metres
+    float clumpRadius = 0.15f;  // metres
     BladeRanges blade;
     bool operator==(const ScatterParams&) const = default;
 };
@@ -42,9 +42,9 @@ struct ScatterParams {
 // A scattered blade, before patching: the GPU layout plus the surface point it came from.
 struct ScatterResult {
     std::vector<Blade> blades;
-    std::vector<glm::vec2> uvs;        // UV0 of each blade's root, same order as blades
-    std::size_t uniformCount = 0;       // blades from the uniform distribution
-    std::size_t clumpCount = 0;         // number of clump centres
+    std::vector<glm::vec2> uvs;    // UV0 of each blade's root, same order as blades
+    std::size_t uniformCount = 0;  // blades from the uniform distribution
+    std::size_t clumpCount = 0;    // number of clump centres
     std::vector<glm::vec3> clumpCentres;
     std::vector<std::string> warnings;  // e.g. a clamped huge request, for the caller to print
 };

@@ -13,10 +13,13 @@ constexpr float MAX_PITCH = 1.553f;  // 89°: looking straight down flips the up
 
 glm::vec3 OrbitCamera::position() const {
     const float cp = std::cos(pitchRad);
-    return target + distance * glm::vec3(cp * std::sin(yawRad), std::sin(pitchRad), cp * std::cos(yawRad));
+    return target +
+           distance * glm::vec3(cp * std::sin(yawRad), std::sin(pitchRad), cp * std::cos(yawRad));
 }
 
-glm::mat4 OrbitCamera::view() const { return glm::lookAt(position(), target, glm::vec3(0, 1, 0)); }
+glm::mat4 OrbitCamera::view() const {
+    return glm::lookAt(position(), target, glm::vec3(0, 1, 0));
+}
 
 glm::mat4 OrbitCamera::projection(float aspect) const {
     return glm::perspective(fovYRad, std::max(aspect, 1e-3f), nearPlane, farPlane);
@@ -37,7 +40,8 @@ void OrbitCamera::pan(float dxPixels, float dyPixels, float viewportHeightPixels
     const glm::mat4 v = view();
     const glm::vec3 right(v[0][0], v[1][0], v[2][0]);
     const glm::vec3 up(v[0][1], v[1][1], v[2][1]);
-    const float worldPerPixel = 2.0f * distance * std::tan(0.5f * fovYRad) / std::max(viewportHeightPixels, 1.0f);
+    const float worldPerPixel =
+        2.0f * distance * std::tan(0.5f * fovYRad) / std::max(viewportHeightPixels, 1.0f);
     target += (-dxPixels * right + dyPixels * up) * worldPerPixel;
 }
 
@@ -58,7 +62,8 @@ OrbitCamera OrbitCamera::lookAt(glm::vec3 eye, glm::vec3 target, float fovYRad) 
 OrbitCamera frameBounds(const Bounds& bounds, float fovYRad, glm::vec3 fromDirection) {
     OrbitCamera camera = frameBounds(bounds, fovYRad);
     const float length = glm::length(fromDirection);
-    if (!(length > 0.0f)) return camera;
+    if (!(length > 0.0f))
+        return camera;
     const glm::vec3 d = fromDirection / length;
     camera.yawRad = std::atan2(d.x, d.z);
     camera.pitchRad = std::clamp(std::asin(std::clamp(d.y, -1.0f, 1.0f)), -1.4f, 1.4f);
@@ -77,11 +82,13 @@ glm::vec3 preferredViewDirection(const SurfaceMesh& mesh) {
         sum += cross;
         area += glm::length(cross);
     }
-    if (!(area > 0.0)) return threeQuarter;
+    if (!(area > 0.0))
+        return threeQuarter;
     // |mean normal| is ~0 for closed objects (look from the default side) and 1 for a flat
     // sheet; past 0.35 most of the surface faces one way and the view turns towards it.
     const glm::vec3 mean = glm::vec3(sum / area);
-    if (glm::length(mean) < 0.35f) return threeQuarter;
+    if (glm::length(mean) < 0.35f)
+        return threeQuarter;
     return glm::normalize(threeQuarter + 2.0f * mean);
 }
 

@@ -12,8 +12,8 @@ namespace grass::core {
 struct OrbitCamera {
     glm::vec3 target{0.0f};
     float distance = 10.0f;
-    float yawRad = 0.785f;    // about +Y, 0 looks along −Z from +Z
-    float pitchRad = 0.45f;   // above the horizon, clamped to (−89°, 89°)
+    float yawRad = 0.785f;   // about +Y, 0 looks along −Z from +Z
+    float pitchRad = 0.45f;  // above the horizon, clamped to (−89°, 89°)
     float fovYRad = 0.785f;
     float nearPlane = 0.05f;
     float farPlane = 500.0f;

@@ -14,13 +14,15 @@ namespace grass::core {
 
 std::size_t Scene::totalBlades() const {
     std::size_t total = 0;
-    for (const auto& layer : layers) total += layer.liveBlades;
+    for (const auto& layer : layers)
+        total += layer.liveBlades;
     return total;
 }
 
 // A file named by the project that cannot be read: say which project field named it, so the
 // user knows where to fix it ("project.json: /layers/0/density_map: maps/d.png: not found").
-static Error fromProjectField(const LoadedProject& loaded, const std::string& field, const Error& error) {
+static Error fromProjectField(const LoadedProject& loaded, const std::string& field,
+                              const Error& error) {
     return Error{loaded.file.string(), field + ": " + error.str()};
 }
 
@@ -35,13 +37,17 @@ double estimateLayerBlades(const ScatterParams& params, double area) {
 
 Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes) {
     const MeshSource& source = loaded.project.mesh;
-    if (!source.isFile) return makeProceduralMesh(source.procedural);
+    if (!source.isFile)
+        return makeProceduralMesh(source.procedural);
     auto path = resolveAssetPath(loaded.folder, source.file, "/mesh/file");
-    if (!path) return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
+    if (!path)
+        return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
     auto imported = loadGltf(*path);
-    if (!imported) return fromProjectField(loaded, "/mesh/file", imported.error());
+    if (!imported)
+        return fromProjectField(loaded, "/mesh/file", imported.error());
     if (notes)
-        for (auto& note : imported->notes) notes->push_back(path->string() + ": " + note);
+        for (auto& note : imported->notes)
+            notes->push_back(path->string() + ": " + note);
     return std::move(imported->mesh);
 }
 
@@ -74,17 +80,22 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
         if (!layer.densityMap.empty()) {
             const std::string field = "/layers/" + std::to_string(i) + "/density_map";
             auto path = resolveAssetPath(loaded.folder, layer.densityMap, field);
-            if (!path) return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
+            if (!path)
+                return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
             auto map = loadMapImage(*path);
-            if (!map) return fromProjectField(loaded, field, map.error());
+            if (!map)
+                return fromProjectField(loaded, field, map.error());
             density = std::move(*map);
-            for (const auto& warning : density.warnings) scene.notes.push_back(path->string() + ": " + warning);
+            for (const auto& warning : density.warnings)
+                scene.notes.push_back(path->string() + ": " + warning);
             densityMap = &density;
         }
         // Each layer its own stream, so adding a layer does not reshuffle the others.
-        const std::uint64_t layerSeed = Rng::splitMix(project.seed ^ (0x9E3779B97F4A7C15ULL * (i + 1)));
+        const std::uint64_t layerSeed =
+            Rng::splitMix(project.seed ^ (0x9E3779B97F4A7C15ULL * (i + 1)));
         ScatterResult scattered = scatterBlades(scene.mesh, layer.scatter, densityMap, layerSeed);
-        for (auto& warning : scattered.warnings) scene.notes.push_back("layer \"" + layer.name + "\": " + warning);
+        for (auto& warning : scattered.warnings)
+            scene.notes.push_back("layer \"" + layer.name + "\": " + warning);
         LayerField field;
         field.name = layer.name;
         field.liveBlades = scattered.blades.size();
@@ -99,7 +110,8 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
 Result<Scene> buildScene(const LoadedProject& loaded) {
     std::vector<std::string> notes;
     auto mesh = loadProjectMesh(loaded, &notes);
-    if (!mesh) return mesh.error();
+    if (!mesh)
+        return mesh.error();
     return buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes));
 }
 
@@ -107,7 +119,8 @@ Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, cons
                                      std::size_t targetBlades) {
     const double area = surfaceArea(mesh);
     const Bounds bounds = meshBounds(mesh);
-    if (!(area > 0.0)) return makeError(meshFile.string(), "the mesh has no surface area");
+    if (!(area > 0.0))
+        return makeError(meshFile.string(), "the mesh has no surface area");
 
     LoadedProject loaded;
     loaded.folder = std::filesystem::absolute(meshFile).parent_path();

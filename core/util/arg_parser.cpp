@@ -17,19 +17,21 @@ void ArgParser::flag(const std::string& name, const std::string& help, bool* out
 
 void ArgParser::integer(const std::string& name, const std::string& help, int* out, int min,
                         int max) {
-    const std::string range = "an integer from " + std::to_string(min) + " to " + std::to_string(max);
-    mOptions.push_back({name, "N", help + " (" + std::to_string(min) + ".." + std::to_string(max) +
-                                      ", default " + std::to_string(*out) + ")",
-                        true, [=](const std::string& value) -> Result<void> {
-                            long long parsed = 0;
-                            const char* end = value.data() + value.size();
-                            const auto [ptr, ec] = std::from_chars(value.data(), end, parsed);
-                            if (ec != std::errc() || ptr != end || value.empty() || parsed < min ||
-                                parsed > max)
-                                return makeError(name, "expected " + range + ", got '" + value + "'");
-                            *out = static_cast<int>(parsed);
-                            return {};
-                        }});
+    const std::string range =
+        "an integer from " + std::to_string(min) + " to " + std::to_string(max);
+    mOptions.push_back(
+        {name, "N",
+         help + " (" + std::to_string(min) + ".." + std::to_string(max) + ", default " +
+             std::to_string(*out) + ")",
+         true, [=](const std::string& value) -> Result<void> {
+             long long parsed = 0;
+             const char* end = value.data() + value.size();
+             const auto [ptr, ec] = std::from_chars(value.data(), end, parsed);
+             if (ec != std::errc() || ptr != end || value.empty() || parsed < min || parsed > max)
+                 return makeError(name, "expected " + range + ", got '" + value + "'");
+             *out = static_cast<int>(parsed);
+             return {};
+         }});
 }
 
 void ArgParser::unsignedInteger(const std::string& name, const std::string& help,
@@ -40,7 +42,8 @@ void ArgParser::unsignedInteger(const std::string& name, const std::string& help
                             const char* end = value.data() + value.size();
                             const auto [ptr, ec] = std::from_chars(value.data(), end, parsed);
                             if (ec != std::errc() || ptr != end || value.empty())
-                                return makeError(name, "expected a non-negative integer, got '" + value + "'");
+                                return makeError(
+                                    name, "expected a non-negative integer, got '" + value + "'");
                             *out = parsed;
                             return {};
                         }});
@@ -49,7 +52,8 @@ void ArgParser::unsignedInteger(const std::string& name, const std::string& help
 void ArgParser::text(const std::string& name, const std::string& metavar, const std::string& help,
                      std::string* out) {
     mOptions.push_back({name, metavar, help, true, [=](const std::string& value) -> Result<void> {
-                            if (value.empty()) return makeError(name, "expected " + metavar + ", got nothing");
+                            if (value.empty())
+                                return makeError(name, "expected " + metavar + ", got nothing");
                             *out = value;
                             return {};
                         }});
@@ -58,11 +62,13 @@ void ArgParser::text(const std::string& name, const std::string& metavar, const 
 void ArgParser::choice(const std::string& name, const std::vector<std::string>& choices,
                        const std::string& help, std::string* out) {
     std::string list;
-    for (const auto& c : choices) list += (list.empty() ? "" : "|") + c;
+    for (const auto& c : choices)
+        list += (list.empty() ? "" : "|") + c;
     mOptions.push_back({name, list, help + " (default " + *out + ")", true,
                         [=](const std::string& value) -> Result<void> {
                             if (std::find(choices.begin(), choices.end(), value) == choices.end())
-                                return makeError(name, "expected one of " + list + ", got '" + value + "'");
+                                return makeError(
+                                    name, "expected one of " + list + ", got '" + value + "'");
                             *out = value;
                             return {};
                         }});
@@ -98,12 +104,14 @@ Result<void> ArgParser::parse(const std::vector<std::string>& args) {
             if (option == mOptions.end())
                 return makeError(arg, "unknown option (see --help)");
             if (option->takesValue && !inlineValue) {
-                if (i + 1 >= args.size()) return makeError(arg, "needs a value: " + arg + " " + option->metavar);
+                if (i + 1 >= args.size())
+                    return makeError(arg, "needs a value: " + arg + " " + option->metavar);
                 value = args[++i];
             } else if (!option->takesValue && inlineValue) {
                 return makeError(arg, "takes no value");
             }
-            if (auto applied = option->apply(value); !applied) return applied;
+            if (auto applied = option->apply(value); !applied)
+                return applied;
             mGiven.push_back(arg);
             continue;
         }
@@ -122,11 +130,13 @@ std::string ArgParser::help() const {
     std::string text = "usage: " + mUsage + "\n\n" + mSummary + "\n";
     if (!mPositionals.empty()) {
         text += "\narguments:\n";
-        for (const auto& p : mPositionals) text += "  " + p.name + "\n      " + p.help + "\n";
+        for (const auto& p : mPositionals)
+            text += "  " + p.name + "\n      " + p.help + "\n";
     }
     text += "\noptions:\n";
     for (const auto& o : mOptions)
-        text += "  " + o.name + (o.metavar.empty() ? "" : " " + o.metavar) + "\n      " + o.help + "\n";
+        text +=
+            "  " + o.name + (o.metavar.empty() ? "" : " " + o.metavar) + "\n      " + o.help + "\n";
     text += "  --help\n      show this help and exit\n";
     return text;
 }

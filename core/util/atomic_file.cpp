@@ -20,10 +20,12 @@ fs::path temporaryPathFor(const fs::path& target) {
 
 static Result<void> syncFile(const fs::path& file) {
     const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return makeError(file.string(), std::string("cannot reopen: ") + std::strerror(errno));
+    if (fd < 0)
+        return makeError(file.string(), std::string("cannot reopen: ") + std::strerror(errno));
     const int rc = ::fsync(fd);
     ::close(fd);
-    if (rc != 0) return makeError(file.string(), std::string("fsync failed: ") + std::strerror(errno));
+    if (rc != 0)
+        return makeError(file.string(), std::string("fsync failed: ") + std::strerror(errno));
     return {};
 }
 
@@ -45,7 +47,8 @@ Result<void> writeFileAtomic(const fs::path& target, std::string_view bytes) {
     const fs::path temporary = temporaryPathFor(target);
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) return makeError(target.string(), "cannot write: " + std::string(std::strerror(errno)));
+        if (!out)
+            return makeError(target.string(), "cannot write: " + std::string(std::strerror(errno)));
         out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
         out.flush();
         if (!out) {
@@ -59,13 +62,17 @@ Result<void> writeFileAtomic(const fs::path& target, std::string_view bytes) {
 
 Result<std::string> readFile(const fs::path& file) {
     std::error_code ec;
-    if (!fs::exists(file, ec)) return makeError(file.string(), "file not found");
-    if (fs::is_directory(file, ec)) return makeError(file.string(), "is a folder, not a file");
+    if (!fs::exists(file, ec))
+        return makeError(file.string(), "file not found");
+    if (fs::is_directory(file, ec))
+        return makeError(file.string(), "is a folder, not a file");
     std::ifstream in(file, std::ios::binary);
-    if (!in) return makeError(file.string(), std::string("cannot open: ") + std::strerror(errno));
+    if (!in)
+        return makeError(file.string(), std::string("cannot open: ") + std::strerror(errno));
     std::ostringstream contents;
     contents << in.rdbuf();
-    if (in.bad()) return makeError(file.string(), "read failed");
+    if (in.bad())
+        return makeError(file.string(), "read failed");
     return contents.str();
 }
 

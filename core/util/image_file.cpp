@@ -10,8 +10,10 @@ namespace fs = std::filesystem;
 
 static std::string oneLine(std::string text) {
     for (char& c : text)
-        if (c == '\n' || c == '\r') c = ' ';
-    while (!text.empty() && text.back() == ' ') text.pop_back();
+        if (c == '\n' || c == '\r')
+            c = ' ';
+    while (!text.empty() && text.back() == ' ')
+        text.pop_back();
     return text;
 }
 
@@ -20,10 +22,11 @@ Result<void> checkImageWritable(const fs::path& file) {
     if (fs::is_directory(file, ec))
         return makeError(file.string(), "is a folder: give an image file name such as render.png");
     if (file.has_parent_path() && !fs::is_directory(file.parent_path(), ec))
-        return makeError(file.string(), "the folder " + file.parent_path().string() + " does not exist");
-    if (!OIIO::ImageOutput::create(file.string()))
         return makeError(file.string(),
-                         "unknown image format \"" + file.extension().string() + "\" (use .png, .tif, .jpg or .exr)");
+                         "the folder " + file.parent_path().string() + " does not exist");
+    if (!OIIO::ImageOutput::create(file.string()))
+        return makeError(file.string(), "unknown image format \"" + file.extension().string() +
+                                            "\" (use .png, .tif, .jpg or .exr)");
     return {};
 }
 
@@ -32,7 +35,8 @@ Result<void> writeRgba8Image(const fs::path& file, int width, int height,
     if (width <= 0 || height <= 0 ||
         pixels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4)
         return makeError(file.string(), "internal: image size does not match its pixels");
-    if (auto writable = checkImageWritable(file); !writable) return writable;
+    if (auto writable = checkImageWritable(file); !writable)
+        return writable;
     std::error_code ec;
     const fs::path temporary = temporaryPathFor(file);
     auto out = OIIO::ImageOutput::create(file.string());
@@ -52,9 +56,11 @@ Result<void> writeRgba8Image(const fs::path& file, int width, int height,
 
 Result<Rgba8Pixels> readRgba8Image(const fs::path& file) {
     std::error_code ec;
-    if (!fs::exists(file, ec)) return makeError(file.string(), "file not found");
+    if (!fs::exists(file, ec))
+        return makeError(file.string(), "file not found");
     auto in = OIIO::ImageInput::open(file.string());
-    if (!in) return makeError(file.string(), "not a readable image: " + oneLine(OIIO::geterror()));
+    if (!in)
+        return makeError(file.string(), "not a readable image: " + oneLine(OIIO::geterror()));
     const OIIO::ImageSpec& spec = in->spec();
     const int channels = spec.nchannels;
     std::vector<std::uint8_t> raw(static_cast<std::size_t>(spec.width) *
@@ -65,7 +71,8 @@ Result<Rgba8Pixels> readRgba8Image(const fs::path& file) {
     Rgba8Pixels image;
     image.width = spec.width;
     image.height = spec.height;
-    image.pixels.resize(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) * 4);
+    image.pixels.resize(static_cast<std::size_t>(spec.width) *
+                        static_cast<std::size_t>(spec.height) * 4);
     for (std::size_t i = 0; i < image.pixels.size() / 4; ++i) {
         const std::uint8_t* p = raw.data() + i * static_cast<std::size_t>(channels);
         const bool grey = channels < 3;

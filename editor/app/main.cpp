@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <memory>
 
-#include "util/arg_parser.h"
 #include "framebuffer.h"
 #include "headless_context.h"
 #include "offscreen_render.h"
 #include "scene_renderer.h"
+#include "util/arg_parser.h"
 #include "util/image_file.h"
 #include "window.h"
 
@@ -31,8 +31,10 @@ void applyInput(const editor::InputState& input, int viewportHeight, const core:
                    static_cast<float>(viewportHeight));
     else if (input.leftDown)
         camera.orbit(static_cast<float>(input.dragDx), static_cast<float>(input.dragDy));
-    if (input.scrollSteps != 0.0) camera.zoom(static_cast<float>(input.scrollSteps));
-    if (input.frameRequested) camera = core::frameBounds(scene.bounds, camera.fovYRad);
+    if (input.scrollSteps != 0.0)
+        camera.zoom(static_cast<float>(input.scrollSteps));
+    if (input.frameRequested)
+        camera = core::frameBounds(scene.bounds, camera.fovYRad);
     // Keep the depth range proportional to the distance so zooming never clips the field.
     camera.nearPlane = std::max(camera.distance * 1e-3f, 1e-4f);
     camera.farPlane = camera.distance * 20.0f + 100.0f;
@@ -45,35 +47,45 @@ int main(int argc, char** argv) {
     std::string screenshot;
     int frames = 0;
     ArgParser parser("grass-editor [project-dir|project.json] [--screenshot F.png --frames N]",
-                          "Opens the grass editor on a project (default: projects/meadow). Drag "
-                          "to orbit, wheel to zoom, middle- or shift-drag to pan, F to frame, Esc "
-                          "to close.");
-    parser.positional("project", "a project folder (with project.json) or a .json file", &projectPath, false);
-    parser.text("--screenshot", "FILE", "save what the window shows after --frames frames, then exit", &screenshot);
-    parser.integer("--frames", "frames to draw before the screenshot (with --screenshot: default 3)",
-                   &frames, 1, 100000);
+                     "Opens the grass editor on a project (default: projects/meadow). Drag "
+                     "to orbit, wheel to zoom, middle- or shift-drag to pan, F to frame, Esc "
+                     "to close.");
+    parser.positional("project", "a project folder (with project.json) or a .json file",
+                      &projectPath, false);
+    parser.text("--screenshot", "FILE",
+                "save what the window shows after --frames frames, then exit", &screenshot);
+    parser.integer("--frames",
+                   "frames to draw before the screenshot (with --screenshot: default 3)", &frames,
+                   1, 100000);
     if (auto parsed = parser.parse(std::vector<std::string>(argv + 1, argv + argc)); !parsed)
         return fail(parsed.error().str(), 2);
     if (parser.helpRequested()) {
         std::fputs(parser.help().c_str(), stdout);
         return 0;
     }
-    if (!screenshot.empty() && frames == 0) frames = 3;
+    if (!screenshot.empty() && frames == 0)
+        frames = 3;
 
     auto loaded = core::loadProject(projectPath);
-    if (!loaded) return fail(loaded.error().str());
+    if (!loaded)
+        return fail(loaded.error().str());
     auto scene = core::buildScene(*loaded);
-    if (!scene) return fail(scene.error().str());
-    for (const auto& note : scene->notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+    if (!scene)
+        return fail(scene.error().str());
+    for (const auto& note : scene->notes)
+        std::fprintf(stderr, "note: %s\n", note.c_str());
     const core::Project& project = loaded->project;
 
     auto window = editor::Window::create(project.render.width, project.render.height,
                                          "grass — " + project.name);
-    if (!window) return fail(window.error().message);
+    if (!window)
+        return fail(window.error().message);
     auto camera = render::projectCamera(project, "");
-    if (!camera) return fail(camera.error().str());
+    if (!camera)
+        return fail(camera.error().str());
     auto renderer = render::SceneRenderer::create(*scene);
-    if (!renderer) return fail(renderer.error().str());
+    if (!renderer)
+        return fail(renderer.error().str());
     const render::RenderOptions options =
         render::renderOptionsFor(project.render, project.sun, gl::isSoftwareRenderer());
     std::fprintf(stderr, "grass-editor: %s, %zu blades, geometry %s\n",
@@ -87,7 +99,8 @@ int main(int argc, char** argv) {
         const editor::InputState input = (*window)->pollInput();
         int width = 0, height = 0;
         (*window)->framebufferSize(&width, &height);
-        if (width <= 0 || height <= 0) continue;  // minimised
+        if (width <= 0 || height <= 0)
+            continue;  // minimised
         applyInput(input, height, *scene, *camera);
         if (!target || target->width() != width || target->height() != height)
             target = std::make_unique<gl::Framebuffer>(width, height, project.render.msaaSamples);
@@ -97,17 +110,22 @@ int main(int argc, char** argv) {
         ++frame;
         if (!screenshot.empty() && frame >= frames) {
             const gl::Rgba8Image shown = gl::readFramebuffer(0, width, height);
-            if (auto written = writeRgba8Image(screenshot, shown.width, shown.height, shown.pixels); !written)
+            if (auto written = writeRgba8Image(screenshot, shown.width, shown.height, shown.pixels);
+                !written)
                 return fail(written.error().str());
-            std::printf("wrote %s (%dx%d) after %d frames\n", screenshot.c_str(), width, height, frame);
+            std::printf("wrote %s (%dx%d) after %d frames\n", screenshot.c_str(), width, height,
+                        frame);
             return 0;
         }
         (*window)->swapBuffers();
         if (std::chrono::steady_clock::now() - lastTitle > std::chrono::milliseconds(500)) {
             const render::FrameTimings timings = (*renderer)->lastTimings();
-            const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            const double cpuMs =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
             char title[256];
-            std::snprintf(title, sizeof title, "grass — %s — %zu blades — frame %.1f ms (grass %.1f ms)",
+            std::snprintf(title, sizeof title,
+                          "grass — %s — %zu blades — frame %.1f ms (grass %.1f ms)",
                           project.name.c_str(), scene->totalBlades(), cpuMs, timings.grassMs);
             (*window)->setTitle(title);
             lastTitle = std::chrono::steady_clock::now();

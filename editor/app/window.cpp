@@ -1,7 +1,7 @@
 #include "window.h"
 
-#include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
+#include <epoxy/gl.h>
 
 namespace grass::editor {
 
@@ -19,18 +19,24 @@ struct WindowCallbacks {
     static void button(GLFWwindow* w, int button, int action, int mods) {
         InputState& input = self(w)->mInput;
         const bool down = action == GLFW_PRESS;
-        if (button == GLFW_MOUSE_BUTTON_LEFT) input.leftDown = down;
-        if (button == GLFW_MOUSE_BUTTON_MIDDLE) input.middleDown = down;
-        if (button == GLFW_MOUSE_BUTTON_RIGHT) input.rightDown = down;
+        if (button == GLFW_MOUSE_BUTTON_LEFT)
+            input.leftDown = down;
+        if (button == GLFW_MOUSE_BUTTON_MIDDLE)
+            input.middleDown = down;
+        if (button == GLFW_MOUSE_BUTTON_RIGHT)
+            input.rightDown = down;
         input.shiftDown = (mods & GLFW_MOD_SHIFT) != 0;
     }
     static void scroll(GLFWwindow* w, double, double dy) { self(w)->mInput.scrollSteps += dy; }
     static void key(GLFWwindow* w, int key, int, int action, int mods) {
         InputState& input = self(w)->mInput;
-        input.shiftDown = (mods & GLFW_MOD_SHIFT) != 0 ||
-                          (action != GLFW_RELEASE && (key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT));
-        if (action == GLFW_PRESS && key == GLFW_KEY_F) input.frameRequested = true;
-        if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
+        input.shiftDown =
+            (mods & GLFW_MOD_SHIFT) != 0 ||
+            (action != GLFW_RELEASE && (key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT));
+        if (action == GLFW_PRESS && key == GLFW_KEY_F)
+            input.frameRequested = true;
+        if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE)
+            glfwSetWindowShouldClose(w, GLFW_TRUE);
     }
 };
 
@@ -41,8 +47,9 @@ static void onGlfwError(int, const char*) {
 Result<std::unique_ptr<Window>> Window::create(int width, int height, const std::string& title) {
     glfwSetErrorCallback(onGlfwError);
     if (!glfwInit())
-        return makeError("grass-editor", "cannot open a window: no display (set DISPLAY, or run "
-                                         "under xvfb-run; 'grass render' renders without one)");
+        return makeError("grass-editor",
+                         "cannot open a window: no display (set DISPLAY, or run "
+                         "under xvfb-run; 'grass render' renders without one)");
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -74,10 +81,18 @@ Window::~Window() {
     glfwTerminate();
 }
 
-bool Window::shouldClose() const { return glfwWindowShouldClose(mWindow) != 0; }
-void Window::requestClose() { glfwSetWindowShouldClose(mWindow, GLFW_TRUE); }
-void Window::setTitle(const std::string& title) { glfwSetWindowTitle(mWindow, title.c_str()); }
-void Window::swapBuffers() { glfwSwapBuffers(mWindow); }
+bool Window::shouldClose() const {
+    return glfwWindowShouldClose(mWindow) != 0;
+}
+void Window::requestClose() {
+    glfwSetWindowShouldClose(mWindow, GLFW_TRUE);
+}
+void Window::setTitle(const std::string& title) {
+    glfwSetWindowTitle(mWindow, title.c_str());
+}
+void Window::swapBuffers() {
+    glfwSwapBuffers(mWindow);
+}
 void Window::framebufferSize(int* width, int* height) const {
     glfwGetFramebufferSize(mWindow, width, height);
 }

@@ -25,7 +25,8 @@ The editor window is 'grass-editor'.
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
-        grass::cli::printError("", "missing command: grass render|mesh-info ... (see grass --help)");
+        grass::cli::printError("",
+                               "missing command: grass render|mesh-info ... (see grass --help)");
         return grass::cli::EXIT_USAGE;
     }
     if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
@@ -38,11 +39,14 @@ int main(int argc, char** argv) {
     }
     const std::string command = args[0];
     args.erase(args.begin());
-    if (command == "render") return grass::cli::runRender(args);
-    if (command == "mesh-info") return grass::cli::runMeshInfo(args);
+    if (command == "render")
+        return grass::cli::runRender(args);
+    if (command == "mesh-info")
+        return grass::cli::runMeshInfo(args);
     if (command.rfind("-", 0) == 0)
         grass::cli::printError("", command + ": unknown option (see grass --help)");
     else
-        grass::cli::printError(command, "unknown command (commands: render, mesh-info; see grass --help)");
+        grass::cli::printError(command,
+                               "unknown command (commands: render, mesh-info; see grass --help)");
     return grass::cli::EXIT_USAGE;
 }

@@ -3,9 +3,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "util/arg_parser.h"
 #include "commands.h"
 #include "mesh/gltf_loader.h"
+#include "util/arg_parser.h"
 
 namespace grass::cli {
 
@@ -35,7 +35,8 @@ int runMeshInfo(const std::vector<std::string>& args) {
     const core::SurfaceMesh& mesh = imported->mesh;
     const core::Bounds bounds = core::meshBounds(mesh);
     const double area = core::surfaceArea(mesh);
-    for (const auto& note : imported->notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+    for (const auto& note : imported->notes)
+        std::fprintf(stderr, "note: %s\n", note.c_str());
     if (json) {
         nlohmann::ordered_json out;
         out["vertices"] = mesh.n_vertices();
@@ -48,12 +49,13 @@ int runMeshInfo(const std::vector<std::string>& args) {
         std::printf("%s\n", out.dump().c_str());
         return 0;
     }
-    std::printf("%s\n  vertices   %zu\n  triangles  %zu\n  area       %.6g\n  normals    %s\n"
-                "  uv0        %s\n  bounds     [%g %g %g] .. [%g %g %g]\n",
-                file.c_str(), mesh.n_vertices(), mesh.n_faces(), area,
-                imported->hasNormals ? "from file" : "computed (area-weighted)",
-                imported->hasUv ? "from file" : "generated (planar)", bounds.min.x, bounds.min.y,
-                bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z);
+    std::printf(
+        "%s\n  vertices   %zu\n  triangles  %zu\n  area       %.6g\n  normals    %s\n"
+        "  uv0        %s\n  bounds     [%g %g %g] .. [%g %g %g]\n",
+        file.c_str(), mesh.n_vertices(), mesh.n_faces(), area,
+        imported->hasNormals ? "from file" : "computed (area-weighted)",
+        imported->hasUv ? "from file" : "generated (planar)", bounds.min.x, bounds.min.y,
+        bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z);
     return 0;
 }
 

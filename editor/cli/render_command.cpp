@@ -4,11 +4,11 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "util/arg_parser.h"
 #include "commands.h"
 #include "headless_context.h"
 #include "mesh/gltf_loader.h"
 #include "offscreen_render.h"
+#include "util/arg_parser.h"
 #include "util/image_file.h"
 
 namespace grass::cli {
@@ -32,22 +32,29 @@ Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& p
                                       core::Scene* scene) {
     if (!args.mesh.empty()) {
         auto imported = core::loadGltf(args.mesh);
-        if (!imported) return imported.error();
-        auto loaded = core::projectForMesh(args.mesh, imported->mesh,
-                                           static_cast<std::size_t>(args.blades));
-        if (!loaded) return loaded.error();
+        if (!imported)
+            return imported.error();
+        auto loaded =
+            core::projectForMesh(args.mesh, imported->mesh, static_cast<std::size_t>(args.blades));
+        if (!loaded)
+            return loaded.error();
         std::vector<std::string> notes;
-        for (auto& note : imported->notes) notes.push_back(args.mesh + ": " + note);
+        for (auto& note : imported->notes)
+            notes.push_back(args.mesh + ": " + note);
         auto built = core::buildSceneFromMesh(*loaded, std::move(imported->mesh), std::move(notes));
-        if (!built) return built.error();
+        if (!built)
+            return built.error();
         *scene = std::move(*built);
         return loaded;
     }
     auto loaded = core::loadProject(args.project);
-    if (!loaded) return loaded.error();
-    if (parser.given("--seed")) loaded->project.seed = args.seed;
+    if (!loaded)
+        return loaded.error();
+    if (parser.given("--seed"))
+        loaded->project.seed = args.seed;
     auto built = core::buildScene(*loaded);
-    if (!built) return built.error();
+    if (!built)
+        return built.error();
     *scene = std::move(*built);
     return loaded;
 }
@@ -65,20 +72,27 @@ int runRender(const std::vector<std::string>& argv) {
         "any glTF file with a camera framing its bounds.");
     parser.positional("project", "a project folder (with project.json) or a project .json file",
                       &args.project, false);
-    parser.text("--mesh", "FILE", "render a default field on this glTF file instead of a project", &args.mesh);
+    parser.text("--mesh", "FILE", "render a default field on this glTF file instead of a project",
+                &args.mesh);
     parser.text("--out", "FILE", "image to write (default: <project name>.png)", &args.out);
-    parser.integer("--width", "image width in pixels (default: the project's)", &args.width, 1, 16384);
-    parser.integer("--height", "image height in pixels (default: the project's)", &args.height, 1, 16384);
+    parser.integer("--width", "image width in pixels (default: the project's)", &args.width, 1,
+                   16384);
+    parser.integer("--height", "image height in pixels (default: the project's)", &args.height, 1,
+                   16384);
     parser.unsignedInteger("--seed", "scatter seed, overrides the project's", &args.seed);
-    parser.text("--camera", "NAME", "which of the project's cameras (default: the first)", &args.camera);
+    parser.text("--camera", "NAME", "which of the project's cameras (default: the first)",
+                &args.camera);
     parser.choice("--geometry", {"project", "auto", "tess", "strips"},
                   "blade geometry path: tessellation shaders or instanced strips; auto = strips on "
-                  "software GL, tessellation on a GPU", &args.geometry);
+                  "software GL, tessellation on a GPU",
+                  &args.geometry);
     parser.choice("--msaa", {"project", "0", "1", "2", "4", "8"},
                   "multisample anti-aliasing samples per pixel", &args.msaa);
     parser.integer("--frames", "frames to draw and time", &args.frames, 1, 1000);
-    parser.integer("--blades", "with --mesh: about how many blades to grow", &args.blades, 1, 20000000);
-    parser.flag("--gl-debug", "print GL debug output (errors and warnings from the driver)", &args.glDebug);
+    parser.integer("--blades", "with --mesh: about how many blades to grow", &args.blades, 1,
+                   20000000);
+    parser.flag("--gl-debug", "print GL debug output (errors and warnings from the driver)",
+                &args.glDebug);
     // Parsed before the defaults that depend on it are shown, so 0 reads as "the project's".
     if (auto parsed = parser.parse(argv); !parsed) {
         printError("render", parsed.error().str());
@@ -97,7 +111,8 @@ int runRender(const std::vector<std::string>& argv) {
     if (!args.project.empty()) {
         const std::string extension = std::filesystem::path(args.project).extension().string();
         if (extension == ".gltf" || extension == ".glb") {
-            printError("render", args.project + ": is a glTF mesh, not a project: use --mesh " + args.project);
+            printError("render", args.project + ": is a glTF mesh, not a project: use --mesh " +
+                                     args.project);
             return EXIT_USAGE;
         }
     }
@@ -116,7 +131,8 @@ int runRender(const std::vector<std::string>& argv) {
         return EXIT_FAILED;
     }
     const double buildMs = msSince(buildStart);
-    for (const auto& note : scene.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+    for (const auto& note : scene.notes)
+        std::fprintf(stderr, "note: %s\n", note.c_str());
     const core::Project& project = loaded->project;
 
     auto camera = render::projectCamera(project, args.camera);
@@ -124,7 +140,8 @@ int runRender(const std::vector<std::string>& argv) {
         printError("render", camera.error().str());
         return EXIT_USAGE;
     }
-    if (args.out.empty()) args.out = project.name + ".png";
+    if (args.out.empty())
+        args.out = project.name + ".png";
 
     auto context = gl::HeadlessContext::create(args.glDebug);
     if (!context) {
@@ -134,7 +151,8 @@ int runRender(const std::vector<std::string>& argv) {
     core::RenderSettings settings = project.render;
     if (args.geometry != "project") {
         auto path = core::parseGeometryPath(args.geometry);
-        if (path) settings.geometry = *path;
+        if (path)
+            settings.geometry = *path;
     }
     render::OffscreenRequest request;
     request.width = args.width > 0 ? args.width : settings.width;

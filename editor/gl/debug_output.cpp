@@ -8,7 +8,8 @@ namespace grass::gl {
 
 static void GLAPIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei,
                                       const GLchar* message, const void*) {
-    if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
+    if (severity == GL_DEBUG_SEVERITY_NOTIFICATION)
+        return;
     const char* kind = type == GL_DEBUG_TYPE_ERROR ? "error" : "warning";
     std::fprintf(stderr, "GL %s: %s\n", kind, message);
 }

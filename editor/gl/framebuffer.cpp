@@ -33,12 +33,15 @@ Framebuffer::Framebuffer(int width, int height, int samples)
     mFramebuffer = makeFramebuffer();
     mColor = makeRenderbuffer(GL_RGBA8, width, height, mSamples);
     mDepth = makeRenderbuffer(GL_DEPTH_COMPONENT32F, width, height, mSamples);
-    glNamedFramebufferRenderbuffer(mFramebuffer.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, mColor.id());
-    glNamedFramebufferRenderbuffer(mFramebuffer.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, mDepth.id());
+    glNamedFramebufferRenderbuffer(mFramebuffer.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                   mColor.id());
+    glNamedFramebufferRenderbuffer(mFramebuffer.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                   mDepth.id());
     mFramebuffer.setLabel("scene framebuffer");
     mResolve = makeFramebuffer();
     mResolveColor = makeRenderbuffer(GL_RGBA8, width, height, 1);
-    glNamedFramebufferRenderbuffer(mResolve.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, mResolveColor.id());
+    glNamedFramebufferRenderbuffer(mResolve.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                   mResolveColor.id());
     mResolve.setLabel("resolve framebuffer");
 }
 
@@ -79,7 +82,8 @@ Rgba8Image readFramebuffer(GLuint framebuffer, int width, int height) {
     image.pixels.resize(bottomUp.size());
     for (int y = 0; y < height; ++y)
         std::memcpy(image.pixels.data() + static_cast<std::size_t>(y) * rowBytes,
-                    bottomUp.data() + static_cast<std::size_t>(height - 1 - y) * rowBytes, rowBytes);
+                    bottomUp.data() + static_cast<std::size_t>(height - 1 - y) * rowBytes,
+                    rowBytes);
     return image;
 }
 

@@ -16,7 +16,8 @@ public:
     GlHandle() = default;
     explicit GlHandle(GLuint id) : mId(id) {}
     ~GlHandle() {
-        if (mId != 0) Traits::destroy(mId);
+        if (mId != 0)
+            Traits::destroy(mId);
     }
     GlHandle(GlHandle&& other) noexcept : mId(std::exchange(other.mId, 0)) {}
     GlHandle& operator=(GlHandle&& other) noexcept {

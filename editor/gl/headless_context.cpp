@@ -13,21 +13,30 @@ namespace {
 
 std::string eglErrorName(EGLint code) {
     switch (code) {
-        case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-        case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-        case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-        case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-        case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-        case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-        default: return "EGL error " + std::to_string(code);
+        case EGL_NOT_INITIALIZED:
+            return "EGL_NOT_INITIALIZED";
+        case EGL_BAD_ALLOC:
+            return "EGL_BAD_ALLOC";
+        case EGL_BAD_MATCH:
+            return "EGL_BAD_MATCH";
+        case EGL_BAD_DISPLAY:
+            return "EGL_BAD_DISPLAY";
+        case EGL_BAD_CONFIG:
+            return "EGL_BAD_CONFIG";
+        case EGL_BAD_ATTRIBUTE:
+            return "EGL_BAD_ATTRIBUTE";
+        default:
+            return "EGL error " + std::to_string(code);
     }
 }
 
 bool hasExtension(const char* list, const char* name) {
-    if (!list) return false;
+    if (!list)
+        return false;
     const std::size_t n = std::strlen(name);
     for (const char* p = std::strstr(list, name); p; p = std::strstr(p + 1, name))
-        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
+            return true;
     return false;
 }
 
@@ -36,8 +45,9 @@ bool hasExtension(const char* list, const char* name) {
 Result<std::unique_ptr<HeadlessContext>> HeadlessContext::create(bool debugOutput) {
     const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
-        return makeError("EGL", "EGL_MESA_platform_surfaceless is not available: install Mesa's "
-                                "EGL (apt-get install libegl1 libegl-mesa0 libgl1-mesa-dri)");
+        return makeError("EGL",
+                         "EGL_MESA_platform_surfaceless is not available: install Mesa's "
+                         "EGL (apt-get install libegl1 libegl-mesa0 libgl1-mesa-dri)");
     EGLDisplay display =
         eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     EGLint major = 0, minor = 0;
@@ -49,10 +59,14 @@ Result<std::unique_ptr<HeadlessContext>> HeadlessContext::create(bool debugOutpu
         eglTerminate(display);
         return makeError("EGL", "desktop OpenGL is not available through EGL");
     }
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
-                                 EGL_CONTEXT_MINOR_VERSION, 5,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                 EGL_CONTEXT_OPENGL_DEBUG, debugOutput ? EGL_TRUE : EGL_FALSE,
+    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                 4,
+                                 EGL_CONTEXT_MINOR_VERSION,
+                                 5,
+                                 EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                 EGL_CONTEXT_OPENGL_DEBUG,
+                                 debugOutput ? EGL_TRUE : EGL_FALSE,
                                  EGL_NONE};
     EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (context == EGL_NO_CONTEXT) {
@@ -69,7 +83,8 @@ Result<std::unique_ptr<HeadlessContext>> HeadlessContext::create(bool debugOutpu
     std::unique_ptr<HeadlessContext> result(new HeadlessContext());
     result->mDisplay = display;
     result->mContext = context;
-    if (debugOutput) enableDebugOutput();
+    if (debugOutput)
+        enableDebugOutput();
     return result;
 }
 
@@ -88,9 +103,11 @@ std::string rendererDescription() {
 
 bool isSoftwareRenderer() {
     const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (!renderer) return true;
+    if (!renderer)
+        return true;
     for (const char* name : {"llvmpipe", "softpipe", "SwiftShader", "lavapipe", "Software"})
-        if (std::strstr(renderer, name)) return true;
+        if (std::strstr(renderer, name))
+            return true;
     return false;
 }
 

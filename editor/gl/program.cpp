@@ -14,12 +14,14 @@ namespace grass::gl {
 namespace fs = std::filesystem;
 
 fs::path shaderDirectory() {
-    if (const char* env = std::getenv("GRASS_SHADER_DIR")) return env;
+    if (const char* env = std::getenv("GRASS_SHADER_DIR"))
+        return env;
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (!ec) {
         const fs::path installed = exe.parent_path().parent_path() / "share/grass/shaders";
-        if (fs::exists(installed / "include", ec)) return installed;
+        if (fs::exists(installed / "include", ec))
+            return installed;
     }
     return fs::path(GRASS_SOURCE_DIR) / "shaders";
 }
@@ -31,11 +33,14 @@ struct Expander {
     ExpandedSource out;
     std::vector<fs::path> stack;
 
-    Result<void> expand(const fs::path& file, bool isRoot, const std::vector<std::string>& defines) {
+    Result<void> expand(const fs::path& file, bool isRoot,
+                        const std::vector<std::string>& defines) {
         for (const auto& open : stack)
-            if (open == file) return makeError(file.string(), "#include cycle");
+            if (open == file)
+                return makeError(file.string(), "#include cycle");
         auto text = readFile(file);
-        if (!text) return text.error();
+        if (!text)
+            return text.error();
         stack.push_back(file);
         const int index = static_cast<int>(out.files.size());
         out.files.push_back(file);
@@ -43,7 +48,8 @@ struct Expander {
         std::string line;
         int lineNo = 0;
         static const std::regex includeRe(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
-        if (!isRoot) out.text += "#line 1 " + std::to_string(index) + "\n";
+        if (!isRoot)
+            out.text += "#line 1 " + std::to_string(index) + "\n";
         while (std::getline(lines, line)) {
             ++lineNo;
             std::smatch match;
@@ -55,14 +61,18 @@ struct Expander {
                 if (!fs::exists(target, ec))
                     return makeError(file.string() + ":" + std::to_string(lineNo),
                                      "cannot find include \"" + match[1].str() + "\"");
-                if (auto r = expand(target, false, {}); !r) return r;
-                out.text += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
+                if (auto r = expand(target, false, {}); !r)
+                    return r;
+                out.text +=
+                    "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
                 continue;
             }
             out.text += line + "\n";
             if (isRoot && line.rfind("#version", 0) == 0) {
-                for (const auto& define : defines) out.text += "#define " + define + "\n";
-                out.text += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
+                for (const auto& define : defines)
+                    out.text += "#define " + define + "\n";
+                out.text +=
+                    "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
             }
         }
         stack.pop_back();
@@ -75,7 +85,8 @@ struct Expander {
 Result<ExpandedSource> expandShaderSource(const fs::path& shaderDir, const std::string& file,
                                           const std::vector<std::string>& defines) {
     Expander expander{shaderDir, {}, {}};
-    if (auto r = expander.expand(shaderDir / file, true, defines); !r) return r.error();
+    if (auto r = expander.expand(shaderDir / file, true, defines); !r)
+        return r.error();
     return std::move(expander.out);
 }
 
@@ -92,10 +103,12 @@ std::string mapShaderLog(const std::string& log, const std::vector<fs::path>& fi
             return i < files.size() ? files[i].string() : "source " + index;
         };
         if (std::regex_search(line, match, mesaRe) && match.position(0) == 0)
-            line = name(match[1]) + ":" + match[2].str() + ":" + match[3].str() + match.suffix().str();
+            line =
+                name(match[1]) + ":" + match[2].str() + ":" + match[3].str() + match.suffix().str();
         else if (std::regex_search(line, match, nvidiaRe))
             line = name(match[1]) + ":" + match[2].str() + match.suffix().str();
-        if (!line.empty()) result += line + "\n";
+        if (!line.empty())
+            result += line + "\n";
     }
     return result;
 }
@@ -111,7 +124,8 @@ static std::string infoLog(GLuint object, bool isProgram) {
         glGetProgramInfoLog(object, length, nullptr, log.data());
     else
         glGetShaderInfoLog(object, length, nullptr, log.data());
-    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+    while (!log.empty() && (log.back() == '\0' || log.back() == '\n'))
+        log.pop_back();
     return log;
 }
 
@@ -123,7 +137,8 @@ Result<Program> Program::load(std::initializer_list<ShaderStage> stages, std::st
     std::vector<ShaderHandle> shaders;
     for (const auto& stage : stages) {
         auto source = expandShaderSource(dir, stage.file, defines);
-        if (!source) return source.error();
+        if (!source)
+            return source.error();
         ShaderHandle shader(glCreateShader(stage.stage));
         const char* text = source->text.c_str();
         glShaderSource(shader.id(), 1, &text, nullptr);
@@ -131,8 +146,9 @@ Result<Program> Program::load(std::initializer_list<ShaderStage> stages, std::st
         GLint ok = GL_FALSE;
         glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
         if (ok != GL_TRUE)
-            return makeError((dir / stage.file).string(),
-                             "compile failed:\n" + mapShaderLog(infoLog(shader.id(), false), source->files));
+            return makeError(
+                (dir / stage.file).string(),
+                "compile failed:\n" + mapShaderLog(infoLog(shader.id(), false), source->files));
         glAttachShader(program.id(), shader.id());
         shaders.push_back(std::move(shader));
     }
@@ -141,14 +157,21 @@ Result<Program> Program::load(std::initializer_list<ShaderStage> stages, std::st
     glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
     if (linked != GL_TRUE)
         return makeError(std::string(label), "link failed:\n" + infoLog(program.id(), true));
-    for (const auto& shader : shaders) glDetachShader(program.id(), shader.id());
+    for (const auto& shader : shaders)
+        glDetachShader(program.id(), shader.id());
     program.mHandle.setLabel(label);
     return program;
 }
 
-void Program::set(const char* name, float value) const { glProgramUniform1f(id(), location(name), value); }
-void Program::set(const char* name, int value) const { glProgramUniform1i(id(), location(name), value); }
-void Program::set(const char* name, unsigned value) const { glProgramUniform1ui(id(), location(name), value); }
+void Program::set(const char* name, float value) const {
+    glProgramUniform1f(id(), location(name), value);
+}
+void Program::set(const char* name, int value) const {
+    glProgramUniform1i(id(), location(name), value);
+}
+void Program::set(const char* name, unsigned value) const {
+    glProgramUniform1ui(id(), location(name), value);
+}
 void Program::set(const char* name, glm::vec2 value) const {
     glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(value));
 }

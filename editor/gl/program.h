@@ -17,8 +17,8 @@
 namespace grass::gl {
 
 struct ShaderStage {
-    GLenum stage;                 // GL_VERTEX_SHADER, GL_TESS_CONTROL_SHADER, ...
-    std::string file;             // relative to the shader folder, e.g. "blade_strip.vert"
+    GLenum stage;      // GL_VERTEX_SHADER, GL_TESS_CONTROL_SHADER, ...
+    std::string file;  // relative to the shader folder, e.g. "blade_strip.vert"
 };
 
 // Preprocessed source: the text handed to GL and the file behind each source-string number.

@@ -8,7 +8,9 @@ GpuTimer::GpuTimer() {
     mQuery = QueryHandle(id);
 }
 
-void GpuTimer::begin() { glBeginQuery(GL_TIME_ELAPSED, mQuery.id()); }
+void GpuTimer::begin() {
+    glBeginQuery(GL_TIME_ELAPSED, mQuery.id());
+}
 
 void GpuTimer::end() {
     glEndQuery(GL_TIME_ELAPSED);
@@ -16,7 +18,8 @@ void GpuTimer::end() {
 }
 
 double GpuTimer::milliseconds() const {
-    if (!mUsed) return 0.0;
+    if (!mUsed)
+        return 0.0;
     GLuint64 ns = 0;
     glGetQueryObjectui64v(mQuery.id(), GL_QUERY_RESULT, &ns);
     return static_cast<double>(ns) * 1e-6;

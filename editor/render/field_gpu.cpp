@@ -15,7 +15,8 @@ FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
 }
 
 void FieldGpu::drawStrips(int segments) {
-    if (mBladeCount == 0) return;
+    if (mBladeCount == 0)
+        return;
     if (segments != mStripSegments) {
         // The vertex count per instance follows the segment count; the cull pass (issue 5) will
         // write the instance count, this side only the shape of the strip.
@@ -30,7 +31,8 @@ void FieldGpu::drawStrips(int segments) {
 }
 
 void FieldGpu::drawTessellated() const {
-    if (mBladeCount == 0) return;
+    if (mBladeCount == 0)
+        return;
     glBindVertexArray(mEmptyVertexArray.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mBlades.id());
     glPatchParameteri(GL_PATCH_VERTICES, 1);

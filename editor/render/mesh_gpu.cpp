@@ -43,7 +43,8 @@ MeshGpu::MeshGpu(const core::SurfaceMesh& mesh) {
 }
 
 void MeshGpu::draw() const {
-    if (mIndexCount == 0) return;
+    if (mIndexCount == 0)
+        return;
     glBindVertexArray(mVertexArray.id());
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mIndexCount), GL_UNSIGNED_INT, nullptr);
 }

@@ -6,8 +6,12 @@ RenderOptions renderOptionsFor(const core::RenderSettings& settings, const core:
                                bool softwareRenderer) {
     RenderOptions options;
     switch (settings.geometry) {
-        case core::GeometryPath::Tessellation: options.geometry = GeometryPath::Tessellation; break;
-        case core::GeometryPath::Strips: options.geometry = GeometryPath::Strips; break;
+        case core::GeometryPath::Tessellation:
+            options.geometry = GeometryPath::Tessellation;
+            break;
+        case core::GeometryPath::Strips:
+            options.geometry = GeometryPath::Strips;
+            break;
         case core::GeometryPath::Auto:
             options.geometry = softwareRenderer ? GeometryPath::Strips : GeometryPath::Tessellation;
             break;
@@ -27,24 +31,29 @@ const char* geometryPathLabel(GeometryPath path) {
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene) {
     std::unique_ptr<SceneRenderer> renderer(new SceneRenderer());
     renderer->mScene = &scene;
-    auto mesh = gl::Program::load({{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}},
-                                  "mesh");
-    if (!mesh) return mesh.error();
+    auto mesh = gl::Program::load(
+        {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}}, "mesh");
+    if (!mesh)
+        return mesh.error();
     auto strips = gl::Program::load(
-        {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}}, "blade strips");
-    if (!strips) return strips.error();
+        {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}},
+        "blade strips");
+    if (!strips)
+        return strips.error();
     auto tess = gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
                                    {GL_TESS_CONTROL_SHADER, "blade.tesc"},
                                    {GL_TESS_EVALUATION_SHADER, "blade.tese"},
                                    {GL_FRAGMENT_SHADER, "blade.frag"}},
                                   "blade tessellation");
-    if (!tess) return tess.error();
+    if (!tess)
+        return tess.error();
     renderer->mMeshProgram = std::move(*mesh);
     renderer->mStripProgram = std::move(*strips);
     renderer->mTessProgram = std::move(*tess);
     renderer->mMesh = std::make_unique<MeshGpu>(scene.mesh);
     renderer->mFields.reserve(scene.layers.size());
-    for (const auto& layer : scene.layers) renderer->mFields.emplace_back(layer);
+    for (const auto& layer : scene.layers)
+        renderer->mFields.emplace_back(layer);
     return renderer;
 }
 

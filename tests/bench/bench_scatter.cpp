@@ -54,7 +54,8 @@ void BM_BuildPatches(benchmark::State& state) {
         PatchedBlades patched = buildPatches(scattered.blades, 256);
         benchmark::DoNotOptimize(patched.blades.data());
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(scattered.blades.size()));
+    state.SetItemsProcessed(state.iterations() *
+                            static_cast<std::int64_t>(scattered.blades.size()));
 }
 BENCHMARK(BM_BuildPatches)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 

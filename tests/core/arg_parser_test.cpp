@@ -26,8 +26,10 @@ ArgParser makeParser(Parsed& p) {
 TEST(ArgParser, ParsesOptionsInBothSpellings) {
     Parsed p;
     ArgParser parser = makeParser(p);
-    ASSERT_TRUE(parser.parse({"meadow", "--width", "640", "--out=x.png", "--json", "--seed", "42",
-                              "--geometry", "tess"}).ok());
+    ASSERT_TRUE(parser
+                    .parse({"meadow", "--width", "640", "--out=x.png", "--json", "--seed", "42",
+                            "--geometry", "tess"})
+                    .ok());
     EXPECT_EQ(p.project, "meadow");
     EXPECT_EQ(p.width, 640);
     EXPECT_EQ(p.out, "x.png");
@@ -45,7 +47,8 @@ TEST(ArgParser, BadIntegersNameTheOptionAndTheRange) {
         auto result = parser.parse({"meadow", "--width", bad});
         ASSERT_FALSE(result.ok()) << bad;
         EXPECT_EQ(result.error().path, "--width");
-        EXPECT_NE(result.error().message.find("1 to 16384"), std::string::npos) << result.error().message;
+        EXPECT_NE(result.error().message.find("1 to 16384"), std::string::npos)
+            << result.error().message;
         EXPECT_EQ(p.width, 1280) << "a rejected value must not be stored";
     }
 }
@@ -67,7 +70,8 @@ TEST(ArgParser, HelpListsEveryOption) {
     ASSERT_TRUE(parser.parse({"--help"}).ok());
     EXPECT_TRUE(parser.helpRequested());
     const std::string help = parser.help();
-    for (const char* name : {"--width", "--out", "--json", "--seed", "--geometry", "project", "--help"})
+    for (const char* name :
+         {"--width", "--out", "--json", "--seed", "--geometry", "project", "--help"})
         EXPECT_NE(help.find(name), std::string::npos) << name;
 }
 

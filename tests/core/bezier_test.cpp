@@ -32,7 +32,8 @@ TEST(Bezier, TangentMatchesFiniteDifference) {
     const glm::vec3 p0(0, 0, 0), p1(0.2f, 1, 0.1f), p2(1, 1.3f, -0.4f);
     for (float v : {0.1f, 0.5f, 0.9f}) {
         const float e = 1e-3f;
-        const glm::vec3 fd = (bezierPoint(p0, p1, p2, v + e) - bezierPoint(p0, p1, p2, v - e)) / (2 * e);
+        const glm::vec3 fd =
+            (bezierPoint(p0, p1, p2, v + e) - bezierPoint(p0, p1, p2, v - e)) / (2 * e);
         const glm::vec3 t = bezierTangent(p0, p1, p2, v);
         EXPECT_NEAR(glm::length(fd - t), 0.0f, 1e-3f) << "v=" << v;
     }
@@ -48,10 +49,13 @@ TEST(Bezier, ArcLengthOfStraightLineIsDistance) {
 TEST(Bezier, ArcLengthMatchesPolylineOnRandomCurves) {
     for (std::uint64_t seed = 0; seed < 200; ++seed) {
         Rng rng(seed);
-        auto rnd = [&] { return glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)); };
+        auto rnd = [&] {
+            return glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+        };
         const glm::vec3 p0 = rnd(), p1 = rnd(), p2 = rnd();
         const double reference = polylineLength(p0, p1, p2, 20000);
-        EXPECT_NEAR(bezierArcLength(p0, p1, p2), reference, 1e-4 * reference + 1e-6) << "seed " << seed;
+        EXPECT_NEAR(bezierArcLength(p0, p1, p2), reference, 1e-4 * reference + 1e-6)
+            << "seed " << seed;
     }
 }
 

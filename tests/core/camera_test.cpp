@@ -26,7 +26,8 @@ TEST(Camera, FramedBoundsAreInsideTheView) {
     const Bounds bounds{{-3, -1, -2}, {5, 4, 7}};
     const OrbitCamera camera = frameBounds(bounds, 0.785f);
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p(corner & 1 ? bounds.max.x : bounds.min.x, corner & 2 ? bounds.max.y : bounds.min.y,
+        const glm::vec3 p(corner & 1 ? bounds.max.x : bounds.min.x,
+                          corner & 2 ? bounds.max.y : bounds.min.y,
                           corner & 4 ? bounds.max.z : bounds.min.z);
         const glm::vec3 ndc = toNdc(camera, p, 1.0f);
         EXPECT_LE(std::abs(ndc.x), 1.0f) << corner;
@@ -90,7 +91,8 @@ TEST(Camera, ClosedObjectKeepsTheThreeQuarterView) {
     // A tetrahedron: face normals sum to zero.
     const glm::vec3 p[4] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
     std::uint32_t v[4];
-    for (int i = 0; i < 4; ++i) v[i] = builder.addVertex(p[i], {}, {});
+    for (int i = 0; i < 4; ++i)
+        v[i] = builder.addVertex(p[i], {}, {});
     builder.addTriangle(v[0], v[1], v[2]);
     builder.addTriangle(v[0], v[3], v[1]);
     builder.addTriangle(v[0], v[2], v[3]);

@@ -18,7 +18,8 @@ TEST(SurfaceMesh, NonManifoldFacesKeepTheirGeometry) {
     builder.addTriangle(b, a, d);
     builder.addTriangle(a, b, e);
     // Many refused faces force OpenMesh to grow its arrays while copies are made.
-    for (int i = 0; i < 200; ++i) builder.addTriangle(a, b, e);
+    for (int i = 0; i < 200; ++i)
+        builder.addTriangle(a, b, e);
     SurfaceMesh mesh = builder.take();
     EXPECT_EQ(mesh.n_faces(), 203u);
     EXPECT_GE(builder.duplicatedForManifold(), 201u);

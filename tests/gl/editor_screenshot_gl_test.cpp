@@ -25,11 +25,13 @@ TEST_F(EditorScreenshotTest, WindowUnderXvfbShowsWhatHeadlessRenderShows) {
   "render": {"width": 320, "height": 240, "geometry": "strips", "msaa": 4}
 })";
     const std::string shot = (dir / "window.png").string();
-    const std::string command = "xvfb-run -a -s '-screen 0 640x480x24' " + std::string(GRASS_EDITOR_EXE) +
-                                " " + dir.string() + " --screenshot " + shot + " --frames 2 > " +
+    const std::string command = "xvfb-run -a -s '-screen 0 640x480x24' " +
+                                std::string(GRASS_EDITOR_EXE) + " " + dir.string() +
+                                " --screenshot " + shot + " --frames 2 > " +
                                 (dir / "log.txt").string() + " 2>&1";
     const int status = std::system(command.c_str());
-    ASSERT_EQ(status, 0) << command << "\n(see " << (dir / "log.txt") << "; needs the xvfb package)";
+    ASSERT_EQ(status, 0) << command << "\n(see " << (dir / "log.txt")
+                         << "; needs the xvfb package)";
     auto window = readRgba8Image(shot);
     ASSERT_TRUE(window.ok()) << window.error().str();
     ASSERT_EQ(window->width, 320);
@@ -44,7 +46,8 @@ TEST_F(EditorScreenshotTest, WindowUnderXvfbShowsWhatHeadlessRenderShows) {
     request.height = 240;
     request.frames = 1;
     request.options = render::renderOptionsFor(loaded->project.render, loaded->project.sun, true);
-    auto headless = render::renderOffscreen(*scene, *render::projectCamera(loaded->project, ""), request);
+    auto headless =
+        render::renderOffscreen(*scene, *render::projectCamera(loaded->project, ""), request);
     ASSERT_TRUE(headless.ok()) << headless.error().str();
 
     // Same scene, camera, renderer (llvmpipe under both GLX and EGL), so the pictures match

@@ -13,7 +13,8 @@ std::string& GlTest::contextError() {
 }
 
 void GlTest::SetUpTestSuite() {
-    if (context() || !contextError().empty()) return;
+    if (context() || !contextError().empty())
+        return;
     auto created = gl::HeadlessContext::create(/*debugOutput=*/true);
     if (created)
         context() = std::move(*created);
@@ -32,7 +33,8 @@ double grassPixelShare(const std::vector<std::uint8_t>& rgba) {
         const int r = rgba[4 * i], g = rgba[4 * i + 1], b = rgba[4 * i + 2];
         // Blades are shaded green from dark roots to light tips; sky is blue-dominant and the
         // soil red-dominant, so "green exceeds both by 10 %" separates them with margin.
-        if (g * 10 > r * 11 && g * 10 > b * 11) ++grass;
+        if (g * 10 > r * 11 && g * 10 > b * 11)
+            ++grass;
     }
     return pixels ? static_cast<double>(grass) / static_cast<double>(pixels) : 0.0;
 }

@@ -34,7 +34,8 @@ TEST(ShaderSource, MissingIncludeNamesFileAndLine) {
     writeText(dir / "main.vert", "#version 450 core\n\n#include \"nope.glsl\"\n");
     auto expanded = gl::expandShaderSource(dir, "main.vert", {});
     ASSERT_FALSE(expanded.ok());
-    EXPECT_NE(expanded.error().str().find("main.vert:3"), std::string::npos) << expanded.error().str();
+    EXPECT_NE(expanded.error().str().find("main.vert:3"), std::string::npos)
+        << expanded.error().str();
     EXPECT_NE(expanded.error().str().find("nope.glsl"), std::string::npos);
 }
 
@@ -50,28 +51,38 @@ TEST(ShaderSource, IncludeCycleIsAnError) {
 
 TEST(ShaderLog, MesaAndNvidiaLocationsMapToFiles) {
     const std::vector<std::filesystem::path> files{"shaders/x.vert", "shaders/include/y.glsl"};
-    EXPECT_EQ(gl::mapShaderLog("1:7(3): error: bad\n", files), "shaders/include/y.glsl:7:3: error: bad\n");
-    EXPECT_EQ(gl::mapShaderLog("0(12) : error C0000: bad\n", files), "shaders/x.vert:12 : error C0000: bad\n");
+    EXPECT_EQ(gl::mapShaderLog("1:7(3): error: bad\n", files),
+              "shaders/include/y.glsl:7:3: error: bad\n");
+    EXPECT_EQ(gl::mapShaderLog("0(12) : error C0000: bad\n", files),
+              "shaders/x.vert:12 : error C0000: bad\n");
 }
 
 using ProgramTest = GlTest;
 
 TEST_F(ProgramTest, CompileErrorInAnIncludeNamesThatFileAndLine) {
     const auto dir = scratchDir("shader_compile_error");
-    writeText(dir / "include/broken.glsl", "// line 1\nfloat broken() { return undefined_name; }\n");
+    writeText(dir / "include/broken.glsl",
+              "// line 1\nfloat broken() { return undefined_name; }\n");
     writeText(dir / "broken.frag",
-              "#version 450 core\n#include \"broken.glsl\"\nout vec4 c;\nvoid main() { c = vec4(broken()); }\n");
+              "#version 450 core\n#include \"broken.glsl\"\nout vec4 c;\nvoid main() { c = "
+              "vec4(broken()); }\n");
     ::setenv("GRASS_SHADER_DIR", dir.c_str(), 1);
     auto program = gl::Program::load({{GL_FRAGMENT_SHADER, "broken.frag"}}, "broken");
     ::unsetenv("GRASS_SHADER_DIR");
     ASSERT_FALSE(program.ok());
     const std::string message = program.error().str();
-    EXPECT_NE(message.find((dir / "include/broken.glsl").string() + ":2"), std::string::npos) << message;
+    EXPECT_NE(message.find((dir / "include/broken.glsl").string() + ":2"), std::string::npos)
+        << message;
 }
 
 TEST_F(ProgramTest, EveryShippedProgramCompiles) {
-    EXPECT_TRUE(gl::Program::load({{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}}, "mesh").ok());
-    EXPECT_TRUE(gl::Program::load({{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}}, "strips").ok());
+    EXPECT_TRUE(gl::Program::load(
+                    {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}}, "mesh")
+                    .ok());
+    EXPECT_TRUE(
+        gl::Program::load(
+            {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}}, "strips")
+            .ok());
     auto tess = gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
                                    {GL_TESS_CONTROL_SHADER, "blade.tesc"},
                                    {GL_TESS_EVALUATION_SHADER, "blade.tese"},

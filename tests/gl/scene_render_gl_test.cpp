@@ -99,7 +99,8 @@ TEST_F(SceneRenderTest, TessellationAndStripsDrawTheSameField) {
             sum += d;
             worst = std::max(worst, d);
         }
-        if (worst <= 16) ++close;
+        if (worst <= 16)
+            ++close;
     }
     const double pixels = static_cast<double>(a.size() / 4);
     const double mean = sum / (pixels * 3.0);

@@ -4,7 +4,9 @@
 
 namespace grass::test {
 
-std::filesystem::path sourceDir() { return GRASS_SOURCE_DIR; }
+std::filesystem::path sourceDir() {
+    return GRASS_SOURCE_DIR;
+}
 
 std::filesystem::path scratchDir(const std::string& name) {
     const char* root = std::getenv("GRASS_TEST_TMP");
