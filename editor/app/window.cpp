@@ -1,5 +1,7 @@
 #include "window.h"
 
+#include "debug_output.h"
+
 #include <GLFW/glfw3.h>
 #include <epoxy/gl.h>
 
@@ -55,6 +57,7 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, gl::GL_DEBUG_BY_DEFAULT ? GLFW_TRUE : GLFW_FALSE);
     GLFWwindow* handle = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!handle) {
         const char* why = nullptr;
@@ -72,6 +75,7 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
     glfwSetKeyCallback(handle, WindowCallbacks::key);
     glfwMakeContextCurrent(handle);
     glfwSwapInterval(1);
+    if (gl::GL_DEBUG_BY_DEFAULT) gl::enableDebugOutput();
     glfwGetCursorPos(handle, &window->mInput.cursorX, &window->mInput.cursorY);
     return window;
 }

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "debug_output.h"
 #include "headless_context.h"
 #include "mesh/gltf_loader.h"
 #include "offscreen_render.h"
@@ -25,7 +26,7 @@ struct RenderArgs {
     std::string project, mesh, out, camera, geometry = "project", msaa = "project";
     int width = 0, height = 0, frames = 3, blades = 60000;
     std::uint64_t seed = 0;
-    bool glDebug = false;
+    bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
 };
 
 Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& parser,
