@@ -65,6 +65,9 @@ int main(int argc, char** argv) {
     }
     if (!screenshot.empty() && frames == 0)
         frames = 3;
+    if (!screenshot.empty())
+        if (auto writable = checkImageWritable(screenshot); !writable)
+            return fail(writable.error().str(), 2);
 
     auto loaded = core::loadProject(projectPath);
     if (!loaded)
