@@ -1,0 +1,117 @@
+#include "physics_gpu.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "util/assert.h"
+
+namespace grass::render {
+namespace {
+
+// GL guarantees at least 65535 work groups per dimension; larger fields take several dispatches.
+constexpr std::size_t LOCAL_SIZE = 32;
+constexpr std::size_t MAX_GROUPS = 65535;
+
+// Immutable storage cannot grow: a new buffer when the size changes, else an update in place.
+template <class T>
+void upload(gl::Buffer& buffer, const std::vector<T>& values, std::string_view label) {
+    const auto bytes = std::as_bytes(std::span<const T>(values));
+    if (buffer.id() == 0 || buffer.size() != bytes.size())
+        buffer = gl::Buffer(bytes, label);
+    else if (!bytes.empty())
+        buffer.update(bytes);
+}
+
+WindSourceGpu toGpu(const core::WindSource& source) {
+    WindSourceGpu out;
+    out.directionStrength = glm::vec4(source.direction, source.strength);
+    out.axisRadius = glm::vec4(source.axis, source.radiusM);
+    out.shape = glm::vec4(source.coreRadiusM, source.wavelengthM, source.speedMps, source.gust);
+    out.kind = glm::uvec4(static_cast<std::uint32_t>(source.kind), 0u, 0u, 0u);
+    return out;
+}
+
+}  // namespace
+
+Result<PhysicsGpu> PhysicsGpu::load() {
+    auto program = gl::Program::load({{GL_COMPUTE_SHADER, "physics.comp"}}, "blade physics");
+    if (!program)
+        return program.error();
+    PhysicsGpu physics;
+    physics.mProgram = std::move(*program);
+    return physics;
+}
+
+void PhysicsGpu::reset(std::span<const core::Blade> blades) {
+    mBladeCount = blades.size();
+    std::vector<glm::vec4> tips;
+    tips.reserve(blades.size());
+    for (const glm::vec3 tip : core::restTips(blades))
+        tips.emplace_back(tip, 0.0f);
+    upload(mRestTips, tips, "physics rest tips");
+    upload(mEta, std::vector<float>(blades.size(), 0.0f), "physics eta");
+}
+
+void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::PhysicsParams& params,
+                      const std::vector<core::WindSource>& wind,
+                      const std::vector<core::SphereCollider>& colliders, float timeS) {
+    GRASS_ASSERT(bladeCount == mBladeCount);
+    const std::uint32_t n = core::substepCount(params);
+    if (bladeCount == 0 || n == 0)
+        return;
+    // The same float expressions as core::stepBlade, so the times match bit for bit.
+    const float tau = params.dtS / static_cast<float>(n);
+    std::vector<glm::vec4> substeps;
+    std::vector<glm::vec4> windCentres;
+    std::vector<glm::vec4> spheres;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const float t = timeS + static_cast<float>(i) * tau;
+        substeps.emplace_back(t, tau, t + tau, 0.0f);
+        for (const core::WindSource& source : wind)
+            windCentres.emplace_back(core::samplePath(source.path, t, source.position), 0.0f);
+        for (const core::SphereCollider& sphere : colliders)
+            spheres.emplace_back(core::samplePath(sphere.path, t + tau, sphere.centre),
+                                 sphere.radiusM);
+    }
+    std::vector<WindSourceGpu> sources;
+    sources.reserve(wind.size());
+    for (const core::WindSource& source : wind)
+        sources.push_back(toGpu(source));
+    upload(mParams, std::vector<core::PhysicsParams>{params}, "physics params");
+    upload(mSubsteps, substeps, "physics substeps");
+    upload(mWindSources, sources, "physics wind sources");
+    upload(mWindCentres, windCentres, "physics wind centres");
+    upload(mColliders, spheres, "physics colliders");
+
+    mProgram.use();
+    mProgram.set("bladeCount", static_cast<unsigned>(bladeCount));
+    mProgram.set("substepCount", static_cast<unsigned>(n));
+    mProgram.set("windCount", static_cast<unsigned>(wind.size()));
+    mProgram.set("colliderCount", static_cast<unsigned>(colliders.size()));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bladeBuffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, mParams.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, mEta.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, mRestTips.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, mWindSources.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, mWindCentres.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, mColliders.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, mSubsteps.id());
+    for (std::size_t first = 0; first < bladeCount; first += LOCAL_SIZE * MAX_GROUPS) {
+        const std::size_t count = std::min(bladeCount - first, LOCAL_SIZE * MAX_GROUPS);
+        mProgram.set("firstBlade", static_cast<unsigned>(first));
+        glDispatchCompute(static_cast<GLuint>((count + LOCAL_SIZE - 1) / LOCAL_SIZE), 1, 1);
+    }
+    // Blades feed the draws (SSBO reads) and read-backs; η feeds the next step.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+std::vector<float> PhysicsGpu::readEta() const {
+    std::vector<float> out(mBladeCount);
+    if (mBladeCount == 0)
+        return out;
+    const std::vector<std::byte> bytes = mEta.read(0, mBladeCount * sizeof(float));
+    std::memcpy(out.data(), bytes.data(), bytes.size());
+    return out;
+}
+
+}  // namespace grass::render

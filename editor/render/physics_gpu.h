@@ -1,0 +1,58 @@
+// PhysicsGpu: the blade physics of core/physics/ run by shaders/physics.comp on a blade buffer
+// (SPEC §1 layout, SSBO 0), one invocation per blade. World space, metres, seconds.
+//
+// It owns the per-blade state the CPU reference passes alongside the blades (η and the rest tips
+// Iv2) and the per-step inputs. The shader runs every substep of a step in one dispatch; what
+// depends on time only (the substep count and times, wind-source and collider path positions) is
+// evaluated here with the CPU reference's own functions, per substep, exactly as stepBlade samples
+// them: wind at t = timeS + i·τ, colliders at t + τ.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "buffer.h"
+#include "physics/physics.h"
+#include "program.h"
+#include "util/result.h"
+
+namespace grass::render {
+
+// core::WindSource without its path, std430 (mirrored by WindSource in
+// shaders/include/physics.glsl).
+struct WindSourceGpu {
+    glm::vec4 directionStrength{0.0f};  // xyz direction, w strength
+    glm::vec4 axisRadius{0.0f};         // xyz axis, w radiusM
+    glm::vec4 shape{0.0f};              // coreRadiusM, wavelengthM, speedMps, gust
+    glm::uvec4 kind{0u};                // x: core::WindKind
+};
+static_assert(sizeof(WindSourceGpu) == 64, "WindSourceGpu must be four vec4 (std430)");
+
+class PhysicsGpu {
+public:
+    static Result<PhysicsGpu> load();
+
+    // Sets the rest tips Iv2 from `blades` (core::restTips) and η = 0, as a CPU simulation starts.
+    void reset(std::span<const core::Blade> blades);
+    // One step of params.dtS from timeS for bladeCount blades of bladeBuffer (the count given to
+    // reset). Ends with a barrier, so later draws and buffer reads see the new blades.
+    void step(GLuint bladeBuffer, std::size_t bladeCount, const core::PhysicsParams& params,
+              const std::vector<core::WindSource>& wind,
+              const std::vector<core::SphereCollider>& colliders, float timeS);
+    // η of every blade (a GPU read-back, for tests and tools).
+    std::vector<float> readEta() const;
+
+private:
+    gl::Program mProgram;
+    std::size_t mBladeCount = 0;
+    gl::Buffer mParams;
+    gl::Buffer mEta;
+    gl::Buffer mRestTips;
+    gl::Buffer mWindSources;
+    gl::Buffer mWindCentres;
+    gl::Buffer mColliders;
+    gl::Buffer mSubsteps;
+};
+
+}  // namespace grass::render
