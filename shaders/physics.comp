@@ -176,7 +176,7 @@ void stepBlade(inout Blade blade, inout float bladeEta, vec3 restTipIn) {
             }
         }
         // Exact solution over τ of dv2/dt = k·(Iv2 − v2) + F with F frozen.
-        float k = blade.upS.w * max(1.0 - bladeEta, 0.1);
+        float k = blade.upS.w * max(1.0 - bladeEta, params.crushedRecoveryFloor);
         float kTau = k * tau;
         float relax = kTau > 1e-6 ? -expm1(-kTau) : kTau;
         float phi = kTau > 1e-6 ? relax / k : tau;

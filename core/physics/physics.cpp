@@ -254,7 +254,7 @@ void stepBlade(Blade& blade, float& eta, glm::vec3 restTipIn, const PhysicsParam
         }
         // Exact solution over τ of dv2/dt = k·(Iv2 − v2) + F with F frozen:
         // v2 += (Iv2 − v2)·(1 − e^{−kτ}) + F·(1 − e^{−kτ})/k, and F·τ as k → 0.
-        const float k = blade.s() * std::max(1.0f - eta, 0.1f);
+        const float k = blade.s() * std::max(1.0f - eta, params.crushedRecoveryFloor);
         const float kTau = k * tau;
         const float relax = kTau > 1e-6f ? -std::expm1(-kTau) : kTau;
         const float phi = kTau > 1e-6f ? relax / k : tau;

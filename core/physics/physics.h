@@ -6,7 +6,7 @@
 // Integration (docs/physics.md): the step Δt is cut into n = min(ceil(Δt / maxSubstepS),
 // maxSubsteps) equal substeps. In each, the linear recovery term is integrated exactly together
 // with the (frozen) gravity and wind: v2 relaxes towards Iv2 + F/k by the factor exp(−k·τ), with
-// k = s·max(1 − η, 0.1); the displacement is then clamped to maxMovePerSubstep·h. Hence no NaN/Inf
+// k = s·max(1 − η, crushedRecoveryFloor); the displacement is then clamped to maxMovePerSubstep·h. Hence no NaN/Inf
 // and no overshoot for any Δt, stiffness or wind; validation keeps the length estimate at h.
 #pragma once
 
@@ -43,14 +43,17 @@ struct PhysicsParams {
     std::uint32_t maxSubsteps = 8;
     // gF = frontGravityScale · |gE| · f (the paper: 0.25).
     float frontGravityScale = 0.25f;
-    float pad0 = 0.0f;
+    // Recovery while crushed is s·max(1 − η, crushedRecoveryFloor) (the paper: 0.1). Stiff grass
+    // springs back from a crush within 1/(floor·s) seconds; a lower floor keeps trails visible.
+    float crushedRecoveryFloor = 0.1f;
 
     bool operator==(const PhysicsParams&) const = default;
 };
 
 static_assert(sizeof(PhysicsParams) == 48, "PhysicsParams must be three vec4 (std430)");
 static_assert(offsetof(PhysicsParams, dtS) == 16 && offsetof(PhysicsParams, gravityMode) == 32 &&
-                  offsetof(PhysicsParams, frontGravityScale) == 40,
+                  offsetof(PhysicsParams, frontGravityScale) == 40 &&
+                  offsetof(PhysicsParams, crushedRecoveryFloor) == 44,
               "PhysicsParams offsets must match shaders/physics.comp");
 
 // A sphere collider (SPEC §5); `path`, when non-empty, moves the centre over time.

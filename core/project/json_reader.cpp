@@ -501,4 +501,22 @@ void Object::readRange(std::string_view key, NumberRule rule, float& min, float&
         mReader.readRange(*node, pointerTo(key), rule, min, max);
 }
 
+double jsonFloat(float value) {
+    char buffer[32];
+    const auto printed = std::to_chars(buffer, buffer + sizeof buffer, value);
+    double shortest = 0.0;
+    const auto parsed = std::from_chars(buffer, printed.ptr, shortest);
+    if (printed.ec == std::errc{} && parsed.ec == std::errc{} &&
+        static_cast<float>(shortest) == value)
+        return shortest;
+    return static_cast<double>(value);
+}
+
+Json jsonVec3(glm::vec3 v) {
+    return Json::array({jsonFloat(v.x), jsonFloat(v.y), jsonFloat(v.z)});
+}
+Json jsonRange(float min, float max) {
+    return Json::array({jsonFloat(min), jsonFloat(max)});
+}
+
 }  // namespace grass::core::json

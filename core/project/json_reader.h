@@ -11,6 +11,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
@@ -126,5 +127,43 @@ std::string quote(std::string_view text);
 
 // Describes a JSON value for "(got ...)" in messages: `-3`, `inf`, `string "abc"`, `array`.
 std::string describeValue(const Json& node);
+
+// Writing: the double whose shortest text reads back as exactly `value` ("0.1", not
+// "0.10000000149011612"), so saved floats survive load → save → load bit for bit.
+double jsonFloat(float value);
+Json jsonVec3(glm::vec3 v);
+Json jsonRange(float min, float max);
+
+// Names must be unique within a list: the UI and the CLI select layers and cameras by name.
+template <class T>
+void checkUniqueNames(json::Reader& reader, const std::vector<T>& items, const std::string& list,
+                      std::string_view what) {
+    for (std::size_t i = 0; i < items.size() && reader.ok(); ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+            if (items[i].name != items[j].name)
+                continue;
+            reader.fail(list + "/" + std::to_string(i) + "/name",
+                        "duplicate " + std::string(what) + " name " + json::quote(items[i].name) +
+                            " (also " + list + "/" + std::to_string(j) + "/name)");
+            break;
+        }
+    }
+}
+
+template <class T, class ReadItem>
+void readList(json::Reader& reader, const Json& node, const std::string& pointer,
+              std::string_view what, std::vector<T>& out, ReadItem readItem) {
+    if (!node.is_array()) {
+        reader.fail(pointer, "must be an array of " + std::string(what) + " objects (got " +
+                                 json::describeValue(node) + ")");
+        return;
+    }
+    std::vector<T> items(node.size());
+    for (std::size_t i = 0; i < node.size(); ++i)
+        readItem(reader, node[i], json::childPointer(pointer, i), items[i]);
+    checkUniqueNames(reader, items, pointer, what);
+    if (reader.ok())
+        out = std::move(items);
+}
 
 }  // namespace grass::core::json

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "mesh/procedural.h"
+#include "physics/physics.h"
 #include "scatter/scatter.h"
 #include "util/result.h"
 
@@ -68,6 +69,31 @@ struct RenderSettings {
     bool operator==(const RenderSettings&) const = default;
 };
 
+// A wind source of SPEC §4 with the name the UI and the CLI select it by.
+struct WindDesc {
+    std::string name = "wind";
+    WindSource source;
+    bool operator==(const WindDesc&) const = default;
+};
+
+enum class ColliderShape { Sphere, Mesh };
+
+// A collider (SPEC §5): a sphere, or a glTF mesh packed into `sphereCount` spheres (cached next
+// to the project). `position` places the sphere centre or the mesh origin; `path`, when not
+// empty, moves it over time instead.
+struct ColliderDesc {
+    std::string name = "collider";
+    ColliderShape shape = ColliderShape::Sphere;
+    glm::vec3 position{0.0f};
+    float radiusM = 0.5f;                  // sphere
+    std::string file;                      // mesh: relative .gltf/.glb path
+    float scale = 1.0f;                    // mesh: uniform scale of the file's coordinates
+    std::uint32_t sphereCount = 32;        // mesh: spheres to pack it into
+    std::uint32_t packingResolution = 64;  // mesh: voxels along the longest side when packing
+    std::vector<PathKey> path;
+    bool operator==(const ColliderDesc&) const = default;
+};
+
 struct Project {
     std::string name = "untitled";
     std::uint64_t seed = 1;
@@ -76,6 +102,10 @@ struct Project {
     std::vector<CameraDesc> cameras{CameraDesc{}};
     SunDesc sun;
     RenderSettings render;
+    // Physics: gravity and the integration policy (dtS is the simulation step), wind, colliders.
+    PhysicsParams physics;
+    std::vector<WindDesc> wind;
+    std::vector<ColliderDesc> colliders;
     bool operator==(const Project&) const = default;
 };
 

@@ -9,18 +9,24 @@
 #include <charconv>
 #include <cmath>
 
-#include "project/json_reader.h"
+#include "project/project_json_parts.h"
 
 namespace grass::core {
 
 namespace {
 
+using json::checkAssetPath;
 using json::Json;
+using json::jsonFloat;
+using json::jsonRange;
+using json::jsonVec3;
+using json::readList;
 
 constexpr std::string_view FORMAT_NAME = "grass-project";
 
-constexpr std::array<std::string_view, 9> TOP_KEYS{"format", "version", "name", "seed",  "mesh",
-                                                   "layers", "cameras", "sun",  "render"};
+constexpr std::array<std::string_view, 12> TOP_KEYS{"format", "version", "name",    "seed",
+                                                    "mesh",   "layers",  "cameras", "sun",
+                                                    "render", "physics", "wind",    "colliders"};
 constexpr std::array<std::string_view, 8> MESH_KEYS{"file",       "procedural",  "size",
                                                     "minor_size", "hill_height", "hill_scale",
                                                     "resolution", "noise_seed"};
@@ -48,14 +54,6 @@ constexpr std::string_view RGB = "[r, g, b]";
 std::array<std::string_view, 3> geometryNames() {
     return {geometryPathName(GeometryPath::Auto), geometryPathName(GeometryPath::Tessellation),
             geometryPathName(GeometryPath::Strips)};
-}
-
-void checkAssetPath(json::Reader& reader, const std::string& pointer, const std::string& path) {
-    if (!reader.ok())
-        return;
-    const auto resolved = resolveAssetPath({}, path, pointer);
-    if (!resolved)
-        reader.fail(pointer, resolved.error().message);
 }
 
 void readMesh(json::Reader& reader, const Json& node, MeshSource& mesh) {
@@ -177,38 +175,6 @@ void readRender(json::Reader& reader, const Json& node, RenderSettings& render) 
     object.readVec3("ground_color", json::UNIT_INTERVAL, RGB, render.groundColor);
 }
 
-// Names must be unique within a list: the UI and the CLI select layers and cameras by name.
-template <class T>
-void checkUniqueNames(json::Reader& reader, const std::vector<T>& items, const std::string& list,
-                      std::string_view what) {
-    for (std::size_t i = 0; i < items.size() && reader.ok(); ++i) {
-        for (std::size_t j = 0; j < i; ++j) {
-            if (items[i].name != items[j].name)
-                continue;
-            reader.fail(list + "/" + std::to_string(i) + "/name",
-                        "duplicate " + std::string(what) + " name " + json::quote(items[i].name) +
-                            " (also " + list + "/" + std::to_string(j) + "/name)");
-            break;
-        }
-    }
-}
-
-template <class T, class ReadItem>
-void readList(json::Reader& reader, const Json& node, const std::string& pointer,
-              std::string_view what, std::vector<T>& out, ReadItem readItem) {
-    if (!node.is_array()) {
-        reader.fail(pointer, "must be an array of " + std::string(what) + " objects (got " +
-                                 json::describeValue(node) + ")");
-        return;
-    }
-    std::vector<T> items(node.size());
-    for (std::size_t i = 0; i < node.size(); ++i)
-        readItem(reader, node[i], json::childPointer(pointer, i), items[i]);
-    checkUniqueNames(reader, items, pointer, what);
-    if (reader.ok())
-        out = std::move(items);
-}
-
 void readHeader(json::Reader& reader, const Json& root) {
     // Format and version first: a file that is not a project (or is a newer one) should say
     // so, not list the keys this build does not know.
@@ -263,27 +229,13 @@ void readProject(json::Reader& reader, const Json& root, Project& project) {
         readSun(reader, *sun, project.sun);
     if (const Json* render = top.find("render"))
         readRender(reader, *render, project.render);
-}
-
-// The double whose shortest text reads back as exactly `value`: the shortest text of the float
-// ("0.1", not "0.10000000149011612") when it survives the reader's strtod-then-narrow, else
-// the float widened (always exact).
-double jsonFloat(float value) {
-    char buffer[32];
-    const auto printed = std::to_chars(buffer, buffer + sizeof buffer, value);
-    double shortest = 0.0;
-    const auto parsed = std::from_chars(buffer, printed.ptr, shortest);
-    if (printed.ec == std::errc{} && parsed.ec == std::errc{} &&
-        static_cast<float>(shortest) == value)
-        return shortest;
-    return static_cast<double>(value);
-}
-
-Json jsonVec3(glm::vec3 v) {
-    return Json::array({jsonFloat(v.x), jsonFloat(v.y), jsonFloat(v.z)});
-}
-Json jsonRange(float min, float max) {
-    return Json::array({jsonFloat(min), jsonFloat(max)});
+    if (const Json* physics = top.find("physics"))
+        json::readPhysics(reader, *physics, project.physics);
+    if (const Json* wind = top.find("wind"))
+        readList(reader, *wind, "/wind", "wind source", project.wind, json::readWind);
+    if (const Json* colliders = top.find("colliders"))
+        readList(reader, *colliders, "/colliders", "collider", project.colliders,
+                 json::readCollider);
 }
 
 Json meshJson(const MeshSource& mesh) {
@@ -382,6 +334,15 @@ void writeJson(std::string& out, const Json& value, std::size_t indent) {
 
 }  // namespace
 
+void json::checkAssetPath(json::Reader& reader, const std::string& pointer,
+                          const std::string& path) {
+    if (!reader.ok())
+        return;
+    const auto resolved = resolveAssetPath({}, path, pointer);
+    if (!resolved)
+        reader.fail(pointer, resolved.error().message);
+}
+
 std::string_view geometryPathName(GeometryPath path) {
     switch (path) {
         case GeometryPath::Auto:
@@ -432,6 +393,13 @@ std::string serializeProject(const Project& project) {
                                     {"color", jsonVec3(project.sun.color)},
                                     {"intensity", jsonFloat(project.sun.intensity)}});
     document["render"] = renderJson(project.render);
+    document["physics"] = json::physicsJson(project.physics);
+    document["wind"] = Json::array();
+    for (const WindDesc& wind : project.wind)
+        document["wind"].push_back(json::windJson(wind));
+    document["colliders"] = Json::array();
+    for (const ColliderDesc& collider : project.colliders)
+        document["colliders"].push_back(json::colliderJson(collider));
     std::string text;
     writeJson(text, document, 0);
     text += "\n";

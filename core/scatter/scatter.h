@@ -25,8 +25,8 @@ struct BladeRanges {
     float heightMax = 0.55f;
     float widthMin = 0.012f;  // metres, full blade width is 2w at the root (SPEC §7 c ± w·t1)
     float widthMax = 0.022f;
-    float stiffnessMin = 2.0f;
-    float stiffnessMax = 6.0f;
+    float stiffnessMin = 40.0f;
+    float stiffnessMax = 80.0f;
     bool operator==(const BladeRanges&) const = default;
 };
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 
 namespace grass {
 
@@ -32,6 +34,24 @@ void ArgParser::integer(const std::string& name, const std::string& help, int* o
              *out = static_cast<int>(parsed);
              return {};
          }});
+}
+
+void ArgParser::number(const std::string& name, const std::string& metavar, const std::string& help,
+                       double* out, double min, double max, const std::string& defaultText) {
+    char range[96];
+    std::snprintf(range, sizeof range, "a number from %g to %g", min, max);
+    mOptions.push_back({name, metavar, help + " (" + range + ", default " + defaultText + ")", true,
+                        [=, range = std::string(range)](const std::string& value) -> Result<void> {
+                            double parsed = 0.0;
+                            const char* end = value.data() + value.size();
+                            const auto [ptr, ec] = std::from_chars(value.data(), end, parsed);
+                            if (ec != std::errc() || ptr != end || value.empty() ||
+                                !std::isfinite(parsed) || parsed < min || parsed > max)
+                                return makeError(name,
+                                                 "expected " + range + ", got '" + value + "'");
+                            *out = parsed;
+                            return {};
+                        }});
 }
 
 void ArgParser::unsignedInteger(const std::string& name, const std::string& help,

@@ -19,6 +19,9 @@ public:
 
     void flag(const std::string& name, const std::string& help, bool* out);
     void integer(const std::string& name, const std::string& help, int* out, int min, int max);
+    // A finite number in [min, max]; `defaultText` is shown in --help ("the project's").
+    void number(const std::string& name, const std::string& metavar, const std::string& help,
+                double* out, double min, double max, const std::string& defaultText);
     void unsignedInteger(const std::string& name, const std::string& help, std::uint64_t* out);
     void text(const std::string& name, const std::string& metavar, const std::string& help,
               std::string* out);

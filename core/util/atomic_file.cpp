@@ -60,6 +60,17 @@ Result<void> writeFileAtomic(const fs::path& target, std::string_view bytes) {
     return commitTemporaryFile(temporary, target);
 }
 
+Result<void> checkFileWritable(const std::filesystem::path& target, std::string_view example) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(target, ec))
+        return makeError(target.string(),
+                         "is a folder: give a file name such as " + std::string(example));
+    if (target.has_parent_path() && !std::filesystem::is_directory(target.parent_path(), ec))
+        return makeError(target.string(),
+                         "the folder " + target.parent_path().string() + " does not exist");
+    return {};
+}
+
 Result<std::string> readFile(const fs::path& file) {
     std::error_code ec;
     if (!fs::exists(file, ec))

@@ -21,6 +21,10 @@ Result<void> writeFileAtomic(const std::filesystem::path& target, std::string_vi
 Result<void> commitTemporaryFile(const std::filesystem::path& temporary,
                                  const std::filesystem::path& target);
 
+// Fails early (before long work) when `target` cannot be a file to write: it is a folder or its
+// folder does not exist. `example` names a valid file in the message ("report.json").
+Result<void> checkFileWritable(const std::filesystem::path& target, std::string_view example);
+
 // Reads a whole file; the error names the file.
 Result<std::string> readFile(const std::filesystem::path& file);
 

@@ -18,12 +18,8 @@ static std::string oneLine(std::string text) {
 }
 
 Result<void> checkImageWritable(const fs::path& file) {
-    std::error_code ec;
-    if (fs::is_directory(file, ec))
-        return makeError(file.string(), "is a folder: give an image file name such as render.png");
-    if (file.has_parent_path() && !fs::is_directory(file.parent_path(), ec))
-        return makeError(file.string(),
-                         "the folder " + file.parent_path().string() + " does not exist");
+    if (auto writable = checkFileWritable(file, "render.png"); !writable)
+        return writable;
     if (!OIIO::ImageOutput::create(file.string()))
         return makeError(file.string(), "unknown image format \"" + file.extension().string() +
                                             "\" (use .png, .tif, .jpg or .exr)");

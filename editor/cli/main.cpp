@@ -14,6 +14,7 @@ grass grows, simulates and renders grass fields on any mesh.
 
 commands:
   render      render a project (or any glTF mesh) headless to an image
+  sim         run a project's physics headless and report its cost and health
   mesh-info   print vertex/triangle counts, area, bounds of a glTF file
 
 Run 'grass <command> --help' for the options of a command.
@@ -25,8 +26,8 @@ The editor window is 'grass-editor'.
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
-        grass::cli::printError("",
-                               "missing command: grass render|mesh-info ... (see grass --help)");
+        grass::cli::printError(
+            "", "missing command: grass render|sim|mesh-info ... (see grass --help)");
         return grass::cli::EXIT_USAGE;
     }
     if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
@@ -41,12 +42,14 @@ int main(int argc, char** argv) {
     args.erase(args.begin());
     if (command == "render")
         return grass::cli::runRender(args);
+    if (command == "sim")
+        return grass::cli::runSim(args);
     if (command == "mesh-info")
         return grass::cli::runMeshInfo(args);
     if (command.rfind("-", 0) == 0)
         grass::cli::printError("", command + ": unknown option (see grass --help)");
     else
-        grass::cli::printError(command,
-                               "unknown command (commands: render, mesh-info; see grass --help)");
+        grass::cli::printError(
+            command, "unknown command (commands: render, sim, mesh-info; see grass --help)");
     return grass::cli::EXIT_USAGE;
 }

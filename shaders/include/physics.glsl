@@ -16,7 +16,7 @@ struct PhysicsParams {
     uint gravityMode;
     uint maxSubsteps;
     float frontGravityScale;
-    float pad0;
+    float crushedRecoveryFloor;
 };
 
 // core::WindSource without its path (render::WindSourceGpu, 64 bytes): the centre of each

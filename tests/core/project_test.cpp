@@ -93,8 +93,9 @@ TEST(Project, DefaultsDocumentLoads) {
 
 TEST(Project, SerializedKeysFollowTheDocumentedOrder) {
     const std::string text = serializeProject(Project{});
-    const char* keys[] = {"\"format\"", "\"version\"", "\"name\"", "\"seed\"",  "\"mesh\"",
-                          "\"layers\"", "\"cameras\"", "\"sun\"",  "\"render\""};
+    const char* keys[] = {"\"format\"", "\"version\"", "\"name\"",    "\"seed\"",
+                          "\"mesh\"",   "\"layers\"",  "\"cameras\"", "\"sun\"",
+                          "\"render\"", "\"physics\"", "\"wind\"",    "\"colliders\""};
     std::size_t previous = 0;
     for (const char* key : keys) {
         const std::size_t at = text.find(key);
@@ -181,7 +182,7 @@ TEST(Project, UnknownKeySuggestsTheClosest) {
     expectError(document(R"("layers": [{"densty": 3}])"), "/layers/0/densty",
                 "unknown key (did you mean \"density\"?)");
     expectError(document(R"("rendr": {})"), "/rendr", "did you mean \"render\"?");
-    expectError(document(R"("wind": {})"), "/wind", "expected one of");
+    expectError(document(R"("weather": {})"), "/weather", "expected one of");
     // A key with a newline still gives one line: control characters print escaped.
     expectError(document(R"("na\nme": "x")"), R"(/na\nme)", "unknown key");
 }

@@ -1,0 +1,24 @@
+// Internal to core/project/: the parts of the project.json schema that live in their own files
+// (physics_json.cpp: physics, wind, colliders), called by project_json.cpp's reader and writer.
+#pragma once
+
+#include <string>
+
+#include "project/json_reader.h"
+#include "project/project.h"
+
+namespace grass::core::json {
+
+// Fails `pointer` when `path` is not a well-formed relative asset path (resolveAssetPath's rules).
+void checkAssetPath(Reader& reader, const std::string& pointer, const std::string& path);
+
+void readPhysics(Reader& reader, const Json& node, PhysicsParams& physics);
+void readWind(Reader& reader, const Json& node, const std::string& pointer, WindDesc& wind);
+void readCollider(Reader& reader, const Json& node, const std::string& pointer,
+                  ColliderDesc& collider);
+
+Json physicsJson(const PhysicsParams& physics);
+Json windJson(const WindDesc& wind);
+Json colliderJson(const ColliderDesc& collider);
+
+}  // namespace grass::core::json

@@ -1,0 +1,57 @@
+// What a project's physics becomes at run time (issue 4): the integration parameters, the wind
+// sources, and every collider as spheres — mesh colliders packed into spheres once and cached
+// next to the project (core/collider/packing_cache.h). Shared by `grass sim`, `grass render
+// --time` and the editor, so they simulate the same scene.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "physics/field_health.h"
+#include "physics/physics.h"
+#include "project/project.h"
+#include "scene/scene.h"
+
+namespace grass::core {
+
+struct ScenePhysics {
+    PhysicsParams params;
+    std::vector<WindSource> wind;
+    std::vector<SphereCollider> colliders;  // spheres and packed meshes, world space
+    std::vector<std::string> notes;         // what packing did (cache hits, measures)
+};
+
+// Reads mesh collider files and packs (or loads the cached packing of) each. Errors name the
+// mesh file or the project field.
+Result<ScenePhysics> buildScenePhysics(const LoadedProject& project);
+
+// The CPU state of a simulated scene: η and rest tips per layer, parallel to the layer's blades.
+class SceneSimulation {
+public:
+    // threadCount 0: hardware concurrency (core::stepPhysics).
+    SceneSimulation(Scene& scene, ScenePhysics physics, unsigned threadCount = 0);
+
+    // One step of params.dtS from timeS() on every layer.
+    void step();
+    float timeS() const { return mTimeS; }
+    std::size_t stepsDone() const { return mSteps; }
+    const ScenePhysics& physics() const { return mPhysics; }
+    FieldHealth health() const;
+
+    // For a GPU execution that took over: the state of layer i.
+    std::vector<float>& eta(std::size_t layer) { return mEta[layer]; }
+    const std::vector<glm::vec3>& restTips(std::size_t layer) const { return mRestTips[layer]; }
+    // Advances the clock without stepping (the GPU stepped instead).
+    void advanceClock();
+
+private:
+    Scene& mScene;
+    ScenePhysics mPhysics;
+    unsigned mThreadCount;
+    std::vector<std::vector<float>> mEta;
+    std::vector<std::vector<glm::vec3>> mRestTips;
+    float mTimeS = 0.0f;
+    std::size_t mSteps = 0;
+};
+
+}  // namespace grass::core

@@ -1,0 +1,29 @@
+// Runs a scene's physics for a span of simulated time on the CPU reference or the compute shader,
+// with a progress line on stderr: the shared loop of `grass sim` and `grass render --time`.
+#pragma once
+
+#include <string>
+
+#include "scene/scene_physics.h"
+#include "util/result.h"
+
+namespace grass::cli {
+
+enum class SimBackend { Cpu, Gpu };
+
+struct SimRun {
+    std::size_t steps = 0;
+    double wallMs = 0.0;  // all steps, a final glFinish included for the GPU
+    double msPerStep = 0.0;
+    core::FieldHealth health;
+};
+
+// The number of steps of dtS that simulate `seconds` (rounded to the nearest step).
+std::size_t stepsFor(double seconds, float dtS);
+
+// Steps `simulation` (and its scene, in place) for `seconds`. The GPU backend needs a current GL
+// context; it uploads the blades, steps there and reads blades and η back at the end.
+Result<SimRun> runSimulation(core::Scene& scene, core::SceneSimulation& simulation, double seconds,
+                             SimBackend backend, const std::string& command);
+
+}  // namespace grass::cli

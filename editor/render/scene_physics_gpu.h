@@ -1,0 +1,33 @@
+// The compute-shader execution of a whole scene's physics (one PhysicsGpu per grass layer, each
+// on its own blade buffer), for `grass sim --backend gpu` and `grass render --time`. The blades
+// go up once, every step runs on the GPU, and readBack brings blades and η down once at the end.
+#pragma once
+
+#include <vector>
+
+#include "buffer.h"
+#include "physics_gpu.h"
+#include "scene/scene_physics.h"
+
+namespace grass::render {
+
+class ScenePhysicsGpu {
+public:
+    // Uploads the blades of every layer of `scene` and loads the shader (needs a current context).
+    static Result<ScenePhysicsGpu> create(const core::Scene& scene);
+
+    // One step of physics.params.dtS from timeS on every layer (asynchronous: no glFinish).
+    void step(const core::ScenePhysics& physics, float timeS);
+    // Copies blades into `scene` and η into `simulation` (which must be the scene's).
+    void readBack(core::Scene& scene, core::SceneSimulation& simulation) const;
+
+private:
+    struct Layer {
+        gl::Buffer blades;
+        std::size_t bladeCount = 0;
+        PhysicsGpu physics;
+    };
+    std::vector<Layer> mLayers;
+};
+
+}  // namespace grass::render

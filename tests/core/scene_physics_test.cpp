@@ -1,0 +1,97 @@
+// A project's physics end to end on the CPU reference: a ball rolled through a field leaves a
+// trail of crushed blades behind it while the rest of the field stands (issue 4).
+#include "scene/scene_physics.h"
+
+#include <gtest/gtest.h>
+
+namespace grass::core {
+namespace {
+
+LoadedProject rollingBallProject() {
+    LoadedProject loaded;
+    Project& project = loaded.project;
+    project.mesh.procedural.shape = ProceduralShape::Plane;
+    project.mesh.procedural.size = 5.0f;
+    project.mesh.procedural.resolution = 4;
+    project.layers[0].scatter.density = 150.0f;
+    project.layers[0].scatter.clumpSpacing = 0.0f;
+    project.layers[0].scatter.blade.heightMin = 0.3f;
+    project.layers[0].scatter.blade.heightMax = 0.5f;
+    project.physics.etaDecayPerS = 0.1f;
+    project.physics.crushedRecoveryFloor = 0.02f;
+    ColliderDesc ball;
+    ball.name = "ball";
+    ball.radiusM = 1.0f;
+    // Across the field along x at z = 0, sunk 0.3 m into the ground, in 2 s.
+    ball.path = {{0.0f, {-3.0f, 0.7f, 0.0f}}, {2.0f, {3.0f, 0.7f, 0.0f}}};
+    project.colliders = {ball};
+    return loaded;
+}
+
+struct BandStats {
+    double tipHeight = 0.0;
+    std::size_t count = 0;
+    std::size_t withEta = 0;
+};
+
+TEST(ScenePhysics, RollingBallLeavesATrail) {
+    const LoadedProject loaded = rollingBallProject();
+    auto scene = buildScene(loaded);
+    ASSERT_TRUE(scene) << scene.error().str();
+    auto physics = buildScenePhysics(loaded);
+    ASSERT_TRUE(physics) << physics.error().str();
+    ASSERT_EQ(physics->colliders.size(), 1u);
+    SceneSimulation simulation(*scene, *physics, 2);
+    for (int step = 0; step < 150; ++step)  // 2.5 s: the ball has crossed and stopped outside
+        simulation.step();
+    EXPECT_NEAR(simulation.timeS(), 2.5f, 1e-5f);
+
+    BandStats trail, untouched;
+    const LayerField& layer = scene->layers[0];
+    for (std::size_t i = 0; i < layer.patched.blades.size(); ++i) {
+        const Blade& blade = layer.patched.blades[i];
+        if (blade.h() <= 0.0f || std::abs(blade.v0().x) > 1.5f)
+            continue;
+        const float z = std::abs(blade.v0().z);
+        // Inside the ball's footprint (ground circle radius √(1² − 0.7²) = 0.71 m) or far away.
+        BandStats* band = z < 0.4f ? &trail : z > 1.5f ? &untouched : nullptr;
+        if (!band)
+            continue;
+        band->tipHeight += (blade.v2().y - blade.v0().y) / blade.h();
+        band->count += 1;
+        band->withEta += simulation.eta(0)[i] > 0.0f ? 1 : 0;
+    }
+    ASSERT_GT(trail.count, 50u);
+    ASSERT_GT(untouched.count, 50u);
+    const double trailHeight = trail.tipHeight / static_cast<double>(trail.count);
+    const double untouchedHeight = untouched.tipHeight / static_cast<double>(untouched.count);
+    // Standing grass keeps most of its height (gravity droops it a little); the trail lies low.
+    EXPECT_GT(untouchedHeight, 0.7);
+    EXPECT_LT(trailHeight, 0.6 * untouchedHeight);
+    EXPECT_GT(trail.withEta, trail.count * 9 / 10);
+    EXPECT_EQ(untouched.withEta, 0u);
+    const FieldHealth health = simulation.health();
+    EXPECT_EQ(health.nonfinite, 0u);
+    EXPECT_EQ(health.belowGround, 0u);
+    EXPECT_LT(health.maxRelLengthError, 1e-4);
+    EXPECT_GT(health.crushedShare(), 0.05);
+}
+
+TEST(ScenePhysics, StillProjectStaysStill) {
+    LoadedProject loaded = rollingBallProject();
+    loaded.project.colliders.clear();
+    loaded.project.physics.gravity.w = 0.0f;
+    auto scene = buildScene(loaded);
+    ASSERT_TRUE(scene) << scene.error().str();
+    const std::vector<Blade> before = scene->layers[0].patched.blades;
+    auto physics = buildScenePhysics(loaded);
+    ASSERT_TRUE(physics) << physics.error().str();
+    SceneSimulation simulation(*scene, *physics, 1);
+    for (int step = 0; step < 10; ++step)
+        simulation.step();
+    EXPECT_EQ(scene->layers[0].patched.blades, before);
+    EXPECT_EQ(simulation.health().maxTipDisplacementM, 0.0);
+}
+
+}  // namespace
+}  // namespace grass::core
