@@ -52,7 +52,7 @@ set_tests_properties(cli.driver_self_test PROPERTIES LABELS cli TIMEOUT 60)
 
 # --- help and version ------------------------------------------------------------------------
 grass_cli_test(help OK --no-stderr
-    --stdout "^usage: grass <command>" --stdout "^  render " --stdout "^  mesh-info "
+    --stdout "^usage: grass <command>" --stdout "^  render " --stdout "^  sim " --stdout "^  mesh-info "
     -- ${GRASS_BIN} --help)
 grass_cli_test(version OK --no-stderr --stdout "^grass [0-9]+\\.[0-9]+\\.[0-9]+$"
     -- ${GRASS_BIN} --version)
@@ -116,6 +116,48 @@ grass_cli_test(render_out_folder_missing GL ERROR "no-such-folder"
 grass_cli_test(render_out_unknown_format GL ERROR "never.xyz"
     --absent ${GRASS_CLI_TMP}/never.xyz
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_TMP}/never.xyz --frames 1)
+
+# --- sim and render --time -------------------------------------------------------------------
+set(WINDY ${GRASS_CLI_PROJECTS}/windy)
+set(REPORT ${GRASS_CLI_TMP}/windy-report.json)
+grass_cli_test(sim_help OK --no-stderr
+    --stdout "^usage: grass sim" --stdout "^  --seconds S" --stdout "^  --backend"
+    --stdout "^  --report FILE" -- ${GRASS_BIN} sim --help)
+# 1 s at 0.02 s: 50 steps. The report carries every figure issue 4 names.
+grass_cli_test(sim_windy_cpu OK
+    --stdout "^simulated 1\\.000 s of windy: 50 steps"
+    --stdout "^  health .*nonfinite 0, below ground 0$"
+    --stdout "^  scene .*2 wind source\\(s\\), 1 collider sphere\\(s\\)$"
+    --file ${REPORT} "\"backend\": \"cpu\""
+    --file ${REPORT} "\"steps\": 50,"
+    --file ${REPORT} "\"blades\": [1-9][0-9]*,"
+    --file ${REPORT} "\"ms_per_step\": [0-9]"
+    --file ${REPORT} "\"max_rel_length_error\": [0-9]"
+    --file ${REPORT} "\"nonfinite\": 0,"
+    --file ${REPORT} "\"below_ground\": 0,"
+    --file ${REPORT} "\"mean_tip_displacement\": 0\\.[0-9]*[1-9]"
+    --file ${REPORT} "\"max_tip_displacement\": 0\\.[0-9]*[1-9]"
+    --file ${REPORT} "\"crushed_share\": 0\\.[0-9]*[1-9]"
+    -- ${GRASS_BIN} sim ${WINDY} --seconds 1 --report ${REPORT})
+grass_cli_test(sim_windy_gpu GL OK
+    --stdout "^simulated 1\\.000 s of windy: 100 steps of 0\\.01 s"
+    --stdout "^  backend +gpu \\(" --stdout "^  health .*nonfinite 0, below ground 0$"
+    -- ${GRASS_BIN} sim ${WINDY} --seconds 1 --dt 0.01 --backend gpu)
+grass_cli_test(render_time GL OK --png ${GRASS_CLI_TMP}/windy.png 64 48
+    --stdout "^simulated +1\\.000 s in 50 steps on the gpu" --stdout "^wrote .*windy\\.png"
+    -- ${GRASS_BIN} render ${WINDY} --time 1 --out ${GRASS_CLI_TMP}/windy.png --frames 1)
+grass_cli_test(sim_seconds_negative ERROR "--seconds" -- ${GRASS_BIN} sim ${WINDY} --seconds -1)
+grass_cli_test(sim_dt_zero ERROR "--dt" -- ${GRASS_BIN} sim ${WINDY} --dt 0)
+grass_cli_test(sim_dt_not_a_number ERROR "--dt" -- ${GRASS_BIN} sim ${WINDY} --dt fast)
+grass_cli_test(sim_backend_unknown ERROR "--backend" -- ${GRASS_BIN} sim ${WINDY} --backend tpu)
+grass_cli_test(sim_no_project ERROR "project" -- ${GRASS_BIN} sim)
+grass_cli_test(sim_report_folder_missing ERROR "no-such-folder"
+    --absent ${GRASS_CLI_TMP}/no-such-folder
+    -- ${GRASS_BIN} sim ${WINDY} --report ${GRASS_CLI_TMP}/no-such-folder/r.json)
+grass_cli_test(sim_bad_wind ERROR "/wind/0/kind" --also "vortex"
+    -- ${GRASS_BIN} sim ${GRASS_CLI_PROJECTS}/bad_wind)
+grass_cli_test(render_time_negative ERROR "--time" --absent ${GRASS_CLI_TMP}/never.png
+    -- ${GRASS_BIN} render ${WINDY} --time -2 --out ${GRASS_CLI_TMP}/never.png)
 
 # --- render: bad command lines (no GL needed: they fail before a context is made) -------------
 set(TINY ${GRASS_CLI_PROJECTS}/tiny)

@@ -8,13 +8,16 @@
 #   --no-stderr            stderr holds nothing but "note: " lines
 #   --png FILE W H         FILE is removed before the run; afterwards it must exist, be a PNG
 #                          (signature and IHDR chunk) and be W x H pixels
+#   --file FILE REGEX      FILE is removed before the run; afterwards some line of it matches
+#                          REGEX (grep -E); repeatable
 #
 # GRASS_CLI_TIMEOUT (seconds, default 120) bounds the run; a timeout fails the test.
 # Only bash and coreutils are used (no python, no `file`): CI has nothing else.
 set -u
 
 usage() {
-    echo "usage: expect_ok.sh [--stdout REGEX]... [--no-stderr] [--png FILE W H] -- COMMAND..." >&2
+    echo "usage: expect_ok.sh [--stdout REGEX]... [--no-stderr] [--png FILE W H]" \
+        "[--file FILE REGEX]... -- COMMAND..." >&2
     exit 2
 }
 
@@ -23,6 +26,7 @@ noStderr=0
 pngFile=""
 pngWidth=0
 pngHeight=0
+fileChecks=()
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do
     case $1 in
         --stdout)
@@ -41,6 +45,11 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do
             pngHeight=$4
             shift 4
             ;;
+        --file)
+            [ $# -ge 3 ] || usage
+            fileChecks+=("$2" "$3")
+            shift 3
+            ;;
         *) echo "expect_ok.sh: unknown option $1" >&2; usage ;;
     esac
 done
@@ -51,6 +60,8 @@ if [ -n "$pngFile" ]; then
     rm -f -- "$pngFile"
     mkdir -p -- "$(dirname -- "$pngFile")" || exit 2
 fi
+
+for ((i = 0; i < ${#fileChecks[@]}; i += 2)); do rm -f -- "${fileChecks[i]}"; done
 
 work=$(mktemp -d) || exit 2
 trap 'rm -rf -- "$work"' EXIT
@@ -69,6 +80,15 @@ fi
 
 for pattern in ${patterns[@]+"${patterns[@]}"}; do
     grep -Eq -- "$pattern" "$work/stdout" || failures+=("no line of stdout matches /$pattern/")
+done
+
+for ((i = 0; i < ${#fileChecks[@]}; i += 2)); do
+    checked=${fileChecks[i]}
+    if [ ! -f "$checked" ]; then
+        failures+=("$checked was not written")
+    elif ! grep -Eq -- "${fileChecks[i + 1]}" "$checked"; then
+        failures+=("no line of $checked matches /${fileChecks[i + 1]}/")
+    fi
 done
 
 if [ "$noStderr" -eq 1 ] && grep -qv '^note: ' "$work/stderr"; then
