@@ -5,10 +5,13 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "framebuffer.h"
 #include "headless_context.h"
 #include "offscreen_render.h"
+#include "scene/scene_physics.h"
+#include "scene_physics_gpu.h"
 #include "scene_renderer.h"
 #include "util/arg_parser.h"
 #include "util/image_file.h"
@@ -40,12 +43,35 @@ void applyInput(const editor::InputState& input, int viewportHeight, const core:
     camera.farPlane = camera.distance * 20.0f + 100.0f;
 }
 
+// Physics stepping the renderer's blade buffers on the GPU in fixed steps of the project's
+// step_s, catching up with wall time but never more than MAX_STEPS_PER_FRAME per frame (a slow
+// device runs the simulation slower than real time instead of falling further behind).
+struct LivePhysics {
+    static constexpr int MAX_STEPS_PER_FRAME = 4;
+    core::ScenePhysics scene;
+    render::ScenePhysicsGpu gpu;
+    double owedS = 0.0;
+    std::size_t steps = 0;
+    std::chrono::steady_clock::time_point lastFrame = std::chrono::steady_clock::now();
+
+    void advance(double elapsedS) {
+        const double dtS = scene.params.dtS;
+        owedS = std::min(owedS + elapsedS, dtS * MAX_STEPS_PER_FRAME);
+        while (owedS >= dtS * (1.0 - 1e-6)) {
+            gpu.step(scene, static_cast<float>(static_cast<double>(steps) * dtS));
+            ++steps;
+            owedS -= dtS;
+        }
+    }
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
     std::string projectPath = std::string(GRASS_SOURCE_DIR) + "/projects/meadow";
     std::string screenshot;
     int frames = 0;
+    bool noPhysics = false;
     ArgParser parser("grass-editor [project-dir|project.json] [--screenshot F.png --frames N]",
                      "Opens the grass editor on a project (default: projects/meadow). Drag "
                      "to orbit, wheel to zoom, middle- or shift-drag to pan, F to frame, Esc "
@@ -57,6 +83,11 @@ int main(int argc, char** argv) {
     parser.integer("--frames",
                    "frames to draw before the screenshot (with --screenshot: default 3)", &frames,
                    1, 100000);
+    parser.flag("--no-physics",
+                "show the field at rest (by default gravity, wind and colliders run live on the "
+                "GPU, one physics step of the project's step_s per elapsed step, at most 4 per "
+                "frame)",
+                &noPhysics);
     if (auto parsed = parser.parse(std::vector<std::string>(argv + 1, argv + argc)); !parsed)
         return fail(parsed.error().str(), 2);
     if (parser.helpRequested()) {
@@ -95,6 +126,19 @@ int main(int argc, char** argv) {
                  gl::rendererDescription().c_str(), scene->totalBlades(),
                  render::geometryPathLabel(options.geometry));
 
+    std::optional<LivePhysics> physics;
+    if (!noPhysics) {
+        auto built = core::buildScenePhysics(*loaded);
+        if (!built)
+            return fail(built.error().str());
+        for (const auto& note : built->notes)
+            std::fprintf(stderr, "note: %s\n", note.c_str());
+        auto gpu = render::ScenePhysicsGpu::createOn(*scene, (*renderer)->bladeBuffers());
+        if (!gpu)
+            return fail(gpu.error().str());
+        physics.emplace(LivePhysics{std::move(*built), std::move(*gpu)});
+    }
+
     std::unique_ptr<gl::Framebuffer> target;
     int frame = 0;
     auto lastTitle = std::chrono::steady_clock::now();
@@ -108,6 +152,15 @@ int main(int argc, char** argv) {
         if (!target || target->width() != width || target->height() != height)
             target = std::make_unique<gl::Framebuffer>(width, height, project.render.msaaSamples);
         const auto start = std::chrono::steady_clock::now();
+        if (physics) {
+            // Screenshots step exactly once per frame, so they do not depend on machine speed.
+            const double elapsedS =
+                screenshot.empty()
+                    ? std::chrono::duration<double>(start - physics->lastFrame).count()
+                    : physics->scene.params.dtS;
+            physics->advance(elapsedS);
+            physics->lastFrame = start;
+        }
         (*renderer)->render(*camera, width, height, target->id(), options);
         target->blitTo(0, width, height);
         ++frame;

@@ -1,26 +1,44 @@
 #include "scene_physics_gpu.h"
 
-#include <cstring>
+#include "util/assert.h"
 
 namespace grass::render {
 
-Result<ScenePhysicsGpu> ScenePhysicsGpu::create(const core::Scene& scene) {
+Result<ScenePhysicsGpu> ScenePhysicsGpu::createOn(const core::Scene& scene,
+                                                  const std::vector<GLuint>& bladeBuffers) {
+    GRASS_ASSERT(bladeBuffers.size() == scene.layers.size());
     ScenePhysicsGpu out;
-    for (const core::LayerField& field : scene.layers) {
+    for (std::size_t i = 0; i < scene.layers.size(); ++i) {
+        const std::vector<core::Blade>& blades = scene.layers[i].patched.blades;
         auto physics = PhysicsGpu::load();
         if (!physics)
             return physics.error();
-        Layer layer{gl::Buffer::fromVector(field.patched.blades, "physics blades: " + field.name),
-                    field.patched.blades.size(), std::move(*physics)};
-        layer.physics.reset(field.patched.blades);
-        out.mLayers.push_back(std::move(layer));
+        physics->reset(blades);
+        out.mLayers.push_back(
+            Layer{gl::Buffer(), bladeBuffers[i], blades.size(), std::move(*physics)});
     }
+    return out;
+}
+
+Result<ScenePhysicsGpu> ScenePhysicsGpu::create(const core::Scene& scene) {
+    std::vector<gl::Buffer> uploaded;
+    std::vector<GLuint> ids;
+    for (const core::LayerField& field : scene.layers) {
+        uploaded.push_back(
+            gl::Buffer::fromVector(field.patched.blades, "physics blades: " + field.name));
+        ids.push_back(uploaded.back().id());
+    }
+    auto out = createOn(scene, ids);
+    if (!out)
+        return out.error();
+    for (std::size_t i = 0; i < uploaded.size(); ++i)
+        out->mLayers[i].ownBlades = std::move(uploaded[i]);
     return out;
 }
 
 void ScenePhysicsGpu::step(const core::ScenePhysics& physics, float timeS) {
     for (Layer& layer : mLayers)
-        layer.physics.step(layer.blades.id(), layer.bladeCount, physics.params, physics.wind,
+        layer.physics.step(layer.blades, layer.bladeCount, physics.params, physics.wind,
                            physics.colliders, timeS);
 }
 
@@ -30,9 +48,8 @@ void ScenePhysicsGpu::readBack(core::Scene& scene, core::SceneSimulation& simula
         std::vector<core::Blade>& blades = scene.layers[i].patched.blades;
         if (layer.bladeCount == 0)
             continue;
-        const std::vector<std::byte> bytes =
-            layer.blades.read(0, layer.bladeCount * sizeof(core::Blade));
-        std::memcpy(blades.data(), bytes.data(), bytes.size());
+        const std::size_t bytes = layer.bladeCount * sizeof(core::Blade);
+        glGetNamedBufferSubData(layer.blades, 0, static_cast<GLsizeiptr>(bytes), blades.data());
         simulation.eta(i) = layer.physics.readEta();
     }
 }

@@ -15,6 +15,10 @@ class ScenePhysicsGpu {
 public:
     // Uploads the blades of every layer of `scene` and loads the shader (needs a current context).
     static Result<ScenePhysicsGpu> create(const core::Scene& scene);
+    // Steps blade buffers that already hold the layers' blades (the renderer's, so the viewport
+    // shows the simulation without copies); one buffer per layer, owned by the caller.
+    static Result<ScenePhysicsGpu> createOn(const core::Scene& scene,
+                                            const std::vector<GLuint>& bladeBuffers);
 
     // One step of physics.params.dtS from timeS on every layer (asynchronous: no glFinish).
     void step(const core::ScenePhysics& physics, float timeS);
@@ -23,7 +27,8 @@ public:
 
 private:
     struct Layer {
-        gl::Buffer blades;
+        gl::Buffer ownBlades;  // empty when stepping the caller's buffer
+        GLuint blades = 0;
         std::size_t bladeCount = 0;
         PhysicsGpu physics;
     };

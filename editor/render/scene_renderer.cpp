@@ -113,6 +113,13 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     glBindVertexArray(0);
 }
 
+std::vector<GLuint> SceneRenderer::bladeBuffers() const {
+    std::vector<GLuint> ids;
+    for (const FieldGpu& field : mFields)
+        ids.push_back(field.bladeBuffer());
+    return ids;
+}
+
 FrameTimings SceneRenderer::lastTimings() const {
     return {mMeshTimer.milliseconds(), mGrassTimer.milliseconds(), mBladesDrawn};
 }

@@ -46,6 +46,8 @@ public:
                 const RenderOptions& options);
     // Waits for the timer queries of the last render().
     FrameTimings lastTimings() const;
+    // The blade buffer of each layer (SSBO layout of core::Blade), for physics to step in place.
+    std::vector<GLuint> bladeBuffers() const;
 
 private:
     SceneRenderer() = default;

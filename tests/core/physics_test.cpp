@@ -8,30 +8,16 @@
 #include <limits>
 
 #include "blade/bezier.h"
+#include "support/physics_cases.h"
 #include "util/rng.h"
 
 namespace grass::core {
 namespace {
 
-float lengthEstimate(const Blade& b) {
-    return bezierLengthEstimate(b.v0(), b.v1(), b.v2());
-}
-
-// The stated tolerance (docs/physics.md): 1e-4 relative to h, plus float rounding of the world
-// position (points are stored absolute, so a blade far from the origin loses ulp(|v0|)).
-float lengthTolerance(const Blade& b) {
-    const glm::vec3 a = glm::abs(b.v0());
-    return 1e-4f * b.h() +
-           4.0f * std::numeric_limits<float>::epsilon() * (std::max({a.x, a.y, a.z}) + b.h());
-}
-
-bool isFinite(const Blade& b) {
-    for (const glm::vec4& v : {b.v0Theta, b.v1H, b.v2W, b.upS})
-        for (int i = 0; i < 4; ++i)
-            if (!std::isfinite(v[i]))
-                return false;
-    return true;
-}
+// The length tolerance, finiteness and the extremes sweep are shared with the GPU execution.
+using test::isFinite;
+using test::lengthEstimate;
+using test::lengthTolerance;
 
 glm::vec3 randomUnit(Rng& rng) {
     for (;;) {
@@ -104,67 +90,34 @@ TEST(Physics, TipNeverGoesBelowTheGroundPlane) {
     }
 }
 
-// SPEC §3 / issue 4: every combination of the extremes, with wind, gravity and a collider.
+// SPEC §3 / issue 4: every combination of the extremes, with wind, gravity and a collider
+// (tests/support/physics_cases.h).
 TEST(Physics, ExtremesStayFiniteAboveGroundAndKeepLength) {
     float maxRel = 0.0f;
-    int combos = 0;
-    for (const float dt : {1e-5f, 1e-3f, 1.0f / 60.0f, 0.1f, 1.0f, 10.0f})
-        for (const float s : {0.0f, 1e-3f, 1.0f, 1e2f, 1e4f})
-            for (const float windStrength : {0.0f, 1.0f, 1e3f})
-                for (const float h : {1e-4f, 1.0f, 1e3f})
-                    for (const float radius : {0.0f, 1e-6f, 1e3f}) {
-                        ++combos;
-                        PhysicsParams params;
-                        params.dtS = dt;
-                        WindSource gusty;
-                        gusty.strength = windStrength;
-                        gusty.gust = 1.0f;
-                        WindSource vortex;
-                        vortex.kind = WindKind::Vortex;
-                        vortex.strength = windStrength;
-                        const std::vector<WindSource> wind{gusty, vortex};
-                        const glm::vec3 v0(0.3f, 0.0f, -0.2f);
-                        const glm::vec3 up = glm::normalize(glm::vec3(0.1f, 1.0f, 0.0f));
-                        std::vector<SphereCollider> colliders{
-                            {v0 + up * (0.6f * h) + glm::vec3(0.2f * h, 0, 0), radius, {}}};
-                        Blade b = makeRestBlade(v0, up, h, 0.01f, s, 0.7f);
-                        const glm::vec3 tip = restTip(b);
-                        float eta = 0.0f;
-                        for (int step = 0; step < 12; ++step) {
-                            const glm::vec3 before = b.v2();
-                            stepBlade(b, eta, tip, params, wind, colliders,
-                                      static_cast<float>(step) * dt);
-                            const std::string where =
-                                "dt " + std::to_string(dt) + " s " + std::to_string(s) + " wind " +
-                                std::to_string(windStrength) + " h " + std::to_string(h) +
-                                " radius " + std::to_string(radius);
-                            ASSERT_TRUE(isFinite(b) && std::isfinite(eta)) << where;
-                            const float tol = lengthTolerance(b);
-                            ASSERT_GE(glm::dot(up, b.v2() - v0), -tol) << where;
-                            ASSERT_NEAR(lengthEstimate(b), h, tol) << where;
-                            // No tip can be further than h from its root, so no step moves
-                            // it more than 2h.
-                            ASSERT_LE(glm::length(b.v2() - v0), h + tol) << where;
-                            ASSERT_LE(glm::length(b.v2() - before), 2.0f * h + 2.0f * tol);
-                            maxRel = std::max(maxRel, std::abs(lengthEstimate(b) - h) / h);
-                        }
-                    }
-    std::printf("%d combinations, max relative length error %.3g\n", combos, maxRel);
+    const std::vector<test::ExtremeCase> cases = test::extremeCases();
+    ASSERT_EQ(cases.size(), 810u);
+    for (const test::ExtremeCase& c : cases) {
+        const PhysicsParams params = test::extremeParams(c);
+        const std::vector<WindSource> wind = test::extremeWind(c);
+        const std::vector<SphereCollider> colliders = test::extremeColliders(c);
+        Blade b = test::extremeBlade(c);
+        const glm::vec3 tip = restTip(b);
+        float eta = 0.0f;
+        for (int step = 0; step < test::EXTREME_STEP_COUNT; ++step) {
+            const glm::vec3 before = b.v2();
+            stepBlade(b, eta, tip, params, wind, colliders, test::extremeStepTimeS(c, step));
+            ASSERT_TRUE(test::keepsExtremeInvariants(b, eta, c, before))
+                << test::describeCase(c) << " step " << step;
+            maxRel = std::max(maxRel, test::relativeLengthError(b, c.h));
+        }
+    }
+    std::printf("%zu combinations, max relative length error %.3g\n", cases.size(), maxRel);
 }
 
 TEST(Physics, DegenerateBladesAreReportedAndRepaired) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    std::vector<Blade> blades;
-    blades.push_back(makeRestBlade({1, 0, 0}, {0, 1, 0}, 0.0f, 0.01f, 1.0f, 0.0f));  // h = 0
-    Blade collapsed = makeRestBlade({2, 0, 0}, {0, 1, 0}, 1.0f, 0.01f, 0.0f, 0.0f);
-    collapsed.v2W = glm::vec4(collapsed.v0(), 0.01f);  // v2 == v0
-    blades.push_back(collapsed);
-    blades.push_back(makeRestBlade({3, 0, 0}, {0, 0, 0}, 1.0f, 0.01f, 1.0f, 0.0f));  // up = 0
-    Blade nanTip = makeRestBlade({4, 0, 0}, {0, 1, 0}, 1.0f, 0.01f, 1.0f, 0.0f);
-    nanTip.v2W.x = nan;
-    blades.push_back(nanTip);
-    blades.push_back(makeRestBlade({nan, 0, 0}, {0, 1, 0}, 1.0f, 0.01f, nan, 0.0f));
-
+    // 0: h = 0, 1: v2 == v0, 2: up = 0, 3: NaN tip, 4: NaN root and s, then more of the rule.
+    std::vector<Blade> blades = test::degenerateBlades();
     EXPECT_EQ(checkBlade(blades[0]), "");
     EXPECT_EQ(checkBlade(blades[1]), "");
     EXPECT_EQ(checkBlade(blades[2]), "up has zero length");
