@@ -200,9 +200,14 @@ void main() {
     uint index = firstBlade + gl_GlobalInvocationID.x;
     if (gl_GlobalInvocationID.x >= bladeCount - min(firstBlade, bladeCount))
         return;
-    Blade blade = physicsBlades[index];
-    float bladeEta = eta[index];
+    const Blade original = physicsBlades[index];
+    const float originalEta = eta[index];
+    Blade blade = original;
+    float bladeEta = originalEta;
     stepBlade(blade, bladeEta, restTips[index].xyz);
-    physicsBlades[index] = blade;
-    eta[index] = bladeEta;
+    // A blade at rest is not written back: a still field costs reads only.
+    if (blade != original)
+        physicsBlades[index] = blade;
+    if (bladeEta != originalEta)
+        eta[index] = bladeEta;
 }
