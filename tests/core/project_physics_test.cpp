@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "project/project.h"
+#include "scene/scene_physics.h"
+#include "support/test_paths.h"
 
 namespace grass::core {
 namespace {
@@ -133,6 +135,27 @@ TEST(ProjectPhysics, BadValuesAreRejectedWithTheirPath) {
     expectError(document(R"("colliders": [{"shape": "mesh", "file": "r.glb",
                                            "packing_resolution": 4}])"),
                 "/colliders/0/packing_resolution", "8");
+}
+
+}  // namespace
+}  // namespace grass::core
+
+namespace grass::core {
+namespace {
+
+// Every project shipped in projects/ loads, and its physics builds (the user's first files).
+TEST(ProjectPhysics, ShippedProjectsLoadWithTheirPhysics) {
+    std::size_t count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(test::sourceDir() / "projects")) {
+        if (!std::filesystem::exists(entry.path() / "project.json"))
+            continue;
+        const auto loaded = loadProject(entry.path());
+        ASSERT_TRUE(loaded) << loaded.error().str();
+        const auto physics = buildScenePhysics(*loaded);
+        ASSERT_TRUE(physics) << physics.error().str();
+        ++count;
+    }
+    EXPECT_GE(count, 2u);
 }
 
 }  // namespace
