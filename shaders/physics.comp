@@ -100,6 +100,15 @@ bool collide(inout Blade blade, inout float bladeEta, uint substep) {
     bool hit = false;
     for (uint j = 0u; j < colliderCount; ++j) {
         vec4 sphere = colliderSpheres[substep * colliderCount + j];
+        ColliderGroup group = colliderGroups[j];
+        if (group.size.x > 1u) {
+            vec3 toBound = sphere.xyz + group.boundOffsetRadius.xyz - v0;
+            float boundReach = group.boundOffsetRadius.w + 1.01 * h;
+            if (dot(toBound, toBound) > boundReach * boundReach) {
+                j += group.size.x - 1u;
+                continue;
+            }
+        }
         float radiusM = sphere.w;
         if (!(radiusM > 0.0))
             continue;

@@ -59,7 +59,19 @@ bool collide(Blade& blade, float& eta, const std::vector<SphereCollider>& collid
     const glm::vec3 v0 = blade.v0(), up = blade.up();
     const float h = blade.h();
     bool hit = false;
-    for (const SphereCollider& sphere : colliders) {
+    for (std::size_t index = 0; index < colliders.size(); ++index) {
+        const SphereCollider& sphere = colliders[index];
+        if (sphere.groupSize > 1) {
+            const glm::vec3 bound =
+                samplePath(sphere.path, timeS, sphere.centre) + sphere.boundOffset;
+            const float boundReach = sphere.boundRadiusM + 1.01f * h;
+            const glm::vec3 toBound = bound - v0;
+            // NaN bounds fail the comparison and fall through to the exact tests.
+            if (glm::dot(toBound, toBound) > boundReach * boundReach) {
+                index += sphere.groupSize - 1;
+                continue;
+            }
+        }
         const float radiusM = sphere.radiusM;
         if (!(radiusM > 0.0f))
             continue;

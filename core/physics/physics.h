@@ -6,8 +6,9 @@
 // Integration (docs/physics.md): the step Δt is cut into n = min(ceil(Δt / maxSubstepS),
 // maxSubsteps) equal substeps. In each, the linear recovery term is integrated exactly together
 // with the (frozen) gravity and wind: v2 relaxes towards Iv2 + F/k by the factor exp(−k·τ), with
-// k = s·max(1 − η, crushedRecoveryFloor); the displacement is then clamped to maxMovePerSubstep·h. Hence no NaN/Inf
-// and no overshoot for any Δt, stiffness or wind; validation keeps the length estimate at h.
+// k = s·max(1 − η, crushedRecoveryFloor); the displacement is then clamped to maxMovePerSubstep·h.
+// Hence no NaN/Inf and no overshoot for any Δt, stiffness or wind; validation keeps the length
+// estimate at h.
 #pragma once
 
 #include <cstddef>
@@ -61,6 +62,13 @@ struct SphereCollider {
     glm::vec3 centre{0.0f};
     float radiusM = 0.0f;
     std::vector<PathKey> path;
+    // Broad phase for the spheres of a packed mesh, which move together: when groupSize > 1,
+    // this sphere and the next groupSize − 1 lie inside the bounding sphere centred at this
+    // sphere's (moving) centre + boundOffset with radius boundRadiusM, so one distance test
+    // skips them all for a blade out of reach. Bit-identical results either way.
+    std::uint32_t groupSize = 1;
+    glm::vec3 boundOffset{0.0f};
+    float boundRadiusM = 0.0f;
     bool operator==(const SphereCollider&) const = default;
 };
 

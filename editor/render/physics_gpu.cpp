@@ -73,6 +73,11 @@ void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::Ph
             spheres.emplace_back(core::samplePath(sphere.path, t + tau, sphere.centre),
                                  sphere.radiusM);
     }
+    std::vector<ColliderGroupGpu> groups;
+    groups.reserve(colliders.size());
+    for (const core::SphereCollider& sphere : colliders)
+        groups.push_back({glm::vec4(sphere.boundOffset, sphere.boundRadiusM),
+                          glm::uvec4(std::max(sphere.groupSize, 1u), 0u, 0u, 0u)});
     std::vector<WindSourceGpu> sources;
     sources.reserve(wind.size());
     for (const core::WindSource& source : wind)
@@ -82,6 +87,7 @@ void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::Ph
     upload(mWindSources, sources, "physics wind sources");
     upload(mWindCentres, windCentres, "physics wind centres");
     upload(mColliders, spheres, "physics colliders");
+    upload(mColliderGroups, groups, "physics collider groups");
 
     mProgram.use();
     mProgram.set("bladeCount", static_cast<unsigned>(bladeCount));
@@ -96,6 +102,7 @@ void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::Ph
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, mWindCentres.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, mColliders.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, mSubsteps.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, mColliderGroups.id());
     for (std::size_t first = 0; first < bladeCount; first += LOCAL_SIZE * MAX_GROUPS) {
         const std::size_t count = std::min(bladeCount - first, LOCAL_SIZE * MAX_GROUPS);
         mProgram.set("firstBlade", static_cast<unsigned>(first));

@@ -29,6 +29,13 @@ struct WindSourceGpu {
 };
 static_assert(sizeof(WindSourceGpu) == 64, "WindSourceGpu must be four vec4 (std430)");
 
+// The broad phase of a core::SphereCollider, std430 (ColliderGroup in physics.glsl).
+struct ColliderGroupGpu {
+    glm::vec4 boundOffsetRadius{0.0f};
+    glm::uvec4 size{1u, 0u, 0u, 0u};
+};
+static_assert(sizeof(ColliderGroupGpu) == 32, "ColliderGroupGpu must be two vec4 (std430)");
+
 class PhysicsGpu {
 public:
     static Result<PhysicsGpu> load();
@@ -52,6 +59,7 @@ private:
     gl::Buffer mWindSources;
     gl::Buffer mWindCentres;
     gl::Buffer mColliders;
+    gl::Buffer mColliderGroups;
     gl::Buffer mSubsteps;
 };
 

@@ -58,6 +58,15 @@ layout(std430, binding = 5) readonly buffer WindCentreBuffer {
 layout(std430, binding = 6) readonly buffer ColliderBuffer {
     vec4 colliderSpheres[];
 };
+// colliderGroups[j]: the broad phase of core::SphereCollider j (render::ColliderGroupGpu):
+// boundOffsetRadius = (boundOffset, boundRadiusM), size.x = groupSize.
+struct ColliderGroup {
+    vec4 boundOffsetRadius;
+    uvec4 size;
+};
+layout(std430, binding = 8) readonly buffer ColliderGroupBuffer {
+    ColliderGroup colliderGroups[];
+};
 // substepTimes[i]: x = t = timeS + i·τ, y = τ, z = t + τ (the collision time).
 layout(std430, binding = 7) readonly buffer SubstepBuffer {
     vec4 substepTimes[];

@@ -281,6 +281,53 @@ TEST(Physics, ResultsDoNotDependOnTheThreadCount) {
     EXPECT_GT(std::count_if(etaOne.begin(), etaOne.end(), [](float e) { return e > 0.0f; }), 0);
 }
 
+// Three spheres rolling together, as a packed mesh gives them.
+std::vector<SphereCollider> rollingCluster() {
+    std::vector<SphereCollider> spheres;
+    for (const glm::vec3 offset :
+         {glm::vec3(0.0f), glm::vec3(0.6f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 0.7f)}) {
+        SphereCollider sphere;
+        sphere.centre = glm::vec3(-5.0f, 0.3f, 0.0f) + offset;
+        sphere.radiusM = 0.5f;
+        sphere.path = {{0.0f, sphere.centre}, {0.5f, sphere.centre + glm::vec3(10.0f, 0, 0)}};
+        spheres.push_back(sphere);
+    }
+    return spheres;
+}
+
+// The broad phase of a sphere group must not change results: its bound is conservative.
+TEST(Physics, ColliderGroupBoundSkipsWithoutChangingResults) {
+    Rng rng(9);
+    std::vector<Blade> blades;
+    for (int i = 0; i < 3000; ++i) {
+        const glm::vec3 v0(rng.uniform(-6, 6), 0.0f, rng.uniform(-3, 3));
+        blades.push_back(makeRestBlade(v0, {0, 1, 0}, rng.uniform(0.2f, 0.6f), 0.01f,
+                                       rng.uniform(10, 60), rng.uniform(0, 6)));
+    }
+    const auto tips = restTips(blades);
+    const std::vector<SphereCollider> singles = rollingCluster();
+    std::vector<SphereCollider> grouped = singles;
+    grouped[0].groupSize = 3;
+    grouped[0].boundOffset = glm::vec3(0.3f, 0.0f, 0.35f);  // the middle of the three centres
+    grouped[0].boundRadiusM = 0.5f + glm::length(glm::vec3(0.3f, 0.0f, 0.35f)) + 1e-4f;
+    // A group whose bound is (wrongly) far away proves the bound is what is tested.
+    std::vector<SphereCollider> misplaced = grouped;
+    misplaced[0].boundOffset = glm::vec3(0.0f, 100.0f, 0.0f);
+
+    std::vector<Blade> a = blades, b = blades, c = blades;
+    std::vector<float> etaA(blades.size(), 0.0f), etaB = etaA, etaC = etaA;
+    for (int step = 0; step < 40; ++step) {
+        const float t = static_cast<float>(step) / 60.0f;
+        stepPhysics(a, etaA, tips, PhysicsParams{}, {}, singles, t, 1);
+        stepPhysics(b, etaB, tips, PhysicsParams{}, {}, grouped, t, 1);
+        stepPhysics(c, etaC, tips, PhysicsParams{}, {}, misplaced, t, 1);
+    }
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(etaA, etaB);
+    EXPECT_GT(std::count_if(etaA.begin(), etaA.end(), [](float e) { return e > 0.0f; }), 50);
+    EXPECT_EQ(std::count_if(etaC.begin(), etaC.end(), [](float e) { return e > 0.0f; }), 0);
+}
+
 TEST(Physics, SubstepCountFollowsThePolicy) {
     PhysicsParams p;
     p.dtS = 1.0f / 60.0f;

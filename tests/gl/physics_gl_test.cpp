@@ -55,7 +55,20 @@ std::vector<core::SphereCollider> makeColliders() {
     // Rolls across the field and back, through the blades (centre below their tips).
     sphere.path = {
         {0.0f, {-2.5f, 0.3f, 0.0f}}, {8.0f, {2.5f, 0.3f, 0.5f}}, {16.0f, {-2.5f, 0.3f, -0.5f}}};
-    return {sphere};
+    // A packed mesh: three spheres moving together behind one bounding sphere (broad phase).
+    std::vector<core::SphereCollider> colliders{sphere};
+    for (const glm::vec3 offset :
+         {glm::vec3(0.0f), glm::vec3(0.5f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 0.5f)}) {
+        core::SphereCollider part;
+        part.radiusM = 0.4f;
+        part.centre = glm::vec3(0.0f, 0.2f, 2.5f) + offset;
+        part.path = {{0.0f, part.centre}, {12.0f, part.centre + glm::vec3(0.0f, 0.0f, -5.0f)}};
+        colliders.push_back(part);
+    }
+    colliders[1].groupSize = 3;
+    colliders[1].boundOffset = glm::vec3(0.25f, 0.0f, 0.25f);
+    colliders[1].boundRadiusM = 0.4f + glm::length(glm::vec3(0.25f, 0.0f, 0.25f)) + 1e-4f;
+    return colliders;
 }
 
 std::vector<core::Blade> readBlades(const gl::Buffer& buffer, std::size_t count) {
