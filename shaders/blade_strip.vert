@@ -1,12 +1,13 @@
 #version 450 core
 // Instanced-strip path (SPEC §7): one instance per blade, a triangle strip of
 // 2·(uSegments + 1) vertices; the curve is evaluated here. Cheap on software rasterizers.
+// Instances are the blades that survived the cull pass, read through the visible list.
 #include "blade_geometry.glsl"
+#include "visible.glsl"
 
 uniform mat4 uViewProj;
 uniform int uSegments;
 uniform int uShape;
-uniform int uFirstBlade;  // first blade of this draw in the buffer
 
 out vec3 vPosition;
 out vec3 vNormal;
@@ -14,7 +15,7 @@ out vec3 vUp;
 out float vHeight;
 
 void main() {
-    Blade blade = blades[gl_InstanceID + uFirstBlade];
+    Blade blade = blades[visible[gl_InstanceID]];
     int segment = gl_VertexID >> 1;
     float u = float(gl_VertexID & 1);
     float v = float(segment) / float(uSegments);

@@ -1,7 +1,10 @@
 #version 450 core
-// Tessellation path (Jahrmann §6): one patch vertex per blade; the blade index travels on.
+// Tessellation path (Jahrmann §6): one patch vertex per surviving blade (the cull pass wrote the
+// vertex count); the blade index, read through the visible list, travels on.
+#include "visible.glsl"
+
 out int vBladeIndex;
 
 void main() {
-    vBladeIndex = gl_VertexID;
+    vBladeIndex = int(visible[gl_VertexID]);
 }

@@ -12,6 +12,7 @@
 #include "scene/scene_physics.h"
 #include "simulation_runner.h"
 #include "util/arg_parser.h"
+#include "util/atomic_file.h"
 #include "util/image_file.h"
 
 namespace grass::cli {
@@ -27,6 +28,7 @@ double msSince(Clock::time_point start) {
 struct RenderArgs {
     std::string project, mesh, out, camera, geometry = "project", msaa = "project";
     std::string backend = "gpu";
+    std::string cull = "all", stats;
     double timeS = 0.0;
     int width = 0, height = 0, frames = 3, blades = 60000;
     std::uint64_t seed = 0;
@@ -64,9 +66,53 @@ Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& p
     return loaded;
 }
 
-// `--time`: the field as it is after T seconds of the project's physics.
-Result<void> simulateBeforeRender(const RenderArgs& args, const core::LoadedProject& loaded,
-                                  core::Scene& scene) {
+// `--cull LIST`: which of the per-blade tests run (SPEC §6); collectStats is set by the caller.
+Result<render::CullSettings> parseCullList(const std::string& list) {
+    render::CullSettings settings;
+    if (list == "all")
+        return settings;
+    settings.orientation = settings.frustum = settings.distance = settings.occlusion = false;
+    if (list == "none")
+        return settings;
+    std::size_t start = 0;
+    while (start <= list.size()) {
+        const std::size_t comma = std::min(list.find(',', start), list.size());
+        const std::string name = list.substr(start, comma - start);
+        if (name == "orientation")
+            settings.orientation = true;
+        else if (name == "frustum")
+            settings.frustum = true;
+        else if (name == "distance")
+            settings.distance = true;
+        else if (name == "occlusion")
+            settings.occlusion = true;
+        else
+            return makeError("--cull", "unknown test \"" + name +
+                                           "\" (valid: orientation, frustum, distance, "
+                                           "occlusion, or all, none)");
+        start = comma + 1;
+    }
+    return settings;
+}
+
+std::string statsJson(const render::FrameTimings& frame, double physicsMs, double wallMs) {
+    const render::CullStats& c = frame.cull;
+    const double total = physicsMs + frame.cullMs + frame.meshMs + frame.grassMs;
+    char text[1024];
+    std::snprintf(text, sizeof text,
+                  "{\n  \"blades_in\": %zu,\n  \"culled\": {\"patch\": %zu, \"orientation\": %zu, "
+                  "\"frustum\": %zu, \"distance\": %zu, \"occlusion\": %zu},\n  \"drawn\": %zu,\n"
+                  "  \"ms\": {\"physics\": %.4f, \"cull\": %.4f, \"opaque\": %.4f, \"grass\": "
+                  "%.4f, \"total\": %.4f, \"frame_wall\": %.4f}\n}\n",
+                  c.bladesIn, c.culledPatch, c.culledOrientation, c.culledFrustum, c.culledDistance,
+                  c.culledOcclusion, c.drawn, physicsMs, frame.cullMs, frame.meshMs, frame.grassMs,
+                  total, wallMs);
+    return text;
+}
+
+// `--time`: the field as it is after T seconds of the project's physics. Returns ms per step.
+Result<double> simulateBeforeRender(const RenderArgs& args, const core::LoadedProject& loaded,
+                                    core::Scene& scene) {
     auto physics = core::buildScenePhysics(loaded);
     if (!physics)
         return physics.error();
@@ -82,7 +128,7 @@ Result<void> simulateBeforeRender(const RenderArgs& args, const core::LoadedProj
         "average, %.2f %% crushed\n",
         static_cast<double>(simulation.timeS()), run->steps, args.backend.c_str(), run->msPerStep,
         run->health.meanTipDisplacementM(), 100.0 * run->health.crushedShare());
-    return {};
+    return run->msPerStep;
 }
 
 }  // namespace
@@ -124,6 +170,13 @@ int runRender(const std::vector<std::string>& argv) {
     parser.choice("--backend", {"gpu", "cpu"},
                   "with --time: run the physics as the compute shader or the CPU reference",
                   &args.backend);
+    parser.text("--cull", "LIST",
+                "per-blade culling tests, comma-separated: orientation,frustum,distance,occlusion; "
+                "all or none (none draws every blade)",
+                &args.cull);
+    parser.text("--stats", "FILE.json",
+                "write the last frame's blade counts per cull test and pass timings as JSON",
+                &args.stats);
     parser.flag("--gl-debug", "print GL debug output (errors and warnings from the driver)",
                 &args.glDebug);
     // Parsed before the defaults that depend on it are shown, so 0 reads as "the project's".
@@ -149,6 +202,16 @@ int runRender(const std::vector<std::string>& argv) {
             return EXIT_USAGE;
         }
     }
+    auto cullSettings = parseCullList(args.cull);
+    if (!cullSettings) {
+        printError("render", cullSettings.error().str());
+        return EXIT_USAGE;
+    }
+    if (!args.stats.empty())
+        if (auto writable = checkFileWritable(args.stats, "stats.json"); !writable) {
+            printError("render", writable.error().str());
+            return EXIT_USAGE;
+        }
     // Fail before the (possibly long) scene build and render when the image can't be written.
     if (!args.out.empty())
         if (auto writable = checkImageWritable(args.out); !writable) {
@@ -181,11 +244,15 @@ int runRender(const std::vector<std::string>& argv) {
         printError("render", context.error().str());
         return EXIT_FAILED;
     }
-    if (args.timeS > 0.0)
-        if (auto simulated = simulateBeforeRender(args, *loaded, scene); !simulated) {
+    double physicsMsPerStep = 0.0;
+    if (args.timeS > 0.0) {
+        auto simulated = simulateBeforeRender(args, *loaded, scene);
+        if (!simulated) {
             printError("render", simulated.error().str());
             return EXIT_FAILED;
         }
+        physicsMsPerStep = *simulated;
+    }
     core::RenderSettings settings = project.render;
     if (args.geometry != "project") {
         auto path = core::parseGeometryPath(args.geometry);
@@ -198,6 +265,9 @@ int runRender(const std::vector<std::string>& argv) {
     request.msaaSamples = args.msaa == "project" ? settings.msaaSamples : std::stoi(args.msaa);
     request.frames = args.frames;
     request.options = render::renderOptionsFor(settings, project.sun, gl::isSoftwareRenderer());
+    // Counters are read once after the last frame: cheap for a one-shot render.
+    request.options.cull = *cullSettings;
+    request.options.cull.collectStats = true;
 
     auto rendered = render::renderOffscreen(scene, *camera, request);
     if (!rendered) {
@@ -222,6 +292,23 @@ int runRender(const std::vector<std::string>& argv) {
                 frames[frames.size() / 2], frames.front());
     std::printf("  gpu ms     mesh %.2f, grass %.2f (last frame, timer queries)\n",
                 rendered->lastFrame.meshMs, rendered->lastFrame.grassMs);
+    const render::CullStats& cull = rendered->lastFrame.cull;
+    const double inBlades = static_cast<double>(std::max<std::size_t>(cull.bladesIn, 1));
+    std::printf(
+        "  culling    %zu in, %zu drawn (%.1f %%); culled: patch %zu, orientation %zu, "
+        "frustum %zu, distance %zu, occlusion %zu; cull %.2f ms\n",
+        cull.bladesIn, cull.drawn, 100.0 * static_cast<double>(cull.drawn) / inBlades,
+        cull.culledPatch, cull.culledOrientation, cull.culledFrustum, cull.culledDistance,
+        cull.culledOcclusion, rendered->lastFrame.cullMs);
+    if (!args.stats.empty()) {
+        const std::string json =
+            statsJson(rendered->lastFrame, physicsMsPerStep, rendered->frameWallMs.back());
+        if (auto written = writeFileAtomic(args.stats, json); !written) {
+            printError("render", written.error().str());
+            return EXIT_FAILED;
+        }
+        std::printf("wrote %s\n", args.stats.c_str());
+    }
     return 0;
 }
 

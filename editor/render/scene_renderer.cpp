@@ -47,6 +47,10 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
                                   "blade tessellation");
     if (!tess)
         return tess.error();
+    auto cull = CullPass::create();
+    if (!cull)
+        return cull.error();
+    renderer->mCull = std::make_unique<CullPass>(std::move(*cull));
     renderer->mMeshProgram = std::move(*mesh);
     renderer->mStripProgram = std::move(*strips);
     renderer->mTessProgram = std::move(*tess);
@@ -79,7 +83,8 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
     const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
-    const glm::mat4 viewProj = camera.projection(aspect) * camera.view();
+    const glm::mat4 projection = camera.projection(aspect);
+    const glm::mat4 viewProj = projection * camera.view();
 
     mMeshTimer.begin();
     mMeshProgram.use();
@@ -89,14 +94,23 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     mMesh->draw();
     mMeshTimer.end();
 
+    const int segments = std::max(options.stripSegments, 1);
+    mCullTimer.begin();
+    const CullView cullView{camera.view(), projection, camera.position(), width, height, segments};
+    mCull->run(mFields, cullView, options.cull, [this] {
+        mMeshProgram.use();
+        mMesh->draw();
+    });
+    mCullTimer.end();
+    mStatsFrame = options.cull.collectStats;
+
     mGrassTimer.begin();
     const bool tessellate = options.geometry == GeometryPath::Tessellation;
     const gl::Program& program = tessellate ? mTessProgram : mStripProgram;
     program.use();
     program.set("uViewProj", viewProj);
     program.set("uShape", 1);  // triangle; per-layer shapes arrive with issue 5
-    program.set("uFirstBlade", 0);
-    program.set("uSegments", std::max(options.stripSegments, 1));
+    program.set("uSegments", segments);
     program.set("uTessLevel", static_cast<float>(std::max(options.tessLevel, 1)));
     setLighting(program, options);
     mBladesDrawn = 0;
@@ -106,7 +120,7 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
         if (tessellate)
             field.drawTessellated();
         else
-            field.drawStrips(std::max(options.stripSegments, 1));
+            field.drawStrips();
         mBladesDrawn += field.field().liveBlades;
     }
     mGrassTimer.end();
@@ -121,7 +135,14 @@ std::vector<GLuint> SceneRenderer::bladeBuffers() const {
 }
 
 FrameTimings SceneRenderer::lastTimings() const {
-    return {mMeshTimer.milliseconds(), mGrassTimer.milliseconds(), mBladesDrawn};
+    FrameTimings timings;
+    timings.meshMs = mMeshTimer.milliseconds();
+    timings.grassMs = mGrassTimer.milliseconds();
+    timings.cullMs = mCullTimer.milliseconds();
+    timings.bladesDrawn = mBladesDrawn;
+    if (mStatsFrame)
+        timings.cull = mCull->readStats(mFields);
+    return timings;
 }
 
 }  // namespace grass::render

@@ -1,11 +1,13 @@
-// SceneRenderer: draws a Scene (opaque mesh first, then every grass layer by the chosen
-// geometry path) into a framebuffer, timing each pass with GL timer queries. The headless CLI
+// SceneRenderer: draws a Scene (opaque mesh first, the cull pass, then every grass layer by the
+// chosen geometry path through the visible lists) into a framebuffer, timing each pass with GL
+// timer queries. The headless CLI
 // and the editor's viewport both draw through it.
 #pragma once
 
 #include <memory>
 #include <vector>
 
+#include "cull_pass.h"
 #include "field_gpu.h"
 #include "mesh_gpu.h"
 #include "program.h"
@@ -23,9 +25,12 @@ struct RenderOptions {
     core::SunDesc sun;
     glm::vec3 skyColor{0.55f, 0.70f, 0.90f};
     glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
+    // Per-blade culling (SPEC §6); all tests off draws every blade.
+    CullSettings cull;
 };
 
 // Project settings → options; Auto picks strips on software rasterizers (SPEC §7 figures).
+// Culling keeps CullSettings' defaults: every test on, statistics off.
 RenderOptions renderOptionsFor(const core::RenderSettings& settings, const core::SunDesc& sun,
                                bool softwareRenderer);
 const char* geometryPathLabel(GeometryPath path);
@@ -33,7 +38,11 @@ const char* geometryPathLabel(GeometryPath path);
 struct FrameTimings {
     double meshMs = 0.0;   // GPU time of the opaque pass
     double grassMs = 0.0;  // GPU time of all blade draws
+    double cullMs = 0.0;   // GPU time of the occlusion depth pre-pass and the cull dispatches
+    // Live blades handed to the cull pass; what survived it is cull.drawn.
     std::size_t bladesDrawn = 0;
+    // Per-test counts, filled only when the frame ran with RenderOptions::cull.collectStats.
+    CullStats cull;
 };
 
 class SceneRenderer {
@@ -55,8 +64,10 @@ private:
     gl::Program mMeshProgram, mStripProgram, mTessProgram;
     std::unique_ptr<MeshGpu> mMesh;
     std::vector<FieldGpu> mFields;
-    gl::GpuTimer mMeshTimer, mGrassTimer;
+    std::unique_ptr<CullPass> mCull;
+    gl::GpuTimer mMeshTimer, mGrassTimer, mCullTimer;
     std::size_t mBladesDrawn = 0;
+    bool mStatsFrame = false;
 };
 
 }  // namespace grass::render

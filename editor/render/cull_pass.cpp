@@ -1,0 +1,125 @@
+#include "cull_pass.h"
+
+#include <array>
+
+namespace grass::render {
+
+namespace {
+constexpr GLuint COUNTER_BINDING = 7;
+constexpr GLuint WORK_GROUP_SIZE = 32;  // local_size_x of shaders/cull.comp
+constexpr std::size_t COUNTER_COUNT = 8;
+}  // namespace
+
+Result<CullPass> CullPass::create() {
+    auto program = gl::Program::load({{GL_COMPUTE_SHADER, "cull.comp"}}, "blade cull");
+    if (!program)
+        return program.error();
+    CullPass pass;
+    pass.mProgram = std::move(*program);
+    const std::array<GLuint, COUNTER_COUNT> zeros{};
+    pass.mCounters = gl::Buffer(std::as_bytes(std::span(zeros)), "cull counters");
+    return pass;
+}
+
+// Occlusion depth: a depth-only pre-pass of the opaque scene into a single-sample depth
+// texture of the framebuffer's size. The main framebuffer's depth is multisampled (and a
+// renderbuffer), so it cannot be sampled directly; the pre-pass draws only the terrain, cheap
+// next to the blades, and full resolution keeps the depth under a blade's root within a pixel
+// of the root itself, so a small bias (cull.comp) keeps grass on visible terrain.
+void CullPass::resizeDepth(int width, int height) {
+    if (width == mDepthWidth && height == mDepthHeight)
+        return;
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    mDepth = gl::TextureHandle(texture);
+    mDepth.setLabel("cull depth");
+    glTextureStorage2D(texture, 1, GL_DEPTH_COMPONENT32F, width, height);
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    GLuint framebuffer = 0;
+    glCreateFramebuffers(1, &framebuffer);
+    mDepthFramebuffer = gl::FramebufferHandle(framebuffer);
+    mDepthFramebuffer.setLabel("cull depth pre-pass");
+    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, texture, 0);
+    glNamedFramebufferDrawBuffer(framebuffer, GL_NONE);
+    mDepthWidth = width;
+    mDepthHeight = height;
+}
+
+void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
+                   const CullSettings& settings, const std::function<void()>& drawOpaque) {
+    GLint previousFramebuffer = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
+    resizeDepth(std::max(view.width, 1), std::max(view.height, 1));
+    if (settings.occlusion) {
+        const float clearDepth = 1.0f;
+        glClearNamedFramebufferfv(mDepthFramebuffer.id(), GL_DEPTH, 0, &clearDepth);
+        glBindFramebuffer(GL_FRAMEBUFFER, mDepthFramebuffer.id());
+        glViewport(0, 0, mDepthWidth, mDepthHeight);
+        drawOpaque();
+        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
+        glViewport(0, 0, view.width, view.height);
+        // The compute shader samples what the pre-pass wrote.
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+
+    mStatsValid = settings.collectStats;
+    if (settings.collectStats) {
+        const GLuint zero = 0;
+        glClearNamedBufferData(mCounters.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    }
+    mProgram.use();
+    mProgram.set("uViewProj", view.projection * view.view);
+    mProgram.set("uCameraPosition", view.cameraPosition);
+    mProgram.set("uProj22", view.projection[2][2]);
+    mProgram.set("uProj32", view.projection[3][2]);
+    mProgram.set("uTestPatch", settings.frustum ? 1 : 0);
+    mProgram.set("uTestOrientation", settings.orientation ? 1 : 0);
+    mProgram.set("uTestFrustum", settings.frustum ? 1 : 0);
+    mProgram.set("uTestDistance", settings.distance && settings.maxDistanceM > 0.0f ? 1 : 0);
+    mProgram.set("uTestOcclusion", settings.occlusion ? 1 : 0);
+    mProgram.set("uDistanceClasses", std::max(settings.distanceClasses, 1));
+    mProgram.set("uMaxDistance", std::max(settings.maxDistanceM, 1e-3f));
+    mProgram.set("uCollectStats", settings.collectStats ? 1 : 0);
+    mProgram.set("uSceneDepth", 0);
+    glBindTextureUnit(0, mDepth.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, COUNTER_BINDING, mCounters.id());
+    for (FieldGpu& field : fields) {
+        field.resetCommands(view.stripSegments);
+        if (field.bladeCount() == 0)
+            continue;
+        field.bindForCull();
+        mProgram.set("uBladeCount", static_cast<unsigned>(field.bladeCount()));
+        mProgram.set("uPatchSize", std::max(field.patchSize(), 1u));
+        const auto groups =
+            static_cast<GLuint>((field.bladeCount() + WORK_GROUP_SIZE - 1) / WORK_GROUP_SIZE);
+        glDispatchCompute(groups, 1, 1);
+    }
+    glBindTextureUnit(0, 0);
+    // The draws read the commands (indirect) and the visible lists (SSBO) the dispatch wrote.
+    // Statistics are read with glGetNamedBufferSubData: that needs the buffer-update bit.
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                    (settings.collectStats ? GL_BUFFER_UPDATE_BARRIER_BIT : 0u));
+}
+
+CullStats CullPass::readStats(const std::vector<FieldGpu>& fields) const {
+    CullStats stats;
+    if (!mStatsValid)
+        return stats;
+    std::array<GLuint, COUNTER_COUNT> counters{};
+    glGetNamedBufferSubData(mCounters.id(), 0, sizeof counters, counters.data());
+    stats.bladesIn = counters[0];
+    stats.culledPatch = counters[1];
+    stats.culledOrientation = counters[2];
+    stats.culledFrustum = counters[3];
+    stats.culledDistance = counters[4];
+    stats.culledOcclusion = counters[5];
+    for (const FieldGpu& field : fields)
+        stats.drawn += field.readDrawnCount();
+    return stats;
+}
+
+}  // namespace grass::render

@@ -1,0 +1,81 @@
+// CullPass: the per-blade GPU culling of SPEC §6 (Jahrmann §6). Each frame it draws the opaque
+// terrain into its own depth texture (for the occlusion test), then runs shaders/cull.comp over
+// every layer, which writes each layer's visible-index list and indirect draw commands. The
+// draws follow without any CPU read-back; per-test counters are read only when asked.
+// Distances are metres in world space.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "buffer.h"
+#include "field_gpu.h"
+#include "gl_handle.h"
+#include "program.h"
+
+namespace grass::render {
+
+struct CullSettings {
+    // Stage 1 (patch boxes) runs with the frustum test: it is the same test, per patch.
+    bool frustum = true;
+    bool orientation = true;
+    bool distance = true;
+    bool occlusion = true;
+    // Distance thinning: n classes, blade i kept while i mod n < ceil(n·(1 − d/dmax)). With
+    // n = 8 the field thins in 12.5 % steps; 100 m keeps everything within 12.5 m whole and
+    // a 20 m meadow seen from 20 m at 7/8 density, where the loss is hard to see.
+    int distanceClasses = 8;
+    float maxDistanceM = 100.0f;
+    // Count blades per test (statistics); costs a few atomics per work-group.
+    bool collectStats = false;
+    bool anyEnabled() const { return frustum || orientation || distance || occlusion; }
+};
+
+// Blades of the last culled frame, summed over layers. in = drawn + Σ culled.
+struct CullStats {
+    std::size_t bladesIn = 0;  // live blades (padding is not counted)
+    std::size_t culledPatch = 0;
+    std::size_t culledOrientation = 0;
+    std::size_t culledFrustum = 0;
+    std::size_t culledDistance = 0;
+    std::size_t culledOcclusion = 0;
+    std::size_t drawn = 0;
+    std::size_t culledTotal() const {
+        return culledPatch + culledOrientation + culledFrustum + culledDistance + culledOcclusion;
+    }
+};
+
+struct CullView {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::vec3 cameraPosition{0.0f};
+    int width = 1;
+    int height = 1;
+    int stripSegments = 8;
+};
+
+class CullPass {
+public:
+    static Result<CullPass> create();
+
+    // Depth pre-pass then the cull dispatch for every field, ending with the barrier the
+    // indirect draws need. `drawOpaque` draws the opaque scene with the bound framebuffer's
+    // state (depth test on); it runs only when occlusion culling is on.
+    void run(std::vector<FieldGpu>& fields, const CullView& view, const CullSettings& settings,
+             const std::function<void()>& drawOpaque);
+    // Counters of the last run(); zero unless it ran with collectStats. Waits for the GPU.
+    CullStats readStats(const std::vector<FieldGpu>& fields) const;
+
+private:
+    void resizeDepth(int width, int height);
+    gl::Program mProgram;
+    gl::Buffer mCounters;
+    gl::TextureHandle mDepth;
+    gl::FramebufferHandle mDepthFramebuffer;
+    int mDepthWidth = 0, mDepthHeight = 0;
+    bool mStatsValid = false;
+};
+
+}  // namespace grass::render

@@ -1,0 +1,173 @@
+#version 450 core
+// Per-blade culling (SPEC §6, Jahrmann §6). One invocation per blade slot; patches hold a
+// multiple of 32 blades and the buffer is patch-major, so a work-group lies in one patch.
+// Stage 1: the patch's box against the view frustum. Stage 2, per blade: orientation, frustum,
+// distance, occlusion, in that order; a blade is counted by the first test that removes it.
+// Survivors append their index to the visible list and bump the instance count of the strip
+// command and the vertex count of the tessellation command (both reset to 0 before the dispatch).
+#include "blade.glsl"
+
+layout(local_size_x = 32) in;
+
+// Per patch: min (xyz, w unused) then max.
+layout(std430, binding = 1) readonly buffer PatchBoundsBuffer {
+    vec4 patchBounds[];
+};
+layout(std430, binding = 5) writeonly buffer VisibleBuffer {
+    uint visible[];
+};
+// DrawArraysIndirectCommand ×2: [0..3] strips (count, instanceCount, first, baseInstance),
+// [4..7] tessellation patches.
+layout(std430, binding = 6) buffer CommandBuffer {
+    uint commands[8];
+};
+// Statistics: blades in, culled by patch, orientation, frustum, distance, occlusion.
+layout(std430, binding = 7) buffer CounterBuffer {
+    uint counters[8];
+};
+
+uniform sampler2D uSceneDepth;  // window-space depth of the opaque pre-pass
+uniform mat4 uViewProj;
+uniform vec3 uCameraPosition;
+// Projection terms to turn window depth back into view distance: zView = P32 / (zNdc + P22).
+uniform float uProj22;
+uniform float uProj32;
+uniform uint uBladeCount;
+uniform uint uPatchSize;
+uniform int uTestPatch;
+uniform int uTestOrientation;
+uniform int uTestFrustum;
+uniform int uTestDistance;
+uniform int uTestOcclusion;
+uniform int uDistanceClasses;
+uniform float uMaxDistance;
+uniform int uCollectStats;
+
+// Clip-space slack of the frustum test: blades have width and bend between the three tested
+// points, so a blade whose points sit just outside the view may still reach into it.
+const float FRUSTUM_TOLERANCE = 0.1;
+// Occlusion bias: a blade's root lies on the terrain, at the depth of the terrain, and the
+// depth texel it samples may hold slightly nearer terrain on slopes seen at a grazing angle.
+// A point counts as hidden only when it is behind the opaque depth by this much (metres plus a
+// share of the distance, which grows with depth quantisation and texel footprint).
+const float OCCLUSION_BIAS_M = 0.1;
+const float OCCLUSION_BIAS_RELATIVE = 0.02;
+
+const uint RESULT_VISIBLE = 0u;
+const uint RESULT_PATCH = 1u;
+const uint RESULT_ORIENTATION = 2u;
+const uint RESULT_FRUSTUM = 3u;
+const uint RESULT_DISTANCE = 4u;
+const uint RESULT_OCCLUSION = 5u;
+const uint RESULT_SKIPPED = 6u;
+
+shared uint sCounts[6];
+shared uint sSurvivors;
+shared uint sBase;
+
+bool boxOutsideFrustum(vec3 lo, vec3 hi) {
+    // Outside when all eight corners lie beyond the same clip plane (conservative).
+    uvec3 allLow = uvec3(1u), allHigh = uvec3(1u);
+    for (int i = 0; i < 8; ++i) {
+        vec3 corner = vec3((i & 1) != 0 ? hi.x : lo.x, (i & 2) != 0 ? hi.y : lo.y,
+                           (i & 4) != 0 ? hi.z : lo.z);
+        vec4 clip = uViewProj * vec4(corner, 1.0);
+        allLow &= uvec3(lessThan(clip.xyz, vec3(-clip.w)));
+        allHigh &= uvec3(greaterThan(clip.xyz, vec3(clip.w)));
+    }
+    return any(notEqual(allLow | allHigh, uvec3(0u)));
+}
+
+bool insideFrustum(vec4 clip) {
+    float limit = clip.w * (1.0 + FRUSTUM_TOLERANCE);
+    return clip.w > 0.0 && all(lessThanEqual(abs(clip.xy), vec2(limit))) && clip.z >= -clip.w &&
+           clip.z <= clip.w;
+}
+
+bool hiddenByOpaque(vec4 clip) {
+    // Points behind the camera or off screen have no depth to compare with: not hidden.
+    if (clip.w <= 0.0)
+        return false;
+    vec3 ndc = clip.xyz / clip.w;
+    if (any(greaterThan(abs(ndc.xy), vec2(1.0))))
+        return false;
+    float depth = textureLod(uSceneDepth, ndc.xy * 0.5 + 0.5, 0.0).r;
+    if (depth >= 1.0)
+        return false;  // sky: nothing opaque there
+    float opaqueDistance = uProj32 / ((2.0 * depth - 1.0) + uProj22);
+    float bias = OCCLUSION_BIAS_M + OCCLUSION_BIAS_RELATIVE * opaqueDistance;
+    return clip.w > opaqueDistance + bias;
+}
+
+uint classify(uint index) {
+    Blade blade = blades[index];
+    if (blade.v1H.w <= 0.0)
+        return RESULT_SKIPPED;
+    vec3 v0 = blade.v0Theta.xyz;
+    vec3 v1 = blade.v1H.xyz;
+    vec3 v2 = blade.v2W.xyz;
+    vec3 up = blade.upS.xyz;
+    uint patchIndex = index / uPatchSize;
+    if (uTestPatch != 0 &&
+        boxOutsideFrustum(patchBounds[2u * patchIndex].xyz, patchBounds[2u * patchIndex + 1u].xyz))
+        return RESULT_PATCH;
+    // Orientation: a blade seen edge-on is thinner than a pixel and only aliases.
+    vec3 toBlade = v0 - uCameraPosition;
+    if (uTestOrientation != 0 && dot(toBlade, toBlade) > 0.0) {
+        vec3 dirView = normalize(toBlade);
+        vec3 dirWidth = widthDirection(up, blade.v0Theta.w);
+        if (abs(dot(dirView, dirWidth)) > 0.9)
+            return RESULT_ORIENTATION;
+    }
+    vec3 m = 0.25 * v0 + 0.5 * v1 + 0.25 * v2;
+    vec4 clipV0 = uViewProj * vec4(v0, 1.0);
+    vec4 clipM = uViewProj * vec4(m, 1.0);
+    vec4 clipV2 = uViewProj * vec4(v2, 1.0);
+    if (uTestFrustum != 0 && !insideFrustum(clipV0) && !insideFrustum(clipM) &&
+        !insideFrustum(clipV2))
+        return RESULT_FRUSTUM;
+    // Distance: thin the field towards uMaxDistance by keeping fewer of n classes (i mod n).
+    if (uTestDistance != 0) {
+        float dproj = length(toBlade - up * dot(toBlade, up));
+        float n = float(uDistanceClasses);
+        uint kept = uint(ceil(n * max(1.0 - dproj / uMaxDistance, 0.0)));
+        if (index % uint(uDistanceClasses) >= kept)
+            return RESULT_DISTANCE;
+    }
+    if (uTestOcclusion != 0 && hiddenByOpaque(clipV0) && hiddenByOpaque(clipM) &&
+        hiddenByOpaque(clipV2))
+        return RESULT_OCCLUSION;
+    return RESULT_VISIBLE;
+}
+
+void main() {
+    uint index = gl_GlobalInvocationID.x;
+    if (gl_LocalInvocationIndex < 6u)
+        sCounts[gl_LocalInvocationIndex] = 0u;
+    if (gl_LocalInvocationIndex == 0u)
+        sSurvivors = 0u;
+    barrier();
+    uint result = index < uBladeCount ? classify(index) : RESULT_SKIPPED;
+    // Survivors take a slot in shared memory; one global atomic per group reserves the range
+    // (contended global atomics per blade cost more than the tests on CPU rasterizers).
+    uint localSlot = 0u;
+    if (result == RESULT_VISIBLE)
+        localSlot = atomicAdd(sSurvivors, 1u);
+    // Statistics are summed in shared memory first: one global atomic per counter and group.
+    if (uCollectStats != 0 && result != RESULT_SKIPPED) {
+        atomicAdd(sCounts[0], 1u);
+        if (result != RESULT_VISIBLE)
+            atomicAdd(sCounts[result], 1u);
+    }
+    barrier();
+    if (gl_LocalInvocationIndex == 0u && sSurvivors != 0u) {
+        sBase = atomicAdd(commands[1], sSurvivors);
+        atomicAdd(commands[4], sSurvivors);
+    }
+    if (uCollectStats != 0 && gl_LocalInvocationIndex < 6u &&
+        sCounts[gl_LocalInvocationIndex] != 0u)
+        atomicAdd(counters[gl_LocalInvocationIndex], sCounts[gl_LocalInvocationIndex]);
+    barrier();
+    if (result == RESULT_VISIBLE)
+        visible[sBase + localSlot] = index;
+}

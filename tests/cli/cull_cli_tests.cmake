@@ -1,0 +1,18 @@
+# CLI tests of `grass render --cull` and `--stats` (SPEC §6). Included from cli_tests.cmake,
+# after grass_cli_test() is defined; tiny project, tiny image, one frame.
+
+grass_cli_test(render_cull_stats GL OK
+    --stdout "^  culling +[0-9]+ in, [0-9]+ drawn"
+    --file ${GRASS_CLI_TMP}/cull-stats.json "\"blades_in\": [0-9]+"
+    --file ${GRASS_CLI_TMP}/cull-stats.json "\"culled\": \\{\"patch\": [0-9]+, \"orientation\": [0-9]+, \"frustum\": [0-9]+, \"distance\": [0-9]+, \"occlusion\": [0-9]+\\}"
+    --file ${GRASS_CLI_TMP}/cull-stats.json "\"ms\": \\{\"physics\": "
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_TMP}/cull.png
+       --width 64 --height 48 --frames 1 --cull frustum,distance --stats ${GRASS_CLI_TMP}/cull-stats.json)
+grass_cli_test(render_cull_none_draws_all GL OK
+    --stdout "^  culling +([0-9]+) in, [0-9]+ drawn \\(100\\.0 %\\)"
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_TMP}/cull-none.png
+       --width 64 --height 48 --frames 1 --cull none)
+grass_cli_test(render_cull_unknown_test ERROR "--cull" --also "orientation, frustum, distance, occlusion"
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --cull orientation,sideways)
+grass_cli_test(render_stats_folder_missing ERROR "no-such-folder"
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --stats ${GRASS_CLI_TMP}/no-such-folder/s.json)
