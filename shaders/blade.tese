@@ -8,6 +8,8 @@ in int tcBladeIndex[];
 
 uniform mat4 uViewProj;
 uniform int uShape;
+uniform float uTipStart;
+uniform float uPixelScale;  // projection[1][1] · viewport height / 2; 0: no width correction
 
 out vec3 vPosition;
 out vec3 vNormal;
@@ -16,7 +18,10 @@ out float vHeight;
 
 void main() {
     Blade blade = blades[tcBladeIndex[0]];
-    BladeSurfacePoint point = bladeSurface(blade, gl_TessCoord.x, gl_TessCoord.y, uShape);
+    // The level along v (outer 0) places the vertices at v = i/level, as the strips' segments do.
+    BladeShapeParams shape =
+        BladeShapeParams(uShape, uTipStart, gl_TessLevelOuter[0], uViewProj, uPixelScale);
+    BladeSurfacePoint point = bladeSurface(blade, gl_TessCoord.x, gl_TessCoord.y, shape);
     vPosition = point.position;
     vNormal = point.normal;
     vUp = blade.upS.xyz;

@@ -8,6 +8,8 @@
 uniform mat4 uViewProj;
 uniform int uSegments;
 uniform int uShape;
+uniform float uTipStart;
+uniform float uPixelScale;  // projection[1][1] · viewport height / 2; 0: no width correction
 
 out vec3 vPosition;
 out vec3 vNormal;
@@ -19,7 +21,9 @@ void main() {
     int segment = gl_VertexID >> 1;
     float u = float(gl_VertexID & 1);
     float v = float(segment) / float(uSegments);
-    BladeSurfacePoint point = bladeSurface(blade, u, v, uShape);
+    BladeShapeParams shape =
+        BladeShapeParams(uShape, uTipStart, float(uSegments), uViewProj, uPixelScale);
+    BladeSurfacePoint point = bladeSurface(blade, u, v, shape);
     // Padding blades (h = 0) collapse to a point and produce no fragments.
     if (blade.v1H.w <= 0.0) point.position = blade.v0Theta.xyz;
     vPosition = point.position;

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "blade/blade_shape.h"
 #include "mesh/procedural.h"
 #include "physics/physics.h"
 #include "scatter/scatter.h"
@@ -32,7 +33,13 @@ struct MeshSource {
 struct GrassLayer {
     std::string name = "grass";
     ScatterParams scatter;
-    std::string densityMap;                    // relative path, empty = uniform
+    std::string densityMap;  // relative path, empty = uniform
+    // Outline of every blade of the layer (SPEC §7); triangle is what files without the key got
+    // before shapes were per layer.
+    BladeShape shape = BladeShape::Triangle;
+    // τ of the triangle-tip shape: the height (0 root, 1 tip) where the blade starts to narrow;
+    // in [0, 1). Other shapes ignore it.
+    float tipStart = 0.5f;
     glm::vec3 rootColor{0.10f, 0.28f, 0.05f};  // linear RGB
     glm::vec3 tipColor{0.45f, 0.70f, 0.20f};
     bool operator==(const GrassLayer&) const = default;

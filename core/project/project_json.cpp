@@ -30,9 +30,9 @@ constexpr std::array<std::string_view, 12> TOP_KEYS{"format", "version", "name",
 constexpr std::array<std::string_view, 8> MESH_KEYS{"file",       "procedural",  "size",
                                                     "minor_size", "hill_height", "hill_scale",
                                                     "resolution", "noise_seed"};
-constexpr std::array<std::string_view, 9> LAYER_KEYS{
-    "name",         "density", "density_map", "clump_spacing", "blades_per_clump",
-    "clump_radius", "blade",   "root_color",  "tip_color"};
+constexpr std::array<std::string_view, 11> LAYER_KEYS{
+    "name",  "density", "density_map", "clump_spacing", "blades_per_clump", "clump_radius",
+    "blade", "shape",   "tip_start",   "root_color",    "tip_color"};
 constexpr std::array<std::string_view, 3> BLADE_KEYS{"height", "width", "stiffness"};
 constexpr std::array<std::string_view, 4> CAMERA_KEYS{"name", "position", "target", "fov_y_deg"};
 constexpr std::array<std::string_view, 3> SUN_KEYS{"direction", "color", "intensity"};
@@ -114,6 +114,13 @@ void readLayer(json::Reader& reader, const Json& node, const std::string& pointe
         ranges.readRange("width", json::POSITIVE, b.widthMin, b.widthMax);
         ranges.readRange("stiffness", json::NON_NEGATIVE, b.stiffnessMin, b.stiffnessMax);
     }
+    if (const Json* shape = object.find("shape")) {
+        std::size_t index = 0;
+        if (reader.readEnum(*shape, object.pointerTo("shape"), bladeShapeNames(), index))
+            layer.shape = static_cast<BladeShape>(index);
+    }
+    // τ = 1 would divide by zero in the triangle-tip shape (1 − τ).
+    object.readFloat("tip_start", json::NumberRule{0.0, 1.0, false, true}, layer.tipStart);
     object.readVec3("root_color", json::UNIT_INTERVAL, RGB, layer.rootColor);
     object.readVec3("tip_color", json::UNIT_INTERVAL, RGB, layer.tipColor);
 }
@@ -269,6 +276,8 @@ Json layerJson(const GrassLayer& layer) {
     blade["width"] = jsonRange(s.blade.widthMin, s.blade.widthMax);
     blade["stiffness"] = jsonRange(s.blade.stiffnessMin, s.blade.stiffnessMax);
     out["blade"] = std::move(blade);
+    out["shape"] = std::string(bladeShapeName(layer.shape));
+    out["tip_start"] = jsonFloat(layer.tipStart);
     out["root_color"] = jsonVec3(layer.rootColor);
     out["tip_color"] = jsonVec3(layer.tipColor);
     return out;

@@ -102,6 +102,8 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
         field.patched = buildPatches(scattered.blades, project.render.patchSize);
         field.rootColor = layer.rootColor;
         field.tipColor = layer.tipColor;
+        field.shape = layer.shape;
+        field.tipStart = layer.tipStart;
         scene.layers.push_back(std::move(field));
     }
     return scene;

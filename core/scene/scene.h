@@ -19,6 +19,9 @@ struct LayerField {
     std::size_t liveBlades = 0;
     glm::vec3 rootColor{0.0f};
     glm::vec3 tipColor{0.0f};
+    // The layer's blade outline and triangle-tip τ (SPEC §7), for the blade shaders.
+    BladeShape shape = BladeShape::Triangle;
+    float tipStart = 0.5f;
 };
 
 struct Scene {

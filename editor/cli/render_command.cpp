@@ -27,7 +27,7 @@ double msSince(Clock::time_point start) {
 
 struct RenderArgs {
     std::string project, mesh, out, camera, geometry = "project", msaa = "project";
-    std::string backend = "gpu";
+    std::string backend = "gpu", shape = "project";
     std::string cull = "all", stats;
     double timeS = 0.0;
     int width = 0, height = 0, frames = 3, blades = 60000;
@@ -158,6 +158,9 @@ int runRender(const std::vector<std::string>& argv) {
                   "blade geometry path: tessellation shaders or instanced strips; auto = strips on "
                   "software GL, tessellation on a GPU",
                   &args.geometry);
+    parser.choice(
+        "--shape", {"project", "quad", "triangle", "quadratic", "triangle-tip", "dandelion"},
+        "blade outline for every layer (SPEC §7); project = each layer's own", &args.shape);
     parser.choice("--msaa", {"project", "0", "1", "2", "4", "8"},
                   "multisample anti-aliasing samples per pixel", &args.msaa);
     parser.integer("--frames", "frames to draw and time", &args.frames, 1, 1000);
@@ -268,6 +271,10 @@ int runRender(const std::vector<std::string>& argv) {
     // Counters are read once after the last frame: cheap for a one-shot render.
     request.options.cull = *cullSettings;
     request.options.cull.collectStats = true;
+    if (args.shape != "project") {
+        if (auto shape = core::parseBladeShape(args.shape))
+            request.options.shape = *shape;
+    }
 
     auto rendered = render::renderOffscreen(scene, *camera, request);
     if (!rendered) {

@@ -109,7 +109,10 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     const gl::Program& program = tessellate ? mTessProgram : mStripProgram;
     program.use();
     program.set("uViewProj", viewProj);
-    program.set("uShape", 1);  // triangle; per-layer shapes arrive with issue 5
+    // Pixels that a length of 1 at view depth 1 covers, for the width correction (SPEC §7).
+    program.set("uPixelScale", options.widthCorrection
+                                   ? projection[1][1] * 0.5f * static_cast<float>(height)
+                                   : 0.0f);
     program.set("uSegments", segments);
     program.set("uTessLevel", static_cast<float>(std::max(options.tessLevel, 1)));
     setLighting(program, options);
@@ -117,6 +120,9 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     for (auto& field : mFields) {
         program.set("uRootColor", field.field().rootColor);
         program.set("uTipColor", field.field().tipColor);
+        const core::BladeShape shape = options.shape.value_or(field.field().shape);
+        program.set("uShape", static_cast<int>(shape));
+        program.set("uTipStart", field.field().tipStart);
         if (tessellate)
             field.drawTessellated();
         else

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "cull_pass.h"
@@ -27,6 +28,11 @@ struct RenderOptions {
     glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
     // Per-blade culling (SPEC §6); all tests off draws every blade.
     CullSettings cull;
+    // Draws every layer with this shape instead of its own (`grass render --shape`).
+    std::optional<core::BladeShape> shape;
+    // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for
+    // tests that measure a shape alone.
+    bool widthCorrection = true;
 };
 
 // Project settings → options; Auto picks strips on software rasterizers (SPEC §7 figures).

@@ -11,7 +11,19 @@ struct BladeSurfacePoint {
     float v;       // 0 at the root, 1 at the tip
 };
 
-BladeSurfacePoint bladeSurface(Blade blade, float u, float v, int shape) {
+// What the shape needs besides the blade: the layer's shape id and τ, the vertices along v
+// (both paths place them at v = i/level), and for the width correction the view-projection
+// and the pixels a length of 1 covers at distance 1 (projection[1][1] · viewport height / 2;
+// 0 turns the correction off).
+struct BladeShapeParams {
+    int shape;
+    float tipStart;
+    float level;
+    mat4 viewProj;
+    float pixelScale;
+};
+
+BladeSurfacePoint bladeSurface(Blade blade, float u, float v, BladeShapeParams params) {
     vec3 v0 = blade.v0Theta.xyz;
     vec3 v1 = blade.v1H.xyz;
     vec3 v2 = blade.v2W.xyz;
@@ -20,11 +32,23 @@ BladeSurfacePoint bladeSurface(Blade blade, float u, float v, int shape) {
     vec3 t1 = widthDirection(up, blade.v0Theta.w);
     vec3 c = bezierPoint(v0, v1, v2, v);
     vec3 tangent = bezierTangent(v0, v1, v2, v);
-    float t = shapeT(shape, u, v, 0.5);
-    BladeSurfacePoint point;
-    point.position = mix(c - w * t1, c + w * t1, t);
     vec3 n = cross(tangent, t1);
-    point.normal = dot(n, n) > 1e-20 ? normalize(n) : normalize(cross(up, t1));
+    n = dot(n, n) > 1e-20 ? normalize(n) : normalize(cross(up, t1));
+    float t = shapeT(params.shape, u, v, params.tipStart, params.level);
+    // Projected full width (2w) at the curve point; clip w is the view depth of a perspective
+    // projection.
+    float depth = (params.viewProj * vec4(c, 1.0)).w;
+    float widthPx = params.pixelScale > 0.0 && depth > 0.0
+                        ? 2.0 * w * params.pixelScale / depth
+                        : -1.0;
+    t = widthCorrectedT(t, u, widthPx);
+    // V-shaped fold along the midrib (SPEC §7): at the root the mid line u = 0.5 stands w/2 off
+    // the edges along n; towards the tip the edges rise to it. Only geometry with a vertex at
+    // u = 0.5 shows the V; both paths today have u ∈ {0, 1}, so they draw the edges' offset.
+    vec3 fold = w * n * (0.5 - abs(u - 0.5) * (1.0 - v));
+    BladeSurfacePoint point;
+    point.position = mix(c - w * t1, c + w * t1, t) + fold;
+    point.normal = n;
     point.v = v;
     return point;
 }

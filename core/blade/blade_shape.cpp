@@ -1,0 +1,30 @@
+#include "blade/blade_shape.h"
+
+#include <string>
+
+namespace grass::core {
+
+const std::array<std::string_view, BLADE_SHAPE_COUNT>& bladeShapeNames() {
+    static constexpr std::array<std::string_view, BLADE_SHAPE_COUNT> NAMES{
+        "quad", "triangle", "quadratic", "triangle-tip", "dandelion"};
+    return NAMES;
+}
+
+std::string_view bladeShapeName(BladeShape shape) {
+    const auto index = static_cast<std::size_t>(shape);
+    return index < BLADE_SHAPE_COUNT ? bladeShapeNames()[index] : "triangle";
+}
+
+Result<BladeShape> parseBladeShape(std::string_view name) {
+    const auto& names = bladeShapeNames();
+    std::string valid;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (names[i] == name)
+            return static_cast<BladeShape>(i);
+        valid += (i ? ", \"" : "\"") + std::string(names[i]) + "\"";
+    }
+    return makeError("",
+                     "unknown blade shape \"" + std::string(name) + "\" (valid: " + valid + ")");
+}
+
+}  // namespace grass::core
