@@ -3,6 +3,7 @@
 // lists them in the order they are written.
 #include <array>
 
+#include "collider/sphere_packing.h"
 #include "project/project_json_parts.h"
 
 namespace grass::core::json {
@@ -34,9 +35,6 @@ constexpr std::string_view XYZ = "[x, y, z]";
 constexpr NumberRule STEP_RULE{0.0, 60.0, true, false};
 constexpr NumberRule MOVE_RULE{0.0, 1.0, true, false};
 constexpr std::int64_t MAX_SUBSTEPS = 64;
-constexpr std::int64_t MAX_PACKED_SPHERES = 4096;
-constexpr std::int64_t MIN_PACKING_RESOLUTION = 8;
-constexpr std::int64_t MAX_PACKING_RESOLUTION = 256;
 
 void readGravity(Reader& reader, const Json& node, PhysicsParams& physics) {
     Object object(reader, node, "/physics/gravity", GRAVITY_KEYS);

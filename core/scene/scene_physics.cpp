@@ -1,17 +1,85 @@
 #include "scene/scene_physics.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <span>
 
+#include "collider/packing_cache.h"
 #include "mesh/gltf_loader.h"
 
 namespace grass::core {
 
 namespace {
 
-Result<void> addMeshCollider(const LoadedProject& loaded, const ColliderDesc&, std::size_t index,
-                             ScenePhysics&) {
-    return makeError(loaded.file.string(), "/colliders/" + std::to_string(index) +
-                                                  ": mesh colliders are not supported by this build yet");
+std::string formatPercent(float share) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f %%", static_cast<double>(share) * 100.0);
+    return text;
+}
+
+// One bounding sphere around spheres that move together (a packed mesh), stored on the first so
+// blades out of its reach skip the whole group (SphereCollider::groupSize).
+void addBroadPhase(std::span<SphereCollider> group) {
+    if (group.size() < 2)
+        return;
+    glm::vec3 low = group[0].centre, high = group[0].centre;
+    for (const SphereCollider& sphere : group) {
+        low = glm::min(low, sphere.centre - sphere.radiusM);
+        high = glm::max(high, sphere.centre + sphere.radiusM);
+    }
+    const glm::vec3 centre = 0.5f * (low + high);
+    float radius = 0.0f;
+    for (const SphereCollider& sphere : group)
+        radius = std::max(radius, glm::length(sphere.centre - centre) + sphere.radiusM);
+    SphereCollider& head = group[0];
+    head.groupSize = static_cast<std::uint32_t>(group.size());
+    head.boundOffset = centre - head.centre;
+    // A little slack so float rounding of the moved centres never makes the bound too tight.
+    head.boundRadiusM = radius * (1.0f + 1e-5f) + 1e-6f;
+}
+
+// The packed spheres of one mesh collider, placed in the world: centre = position + scale·c,
+// radius scale·r; a path moves every sphere by the same offset.
+Result<void> addMeshCollider(const LoadedProject& loaded, const ColliderDesc& collider,
+                             std::size_t index, ScenePhysics& out) {
+    const std::string field = "/colliders/" + std::to_string(index) + "/file";
+    auto file = resolveAssetPath(loaded.folder, collider.file, field);
+    if (!file)
+        return Error{loaded.file.string(), file.error().message};
+    auto imported = loadGltf(*file);
+    if (!imported)
+        return imported.error();
+    SpherePackingParams params;
+    params.sphereCount = collider.sphereCount;
+    params.resolution = collider.packingResolution;
+    const std::filesystem::path cache = packingCachePath(loaded.folder, *file, params);
+    bool fromCache = false;
+    auto packing = loadOrPackSpheres(*file, imported->mesh, params, cache, &fromCache);
+    if (!packing) {
+        Error error = packing.error();
+        if (error.path.empty())
+            error.path = file->string();
+        return error;
+    }
+    out.notes.push_back("collider " + collider.name + ": " + collider.file + " as " +
+                        std::to_string(packing->spheres.size()) + " spheres (" +
+                        (fromCache ? "cached in " : "packed, cached in ") + cache.string() +
+                        "): " + formatPercent(packing->insideShare) + " of their volume inside, " +
+                        formatPercent(packing->coverage) + " of the mesh covered");
+    const std::size_t first = out.colliders.size();
+    for (const PackedSphere& packed : packing->spheres) {
+        SphereCollider sphere;
+        const glm::vec3 offset = collider.scale * packed.centre;
+        sphere.centre = collider.position + offset;
+        sphere.radiusM = collider.scale * packed.radiusM;
+        for (PathKey key : collider.path) {
+            key.posWorld += offset;
+            sphere.path.push_back(key);
+        }
+        out.colliders.push_back(std::move(sphere));
+    }
+    addBroadPhase(std::span(out.colliders).subspan(first));
+    return {};
 }
 
 }  // namespace

@@ -146,6 +146,27 @@ grass_cli_test(sim_windy_gpu GL OK
 grass_cli_test(render_time GL OK --png ${GRASS_CLI_TMP}/windy.png 64 48
     --stdout "^simulated +1\\.000 s in 50 steps on the gpu" --stdout "^wrote .*windy\\.png"
     -- ${GRASS_BIN} render ${WINDY} --time 1 --out ${GRASS_CLI_TMP}/windy.png --frames 1)
+# A mesh collider packs into spheres once and caches them next to the project: the project is
+# copied out of the source tree first (the cache must not land in tests/data).
+set(ROCK ${GRASS_CLI_TMP}/rock)
+add_test(NAME cli.sim_rock_setup COMMAND ${CMAKE_COMMAND} -E rm -rf ${ROCK})
+add_test(NAME cli.sim_rock_copy
+         COMMAND ${CMAKE_COMMAND} -E copy_directory ${GRASS_CLI_PROJECTS}/rock ${ROCK})
+set_tests_properties(cli.sim_rock_setup PROPERTIES LABELS cli FIXTURES_SETUP rock_clean)
+set_tests_properties(cli.sim_rock_copy PROPERTIES LABELS cli FIXTURES_SETUP rock_copy
+    FIXTURES_REQUIRED rock_clean DEPENDS cli.sim_rock_setup)
+grass_cli_test(sim_rock_packs OK
+    --stdout "^  scene .*16 collider sphere\\(s\\)$"
+    --stderr "^note: collider cube: cube.glb as 16 spheres \\(packed, cached in .*\\): 100\\.0 % of their volume inside, [0-9.]+ % of the mesh covered$"
+    --file ${ROCK}/.grass-cache/cube.16-24.spheres.json "grass-sphere-packing"
+    -- ${GRASS_BIN} sim ${ROCK} --seconds 0.2)
+grass_cli_test(sim_rock_cached OK --stdout "^  scene .*16 collider sphere\\(s\\)$"
+    --stderr "^note: collider cube: cube.glb as 16 spheres \\(cached in "
+    -- ${GRASS_BIN} sim ${ROCK} --seconds 0.2)
+set_tests_properties(cli.sim_rock_packs PROPERTIES FIXTURES_REQUIRED rock_copy
+    FIXTURES_SETUP rock_packed)
+set_tests_properties(cli.sim_rock_cached PROPERTIES FIXTURES_REQUIRED "rock_copy;rock_packed"
+    DEPENDS cli.sim_rock_packs)
 grass_cli_test(sim_seconds_negative ERROR "--seconds" -- ${GRASS_BIN} sim ${WINDY} --seconds -1)
 grass_cli_test(sim_dt_zero ERROR "--dt" -- ${GRASS_BIN} sim ${WINDY} --dt 0)
 grass_cli_test(sim_dt_not_a_number ERROR "--dt" -- ${GRASS_BIN} sim ${WINDY} --dt fast)
@@ -256,3 +277,5 @@ if(TARGET grass-editor)
     grass_cli_test(editor_project_negative_density ERROR "/layers/0/density"
         -- $<TARGET_FILE:grass-editor> ${GRASS_CLI_PROJECTS}/negative_density)
 endif()
+include(${GRASS_CLI_DIR}/cull_cli_tests.cmake)
+include(${GRASS_CLI_DIR}/shape_cli_tests.cmake)

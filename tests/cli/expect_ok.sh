@@ -5,6 +5,7 @@
 #
 #   --stdout REGEX         some line of stdout matches the extended regular expression
 #                          (grep -E); repeatable, each must match
+#   --stderr REGEX         some line of stderr matches (grep -E); repeatable
 #   --no-stderr            stderr holds nothing but "note: " lines
 #   --png FILE W H         FILE is removed before the run; afterwards it must exist, be a PNG
 #                          (signature and IHDR chunk) and be W x H pixels
@@ -22,6 +23,7 @@ usage() {
 }
 
 patterns=()
+stderrPatterns=()
 noStderr=0
 pngFile=""
 pngWidth=0
@@ -32,6 +34,11 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do
         --stdout)
             [ $# -ge 2 ] || usage
             patterns+=("$2")
+            shift 2
+            ;;
+        --stderr)
+            [ $# -ge 2 ] || usage
+            stderrPatterns+=("$2")
             shift 2
             ;;
         --no-stderr)
@@ -80,6 +87,10 @@ fi
 
 for pattern in ${patterns[@]+"${patterns[@]}"}; do
     grep -Eq -- "$pattern" "$work/stdout" || failures+=("no line of stdout matches /$pattern/")
+done
+
+for pattern in ${stderrPatterns[@]+"${stderrPatterns[@]}"}; do
+    grep -Eq -- "$pattern" "$work/stderr" || failures+=("no line of stderr matches /$pattern/")
 done
 
 for ((i = 0; i < ${#fileChecks[@]}; i += 2)); do

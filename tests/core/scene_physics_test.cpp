@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
+#include "support/test_paths.h"
+
 namespace grass::core {
 namespace {
 
@@ -91,6 +95,72 @@ TEST(ScenePhysics, StillProjectStaysStill) {
         simulation.step();
     EXPECT_EQ(scene->layers[0].patched.blades, before);
     EXPECT_EQ(simulation.health().maxTipDisplacementM, 0.0);
+}
+
+}  // namespace
+}  // namespace grass::core
+
+namespace grass::core {
+namespace {
+
+// A mesh collider becomes its packed spheres placed in the world: centre = position + scale·c,
+// radius scale·r, and a path moves every sphere by the same offset.
+TEST(ScenePhysics, MeshColliderIsPlacedPackedSpheres) {
+    const auto folder = test::scratchDir("scene_physics_mesh_collider");
+    std::filesystem::copy_file(test::sourceDir() / "tests/data/gltf/cube.glb", folder / "cube.glb",
+                               std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::remove_all(folder / ".grass-cache");
+    LoadedProject loaded;
+    loaded.folder = folder;
+    loaded.file = folder / "project.json";
+    ColliderDesc rock;
+    rock.name = "rock";
+    rock.shape = ColliderShape::Mesh;
+    rock.file = "cube.glb";
+    rock.scale = 2.0f;
+    rock.sphereCount = 8;
+    rock.packingResolution = 16;
+    rock.position = {10.0f, 0.0f, 0.0f};
+    rock.path = {{0.0f, {10.0f, 0.0f, 0.0f}}, {1.0f, {12.0f, 0.0f, 0.0f}}};
+    loaded.project.colliders = {rock};
+
+    auto physics = buildScenePhysics(loaded);
+    ASSERT_TRUE(physics) << physics.error().str();
+    ASSERT_EQ(physics->notes.size(), 1u);
+    EXPECT_NE(physics->notes[0].find("packed"), std::string::npos) << physics->notes[0];
+    ASSERT_FALSE(physics->colliders.empty());
+    ASSERT_LE(physics->colliders.size(), 8u);
+    // cube.glb spans [-0.5, 0.5, -0.5] .. [0.5, 1.5, 0.5]; scaled by 2 and moved by +10 in x.
+    for (const SphereCollider& sphere : physics->colliders) {
+        const glm::vec3 c = sphere.centre;
+        EXPECT_GE(c.x - sphere.radiusM, 9.0f - 1e-4f);
+        EXPECT_LE(c.x + sphere.radiusM, 11.0f + 1e-4f);
+        EXPECT_GE(c.y - sphere.radiusM, 1.0f - 1e-4f);
+        EXPECT_LE(c.y + sphere.radiusM, 3.0f + 1e-4f);
+        ASSERT_EQ(sphere.path.size(), 2u);
+        EXPECT_EQ(sphere.path[0].posWorld, c);
+        EXPECT_NEAR(glm::length(sphere.path[1].posWorld - c - glm::vec3(2.0f, 0.0f, 0.0f)), 0.0f,
+                    1e-5f);
+    }
+    // A second build reads the cache and places the same spheres.
+    auto again = buildScenePhysics(loaded);
+    ASSERT_TRUE(again) << again.error().str();
+    EXPECT_EQ(again->colliders, physics->colliders);
+    EXPECT_NE(again->notes[0].find("(cached in"), std::string::npos) << again->notes[0];
+}
+
+TEST(ScenePhysics, MissingColliderMeshIsNamed) {
+    LoadedProject loaded;
+    loaded.folder = test::scratchDir("scene_physics_missing_mesh");
+    loaded.file = loaded.folder / "project.json";
+    ColliderDesc rock;
+    rock.shape = ColliderShape::Mesh;
+    rock.file = "nowhere.glb";
+    loaded.project.colliders = {rock};
+    auto physics = buildScenePhysics(loaded);
+    ASSERT_FALSE(physics);
+    EXPECT_NE(physics.error().str().find("nowhere.glb"), std::string::npos)
+        << physics.error().str();
 }
 
 }  // namespace
