@@ -6,21 +6,15 @@
 
 #include <filesystem>
 
+#include "support/plane_project.h"
 #include "support/test_paths.h"
 
 namespace grass::core {
 namespace {
 
 LoadedProject rollingBallProject() {
-    LoadedProject loaded;
+    LoadedProject loaded = test::planeFieldProject({5.0f, 4, 150.0f, 0.3f, 0.5f});
     Project& project = loaded.project;
-    project.mesh.procedural.shape = ProceduralShape::Plane;
-    project.mesh.procedural.size = 5.0f;
-    project.mesh.procedural.resolution = 4;
-    project.layers[0].scatter.density = 150.0f;
-    project.layers[0].scatter.clumpSpacing = 0.0f;
-    project.layers[0].scatter.blade.heightMin = 0.3f;
-    project.layers[0].scatter.blade.heightMax = 0.5f;
     project.physics.etaDecayPerS = 0.1f;
     project.physics.crushedRecoveryFloor = 0.02f;
     ColliderDesc ball;

@@ -9,6 +9,7 @@
 #include "gl_context_fixture.h"
 #include "offscreen_render.h"
 #include "scatter/patches.h"
+#include "support/plane_project.h"
 #include "support/test_paths.h"
 
 namespace grass::test {
@@ -97,14 +98,8 @@ TEST_F(CullTest, OcclusionRemovesBladesBehindAWallAndNoneInFront) {
 // An 8 m × 8 m plane of ~19k blades, seen from 0.8 m above one edge looking across it: half
 // the field is behind or beside the camera.
 core::Scene fieldScene() {
-    core::LoadedProject loaded;
-    loaded.folder = sourceDir();
-    loaded.project.mesh.procedural.shape = core::ProceduralShape::Plane;
-    loaded.project.mesh.procedural.size = 8.0f;
-    loaded.project.mesh.procedural.resolution = 8;
-    loaded.project.layers.front().scatter.density = 300.0f;
-    loaded.project.layers.front().scatter.blade.heightMin = 0.3f;
-    loaded.project.layers.front().scatter.blade.heightMax = 0.5f;
+    const core::LoadedProject loaded =
+        planeFieldProject({8.0f, 8, 300.0f, 0.3f, 0.5f}, sourceDir());
     auto scene = core::buildScene(loaded);
     EXPECT_TRUE(scene.ok()) << scene.error().str();
     return std::move(*scene);

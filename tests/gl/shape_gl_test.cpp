@@ -9,6 +9,7 @@
 
 #include "gl_context_fixture.h"
 #include "offscreen_render.h"
+#include "support/plane_project.h"
 #include "support/test_paths.h"
 
 namespace grass::test {
@@ -21,16 +22,8 @@ constexpr int SIDE = 128;
 // 64 wide, short blades on a 1 m plane: sparse enough that blades seldom overlap, so the
 // covered area follows each blade's outline.
 core::Scene shapeScene() {
-    core::LoadedProject loaded;
-    loaded.folder = sourceDir();
-    loaded.project.mesh.procedural.shape = core::ProceduralShape::Plane;
-    loaded.project.mesh.procedural.size = 1.0f;
-    loaded.project.mesh.procedural.resolution = 2;
+    core::LoadedProject loaded = planeFieldProject({1.0f, 2, 64.0f, 0.25f, 0.35f}, sourceDir());
     core::GrassLayer& layer = loaded.project.layers.front();
-    layer.scatter.density = 64.0f;
-    layer.scatter.clumpSpacing = 0.0f;
-    layer.scatter.blade.heightMin = 0.25f;
-    layer.scatter.blade.heightMax = 0.35f;
     layer.scatter.blade.widthMin = 0.015f;
     layer.scatter.blade.widthMax = 0.02f;
     auto scene = core::buildScene(loaded);
