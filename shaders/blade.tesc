@@ -1,7 +1,9 @@
 #version 450 core
-// Tessellation control: the level along the blade (v) comes from uTessLevel; across it (u)
-// one segment is enough for a flat blade. Padding blades (h = 0) get level 0: discarded.
+// Tessellation control (Jahrmann §6): the level along the blade (v) follows the camera distance
+// with the same LOD steps the strips use (lod.glsl); across it (u) two segments put a vertex
+// column on the midrib for the V fold of SPEC §7. Padding blades (h = 0) get level 0: discarded.
 #include "blade.glsl"
+#include "lod.glsl"
 
 layout(vertices = 1) out;
 
@@ -9,15 +11,20 @@ in int vBladeIndex[];
 out int tcBladeIndex[];
 
 uniform float uTessLevel;
+uniform vec3 uCameraPosition;
+uniform float uLodDistance;
 
 void main() {
-    tcBladeIndex[gl_InvocationID] = vBladeIndex[gl_InvocationID];
-    float level = blades[vBladeIndex[0]].v1H.w > 0.0 ? uTessLevel : 0.0;
+    int index = vBladeIndex[0];
+    tcBladeIndex[gl_InvocationID] = index;
+    Blade blade = blades[index];
+    int lod = bladeLod(distance(blade.v0Theta.xyz, uCameraPosition), uLodDistance);
+    float level = blade.v1H.w > 0.0 ? float(lodSegments(int(uTessLevel), lod)) : 0.0;
     // Quads domain: outer 0 and 2 are the u = 0 and u = 1 edges (along v), 1 and 3 along u.
     gl_TessLevelOuter[0] = level;
-    gl_TessLevelOuter[1] = 1.0;
+    gl_TessLevelOuter[1] = 2.0;
     gl_TessLevelOuter[2] = level;
-    gl_TessLevelOuter[3] = 1.0;
-    gl_TessLevelInner[0] = 1.0;
+    gl_TessLevelOuter[3] = 2.0;
+    gl_TessLevelInner[0] = 2.0;
     gl_TessLevelInner[1] = level;
 }

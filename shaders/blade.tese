@@ -15,6 +15,7 @@ out vec3 vPosition;
 out vec3 vNormal;
 out vec3 vUp;
 out float vHeight;
+flat out uint vBladeIndex;
 
 void main() {
     Blade blade = blades[tcBladeIndex[0]];
@@ -26,5 +27,6 @@ void main() {
     vNormal = point.normal;
     vUp = blade.upS.xyz;
     vHeight = point.v;
+    vBladeIndex = uint(tcBladeIndex[0]);
     gl_Position = uViewProj * vec4(point.position, 1.0);
 }

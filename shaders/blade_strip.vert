@@ -1,7 +1,9 @@
 #version 450 core
-// Instanced-strip path (SPEC §7): one instance per blade, a triangle strip of
-// 2·(uSegments + 1) vertices; the curve is evaluated here. Cheap on software rasterizers.
-// Instances are the blades that survived the cull pass, read through the visible list.
+// Instanced-strip path (SPEC §7): one instance per blade of this draw's level of detail, a
+// triangle strip of 4·(uSegments + 1) vertices: the left half (u = 0, ½) from root to tip, then
+// the right half (u = 1, ½) from tip to root, so the midrib is a vertex column and the V fold
+// shows. The turn at the tip adds two zero-area triangles (all three tip points lie on one
+// line). The curve is evaluated here; instances are read through the visible list.
 #include "blade_geometry.glsl"
 #include "visible.glsl"
 
@@ -15,12 +17,24 @@ out vec3 vPosition;
 out vec3 vNormal;
 out vec3 vUp;
 out float vHeight;
+flat out uint vBladeIndex;
 
 void main() {
-    Blade blade = blades[visible[gl_InstanceID]];
-    int segment = gl_VertexID >> 1;
-    float u = float(gl_VertexID & 1);
-    float v = float(segment) / float(uSegments);
+    uint bladeIndex = visibleBlade(gl_InstanceID);
+    Blade blade = blades[bladeIndex];
+    int halfVertices = 2 * (uSegments + 1);
+    int row;
+    float u;
+    if (gl_VertexID < halfVertices) {
+        row = gl_VertexID >> 1;
+        u = (gl_VertexID & 1) != 0 ? 0.5 : 0.0;
+    } else {
+        // Winding stays counter-clockwise in (u, v): outer edge first on the way down.
+        int j = gl_VertexID - halfVertices;
+        row = uSegments - (j >> 1);
+        u = (j & 1) != 0 ? 0.5 : 1.0;
+    }
+    float v = float(row) / float(uSegments);
     BladeShapeParams shape =
         BladeShapeParams(uShape, uTipStart, float(uSegments), uViewProj, uPixelScale);
     BladeSurfacePoint point = bladeSurface(blade, u, v, shape);
@@ -30,5 +44,6 @@ void main() {
     vNormal = point.normal;
     vUp = blade.upS.xyz;
     vHeight = v;
+    vBladeIndex = bladeIndex;
     gl_Position = uViewProj * vec4(point.position, 1.0);
 }

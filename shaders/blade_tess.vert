@@ -6,5 +6,5 @@
 out int vBladeIndex;
 
 void main() {
-    vBladeIndex = int(visible[gl_VertexID]);
+    vBladeIndex = int(visibleBlade(gl_VertexID));
 }

@@ -3,9 +3,10 @@
 // multiple of 32 blades and the buffer is patch-major, so a work-group lies in one patch.
 // Stage 1: the patch's box against the view frustum. Stage 2, per blade: orientation, frustum,
 // distance, occlusion, in that order; a blade is counted by the first test that removes it.
-// Survivors append their index to the visible list and bump the instance count of the strip
-// command and the vertex count of the tessellation command (both reset to 0 before the dispatch).
+// Survivors append their index to the visible list of their level of detail (lod.glsl) and bump
+// that LOD's strip instance count and tessellation vertex count (reset to 0 before the dispatch).
 #include "blade.glsl"
+#include "lod.glsl"
 
 layout(local_size_x = 32) in;
 
@@ -13,13 +14,14 @@ layout(local_size_x = 32) in;
 layout(std430, binding = 1) readonly buffer PatchBoundsBuffer {
     vec4 patchBounds[];
 };
+// LOD_COUNT lists of uBladeCount entries each: LOD k's survivors start at k·uBladeCount.
 layout(std430, binding = 5) writeonly buffer VisibleBuffer {
     uint visible[];
 };
-// DrawArraysIndirectCommand ×2: [0..3] strips (count, instanceCount, first, baseInstance),
-// [4..7] tessellation patches.
+// DrawArraysIndirectCommand (count, instanceCount, first, baseInstance) per LOD: strips at
+// [4k .. 4k+3], tessellation patches at [4·LOD_COUNT + 4k ..].
 layout(std430, binding = 6) buffer CommandBuffer {
-    uint commands[8];
+    uint commands[8 * LOD_COUNT];
 };
 // Statistics: blades in, culled by patch, orientation, frustum, distance, occlusion.
 layout(std430, binding = 7) buffer CounterBuffer {
@@ -41,6 +43,7 @@ uniform int uTestDistance;
 uniform int uTestOcclusion;
 uniform int uDistanceClasses;
 uniform float uMaxDistance;
+uniform float uLodDistance;
 uniform int uCollectStats;
 
 // Clip-space slack of the frustum test: blades have width and bend between the three tested
@@ -62,8 +65,8 @@ const uint RESULT_OCCLUSION = 5u;
 const uint RESULT_SKIPPED = 6u;
 
 shared uint sCounts[6];
-shared uint sSurvivors;
-shared uint sBase;
+shared uint sSurvivors[LOD_COUNT];
+shared uint sBase[LOD_COUNT];
 
 bool boxOutsideFrustum(vec3 lo, vec3 hi) {
     // Outside when all eight corners lie beyond the same clip plane (conservative).
@@ -144,15 +147,18 @@ void main() {
     uint index = gl_GlobalInvocationID.x;
     if (gl_LocalInvocationIndex < 6u)
         sCounts[gl_LocalInvocationIndex] = 0u;
-    if (gl_LocalInvocationIndex == 0u)
-        sSurvivors = 0u;
+    if (gl_LocalInvocationIndex < uint(LOD_COUNT))
+        sSurvivors[gl_LocalInvocationIndex] = 0u;
     barrier();
     uint result = index < uBladeCount ? classify(index) : RESULT_SKIPPED;
-    // Survivors take a slot in shared memory; one global atomic per group reserves the range
-    // (contended global atomics per blade cost more than the tests on CPU rasterizers).
+    int lod = 0;
+    if (result == RESULT_VISIBLE)
+        lod = bladeLod(distance(blades[index].v0Theta.xyz, uCameraPosition), uLodDistance);
+    // Survivors take a slot in shared memory; one global atomic per group and LOD reserves the
+    // range (contended global atomics per blade cost more than the tests on CPU rasterizers).
     uint localSlot = 0u;
     if (result == RESULT_VISIBLE)
-        localSlot = atomicAdd(sSurvivors, 1u);
+        localSlot = atomicAdd(sSurvivors[lod], 1u);
     // Statistics are summed in shared memory first: one global atomic per counter and group.
     if (uCollectStats != 0 && result != RESULT_SKIPPED) {
         atomicAdd(sCounts[0], 1u);
@@ -160,14 +166,15 @@ void main() {
             atomicAdd(sCounts[result], 1u);
     }
     barrier();
-    if (gl_LocalInvocationIndex == 0u && sSurvivors != 0u) {
-        sBase = atomicAdd(commands[1], sSurvivors);
-        atomicAdd(commands[4], sSurvivors);
+    uint groupLod = gl_LocalInvocationIndex;
+    if (groupLod < uint(LOD_COUNT) && sSurvivors[groupLod] != 0u) {
+        sBase[groupLod] = atomicAdd(commands[4u * groupLod + 1u], sSurvivors[groupLod]);
+        atomicAdd(commands[4u * (uint(LOD_COUNT) + groupLod)], sSurvivors[groupLod]);
     }
     if (uCollectStats != 0 && gl_LocalInvocationIndex < 6u &&
         sCounts[gl_LocalInvocationIndex] != 0u)
         atomicAdd(counters[gl_LocalInvocationIndex], sCounts[gl_LocalInvocationIndex]);
     barrier();
     if (result == RESULT_VISIBLE)
-        visible[sBase + localSlot] = index;
+        visible[uint(lod) * uBladeCount + sBase[lod] + localSlot] = index;
 }

@@ -60,6 +60,36 @@ struct SunDesc {
     bool operator==(const SunDesc&) const = default;
 };
 
+// How blades are lit: SPEC §10's grass model, or the foundation's wrapped Lambert (kept for
+// comparison and for the lighting-off golden images).
+enum class LightingModel { Grass, Simple };
+
+// Grass lighting of SPEC §10 (article 003). Colours are multipliers of the sun colour; distances
+// are metres. The AO and blurred-normal terms are baked per blade when the scene is built.
+struct GrassLightingDesc {
+    LightingModel model = LightingModel::Grass;
+    // Diffuse ramp: NL ∈ [−1, 0] maps low → mid, NL ∈ [0, 1] mid → high.
+    glm::vec3 diffuseLow{0.18f, 0.20f, 0.16f};
+    glm::vec3 diffuseMid{0.45f, 0.48f, 0.40f};
+    glm::vec3 diffuseHigh{1.0f, 1.0f, 1.0f};
+    // Diffuse normal: the blade normal leaned this far towards the (SSS) terrain normal; a
+    // blade's own normal is nearly horizontal, so alone it paints a field in stripes.
+    float terrainNormalWeight = 0.5f;
+    float specular = 0.6f;                  // weight of the GGX lobes
+    glm::vec2 specularFadeM{0.5f, 6.0f};    // specular rises from 0 to full over these distances
+    float transmission = 0.8f;              // I of SPEC §10
+    float transmissionDistortion = 0.3f;    // k: fakeN = −normalize(mix(N, L, k))
+    float transmissionPower = 4.0f;         // e
+    float sss = 0.35f;                      // weight of the SSS term
+    float sssIntensity = 0.7f;              // terrain normal → blurred terrain normal
+    float aoRadiusM = 0.15f;                // Gaussian σ of the neighbour-density AO kernel
+    float aoStrength = 0.007f;              // m² one neighbour occludes (Beer–Lambert)
+    float aoFloor = 0.35f;                  // darkest AO
+    float normalBlurRadiusM = 0.75f;        // Gaussian σ of the terrain-normal blur
+    glm::vec2 water{0.15f, 0.6f};           // water of the oldest .. youngest blade
+    bool operator==(const GrassLightingDesc&) const = default;
+};
+
 enum class GeometryPath { Auto, Tessellation, Strips };
 
 struct RenderSettings {
@@ -108,6 +138,7 @@ struct Project {
     std::vector<GrassLayer> layers{GrassLayer{}};
     std::vector<CameraDesc> cameras{CameraDesc{}};
     SunDesc sun;
+    GrassLightingDesc lighting;
     RenderSettings render;
     // Physics: gravity and the integration policy (dtS is the simulation step), wind, colliders.
     PhysicsParams physics;

@@ -24,9 +24,9 @@ using json::readList;
 
 constexpr std::string_view FORMAT_NAME = "grass-project";
 
-constexpr std::array<std::string_view, 12> TOP_KEYS{"format", "version", "name",    "seed",
-                                                    "mesh",   "layers",  "cameras", "sun",
-                                                    "render", "physics", "wind",    "colliders"};
+constexpr std::array<std::string_view, 13> TOP_KEYS{
+    "format", "version", "name",    "seed", "mesh",     "layers",   "cameras",
+    "sun",    "lighting", "render", "physics", "wind", "colliders"};
 constexpr std::array<std::string_view, 8> MESH_KEYS{"file",       "procedural",  "size",
                                                     "minor_size", "hill_height", "hill_scale",
                                                     "resolution", "noise_seed"};
@@ -234,6 +234,8 @@ void readProject(json::Reader& reader, const Json& root, Project& project) {
     }
     if (const Json* sun = top.find("sun"))
         readSun(reader, *sun, project.sun);
+    if (const Json* lighting = top.find("lighting"))
+        json::readLighting(reader, *lighting, project.lighting);
     if (const Json* render = top.find("render"))
         readRender(reader, *render, project.render);
     if (const Json* physics = top.find("physics"))
@@ -401,6 +403,7 @@ std::string serializeProject(const Project& project) {
     document["sun"] = Json::object({{"direction", jsonVec3(project.sun.direction)},
                                     {"color", jsonVec3(project.sun.color)},
                                     {"intensity", jsonFloat(project.sun.intensity)}});
+    document["lighting"] = json::lightingJson(project.lighting);
     document["render"] = renderJson(project.render);
     document["physics"] = json::physicsJson(project.physics);
     document["wind"] = Json::array();

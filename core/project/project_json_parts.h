@@ -17,6 +17,10 @@ void readWind(Reader& reader, const Json& node, const std::string& pointer, Wind
 void readCollider(Reader& reader, const Json& node, const std::string& pointer,
                   ColliderDesc& collider);
 
+// lighting_json.cpp: "lighting" (SPEC §10).
+void readLighting(Reader& reader, const Json& node, GrassLightingDesc& lighting);
+Json lightingJson(const GrassLightingDesc& lighting);
+
 Json physicsJson(const PhysicsParams& physics);
 Json windJson(const WindDesc& wind);
 Json colliderJson(const ColliderDesc& collider);

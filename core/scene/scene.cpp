@@ -104,9 +104,24 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
         field.tipColor = layer.tipColor;
         field.shape = layer.shape;
         field.tipStart = layer.tipStart;
+        auto shading = bakeBladeShading(field.patched.blades, bladeShadingParams(project.lighting),
+                                        layerSeed);
+        if (!shading)
+            return Error{loaded.file.string(), "lighting: " + shading.error().str()};
+        field.shading = std::move(*shading);
         scene.layers.push_back(std::move(field));
     }
     return scene;
+}
+
+BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting) {
+    BladeShadingParams params;
+    params.aoRadiusM = lighting.aoRadiusM;
+    params.aoStrength = lighting.aoStrength;
+    params.aoFloor = lighting.aoFloor;
+    params.normalBlurRadiusM = lighting.normalBlurRadiusM;
+    params.waterRange = lighting.water;
+    return params;
 }
 
 Result<Scene> buildScene(const LoadedProject& loaded) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mesh/surface_mesh.h"
+#include "scene/blade_shading.h"
 #include "project/project.h"
 #include "scatter/patches.h"
 
@@ -22,6 +23,8 @@ struct LayerField {
     // The layer's blade outline and triangle-tip τ (SPEC §7), for the blade shaders.
     BladeShape shape = BladeShape::Triangle;
     float tipStart = 0.5f;
+    // Lighting inputs baked per blade slot (SPEC §10), index for index with patched.blades.
+    std::vector<BladeShading> shading;
 };
 
 struct Scene {
@@ -41,7 +44,11 @@ inline constexpr double MAX_SCENE_BLADES = 20.0e6;
 // clumps, the densest Poisson-disk packing (hexagonal, 2/(√3·spacing²) centres per m²).
 double estimateLayerBlades(const ScatterParams& params, double area);
 
-// Loads the mesh (file or procedural), each layer's density map, scatters and patches.
+// The bake parameters of a project's lighting (AO kernel, normal blur, water range).
+BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting);
+
+// Loads the mesh (file or procedural), each layer's density map, scatters, patches and bakes
+// the per-blade lighting inputs.
 // Errors name the file (mesh, map) or the project field.
 Result<Scene> buildScene(const LoadedProject& project);
 

@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
     if (!renderer)
         return fail(renderer.error().str());
     const render::RenderOptions options =
-        render::renderOptionsFor(project.render, project.sun, gl::isSoftwareRenderer());
+        render::renderOptionsFor(project, gl::isSoftwareRenderer());
     std::fprintf(stderr, "grass-editor: %s, %zu blades, geometry %s\n",
                  gl::rendererDescription().c_str(), scene->totalBlades(),
                  render::geometryPathLabel(options.geometry));

@@ -28,8 +28,9 @@ double msSince(Clock::time_point start) {
 struct RenderArgs {
     std::string project, mesh, out, camera, geometry = "project", msaa = "project";
     std::string backend = "gpu", shape = "project";
-    std::string cull = "all", stats;
+    std::string cull = "all", stats, lighting = "project";
     double timeS = 0.0;
+    double lodDistanceM = render::CullSettings{}.lodDistanceM;
     int width = 0, height = 0, frames = 3, blades = 60000;
     std::uint64_t seed = 0;
     bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
@@ -103,10 +104,11 @@ std::string statsJson(const render::FrameTimings& frame, double physicsMs, doubl
                   "{\n  \"blades_in\": %zu,\n  \"culled\": {\"patch\": %zu, \"orientation\": %zu, "
                   "\"frustum\": %zu, \"distance\": %zu, \"occlusion\": %zu},\n  \"drawn\": %zu,\n"
                   "  \"ms\": {\"physics\": %.4f, \"cull\": %.4f, \"opaque\": %.4f, \"grass\": "
-                  "%.4f, \"total\": %.4f, \"frame_wall\": %.4f}\n}\n",
+                  "%.4f, \"total\": %.4f, \"frame_wall\": %.4f},\n"
+                  "  \"drawn_per_lod\": [%zu, %zu, %zu]\n}\n",
                   c.bladesIn, c.culledPatch, c.culledOrientation, c.culledFrustum, c.culledDistance,
                   c.culledOcclusion, c.drawn, physicsMs, frame.cullMs, frame.meshMs, frame.grassMs,
-                  total, wallMs);
+                  total, wallMs, c.drawnPerLod[0], c.drawnPerLod[1], c.drawnPerLod[2]);
     return text;
 }
 
@@ -161,6 +163,12 @@ int runRender(const std::vector<std::string>& argv) {
     parser.choice(
         "--shape", {"project", "quad", "triangle", "quadratic", "triangle-tip", "dandelion"},
         "blade outline for every layer (SPEC §7); project = each layer's own", &args.shape);
+    parser.choice("--lighting", {"project", "grass", "simple"},
+                  "blade lighting: the grass model of SPEC §10 or a wrapped Lambert", &args.lighting);
+    parser.number("--lod-distance", "M",
+                  "blades nearer than M metres get every strip segment / tessellation level, "
+                  "half up to 3·M, a quarter beyond",
+                  &args.lodDistanceM, 0.0, 1e6, "8; 0: full detail everywhere");
     parser.choice("--msaa", {"project", "0", "1", "2", "4", "8"},
                   "multisample anti-aliasing samples per pixel", &args.msaa);
     parser.integer("--frames", "frames to draw and time", &args.frames, 1, 1000);
@@ -256,21 +264,24 @@ int runRender(const std::vector<std::string>& argv) {
         }
         physicsMsPerStep = *simulated;
     }
-    core::RenderSettings settings = project.render;
-    if (args.geometry != "project") {
-        auto path = core::parseGeometryPath(args.geometry);
-        if (path)
-            settings.geometry = *path;
-    }
+    const core::RenderSettings& settings = project.render;
     render::OffscreenRequest request;
     request.width = args.width > 0 ? args.width : settings.width;
     request.height = args.height > 0 ? args.height : settings.height;
     request.msaaSamples = args.msaa == "project" ? settings.msaaSamples : std::stoi(args.msaa);
     request.frames = args.frames;
-    request.options = render::renderOptionsFor(settings, project.sun, gl::isSoftwareRenderer());
+    request.options = render::renderOptionsFor(project, gl::isSoftwareRenderer());
+    if (args.geometry != "project") {
+        if (auto path = core::parseGeometryPath(args.geometry))
+            request.options.geometry = render::resolveGeometryPath(*path, gl::isSoftwareRenderer());
+    }
     // Counters are read once after the last frame: cheap for a one-shot render.
     request.options.cull = *cullSettings;
     request.options.cull.collectStats = true;
+    request.options.cull.lodDistanceM = static_cast<float>(args.lodDistanceM);
+    if (args.lighting != "project")
+        request.options.lighting.model =
+            args.lighting == "grass" ? core::LightingModel::Grass : core::LightingModel::Simple;
     if (args.shape != "project") {
         if (auto shape = core::parseBladeShape(args.shape))
             request.options.shape = *shape;
@@ -307,6 +318,9 @@ int runRender(const std::vector<std::string>& argv) {
         cull.bladesIn, cull.drawn, 100.0 * static_cast<double>(cull.drawn) / inBlades,
         cull.culledPatch, cull.culledOrientation, cull.culledFrustum, cull.culledDistance,
         cull.culledOcclusion, rendered->lastFrame.cullMs);
+    std::printf("  detail     drawn per LOD %zu / %zu / %zu (full, half, quarter segments; "
+                "--lod-distance %.3g m)\n",
+                cull.drawnPerLod[0], cull.drawnPerLod[1], cull.drawnPerLod[2], args.lodDistanceM);
     if (!args.stats.empty()) {
         const std::string json =
             statsJson(rendered->lastFrame, physicsMsPerStep, rendered->frameWallMs.back());

@@ -83,6 +83,7 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
     mProgram.set("uTestOcclusion", settings.occlusion ? 1 : 0);
     mProgram.set("uDistanceClasses", std::max(settings.distanceClasses, 1));
     mProgram.set("uMaxDistance", std::max(settings.maxDistanceM, 1e-3f));
+    mProgram.set("uLodDistance", std::max(settings.lodDistanceM, 0.0f));
     mProgram.set("uCollectStats", settings.collectStats ? 1 : 0);
     mProgram.set("uSceneDepth", 0);
     glBindTextureUnit(0, mDepth.id());
@@ -117,8 +118,13 @@ CullStats CullPass::readStats(const std::vector<FieldGpu>& fields) const {
     stats.culledFrustum = counters[3];
     stats.culledDistance = counters[4];
     stats.culledOcclusion = counters[5];
-    for (const FieldGpu& field : fields)
-        stats.drawn += field.readDrawnCount();
+    for (const FieldGpu& field : fields) {
+        const auto drawn = field.readDrawnCounts();
+        for (int lod = 0; lod < LOD_COUNT; ++lod) {
+            stats.drawnPerLod[lod] += drawn[lod];
+            stats.drawn += drawn[lod];
+        }
+    }
     return stats;
 }
 

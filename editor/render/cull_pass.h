@@ -5,6 +5,7 @@
 // Distances are metres in world space.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -28,6 +29,11 @@ struct CullSettings {
     // a 20 m meadow seen from 20 m at 7/8 density, where the loss is hard to see.
     int distanceClasses = 8;
     float maxDistanceM = 100.0f;
+    // Level of detail (SPEC §7, shaders/include/lod.glsl): full segments up to lodDistanceM,
+    // half up to 3·lodDistanceM, a quarter beyond; 0 keeps every blade at full detail. Blades
+    // 8 m away stand ~40 px tall at 720p (0.4 m, 45° field of view): 4 segments of 10 px
+    // still follow the curve; measured in docs/rendering.md.
+    float lodDistanceM = 8.0f;
     // Count blades per test (statistics); costs a few atomics per work-group.
     bool collectStats = false;
     bool anyEnabled() const { return frustum || orientation || distance || occlusion; }
@@ -42,6 +48,7 @@ struct CullStats {
     std::size_t culledDistance = 0;
     std::size_t culledOcclusion = 0;
     std::size_t drawn = 0;
+    std::array<std::size_t, LOD_COUNT> drawnPerLod{};  // sums to drawn
     std::size_t culledTotal() const {
         return culledPatch + culledOrientation + culledFrustum + culledDistance + culledOcclusion;
     }

@@ -1,19 +1,48 @@
 #include "field_gpu.h"
 
-#include <array>
+#include <algorithm>
 
 #include <glm/glm.hpp>
 
 namespace grass::render {
 
 namespace {
-constexpr GLintptr STRIP_COMMAND_OFFSET = 0;
-constexpr GLintptr PATCH_COMMAND_OFFSET = sizeof(DrawArraysIndirectCommand);
+// Command k is the strips of LOD k; LOD_COUNT + k its tessellation patches (shaders/cull.comp).
+GLintptr stripCommandOffset(int lod) {
+    return static_cast<GLintptr>(lod * sizeof(DrawArraysIndirectCommand));
+}
+GLintptr patchCommandOffset(int lod) {
+    return static_cast<GLintptr>((LOD_COUNT + lod) * sizeof(DrawArraysIndirectCommand));
+}
+using CommandArray = std::array<DrawArraysIndirectCommand, 2 * LOD_COUNT>;
+
+CommandArray emptyCommands(int segments) {
+    CommandArray commands{};
+    for (int lod = 0; lod < LOD_COUNT; ++lod) {
+        commands[lod] = {static_cast<GLuint>(stripVertexCount(lodSegments(segments, lod))), 0, 0,
+                         0};
+        commands[LOD_COUNT + lod] = {0, 1, 0, 0};
+    }
+    return commands;
+}
 }  // namespace
+
+int lodSegments(int fullSegments, int lod) {
+    return std::max(fullSegments >> lod, 1);
+}
+
+int stripVertexCount(int segments) {
+    return 4 * (segments + 1);
+}
 
 FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
     mBladeCount = field.patched.blades.size();
     mBlades = gl::Buffer::fromVector(field.patched.blades, "blades " + field.name);
+    // Scenes built without a bake (tests that assemble a LayerField by hand) light every blade
+    // as open ground: default shading per slot.
+    std::vector<core::BladeShading> shading = field.shading;
+    shading.resize(std::max<std::size_t>(mBladeCount, 1));
+    mShading = gl::Buffer::fromVector(shading, "blade shading " + field.name);
     std::vector<glm::vec4> bounds;
     bounds.reserve(2 * field.patched.patches.size() + 2);
     for (const auto& patch : field.patched.patches) {
@@ -24,9 +53,9 @@ FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
     if (bounds.empty())
         bounds.resize(2, glm::vec4(0.0f));
     mPatchBounds = gl::Buffer::fromVector(bounds, "patch bounds " + field.name);
-    const std::vector<GLuint> visible(std::max<std::size_t>(mBladeCount, 1), 0);
+    const std::vector<GLuint> visible(LOD_COUNT * std::max<std::size_t>(mBladeCount, 1), 0);
     mVisible = gl::Buffer::fromVector(visible, "visible blades " + field.name);
-    const std::array<DrawArraysIndirectCommand, 2> commands{{{0, 0, 0, 0}, {0, 1, 0, 0}}};
+    const CommandArray commands = emptyCommands(1);
     mCommands = gl::Buffer(std::as_bytes(std::span(commands)), "draw commands " + field.name);
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
@@ -35,8 +64,7 @@ FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
 
 void FieldGpu::resetCommands(int segments) {
     // A buffer update from the CPU, not a read-back: the frame never waits on the GPU.
-    const std::array<DrawArraysIndirectCommand, 2> commands{
-        {{static_cast<GLuint>(2 * (segments + 1)), 0, 0, 0}, {0, 1, 0, 0}}};
+    const CommandArray commands = emptyCommands(segments);
     mCommands.update(std::as_bytes(std::span(commands)), 0);
 }
 
@@ -47,34 +75,46 @@ void FieldGpu::bindForCull() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, COMMAND_BINDING, mCommands.id());
 }
 
-std::size_t FieldGpu::readDrawnCount() const {
+std::array<std::size_t, LOD_COUNT> FieldGpu::readDrawnCounts() const {
+    std::array<std::size_t, LOD_COUNT> drawn{};
     if (mBladeCount == 0)
-        return 0;
-    GLuint instances = 0;
-    glGetNamedBufferSubData(mCommands.id(), STRIP_COMMAND_OFFSET + sizeof(GLuint), sizeof instances,
-                            &instances);
-    return instances;
+        return drawn;
+    CommandArray commands{};
+    glGetNamedBufferSubData(mCommands.id(), 0, sizeof commands, commands.data());
+    for (int lod = 0; lod < LOD_COUNT; ++lod)
+        drawn[lod] = commands[lod].instanceCount;
+    return drawn;
 }
 
-void FieldGpu::drawStrips() const {
-    if (mBladeCount == 0)
-        return;
+void FieldGpu::bindForDraw() const {
     glBindVertexArray(mEmptyVertexArray.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mBlades.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, VISIBLE_BINDING, mVisible.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SHADING_BINDING, mShading.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands.id());
-    glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(STRIP_COMMAND_OFFSET));
 }
 
-void FieldGpu::drawTessellated() const {
+void FieldGpu::drawStrips(const gl::Program& program, int segments) const {
     if (mBladeCount == 0)
         return;
-    glBindVertexArray(mEmptyVertexArray.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mBlades.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, VISIBLE_BINDING, mVisible.id());
+    bindForDraw();
+    for (int lod = 0; lod < LOD_COUNT; ++lod) {
+        program.set("uVisibleOffset", static_cast<unsigned>(lod * mBladeCount));
+        program.set("uSegments", lodSegments(segments, lod));
+        glDrawArraysIndirect(GL_TRIANGLE_STRIP,
+                             reinterpret_cast<const void*>(stripCommandOffset(lod)));
+    }
+}
+
+void FieldGpu::drawTessellated(const gl::Program& program) const {
+    if (mBladeCount == 0)
+        return;
+    bindForDraw();
     glPatchParameteri(GL_PATCH_VERTICES, 1);
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands.id());
-    glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(PATCH_COMMAND_OFFSET));
+    for (int lod = 0; lod < LOD_COUNT; ++lod) {
+        program.set("uVisibleOffset", static_cast<unsigned>(lod * mBladeCount));
+        glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(patchCommandOffset(lod)));
+    }
 }
 
 }  // namespace grass::render

@@ -1,11 +1,15 @@
 // FieldGpu: one grass layer's blades on the GPU: the blade buffer (four vec4 per blade,
-// SPEC §1, bound as SSBO 0), the patch boxes (SSBO 1: min, max vec4 per patch), the visible-index
-// list (SSBO 5) and the two indirect draw commands (strips at offset 0, tessellation patches at
-// 16) that the cull pass (SPEC §6, cull_pass.h) fills each frame. Draws by either geometry path.
+// SPEC §1, bound as SSBO 0), the patch boxes (SSBO 1: min, max vec4 per patch), and per level of
+// detail a visible-index list (SSBO 5, one list of bladeCount entries per LOD) and two indirect
+// draw commands (strips, then tessellation patches) that the cull pass (SPEC §6, cull_pass.h)
+// fills each frame. Draws by either geometry path, one indirect draw per LOD.
 #pragma once
+
+#include <array>
 
 #include "buffer.h"
 #include "gl_handle.h"
+#include "program.h"
 #include "scene/scene.h"
 
 namespace grass::render {
@@ -21,10 +25,20 @@ static_assert(sizeof(DrawArraysIndirectCommand) == 16);
 
 enum class GeometryPath { Tessellation, Strips };
 
+// Levels of detail (shaders/include/lod.glsl): LOD k draws max(segments >> k, 1) segments.
+inline constexpr int LOD_COUNT = 3;
+int lodSegments(int fullSegments, int lod);
+// Vertices of one instanced strip of `segments` segments: the left half (u = 0, ½) up the
+// blade, then the right half (u = 1, ½) down, so the midrib is a vertex column and the V fold
+// of SPEC §7 shows (blade_strip.vert).
+int stripVertexCount(int segments);
+
 // SSBO bindings shared with shaders/cull.comp and shaders/include/visible.glsl.
 inline constexpr GLuint PATCH_BOUNDS_BINDING = 1;
 inline constexpr GLuint VISIBLE_BINDING = 5;
 inline constexpr GLuint COMMAND_BINDING = 6;
+// shaders/include/blade_shading.glsl: the baked lighting inputs, one per blade slot.
+inline constexpr GLuint SHADING_BINDING = 9;
 
 class FieldGpu {
 public:
@@ -35,22 +49,24 @@ public:
     std::uint32_t patchSize() const { return mField->patched.patchSize; }
     GLuint bladeBuffer() const { return mBlades.id(); }
 
-    // Before the cull dispatch: zero survivors, and the strip's vertex count for `segments`.
+    // Before the cull dispatch: zero survivors, and each LOD's strip vertex count for `segments`.
     void resetCommands(int segments);
     // Binds the blade, patch-box, visible and command buffers for the cull dispatch.
     void bindForCull() const;
-    // The instance count the cull pass wrote (waits for the GPU; statistics only).
-    std::size_t readDrawnCount() const;
+    // The instance counts the cull pass wrote per LOD (waits for the GPU; statistics only).
+    std::array<std::size_t, LOD_COUNT> readDrawnCounts() const;
 
-    // Binds the blade and visible buffers and issues the indirect draw; the caller has bound
-    // the program and run the cull pass.
-    void drawStrips() const;
-    void drawTessellated() const;
+    // Binds the blade and visible buffers and issues one indirect draw per LOD; the caller has
+    // bound `program` and run the cull pass. Sets uVisibleOffset (and, for strips, uSegments).
+    void drawStrips(const gl::Program& program, int segments) const;
+    void drawTessellated(const gl::Program& program) const;
 
 private:
+    void bindForDraw() const;
     const core::LayerField* mField;
     std::size_t mBladeCount = 0;
     gl::Buffer mBlades;
+    gl::Buffer mShading;
     gl::Buffer mPatchBounds;
     gl::Buffer mVisible;
     gl::Buffer mCommands;

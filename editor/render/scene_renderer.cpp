@@ -2,23 +2,26 @@
 
 namespace grass::render {
 
-RenderOptions renderOptionsFor(const core::RenderSettings& settings, const core::SunDesc& sun,
-                               bool softwareRenderer) {
-    RenderOptions options;
-    switch (settings.geometry) {
+GeometryPath resolveGeometryPath(core::GeometryPath path, bool softwareRenderer) {
+    switch (path) {
         case core::GeometryPath::Tessellation:
-            options.geometry = GeometryPath::Tessellation;
-            break;
+            return GeometryPath::Tessellation;
         case core::GeometryPath::Strips:
-            options.geometry = GeometryPath::Strips;
-            break;
+            return GeometryPath::Strips;
         case core::GeometryPath::Auto:
-            options.geometry = softwareRenderer ? GeometryPath::Strips : GeometryPath::Tessellation;
             break;
     }
+    return softwareRenderer ? GeometryPath::Strips : GeometryPath::Tessellation;
+}
+
+RenderOptions renderOptionsFor(const core::Project& project, bool softwareRenderer) {
+    const core::RenderSettings& settings = project.render;
+    RenderOptions options;
+    options.geometry = resolveGeometryPath(settings.geometry, softwareRenderer);
     options.tessLevel = settings.tessLevel;
     options.stripSegments = settings.stripSegments;
-    options.sun = sun;
+    options.sun = project.sun;
+    options.lighting = project.lighting;
     options.skyColor = settings.skyColor;
     options.groundColor = settings.groundColor;
     return options;
@@ -71,6 +74,21 @@ static void setLighting(const gl::Program& program, const RenderOptions& options
     program.set("uGroundColor", options.groundColor);
 }
 
+static void setGrassLighting(const gl::Program& program, const core::GrassLightingDesc& lighting) {
+    program.set("uGrassLighting", lighting.model == core::LightingModel::Grass ? 1 : 0);
+    program.set("uDiffuseLow", lighting.diffuseLow);
+    program.set("uDiffuseMid", lighting.diffuseMid);
+    program.set("uDiffuseHigh", lighting.diffuseHigh);
+    program.set("uTerrainNormalWeight", lighting.terrainNormalWeight);
+    program.set("uSpecular", lighting.specular);
+    program.set("uSpecularFade", lighting.specularFadeM);
+    program.set("uTransmission", lighting.transmission);
+    program.set("uTransmissionDistortion", lighting.transmissionDistortion);
+    program.set("uTransmissionPower", lighting.transmissionPower);
+    program.set("uSss", lighting.sss);
+    program.set("uSssIntensity", lighting.sssIntensity);
+}
+
 void SceneRenderer::render(const core::OrbitCamera& camera, int width, int height,
                            GLuint framebuffer, const RenderOptions& options) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -113,9 +131,11 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     program.set("uPixelScale", options.widthCorrection
                                    ? projection[1][1] * 0.5f * static_cast<float>(height)
                                    : 0.0f);
-    program.set("uSegments", segments);
     program.set("uTessLevel", static_cast<float>(std::max(options.tessLevel, 1)));
+    program.set("uCameraPosition", camera.position());
+    program.set("uLodDistance", std::max(options.cull.lodDistanceM, 0.0f));
     setLighting(program, options);
+    setGrassLighting(program, options.lighting);
     mBladesDrawn = 0;
     for (auto& field : mFields) {
         program.set("uRootColor", field.field().rootColor);
@@ -124,9 +144,9 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
         program.set("uShape", static_cast<int>(shape));
         program.set("uTipStart", field.field().tipStart);
         if (tessellate)
-            field.drawTessellated();
+            field.drawTessellated(program);
         else
-            field.drawStrips();
+            field.drawStrips(program, segments);
         mBladesDrawn += field.field().liveBlades;
     }
     mGrassTimer.end();

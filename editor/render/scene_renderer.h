@@ -24,6 +24,8 @@ struct RenderOptions {
     int tessLevel = 8;
     int stripSegments = 8;
     core::SunDesc sun;
+    // Grass lighting (SPEC §10); model Simple draws the foundation's wrapped Lambert.
+    core::GrassLightingDesc lighting;
     glm::vec3 skyColor{0.55f, 0.70f, 0.90f};
     glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
     // Per-blade culling (SPEC §6); all tests off draws every blade.
@@ -37,8 +39,8 @@ struct RenderOptions {
 
 // Project settings → options; Auto picks strips on software rasterizers (SPEC §7 figures).
 // Culling keeps CullSettings' defaults: every test on, statistics off.
-RenderOptions renderOptionsFor(const core::RenderSettings& settings, const core::SunDesc& sun,
-                               bool softwareRenderer);
+RenderOptions renderOptionsFor(const core::Project& project, bool softwareRenderer);
+GeometryPath resolveGeometryPath(core::GeometryPath path, bool softwareRenderer);
 const char* geometryPathLabel(GeometryPath path);
 
 struct FrameTimings {

@@ -42,13 +42,16 @@ BladeSurfacePoint bladeSurface(Blade blade, float u, float v, BladeShapeParams p
                         ? 2.0 * w * params.pixelScale / depth
                         : -1.0;
     t = widthCorrectedT(t, u, widthPx);
-    // V-shaped fold along the midrib (SPEC §7): at the root the mid line u = 0.5 stands w/2 off
-    // the edges along n; towards the tip the edges rise to it. Only geometry with a vertex at
-    // u = 0.5 shows the V; both paths today have u ∈ {0, 1}, so they draw the edges' offset.
-    vec3 fold = w * n * (0.5 - abs(u - 0.5) * (1.0 - v));
+    // V-shaped fold along the midrib (SPEC §7): at the root the mid line u = ½ stands w/2 off
+    // the edges along n; towards the tip the edges rise to it. Both paths place a vertex column
+    // at u = ½ so the V shows.
+    float fold = 0.5 - abs(u - 0.5) * (1.0 - v);
+    // Each half faces away from the midrib: ∂p/∂u gains ±w(1 − v)·n against 2w·t1, which tilts
+    // that half's normal by ∓½(1 − v)·t1; the midrib keeps n, so shading rounds over the V.
+    float side = u < 0.5 ? 1.0 : (u > 0.5 ? -1.0 : 0.0);
     BladeSurfacePoint point;
-    point.position = mix(c - w * t1, c + w * t1, t) + fold;
-    point.normal = n;
+    point.position = mix(c - w * t1, c + w * t1, t) + w * fold * n;
+    point.normal = normalize(n - side * 0.5 * (1.0 - v) * t1);
     point.v = v;
     return point;
 }

@@ -104,7 +104,7 @@ void runFrame(benchmark::State& state, const BenchScene& bench, bool cullOn) {
         core::OrbitCamera::lookAt(desc.position, desc.target, glm::radians(desc.fovYDeg));
     gl::Framebuffer framebuffer(WIDTH, HEIGHT, MSAA_SAMPLES);
     render::RenderOptions options =
-        render::renderOptionsFor(bench.project.render, bench.project.sun, true);
+        render::renderOptionsFor(bench.project, true);
     options.geometry = render::GeometryPath::Strips;
     if (!cullOn) {
         options.cull.frustum = false;

@@ -5,6 +5,7 @@
 #include "project/project.h"
 #include "scene/scene_physics.h"
 #include "support/test_paths.h"
+#include "support/project_errors.h"
 
 namespace grass::core {
 namespace {
@@ -16,13 +17,7 @@ std::string document(const std::string& members) {
 }
 
 void expectError(const std::string& text, const std::string& pointer, const std::string& problem) {
-    const auto parsed = parseProject(text, SOURCE);
-    ASSERT_FALSE(parsed) << "accepted: " << text;
-    const std::string error = parsed.error().str();
-    EXPECT_NE(error.find(SOURCE), std::string::npos) << error;
-    EXPECT_NE(error.find(pointer + ": "), std::string::npos) << error;
-    EXPECT_NE(error.find(problem), std::string::npos) << error;
-    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    test::expectProjectError(text, SOURCE, pointer, problem);
 }
 
 Project windyProject() {

@@ -4,6 +4,7 @@
 
 #include "blade/blade_shape.h"
 #include "project/project.h"
+#include "support/project_errors.h"
 
 namespace grass::core {
 namespace {
@@ -14,15 +15,8 @@ std::string documentWithLayer(const std::string& layerMembers) {
     return R"({"format": "grass-project", "version": 1, "layers": [{)" + layerMembers + "}]}";
 }
 
-// The one-line error for `text`, checked to name the file and `pointer` and to say `problem`.
 void expectError(const std::string& text, const std::string& pointer, const std::string& problem) {
-    const auto parsed = parseProject(text, SOURCE);
-    ASSERT_FALSE(parsed.ok()) << "accepted: " << text;
-    const std::string error = parsed.error().str();
-    EXPECT_NE(error.find(SOURCE), std::string::npos) << error;
-    EXPECT_NE(error.find(pointer + ": "), std::string::npos) << error;
-    EXPECT_NE(error.find(problem), std::string::npos) << error;
-    EXPECT_EQ(error.find('\n'), std::string::npos) << "not one line: " << error;
+    test::expectProjectError(text, SOURCE, pointer, problem);
 }
 
 TEST(BladeShape, NamesParseBackToTheirShape) {

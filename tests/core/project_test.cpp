@@ -9,6 +9,7 @@
 #include "support/test_paths.h"
 #include "util/atomic_file.h"
 #include "util/rng.h"
+#include "support/project_errors.h"
 
 namespace grass::core {
 namespace {
@@ -30,14 +31,8 @@ std::string errorOf(const std::string& text) {
     return parsed ? std::string() : parsed.error().str();
 }
 
-// Checks the error names the file and the JSON path, and says `problem`.
 void expectError(const std::string& text, const std::string& pointer, const std::string& problem) {
-    const std::string error = errorOf(text);
-    ASSERT_FALSE(error.empty()) << "accepted: " << text;
-    EXPECT_NE(error.find(SOURCE), std::string::npos) << error;
-    EXPECT_NE(error.find(pointer + ": "), std::string::npos) << error;
-    EXPECT_NE(error.find(problem), std::string::npos) << error;
-    EXPECT_EQ(error.find('\n'), std::string::npos) << "not one line: " << error;
+    test::expectProjectError(text, SOURCE, pointer, problem);
 }
 
 void writeText(const fs::path& file, const std::string& text) {

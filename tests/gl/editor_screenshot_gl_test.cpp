@@ -53,7 +53,7 @@ TEST_F(EditorScreenshotTest, WindowUnderXvfbShowsWhatHeadlessRenderShows) {
     request.width = 320;
     request.height = 240;
     request.frames = 1;
-    request.options = render::renderOptionsFor(loaded->project.render, loaded->project.sun, true);
+    request.options = render::renderOptionsFor(loaded->project, true);
     auto headless =
         render::renderOffscreen(*scene, *render::projectCamera(loaded->project, ""), request);
     ASSERT_TRUE(headless.ok()) << headless.error().str();

@@ -40,7 +40,7 @@ TEST_F(SceneRenderTest, MeadowShowsGrassOverAStatedShareOfTheImage) {
     request.width = 320;
     request.height = 180;
     request.frames = 1;
-    request.options = render::renderOptionsFor(loaded->project.render, loaded->project.sun, true);
+    request.options = render::renderOptionsFor(loaded->project, true);
     auto result = render::renderOffscreen(*scene, *camera, request);
     ASSERT_TRUE(result.ok()) << result.error().str();
     // The meadow's camera frames the field over the lower ~55 % of the view (sky above). Of

@@ -1,0 +1,83 @@
+// Blade shading bake (SPEC §10, grass lighting): per-blade terms the grass shaders read next to
+// the blades, computed once when a layer is scattered and patched, on the CPU, without GL.
+//   - grass AO: a Gaussian kernel estimate of the grass density around the blade's root
+//     (blades per m²), mapped to a darkening factor;
+//   - blurred terrain normal: a Gaussian-weighted average of the neighbours' up vectors, the
+//     normal the SSS term bends the shading normal towards;
+//   - water and age: a per-blade hash, young blades wet, old blades dry.
+// Positions are world space, metres; distances are 3D Euclidean, so the bake works on any mesh
+// (spheres, tori, Möbius strips) without a parametrisation. Each neighbour counts by how far its
+// up vector faces the blade's own: fully within 90° (a right-angled crease blends both faces),
+// fading to nothing at 120° (the other face of a thin sheet, the seam of a Möbius strip, a sharp
+// fold): the surface between them hides one from the other.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "blade/blade.h"
+#include "util/result.h"
+
+namespace grass::core {
+
+// One per blade slot of a patched blade array (padding included), uploaded as an SSBO next to
+// the blades, index for index. std430: two vec4.
+struct BladeShading {
+    glm::vec4 blurredNormalAo{0.0f, 1.0f, 0.0f, 1.0f};  // xyz blurred normal (unit), w grass AO
+    glm::vec4 waterAge{0.0f};                           // x water, y age, both in [0, 1]; zw 0
+
+    glm::vec3 blurredNormal() const { return glm::vec3(blurredNormalAo); }
+    float ao() const { return blurredNormalAo.w; }
+    float water() const { return waterAge.x; }
+    float age() const { return waterAge.y; }
+
+    bool operator==(const BladeShading&) const = default;
+};
+
+static_assert(sizeof(BladeShading) == 32, "BladeShading must be two vec4 (std430)");
+static_assert(offsetof(BladeShading, waterAge) == 16, "BladeShading layout must match GLSL");
+
+struct BladeShadingParams {
+    // Gaussian sigma (metres) of the neighbour-density kernel; 0 turns AO off (AO = 1).
+    float aoRadiusM = 0.15f;
+    // Occluding cross-section of one neighbour (m²): AO follows Beer–Lambert transmittance
+    // exp(-density · aoStrength) from 1 down to aoFloor. 0.007 m² puts a 144 blades/m² meadow
+    // at AO ≈ 0.59 and the default 300 blades/m² field at ≈ 0.43, while a blade alone stays at 1.
+    float aoStrength = 0.007f;
+    // The darkest AO: even the densest turf gets sky light from above, and a black blade base
+    // would read as a hole.
+    float aoFloor = 0.35f;
+    // Gaussian sigma (metres) of the terrain-normal blur; 0 keeps each blade's own up.
+    float normalBlurRadiusM = 0.75f;
+    // Water of the oldest (age 1) and the youngest (age 0) blade, each in [0, 1].
+    glm::vec2 waterRange{0.15f, 0.6f};
+
+    bool operator==(const BladeShadingParams&) const = default;
+};
+
+// Per-blade shading of `blades` (the patched array: v0 root, h height, up surface normal).
+// Padding and unusable blades (h <= 0 or not finite, root or up not finite) get
+// BladeShading{} and are nobody's neighbour.
+// AO: density = Σ_j f_j·k(|v0_j - v0_i|) / (2πσ²·c) over the other blades within 3σ, with
+// k(r) = exp(-r²/2σ²) - exp(-4.5) (zero at the 3σ cutoff, so no blade pops in or out), f_j the
+// facing weight above (smoothstep of dot(up_j, up_i) from -0.5 to 0) and c normalising k so that
+// a uniform field of ρ blades/m² has density ρ; neighbours count by number, not by height (see
+// the .cpp). AO = aoFloor + (1 - aoFloor)·exp(-density·aoStrength).
+// Blurred normal: normalize(Σ_j f_j·k(r)·up_j) over the blades within 3σ including the blade
+// itself; its own up where that sum vanishes or faces away from it.
+// Neighbours in other cells (σ/2 wide) are summed per cluster (the cell's blades with up within
+// 15° of each other) at its centroid, which keeps 1 M blades at 2500/m² near 2 s of CPU time;
+// against the exact sums the AO errs by < 0.003 and the normal by < 1°
+// (tests/core/blade_shading_test.cpp measures both).
+// water/age: age = uniform [0, 1) from Rng(seed, blade index), water = mix(waterRange.y,
+// waterRange.x, age).
+// Deterministic for a given seed and identical for any threadCount (0: hardware concurrency).
+// Errors: a parameter that is NaN, infinite or out of range (the path names the field): radii
+// must be 0 (off) or in [1e-4, 1e5] m, aoFloor and waterRange in [0, 1], aoStrength >= 0.
+Result<std::vector<BladeShading>> bakeBladeShading(const std::vector<Blade>& blades,
+                                                   const BladeShadingParams& params,
+                                                   std::uint64_t seed, unsigned threadCount = 0);
+
+}  // namespace grass::core

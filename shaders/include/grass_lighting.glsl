@@ -1,0 +1,91 @@
+// Grass lighting of SPEC §10 (article 003), per pixel. Terms and their inputs:
+//   diffuse ramp on the blade normal leaned towards the SSS terrain normal;
+//   GGX D·F specular (no G; Schlick F with N·V, F0 = 0.04) in three lobes whose roughness
+//   follows the blade's water, once with the blade normal (weighted towards the tip) and once
+//   with the terrain normal, faded out near the eye;
+//   transmission through the blade, thinned by the grass AO (dense grass passes less light);
+//   SSS: wrapped light on mix(terrainN, blurredTerrainN, sssIntensity);
+//   final = mix(diffuse, specular + transmission + sss, water), plus sky ambient × AO.
+// The article lights per vertex; per pixel costs the same on the strips here (the fragment
+// count, not the vertex count, dominates on a software rasterizer) and keeps highlights round.
+#include "lighting.glsl"
+
+uniform vec3 uDiffuseLow;
+uniform vec3 uDiffuseMid;
+uniform vec3 uDiffuseHigh;
+uniform float uTerrainNormalWeight;
+uniform float uSpecular;
+uniform vec2 uSpecularFade;  // metres: specular 0 at x, full at y
+uniform float uTransmission;
+uniform float uTransmissionDistortion;
+uniform float uTransmissionPower;
+uniform float uSss;
+uniform float uSssIntensity;
+
+const float GRASS_PI = 3.14159265358979;
+const float GRASS_F0 = 0.04;
+
+struct GrassSurface {
+    vec3 albedo;
+    vec3 bladeNormal;    // facing the viewer
+    vec3 terrainNormal;  // the surface normal under the blade
+    vec3 blurredNormal;  // baked, Gaussian-blurred terrain normal
+    float ao;            // baked grass AO, 1 = open
+    float water;         // baked, 1 = young and wet
+    float height;        // 0 root, 1 tip
+    vec3 toEye;          // normalized
+    float eyeDistance;   // metres
+};
+
+// GGX normal distribution with α = roughness (not squared: α = r² would make the driest lobe
+// a pin-point that aliases on blades a few pixels wide).
+float ggxD(float nh, float alpha) {
+    float a2 = alpha * alpha;
+    float d = nh * nh * (a2 - 1.0) + 1.0;
+    return a2 / (GRASS_PI * d * d);
+}
+
+float schlickF(float nv) {
+    return GRASS_F0 + (1.0 - GRASS_F0) * pow(1.0 - nv, 5.0);
+}
+
+// 0.5·S(water) + 0.3·S(water/2) + 0.2·S(water/4): the argument is each lobe's roughness.
+float specularLobes(vec3 n, vec3 toLight, vec3 toEye, float water) {
+    float nl = dot(n, toLight);
+    if (nl <= 0.0) return 0.0;
+    vec3 h = normalize(toLight + toEye);
+    float nh = max(dot(n, h), 0.0);
+    float f = schlickF(max(dot(n, toEye), 0.0));
+    float r = max(water, 0.02);
+    float lobes = 0.5 * ggxD(nh, r) + 0.3 * ggxD(nh, 0.5 * r) + 0.2 * ggxD(nh, 0.25 * r);
+    // The lobes are normalized distributions; their peaks reach tens. Clamp so a perfect
+    // mirror angle on one blade cannot flash a pixel white.
+    return min(lobes * f * nl, 4.0);
+}
+
+vec3 grassLighting(GrassSurface s) {
+    vec3 toLight = -uSunDirection;
+    vec3 sssNormal = normalize(mix(s.terrainNormal, s.blurredNormal, uSssIntensity));
+    vec3 diffuseNormal = normalize(mix(s.bladeNormal, sssNormal, uTerrainNormalWeight));
+
+    float nl = dot(diffuseNormal, toLight);
+    vec3 ramp = nl > 0.0 ? mix(uDiffuseMid, uDiffuseHigh, nl)
+                         : mix(uDiffuseLow, uDiffuseMid, nl + 1.0);
+    vec3 diffuse = s.albedo * uSunColor * ramp;
+
+    float fade = smoothstep(uSpecularFade.x, uSpecularFade.y, s.eyeDistance);
+    float specular = s.height * specularLobes(s.bladeNormal, toLight, s.toEye, s.water) +
+                     specularLobes(s.terrainNormal, toLight, s.toEye, s.water);
+    vec3 specularTerm = uSunColor * (uSpecular * fade * specular);
+
+    vec3 fakeN = -normalize(mix(s.bladeNormal, toLight, uTransmissionDistortion));
+    float through = pow(clamp(dot(fakeN, s.toEye), 0.0, 1.0), uTransmissionPower);
+    vec3 transmissionTerm = uTransmission * through * s.ao * uSunColor * s.albedo;
+
+    float wrapped = clamp(0.5 + 0.5 * dot(sssNormal, toLight), 0.0, 1.0);
+    vec3 sssTerm = uSss * wrapped * wrapped * uSunColor * s.albedo;
+
+    vec3 lit = mix(diffuse, specularTerm + transmissionTerm + sssTerm, s.water);
+    vec3 ambient = mix(uGroundColor, uSkyColor, 0.5 + 0.5 * sssNormal.y) * 0.35 * s.albedo;
+    return lit * mix(1.0, s.ao, 0.5) + ambient * s.ao;
+}
