@@ -1,0 +1,148 @@
+// Level of detail and the V fold of SPEC §7 on the GPU: the cull pass sorts blades into LODs by
+// distance (counts shift monotonically towards coarse LODs as the camera backs off, and add up
+// to the drawn count), coarse LODs change the picture little, and the fold gives a blade seen
+// edge-on a visible V on both geometry paths.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "blade/blade.h"
+#include "gl_context_fixture.h"
+#include "offscreen_render.h"
+#include "scatter/patches.h"
+#include "support/plane_project.h"
+#include "support/test_paths.h"
+
+namespace grass::test {
+namespace {
+
+using LodTest = GlTest;
+
+render::OffscreenResult renderWith(const core::Scene& scene, const core::OrbitCamera& camera,
+                                   float lodDistanceM,
+                                   render::GeometryPath path = render::GeometryPath::Strips,
+                                   int size = 128) {
+    render::OffscreenRequest request;
+    request.width = request.height = size;
+    request.frames = 1;
+    request.options.geometry = path;
+    request.options.cull.orientation = request.options.cull.distance = false;
+    request.options.cull.occlusion = false;
+    request.options.cull.collectStats = true;
+    request.options.cull.lodDistanceM = lodDistanceM;
+    auto result = render::renderOffscreen(scene, camera, request);
+    EXPECT_TRUE(result.ok()) << result.error().str();
+    return result.ok() ? std::move(*result) : render::OffscreenResult{};
+}
+
+double meanAbsDifference(const gl::Rgba8Image& a, const gl::Rgba8Image& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i)
+        sum += std::abs(static_cast<int>(a.pixels[i]) - static_cast<int>(b.pixels[i]));
+    return sum / static_cast<double>(a.pixels.size());
+}
+
+core::OrbitCamera cameraAt(float distance) {
+    core::OrbitCamera camera;
+    camera.target = glm::vec3(0.0f, 0.2f, 0.0f);
+    camera.distance = distance;
+    camera.pitchRad = 0.35f;
+    camera.nearPlane = 0.05f;
+    camera.farPlane = 200.0f;
+    return camera;
+}
+
+TEST_F(LodTest, BladesMoveToCoarserLodsAsTheCameraBacksOff) {
+    auto scene = core::buildScene(planeFieldProject({6.0f, 2, 60.0f, 0.3f, 0.5f}, sourceDir()));
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    std::size_t previousFull = SIZE_MAX;
+    double previousQuarter = 0.0;
+    for (float distance : {2.0f, 4.0f, 8.0f, 16.0f, 32.0f}) {
+        const auto frame = renderWith(*scene, cameraAt(distance), 2.0f);
+        const render::CullStats& stats = frame.lastFrame.cull;
+        ASSERT_GT(stats.drawn, 0u) << distance;
+        EXPECT_EQ(stats.drawnPerLod[0] + stats.drawnPerLod[1] + stats.drawnPerLod[2], stats.drawn);
+        const auto drawn = static_cast<double>(stats.drawn);
+        const double full = static_cast<double>(stats.drawnPerLod[0]) / drawn;
+        const double quarter = static_cast<double>(stats.drawnPerLod[2]) / drawn;
+        std::printf("[ lod ] camera %.0f m: full %zu, half %zu, quarter %zu\n", distance,
+                    stats.drawnPerLod[0], stats.drawnPerLod[1], stats.drawnPerLod[2]);
+        EXPECT_LE(stats.drawnPerLod[0], previousFull) << distance;
+        EXPECT_GE(quarter, previousQuarter) << distance;
+        previousFull = stats.drawnPerLod[0];
+        previousQuarter = quarter;
+        if (distance >= 32.0f) {
+            EXPECT_GT(quarter, 0.9) << "32 m away every blade is beyond 3 × 2 m";
+        }
+        if (distance <= 2.0f) {
+            EXPECT_GT(full, 0.05) << "blades under the camera stand within 2 m";
+        }
+    }
+    // LOD off: everything at full detail.
+    const auto off = renderWith(*scene, cameraAt(32.0f), 0.0f);
+    EXPECT_EQ(off.lastFrame.cull.drawnPerLod[0], off.lastFrame.cull.drawn);
+}
+
+// The default LOD distance draws nearly what full detail draws: coarse segments only straighten
+// the curve between vertices of blades that are a few pixels tall. Tolerance: a mean absolute
+// difference of 2 levels of 255 per channel (the culling test allows 4 for thinning a field);
+// a wrong segment count (e.g. LOD 2 everywhere at close range) measures above it.
+TEST_F(LodTest, DefaultLodChangesThePictureLittle) {
+    auto scene = core::buildScene(planeFieldProject({8.0f, 2, 80.0f, 0.3f, 0.5f}, sourceDir()));
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    const core::OrbitCamera camera = cameraAt(9.0f);
+    const auto full = renderWith(*scene, camera, 0.0f, render::GeometryPath::Strips, 192);
+    const auto lod = renderWith(*scene, camera, render::CullSettings{}.lodDistanceM,
+                                render::GeometryPath::Strips, 192);
+    const auto coarse = renderWith(*scene, camera, 0.01f, render::GeometryPath::Strips, 192);
+    const double lodDiff = meanAbsDifference(full.image, lod.image);
+    const double coarseDiff = meanAbsDifference(full.image, coarse.image);
+    std::printf("[ lod ] mean abs diff vs full detail: default LOD %.3f, all quarter %.3f\n",
+                lodDiff, coarseDiff);
+    EXPECT_LT(lodDiff, 2.0);
+    EXPECT_GT(lod.lastFrame.cull.drawnPerLod[1] + lod.lastFrame.cull.drawnPerLod[2], 0u);
+    EXPECT_GT(coarseDiff, lodDiff);
+}
+
+// One wide quad blade seen exactly along its width direction: a flat blade would be a line a
+// pixel wide; the V fold stands the midrib w/2 off the edges at the root, so the blade covers
+// a wedge. Both paths draw it.
+TEST_F(LodTest, FoldShowsWhenABladeIsSeenEdgeOn) {
+    core::Scene scene;
+    core::SurfaceMeshBuilder builder;
+    scene.mesh = builder.take();
+    const std::vector<core::Blade> blades{
+        core::makeRestBlade({0, 0, 0}, {0, 1, 0}, 0.5f, 0.08f, 1.0f, 0.0f)};
+    core::LayerField field;
+    field.name = "fold";
+    field.patched = core::buildPatches(blades, 32);
+    field.liveBlades = 1;
+    field.rootColor = field.tipColor = {0.2f, 0.8f, 0.1f};
+    field.shape = core::BladeShape::Quad;
+    scene.layers.push_back(std::move(field));
+    scene.bounds = core::Bounds{{-1, 0, -1}, {1, 1, 1}};
+    // theta = 0 with up = +Y: the width runs along x; look along x.
+    core::OrbitCamera camera;
+    camera.target = glm::vec3(0.0f, 0.25f, 0.0f);
+    camera.distance = 1.2f;
+    camera.yawRad = 0.5f * 3.14159265f;
+    camera.pitchRad = 0.0f;
+    camera.nearPlane = 0.05f;
+    camera.farPlane = 10.0f;
+    const glm::vec3 eye = camera.position();
+    ASSERT_LT(std::abs(eye.z), 0.05f) << "camera must look along the width (x axis)";
+    for (auto path : {render::GeometryPath::Strips, render::GeometryPath::Tessellation}) {
+        const auto frame = renderWith(scene, camera, 0.0f, path);
+        const double share = grassPixelShare(frame.image.pixels);
+        std::printf("[ fold ] %s: edge-on blade covers %.4f of the image\n",
+                    render::geometryPathLabel(path), share);
+        // The wedge: 0.04 m deep at the root tapering to 0 at the tip, 0.5 m tall, seen from
+        // 1.2 m with a 45° field of view: about 0.5·0.04·0.5 / (2·1.2·tan 22.5°)² ≈ 1 % of the
+        // image. A flat blade covers the one-pixel line: < 0.5 %.
+        EXPECT_GT(share, 0.006) << render::geometryPathLabel(path);
+    }
+}
+
+}  // namespace
+}  // namespace grass::test
