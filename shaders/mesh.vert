@@ -1,16 +1,18 @@
 #version 450 core
-// The opaque surface the grass grows on.
+// Opaque meshes: the surface the grass grows on (uModel = identity) and the props (colliders,
+// uModel = translation · uniform scale, so normals need no inverse transpose).
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
 
 uniform mat4 uViewProj;
+uniform mat4 uModel;
 
 out vec3 vNormal;
 out vec2 vUv;
 
 void main() {
-    vNormal = aNormal;
+    vNormal = mat3(uModel) * aNormal;
     vUv = aUv;
-    gl_Position = uViewProj * vec4(aPosition, 1.0);
+    gl_Position = uViewProj * (uModel * vec4(aPosition, 1.0));
 }

@@ -111,6 +111,10 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
         field.shading = std::move(*shading);
         scene.layers.push_back(std::move(field));
     }
+    auto props = loadSceneProps(loaded);
+    if (!props)
+        return props.error();
+    scene.props = std::move(*props);
     return scene;
 }
 

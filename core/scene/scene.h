@@ -9,6 +9,7 @@
 
 #include "mesh/surface_mesh.h"
 #include "scene/blade_shading.h"
+#include "scene/scene_props.h"
 #include "project/project.h"
 #include "scatter/patches.h"
 
@@ -32,6 +33,7 @@ struct Scene {
     Bounds bounds;
     double area = 0.0;
     std::vector<LayerField> layers;
+    std::vector<SceneProp> props;    // the colliders, drawn as opaque objects
     std::vector<std::string> notes;  // warnings from loading (mesh notes, map conversions)
     std::size_t totalBlades() const;
 };

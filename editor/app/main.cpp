@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
     auto renderer = render::SceneRenderer::create(*scene);
     if (!renderer)
         return fail(renderer.error().str());
-    const render::RenderOptions options =
+    render::RenderOptions options =
         render::renderOptionsFor(project, gl::isSoftwareRenderer());
     std::fprintf(stderr, "grass-editor: %s, %zu blades, geometry %s\n",
                  gl::rendererDescription().c_str(), scene->totalBlades(),
@@ -160,6 +160,8 @@ int main(int argc, char** argv) {
                     : physics->scene.params.dtS;
             physics->advance(elapsedS);
             physics->lastFrame = start;
+            options.timeS = static_cast<float>(static_cast<double>(physics->steps) *
+                                               physics->scene.params.dtS);
         }
         (*renderer)->render(*camera, width, height, target->id(), options);
         target->blitTo(0, width, height);

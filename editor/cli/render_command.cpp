@@ -279,6 +279,7 @@ int runRender(const std::vector<std::string>& argv) {
     request.options.cull = *cullSettings;
     request.options.cull.collectStats = true;
     request.options.cull.lodDistanceM = static_cast<float>(args.lodDistanceM);
+    request.options.timeS = static_cast<float>(args.timeS);
     if (args.lighting != "project")
         request.options.lighting.model =
             args.lighting == "grass" ? core::LightingModel::Grass : core::LightingModel::Simple;

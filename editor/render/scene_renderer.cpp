@@ -58,6 +58,9 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     renderer->mStripProgram = std::move(*strips);
     renderer->mTessProgram = std::move(*tess);
     renderer->mMesh = std::make_unique<MeshGpu>(scene.mesh);
+    renderer->mProps.reserve(scene.props.size());
+    for (const auto& prop : scene.props)
+        renderer->mProps.emplace_back(prop.mesh);
     renderer->mFields.reserve(scene.layers.size());
     for (const auto& layer : scene.layers)
         renderer->mFields.emplace_back(layer);
@@ -107,17 +110,16 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     mMeshTimer.begin();
     mMeshProgram.use();
     mMeshProgram.set("uViewProj", viewProj);
-    mMeshProgram.set("uAlbedo", options.groundColor);
     setLighting(mMeshProgram, options);
-    mMesh->draw();
+    drawOpaque(options, true);
     mMeshTimer.end();
 
     const int segments = std::max(options.stripSegments, 1);
     mCullTimer.begin();
     const CullView cullView{camera.view(), projection, camera.position(), width, height, segments};
-    mCull->run(mFields, cullView, options.cull, [this] {
+    mCull->run(mFields, cullView, options.cull, [this, &options] {
         mMeshProgram.use();
-        mMesh->draw();
+        drawOpaque(options, false);
     });
     mCullTimer.end();
     mStatsFrame = options.cull.collectStats;
@@ -151,6 +153,22 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     }
     mGrassTimer.end();
     glBindVertexArray(0);
+}
+
+// The terrain, then each prop where its path puts it at options.timeS. `shaded` sets the albedo
+// (the depth pre-pass of the cull needs none).
+void SceneRenderer::drawOpaque(const RenderOptions& options, bool shaded) const {
+    mMeshProgram.set("uModel", glm::mat4(1.0f));
+    if (shaded)
+        mMeshProgram.set("uAlbedo", options.groundColor);
+    mMesh->draw();
+    for (std::size_t i = 0; i < mProps.size(); ++i) {
+        const core::SceneProp& prop = mScene->props[i];
+        mMeshProgram.set("uModel", prop.modelAt(options.timeS));
+        if (shaded)
+            mMeshProgram.set("uAlbedo", prop.albedo);
+        mProps[i].draw();
+    }
 }
 
 std::vector<GLuint> SceneRenderer::bladeBuffers() const {

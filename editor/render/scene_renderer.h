@@ -32,6 +32,8 @@ struct RenderOptions {
     CullSettings cull;
     // Draws every layer with this shape instead of its own (`grass render --shape`).
     std::optional<core::BladeShape> shape;
+    // Scene time in seconds: where the props (colliders) stand on their paths.
+    float timeS = 0.0f;
     // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for
     // tests that measure a shape alone.
     bool widthCorrection = true;
@@ -70,7 +72,9 @@ private:
     SceneRenderer() = default;
     const core::Scene* mScene = nullptr;
     gl::Program mMeshProgram, mStripProgram, mTessProgram;
+    void drawOpaque(const RenderOptions& options, bool shaded) const;
     std::unique_ptr<MeshGpu> mMesh;
+    std::vector<MeshGpu> mProps;
     std::vector<FieldGpu> mFields;
     std::unique_ptr<CullPass> mCull;
     gl::GpuTimer mMeshTimer, mGrassTimer, mCullTimer;

@@ -1,0 +1,56 @@
+#include "scene/scene_props.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "mesh/gltf_loader.h"
+#include "mesh/procedural.h"
+
+namespace grass::core {
+
+namespace {
+// A ball of 24 × 24 quads: round to the eye at the sizes colliders have (0.1–5 m on screen).
+constexpr int SPHERE_RESOLUTION = 24;
+// Stone grey for balls, pale fur for meshes: both read against green grass and brown soil.
+constexpr glm::vec3 SPHERE_ALBEDO{0.55f, 0.53f, 0.50f};
+constexpr glm::vec3 MESH_ALBEDO{0.72f, 0.68f, 0.62f};
+}  // namespace
+
+glm::mat4 SceneProp::modelAt(float timeS) const {
+    return glm::scale(glm::translate(glm::mat4(1.0f), originAt(timeS)), glm::vec3(scale));
+}
+
+Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded) {
+    std::vector<SceneProp> props;
+    ProceduralMeshParams sphere;
+    sphere.shape = ProceduralShape::Sphere;
+    sphere.size = 1.0f;
+    sphere.resolution = SPHERE_RESOLUTION;
+    const auto& colliders = loaded.project.colliders;
+    for (std::size_t i = 0; i < colliders.size(); ++i) {
+        const ColliderDesc& collider = colliders[i];
+        SceneProp prop;
+        prop.name = collider.name;
+        prop.position = collider.position;
+        prop.path = collider.path;
+        if (collider.shape == ColliderShape::Sphere) {
+            prop.mesh = makeProceduralMesh(sphere);
+            prop.scale = collider.radiusM;
+            prop.albedo = SPHERE_ALBEDO;
+        } else {
+            const std::string field = "/colliders/" + std::to_string(i) + "/file";
+            auto file = resolveAssetPath(loaded.folder, collider.file, field);
+            if (!file)
+                return Error{loaded.file.string(), file.error().message};
+            auto imported = loadGltf(*file);
+            if (!imported)
+                return imported.error();
+            prop.mesh = std::move(imported->mesh);
+            prop.scale = collider.scale;
+            prop.albedo = MESH_ALBEDO;
+        }
+        props.push_back(std::move(prop));
+    }
+    return props;
+}
+
+}  // namespace grass::core

@@ -1,0 +1,34 @@
+// Props: the project's colliders as the user sees them (SPEC §5): a sphere collider is a ball,
+// a mesh collider its glTF mesh, both moving along their path. The renderer draws them with
+// the terrain as opaque objects, so they also occlude grass in the cull pass (SPEC §6). The
+// physics never reads these meshes: it collides with the packed spheres (scene_physics.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "mesh/surface_mesh.h"
+#include "physics/wind.h"
+#include "project/project.h"
+
+namespace grass::core {
+
+struct SceneProp {
+    std::string name;
+    SurfaceMesh mesh;           // in the prop's own frame: unit sphere or the file's coordinates
+    glm::vec3 position{0.0f};   // origin (sphere centre, mesh origin) when there is no path
+    float scale = 1.0f;         // sphere radius, or the mesh collider's scale
+    std::vector<PathKey> path;  // moves the origin over time, as the physics does
+    glm::vec3 albedo{0.6f};     // linear RGB
+
+    glm::vec3 originAt(float timeS) const { return samplePath(path, timeS, position); }
+    // Model matrix at `timeS`: translate(origin) · scale.
+    glm::mat4 modelAt(float timeS) const;
+};
+
+// One prop per collider, in project order; errors name the collider's file or field.
+Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded);
+
+}  // namespace grass::core

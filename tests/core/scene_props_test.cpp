@@ -1,0 +1,60 @@
+// Props (scene_props.h): every collider becomes a drawable object that stands where the physics
+// puts its collider at a given time.
+#include <gtest/gtest.h>
+
+#include "mesh/surface_mesh.h"
+#include "scene/scene.h"
+#include "support/test_paths.h"
+
+namespace grass::core {
+namespace {
+
+TEST(SceneProps, SphereColliderIsAUnitBallScaledToItsRadiusFollowingItsPath) {
+    LoadedProject loaded;
+    ColliderDesc ball;
+    ball.name = "ball";
+    ball.radiusM = 0.5f;
+    ball.position = {9, 9, 9};
+    ball.path = {PathKey{0.0f, {0, 0, 0}}, PathKey{2.0f, {4, 0, 0}}};
+    loaded.project.colliders.push_back(ball);
+    auto props = loadSceneProps(loaded);
+    ASSERT_TRUE(props.ok()) << props.error().str();
+    ASSERT_EQ(props->size(), 1u);
+    const SceneProp& prop = props->front();
+    const Bounds bounds = meshBounds(prop.mesh);
+    EXPECT_NEAR(bounds.max.x, 1.0f, 1e-3f);
+    EXPECT_NEAR(bounds.min.y, -1.0f, 1e-3f);
+    // Halfway along the path at t = 1 s; the radius scales the unit ball.
+    const glm::vec4 top = prop.modelAt(1.0f) * glm::vec4(0, 1, 0, 1);
+    EXPECT_NEAR(top.x, 2.0f, 1e-5f);
+    EXPECT_NEAR(top.y, 0.5f, 1e-5f);
+    EXPECT_EQ(prop.originAt(1.0f), samplePath(ball.path, 1.0f, ball.position));
+}
+
+TEST(SceneProps, MeshColliderLoadsItsFileAndTheSceneCarriesIt) {
+    auto loaded = loadProject(test::sourceDir() / "tests/data/projects/rock");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+    auto scene = buildScene(*loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    ASSERT_EQ(scene->props.size(), loaded->project.colliders.size());
+    const SceneProp& cube = scene->props.front();
+    EXPECT_GT(cube.mesh.n_faces(), 0u);
+    EXPECT_EQ(cube.scale, loaded->project.colliders.front().scale);
+}
+
+TEST(SceneProps, MissingMeshFileNamesIt) {
+    LoadedProject loaded;
+    loaded.file = "projects/x/project.json";
+    loaded.folder = test::sourceDir() / "tests/data/projects";
+    ColliderDesc rock;
+    rock.shape = ColliderShape::Mesh;
+    rock.file = "no-such-rock.glb";
+    loaded.project.colliders.push_back(rock);
+    auto props = loadSceneProps(loaded);
+    ASSERT_FALSE(props.ok());
+    EXPECT_NE(props.error().str().find("no-such-rock.glb"), std::string::npos)
+        << props.error().str();
+}
+
+}  // namespace
+}  // namespace grass::core
