@@ -1,0 +1,156 @@
+// Golden images (issue 5): small scenes rendered on llvmpipe and compared with the PNGs committed
+// under tests/data/golden/ — each blade shape, grass lighting on and off.
+//
+// Metric (tests/support/image_compare.h): a pixel differs when one of its channels moved by more
+// than PIXEL_THRESHOLD levels; a case fails when more than MAX_DIFFERING_SHARE of the pixels
+// differ or the mean absolute difference exceeds MAX_MEAN_ABS.
+// Why these numbers: the references come from Mesa 22.3.6 llvmpipe, which is deterministic for
+// one build; what may change between machines is the LLVM code for a different CPU (FMA
+// contraction, vector width), which moves a blade edge by a fraction of a pixel. With 4× MSAA
+// that flips one of four samples of an edge pixel: ≤ 1/4 of the edge contrast (~40 levels
+// grass against sky), and only on edge pixels, a few percent of them. So a pixel counts as
+// different only beyond 48 levels (more than one sample flipped), and 0.5 % of the pixels may
+// do so. A real regression moves whole outlines: drawing the quadratic shape instead of the
+// triangle differs in several percent of the pixels (RegressionIsCaught measures it), a
+// lighting change shifts every blade pixel and the mean.
+// Refresh after an intended change: GRASS_UPDATE_GOLDEN=1 grass_gl_tests --gtest_filter='Golden*'
+// then look at the images before committing them.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "gl_context_fixture.h"
+#include "offscreen_render.h"
+#include "support/image_compare.h"
+#include "support/plane_project.h"
+#include "support/test_paths.h"
+#include "util/image_file.h"
+
+namespace grass::test {
+namespace {
+
+constexpr int SIDE = 96;
+constexpr int PIXEL_THRESHOLD = 48;
+constexpr double MAX_DIFFERING_SHARE = 0.005;
+constexpr double MAX_MEAN_ABS = 1.0;
+
+using GoldenTest = GlTest;
+
+struct GoldenCase {
+    std::string name;
+    core::BladeShape shape = core::BladeShape::Triangle;
+    core::LightingModel lighting = core::LightingModel::Grass;
+};
+
+std::vector<GoldenCase> goldenCases() {
+    std::vector<GoldenCase> cases;
+    for (std::size_t i = 0; i < core::BLADE_SHAPE_COUNT; ++i) {
+        const auto shape = static_cast<core::BladeShape>(i);
+        cases.push_back({"shape-" + std::string(core::bladeShapeName(shape)), shape,
+                         core::LightingModel::Grass});
+    }
+    cases.push_back({"lighting-simple", core::BladeShape::Triangle, core::LightingModel::Simple});
+    return cases;
+}
+
+// 0.8 m of short, wide blades seen from the side and a little above, lit from behind so
+// transmission, specular and the diffuse ramp all show (the sun shines towards the camera).
+const core::Scene& goldenScene() {
+    static const core::Scene scene = [] {
+        core::LoadedProject loaded = planeFieldProject({0.8f, 2, 90.0f, 0.2f, 0.3f}, sourceDir());
+        core::GrassLayer& layer = loaded.project.layers.front();
+        layer.scatter.blade.widthMin = 0.02f;
+        layer.scatter.blade.widthMax = 0.03f;
+        auto built = core::buildScene(loaded);
+        EXPECT_TRUE(built.ok()) << built.error().str();
+        return built.ok() ? std::move(*built) : core::Scene{};
+    }();
+    return scene;
+}
+
+gl::Rgba8Image renderCase(const GoldenCase& golden) {
+    core::OrbitCamera camera;
+    camera.target = glm::vec3(0.0f, 0.1f, 0.0f);
+    camera.distance = 1.1f;
+    camera.pitchRad = 0.35f;
+    camera.nearPlane = 0.05f;
+    camera.farPlane = 20.0f;
+    render::OffscreenRequest request;
+    request.width = request.height = SIDE;
+    request.msaaSamples = 4;
+    request.frames = 1;
+    request.options.geometry = render::GeometryPath::Strips;
+    request.options.shape = golden.shape;
+    request.options.lighting.model = golden.lighting;
+    request.options.sun.direction = glm::vec3(0.55f, -0.35f, 0.65f);
+    auto result = render::renderOffscreen(goldenScene(), camera, request);
+    EXPECT_TRUE(result.ok()) << result.error().str();
+    return result.ok() ? std::move(result->image) : gl::Rgba8Image{};
+}
+
+std::filesystem::path goldenFile(const std::string& name) {
+    return sourceDir() / "tests/data/golden" / (name + ".png");
+}
+
+bool updating() {
+    const char* update = std::getenv("GRASS_UPDATE_GOLDEN");
+    return update != nullptr && std::string(update) == "1";
+}
+
+TEST_F(GoldenTest, EveryCaseMatchesItsReference) {
+    const std::filesystem::path scratch = scratchDir("golden");
+    for (const GoldenCase& golden : goldenCases()) {
+        SCOPED_TRACE(golden.name);
+        const gl::Rgba8Image image = renderCase(golden);
+        ASSERT_EQ(image.pixels.size(), std::size_t(SIDE) * SIDE * 4);
+        if (updating()) {
+            ASSERT_TRUE(writeRgba8Image(goldenFile(golden.name), SIDE, SIDE, image.pixels).ok());
+            continue;
+        }
+        auto reference = readRgba8Image(goldenFile(golden.name));
+        ASSERT_TRUE(reference.ok()) << reference.error().str()
+                                    << " (GRASS_UPDATE_GOLDEN=1 writes the references)";
+        const ImageDifference diff =
+            compareImages(image.pixels, reference->pixels, PIXEL_THRESHOLD);
+        std::printf("[ golden ] %-22s differing %.4f, mean abs %.3f, max %d\n",
+                    golden.name.c_str(), diff.differingShare, diff.meanAbs, diff.maxChannel);
+        const bool ok = diff.differingShare <= MAX_DIFFERING_SHARE && diff.meanAbs <= MAX_MEAN_ABS;
+        if (!ok) {
+            const auto actual = scratch / (golden.name + ".actual.png");
+            EXPECT_TRUE(writeRgba8Image(actual, SIDE, SIDE, image.pixels).ok());
+            ADD_FAILURE() << golden.name << " differs from " << goldenFile(golden.name)
+                          << ": share " << diff.differingShare << ", mean " << diff.meanAbs
+                          << "; this render is in " << actual;
+        }
+    }
+}
+
+// The metric catches real regressions: a wrong shape function (quadratic drawn where the
+// triangle is expected, and the other way round) and lighting left at the simple model both
+// fail the thresholds by a wide margin.
+TEST_F(GoldenTest, RegressionIsCaught) {
+    struct Swap {
+        GoldenCase rendered;
+        std::string reference;
+    };
+    const std::vector<Swap> swaps{
+        {{"", core::BladeShape::Quadratic, core::LightingModel::Grass}, "shape-triangle"},
+        {{"", core::BladeShape::Triangle, core::LightingModel::Grass}, "shape-triangle-tip"},
+        {{"", core::BladeShape::Triangle, core::LightingModel::Simple}, "shape-triangle"},
+    };
+    for (const Swap& swap : swaps) {
+        auto reference = readRgba8Image(goldenFile(swap.reference));
+        ASSERT_TRUE(reference.ok()) << reference.error().str();
+        const ImageDifference diff =
+            compareImages(renderCase(swap.rendered).pixels, reference->pixels, PIXEL_THRESHOLD);
+        std::printf("[ golden ] wrong image vs %-18s differing %.4f, mean abs %.3f\n",
+                    swap.reference.c_str(), diff.differingShare, diff.meanAbs);
+        EXPECT_TRUE(diff.differingShare > 2.0 * MAX_DIFFERING_SHARE ||
+                    diff.meanAbs > 2.0 * MAX_MEAN_ABS)
+            << swap.reference;
+    }
+}
+
+}  // namespace
+}  // namespace grass::test
