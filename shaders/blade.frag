@@ -15,6 +15,9 @@ uniform vec3 uCameraPosition;
 uniform vec3 uRootColor;
 uniform vec3 uTipColor;
 uniform int uGrassLighting;
+// Hybrid technique: the blades fade out between these camera distances (metres) while the
+// billboards fade in; alpha-to-coverage turns the alpha into a per-sample dissolve. (0, 0): off.
+uniform vec2 uFadeOut;
 
 out vec4 fragColor;
 
@@ -27,12 +30,13 @@ void main() {
     vec3 normal = normalize(vNormal);
     if (dot(normal, toEye) < 0.0) normal = -normal;
     vec3 albedo = mix(uRootColor, uTipColor, vHeight);
+    float alpha = uFadeOut.y > 0.0 ? 1.0 - smoothstep(uFadeOut.x, uFadeOut.y, eyeDistance) : 1.0;
     if (uGrassLighting == 0) {
         // A thin blade's normal is nearly horizontal, so a high sun would leave the field
         // black; leaning it towards the surface normal lights it the way a field scatters.
         float selfShadow = mix(0.45, 1.0, vHeight);
         vec3 leaned = normalize(normal + 0.8 * vUp);
-        fragColor = vec4(simpleLighting(albedo, leaned, 0.5) * selfShadow, 1.0);
+        fragColor = vec4(simpleLighting(albedo, leaned, 0.5) * selfShadow, alpha);
         return;
     }
     BladeShading baked = bladeShading[vBladeIndex];
@@ -47,5 +51,5 @@ void main() {
     surface.height = vHeight;
     surface.toEye = toEye;
     surface.eyeDistance = eyeDistance;
-    fragColor = vec4(grassLighting(surface), 1.0);
+    fragColor = vec4(grassLighting(surface), alpha);
 }

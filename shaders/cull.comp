@@ -44,6 +44,7 @@ uniform int uTestOcclusion;
 uniform int uDistanceClasses;
 uniform float uMaxDistance;
 uniform float uLodDistance;
+uniform float uCutoffDistance;  // > 0: blades beyond it are culled as distance (hybrid far field)
 uniform int uCollectStats;
 
 // Clip-space slack of the frustum test: blades have width and bend between the three tested
@@ -130,8 +131,10 @@ uint classify(uint index) {
         !insideFrustum(clipV2))
         return RESULT_FRUSTUM;
     // Distance: thin the field towards uMaxDistance by keeping fewer of n classes (i mod n).
+    float dproj = length(toBlade - up * dot(toBlade, up));
+    if (uCutoffDistance > 0.0 && dproj > uCutoffDistance)
+        return RESULT_DISTANCE;
     if (uTestDistance != 0) {
-        float dproj = length(toBlade - up * dot(toBlade, up));
         float n = float(uDistanceClasses);
         uint kept = uint(ceil(n * max(1.0 - dproj / uMaxDistance, 0.0)));
         if (index % uint(uDistanceClasses) >= kept)

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "billboard/star_billboards.h"
 #include "blade/blade_shape.h"
 #include "mesh/procedural.h"
 #include "physics/physics.h"
@@ -92,6 +93,23 @@ struct GrassLightingDesc {
 
 enum class GeometryPath { Auto, Tessellation, Strips };
 
+// What draws the grass: the geometric blades (SPEC §6–7), star billboards alone (SPEC §8), or
+// blades near the camera cross-faded into billboards far away.
+enum class GrassTechnique { Blades, Billboards, Hybrid };
+
+// Star billboard grass objects (SPEC §8): the billboard technique and the hybrid's far field.
+struct BillboardDesc {
+    StarBillboardParams placement{30.0f, {0.3f, 0.5f}, 1.2f, 2.0f};
+    // An RGBA image with alpha, relative to the project folder; empty: generated from the first
+    // layer's colours.
+    std::string texture;
+    BillboardWindMode animation = BillboardWindMode::PerObject;
+    BillboardWind wind;
+    // Hybrid: over this camera distance the blades fade out and the billboards fade in.
+    glm::vec2 crossFadeM{10.0f, 16.0f};
+    bool operator==(const BillboardDesc&) const = default;
+};
+
 struct RenderSettings {
     int width = 1280;
     int height = 720;
@@ -103,6 +121,7 @@ struct RenderSettings {
     glm::vec3 skyColor{0.55f, 0.70f, 0.90f};
     glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
     std::uint32_t patchSize = 256;  // blades per patch, a multiple of 32 (the cull work-group)
+    GrassTechnique technique = GrassTechnique::Blades;
     bool operator==(const RenderSettings&) const = default;
 };
 
@@ -140,6 +159,7 @@ struct Project {
     SunDesc sun;
     GrassLightingDesc lighting;
     RenderSettings render;
+    BillboardDesc billboards;
     // Physics: gravity and the integration policy (dtS is the simulation step), wind, colliders.
     PhysicsParams physics;
     std::vector<WindDesc> wind;
@@ -148,6 +168,12 @@ struct Project {
 };
 
 std::string_view geometryPathName(GeometryPath path);
+// "blades" | "billboards" | "hybrid"
+std::string_view grassTechniqueName(GrassTechnique technique);
+Result<GrassTechnique> parseGrassTechnique(std::string_view name);
+// "per-cluster" | "per-vertex" | "per-object"
+std::string_view billboardAnimationName(BillboardWindMode mode);
+Result<BillboardWindMode> parseBillboardAnimation(std::string_view name);
 Result<GeometryPath> parseGeometryPath(std::string_view name);  // "auto" | "tess" | "strips"
 
 // Load: `path` is a project folder (reads path/project.json) or a .json file.

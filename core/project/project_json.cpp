@@ -24,9 +24,9 @@ using json::readList;
 
 constexpr std::string_view FORMAT_NAME = "grass-project";
 
-constexpr std::array<std::string_view, 13> TOP_KEYS{
-    "format", "version", "name",    "seed", "mesh",     "layers",   "cameras",
-    "sun",    "lighting", "render", "physics", "wind", "colliders"};
+constexpr std::array<std::string_view, 14> TOP_KEYS{
+    "format", "version", "name",   "seed",       "mesh",    "layers", "cameras",
+    "sun",    "lighting", "render", "billboards", "physics", "wind",   "colliders"};
 constexpr std::array<std::string_view, 8> MESH_KEYS{"file",       "procedural",  "size",
                                                     "minor_size", "hill_height", "hill_scale",
                                                     "resolution", "noise_seed"};
@@ -36,9 +36,9 @@ constexpr std::array<std::string_view, 11> LAYER_KEYS{
 constexpr std::array<std::string_view, 3> BLADE_KEYS{"height", "width", "stiffness"};
 constexpr std::array<std::string_view, 4> CAMERA_KEYS{"name", "position", "target", "fov_y_deg"};
 constexpr std::array<std::string_view, 3> SUN_KEYS{"direction", "color", "intensity"};
-constexpr std::array<std::string_view, 9> RENDER_KEYS{
-    "width", "height",     "geometry",  "tess_level",  "strip_segments",
-    "msaa",  "patch_size", "sky_color", "ground_color"};
+constexpr std::array<std::string_view, 10> RENDER_KEYS{
+    "width",      "height",    "geometry",     "tess_level", "strip_segments",
+    "msaa",       "patch_size", "sky_color",   "ground_color", "technique"};
 
 constexpr int MAX_IMAGE_SIDE = 16384;
 constexpr int MAX_MESH_RESOLUTION = 1024;
@@ -180,6 +180,11 @@ void readRender(json::Reader& reader, const Json& node, RenderSettings& render) 
     }
     object.readVec3("sky_color", json::UNIT_INTERVAL, RGB, render.skyColor);
     object.readVec3("ground_color", json::UNIT_INTERVAL, RGB, render.groundColor);
+    if (const Json* technique = object.find("technique")) {
+        std::size_t index = 0;
+        if (reader.readEnum(*technique, "/render/technique", json::TECHNIQUE_NAMES, index))
+            render.technique = static_cast<GrassTechnique>(index);
+    }
 }
 
 void readHeader(json::Reader& reader, const Json& root) {
@@ -238,6 +243,8 @@ void readProject(json::Reader& reader, const Json& root, Project& project) {
         json::readLighting(reader, *lighting, project.lighting);
     if (const Json* render = top.find("render"))
         readRender(reader, *render, project.render);
+    if (const Json* billboards = top.find("billboards"))
+        json::readBillboards(reader, *billboards, project.billboards);
     if (const Json* physics = top.find("physics"))
         json::readPhysics(reader, *physics, project.physics);
     if (const Json* wind = top.find("wind"))
@@ -305,6 +312,7 @@ Json renderJson(const RenderSettings& render) {
     out["patch_size"] = render.patchSize;
     out["sky_color"] = jsonVec3(render.skyColor);
     out["ground_color"] = jsonVec3(render.groundColor);
+    out["technique"] = std::string(grassTechniqueName(render.technique));
     return out;
 }
 
@@ -405,6 +413,7 @@ std::string serializeProject(const Project& project) {
                                     {"intensity", jsonFloat(project.sun.intensity)}});
     document["lighting"] = json::lightingJson(project.lighting);
     document["render"] = renderJson(project.render);
+    document["billboards"] = json::billboardsJson(project.billboards);
     document["physics"] = json::physicsJson(project.physics);
     document["wind"] = Json::array();
     for (const WindDesc& wind : project.wind)

@@ -2,7 +2,9 @@
 // (physics_json.cpp: physics, wind, colliders), called by project_json.cpp's reader and writer.
 #pragma once
 
+#include <array>
 #include <string>
+#include <string_view>
 
 #include "project/json_reader.h"
 #include "project/project.h"
@@ -16,6 +18,14 @@ void readPhysics(Reader& reader, const Json& node, PhysicsParams& physics);
 void readWind(Reader& reader, const Json& node, const std::string& pointer, WindDesc& wind);
 void readCollider(Reader& reader, const Json& node, const std::string& pointer,
                   ColliderDesc& collider);
+
+// billboard_json.cpp: "billboards" (SPEC §8) and the names of techniques and animation modes.
+inline constexpr std::array<std::string_view, 3> TECHNIQUE_NAMES{"blades", "billboards",
+                                                                 "hybrid"};
+inline constexpr std::array<std::string_view, 3> ANIMATION_NAMES{"per-cluster", "per-vertex",
+                                                                 "per-object"};
+void readBillboards(Reader& reader, const Json& node, BillboardDesc& billboards);
+Json billboardsJson(const BillboardDesc& billboards);
 
 // lighting_json.cpp: "lighting" (SPEC §10).
 void readLighting(Reader& reader, const Json& node, GrassLightingDesc& lighting);

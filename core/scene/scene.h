@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "billboard/grass_texture.h"
+#include "billboard/star_billboards.h"
 #include "mesh/surface_mesh.h"
 #include "scene/blade_shading.h"
 #include "scene/scene_props.h"
@@ -28,12 +30,20 @@ struct LayerField {
     std::vector<BladeShading> shading;
 };
 
+// The star billboard grass objects of SPEC §8 and their texture: the billboard technique and
+// the hybrid's far field (project "billboards").
+struct BillboardLayer {
+    std::vector<GrassObject> objects;
+    Rgba8Pixels texture;
+};
+
 struct Scene {
     SurfaceMesh mesh;
     Bounds bounds;
     double area = 0.0;
     std::vector<LayerField> layers;
     std::vector<SceneProp> props;    // the colliders, drawn as opaque objects
+    BillboardLayer billboards;
     std::vector<std::string> notes;  // warnings from loading (mesh notes, map conversions)
     std::size_t totalBlades() const;
 };
@@ -45,6 +55,10 @@ inline constexpr double MAX_SCENE_BLADES = 20.0e6;
 // Upper estimate of the blades a layer grows on `area` m²: uniform density × area plus, for
 // clumps, the densest Poisson-disk packing (hexagonal, 2/(√3·spacing²) centres per m²).
 double estimateLayerBlades(const ScatterParams& params, double area);
+
+// The project's billboards placed on `mesh` with their texture (loaded, or generated from the
+// first layer's colours); errors name the texture file.
+Result<BillboardLayer> buildBillboards(const LoadedProject& loaded, const SurfaceMesh& mesh);
 
 // The bake parameters of a project's lighting (AO kernel, normal blur, water range).
 BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting);

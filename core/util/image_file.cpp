@@ -8,7 +8,7 @@ namespace grass {
 
 namespace fs = std::filesystem;
 
-static std::string oneLine(std::string text) {
+std::string oneLine(std::string text) {
     for (char& c : text)
         if (c == '\n' || c == '\r')
             c = ' ';

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "util/result.h"
@@ -24,6 +25,9 @@ struct Rgba8Pixels {
     int height = 0;
     std::vector<std::uint8_t> pixels;  // RGBA, row 0 = top
 };
+// OpenImageIO's error text on one line (its messages may hold newlines and trailing spaces).
+std::string oneLine(std::string text);
+
 // Reads any image as RGBA8 (grey → RGB, no alpha → 255). For tests and goldens.
 Result<Rgba8Pixels> readRgba8Image(const std::filesystem::path& file);
 

@@ -28,7 +28,8 @@ double msSince(Clock::time_point start) {
 struct RenderArgs {
     std::string project, mesh, out, camera, geometry = "project", msaa = "project";
     std::string backend = "gpu", shape = "project";
-    std::string cull = "all", stats, lighting = "project";
+    std::string cull = "all", stats, lighting = "project", technique = "project",
+                animation = "project";
     double timeS = 0.0;
     double lodDistanceM = render::CullSettings{}.lodDistanceM;
     int width = 0, height = 0, frames = 3, blades = 60000;
@@ -98,17 +99,21 @@ Result<render::CullSettings> parseCullList(const std::string& list) {
 
 std::string statsJson(const render::FrameTimings& frame, double physicsMs, double wallMs) {
     const render::CullStats& c = frame.cull;
-    const double total = physicsMs + frame.cullMs + frame.meshMs + frame.grassMs;
+    // The grass stage is everything that draws grass: blades and billboards.
+    const double grassMs = frame.grassMs + frame.billboardMs;
+    const double total = physicsMs + frame.cullMs + frame.meshMs + grassMs;
     char text[1024];
     std::snprintf(text, sizeof text,
                   "{\n  \"blades_in\": %zu,\n  \"culled\": {\"patch\": %zu, \"orientation\": %zu, "
                   "\"frustum\": %zu, \"distance\": %zu, \"occlusion\": %zu},\n  \"drawn\": %zu,\n"
                   "  \"ms\": {\"physics\": %.4f, \"cull\": %.4f, \"opaque\": %.4f, \"grass\": "
                   "%.4f, \"total\": %.4f, \"frame_wall\": %.4f},\n"
-                  "  \"drawn_per_lod\": [%zu, %zu, %zu]\n}\n",
+                  "  \"drawn_per_lod\": [%zu, %zu, %zu],\n"
+                  "  \"billboards\": {\"drawn\": %zu, \"draw_calls\": %zu, \"ms\": %.4f}\n}\n",
                   c.bladesIn, c.culledPatch, c.culledOrientation, c.culledFrustum, c.culledDistance,
-                  c.culledOcclusion, c.drawn, physicsMs, frame.cullMs, frame.meshMs, frame.grassMs,
-                  total, wallMs, c.drawnPerLod[0], c.drawnPerLod[1], c.drawnPerLod[2]);
+                  c.culledOcclusion, c.drawn, physicsMs, frame.cullMs, frame.meshMs, grassMs,
+                  total, wallMs, c.drawnPerLod[0], c.drawnPerLod[1], c.drawnPerLod[2],
+                  frame.billboardsDrawn, frame.billboardDrawCalls, frame.billboardMs);
     return text;
 }
 
@@ -163,6 +168,14 @@ int runRender(const std::vector<std::string>& argv) {
     parser.choice(
         "--shape", {"project", "quad", "triangle", "quadratic", "triangle-tip", "dandelion"},
         "blade outline for every layer (SPEC §7); project = each layer's own", &args.shape);
+    parser.choice("--technique", {"project", "blades", "billboards", "hybrid"},
+                  "what draws the grass: geometric blades, star billboards (SPEC §8), or blades "
+                  "near the camera cross-faded into billboards far away",
+                  &args.technique);
+    parser.choice("--animation", {"project", "per-cluster", "per-vertex", "per-object"},
+                  "billboard wind animation: a CPU offset per cluster (one draw each), or in the "
+                  "shader by vertex position or by object centre",
+                  &args.animation);
     parser.choice("--lighting", {"project", "grass", "simple"},
                   "blade lighting: the grass model of SPEC §10 or a wrapped Lambert", &args.lighting);
     parser.number("--lod-distance", "M",
@@ -280,6 +293,12 @@ int runRender(const std::vector<std::string>& argv) {
     request.options.cull.collectStats = true;
     request.options.cull.lodDistanceM = static_cast<float>(args.lodDistanceM);
     request.options.timeS = static_cast<float>(args.timeS);
+    if (args.technique != "project")
+        if (auto technique = core::parseGrassTechnique(args.technique))
+            request.options.technique = *technique;
+    if (args.animation != "project")
+        if (auto animation = core::parseBillboardAnimation(args.animation))
+            request.options.billboards.animation = *animation;
     if (args.lighting != "project")
         request.options.lighting.model =
             args.lighting == "grass" ? core::LightingModel::Grass : core::LightingModel::Simple;
@@ -309,8 +328,12 @@ int runRender(const std::vector<std::string>& argv) {
     std::printf("  frames     %zu, wall ms: first %.1f, median %.1f, min %.1f\n",
                 rendered->frameWallMs.size(), rendered->frameWallMs.front(),
                 frames[frames.size() / 2], frames.front());
-    std::printf("  gpu ms     mesh %.2f, grass %.2f (last frame, timer queries)\n",
-                rendered->lastFrame.meshMs, rendered->lastFrame.grassMs);
+    std::printf("  gpu ms     mesh %.2f, grass %.2f, billboards %.2f (last frame, timer queries)\n",
+                rendered->lastFrame.meshMs, rendered->lastFrame.grassMs,
+                rendered->lastFrame.billboardMs);
+    std::printf("  technique  %s; billboards drawn %zu in %zu draw call(s)\n",
+                std::string(core::grassTechniqueName(request.options.technique)).c_str(),
+                rendered->lastFrame.billboardsDrawn, rendered->lastFrame.billboardDrawCalls);
     const render::CullStats& cull = rendered->lastFrame.cull;
     const double inBlades = static_cast<double>(std::max<std::size_t>(cull.bladesIn, 1));
     std::printf(

@@ -83,6 +83,7 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
     mProgram.set("uTestOcclusion", settings.occlusion ? 1 : 0);
     mProgram.set("uDistanceClasses", std::max(settings.distanceClasses, 1));
     mProgram.set("uMaxDistance", std::max(settings.maxDistanceM, 1e-3f));
+    mProgram.set("uCutoffDistance", std::max(settings.cutoffDistanceM, 0.0f));
     mProgram.set("uLodDistance", std::max(settings.lodDistanceM, 0.0f));
     mProgram.set("uCollectStats", settings.collectStats ? 1 : 0);
     mProgram.set("uSceneDepth", 0);

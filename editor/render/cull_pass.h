@@ -34,6 +34,9 @@ struct CullSettings {
     // 8 m away stand ~40 px tall at 720p (0.4 m, 45° field of view): 4 segments of 10 px
     // still follow the curve; measured in docs/rendering.md.
     float lodDistanceM = 8.0f;
+    // Blades farther than this (measured like the thinning) are culled outright, counted as
+    // distance; 0 = none. The hybrid technique sets it to the end of its cross-fade.
+    float cutoffDistanceM = 0.0f;
     // Count blades per test (statistics); costs a few atomics per work-group.
     bool collectStats = false;
     bool anyEnabled() const { return frustum || orientation || distance || occlusion; }

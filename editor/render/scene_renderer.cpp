@@ -24,6 +24,8 @@ RenderOptions renderOptionsFor(const core::Project& project, bool softwareRender
     options.lighting = project.lighting;
     options.skyColor = settings.skyColor;
     options.groundColor = settings.groundColor;
+    options.technique = settings.technique;
+    options.billboards = project.billboards;
     return options;
 }
 
@@ -54,6 +56,25 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     if (!cull)
         return cull.error();
     renderer->mCull = std::make_unique<CullPass>(std::move(*cull));
+    // Scenes assembled by hand (tests) may have no billboards: the techniques that use them then
+    // draw none.
+    if (!scene.billboards.objects.empty()) {
+        auto billboards =
+            BillboardField::create(scene.billboards.objects, scene.billboards.texture);
+        if (!billboards)
+            return billboards.error();
+        renderer->mBillboards = std::make_unique<BillboardField>(std::move(*billboards));
+    }
+    // The billboards stand for the blades: they take the blades' mean AO.
+    double aoSum = 0.0;
+    std::size_t aoCount = 0;
+    for (const auto& layer : scene.layers)
+        for (std::size_t i = 0; i < layer.shading.size(); ++i)
+            if (layer.patched.blades[i].h() > 0.0f) {
+                aoSum += layer.shading[i].ao();
+                ++aoCount;
+            }
+    renderer->mFieldAo = aoCount > 0 ? static_cast<float>(aoSum / static_cast<double>(aoCount)) : 1.0f;
     renderer->mMeshProgram = std::move(*mesh);
     renderer->mStripProgram = std::move(*strips);
     renderer->mTessProgram = std::move(*tess);
@@ -101,7 +122,11 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     glDisable(GL_CULL_FACE);  // blades and open meshes are two-sided
     glEnable(GL_MULTISAMPLE);
     glClearColor(options.skyColor.r, options.skyColor.g, options.skyColor.b, 1.0f);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    // The image stays opaque: alpha-to-coverage (hybrid blades, billboards) turns fragment
+    // alpha into coverage, and writing it too would leave see-through pixels in saved images.
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
 
     const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
     const glm::mat4 projection = camera.projection(aspect);
@@ -114,10 +139,41 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     drawOpaque(options, true);
     mMeshTimer.end();
 
+    // Timers run every frame, empty where a technique skips a pass, so readings are never stale.
+    if (options.technique != core::GrassTechnique::Billboards) {
+        drawBlades(camera, projection, width, height, options);
+    } else {
+        mCullTimer.begin();
+        mCullTimer.end();
+        mGrassTimer.begin();
+        mGrassTimer.end();
+        mStatsFrame = false;
+        mBladesDrawn = 0;
+    }
+    mBillboardTimer.begin();
+    if (options.technique != core::GrassTechnique::Blades && mBillboards)
+        drawBillboards(camera, viewProj, options);
+    else
+        mBillboardsDrawn = mBillboardDrawCalls = 0;
+    mBillboardTimer.end();
+    glBindVertexArray(0);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+// The cull pass, then every layer through its visible lists. In the hybrid, blades end at the
+// far edge of the cross-fade (culled there, so the far field costs nothing) and fade out over
+// it by alpha-to-coverage, dissolving sample by sample as the billboards fade in.
+void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4& projection,
+                               int width, int height, const RenderOptions& options) {
+    const bool hybrid = options.technique == core::GrassTechnique::Hybrid;
+    const glm::mat4 viewProj = projection * camera.view();
     const int segments = std::max(options.stripSegments, 1);
+    CullSettings cull = options.cull;
+    if (hybrid)
+        cull.cutoffDistanceM = options.billboards.crossFadeM.y;
     mCullTimer.begin();
     const CullView cullView{camera.view(), projection, camera.position(), width, height, segments};
-    mCull->run(mFields, cullView, options.cull, [this, &options] {
+    mCull->run(mFields, cullView, cull, [this, &options] {
         mMeshProgram.use();
         drawOpaque(options, false);
     });
@@ -136,8 +192,11 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     program.set("uTessLevel", static_cast<float>(std::max(options.tessLevel, 1)));
     program.set("uCameraPosition", camera.position());
     program.set("uLodDistance", std::max(options.cull.lodDistanceM, 0.0f));
+    program.set("uFadeOut", hybrid ? options.billboards.crossFadeM : glm::vec2(0.0f));
     setLighting(program, options);
     setGrassLighting(program, options.lighting);
+    if (hybrid)
+        glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     mBladesDrawn = 0;
     for (auto& field : mFields) {
         program.set("uRootColor", field.field().rootColor);
@@ -151,8 +210,35 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
             field.drawStrips(program, segments);
         mBladesDrawn += field.field().liveBlades;
     }
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     mGrassTimer.end();
-    glBindVertexArray(0);
+}
+
+void SceneRenderer::drawBillboards(const core::OrbitCamera& camera, const glm::mat4& viewProj,
+                                   const RenderOptions& options) {
+    BillboardDrawParams params;
+    params.viewProj = viewProj;
+    params.cameraPosWorld = camera.position();
+    params.timeS = options.timeS;
+    params.mode = options.billboards.animation;
+    params.wind = options.billboards.wind;
+    if (options.technique == core::GrassTechnique::Hybrid)
+        params.fade = {options.billboards.crossFadeM.x, options.billboards.crossFadeM.y, 1.0e30f,
+                       1.0e30f};
+    params.sunDirection = glm::length(options.sun.direction) > 0.0f
+                              ? glm::normalize(options.sun.direction)
+                              : glm::vec3(0, -1, 0);
+    params.sunColor = options.sun.color * options.sun.intensity;
+    params.skyColor = options.skyColor;
+    params.groundColor = options.groundColor;
+    const gl::Program& program = mBillboards->program();
+    setGrassLighting(program, options.lighting);
+    program.set("uCameraPosition", camera.position());
+    program.set("uFieldAo", mFieldAo);
+    program.set("uFieldWater", 0.5f * (options.lighting.water.x + options.lighting.water.y));
+    mBillboards->draw(params);
+    mBillboardsDrawn = mBillboards->drawnObjects();
+    mBillboardDrawCalls = mBillboards->drawCalls();
 }
 
 // The terrain, then each prop where its path puts it at options.timeS. `shaded` sets the albedo
@@ -183,6 +269,9 @@ FrameTimings SceneRenderer::lastTimings() const {
     timings.meshMs = mMeshTimer.milliseconds();
     timings.grassMs = mGrassTimer.milliseconds();
     timings.cullMs = mCullTimer.milliseconds();
+    timings.billboardMs = mBillboardTimer.milliseconds();
+    timings.billboardsDrawn = mBillboardsDrawn;
+    timings.billboardDrawCalls = mBillboardDrawCalls;
     timings.bladesDrawn = mBladesDrawn;
     if (mStatsFrame)
         timings.cull = mCull->readStats(mFields);

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "billboard_gpu.h"
 #include "cull_pass.h"
 #include "field_gpu.h"
 #include "mesh_gpu.h"
@@ -32,6 +33,10 @@ struct RenderOptions {
     CullSettings cull;
     // Draws every layer with this shape instead of its own (`grass render --shape`).
     std::optional<core::BladeShape> shape;
+    // Blades, star billboards alone, or blades cross-faded into billboards by distance; the
+    // billboards' animation mode, wind and cross-fade distances.
+    core::GrassTechnique technique = core::GrassTechnique::Blades;
+    core::BillboardDesc billboards;
     // Scene time in seconds: where the props (colliders) stand on their paths.
     float timeS = 0.0f;
     // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for
@@ -49,6 +54,9 @@ struct FrameTimings {
     double meshMs = 0.0;   // GPU time of the opaque pass
     double grassMs = 0.0;  // GPU time of all blade draws
     double cullMs = 0.0;   // GPU time of the occlusion depth pre-pass and the cull dispatches
+    double billboardMs = 0.0;  // GPU time of the billboard draws (techniques billboards, hybrid)
+    std::size_t billboardsDrawn = 0;  // objects in the clusters drawn
+    std::size_t billboardDrawCalls = 0;
     // Live blades handed to the cull pass; what survived it is cull.drawn.
     std::size_t bladesDrawn = 0;
     // Per-test counts, filled only when the frame ran with RenderOptions::cull.collectStats.
@@ -73,12 +81,20 @@ private:
     const core::Scene* mScene = nullptr;
     gl::Program mMeshProgram, mStripProgram, mTessProgram;
     void drawOpaque(const RenderOptions& options, bool shaded) const;
+    void drawBlades(const core::OrbitCamera& camera, const glm::mat4& projection, int width,
+                    int height, const RenderOptions& options);
+    void drawBillboards(const core::OrbitCamera& camera, const glm::mat4& viewProj,
+                        const RenderOptions& options);
     std::unique_ptr<MeshGpu> mMesh;
     std::vector<MeshGpu> mProps;
     std::vector<FieldGpu> mFields;
     std::unique_ptr<CullPass> mCull;
-    gl::GpuTimer mMeshTimer, mGrassTimer, mCullTimer;
+    std::unique_ptr<BillboardField> mBillboards;
+    gl::GpuTimer mMeshTimer, mGrassTimer, mCullTimer, mBillboardTimer;
     std::size_t mBladesDrawn = 0;
+    std::size_t mBillboardsDrawn = 0;
+    float mFieldAo = 1.0f;
+    std::size_t mBillboardDrawCalls = 0;
     bool mStatsFrame = false;
 };
 

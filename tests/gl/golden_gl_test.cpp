@@ -1,5 +1,6 @@
 // Golden images (issue 5): small scenes rendered on llvmpipe and compared with the PNGs committed
-// under tests/data/golden/ — each blade shape, grass lighting on and off.
+// under tests/data/golden/ — each blade shape, grass lighting on and off, star billboards alone
+// and the hybrid cross-fade.
 //
 // Metric (tests/support/image_compare.h): a pixel differs when one of its channels moved by more
 // than PIXEL_THRESHOLD levels; a case fails when more than MAX_DIFFERING_SHARE of the pixels
@@ -41,6 +42,7 @@ struct GoldenCase {
     std::string name;
     core::BladeShape shape = core::BladeShape::Triangle;
     core::LightingModel lighting = core::LightingModel::Grass;
+    core::GrassTechnique technique = core::GrassTechnique::Blades;
 };
 
 std::vector<GoldenCase> goldenCases() {
@@ -51,6 +53,10 @@ std::vector<GoldenCase> goldenCases() {
                          core::LightingModel::Grass});
     }
     cases.push_back({"lighting-simple", core::BladeShape::Triangle, core::LightingModel::Simple});
+    cases.push_back({"billboards", core::BladeShape::Triangle, core::LightingModel::Grass,
+                     core::GrassTechnique::Billboards});
+    cases.push_back({"hybrid", core::BladeShape::Triangle, core::LightingModel::Grass,
+                     core::GrassTechnique::Hybrid});
     return cases;
 }
 
@@ -62,6 +68,9 @@ const core::Scene& goldenScene() {
         core::GrassLayer& layer = loaded.project.layers.front();
         layer.scatter.blade.widthMin = 0.02f;
         layer.scatter.blade.widthMax = 0.03f;
+        // Billboards dense enough to show as a tuft carpet on 0.64 m².
+        loaded.project.billboards.placement.density = 60.0f;
+        loaded.project.billboards.placement.heightRangeM = {0.15f, 0.25f};
         auto built = core::buildScene(loaded);
         EXPECT_TRUE(built.ok()) << built.error().str();
         return built.ok() ? std::move(*built) : core::Scene{};
@@ -84,6 +93,9 @@ gl::Rgba8Image renderCase(const GoldenCase& golden) {
     request.options.shape = golden.shape;
     request.options.lighting.model = golden.lighting;
     request.options.sun.direction = glm::vec3(0.55f, -0.35f, 0.65f);
+    request.options.technique = golden.technique;
+    // The hybrid's cross-fade runs through the middle of the field, so both halves show.
+    request.options.billboards.crossFadeM = {0.9f, 1.3f};
     auto result = render::renderOffscreen(goldenScene(), camera, request);
     EXPECT_TRUE(result.ok()) << result.error().str();
     return result.ok() ? std::move(result->image) : gl::Rgba8Image{};

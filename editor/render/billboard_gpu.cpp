@@ -1,0 +1,231 @@
+#include "billboard_gpu.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+
+namespace grass::render {
+
+namespace {
+
+// Alpha-to-coverage works on multisampled targets; without samples the fragment shader's cutoff
+// alone decides, so it cuts at half coverage instead of discarding only the empty texels.
+constexpr float ALPHA_CUTOFF_MULTISAMPLED = 0.02f;
+constexpr float ALPHA_CUTOFF_SINGLE_SAMPLED = 0.5f;
+
+// The six frustum planes of a view-projection matrix (Gribb & Hartmann), normalised so that
+// dot(plane.xyz, p) + plane.w is the signed distance of p, positive inside.
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj) {
+    const glm::mat4 m = glm::transpose(viewProj);
+    std::array<glm::vec4, 6> planes = {m[3] + m[0], m[3] - m[0], m[3] + m[1],
+                                       m[3] - m[1], m[3] + m[2], m[3] - m[2]};
+    for (glm::vec4& plane : planes)
+        plane /= glm::length(glm::vec3(plane));
+    return planes;
+}
+
+bool sphereOutside(const std::array<glm::vec4, 6>& planes, glm::vec3 centre, float radius) {
+    for (const glm::vec4& plane : planes)
+        if (glm::dot(glm::vec3(plane), centre) + plane.w < -radius)
+            return true;
+    return false;
+}
+
+gl::TextureHandle uploadTexture(const Rgba8Pixels& image, std::string_view label) {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &id);
+    gl::TextureHandle texture(id);
+    const auto largest = static_cast<unsigned>(std::max({image.width, image.height, 1}));
+    const auto levels = static_cast<GLsizei>(std::bit_width(largest));
+    glTextureStorage2D(id, levels, GL_RGBA8, image.width, image.height);
+    GLint alignment = 4;
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    // Row 0 (the image's top) goes to t = 0: the star vertices' v = 0 at their tops matches.
+    glTextureSubImage2D(id, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        image.pixels.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+    glGenerateTextureMipmap(id);
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    // Clamp: repeating would bleed the blade tips at the top into the roots at the bottom.
+    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    texture.setLabel(label);
+    return texture;
+}
+
+// Restores a capability on scope exit.
+class ScopedCapability {
+public:
+    ScopedCapability(GLenum capability, bool enable)
+        : mCapability(capability), mWasEnabled(glIsEnabled(capability) == GL_TRUE) {
+        if (enable)
+            glEnable(capability);
+        else
+            glDisable(capability);
+    }
+    ~ScopedCapability() {
+        if (mWasEnabled)
+            glEnable(mCapability);
+        else
+            glDisable(mCapability);
+    }
+    ScopedCapability(const ScopedCapability&) = delete;
+    ScopedCapability& operator=(const ScopedCapability&) = delete;
+
+private:
+    GLenum mCapability;
+    bool mWasEnabled;
+};
+
+}  // namespace
+
+Result<BillboardField> BillboardField::create(const std::vector<core::GrassObject>& objects,
+                                              const Rgba8Pixels& texture, std::string_view label) {
+    if (texture.width <= 0 || texture.height <= 0 ||
+        texture.pixels.size() !=
+            static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height) * 4)
+        return makeError(std::string(label), "billboard texture size does not match its pixels");
+    auto program = gl::Program::load(
+        {{GL_VERTEX_SHADER, "billboard.vert"}, {GL_FRAGMENT_SHADER, "billboard.frag"}},
+        "billboards");
+    if (!program)
+        return program.error();
+
+    BillboardField field;
+    field.mProgram = std::move(*program);
+    const core::StarMesh mesh = core::buildStarVertices(objects);
+    field.mObjectCount = mesh.objectCount();
+    field.mClusters = mesh.clusters;
+    const std::string name(label);
+    field.mVertices = gl::Buffer::fromVector(mesh.vertices, name + " vertices", 0);
+    field.mIndices =
+        gl::Buffer::fromVector(core::starQuadIndices(field.mObjectCount), name + " indices", 0);
+    field.mTexture = uploadTexture(texture, name + " texture");
+
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    field.mVertexArray = gl::VertexArrayHandle(vao);
+    field.mVertexArray.setLabel(name);
+    glVertexArrayVertexBuffer(vao, 0, field.mVertices.id(), 0, sizeof(core::StarVertex));
+    glVertexArrayElementBuffer(vao, field.mIndices.id());
+    struct Attribute {
+        GLint size;
+        GLuint offset;
+    };
+    const Attribute attributes[] = {
+        {3, offsetof(core::StarVertex, position)}, {2, offsetof(core::StarVertex, uv)},
+        {3, offsetof(core::StarVertex, normal)},   {3, offsetof(core::StarVertex, objectCentre)},
+        {1, offsetof(core::StarVertex, sway)},
+    };
+    for (GLuint i = 0; i < std::size(attributes); ++i) {
+        glEnableVertexArrayAttrib(vao, i);
+        glVertexArrayAttribFormat(vao, i, attributes[i].size, GL_FLOAT, GL_FALSE,
+                                  attributes[i].offset);
+        glVertexArrayAttribBinding(vao, i, 0);
+    }
+    return field;
+}
+
+void BillboardField::draw(const BillboardDrawParams& params) {
+    mDrawnObjects = 0;
+    mDrawCalls = 0;
+    // Clusters that may hold a visible object, back to front. Every object centre lies within
+    // the cluster's radius of its centre, and the fade is 0 outside [in start, out end].
+    // Wind moves upper vertices by at most the amplitude (core::billboardWindOffset).
+    const std::array<glm::vec4, 6> planes = frustumPlanes(params.viewProj);
+    const float sway = std::abs(params.wind.amplitudeM);
+    std::vector<std::pair<float, std::uint32_t>> order;
+    for (std::uint32_t c = 0; c < mClusters.size(); ++c) {
+        const core::StarCluster& cluster = mClusters[c];
+        if (cluster.vertexCount == 0)
+            continue;
+        const float d = glm::distance(params.cameraPosWorld, cluster.centre);
+        if (d - cluster.radius > params.fade.outEndM || d + cluster.radius < params.fade.inStartM)
+            continue;
+        if (params.frustumCull && sphereOutside(planes, cluster.centre, cluster.radius + sway))
+            continue;
+        order.emplace_back(d, c);
+    }
+    if (order.empty())
+        return;
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first > b.first : a.second < b.second;
+    });
+
+    GLint sampleBuffers = 0;
+    glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+    const ScopedCapability alphaToCoverage(GL_SAMPLE_ALPHA_TO_COVERAGE, true);
+    const ScopedCapability depthTest(GL_DEPTH_TEST, true);
+    const ScopedCapability cullFace(GL_CULL_FACE, false);
+    GLboolean depthMask = GL_TRUE;
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
+    glDepthMask(GL_TRUE);
+
+    mProgram.use();
+    mProgram.set("uViewProj", params.viewProj);
+    mProgram.set("uCameraPos", params.cameraPosWorld);
+    mProgram.set("uTime", params.timeS);
+    mProgram.set("uWindMode", static_cast<int>(params.mode));
+    mProgram.set("uWindDirection", params.wind.directionXZ);
+    mProgram.set("uWindAmplitude", params.wind.amplitudeM);
+    mProgram.set("uWindFrequency", params.wind.frequencyHz);
+    mProgram.set("uClusterOffset", glm::vec3(0.0f));
+    mProgram.set("uFade", glm::vec4(params.fade.inStartM, params.fade.inEndM, params.fade.outStartM,
+                                    params.fade.outEndM));
+    mProgram.set("uAlphaCutoff",
+                 sampleBuffers > 0 ? ALPHA_CUTOFF_MULTISAMPLED : ALPHA_CUTOFF_SINGLE_SAMPLED);
+    const glm::vec3 sun = glm::length(params.sunDirection) > 0.0f
+                              ? glm::normalize(params.sunDirection)
+                              : glm::vec3(0.0f, -1.0f, 0.0f);
+    mProgram.set("uSunDirection", sun);
+    mProgram.set("uSunColor", params.sunColor);
+    mProgram.set("uSkyColor", params.skyColor);
+    mProgram.set("uGroundColor", params.groundColor);
+    glBindTextureUnit(BILLBOARD_TEXTURE_UNIT, mTexture.id());
+    glBindVertexArray(mVertexArray.id());
+
+    // Index ranges: 18 indices for the 12 vertices of each object.
+    const auto indexCount = [](const core::StarCluster& cluster) {
+        return static_cast<GLsizei>(cluster.vertexCount / core::STAR_VERTICES_PER_OBJECT *
+                                    core::STAR_INDICES_PER_OBJECT);
+    };
+    const auto indexOffset = [](const core::StarCluster& cluster) {
+        const std::size_t first =
+            cluster.firstVertex / core::STAR_VERTICES_PER_OBJECT * core::STAR_INDICES_PER_OBJECT;
+        return reinterpret_cast<const void*>(first * sizeof(std::uint32_t));
+    };
+    for (const auto& entry : order)
+        mDrawnObjects += mClusters[entry.second].vertexCount / core::STAR_VERTICES_PER_OBJECT;
+    if (params.mode == BillboardWindMode::PerCluster) {
+        for (const auto& entry : order) {
+            const core::StarCluster& cluster = mClusters[entry.second];
+            mProgram.set("uClusterOffset",
+                         core::billboardWindOffset(cluster.centre, params.timeS, params.wind));
+            glDrawElements(GL_TRIANGLES, indexCount(cluster), GL_UNSIGNED_INT,
+                           indexOffset(cluster));
+            ++mDrawCalls;
+        }
+    } else {
+        std::vector<GLsizei> counts;
+        std::vector<const void*> offsets;
+        counts.reserve(order.size());
+        offsets.reserve(order.size());
+        for (const auto& entry : order) {
+            counts.push_back(indexCount(mClusters[entry.second]));
+            offsets.push_back(indexOffset(mClusters[entry.second]));
+        }
+        glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(),
+                            static_cast<GLsizei>(counts.size()));
+        ++mDrawCalls;
+    }
+    glBindVertexArray(0);
+    glDepthMask(depthMask);
+}
+
+}  // namespace grass::render

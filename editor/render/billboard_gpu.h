@@ -1,0 +1,80 @@
+// BillboardField: star billboard grass objects (SPEC §8, GPU Gems 1 ch. 7) on the GPU: the star
+// vertices of core/billboard/star_billboards.h grouped by cluster, their triangle indices, the
+// grass texture (RGBA8 with mipmaps, bound to BILLBOARD_TEXTURE_UNIT) and the program of
+// shaders/billboard.{vert,frag}. World space, metres, seconds.
+//
+// draw() sets and restores the state it needs: alpha-to-coverage on (with an MSAA target it
+// shapes the blades; without one a 0.5 alpha cutoff does), depth test and depth write on, face
+// culling off (two-sided). Clusters wholly outside the fade range or the view frustum are skipped
+// (bounding spheres, with the largest wind offset added); the rest are drawn
+// back to front by cluster-centre distance: one draw per cluster in the per-cluster mode (each
+// with its CPU-computed wind offset), one glMultiDrawElements otherwise.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "billboard/star_billboards.h"
+#include "buffer.h"
+#include "gl_handle.h"
+#include "program.h"
+#include "util/image_file.h"
+
+namespace grass::render {
+
+inline constexpr GLuint BILLBOARD_TEXTURE_UNIT = 0;
+
+using BillboardWindMode = core::BillboardWindMode;
+
+struct BillboardDrawParams {
+    glm::mat4 viewProj{1.0f};
+    glm::vec3 cameraPosWorld{0.0f};
+    float timeS = 0.0f;
+    BillboardWindMode mode = BillboardWindMode::PerObject;
+    core::BillboardWind wind;
+    core::BillboardFade fade;
+    // Skips clusters whose bounding sphere lies outside the view frustum of viewProj.
+    bool frustumCull = true;
+    // simpleLighting's inputs (shaders/include/lighting.glsl); sunColor is colour × intensity.
+    glm::vec3 sunDirection{-0.4f, -1.0f, -0.3f};
+    glm::vec3 sunColor{1.0f, 0.96f, 0.88f};
+    glm::vec3 skyColor{0.55f, 0.70f, 0.90f};
+    glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
+};
+
+class BillboardField {
+public:
+    // Uploads the objects' star vertices and the texture, loads the program (its errors name the
+    // shader file and line). Texture: RGBA8, row 0 = top (util/image_file.h).
+    static Result<BillboardField> create(const std::vector<core::GrassObject>& objects,
+                                         const Rgba8Pixels& texture,
+                                         std::string_view label = "billboards");
+
+    void draw(const BillboardDrawParams& params);
+
+    std::size_t objectCount() const { return mObjectCount; }
+    std::size_t clusterCount() const { return mClusters.size(); }
+    const std::vector<core::StarCluster>& clusters() const { return mClusters; }
+    // Of the last draw(): objects in the clusters drawn, and draw calls issued.
+    std::size_t drawnObjects() const { return mDrawnObjects; }
+    std::size_t drawCalls() const { return mDrawCalls; }
+    // For uniforms draw() does not set (the grass lighting of the scene renderer).
+    const gl::Program& program() const { return mProgram; }
+
+private:
+    BillboardField() = default;
+
+    gl::Program mProgram;
+    gl::Buffer mVertices;
+    gl::Buffer mIndices;
+    gl::VertexArrayHandle mVertexArray;
+    gl::TextureHandle mTexture;
+    std::vector<core::StarCluster> mClusters;
+    std::size_t mObjectCount = 0;
+    std::size_t mDrawnObjects = 0;
+    std::size_t mDrawCalls = 0;
+};
+
+}  // namespace grass::render

@@ -1,0 +1,57 @@
+#version 450 core
+// Star billboards: alpha-to-coverage with depth test and write (no sorting needed for the
+// coverage itself); the distance fade scales alpha, so fading objects dissolve sample by sample.
+#include "grass_lighting.glsl"
+
+layout(binding = 0) uniform sampler2D uGrassTexture;
+// 0.02 with multisampling; 0.5 without, where alpha-to-coverage does nothing and this cutoff
+// alone shapes the blades.
+uniform float uAlphaCutoff;
+
+in vec2 vUv;
+in vec3 vNormal;
+in vec3 vPosition;
+in float vFade;
+
+// The blades' lighting (SPEC §10) so billboards and blades match where they cross-fade: the
+// object stands for many blades, so it takes the field's mean AO and water and the surface
+// normal for both blade and terrain normals. 0: the wrapped Lambert.
+uniform int uGrassLighting;
+uniform vec3 uCameraPosition;
+uniform float uFieldAo;
+uniform float uFieldWater;
+
+out vec4 fragColor;
+
+void main() {
+    vec4 texel = texture(uGrassTexture, vUv);
+    // Sharpen alpha to about one pixel of ramp at every mip level: minified, mipmapped alpha
+    // otherwise goes soft and thin, and alpha-to-coverage turns soft alpha into dither.
+    float alpha = texel.a;
+    float width = fwidth(alpha);
+    if (width > 1.0e-4)
+        alpha = clamp((alpha - 0.5) / width + 0.5, 0.0, 1.0);
+    alpha *= vFade;
+    if (alpha < uAlphaCutoff)
+        discard;
+    // Two-sided, and the normal is the object's up on both sides (GPU Gems ch. 7): no flip.
+    vec3 up = normalize(vNormal);
+    if (uGrassLighting == 0) {
+        fragColor = vec4(simpleLighting(texel.rgb, up, 0.3), alpha);
+        return;
+    }
+    vec3 toEye = uCameraPosition - vPosition;
+    float eyeDistance = length(toEye);
+    float height = clamp(1.0 - vUv.y, 0.0, 1.0);  // v = 0 at the top of the quads
+    GrassSurface surface;
+    surface.albedo = texel.rgb;
+    surface.bladeNormal = up;
+    surface.terrainNormal = up;
+    surface.blurredNormal = up;
+    surface.ao = mix(uFieldAo, 1.0, height * height);
+    surface.water = uFieldWater;
+    surface.height = height;
+    surface.toEye = eyeDistance > 0.0 ? toEye / eyeDistance : up;
+    surface.eyeDistance = eyeDistance;
+    fragColor = vec4(grassLighting(surface), alpha);
+}
