@@ -3,6 +3,7 @@
 // thinning falls with distance, and the per-test counts add up.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "blade/blade.h"
@@ -182,6 +183,40 @@ TEST_F(CullTest, DistanceThinningFallsAsTheCameraMovesAway) {
         previous = drawn;
     }
     EXPECT_LT(previous, first / 2) << "from 5 m to 37 m of 40 m most blades must go";
+}
+
+// No patch pops: the thinning keeps blade i by its index class and its own distance, so a
+// camera move removes the blades of one class in thin rings, scattered over the field. Then the
+// largest drop between steps shrinks with the step; a pop (a patch or a whole class switching
+// at once) would stay the same size however small the step. Halving the step must bring the
+// largest drop well down (to about half; required: below 3/4), and the count must only fall.
+std::size_t largestThinningDrop(const core::Scene& scene, float stepM) {
+    render::CullSettings distance = onlyTests(false, false, true, false);
+    distance.maxDistanceM = 12.0f;
+    std::size_t previous = 0, largestDrop = 0;
+    const int steps = static_cast<int>(std::lround(2.0f / stepM));
+    for (int step = 0; step <= steps; ++step) {
+        const float z = 5.0f + stepM * static_cast<float>(step);
+        const core::OrbitCamera camera =
+            core::OrbitCamera::lookAt({0, 2, z}, {0, 0, 0}, glm::radians(45.0f));
+        const std::size_t drawn = renderWith(scene, camera, distance, 32).lastFrame.cull.drawn;
+        if (step > 0) {
+            EXPECT_LE(drawn, previous) << "camera at z = " << z;
+            largestDrop = std::max(largestDrop, previous > drawn ? previous - drawn : 0);
+        }
+        previous = drawn;
+    }
+    return largestDrop;
+}
+
+TEST_F(CullTest, DistanceThinningShrinksWithTheStepWithoutPops) {
+    const core::Scene scene = fieldScene();
+    const std::size_t coarse = largestThinningDrop(scene, 0.25f);
+    const std::size_t fine = largestThinningDrop(scene, 0.125f);
+    std::printf("[ cull ] largest drop of drawn blades per camera step: 0.25 m %zu, 0.125 m %zu\n",
+                coarse, fine);
+    EXPECT_GT(coarse, 0u) << "the sweep must thin the field";
+    EXPECT_LT(static_cast<double>(fine), 0.75 * static_cast<double>(coarse));
 }
 
 TEST_F(CullTest, CountsAddUp) {
