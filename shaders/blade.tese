@@ -1,6 +1,7 @@
 #version 450 core
 // Tessellation evaluation: bend the unit quad (u, v) onto the blade curve (SPEC §7).
 #include "blade_geometry.glsl"
+#include "blade_shade.glsl"
 
 layout(quads, equal_spacing, ccw) in;
 
@@ -15,6 +16,7 @@ out vec3 vPosition;
 out vec3 vNormal;
 out vec3 vUp;
 out float vHeight;
+out vec3 vLitColor;
 flat out uint vBladeIndex;
 
 void main() {
@@ -28,5 +30,8 @@ void main() {
     vUp = blade.upS.xyz;
     vHeight = point.v;
     vBladeIndex = uint(tcBladeIndex[0]);
+    vLitColor = uLightPerVertex != 0
+                    ? shadeBlade(point.position, point.normal, vUp, point.v, vBladeIndex)
+                    : vec3(0.0);
     gl_Position = uViewProj * vec4(point.position, 1.0);
 }

@@ -5,6 +5,7 @@
 // shows. The turn at the tip adds two zero-area triangles (all three tip points lie on one
 // line). The curve is evaluated here; instances are read through the visible list.
 #include "blade_geometry.glsl"
+#include "blade_shade.glsl"
 #include "visible.glsl"
 
 uniform mat4 uViewProj;
@@ -17,6 +18,7 @@ out vec3 vPosition;
 out vec3 vNormal;
 out vec3 vUp;
 out float vHeight;
+out vec3 vLitColor;
 flat out uint vBladeIndex;
 
 void main() {
@@ -45,5 +47,8 @@ void main() {
     vUp = blade.upS.xyz;
     vHeight = v;
     vBladeIndex = bladeIndex;
+    vLitColor = uLightPerVertex != 0
+                    ? shadeBlade(point.position, point.normal, vUp, v, bladeIndex)
+                    : vec3(0.0);
     gl_Position = uViewProj * vec4(point.position, 1.0);
 }

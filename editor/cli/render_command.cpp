@@ -35,6 +35,7 @@ struct RenderArgs {
     int width = 0, height = 0, frames = 3, blades = 60000;
     std::uint64_t seed = 0;
     bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
+    bool lightPerVertex = false;
 };
 
 Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& parser,
@@ -178,6 +179,9 @@ int runRender(const std::vector<std::string>& argv) {
                   &args.animation);
     parser.choice("--lighting", {"project", "grass", "simple"},
                   "blade lighting: the grass model of SPEC §10 or a wrapped Lambert", &args.lighting);
+    parser.flag("--light-per-vertex",
+                "light blades per vertex (as the article does) instead of per pixel",
+                &args.lightPerVertex);
     parser.number("--lod-distance", "M",
                   "blades nearer than M metres get every strip segment / tessellation level, "
                   "half up to 3·M, a quarter beyond",
@@ -293,6 +297,7 @@ int runRender(const std::vector<std::string>& argv) {
     request.options.cull.collectStats = true;
     request.options.cull.lodDistanceM = static_cast<float>(args.lodDistanceM);
     request.options.timeS = static_cast<float>(args.timeS);
+    request.options.lightPerVertex = args.lightPerVertex;
     if (args.technique != "project")
         if (auto technique = core::parseGrassTechnique(args.technique))
             request.options.technique = *technique;

@@ -195,6 +195,7 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     program.set("uFadeOut", hybrid ? options.billboards.crossFadeM : glm::vec2(0.0f));
     setLighting(program, options);
     setGrassLighting(program, options.lighting);
+    program.set("uLightPerVertex", options.lightPerVertex ? 1 : 0);
     if (hybrid)
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     mBladesDrawn = 0;

@@ -27,6 +27,9 @@ struct RenderOptions {
     core::SunDesc sun;
     // Grass lighting (SPEC §10); model Simple draws the foundation's wrapped Lambert.
     core::GrassLightingDesc lighting;
+    // Light the blades per vertex (the article's choice) instead of per pixel (docs/rendering.md
+    // compares cost and look).
+    bool lightPerVertex = false;
     glm::vec3 skyColor{0.55f, 0.70f, 0.90f};
     glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
     // Per-blade culling (SPEC §6); all tests off draws every blade.

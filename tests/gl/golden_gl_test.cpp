@@ -43,6 +43,7 @@ struct GoldenCase {
     core::BladeShape shape = core::BladeShape::Triangle;
     core::LightingModel lighting = core::LightingModel::Grass;
     core::GrassTechnique technique = core::GrassTechnique::Blades;
+    bool lightPerVertex = false;
 };
 
 std::vector<GoldenCase> goldenCases() {
@@ -94,6 +95,7 @@ gl::Rgba8Image renderCase(const GoldenCase& golden) {
     request.options.lighting.model = golden.lighting;
     request.options.sun.direction = glm::vec3(0.55f, -0.35f, 0.65f);
     request.options.technique = golden.technique;
+    request.options.lightPerVertex = golden.lightPerVertex;
     // The hybrid's cross-fade runs through the middle of the field, so both halves show.
     request.options.billboards.crossFadeM = {0.9f, 1.3f};
     auto result = render::renderOffscreen(goldenScene(), camera, request);
@@ -162,6 +164,28 @@ TEST_F(GoldenTest, RegressionIsCaught) {
                     diff.meanAbs > 2.0 * MAX_MEAN_ABS)
             << swap.reference;
     }
+}
+
+}  // namespace
+}  // namespace grass::test
+
+namespace grass::test {
+namespace {
+
+// Per-vertex lighting (the article's choice, render --light-per-vertex) against per pixel (the
+// default): the same blades, colours interpolated from 4·9 vertices instead of computed per
+// pixel. They must look alike (mean difference under 2 levels: only specular peaks between
+// vertices move) yet not be the same image (else the switch would do nothing).
+TEST_F(GoldenTest, PerVertexLightingLooksLikePerPixel) {
+    GoldenCase perPixel{"per-pixel"};
+    GoldenCase perVertex{"per-vertex"};
+    perVertex.lightPerVertex = true;
+    const ImageDifference diff =
+        compareImages(renderCase(perPixel).pixels, renderCase(perVertex).pixels, PIXEL_THRESHOLD);
+    std::printf("[ golden ] per-vertex vs per-pixel lighting: mean abs %.3f, max %d\n",
+                diff.meanAbs, diff.maxChannel);
+    EXPECT_LT(diff.meanAbs, 2.0);
+    EXPECT_GT(diff.maxChannel, 0);
 }
 
 }  // namespace

@@ -1,0 +1,43 @@
+// The colour of a blade point, shared by the fragment shader (per-pixel lighting, the default)
+// and the vertex stages (per-vertex lighting, the article's choice; uLightPerVertex = 1): the
+// grass lighting of SPEC §10 with the blade's baked AO, blurred terrain normal and water, or the
+// wrapped Lambert (uGrassLighting = 0). Blades are two-sided: the normal turns to the viewer.
+#include "blade_shading.glsl"
+#include "grass_lighting.glsl"
+
+uniform vec3 uCameraPosition;
+uniform vec3 uRootColor;
+uniform vec3 uTipColor;
+uniform int uGrassLighting;
+uniform int uLightPerVertex;
+
+vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeIndex) {
+    vec3 toEye = uCameraPosition - position;
+    float eyeDistance = length(toEye);
+    toEye = eyeDistance > 0.0 ? toEye / eyeDistance : up;
+    // The strip's halves and the tessellated quads do not share one winding, so
+    // gl_FrontFacing cannot tell the side; the view direction can.
+    normal = normalize(normal);
+    if (dot(normal, toEye) < 0.0) normal = -normal;
+    vec3 albedo = mix(uRootColor, uTipColor, height);
+    if (uGrassLighting == 0) {
+        // A thin blade's normal is nearly horizontal, so a high sun would leave the field
+        // black; leaning it towards the surface normal lights it the way a field scatters.
+        float selfShadow = mix(0.45, 1.0, height);
+        vec3 leaned = normalize(normal + 0.8 * up);
+        return simpleLighting(albedo, leaned, 0.5) * selfShadow;
+    }
+    BladeShading baked = bladeShading[bladeIndex];
+    GrassSurface surface;
+    surface.albedo = albedo;
+    surface.bladeNormal = normal;
+    surface.terrainNormal = normalize(up);
+    surface.blurredNormal = baked.blurredNormalAo.xyz;
+    // The AO darkens the root more than the tip: the canopy above a point is what occludes it.
+    surface.ao = mix(baked.blurredNormalAo.w, 1.0, height * height);
+    surface.water = baked.waterAge.x;
+    surface.height = height;
+    surface.toEye = toEye;
+    surface.eyeDistance = eyeDistance;
+    return grassLighting(surface);
+}
