@@ -1,6 +1,7 @@
 // grass-editor: the authoring window. This first version shows the project's mesh and grass
 // in a viewport with an orbit camera: drag to orbit, wheel to zoom, middle- or shift-drag to
-// pan, F to frame the scene, Esc to close. --screenshot saves what the window shows after
+// pan, F to frame the scene, Esc to close; 1–4 switch the cull tests, T the technique, L the
+// lighting, and the title shows the cull counts and pass times twice a second. --screenshot saves what the window shows after
 // --frames frames and exits, so tests and users can see the editor without a person.
 #include <chrono>
 #include <cstdio>
@@ -24,6 +25,31 @@ using namespace grass;
 int fail(const std::string& message, int code = 1) {
     std::fprintf(stderr, "grass-editor: %s\n", message.c_str());
     return code;
+}
+
+// Keys that change how the field is drawn (window.h); returns what changed, for the console.
+std::string applyRenderKeys(const editor::InputState& input, render::RenderOptions& options) {
+    render::CullSettings& cull = options.cull;
+    bool* tests[] = {&cull.orientation, &cull.frustum, &cull.distance, &cull.occlusion};
+    const char* names[] = {"orientation", "frustum", "distance", "occlusion"};
+    if (input.toggledCullTest >= 1 && input.toggledCullTest <= 4) {
+        bool& test = *tests[input.toggledCullTest - 1];
+        test = !test;
+        return std::string(names[input.toggledCullTest - 1]) + " culling " + (test ? "on" : "off");
+    }
+    if (input.nextTechnique) {
+        options.technique =
+            static_cast<core::GrassTechnique>((static_cast<int>(options.technique) + 1) % 3);
+        return "technique " + std::string(core::grassTechniqueName(options.technique));
+    }
+    if (input.toggleLighting) {
+        options.lighting.model = options.lighting.model == core::LightingModel::Grass
+                                     ? core::LightingModel::Simple
+                                     : core::LightingModel::Grass;
+        return options.lighting.model == core::LightingModel::Grass ? "grass lighting"
+                                                                     : "simple lighting";
+    }
+    return {};
 }
 
 void applyInput(const editor::InputState& input, int viewportHeight, const core::Scene& scene,
@@ -149,6 +175,8 @@ int main(int argc, char** argv) {
         if (width <= 0 || height <= 0)
             continue;  // minimised
         applyInput(input, height, *scene, *camera);
+        if (const std::string changed = applyRenderKeys(input, options); !changed.empty())
+            std::fprintf(stderr, "grass-editor: %s\n", changed.c_str());
         if (!target || target->width() != width || target->height() != height)
             target = std::make_unique<gl::Framebuffer>(width, height, project.render.msaaSamples);
         const auto start = std::chrono::steady_clock::now();
@@ -163,6 +191,11 @@ int main(int argc, char** argv) {
             options.timeS = static_cast<float>(static_cast<double>(physics->steps) *
                                                physics->scene.params.dtS);
         }
+        // Statistics cost atomics and a wait when read: only the frame before a title update
+        // collects them, and they are read once, after it.
+        const bool titleDue =
+            std::chrono::steady_clock::now() - lastTitle > std::chrono::milliseconds(500);
+        options.cull.collectStats = titleDue;
         (*renderer)->render(*camera, width, height, target->id(), options);
         target->blitTo(0, width, height);
         ++frame;
@@ -176,15 +209,21 @@ int main(int argc, char** argv) {
             return 0;
         }
         (*window)->swapBuffers();
-        if (std::chrono::steady_clock::now() - lastTitle > std::chrono::milliseconds(500)) {
+        if (titleDue) {
             const render::FrameTimings timings = (*renderer)->lastTimings();
             const double cpuMs =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count();
-            char title[256];
+            const render::CullStats& c = timings.cull;
+            char title[512];
             std::snprintf(title, sizeof title,
-                          "grass — %s — %zu blades — frame %.1f ms (grass %.1f ms)",
-                          project.name.c_str(), scene->totalBlades(), cpuMs, timings.grassMs);
+                          "grass — %s — %zu in, %zu drawn (culled patch %zu, orient %zu, frustum "
+                          "%zu, dist %zu, occl %zu) — frame %.1f ms: cull %.1f, opaque %.1f, "
+                          "grass %.1f, billboards %.1f",
+                          project.name.c_str(), c.bladesIn, c.drawn, c.culledPatch,
+                          c.culledOrientation, c.culledFrustum, c.culledDistance,
+                          c.culledOcclusion, cpuMs, timings.cullMs, timings.meshMs,
+                          timings.grassMs, timings.billboardMs);
             (*window)->setTitle(title);
             lastTitle = std::chrono::steady_clock::now();
         }

@@ -37,6 +37,12 @@ struct WindowCallbacks {
             (action != GLFW_RELEASE && (key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT));
         if (action == GLFW_PRESS && key == GLFW_KEY_F)
             input.frameRequested = true;
+        if (action == GLFW_PRESS && key >= GLFW_KEY_1 && key <= GLFW_KEY_4)
+            input.toggledCullTest = key - GLFW_KEY_1 + 1;
+        if (action == GLFW_PRESS && key == GLFW_KEY_T)
+            input.nextTechnique = true;
+        if (action == GLFW_PRESS && key == GLFW_KEY_L)
+            input.toggleLighting = true;
         if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE)
             glfwSetWindowShouldClose(w, GLFW_TRUE);
     }
@@ -104,6 +110,8 @@ void Window::framebufferSize(int* width, int* height) const {
 InputState Window::pollInput() {
     mInput.dragDx = mInput.dragDy = mInput.scrollSteps = 0.0;
     mInput.frameRequested = false;
+    mInput.toggledCullTest = 0;
+    mInput.nextTechnique = mInput.toggleLighting = false;
     glfwPollEvents();
     return mInput;
 }

@@ -18,6 +18,11 @@ struct InputState {
     bool leftDown = false, middleDown = false, rightDown = false;
     bool shiftDown = false;
     bool frameRequested = false;  // F key: frame the whole scene
+    // Keys 1–4: toggle the orientation, frustum, distance, occlusion cull tests; T: next grass
+    // technique (blades, billboards, hybrid); L: grass lighting on/off.
+    int toggledCullTest = 0;  // 1..4, 0 = none this frame
+    bool nextTechnique = false;
+    bool toggleLighting = false;
 };
 
 class Window {
