@@ -101,7 +101,9 @@ int main(int argc, char** argv) {
     ArgParser parser("grass-editor [project-dir|project.json] [--screenshot F.png --frames N]",
                      "Opens the grass editor on a project (default: projects/meadow). Drag "
                      "to orbit, wheel to zoom, middle- or shift-drag to pan, F to frame, Esc "
-                     "to close.");
+                     "to close; keys 1-4 switch the orientation, frustum, distance and occlusion "
+                     "culling, T cycles blades / billboards / hybrid, L toggles the grass "
+                     "lighting; the title shows cull counts and pass times.");
     parser.positional("project", "a project folder (with project.json) or a .json file",
                       &projectPath, false);
     parser.text("--screenshot", "FILE",
