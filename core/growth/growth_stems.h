@@ -1,0 +1,48 @@
+// Kim & Cho growth geometry (SPEC §9): a set of 6 stems, each grown over 1–4 levels from the
+// growth parameters α (width), β (height) and θ (bend). Level i of a stem sits at
+//   x_i = s_x·α/2 + spreadX_k,
+//   y_i = (y_{i−1} + β^i)·cos θ − z_{i−1}·sin θ,
+//   z_i = (y_{i−1} + β^i)·sin θ + z_{i−1}·cos θ + spreadZ_k,
+// starting from the root (0, 0, 0); the root and the level points are the control points of a
+// clamped uniform B-spline of degree min(3, points − 1) (1 level: a line, 2 levels: a quadratic),
+// sampled at even parameter steps. Units: the set's own frame, y up, β = 1 is one unit per level.
+// A stem is a ribbon: STEM_SAMPLES_PER_LEVEL samples per level, two vertices per sample, so a
+// level-4 stem has 40 vertices and a set of 6 stems 240 (the paper's counts).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace grass::core {
+
+inline constexpr int STEMS_PER_SET = 6;
+inline constexpr int MAX_STEM_LEVELS = 4;
+inline constexpr int STEM_SAMPLES_PER_LEVEL = 5;
+
+struct StemSetParams {
+    float alpha = 0.1f;  // width, [0, 0.25]
+    float beta = 0.7f;   // height per level, [0, 1]
+    float theta = 0.0f;  // bend, radians
+    int levels = 4;      // 1..4 (clamped)
+    float spreadX = 0.05f;
+    float spreadZ = 0.05f;
+};
+
+// Root + one point per level, for stem k of the set (0..5): the sign of the α/2 term and the
+// spreads alternate between stems so the six fan out around the set's centre.
+std::vector<glm::vec3> stemLevelPoints(const StemSetParams& params, int stem);
+
+// De Boor evaluation of the clamped uniform B-spline of degree min(3, n − 1) through the control
+// points (endpoints interpolated), at u in [0, 1]. One point: that point.
+glm::vec3 clampedBSpline(const std::vector<glm::vec3>& controls, float u);
+
+// The ribbon of one stem: 2 · STEM_SAMPLES_PER_LEVEL · levels vertices, pairs (left, right) of
+// half-width halfWidth across x at each sample from root to tip.
+std::vector<glm::vec3> stemRibbon(const StemSetParams& params, int stem, float halfWidth);
+
+// All six ribbons, stem after stem (240 vertices at 4 levels).
+std::vector<glm::vec3> stemSetVertices(const StemSetParams& params, float halfWidth);
+
+}  // namespace grass::core
