@@ -4,7 +4,7 @@
 // Stage 1: the patch's box against the view frustum. Stage 2, per blade: orientation, frustum,
 // distance, occlusion, in that order; a blade is counted by the first test that removes it.
 // Survivors append their index to the visible list of their level of detail (lod.glsl) and bump
-// that LOD's strip instance count and tessellation vertex count (reset to 0 before the dispatch).
+// that LOD's strip and tessellation instance counts (reset to 0 before the dispatch).
 #include "blade.glsl"
 #include "lod.glsl"
 
@@ -172,7 +172,7 @@ void main() {
     uint groupLod = gl_LocalInvocationIndex;
     if (groupLod < uint(LOD_COUNT) && sSurvivors[groupLod] != 0u) {
         sBase[groupLod] = atomicAdd(commands[4u * groupLod + 1u], sSurvivors[groupLod]);
-        atomicAdd(commands[4u * (uint(LOD_COUNT) + groupLod)], sSurvivors[groupLod]);
+        atomicAdd(commands[4u * (uint(LOD_COUNT) + groupLod) + 1u], sSurvivors[groupLod]);
     }
     if (uCollectStats != 0 && gl_LocalInvocationIndex < 6u &&
         sCounts[gl_LocalInvocationIndex] != 0u)

@@ -21,7 +21,8 @@ CommandArray emptyCommands(int segments) {
     for (int lod = 0; lod < LOD_COUNT; ++lod) {
         commands[lod] = {static_cast<GLuint>(stripVertexCount(lodSegments(segments, lod))), 0, 0,
                          0};
-        commands[LOD_COUNT + lod] = {0, 1, 0, 0};
+        // One patch vertex, one instance per blade (blade_tess.vert says why).
+        commands[LOD_COUNT + lod] = {1, 0, 0, 0};
     }
     return commands;
 }
