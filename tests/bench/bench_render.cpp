@@ -1,26 +1,43 @@
-// Frame cost of the scene renderer (Google Benchmark; Release; never gates CI): per frame at
-// 1280×720 with 4× MSAA and the strips geometry path, the cull pass, the opaque pass and the
-// grass draws, for ~100k and ~1M blades, with every cull test on and every one off. Run:
-//   cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DGRASS_BUILD_BENCH=ON
-//   cmake --build build-bench --target bench_render && build-bench/bin/bench_render
+// Frame cost of the scene renderer (Google Benchmark; never gates CI), 1280×720 with 4× MSAA on
+// projects/meadow's terrain and overview camera. Four families:
+//   BM_Frame_Strips/<n>/cull_{on,off}     strips (8 segments), every cull test on / every one off
+//   BM_Technique/<n>/{blades,billboards,hybrid}   the three grass techniques (SPEC §8), cull on
+//   BM_Quality/<n>/{strips,tess}/<k>/lod_{off,on}  strips of k segments or tessellation level k,
+//                                         image against strips of 32 segments with LOD off
+//   BM_Lighting/<n>/{grass,grass_vertex,simple}   the grass lighting model (SPEC §10) per pixel,
+//                                         per vertex, and the wrapped Lambert
+// Run (RelWithDebInfo: -O3 trips GCC 12 false-positive warnings under -Werror):
+//   cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_BUILD_BENCH=ON
+//   cmake --build build-bench --target bench_render
+//   build-bench/bin/bench_render --benchmark_filter='BM_Quality'
 //
-// Time source: manual time is the wall clock of one render() up to the end of glFinish. The
+// Time source: manual time is the wall clock of one render() up to the end of glFinish (mean of
+// the timed frames; counter min_ms: the fastest, less disturbed by other load). The
 // GL_TIME_ELAPSED queries of each pass (FrameTimings) are reported as counters cull_ms,
-// opaque_ms and grass_ms: llvmpipe's queries are unreliable (1 ns for every bench_physics
-// step; here one 1M-blade opaque pass read 0.02 ms against 3-5 ms elsewhere).
-// Culled shares are counters too (c_* and culled, fractions of blades_in). Figures and the
-// pipeline they measure: docs/rendering.md.
+// opaque_ms, grass_ms and billboard_ms: llvmpipe's queries are unreliable (1 ns for every
+// bench_physics step; once a 1M-blade opaque pass read 0.02 ms against 3-5 ms elsewhere).
+// Culled shares are counters too (c_* and culled, fractions of blades_in), as are the blades
+// drawn per LOD (lod0..lod2). Figures and the pipeline they measure: docs/rendering.md.
 //
 // The field is projects/meadow's (20 m hills, its overview camera and sun) with one uniform
 // layer whose density is chosen from the surface area to hit the blade count; no clumps, so the
-// count is exact up to the scatter's rounding.
+// count is exact up to the scatter's rounding. Scenes are built on first use, so a filter that
+// skips the 1M cases never builds that scene.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstddef>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "support/image_compare.h"
 #include "framebuffer.h"
 #include "headless_context.h"
 #include "mesh/procedural.h"
@@ -29,14 +46,22 @@
 #include "scene/camera.h"
 #include "scene/scene.h"
 #include "scene_renderer.h"
+#include "util/image_file.h"
 
 namespace {
 
 using namespace grass;
+using test::compareImages;
+using test::ImageDifference;
 
 constexpr int WIDTH = 1280;
 constexpr int HEIGHT = 720;
 constexpr int MSAA_SAMPLES = 4;
+// The quality sweep: blades in its field (tessellation is ~20× slower than strips on
+// llvmpipe), the reference's strip segments, and the "visibly different" pixel threshold.
+constexpr std::size_t QUALITY_BLADES = 50'000;
+constexpr int REFERENCE_SEGMENTS = 32;
+constexpr int DIFFER_THRESHOLD = 48;
 
 // projects/meadow/project.json: mesh, blade ranges, colours, camera and sun.
 core::Project meadowProject(std::size_t targetBlades) {
@@ -86,55 +111,102 @@ Result<std::unique_ptr<BenchScene>> buildBenchScene(std::size_t targetBlades) {
     return bench;
 }
 
+// Scenes by blade count, built on first use and kept; the quality reference image, rendered on
+// first use. Owned by main (no mutable globals: STYLE.md §7).
+struct BenchState {
+    std::map<std::size_t, std::unique_ptr<BenchScene>> scenes;
+    std::optional<std::vector<std::uint8_t>> reference;
+
+    const BenchScene* scene(std::size_t blades, benchmark::State& state) {
+        auto found = scenes.find(blades);
+        if (found != scenes.end())
+            return found->second.get();
+        auto built = buildBenchScene(blades);
+        if (!built) {
+            state.SkipWithError(built.error().str().c_str());
+            return nullptr;
+        }
+        std::printf("scene: %zu blades on %.1f m², %zu billboard objects\n",
+                    (*built)->scene.totalBlades(), (*built)->scene.area,
+                    (*built)->scene.billboards.objects.size());
+        return scenes.emplace(blades, std::move(*built)).first->second.get();
+    }
+};
+
 double share(std::size_t part, std::size_t whole) {
     return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
 }
 
+void disableCulling(render::RenderOptions& options) {
+    options.cull.frustum = false;
+    options.cull.orientation = false;
+    options.cull.distance = false;
+    options.cull.occlusion = false;
+}
+
+render::RenderOptions baseOptions(const BenchScene& bench) {
+    render::RenderOptions options = render::renderOptionsFor(bench.project, true);
+    options.geometry = render::GeometryPath::Strips;
+    options.technique = core::GrassTechnique::Blades;
+    return options;
+}
+
+struct FrameResult {
+    render::CullStats stats;                // of the warm-up frame
+    std::vector<std::uint8_t> pixels;       // of the warm-up frame, when asked
+    std::size_t billboardsDrawn = 0;
+};
+
 // One frame with statistics first (untimed: it also pays the driver's shader compile); the
 // camera does not move, so its counts are those of every timed frame. Timed frames run without
 // statistics, as the editor does.
-void runFrame(benchmark::State& state, const BenchScene& bench, bool cullOn) {
+std::optional<FrameResult> runFrames(benchmark::State& state, const BenchScene& bench,
+                                     render::RenderOptions options, bool keepPixels) {
     auto renderer = render::SceneRenderer::create(bench.scene);
     if (!renderer) {
         state.SkipWithError(renderer.error().str().c_str());
-        return;
+        return std::nullopt;
     }
     const core::CameraDesc& desc = bench.project.cameras.front();
     const core::OrbitCamera camera =
         core::OrbitCamera::lookAt(desc.position, desc.target, glm::radians(desc.fovYDeg));
     gl::Framebuffer framebuffer(WIDTH, HEIGHT, MSAA_SAMPLES);
-    render::RenderOptions options =
-        render::renderOptionsFor(bench.project, true);
-    options.geometry = render::GeometryPath::Strips;
-    if (!cullOn) {
-        options.cull.frustum = false;
-        options.cull.orientation = false;
-        options.cull.distance = false;
-        options.cull.occlusion = false;
-    }
 
+    FrameResult result;
     options.cull.collectStats = true;
     (*renderer)->render(camera, WIDTH, HEIGHT, framebuffer.id(), options);
     glFinish();
-    const render::CullStats stats = (*renderer)->lastTimings().cull;
+    const render::FrameTimings warm = (*renderer)->lastTimings();
+    result.stats = warm.cull;
+    result.billboardsDrawn = warm.billboardsDrawn;
+    if (keepPixels)
+        result.pixels = framebuffer.readPixels().pixels;
     options.cull.collectStats = false;
 
-    double cullMs = 0.0, opaqueMs = 0.0, grassMs = 0.0;
+    double cullMs = 0.0, opaqueMs = 0.0, grassMs = 0.0, billboardMs = 0.0;
+    double minMs = 0.0;
     for (auto _ : state) {
         const auto start = std::chrono::steady_clock::now();
         (*renderer)->render(camera, WIDTH, HEIGHT, framebuffer.id(), options);
         glFinish();
-        state.SetIterationTime(
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        state.SetIterationTime(seconds);
+        minMs = minMs == 0.0 ? 1000.0 * seconds : std::min(minMs, 1000.0 * seconds);
         const render::FrameTimings timings = (*renderer)->lastTimings();
         cullMs += timings.cullMs;
         opaqueMs += timings.meshMs;
         grassMs += timings.grassMs;
+        billboardMs += timings.billboardMs;
     }
     const auto avg = benchmark::Counter::kAvgIterations;
+    // The fastest timed frame: on a shared machine other work only ever adds time.
+    state.counters["min_ms"] = minMs;
     state.counters["cull_ms"] = benchmark::Counter(cullMs, avg);
     state.counters["opaque_ms"] = benchmark::Counter(opaqueMs, avg);
     state.counters["grass_ms"] = benchmark::Counter(grassMs, avg);
+    state.counters["billboard_ms"] = benchmark::Counter(billboardMs, avg);
+    const render::CullStats& stats = result.stats;
     state.counters["blades_in"] = static_cast<double>(stats.bladesIn);
     state.counters["drawn"] = static_cast<double>(stats.drawn);
     state.counters["culled"] = share(stats.culledTotal(), stats.bladesIn);
@@ -143,26 +215,165 @@ void runFrame(benchmark::State& state, const BenchScene& bench, bool cullOn) {
     state.counters["c_frustum"] = share(stats.culledFrustum, stats.bladesIn);
     state.counters["c_dist"] = share(stats.culledDistance, stats.bladesIn);
     state.counters["c_occl"] = share(stats.culledOcclusion, stats.bladesIn);
+    for (std::size_t lod = 0; lod < stats.drawnPerLod.size(); ++lod)
+        state.counters["lod" + std::to_string(lod)] = static_cast<double>(stats.drawnPerLod[lod]);
+    state.counters["billboards"] = static_cast<double>(result.billboardsDrawn);
+    return result;
 }
 
-void registerScene(const char* label, const BenchScene& bench) {
+void configure(benchmark::internal::Benchmark* bench, int iterations) {
+    // llvmpipe on 2 cores takes 0.1-12 s a frame here.
+    bench->Iterations(iterations)->UseManualTime()->Unit(benchmark::kMillisecond);
+}
+
+std::string label(std::size_t blades) {
+    return blades % 1'000'000 == 0 ? std::to_string(blades / 1'000'000) + "M"
+                                   : std::to_string(blades / 1'000) + "k";
+}
+
+void registerCulling(BenchState& benchState, std::size_t blades) {
     for (const bool cullOn : {true, false}) {
+        const std::string name = std::string("BM_Frame_Strips/") + label(blades) +
+                                 (cullOn ? "/cull_on" : "/cull_off");
+        configure(benchmark::RegisterBenchmark(
+                      name.c_str(),
+                      [&benchState, blades, cullOn](benchmark::State& state) {
+                          const BenchScene* bench = benchState.scene(blades, state);
+                          if (!bench)
+                              return;
+                          render::RenderOptions options = baseOptions(*bench);
+                          if (!cullOn)
+                              disableCulling(options);
+                          runFrames(state, *bench, options, false);
+                      }),
+                  3);
+    }
+}
+
+void registerTechniques(BenchState& benchState, std::size_t blades) {
+    const std::pair<const char*, core::GrassTechnique> techniques[] = {
+        {"blades", core::GrassTechnique::Blades},
+        {"billboards", core::GrassTechnique::Billboards},
+        {"hybrid", core::GrassTechnique::Hybrid}};
+    for (const auto& [name, technique] : techniques) {
+        const std::string full = std::string("BM_Technique/") + label(blades) + "/" + name;
+        configure(benchmark::RegisterBenchmark(
+                      full.c_str(),
+                      [&benchState, blades, technique = technique](benchmark::State& state) {
+                          const BenchScene* bench = benchState.scene(blades, state);
+                          if (!bench)
+                              return;
+                          render::RenderOptions options = baseOptions(*bench);
+                          options.technique = technique;
+                          runFrames(state, *bench, options, false);
+                      }),
+                  3);
+    }
+}
+
+// The reference: strips of REFERENCE_SEGMENTS segments, LOD off, rendered once.
+const std::vector<std::uint8_t>* referenceImage(BenchState& benchState, const BenchScene& bench,
+                                                benchmark::State& state) {
+    if (benchState.reference)
+        return &*benchState.reference;
+    auto renderer = render::SceneRenderer::create(bench.scene);
+    if (!renderer) {
+        state.SkipWithError(renderer.error().str().c_str());
+        return nullptr;
+    }
+    const core::CameraDesc& desc = bench.project.cameras.front();
+    const core::OrbitCamera camera =
+        core::OrbitCamera::lookAt(desc.position, desc.target, glm::radians(desc.fovYDeg));
+    gl::Framebuffer framebuffer(WIDTH, HEIGHT, MSAA_SAMPLES);
+    render::RenderOptions options = baseOptions(bench);
+    options.stripSegments = REFERENCE_SEGMENTS;
+    options.cull.lodDistanceM = 0.0f;
+    (*renderer)->render(camera, WIDTH, HEIGHT, framebuffer.id(), options);
+    glFinish();
+    benchState.reference = framebuffer.readPixels().pixels;
+    if (const char* folder = std::getenv("GRASS_BENCH_IMAGES"))
+        (void)writeRgba8Image(std::string(folder) + "/reference.png", WIDTH, HEIGHT,
+                              *benchState.reference);
+    return &*benchState.reference;
+}
+
+void registerQuality(BenchState& benchState, std::size_t blades) {
+    for (const bool tess : {false, true}) {
+        for (const int level : {2, 4, 8, 16}) {
+            for (const bool lod : {false, true}) {
+                const std::string name = std::string("BM_Quality/") + label(blades) +
+                                         (tess ? "/tess/" : "/strips/") + std::to_string(level) +
+                                         (lod ? "/lod_on" : "/lod_off");
+                configure(
+                    benchmark::RegisterBenchmark(
+                        name.c_str(),
+                        [&benchState, blades, tess, level, lod, name](benchmark::State& state) {
+                            const BenchScene* bench = benchState.scene(blades, state);
+                            if (!bench)
+                                return;
+                            const auto* reference = referenceImage(benchState, *bench, state);
+                            if (!reference)
+                                return;
+                            render::RenderOptions options = baseOptions(*bench);
+                            options.geometry = tess ? render::GeometryPath::Tessellation
+                                                    : render::GeometryPath::Strips;
+                            options.stripSegments = level;
+                            options.tessLevel = level;
+                            if (!lod)
+                                options.cull.lodDistanceM = 0.0f;
+                            const auto result = runFrames(state, *bench, options, true);
+                            if (!result)
+                                return;
+                            const ImageDifference diff =
+                                compareImages(result->pixels, *reference, DIFFER_THRESHOLD);
+                            // GRASS_BENCH_IMAGES=<folder>: keep each image for a look.
+                            if (const char* folder = std::getenv("GRASS_BENCH_IMAGES")) {
+                                std::string file = std::string(folder) + "/" + name + ".png";
+                                std::replace(file.begin() + static_cast<std::ptrdiff_t>(
+                                                                std::string(folder).size() + 1),
+                                             file.end(), '/', '_');
+                                (void)writeRgba8Image(file, WIDTH, HEIGHT, result->pixels);
+                            }
+                            state.counters["mean_abs"] = diff.meanAbs;
+                            state.counters["differ48"] = diff.differingShare;
+                        }),
+                    2);
+            }
+        }
+    }
+}
+
+void registerLighting(BenchState& benchState, std::size_t blades) {
+    struct Variant {
+        const char* name;
+        core::LightingModel model;
+        bool perVertex;
+    };
+    const Variant variants[] = {{"grass", core::LightingModel::Grass, false},
+                                {"grass_vertex", core::LightingModel::Grass, true},
+                                {"simple", core::LightingModel::Simple, false}};
+    for (const Variant& variant : variants) {
         const std::string name =
-            std::string("BM_Frame_Strips/") + label + (cullOn ? "/cull_on" : "/cull_off");
-        benchmark::RegisterBenchmark(
-            name.c_str(),
-            [&bench, cullOn](benchmark::State& state) { runFrame(state, bench, cullOn); })
-            // llvmpipe on 2 cores takes 1-12 s a frame at these sizes.
-            ->Iterations(3)
-            ->UseManualTime()
-            ->Unit(benchmark::kMillisecond);
+            std::string("BM_Lighting/") + label(blades) + "/" + variant.name;
+        configure(benchmark::RegisterBenchmark(
+                      name.c_str(),
+                      [&benchState, blades, variant](benchmark::State& state) {
+                          const BenchScene* bench = benchState.scene(blades, state);
+                          if (!bench)
+                              return;
+                          render::RenderOptions options = baseOptions(*bench);
+                          options.lighting.model = variant.model;
+                          options.lightPerVertex = variant.perVertex;
+                          runFrames(state, *bench, options, false);
+                      }),
+                  3);
     }
 }
 
 }  // namespace
 
 // Registered here rather than with BENCHMARK(): the runs need the GL context and the scenes,
-// created once and owned by main (no static constructors, no mutable globals: STYLE.md §7).
+// owned by main (no static constructors, no mutable globals: STYLE.md §7).
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
@@ -174,16 +385,13 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::printf("GL: %s\n", grass::gl::rendererDescription().c_str());
-    auto small = buildBenchScene(100'000);
-    auto large = buildBenchScene(1'000'000);
-    if (!small || !large) {
-        std::fprintf(stderr, "scene: %s\n", (!small ? small.error() : large.error()).str().c_str());
-        return 1;
-    }
-    std::printf("scenes: %zu and %zu blades on %.1f m²\n", (*small)->scene.totalBlades(),
-                (*large)->scene.totalBlades(), (*small)->scene.area);
-    registerScene("100k", **small);
-    registerScene("1M", **large);
+    BenchState benchState;
+    registerCulling(benchState, 100'000);
+    registerCulling(benchState, 1'000'000);
+    registerTechniques(benchState, 100'000);
+    registerTechniques(benchState, 1'000'000);
+    registerQuality(benchState, QUALITY_BLADES);
+    registerLighting(benchState, 100'000);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;
