@@ -5,7 +5,7 @@
 #include <span>
 
 #include "collider/packing_cache.h"
-#include "mesh/gltf_loader.h"
+#include "scene/scene_props.h"
 
 namespace grass::core {
 
@@ -42,23 +42,21 @@ void addBroadPhase(std::span<SphereCollider> group) {
 // radius scale·r; a path moves every sphere by the same offset.
 Result<void> addMeshCollider(const LoadedProject& loaded, const ColliderDesc& collider,
                              std::size_t index, ScenePhysics& out) {
-    const std::string field = "/colliders/" + std::to_string(index) + "/file";
-    auto file = resolveAssetPath(loaded.folder, collider.file, field);
-    if (!file)
-        return Error{loaded.file.string(), file.error().message};
-    auto imported = loadGltf(*file);
-    if (!imported)
-        return imported.error();
+    auto colliderMesh = loadColliderMesh(loaded, collider, index);
+    if (!colliderMesh)
+        return colliderMesh.error();
+    const std::filesystem::path& file = colliderMesh->file;
+    const SurfaceMesh& mesh = colliderMesh->imported.mesh;
     SpherePackingParams params;
     params.sphereCount = collider.sphereCount;
     params.resolution = collider.packingResolution;
-    const std::filesystem::path cache = packingCachePath(loaded.folder, *file, params);
+    const std::filesystem::path cache = packingCachePath(loaded.folder, file, params);
     bool fromCache = false;
-    auto packing = loadOrPackSpheres(*file, imported->mesh, params, cache, &fromCache);
+    auto packing = loadOrPackSpheres(file, mesh, params, cache, &fromCache);
     if (!packing) {
         Error error = packing.error();
         if (error.path.empty())
-            error.path = file->string();
+            error.path = file.string();
         return error;
     }
     out.notes.push_back("collider " + collider.name + ": " + collider.file + " as " +

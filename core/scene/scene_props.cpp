@@ -2,7 +2,6 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "mesh/gltf_loader.h"
 #include "mesh/procedural.h"
 
 namespace grass::core {
@@ -17,6 +16,18 @@ constexpr glm::vec3 MESH_ALBEDO{0.72f, 0.68f, 0.62f};
 
 glm::mat4 SceneProp::modelAt(float timeS) const {
     return glm::scale(glm::translate(glm::mat4(1.0f), originAt(timeS)), glm::vec3(scale));
+}
+
+Result<ColliderMesh> loadColliderMesh(const LoadedProject& loaded, const ColliderDesc& collider,
+                                      std::size_t index) {
+    const std::string field = "/colliders/" + std::to_string(index) + "/file";
+    auto file = resolveAssetPath(loaded.folder, collider.file, field);
+    if (!file)
+        return Error{loaded.file.string(), file.error().message};
+    auto imported = loadGltf(*file);
+    if (!imported)
+        return imported.error();
+    return ColliderMesh{std::move(*file), std::move(*imported)};
 }
 
 Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded) {
@@ -37,14 +48,10 @@ Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded) {
             prop.scale = collider.radiusM;
             prop.albedo = SPHERE_ALBEDO;
         } else {
-            const std::string field = "/colliders/" + std::to_string(i) + "/file";
-            auto file = resolveAssetPath(loaded.folder, collider.file, field);
-            if (!file)
-                return Error{loaded.file.string(), file.error().message};
-            auto imported = loadGltf(*file);
-            if (!imported)
-                return imported.error();
-            prop.mesh = std::move(imported->mesh);
+            auto loadedMesh = loadColliderMesh(loaded, collider, i);
+            if (!loadedMesh)
+                return loadedMesh.error();
+            prop.mesh = std::move(loadedMesh->imported.mesh);
             prop.scale = collider.scale;
             prop.albedo = MESH_ALBEDO;
         }

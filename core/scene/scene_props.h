@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "mesh/gltf_loader.h"
 #include "mesh/surface_mesh.h"
 #include "physics/wind.h"
 #include "project/project.h"
@@ -27,6 +28,15 @@ struct SceneProp {
     // Model matrix at `timeS`: translate(origin) · scale.
     glm::mat4 modelAt(float timeS) const;
 };
+
+// The glTF file of mesh collider `index` (its path resolved in the project folder) and its mesh:
+// what the props draw and the physics packs. Errors name the project field or the file.
+struct ColliderMesh {
+    std::filesystem::path file;
+    GltfImport imported;
+};
+Result<ColliderMesh> loadColliderMesh(const LoadedProject& loaded, const ColliderDesc& collider,
+                                      std::size_t index);
 
 // One prop per collider, in project order; errors name the collider's file or field.
 Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded);
