@@ -14,14 +14,6 @@ constexpr std::string_view XYZ = "[x, y, z]";
 constexpr json::NumberRule DENSITY_RULE{0.0, 1000.0};
 constexpr json::NumberRule SIZE_RULE{0.0, 1000.0, true, false};
 
-template <std::size_t N>
-std::string validNames(const std::array<std::string_view, N>& names) {
-    std::string text;
-    for (std::string_view name : names)
-        text += (text.empty() ? "" : ", ") + json::quote(name);
-    return text;
-}
-
 template <class Enum, std::size_t N>
 Result<Enum> parseName(std::string_view name, const std::array<std::string_view, N>& names,
                        std::string_view what) {
@@ -29,7 +21,7 @@ Result<Enum> parseName(std::string_view name, const std::array<std::string_view,
         if (names[i] == name)
             return static_cast<Enum>(i);
     return makeError("", "unknown " + std::string(what) + " " + json::quote(name) + " (valid: " +
-                             validNames(names) + ")");
+                             json::quotedList(names) + ")");
 }
 
 }  // namespace

@@ -166,16 +166,6 @@ bool obeys(const NumberRule& rule, double value) {
     return true;
 }
 
-std::string quotedList(std::span<const std::string_view> names) {
-    std::string list;
-    for (const std::string_view name : names) {
-        if (!list.empty())
-            list += ", ";
-        list += "\"" + std::string(name) + "\"";
-    }
-    return list;
-}
-
 }  // namespace
 
 Result<Json> parseDocument(std::string_view text, const std::string& sourceName) {
@@ -241,6 +231,16 @@ std::string childPointer(const std::string& pointer, std::string_view key) {
 
 std::string childPointer(const std::string& pointer, std::size_t index) {
     return pointer + "/" + std::to_string(index);
+}
+
+std::string quotedList(std::span<const std::string_view> names) {
+    std::string list;
+    for (const std::string_view name : names) {
+        if (!list.empty())
+            list += ", ";
+        list += "\"" + std::string(name) + "\"";
+    }
+    return list;
 }
 
 std::string quote(std::string_view text) {

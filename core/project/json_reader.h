@@ -125,6 +125,9 @@ private:
 // so user text never breaks a one-line message.
 std::string quote(std::string_view text);
 
+// "\"a\", \"b\", \"c\"": the valid names an error lists.
+std::string quotedList(std::span<const std::string_view> names);
+
 // Describes a JSON value for "(got ...)" in messages: `-3`, `inf`, `string "abc"`, `array`.
 std::string describeValue(const Json& node);
 

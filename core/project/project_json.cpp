@@ -380,7 +380,7 @@ Result<GeometryPath> parseGeometryPath(std::string_view name) {
         if (names[i] == name)
             return static_cast<GeometryPath>(i);
     return makeError("", "unknown geometry path " + json::quote(name) +
-                             " (valid: \"auto\", \"tess\", \"strips\")");
+                             " (valid: " + json::quotedList(names) + ")");
 }
 
 Result<Project> parseProject(std::string_view jsonText, const std::string& sourceName) {
