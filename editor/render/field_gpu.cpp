@@ -41,9 +41,12 @@ FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
     mBlades = gl::Buffer::fromVector(field.patched.blades, "blades " + field.name);
     // Scenes built without a bake (tests that assemble a LayerField by hand) light every blade
     // as open ground: default shading per slot.
-    std::vector<core::BladeShading> shading = field.shading;
-    shading.resize(std::max<std::size_t>(mBladeCount, 1));
-    mShading = gl::Buffer::fromVector(shading, "blade shading " + field.name);
+    if (field.shading.size() == mBladeCount && mBladeCount > 0)
+        mShading = gl::Buffer::fromVector(field.shading, "blade shading " + field.name);
+    else
+        mShading = gl::Buffer::fromVector(
+            std::vector<core::BladeShading>(std::max<std::size_t>(mBladeCount, 1)),
+            "blade shading " + field.name);
     std::vector<glm::vec4> bounds;
     bounds.reserve(2 * field.patched.patches.size() + 2);
     for (const auto& patch : field.patched.patches) {

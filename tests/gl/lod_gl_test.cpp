@@ -12,6 +12,7 @@
 #include "gl_context_fixture.h"
 #include "offscreen_render.h"
 #include "scatter/patches.h"
+#include "support/image_compare.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"
 
@@ -37,11 +38,9 @@ render::OffscreenResult renderWith(const core::Scene& scene, const core::OrbitCa
     return result.ok() ? std::move(*result) : render::OffscreenResult{};
 }
 
+// Mean |a − b| over RGB, in levels (the golden-image metric).
 double meanAbsDifference(const gl::Rgba8Image& a, const gl::Rgba8Image& b) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i)
-        sum += std::abs(static_cast<int>(a.pixels[i]) - static_cast<int>(b.pixels[i]));
-    return sum / static_cast<double>(a.pixels.size());
+    return compareImages(a.pixels, b.pixels, 48).meanAbs;
 }
 
 core::OrbitCamera cameraAt(float distance) {
@@ -162,15 +161,8 @@ TEST_F(LodTest, TessellationMatchesStripsOnALargeField) {
     const core::OrbitCamera camera = cameraAt(4.0f);
     const auto strips = renderWith(*scene, camera, 0.0f, render::GeometryPath::Strips, 128);
     const auto tess = renderWith(*scene, camera, 0.0f, render::GeometryPath::Tessellation, 128);
-    std::size_t differing = 0;
-    for (std::size_t p = 0; p < strips.image.pixels.size() / 4; ++p) {
-        int largest = 0;
-        for (std::size_t c = 0; c < 3; ++c)
-            largest = std::max(largest, std::abs(int(strips.image.pixels[4 * p + c]) -
-                                                 int(tess.image.pixels[4 * p + c])));
-        differing += largest > 48 ? 1 : 0;
-    }
-    const double share = static_cast<double>(differing) / (128.0 * 128.0);
+    const double share =
+        compareImages(strips.image.pixels, tess.image.pixels, 48).differingShare;
     std::printf("[ lod ] 20k blades, tess vs strips at 8: %.4f of pixels differ\n", share);
     EXPECT_LT(share, 0.005);
     EXPECT_EQ(tess.lastFrame.cull.drawn, strips.lastFrame.cull.drawn);
