@@ -8,6 +8,7 @@
 #include <exception>
 #include <string>
 
+#include "util/assert.h"
 #include "util/atomic_file.h"
 
 namespace grass::core {
@@ -80,15 +81,21 @@ Result<MapImage> readMap(const fs::path& file) {
     MapImage map;
     map.width = spec.width;
     map.height = spec.height;
-    // Only the channels we use: grey, or R, G, B for luminance (alpha is not density).
+    // Only the channels we use: grey, or R, G, B for luminance. Alpha is coverage, not density,
+    // so it never counts. Every conversion is reported: a user who painted in colour should
+    // learn that we read brightness.
     const int channels = spec.nchannels >= 3 ? 3 : 1;
+    const std::string luminance = "converted to luminance (Rec. 709 weights on the stored values)";
     if (spec.nchannels == 2)
-        map.warnings.push_back(name + ": 2 channels (grey + alpha?); using the first");
-    if (spec.nchannels >= 3)
+        map.warnings.push_back(name + ": 2 channels (grey + alpha): using grey, alpha ignored");
+    else if (spec.nchannels == 3)
+        map.warnings.push_back(name + ": RGB " + luminance);
+    else if (spec.nchannels == 4)
+        map.warnings.push_back(name + ": RGBA " + luminance + "; alpha ignored");
+    else if (spec.nchannels > 4)
         map.warnings.push_back(name + ": " + std::to_string(spec.nchannels) +
-                               " channels converted to luminance (Rec. 709 weights on the stored "
-                               "values" +
-                               std::string(spec.nchannels > 3 ? "; alpha ignored)" : ")"));
+                               " channels: the first 3 " + luminance + "; channels 4 to " +
+                               std::to_string(spec.nchannels) + " ignored");
     const auto rowFloats =
         static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(channels);
     map.texels.reserve(static_cast<std::size_t>(spec.width) *
@@ -134,9 +141,11 @@ Result<MapImage> readMap(const fs::path& file) {
 
 Result<void> writeMap(const MapImage& map, const fs::path& file, MapSampleFormat format) {
     const std::string name = file.string();
-    if (map.width <= 0 || map.height <= 0 ||
-        map.texels.size() !=
-            static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height))
+    if (map.width <= 0 || map.height <= 0)
+        return makeError(name, "the map is empty (" + std::to_string(map.width) + "×" +
+                                   std::to_string(map.height) + "); nothing to write");
+    if (map.texels.size() !=
+        static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height))
         return makeError(name, "internal: the map's size does not match its texels");
     const std::string ext = lowerExtension(file);
     const bool png = ext == ".png", exr = ext == ".exr", tiff = ext == ".tif" || ext == ".tiff";
@@ -145,9 +154,13 @@ Result<void> writeMap(const MapImage& map, const fs::path& file, MapSampleFormat
                      : (png || tiff ? MapSampleFormat::UInt16 : MapSampleFormat::UInt8);
     if (png && format == MapSampleFormat::Float)
         return makeError(name, "PNG holds 8 or 16 bits per texel, not float; use .exr or .tif");
-    if (exr && format != MapSampleFormat::Float)
-        return makeError(name, "EXR holds float texels; use .png or .tif for 8 or 16 bits");
+    if (exr && format != MapSampleFormat::Float && format != MapSampleFormat::Half)
+        return makeError(name, "EXR holds half or float texels; use .png or .tif for 8 or 16 bits");
+    // Half is refused elsewhere because the other writers would quietly store something else.
+    if (!exr && format == MapSampleFormat::Half)
+        return makeError(name, "half-float texels need .exr; use Float for .tif");
     const OIIO::TypeDesc type = format == MapSampleFormat::Float    ? OIIO::TypeDesc::FLOAT
+                                : format == MapSampleFormat::Half   ? OIIO::TypeDesc::HALF
                                 : format == MapSampleFormat::UInt16 ? OIIO::TypeDesc::UINT16
                                                                     : OIIO::TypeDesc::UINT8;
     std::error_code ec;
@@ -186,6 +199,53 @@ Result<void> writeMap(const MapImage& map, const fs::path& file, MapSampleFormat
     return commitTemporaryFile(temporary, file);
 }
 
+// Resampling weights along one axis of `from` texels to `to` texels: output texel i reads
+// source texels first[i] + k with weights[begin[i] + k], for begin[i] + k < begin[i + 1].
+struct AxisFilter {
+    std::vector<int> first;
+    std::vector<std::size_t> begin;
+    std::vector<float> weights;
+};
+
+AxisFilter makeAxisFilter(int from, int to) {
+    AxisFilter filter;
+    filter.first.reserve(static_cast<std::size_t>(to));
+    filter.begin.reserve(static_cast<std::size_t>(to) + 1);
+    // Doubles so that integer ratios give exact footprints and weights (a 2^k box is exact).
+    const double scale = static_cast<double>(from) / static_cast<double>(to);
+    for (int i = 0; i < to; ++i) {
+        filter.begin.push_back(filter.weights.size());
+        if (scale <= 2.0) {
+            // Bilinear at the new texel centre, in the source's texel-centre coordinates, clamped
+            // to the edge exactly as MapImage::sample does. Up to 2× down every source texel
+            // still reaches some output texel, so nothing is skipped.
+            const double x = std::clamp((static_cast<double>(i) + 0.5) * scale - 0.5, 0.0,
+                                        static_cast<double>(from - 1));
+            const int x0 = static_cast<int>(x);
+            const double t = x - static_cast<double>(x0);
+            filter.first.push_back(x0);
+            filter.weights.push_back(static_cast<float>(1.0 - t));
+            if (x0 + 1 < from)
+                filter.weights.push_back(static_cast<float>(t));
+        } else {
+            // The output texel covers source edges [lo, hi); each source texel weighs the length
+            // of its overlap. Bilinear here would read 2 of the more than 2 texels and alias.
+            const double lo = static_cast<double>(i) * static_cast<double>(from) / to;
+            const double hi = static_cast<double>(i + 1) * static_cast<double>(from) / to;
+            const int k0 = static_cast<int>(lo);
+            const int k1 = std::min(from, static_cast<int>(std::ceil(hi)));
+            filter.first.push_back(k0);
+            for (int k = k0; k < k1; ++k) {
+                const double overlap = std::min(hi, static_cast<double>(k) + 1.0) -
+                                       std::max(lo, static_cast<double>(k));
+                filter.weights.push_back(static_cast<float>(overlap / (hi - lo)));
+            }
+        }
+    }
+    filter.begin.push_back(filter.weights.size());
+    return filter;
+}
+
 }  // namespace
 
 float MapImage::sample(glm::vec2 uv) const {
@@ -222,12 +282,85 @@ MapImage makeConstantMap(int width, int height, float value) {
     return map;
 }
 
+MapImage resampleMap(const MapImage& map, int width, int height) {
+    GRASS_ASSERT(width >= 1 && height >= 1);
+    GRASS_ASSERT(map.width >= 1 && map.height >= 1 &&
+                 map.texels.size() ==
+                     static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height));
+    if (width == map.width && height == map.height)
+        return map;
+    const auto size = [](int n) { return static_cast<std::size_t>(n); };
+
+    // Separable: rows first (map.width -> width), then columns (map.height -> height). Both
+    // bilinear and box filters are products of their 1D filters, so this equals the 2D filter.
+    std::vector<float> rows(size(width) * size(map.height));
+    if (width == map.width) {
+        rows = map.texels;
+    } else {
+        const AxisFilter fx = makeAxisFilter(map.width, width);
+        for (std::size_t y = 0; y < size(map.height); ++y) {
+            const float* in = &map.texels[y * size(map.width)];
+            for (std::size_t x = 0; x < size(width); ++x) {
+                float sum = 0.0f;
+                for (std::size_t k = fx.begin[x]; k < fx.begin[x + 1]; ++k)
+                    sum += fx.weights[k] * in[size(fx.first[x]) + (k - fx.begin[x])];
+                rows[y * size(width) + x] = sum;
+            }
+        }
+    }
+
+    MapImage out;
+    out.width = width;
+    out.height = height;
+    out.warnings = map.warnings;
+    if (height == map.height) {
+        out.texels = std::move(rows);
+    } else {
+        out.texels.assign(size(width) * size(height), 0.0f);
+        const AxisFilter fy = makeAxisFilter(map.height, height);
+        // Whole rows at a time: each output row is a weighted sum of source rows.
+        for (std::size_t y = 0; y < size(height); ++y) {
+            float* dst = &out.texels[y * size(width)];
+            for (std::size_t k = fy.begin[y]; k < fy.begin[y + 1]; ++k) {
+                const float w = fy.weights[k];
+                const float* src = &rows[(size(fy.first[y]) + (k - fy.begin[y])) * size(width)];
+                for (std::size_t x = 0; x < size(width); ++x)
+                    dst[x] += w * src[x];
+            }
+        }
+    }
+    // The weights are convex, but their float rounding can land a hair outside [0, 1].
+    for (float& t : out.texels)
+        t = std::clamp(t, 0.0f, 1.0f);
+    return out;
+}
+
 Result<MapImage> loadMapImage(const fs::path& file) {
     // OIIO and the standard library may throw (bad_alloc, filesystem errors); nothing escapes.
     try {
         return readMap(file);
     } catch (const std::exception& e) {
         return makeError(file.string(), std::string("cannot read the map: ") + e.what());
+    }
+}
+
+Result<MapImage> loadMapImageAt(const fs::path& file, int width, int height) {
+    const auto sizeText = [](int w, int h) { return std::to_string(w) + "×" + std::to_string(h); };
+    if (width < 1 || height < 1 || width > MAX_MAP_SIDE || height > MAX_MAP_SIDE)
+        return makeError(file.string(), "cannot load the map at " + sizeText(width, height) +
+                                            "; the size must be 1 to " +
+                                            std::to_string(MAX_MAP_SIDE) + " texels a side");
+    Result<MapImage> loaded = loadMapImage(file);
+    if (!loaded || (loaded->width == width && loaded->height == height))
+        return loaded;
+    try {
+        MapImage map = resampleMap(*loaded, width, height);
+        map.warnings.push_back(file.string() + ": resampled from " +
+                               sizeText(loaded->width, loaded->height) + " to " +
+                               sizeText(width, height));
+        return map;
+    } catch (const std::exception& e) {
+        return makeError(file.string(), std::string("cannot resample the map: ") + e.what());
     }
 }
 
