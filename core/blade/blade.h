@@ -40,4 +40,8 @@ Blade makeRestBlade(glm::vec3 v0, glm::vec3 up, float h, float w, float s, float
 // The unit width direction: perpendicular to up, rotated by theta (SPEC §1).
 glm::vec3 widthDirection(glm::vec3 up, float theta);
 
+// The inverse of widthDirection: the theta whose width direction about unit `up` is `direction`
+// (projected onto the plane perpendicular to up).
+float widthAngle(glm::vec3 up, glm::vec3 direction);
+
 }  // namespace grass::core

@@ -45,4 +45,16 @@ std::vector<glm::vec3> stemRibbon(const StemSetParams& params, int stem, float h
 // All six ribbons, stem after stem (240 vertices at 4 levels).
 std::vector<glm::vec3> stemSetVertices(const StemSetParams& params, float halfWidth);
 
+// One stem set placed on the surface, the per-instance data of Kim & Cho's instanced technique
+// (`--technique growth`): four vec4, 64 bytes, std430. The set's model frame (y up, x across, z
+// the bend direction) is rotated by `yaw` about `up` and scaled by `metresPerUnit`; levels come
+// from the draw (1..4), the rest from here.
+struct StemSetInstance {
+    glm::vec4 rootMetresPerUnit{0.0f, 0.0f, 0.0f, 1.0f};  // root position (world, m), scale
+    glm::vec4 upYaw{0.0f, 1.0f, 0.0f, 0.0f};               // unit surface normal, yaw (radians)
+    glm::vec4 alphaBetaThetaB{0.1f, 0.7f, 0.0f, 1.0f};     // growth parameters (SPEC §9)
+    glm::vec4 halfWidthSpread{0.02f, 0.05f, 0.05f, 0.0f};  // ribbon half width, spreadX, spreadZ
+};
+static_assert(sizeof(StemSetInstance) == 64, "StemSetInstance must be four vec4 (std430)");
+
 }  // namespace grass::core

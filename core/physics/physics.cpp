@@ -126,6 +126,14 @@ glm::vec3 restTip(const Blade& blade) {
     return blade.v0() + h * up;
 }
 
+std::vector<glm::vec3> restTipsAsGrown(std::span<const Blade> blades) {
+    std::vector<glm::vec3> tips;
+    tips.reserve(blades.size());
+    for (const Blade& b : blades)
+        tips.push_back(isFinite(b.v2()) ? b.v2() : restTip(b));
+    return tips;
+}
+
 std::vector<glm::vec3> restTips(std::span<const Blade> blades) {
     std::vector<glm::vec3> tips;
     tips.reserve(blades.size());

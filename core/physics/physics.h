@@ -82,6 +82,10 @@ std::uint32_t substepCount(const PhysicsParams& params);
 // Rest tip Iv2 = v0 + h·up (up normalised; v0 for a degenerate blade).
 glm::vec3 restTip(const Blade& blade);
 std::vector<glm::vec3> restTips(std::span<const Blade> blades);
+// The rest tips of a field as grown (scene/layer_growth.h): its blades stand at rest, upright or
+// leaned by the growth model, so each tip v2 is where recovery pulls it back to. Equal to
+// restTips for upright blades.
+std::vector<glm::vec3> restTipsAsGrown(std::span<const Blade> blades);
 
 // Degenerate input, checked at load: a message naming the first problem of each blade (empty
 // when the blade is valid). `checkBlades` reports the first bad blade as "blade N: problem".

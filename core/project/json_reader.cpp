@@ -433,6 +433,34 @@ bool Reader::readRange(const Json& node, const std::string& pointer, NumberRule 
     return true;
 }
 
+bool Reader::readFloats(const Json& node, const std::string& pointer, NumberRule rule,
+                        std::string_view what, std::span<float> out) {
+    if (!ok())
+        return false;
+    if (!node.is_array() || node.size() != out.size()) {
+        fail(pointer, "must be an array of " + std::to_string(out.size()) + " numbers " +
+                          std::string(what) + " (got " + describeValue(node) + ")");
+        return false;
+    }
+    std::vector<float> values(out.size());
+    for (std::size_t i = 0; i < out.size(); ++i)
+        if (!readFloat(node[i], childPointer(pointer, i), rule, values[i]))
+            return false;
+    std::copy(values.begin(), values.end(), out.begin());
+    return true;
+}
+
+bool Reader::readBool(const Json& node, const std::string& pointer, bool& out) {
+    if (!ok())
+        return false;
+    if (!node.is_boolean()) {
+        fail(pointer, "must be true or false (got " + describeValue(node) + ")");
+        return false;
+    }
+    out = node.get<bool>();
+    return true;
+}
+
 bool Reader::readEnum(const Json& node, const std::string& pointer,
                       std::span<const std::string_view> names, std::size_t& out) {
     if (!ok())
@@ -501,6 +529,17 @@ void Object::readRange(std::string_view key, NumberRule rule, float& min, float&
         mReader.readRange(*node, pointerTo(key), rule, min, max);
 }
 
+void Object::readFloats(std::string_view key, NumberRule rule, std::string_view what,
+                        std::span<float> out) {
+    if (const Json* node = find(key))
+        mReader.readFloats(*node, pointerTo(key), rule, what, out);
+}
+
+void Object::readBool(std::string_view key, bool& out) {
+    if (const Json* node = find(key))
+        mReader.readBool(*node, pointerTo(key), out);
+}
+
 double jsonFloat(float value) {
     char buffer[32];
     const auto printed = std::to_chars(buffer, buffer + sizeof buffer, value);
@@ -510,6 +549,13 @@ double jsonFloat(float value) {
         static_cast<float>(shortest) == value)
         return shortest;
     return static_cast<double>(value);
+}
+
+Json jsonFloats(std::span<const float> values) {
+    Json out = Json::array();
+    for (float value : values)
+        out.push_back(jsonFloat(value));
+    return out;
 }
 
 Json jsonVec3(glm::vec3 v) {

@@ -85,6 +85,11 @@ public:
     // [min, max] with min <= max, both obeying `rule`.
     bool readRange(const Json& node, const std::string& pointer, NumberRule rule, float& min,
                    float& max);
+    // [a, b, ...] with exactly out.size() numbers, each obeying `rule`; `what` names them in
+    // messages ("[gy0, gy1, gy2]"). All or nothing: out is untouched on failure.
+    bool readFloats(const Json& node, const std::string& pointer, NumberRule rule,
+                    std::string_view what, std::span<float> out);
+    bool readBool(const Json& node, const std::string& pointer, bool& out);
     // A string that must be one of `names`; returns its index.
     bool readEnum(const Json& node, const std::string& pointer,
                   std::span<const std::string_view> names, std::size_t& out);
@@ -114,6 +119,9 @@ public:
     void readString(std::string_view key, bool allowEmpty, std::string& out);
     void readVec3(std::string_view key, NumberRule rule, std::string_view what, glm::vec3& out);
     void readRange(std::string_view key, NumberRule rule, float& min, float& max);
+    void readFloats(std::string_view key, NumberRule rule, std::string_view what,
+                    std::span<float> out);
+    void readBool(std::string_view key, bool& out);
 
 private:
     Reader& mReader;
@@ -136,6 +144,7 @@ std::string describeValue(const Json& node);
 double jsonFloat(float value);
 Json jsonVec3(glm::vec3 v);
 Json jsonRange(float min, float max);
+Json jsonFloats(std::span<const float> values);
 
 // Names must be unique within a list: the UI and the CLI select layers and cameras by name.
 template <class T>

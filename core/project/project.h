@@ -14,6 +14,7 @@
 
 #include "billboard/star_billboards.h"
 #include "blade/blade_shape.h"
+#include "growth/growth_curves.h"
 #include "mesh/procedural.h"
 #include "physics/physics.h"
 #include "scatter/scatter.h"
@@ -31,10 +32,36 @@ struct MeshSource {
     bool operator==(const MeshSource&) const = default;
 };
 
+// Kim & Cho's growth model on a layer (SPEC §9): the soil and light maps, through the control
+// curves, set every blade's height, width, rest lean and colour. Off by default: a layer
+// without it keeps the blade ranges as they are (the curves at g = l = 1 would still shorten
+// and lean every blade).
+struct GrowthDesc {
+    bool enabled = false;
+    GrowthCurves curves;
+    // Levels of the stem sets the growth technique draws (1..4).
+    int levels = 4;
+    // The colours of grass in poor conditions (b = 0), linear RGB; rootColor/tipColor of the
+    // layer are the healthy ones (b = 1). Straw-like by default.
+    glm::vec3 poorRootColor{0.30f, 0.24f, 0.08f};
+    glm::vec3 poorTipColor{0.72f, 0.62f, 0.30f};
+    bool operator==(const GrowthDesc&) const = default;
+};
+
+// Every map of a layer is resampled to this size when loaded and created at it when painted.
+inline constexpr int DEFAULT_MAP_RESOLUTION = 512;
+inline constexpr int MAX_MAP_RESOLUTION = 8192;
+
 struct GrassLayer {
     std::string name = "grass";
     ScatterParams scatter;
-    std::string densityMap;  // relative path, empty = uniform
+    // Environment maps in the mesh's UV space, relative paths; empty = 1 everywhere. Density
+    // thins the scatter; soil quality g and light amount l drive the growth model.
+    std::string densityMap;
+    std::string soilMap;
+    std::string lightMap;
+    glm::ivec2 mapResolution{DEFAULT_MAP_RESOLUTION, DEFAULT_MAP_RESOLUTION};
+    GrowthDesc growth;
     // Outline of every blade of the layer (SPEC §7); triangle is what files without the key got
     // before shapes were per layer.
     BladeShape shape = BladeShape::Triangle;
@@ -93,9 +120,10 @@ struct GrassLightingDesc {
 
 enum class GeometryPath { Auto, Tessellation, Strips };
 
-// What draws the grass: the geometric blades (SPEC §6–7), star billboards alone (SPEC §8), or
-// blades near the camera cross-faded into billboards far away.
-enum class GrassTechnique { Blades, Billboards, Hybrid };
+// What draws the grass: the geometric blades (SPEC §6–7), star billboards alone (SPEC §8),
+// blades near the camera cross-faded into billboards far away, or Kim & Cho's instanced stem
+// sets (SPEC §9).
+enum class GrassTechnique { Blades, Billboards, Hybrid, Growth };
 
 // Star billboard grass objects (SPEC §8): the billboard technique and the hybrid's far field.
 struct BillboardDesc {
@@ -168,7 +196,7 @@ struct Project {
 };
 
 std::string_view geometryPathName(GeometryPath path);
-// "blades" | "billboards" | "hybrid"
+// "blades" | "billboards" | "hybrid" | "growth"
 std::string_view grassTechniqueName(GrassTechnique technique);
 Result<GrassTechnique> parseGrassTechnique(std::string_view name);
 // "per-cluster" | "per-vertex" | "per-object"

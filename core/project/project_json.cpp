@@ -30,9 +30,10 @@ constexpr std::array<std::string_view, 14> TOP_KEYS{
 constexpr std::array<std::string_view, 8> MESH_KEYS{"file",       "procedural",  "size",
                                                     "minor_size", "hill_height", "hill_scale",
                                                     "resolution", "noise_seed"};
-constexpr std::array<std::string_view, 11> LAYER_KEYS{
-    "name",  "density", "density_map", "clump_spacing", "blades_per_clump", "clump_radius",
-    "blade", "shape",   "tip_start",   "root_color",    "tip_color"};
+constexpr std::array<std::string_view, 15> LAYER_KEYS{
+    "name",         "density",      "density_map", "soil_map",  "light_map",
+    "map_resolution", "clump_spacing", "blades_per_clump", "clump_radius", "blade",
+    "shape",        "tip_start",    "root_color",  "tip_color", "growth"};
 constexpr std::array<std::string_view, 3> BLADE_KEYS{"height", "width", "stiffness"};
 constexpr std::array<std::string_view, 4> CAMERA_KEYS{"name", "position", "target", "fov_y_deg"};
 constexpr std::array<std::string_view, 3> SUN_KEYS{"direction", "color", "intensity"};
@@ -101,9 +102,26 @@ void readLayer(json::Reader& reader, const Json& node, const std::string& pointe
     object.readString("name", false, layer.name);
     ScatterParams& scatter = layer.scatter;
     object.readFloat("density", json::NON_NEGATIVE, scatter.density);
-    object.readString("density_map", true, layer.densityMap);
-    if (!layer.densityMap.empty())
-        checkAssetPath(reader, object.pointerTo("density_map"), layer.densityMap);
+    const auto readMapPath = [&](std::string_view key, std::string& path) {
+        object.readString(key, true, path);
+        if (!path.empty())
+            checkAssetPath(reader, object.pointerTo(key), path);
+    };
+    readMapPath("density_map", layer.densityMap);
+    readMapPath("soil_map", layer.soilMap);
+    readMapPath("light_map", layer.lightMap);
+    if (const Json* size = object.find("map_resolution")) {
+        std::int64_t width = 0, height = 0;
+        const std::string at = object.pointerTo("map_resolution");
+        if (!size->is_array() || size->size() != 2)
+            reader.fail(at, "must be an array of 2 integers [width, height] (got " +
+                                json::describeValue(*size) + ")");
+        else if (reader.readInt((*size)[0], json::childPointer(at, 0), 1, MAX_MAP_RESOLUTION,
+                                width) &&
+                 reader.readInt((*size)[1], json::childPointer(at, 1), 1, MAX_MAP_RESOLUTION,
+                                height))
+            layer.mapResolution = {static_cast<int>(width), static_cast<int>(height)};
+    }
     object.readFloat("clump_spacing", json::NON_NEGATIVE, scatter.clumpSpacing);
     object.readInt("blades_per_clump", 0, MAX_BLADES_PER_CLUMP, scatter.bladesPerClump);
     object.readFloat("clump_radius", json::NON_NEGATIVE, scatter.clumpRadius);
@@ -123,6 +141,8 @@ void readLayer(json::Reader& reader, const Json& node, const std::string& pointe
     object.readFloat("tip_start", json::NumberRule{0.0, 1.0, false, true}, layer.tipStart);
     object.readVec3("root_color", json::UNIT_INTERVAL, RGB, layer.rootColor);
     object.readVec3("tip_color", json::UNIT_INTERVAL, RGB, layer.tipColor);
+    if (const Json* growth = object.find("growth"))
+        json::readGrowth(reader, *growth, object.pointerTo("growth"), layer.growth);
 }
 
 void readCamera(json::Reader& reader, const Json& node, const std::string& pointer,
@@ -277,6 +297,9 @@ Json layerJson(const GrassLayer& layer) {
     out["name"] = layer.name;
     out["density"] = jsonFloat(s.density);
     out["density_map"] = layer.densityMap;
+    out["soil_map"] = layer.soilMap;
+    out["light_map"] = layer.lightMap;
+    out["map_resolution"] = Json::array({layer.mapResolution.x, layer.mapResolution.y});
     out["clump_spacing"] = jsonFloat(s.clumpSpacing);
     out["blades_per_clump"] = s.bladesPerClump;
     out["clump_radius"] = jsonFloat(s.clumpRadius);
@@ -289,6 +312,7 @@ Json layerJson(const GrassLayer& layer) {
     out["tip_start"] = jsonFloat(layer.tipStart);
     out["root_color"] = jsonVec3(layer.rootColor);
     out["tip_color"] = jsonVec3(layer.tipColor);
+    out["growth"] = json::growthJson(layer.growth);
     return out;
 }
 

@@ -20,12 +20,16 @@ void readCollider(Reader& reader, const Json& node, const std::string& pointer,
                   ColliderDesc& collider);
 
 // billboard_json.cpp: "billboards" (SPEC §8) and the names of techniques and animation modes.
-inline constexpr std::array<std::string_view, 3> TECHNIQUE_NAMES{"blades", "billboards",
-                                                                 "hybrid"};
+inline constexpr std::array<std::string_view, 4> TECHNIQUE_NAMES{"blades", "billboards",
+                                                                 "hybrid", "growth"};
 inline constexpr std::array<std::string_view, 3> ANIMATION_NAMES{"per-cluster", "per-vertex",
                                                                  "per-object"};
 void readBillboards(Reader& reader, const Json& node, BillboardDesc& billboards);
 Json billboardsJson(const BillboardDesc& billboards);
+
+// growth_json.cpp: a layer's "growth" (SPEC §9).
+void readGrowth(Reader& reader, const Json& node, const std::string& pointer, GrowthDesc& growth);
+Json growthJson(const GrowthDesc& growth);
 
 // lighting_json.cpp: "lighting" (SPEC §10).
 void readLighting(Reader& reader, const Json& node, GrassLightingDesc& lighting);

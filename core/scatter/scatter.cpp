@@ -27,12 +27,6 @@ constexpr std::uint64_t STREAM_UNIFORM = 0;
 constexpr std::uint64_t STREAM_CLUMP_CENTRES = 1;
 constexpr std::uint64_t STREAM_CLUMP_BLADES = 2;
 
-float mapValue(const MapImage* map, glm::vec2 uv) {
-    if (map == nullptr || map->texels.empty())
-        return 1.0f;
-    return map->sample(uv);
-}
-
 Blade makeBlade(const SurfaceSample& at, const BladeRanges& ranges, Rng& rng) {
     const float h = rng.uniform(ranges.heightMin, ranges.heightMax);
     const float w = rng.uniform(ranges.widthMin, ranges.widthMax);
@@ -46,7 +40,7 @@ std::string countText(double count) {
 }
 
 void scatterUniform(const SurfaceSampler& sampler, const ScatterParams& params,
-                    const MapImage* densityMap, std::uint64_t seed, ScatterResult& result) {
+                    std::uint64_t seed, ScatterCandidates& result) {
     const double density = static_cast<double>(params.density);
     if (!(density > 0.0) || !std::isfinite(density))
         return;
@@ -57,31 +51,25 @@ void scatterUniform(const SurfaceSampler& sampler, const ScatterParams& params,
                                   " blade candidates; clamped to " + countText(candidates) +
                                   " (the limit per layer)");
     }
-    // A map painted out everywhere keeps no candidate: skip drawing them.
-    if (densityMap != nullptr && !densityMap->texels.empty() && !(densityMap->maxValue() > 0.0f))
-        return;
     const auto count = static_cast<std::size_t>(std::llround(candidates));
     Rng rng(seed, STREAM_UNIFORM);
     result.blades.reserve(count);
     result.uvs.reserve(count);
+    result.thinning.reserve(count);
     for (std::size_t i = 0; i < count; ++i) {
         const SurfaceSample at = sampler.sample(rng);
-        // Thinning by the map: a candidate survives with probability map(uv), so the expected
-        // count is density × ∫ map dA. Every candidate draws the same numbers whether it is
-        // kept or not, so painting the map only adds or removes blades where it paints; the
-        // rest of the field does not reshuffle.
+        // Every candidate draws the same numbers whether a map keeps it or not, so painting the
+        // map only adds or removes blades where it paints; the rest of the field stays.
         const float keep = rng.uniform();
-        const Blade blade = makeBlade(at, params.blade, rng);
-        if (densityMap != nullptr && !(keep < mapValue(densityMap, at.uv)))
-            continue;
-        result.blades.push_back(blade);
+        result.blades.push_back(makeBlade(at, params.blade, rng));
         result.uvs.push_back(at.uv);
+        result.thinning.push_back({keep, -1});
     }
     result.uniformCount = result.blades.size();
 }
 
-void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params, const MapImage* densityMap,
-                   std::uint64_t seed, ScatterResult& result) {
+void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params, std::uint64_t seed,
+                   ScatterCandidates& result) {
     const float spacing = params.clumpSpacing;
     if (!(spacing > 0.0f) || !std::isfinite(spacing) || params.bladesPerClump <= 0)
         return;
@@ -99,7 +87,7 @@ void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params, const M
     if (maxCentres == 0)
         return;
 
-    // Centres over the whole surface, then thinned by the map: a subset keeps the minimum
+    // Centres over the whole surface, thinned later by the map: a subset keeps the minimum
     // distance, and the expected clump count follows ∫ map dA (thinning the darts instead
     // would saturate anyway and only tell 0 from non-0).
     Rng centreRng(seed, STREAM_CLUMP_CENTRES);
@@ -113,6 +101,7 @@ void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params, const M
     sampler.buildNeighbourhoodIndex();
     result.blades.reserve(result.blades.size() + centres.points.size() * perClump);
     result.uvs.reserve(result.blades.capacity());
+    result.thinning.reserve(result.blades.capacity());
     const float radius =
         std::isfinite(params.clumpRadius) ? std::max(params.clumpRadius, 0.0f) : 0.0f;
     std::vector<SurfaceSample> around;
@@ -121,11 +110,8 @@ void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params, const M
         // A stream per clump: like the uniform blades, a clump does not change when the map
         // removes another one.
         Rng bladeRng(Rng::splitMix(seed) + k, STREAM_CLUMP_BLADES);
-        const float centreValue = mapValue(densityMap, centre.uv);
-        const float keepCentre = bladeRng.uniform();
-        if (densityMap != nullptr && !(keepCentre < centreValue))
-            continue;
-        result.clumpCentres.push_back(centre.position);
+        const auto clump = static_cast<std::int32_t>(result.clumps.size());
+        result.clumps.push_back({centre.position, centre.uv, bladeRng.uniform()});
         around.clear();
         if (radius > 0.0f) {
             sampler.sampleNear(centre.position, radius, perClump,
@@ -134,31 +120,64 @@ void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params, const M
             around.assign(perClump, centre);
         }
         for (const SurfaceSample& at : around) {
-            // Inside a clump the map thins relative to its centre: a blade survives with
-            // probability min(1, map(blade)/map(centre)), so the expected density is
-            // min(map(centre), map(blade)) ≈ map, and a clump at the edge of a painted-out area
-            // stops at that edge instead of spilling over it.
             const float keep = bladeRng.uniform();
-            const Blade blade = makeBlade(at, params.blade, bladeRng);
-            if (densityMap != nullptr && !(keep * centreValue < mapValue(densityMap, at.uv)))
-                continue;
-            result.blades.push_back(blade);
+            result.blades.push_back(makeBlade(at, params.blade, bladeRng));
             result.uvs.push_back(at.uv);
+            result.thinning.push_back({keep, clump});
         }
     }
-    result.clumpCount = result.clumpCentres.size();
 }
 
 }  // namespace
 
-ScatterResult scatterBlades(const SurfaceMesh& mesh, const ScatterParams& params,
-                            const MapImage* densityMap, std::uint64_t seed) {
-    ScatterResult result;
+bool keepsCandidate(const ScatterCandidates& candidates, std::size_t i, const MapImage* densityMap) {
+    if (densityMap == nullptr || densityMap->texels.empty())
+        return true;
+    const CandidateThinning& thinning = candidates.thinning[i];
+    const float here = densityMap->sample(candidates.uvs[i]);
+    if (thinning.clump < 0)
+        return thinning.keep < here;  // survives with probability map(uv)
+    // Inside a clump the map thins relative to its centre: a blade survives with probability
+    // min(1, map(blade)/map(centre)), so the expected density is min(map(centre), map(blade))
+    // ≈ map, and a clump at the edge of a painted-out area stops at that edge instead of
+    // spilling over it.
+    const ClumpCentre& centre = candidates.clumps[static_cast<std::size_t>(thinning.clump)];
+    const float atCentre = densityMap->sample(centre.uv);
+    return centre.keep < atCentre && thinning.keep * atCentre < here;
+}
+
+ScatterCandidates scatterCandidates(const SurfaceMesh& mesh, const ScatterParams& params,
+                                    std::uint64_t seed) {
+    ScatterCandidates result;
     SurfaceSampler sampler(mesh);
     if (sampler.empty())
         return result;
-    scatterUniform(sampler, params, densityMap, seed, result);
-    scatterClumps(sampler, params, densityMap, seed, result);
+    scatterUniform(sampler, params, seed, result);
+    scatterClumps(sampler, params, seed, result);
+    return result;
+}
+
+ScatterResult scatterBlades(const SurfaceMesh& mesh, const ScatterParams& params,
+                            const MapImage* densityMap, std::uint64_t seed) {
+    ScatterCandidates candidates = scatterCandidates(mesh, params, seed);
+    ScatterResult result;
+    result.warnings = std::move(candidates.warnings);
+    std::vector<bool> clumpKept(candidates.clumps.size(), false);
+    for (std::size_t i = 0; i < candidates.blades.size(); ++i) {
+        if (!keepsCandidate(candidates, i, densityMap))
+            continue;
+        result.blades.push_back(candidates.blades[i]);
+        result.uvs.push_back(candidates.uvs[i]);
+        if (i < candidates.uniformCount)
+            ++result.uniformCount;
+    }
+    for (std::size_t k = 0; k < candidates.clumps.size(); ++k) {
+        const ClumpCentre& centre = candidates.clumps[k];
+        if (densityMap == nullptr || densityMap->texels.empty() ||
+            centre.keep < densityMap->sample(centre.uv))
+            result.clumpCentres.push_back(centre.position);
+    }
+    result.clumpCount = result.clumpCentres.size();
     return result;
 }
 

@@ -49,11 +49,43 @@ struct ScatterResult {
     std::vector<std::string> warnings;  // e.g. a clamped huge request, for the caller to print
 };
 
+// How a density map thins one candidate (scatterCandidates): a uniform candidate (clump < 0)
+// survives where keep < map(uv); a clump candidate where its centre survives
+// (centreKeep < map(centreUv)) and keep·map(centreUv) < map(uv).
+struct CandidateThinning {
+    float keep = 0.0f;
+    std::int32_t clump = -1;  // into ScatterCandidates::clumps, −1 for a uniform candidate
+};
+
+struct ClumpCentre {
+    glm::vec3 position{0.0f};
+    glm::vec2 uv{0.0f};
+    float keep = 0.0f;
+};
+
+// Every blade the layer could grow, whatever its density map says, with what thinning needs:
+// the map only decides which of them live, so a repaint re-decides only the candidates under
+// the brush (scene/layer_growth.h).
+struct ScatterCandidates {
+    std::vector<Blade> blades;
+    std::vector<glm::vec2> uvs;
+    std::vector<CandidateThinning> thinning;
+    std::vector<ClumpCentre> clumps;
+    std::size_t uniformCount = 0;  // candidates from the uniform distribution (they come first)
+    std::vector<std::string> warnings;
+};
+
+// Whether candidate i lives under `densityMap` (null: all live).
+bool keepsCandidate(const ScatterCandidates& candidates, std::size_t i, const MapImage* densityMap);
+
 // The most blades one call produces: a guard against a typo'd density (50 M blades are 3.2 GB
 // of GPU data), reported through ScatterResult::warnings.
 inline constexpr std::size_t MAX_SCATTER_BLADES = 50'000'000;
 
-// densityMap may be null (density 1 everywhere).
+ScatterCandidates scatterCandidates(const SurfaceMesh& mesh, const ScatterParams& params,
+                                    std::uint64_t seed);
+
+// The candidates the map keeps. densityMap may be null (density 1 everywhere).
 ScatterResult scatterBlades(const SurfaceMesh& mesh, const ScatterParams& params,
                             const MapImage* densityMap, std::uint64_t seed);
 

@@ -416,20 +416,22 @@ void forEachBladeSums(const ClusterGrid& g, unsigned threads, Write&& write) {
 
 }  // namespace
 
-Result<std::vector<BladeShading>> bakeBladeShading(const std::vector<Blade>& blades,
-                                                   const BladeShadingParams& params,
-                                                   std::uint64_t seed, unsigned threadCount) {
-    if (Result<void> valid = validate(params); !valid)
-        return valid.error();
-    GRASS_ASSERT(blades.size() < std::numeric_limits<std::uint32_t>::max());
+namespace {
 
-    std::vector<BladeShading> out(blades.size());
-    std::vector<std::uint32_t> live;
-    live.reserve(blades.size());
-    for (std::size_t i = 0; i < blades.size(); ++i) {
-        if (!isLive(blades[i]))
+bool insideBox(glm::vec3 p, glm::vec3 lo, glm::vec3 hi) {
+    return p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x <= hi.x && p.y <= hi.y &&
+           p.z <= hi.z;
+}
+
+// The bake of the blades marked in `target` (all live ones when null), summing over `live`
+// neighbours; entries not targeted are left as they are.
+void bakeInto(const std::vector<Blade>& blades, const std::vector<std::uint32_t>& live,
+              const std::vector<bool>* target, const BladeShadingParams& params,
+              std::uint64_t seed, unsigned threadCount, std::vector<BladeShading>& out) {
+    const auto targeted = [&](std::uint32_t i) { return target == nullptr || (*target)[i]; };
+    for (std::uint32_t i : live) {
+        if (!targeted(i))
             continue;
-        live.push_back(static_cast<std::uint32_t>(i));
         // Age from the blade's slot: deterministic per seed and free of any thread order.
         Rng rng(seed, i);
         const float age = rng.uniform();
@@ -438,7 +440,7 @@ Result<std::vector<BladeShading>> bakeBladeShading(const std::vector<Blade>& bla
         out[i].waterAge = glm::vec4(water, age, 0.0f, 0.0f);
     }
     if (live.empty())
-        return out;
+        return;
 
     unsigned threads = threadCount > 0 ? threadCount : std::thread::hardware_concurrency();
     threads = std::clamp(threads, 1u, MAX_THREADS);
@@ -452,6 +454,8 @@ Result<std::vector<BladeShading>> bakeBladeShading(const std::vector<Blade>& bla
                             double(params.aoRadiusM) * KERNEL_MASS;
         const float perWeight = static_cast<float>(1.0 / norm);
         forEachBladeSums(grid, threads, [&](std::uint32_t i, glm::vec3, const KernelSums& s) {
+            if (!targeted(i))
+                return;
             const float density = s.weight * perWeight;
             // Clamped because floor + (1 - floor)·1 can round a hair above 1.
             const float ao =
@@ -462,6 +466,8 @@ Result<std::vector<BladeShading>> bakeBladeShading(const std::vector<Blade>& bla
     if (params.normalBlurRadiusM > 0.0f) {
         const ClusterGrid grid = buildGrid(blades, live, params.normalBlurRadiusM);
         forEachBladeSums(grid, threads, [&](std::uint32_t i, glm::vec3 up, const KernelSums& s) {
+            if (!targeted(i))
+                return;
             const float len = glm::length(s.up);
             // Neighbours within 90° count fully and those beyond 120° not at all, so the sum
             // only vanishes or turns away from the blade's own up on folds sharper than a right
@@ -471,7 +477,58 @@ Result<std::vector<BladeShading>> bakeBladeShading(const std::vector<Blade>& bla
                 out[i].blurredNormalAo = glm::vec4(s.up / len, out[i].blurredNormalAo.w);
         });
     }
+}
+
+}  // namespace
+
+Result<std::vector<BladeShading>> bakeBladeShading(const std::vector<Blade>& blades,
+                                                   const BladeShadingParams& params,
+                                                   std::uint64_t seed, unsigned threadCount) {
+    if (Result<void> valid = validate(params); !valid)
+        return valid.error();
+    GRASS_ASSERT(blades.size() < std::numeric_limits<std::uint32_t>::max());
+
+    std::vector<BladeShading> out(blades.size());
+    std::vector<std::uint32_t> live;
+    live.reserve(blades.size());
+    for (std::size_t i = 0; i < blades.size(); ++i)
+        if (isLive(blades[i]))
+            live.push_back(static_cast<std::uint32_t>(i));
+    bakeInto(blades, live, nullptr, params, seed, threadCount, out);
     return out;
+}
+
+Result<std::size_t> rebakeBladeShading(const std::vector<Blade>& blades,
+                                       const BladeShadingParams& params, std::uint64_t seed,
+                                       const Bounds& region, std::vector<BladeShading>& shading,
+                                       unsigned threadCount) {
+    if (Result<void> valid = validate(params); !valid)
+        return valid.error();
+    GRASS_ASSERT(blades.size() < std::numeric_limits<std::uint32_t>::max());
+    if (shading.size() != blades.size())
+        return makeError("shading", "has " + std::to_string(shading.size()) + " entries for " +
+                                        std::to_string(blades.size()) + " blades");
+    // Every neighbour a targeted blade's kernels reach lies within 3σ of it.
+    const float reach = CUTOFF_SIGMAS * std::max(params.aoRadiusM, params.normalBlurRadiusM);
+    const glm::vec3 nearLo = region.min - glm::vec3(reach), nearHi = region.max + glm::vec3(reach);
+    std::vector<std::uint32_t> near;
+    std::vector<bool> target(blades.size(), false);
+    std::size_t targets = 0;
+    for (std::size_t i = 0; i < blades.size(); ++i) {
+        const bool live = isLive(blades[i]);
+        if (insideBox(blades[i].v0(), region.min, region.max)) {
+            // A slot that is padding now gets the padding's entry, as the full bake gives it.
+            if (!live)
+                shading[i] = BladeShading{};
+            target[i] = live;
+            targets += live ? 1 : 0;
+        }
+        if (live && insideBox(blades[i].v0(), nearLo, nearHi))
+            near.push_back(static_cast<std::uint32_t>(i));
+    }
+    if (targets > 0)
+        bakeInto(blades, near, &target, params, seed, threadCount, shading);
+    return targets;
 }
 
 }  // namespace grass::core

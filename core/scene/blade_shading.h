@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "blade/blade.h"
+#include "mesh/surface_mesh.h"
 #include "util/result.h"
 
 namespace grass::core {
@@ -26,7 +27,7 @@ namespace grass::core {
 // the blades, index for index. std430: two vec4.
 struct BladeShading {
     glm::vec4 blurredNormalAo{0.0f, 1.0f, 0.0f, 1.0f};  // xyz blurred normal (unit), w grass AO
-    glm::vec4 waterAge{0.0f};                           // x water, y age, both in [0, 1]; zw 0
+    glm::vec4 waterAge{0.0f};  // x water, y age, both in [0, 1]; z the slot's wilt (scene.h); w 0
 
     glm::vec3 blurredNormal() const { return glm::vec3(blurredNormalAo); }
     float ao() const { return blurredNormalAo.w; }
@@ -79,5 +80,16 @@ struct BladeShadingParams {
 Result<std::vector<BladeShading>> bakeBladeShading(const std::vector<Blade>& blades,
                                                    const BladeShadingParams& params,
                                                    std::uint64_t seed, unsigned threadCount = 0);
+
+// Re-bakes, in place, the blades whose root lies inside `region` (a repainted area), summing over
+// the live blades within 3σ of it; other entries are left alone. Slots inside that are padding
+// (a blade the map removed) get BladeShading{}. The grid is built from the neighbourhood only, so
+// its cells and clusters differ from a full bake's: results agree within the clustering error of
+// the header comment (tests/core/blade_shading_test.cpp compares them), not bit for bit.
+// Returns the number of blades re-baked.
+Result<std::size_t> rebakeBladeShading(const std::vector<Blade>& blades,
+                                       const BladeShadingParams& params, std::uint64_t seed,
+                                       const Bounds& region, std::vector<BladeShading>& shading,
+                                       unsigned threadCount = 0);
 
 }  // namespace grass::core

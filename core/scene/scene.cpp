@@ -75,40 +75,56 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
     }
     for (std::size_t i = 0; i < project.layers.size(); ++i) {
         const GrassLayer& layer = project.layers[i];
-        MapImage density;
-        const MapImage* densityMap = nullptr;
-        if (!layer.densityMap.empty()) {
-            const std::string field = "/layers/" + std::to_string(i) + "/density_map";
-            auto path = resolveAssetPath(loaded.folder, layer.densityMap, field);
-            if (!path)
-                return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
-            auto map = loadMapImage(*path);
-            if (!map)
-                return fromProjectField(loaded, field, map.error());
-            density = std::move(*map);
-            for (const auto& warning : density.warnings)
-                scene.notes.push_back(path->string() + ": " + warning);
-            densityMap = &density;
-        }
-        // Each layer its own stream, so adding a layer does not reshuffle the others.
-        const std::uint64_t layerSeed =
-            Rng::splitMix(project.seed ^ (0x9E3779B97F4A7C15ULL * (i + 1)));
-        ScatterResult scattered = scatterBlades(scene.mesh, layer.scatter, densityMap, layerSeed);
-        for (auto& warning : scattered.warnings)
-            scene.notes.push_back("layer \"" + layer.name + "\": " + warning);
         LayerField field;
         field.name = layer.name;
-        field.liveBlades = scattered.blades.size();
-        field.patched = buildPatches(scattered.blades, project.render.patchSize);
+        const std::string at = "/layers/" + std::to_string(i) + "/";
+        const auto loadMap = [&](const std::string& relative, const char* key,
+                                 MapImage& out) -> Result<void> {
+            if (relative.empty())
+                return {};
+            auto path = resolveAssetPath(loaded.folder, relative, at + key);
+            if (!path)
+                return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
+            auto map = loadMapImageAt(*path, layer.mapResolution.x, layer.mapResolution.y);
+            if (!map)
+                return fromProjectField(loaded, at + key, map.error());
+            for (const auto& warning : map->warnings)
+                scene.notes.push_back(path->string() + ": " + warning);
+            out = std::move(*map);
+            return {};
+        };
+        LayerSource& source = field.source;
+        for (auto loadedMap : {loadMap(layer.densityMap, "density_map", source.maps.density),
+                               loadMap(layer.soilMap, "soil_map", source.maps.soil),
+                               loadMap(layer.lightMap, "light_map", source.maps.light)})
+            if (!loadedMap)
+                return loadedMap.error();
+        if (!layer.growth.enabled && (!layer.soilMap.empty() || !layer.lightMap.empty()))
+            scene.notes.push_back("layer \"" + layer.name +
+                                  "\": soil_map and light_map take effect only with "
+                                  "growth.enabled = true");
+        // Each layer its own stream, so adding a layer does not reshuffle the others.
+        field.seed = Rng::splitMix(project.seed ^ (0x9E3779B97F4A7C15ULL * (i + 1)));
+        source.candidates = scatterCandidates(scene.mesh, layer.scatter, field.seed);
+        for (auto& warning : source.candidates.warnings)
+            scene.notes.push_back("layer \"" + layer.name + "\": " + warning);
+        source.growthEnabled = layer.growth.enabled;
+        source.curves = layer.growth.curves;
+        source.stemLevels = layer.growth.levels;
+        static_cast<GrownField&>(field) = growField(source, project.render.patchSize);
         field.rootColor = layer.rootColor;
         field.tipColor = layer.tipColor;
+        field.poorRootColor = layer.growth.poorRootColor;
+        field.poorTipColor = layer.growth.poorTipColor;
         field.shape = layer.shape;
         field.tipStart = layer.tipStart;
         auto shading = bakeBladeShading(field.patched.blades, bladeShadingParams(project.lighting),
-                                        layerSeed);
+                                        field.seed);
         if (!shading)
             return Error{loaded.file.string(), "lighting: " + shading.error().str()};
         field.shading = std::move(*shading);
+        for (std::size_t slot = 0; slot < field.shading.size(); ++slot)
+            field.shading[slot].waterAge.z = field.wilt[slot];
         scene.layers.push_back(std::move(field));
     }
     auto props = loadSceneProps(loaded);
@@ -160,6 +176,37 @@ BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting) {
     params.normalBlurRadiusM = lighting.normalBlurRadiusM;
     params.waterRange = lighting.water;
     return params;
+}
+
+Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted, float texelMarginM,
+                                       const GrassLightingDesc& lighting) {
+    const glm::vec3 margin(std::max(texelMarginM, 0.0f));
+    RegrowReport report;
+    report.patches = patchesWithRootsIn(layer.source, layer, {painted.min - margin,
+                                                              painted.max + margin});
+    regrowPatches(layer.source, report.patches, layer);
+    if (report.patches.empty())
+        return report;
+    // The shading of a blade changes with the blades around it: re-bake every slot of the
+    // regrown patches and every blade whose kernels reach one (3σ, bakeBladeShading).
+    const BladeShadingParams params = bladeShadingParams(lighting);
+    Bounds grown = layer.patched.patches[report.patches.front()].bounds;
+    for (std::uint32_t p : report.patches) {
+        grown.min = glm::min(grown.min, layer.patched.patches[p].bounds.min);
+        grown.max = glm::max(grown.max, layer.patched.patches[p].bounds.max);
+    }
+    const glm::vec3 reach(3.0f * std::max(params.aoRadiusM, params.normalBlurRadiusM));
+    report.shadedRegion = {grown.min - reach, grown.max + reach};
+    auto rebaked = rebakeBladeShading(layer.patched.blades, params, layer.seed,
+                                      report.shadedRegion, layer.shading);
+    if (!rebaked)
+        return Error{"lighting", rebaked.error().str()};
+    report.rebakedBlades = *rebaked;
+    report.shadedPatches = patchesWithRootsIn(layer.source, layer, report.shadedRegion);
+    // The re-bake resets the wilt it keeps in waterAge.z.
+    for (std::size_t slot = 0; slot < layer.shading.size(); ++slot)
+        layer.shading[slot].waterAge.z = layer.wilt[slot];
+    return report;
 }
 
 Result<Scene> buildScene(const LoadedProject& loaded) {

@@ -11,22 +11,29 @@
 #include "billboard/star_billboards.h"
 #include "mesh/surface_mesh.h"
 #include "scene/blade_shading.h"
+#include "scene/layer_growth.h"
 #include "scene/scene_props.h"
 #include "project/project.h"
 #include "scatter/patches.h"
 
 namespace grass::core {
 
-struct LayerField {
+// A grown layer (layer_growth.h: patched blades, wilt, stem sets, live count) with what draws it
+// and what it was grown from.
+struct LayerField : GrownField {
     std::string name;
-    PatchedBlades patched;
-    std::size_t liveBlades = 0;
+    LayerSource source;
+    std::uint64_t seed = 0;  // the layer's stream: scatter and shading bake
     glm::vec3 rootColor{0.0f};
     glm::vec3 tipColor{0.0f};
+    // The colours of poor conditions (wilt 1), growth model (SPEC §9).
+    glm::vec3 poorRootColor{0.0f};
+    glm::vec3 poorTipColor{0.0f};
     // The layer's blade outline and triangle-tip τ (SPEC §7), for the blade shaders.
     BladeShape shape = BladeShape::Triangle;
     float tipStart = 0.5f;
-    // Lighting inputs baked per blade slot (SPEC §10), index for index with patched.blades.
+    // Lighting inputs baked per blade slot (SPEC §10), index for index with patched.blades;
+    // waterAge.z holds the slot's wilt.
     std::vector<BladeShading> shading;
 };
 
@@ -67,6 +74,22 @@ BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting);
 // the per-blade lighting inputs.
 // Errors name the file (mesh, map) or the project field.
 Result<Scene> buildScene(const LoadedProject& project);
+
+// What a repaint re-grew: the patches whose slots changed (renderers re-upload those) and the
+// region whose shading was re-baked (slots there changed shading too).
+struct RegrowReport {
+    std::vector<std::uint32_t> patches;
+    Bounds shadedRegion;
+    std::vector<std::uint32_t> shadedPatches;  // patches with a root in shadedRegion
+    std::size_t rebakedBlades = 0;
+};
+
+// After layer.source.maps changed inside `painted` (a box on the surface, e.g. a brush stroke's
+// touched texels): re-grows the patches with a root within `texelMarginM` of it (a texel's
+// bilinear footprint on the surface) and re-bakes the shading of the blades whose AO or blurred
+// normal can see them. Everything else in the layer keeps its bits.
+Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted, float texelMarginM,
+                                       const GrassLightingDesc& lighting);
 
 // The mesh of a project alone (no grass), for `render --mesh` and mesh-info.
 Result<SurfaceMesh> loadProjectMesh(const LoadedProject& project, std::vector<std::string>* notes);

@@ -105,7 +105,7 @@ SceneSimulation::SceneSimulation(Scene& scene, ScenePhysics physics, unsigned th
     : mScene(scene), mPhysics(std::move(physics)), mThreadCount(threadCount) {
     for (const LayerField& layer : mScene.layers) {
         mEta.emplace_back(layer.patched.blades.size(), 0.0f);
-        mRestTips.push_back(core::restTips(layer.patched.blades));
+        mRestTips.push_back(core::restTipsAsGrown(layer.patched.blades));
     }
 }
 

@@ -100,8 +100,8 @@ Result<render::CullSettings> parseCullList(const std::string& list) {
 
 std::string statsJson(const render::FrameTimings& frame, double physicsMs, double wallMs) {
     const render::CullStats& c = frame.cull;
-    // The grass stage is everything that draws grass: blades and billboards.
-    const double grassMs = frame.grassMs + frame.billboardMs;
+    // The grass stage is everything that draws grass: blades, billboards and stem sets.
+    const double grassMs = frame.grassMs + frame.billboardMs + frame.stemSetMs;
     const double total = physicsMs + frame.cullMs + frame.meshMs + grassMs;
     char text[1024];
     std::snprintf(text, sizeof text,
@@ -110,11 +110,13 @@ std::string statsJson(const render::FrameTimings& frame, double physicsMs, doubl
                   "  \"ms\": {\"physics\": %.4f, \"cull\": %.4f, \"opaque\": %.4f, \"grass\": "
                   "%.4f, \"total\": %.4f, \"frame_wall\": %.4f},\n"
                   "  \"drawn_per_lod\": [%zu, %zu, %zu],\n"
-                  "  \"billboards\": {\"drawn\": %zu, \"draw_calls\": %zu, \"ms\": %.4f}\n}\n",
+                  "  \"billboards\": {\"drawn\": %zu, \"draw_calls\": %zu, \"ms\": %.4f},\n"
+                  "  \"stem_sets\": {\"drawn\": %zu, \"ms\": %.4f}\n}\n",
                   c.bladesIn, c.culledPatch, c.culledOrientation, c.culledFrustum, c.culledDistance,
                   c.culledOcclusion, c.drawn, physicsMs, frame.cullMs, frame.meshMs, grassMs,
                   total, wallMs, c.drawnPerLod[0], c.drawnPerLod[1], c.drawnPerLod[2],
-                  frame.billboardsDrawn, frame.billboardDrawCalls, frame.billboardMs);
+                  frame.billboardsDrawn, frame.billboardDrawCalls, frame.billboardMs,
+                  frame.stemSetsDrawn, frame.stemSetMs);
     return text;
 }
 
@@ -169,9 +171,10 @@ int runRender(const std::vector<std::string>& argv) {
     parser.choice(
         "--shape", {"project", "quad", "triangle", "quadratic", "triangle-tip", "dandelion"},
         "blade outline for every layer (SPEC §7); project = each layer's own", &args.shape);
-    parser.choice("--technique", {"project", "blades", "billboards", "hybrid"},
-                  "what draws the grass: geometric blades, star billboards (SPEC §8), or blades "
-                  "near the camera cross-faded into billboards far away",
+    parser.choice("--technique", {"project", "blades", "billboards", "hybrid", "growth"},
+                  "what draws the grass: geometric blades, star billboards (SPEC §8), blades "
+                  "near the camera cross-faded into billboards far away, or Kim & Cho's "
+                  "instanced stem sets grown from the soil and light maps (SPEC §9)",
                   &args.technique);
     parser.choice("--animation", {"project", "per-cluster", "per-vertex", "per-object"},
                   "billboard wind animation: a CPU offset per cluster (one draw each), or in the "
@@ -333,12 +336,14 @@ int runRender(const std::vector<std::string>& argv) {
     std::printf("  frames     %zu, wall ms: first %.1f, median %.1f, min %.1f\n",
                 rendered->frameWallMs.size(), rendered->frameWallMs.front(),
                 frames[frames.size() / 2], frames.front());
-    std::printf("  gpu ms     mesh %.2f, grass %.2f, billboards %.2f (last frame, timer queries)\n",
+    std::printf("  gpu ms     mesh %.2f, grass %.2f, billboards %.2f, stem sets %.2f (last frame, "
+                "timer queries)\n",
                 rendered->lastFrame.meshMs, rendered->lastFrame.grassMs,
-                rendered->lastFrame.billboardMs);
-    std::printf("  technique  %s; billboards drawn %zu in %zu draw call(s)\n",
+                rendered->lastFrame.billboardMs, rendered->lastFrame.stemSetMs);
+    std::printf("  technique  %s; billboards drawn %zu in %zu draw call(s); stem sets drawn %zu\n",
                 std::string(core::grassTechniqueName(request.options.technique)).c_str(),
-                rendered->lastFrame.billboardsDrawn, rendered->lastFrame.billboardDrawCalls);
+                rendered->lastFrame.billboardsDrawn, rendered->lastFrame.billboardDrawCalls,
+                rendered->lastFrame.stemSetsDrawn);
     const render::CullStats& cull = rendered->lastFrame.cull;
     const double inBlades = static_cast<double>(std::max<std::size_t>(cull.bladesIn, 1));
     std::printf(

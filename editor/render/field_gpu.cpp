@@ -66,6 +66,21 @@ FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
     mEmptyVertexArray = gl::VertexArrayHandle(vao);
 }
 
+void FieldGpu::uploadPatches(std::span<const std::uint32_t> patches, bool withShading) {
+    const std::size_t size = mField->patched.patchSize;
+    const bool hasShading = mField->shading.size() == mBladeCount;
+    for (std::uint32_t p : patches) {
+        const std::size_t first = p * size;
+        if (first + size > mBladeCount)
+            continue;
+        mBlades.update(std::as_bytes(std::span(mField->patched.blades).subspan(first, size)),
+                       first * sizeof(core::Blade));
+        if (withShading && hasShading)
+            mShading.update(std::as_bytes(std::span(mField->shading).subspan(first, size)),
+                            first * sizeof(core::BladeShading));
+    }
+}
+
 void FieldGpu::resetCommands(int segments) {
     // A buffer update from the CPU, not a read-back: the frame never waits on the GPU.
     const CommandArray commands = emptyCommands(segments);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 
 #include "buffer.h"
 #include "gl_handle.h"
@@ -48,6 +49,10 @@ public:
     std::size_t bladeCount() const { return mBladeCount; }
     std::uint32_t patchSize() const { return mField->patched.patchSize; }
     GLuint bladeBuffer() const { return mBlades.id(); }
+
+    // Re-uploads the blades (and, when `withShading`, the shading) of these patches from the
+    // layer after core::regrowLayerRegion changed them; the rest of the buffers stay.
+    void uploadPatches(std::span<const std::uint32_t> patches, bool withShading);
 
     // Before the cull dispatch: zero survivors, and each LOD's strip vertex count for `segments`.
     void resetCommands(int segments);

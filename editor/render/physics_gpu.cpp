@@ -43,10 +43,15 @@ Result<PhysicsGpu> PhysicsGpu::load() {
 }
 
 void PhysicsGpu::reset(std::span<const core::Blade> blades) {
+    reset(blades, core::restTips(blades));
+}
+
+void PhysicsGpu::reset(std::span<const core::Blade> blades, std::span<const glm::vec3> restTips) {
+    GRASS_ASSERT(restTips.size() == blades.size());
     mBladeCount = blades.size();
     std::vector<glm::vec4> tips;
     tips.reserve(blades.size());
-    for (const glm::vec3 tip : core::restTips(blades))
+    for (const glm::vec3 tip : restTips)
         tips.emplace_back(tip, 0.0f);
     upload(mRestTips, tips, "physics rest tips");
     upload(mEta, std::vector<float>(blades.size(), 0.0f), "physics eta");

@@ -42,6 +42,8 @@ public:
 
     // Sets the rest tips Iv2 from `blades` (core::restTips) and η = 0, as a CPU simulation starts.
     void reset(std::span<const core::Blade> blades);
+    // The same with rest tips given (a grown field: core::restTipsAsGrown).
+    void reset(std::span<const core::Blade> blades, std::span<const glm::vec3> restTips);
     // One step of params.dtS from timeS for bladeCount blades of bladeBuffer (the count given to
     // reset). Ends with a barrier, so later draws and buffer reads see the new blades.
     void step(GLuint bladeBuffer, std::size_t bladeCount, const core::PhysicsParams& params,

@@ -13,7 +13,7 @@ Result<ScenePhysicsGpu> ScenePhysicsGpu::createOn(const core::Scene& scene,
         auto physics = PhysicsGpu::load();
         if (!physics)
             return physics.error();
-        physics->reset(blades);
+        physics->reset(blades, core::restTipsAsGrown(blades));
         out.mLayers.push_back(
             Layer{gl::Buffer(), bladeBuffers[i], blades.size(), std::move(*physics)});
     }

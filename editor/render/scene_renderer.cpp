@@ -52,6 +52,10 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
                                   "blade tessellation");
     if (!tess)
         return tess.error();
+    auto stemSets = loadStemSetProgram();
+    if (!stemSets)
+        return stemSets.error();
+    renderer->mStemSetProgram = std::move(*stemSets);
     auto cull = CullPass::create();
     if (!cull)
         return cull.error();
@@ -98,7 +102,7 @@ static void setLighting(const gl::Program& program, const RenderOptions& options
     program.set("uGroundColor", options.groundColor);
 }
 
-static void setGrassLighting(const gl::Program& program, const core::GrassLightingDesc& lighting) {
+void setGrassLighting(const gl::Program& program, const core::GrassLightingDesc& lighting) {
     program.set("uGrassLighting", lighting.model == core::LightingModel::Grass ? 1 : 0);
     program.set("uDiffuseLow", lighting.diffuseLow);
     program.set("uDiffuseMid", lighting.diffuseMid);
@@ -140,7 +144,11 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     mMeshTimer.end();
 
     // Timers run every frame, empty where a technique skips a pass, so readings are never stale.
-    if (options.technique != core::GrassTechnique::Billboards) {
+    const bool blades = options.technique == core::GrassTechnique::Blades ||
+                        options.technique == core::GrassTechnique::Hybrid;
+    const bool billboards = options.technique == core::GrassTechnique::Billboards ||
+                            options.technique == core::GrassTechnique::Hybrid;
+    if (blades) {
         drawBlades(camera, projection, width, height, options);
     } else {
         mCullTimer.begin();
@@ -151,11 +159,16 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
         mBladesDrawn = 0;
     }
     mBillboardTimer.begin();
-    if (options.technique != core::GrassTechnique::Blades && mBillboards)
+    if (billboards && mBillboards)
         drawBillboards(camera, viewProj, options);
     else
         mBillboardsDrawn = mBillboardDrawCalls = 0;
     mBillboardTimer.end();
+    mStemSetTimer.begin();
+    mStemSetsDrawn = 0;
+    if (options.technique == core::GrassTechnique::Growth)
+        drawStemSets(camera, viewProj, options);
+    mStemSetTimer.end();
     glBindVertexArray(0);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
@@ -202,6 +215,8 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     for (auto& field : mFields) {
         program.set("uRootColor", field.field().rootColor);
         program.set("uTipColor", field.field().tipColor);
+        program.set("uPoorRootColor", field.field().poorRootColor);
+        program.set("uPoorTipColor", field.field().poorTipColor);
         const core::BladeShape shape = options.shape.value_or(field.field().shape);
         program.set("uShape", static_cast<int>(shape));
         program.set("uTipStart", field.field().tipStart);
@@ -242,6 +257,44 @@ void SceneRenderer::drawBillboards(const core::OrbitCamera& camera, const glm::m
     mBillboardDrawCalls = mBillboards->drawCalls();
 }
 
+void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj,
+                                 const RenderOptions& options) {
+    // Uploaded on first use: a scene drawn by another technique pays nothing for them.
+    if (mStemSets.empty())
+        for (const auto& layer : mScene->layers)
+            mStemSets.emplace_back(layer.stemSets, "stem sets " + layer.name);
+    const gl::Program& program = mStemSetProgram;
+    program.use();
+    program.set("uViewProj", viewProj);
+    program.set("uCameraPosition", camera.position());
+    setLighting(program, options);
+    setGrassLighting(program, options.lighting);
+    program.set("uFieldAo", mFieldAo);
+    program.set("uFieldWater", 0.5f * (options.lighting.water.x + options.lighting.water.y));
+    for (std::size_t i = 0; i < mStemSets.size(); ++i) {
+        const core::LayerField& layer = mScene->layers[i];
+        setStemSetColours(program, StemSetColours{layer.rootColor, layer.tipColor,
+                                                  layer.poorRootColor, layer.poorTipColor});
+        mStemSets[i].draw(program, layer.source.stemLevels);
+        mStemSetsDrawn += mStemSets[i].instanceCount();
+    }
+}
+
+void SceneRenderer::uploadRegrown(std::size_t layer, const core::RegrowReport& report) {
+    if (layer >= mFields.size())
+        return;
+    mFields[layer].uploadPatches(report.patches, false);
+    mFields[layer].uploadPatches(report.shadedPatches, true);
+    if (layer < mStemSets.size()) {
+        const core::LayerField& field = mScene->layers[layer];
+        for (std::uint32_t p : report.patches) {
+            const auto [first, end] = core::patchStemSets(field, p);
+            mStemSets[layer].update(
+                first, std::span(field.stemSets).subspan(first, end - first));
+        }
+    }
+}
+
 // The terrain, then each prop where its path puts it at options.timeS. `shaded` sets the albedo
 // (the depth pre-pass of the cull needs none).
 void SceneRenderer::drawOpaque(const RenderOptions& options, bool shaded) const {
@@ -274,6 +327,8 @@ FrameTimings SceneRenderer::lastTimings() const {
     timings.billboardsDrawn = mBillboardsDrawn;
     timings.billboardDrawCalls = mBillboardDrawCalls;
     timings.bladesDrawn = mBladesDrawn;
+    timings.stemSetsDrawn = mStemSetsDrawn;
+    timings.stemSetMs = mStemSetTimer.milliseconds();
     if (mStatsFrame)
         timings.cull = mCull->readStats(mFields);
     return timings;

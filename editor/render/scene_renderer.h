@@ -13,6 +13,7 @@
 #include "field_gpu.h"
 #include "mesh_gpu.h"
 #include "program.h"
+#include "stem_set_gpu.h"
 #include "project/project.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
@@ -52,6 +53,9 @@ struct RenderOptions {
 RenderOptions renderOptionsFor(const core::Project& project, bool softwareRenderer);
 GeometryPath resolveGeometryPath(core::GeometryPath path, bool softwareRenderer);
 const char* geometryPathLabel(GeometryPath path);
+// The uniforms of shaders/include/grass_lighting.glsl (SPEC §10) and uGrassLighting, for every
+// program that lights grass with it.
+void setGrassLighting(const gl::Program& program, const core::GrassLightingDesc& lighting);
 
 struct FrameTimings {
     double meshMs = 0.0;   // GPU time of the opaque pass
@@ -60,6 +64,9 @@ struct FrameTimings {
     double billboardMs = 0.0;  // GPU time of the billboard draws (techniques billboards, hybrid)
     std::size_t billboardsDrawn = 0;  // objects in the clusters drawn
     std::size_t billboardDrawCalls = 0;
+    // Technique growth: stem sets drawn (one instanced draw per layer, no culling) and GPU time.
+    std::size_t stemSetsDrawn = 0;
+    double stemSetMs = 0.0;
     // Live blades handed to the cull pass; what survived it is cull.drawn.
     std::size_t bladesDrawn = 0;
     // Per-test counts, filled only when the frame ran with RenderOptions::cull.collectStats.
@@ -78,22 +85,31 @@ public:
     FrameTimings lastTimings() const;
     // The blade buffer of each layer (SSBO layout of core::Blade), for physics to step in place.
     std::vector<GLuint> bladeBuffers() const;
+    // After core::regrowLayerRegion changed layer `layer` of the scene: re-uploads the regrown
+    // patches' blades and stem sets and the re-baked shading; nothing else moves.
+    void uploadRegrown(std::size_t layer, const core::RegrowReport& report);
 
 private:
     SceneRenderer() = default;
     const core::Scene* mScene = nullptr;
-    gl::Program mMeshProgram, mStripProgram, mTessProgram;
+    gl::Program mMeshProgram, mStripProgram, mTessProgram, mStemSetProgram;
     void drawOpaque(const RenderOptions& options, bool shaded) const;
     void drawBlades(const core::OrbitCamera& camera, const glm::mat4& projection, int width,
                     int height, const RenderOptions& options);
     void drawBillboards(const core::OrbitCamera& camera, const glm::mat4& viewProj,
                         const RenderOptions& options);
+    // Technique growth: Kim & Cho's stem sets, uploaded on first use (a scene that never draws
+    // them pays nothing).
+    void drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj,
+                      const RenderOptions& options);
     std::unique_ptr<MeshGpu> mMesh;
     std::vector<MeshGpu> mProps;
     std::vector<FieldGpu> mFields;
     std::unique_ptr<CullPass> mCull;
     std::unique_ptr<BillboardField> mBillboards;
-    gl::GpuTimer mMeshTimer, mGrassTimer, mCullTimer, mBillboardTimer;
+    std::vector<StemSetField> mStemSets;
+    std::size_t mStemSetsDrawn = 0;
+    gl::GpuTimer mMeshTimer, mGrassTimer, mCullTimer, mBillboardTimer, mStemSetTimer;
     std::size_t mBladesDrawn = 0;
     std::size_t mBillboardsDrawn = 0;
     float mFieldAo = 1.0f;

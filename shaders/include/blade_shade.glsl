@@ -8,6 +8,10 @@
 uniform vec3 uCameraPosition;
 uniform vec3 uRootColor;
 uniform vec3 uTipColor;
+// The colours of grass in poor conditions; the baked wilt (1 − b of the growth model, SPEC §9)
+// blends towards them.
+uniform vec3 uPoorRootColor;
+uniform vec3 uPoorTipColor;
 uniform int uGrassLighting;
 uniform int uLightPerVertex;
 
@@ -19,7 +23,9 @@ vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeInd
     // gl_FrontFacing cannot tell the side; the view direction can.
     normal = normalize(normal);
     if (dot(normal, toEye) < 0.0) normal = -normal;
-    vec3 albedo = mix(uRootColor, uTipColor, height);
+    BladeShading baked = bladeShading[bladeIndex];
+    vec3 albedo = mix(mix(uRootColor, uTipColor, height), mix(uPoorRootColor, uPoorTipColor, height),
+                      baked.waterAge.z);
     if (uGrassLighting == 0) {
         // A thin blade's normal is nearly horizontal, so a high sun would leave the field
         // black; leaning it towards the surface normal lights it the way a field scatters.
@@ -27,7 +33,6 @@ vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeInd
         vec3 leaned = normalize(normal + 0.8 * up);
         return simpleLighting(albedo, leaned, 0.5) * selfShadow;
     }
-    BladeShading baked = bladeShading[bladeIndex];
     GrassSurface surface;
     surface.albedo = albedo;
     surface.bladeNormal = normal;

@@ -3,7 +3,7 @@
 // the blade's water (young = wet). One entry per blade slot, same order as the blade buffer.
 struct BladeShading {
     vec4 blurredNormalAo;  // xyz blurred terrain normal, w AO (1 = open)
-    vec4 waterAge;         // x water, y age
+    vec4 waterAge;         // x water, y age, z wilt (growth colour)
 };
 
 layout(std430, binding = 9) readonly buffer BladeShadingBuffer {

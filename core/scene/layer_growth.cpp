@@ -1,0 +1,169 @@
+#include "scene/layer_growth.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/physics.h"
+
+namespace grass::core {
+
+namespace {
+
+float sampleOrOne(const MapImage& map, glm::vec2 uv) {
+    return map.texels.empty() ? 1.0f : map.sample(uv);
+}
+
+GrowthParams candidateGrowth(const LayerSource& source, std::size_t candidate) {
+    const glm::vec2 uv = source.candidates.uvs[candidate];
+    return growthParams(source.curves, sampleOrOne(source.maps.soil, uv),
+                        sampleOrOne(source.maps.light, uv));
+}
+
+bool boxesOverlap(const Bounds& a, const Bounds& b) {
+    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y &&
+           b.min.y <= a.max.y && a.min.z <= b.max.z && b.min.z <= a.max.z;
+}
+
+bool inside(glm::vec3 p, const Bounds& box) {
+    return p.x >= box.min.x && p.y >= box.min.y && p.z >= box.min.z && p.x <= box.max.x &&
+           p.y <= box.max.y && p.z <= box.max.z;
+}
+
+// The stem set grown at a slot's candidate: the set stands on the surface (up is the surface
+// normal, not a leaned blade's), turned by the blade's theta, and sized so that β = 1 grows it
+// to the candidate's height over any number of levels; its width follows α like the blade's.
+StemSetInstance stemSetFor(const LayerSource& source, std::size_t candidate) {
+    const Blade& c = source.candidates.blades[candidate];
+    const GrowthParams growth = candidateGrowth(source, candidate);
+    const float metresPerUnit = c.h() / static_cast<float>(std::clamp(source.stemLevels, 1, 4));
+    StemSetInstance set;
+    set.rootMetresPerUnit = glm::vec4(c.v0(), metresPerUnit);
+    set.upYaw = glm::vec4(c.up(), c.theta());
+    set.alphaBetaThetaB = glm::vec4(growth.alpha, growth.beta, growth.theta, growth.b);
+    const float widthScale = bladeGrowth(growth).widthScale;
+    set.halfWidthSpread = glm::vec4(metresPerUnit > 0.0f ? c.w() * widthScale / metresPerUnit : 0.0f,
+                                    STEM_SET_SPREAD, STEM_SET_SPREAD, 0.0f);
+    return set;
+}
+
+StemSetInstance nullStemSet(const Blade& candidate) {
+    StemSetInstance set;
+    set.rootMetresPerUnit = glm::vec4(candidate.v0(), 0.0f);
+    return set;
+}
+
+void growSlots(const LayerSource& source, std::uint32_t patch, GrownField& field) {
+    const std::uint32_t size = field.patched.patchSize;
+    const std::size_t first = static_cast<std::size_t>(patch) * size;
+    for (std::size_t slot = first; slot < first + size; ++slot) {
+        const std::uint32_t candidate = field.patched.sourceIndex[slot];
+        const bool wasLive = field.patched.blades[slot].h() > 0.0f;
+        if (candidate == UINT32_MAX)
+            continue;  // padding stays padding, its stem set null
+        const GrownBlade grown = growCandidate(source, candidate);
+        field.patched.blades[slot] = grown.blade;
+        field.wilt[slot] = grown.wilt;
+        if (slot % STEMS_PER_SET == 0)
+            field.stemSets[slot / STEMS_PER_SET] =
+                grown.live ? stemSetFor(source, candidate)
+                           : nullStemSet(source.candidates.blades[candidate]);
+        field.liveBlades = field.liveBlades - (wasLive ? 1 : 0) + (grown.live ? 1 : 0);
+    }
+}
+
+}  // namespace
+
+MapImage& layerMap(LayerMaps& maps, LayerMap which) {
+    switch (which) {
+    case LayerMap::Soil: return maps.soil;
+    case LayerMap::Light: return maps.light;
+    case LayerMap::Density: break;
+    }
+    return maps.density;
+}
+
+const MapImage& layerMap(const LayerMaps& maps, LayerMap which) {
+    return layerMap(const_cast<LayerMaps&>(maps), which);
+}
+
+GrownBlade growCandidate(const LayerSource& source, std::size_t candidate) {
+    const Blade& c = source.candidates.blades[candidate];
+    const GrownBlade removed{makeRestBlade(c.v0(), c.up(), 0.0f, 0.0f, c.s(), c.theta()), 0.0f,
+                             false};
+    const MapImage* density = source.maps.density.texels.empty() ? nullptr : &source.maps.density;
+    if (!keepsCandidate(source.candidates, candidate, density))
+        return removed;
+    if (!source.growthEnabled)
+        return {c, 0.0f, true};
+    const BladeGrowth growth = bladeGrowth(candidateGrowth(source, candidate));
+    const float h = c.h() * growth.heightScale;
+    const float w = c.w() * growth.widthScale;
+    if (!(h > 0.0f) || !(w > 0.0f))
+        return removed;
+    const glm::vec3 up = c.up();
+    GrownBlade grown{makeRestBlade(c.v0(), up, h, w, c.s(), c.theta()),
+                     1.0f - growth.colourBlend, true};
+    if (growth.restLeanRad > 0.0f) {
+        // Leaned towards the blade's front, the side front gravity pulls it to (SPEC §3), so a
+        // lean and a droop agree; validation places v1 and keeps the length h.
+        const glm::vec3 front = glm::normalize(glm::cross(up, widthDirection(up, c.theta())));
+        const glm::vec3 direction =
+            std::cos(growth.restLeanRad) * up + std::sin(growth.restLeanRad) * front;
+        grown.blade.v2W = glm::vec4(c.v0() + h * direction, w);
+        validateBlade(grown.blade);
+    }
+    return grown;
+}
+
+GrownField growField(const LayerSource& source, std::uint32_t patchSize) {
+    GrownField field;
+    field.patched = buildPatches(source.candidates.blades, patchSize);
+    const std::size_t slots = field.patched.blades.size();
+    field.wilt.assign(slots, 0.0f);
+    field.stemSets.assign((slots + STEMS_PER_SET - 1) / STEMS_PER_SET, StemSetInstance{});
+    for (std::size_t k = 0; k < field.stemSets.size(); ++k)
+        field.stemSets[k] = nullStemSet(field.patched.blades[k * STEMS_PER_SET]);
+    // Every candidate starts live (buildPatches copied them); growing corrects the count.
+    field.liveBlades = source.candidates.blades.size();
+    for (std::uint32_t p = 0; p < field.patched.patches.size(); ++p)
+        growSlots(source, p, field);
+    return field;
+}
+
+void regrowPatches(const LayerSource& source, std::span<const std::uint32_t> patches,
+                   GrownField& field) {
+    for (std::uint32_t p : patches)
+        if (p < field.patched.patches.size())
+            growSlots(source, p, field);
+}
+
+std::vector<std::uint32_t> patchesWithRootsIn(const LayerSource& source, const GrownField& field,
+                                              const Bounds& region) {
+    std::vector<std::uint32_t> found;
+    const std::uint32_t size = field.patched.patchSize;
+    for (std::uint32_t p = 0; p < field.patched.patches.size(); ++p) {
+        // The box covers every candidate's reach, so it is a safe first test.
+        if (!boxesOverlap(field.patched.patches[p].bounds, region))
+            continue;
+        const std::size_t first = static_cast<std::size_t>(p) * size;
+        for (std::size_t slot = first; slot < first + size; ++slot) {
+            const std::uint32_t candidate = field.patched.sourceIndex[slot];
+            if (candidate != UINT32_MAX &&
+                inside(source.candidates.blades[candidate].v0(), region)) {
+                found.push_back(p);
+                break;
+            }
+        }
+    }
+    return found;
+}
+
+std::pair<std::size_t, std::size_t> patchStemSets(const GrownField& field, std::uint32_t patch) {
+    const std::size_t size = field.patched.patchSize;
+    const std::size_t first = patch * size, last = first + size;
+    const auto firstSet = (first + STEMS_PER_SET - 1) / STEMS_PER_SET;
+    const auto endSet = std::min((last + STEMS_PER_SET - 1) / STEMS_PER_SET, field.stemSets.size());
+    return {firstSet, endSet};
+}
+
+}  // namespace grass::core

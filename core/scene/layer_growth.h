@@ -1,0 +1,87 @@
+// Layer growth: how a grass layer's candidates (every blade it could grow, scatter.h) become the
+// patched blades the GPU draws, under the layer's environment maps (SPEC §9, §12):
+//   - density thins the candidates (a thinned candidate's slot holds a null blade, h = w = 0);
+//   - with growth on, soil quality g and light amount l set each blade's height (β), width
+//     (α/0.25), rest lean (θ, towards the blade's front) and colour (b, between the layer's
+//     healthy and poor colours), through the layer's control curves.
+// Patches are built once over all candidates, so the slot of every candidate never moves: a
+// repaint re-grows the patches whose blades it can reach and nothing else (regrowRegion), and
+// the renderer re-uploads only those slots.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "blade/blade.h"
+#include "growth/growth_curves.h"
+#include "growth/growth_stems.h"
+#include "maps/map_image.h"
+#include "project/project.h"
+#include "scatter/patches.h"
+#include "scatter/scatter.h"
+
+namespace grass::core {
+
+// A layer's environment maps in its mesh's UV space; a map without texels reads 1 everywhere.
+struct LayerMaps {
+    MapImage density;
+    MapImage soil;
+    MapImage light;
+};
+
+enum class LayerMap { Density, Soil, Light };
+MapImage& layerMap(LayerMaps& maps, LayerMap which);
+const MapImage& layerMap(const LayerMaps& maps, LayerMap which);
+
+// What a layer's field is grown from, kept next to it so repaints can re-grow parts of it.
+struct LayerSource {
+    ScatterCandidates candidates;
+    LayerMaps maps;
+    bool growthEnabled = false;
+    GrowthCurves curves;
+    int stemLevels = MAX_STEM_LEVELS;
+};
+
+// The grown field: per slot of `patched` (patch-major, padding included) the blade, how far its
+// colour leans to the poor colours (wilt = 1 − b; 0 without growth), and every STEMS_PER_SET-th
+// slot's stem set for the growth technique (a null set, metresPerUnit 0, where that slot holds no
+// blade).
+struct GrownField {
+    PatchedBlades patched;
+    std::vector<float> wilt;
+    std::vector<StemSetInstance> stemSets;  // stemSets[k] grows at slot STEMS_PER_SET·k
+    std::size_t liveBlades = 0;
+};
+
+// What one candidate grows into (its slot's blade) and its wilt; a null blade at the
+// candidate's root when the density map removes it or the growth model leaves it no height.
+struct GrownBlade {
+    Blade blade;
+    float wilt = 0.0f;
+    bool live = false;
+};
+GrownBlade growCandidate(const LayerSource& source, std::size_t candidate);
+
+// Stem sets per blade of the growth technique, in model units (growth_stems.h): the six stems
+// fan out this far around the set's centre.
+inline constexpr float STEM_SET_SPREAD = 0.25f;
+
+// Patches all candidates and grows every slot.
+GrownField growField(const LayerSource& source, std::uint32_t patchSize);
+
+// Re-grows the slots of `patches` (indices into field.patched.patches) from their candidates,
+// updating blades, wilt, stem sets and liveBlades.
+void regrowPatches(const LayerSource& source, std::span<const std::uint32_t> patches,
+                   GrownField& field);
+
+// The patches holding a candidate whose root lies inside `region` (sorted, unique). A texel a
+// brush changed moves only candidates whose bilinear footprint covers it, so callers pass the
+// painted region grown by a texel's size on the surface.
+std::vector<std::uint32_t> patchesWithRootsIn(const LayerSource& source, const GrownField& field,
+                                              const Bounds& region);
+
+// The first and one-past-last stem set of a patch (for uploads of regrown patches).
+std::pair<std::size_t, std::size_t> patchStemSets(const GrownField& field, std::uint32_t patch);
+
+}  // namespace grass::core

@@ -1,0 +1,158 @@
+#include "stem_set_gpu.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace grass::render {
+
+namespace {
+
+int clampedLevels(int levels) {
+    return std::clamp(levels, 1, core::MAX_STEM_LEVELS);
+}
+
+int samplesPerStem(int levels) {
+    return core::STEM_SAMPLES_PER_LEVEL * clampedLevels(levels);
+}
+
+// Two triangles per pair of consecutive samples of each stem; vertex numbers as in the header.
+std::vector<std::uint32_t> templateIndices(int levels) {
+    const int samples = samplesPerStem(levels);
+    std::vector<std::uint32_t> indices;
+    indices.reserve(static_cast<std::size_t>(stemSetIndexCount(levels)));
+    for (int k = 0; k < core::STEMS_PER_SET; ++k)
+        for (int i = 0; i + 1 < samples; ++i) {
+            const auto left = static_cast<std::uint32_t>(2 * (k * samples + i));
+            const std::uint32_t right = left + 1, nextLeft = left + 2, nextRight = left + 3;
+            indices.insert(indices.end(), {left, right, nextLeft, nextLeft, right, nextRight});
+        }
+    return indices;
+}
+
+// Byte offset of level count `levels`' list in the concatenated index buffer.
+std::size_t indexOffsetBytes(int levels) {
+    std::size_t before = 0;
+    for (int l = 1; l < clampedLevels(levels); ++l)
+        before += static_cast<std::size_t>(stemSetIndexCount(l));
+    return before * sizeof(std::uint32_t);
+}
+
+// Sets a capability for a scope and puts back what was there.
+class ScopedCapability {
+public:
+    ScopedCapability(GLenum capability, bool enable)
+        : mCapability(capability), mWasEnabled(glIsEnabled(capability) == GL_TRUE) {
+        setEnabled(enable);
+    }
+    ~ScopedCapability() { setEnabled(mWasEnabled); }
+    ScopedCapability(const ScopedCapability&) = delete;
+    ScopedCapability& operator=(const ScopedCapability&) = delete;
+
+private:
+    void setEnabled(bool enable) const {
+        if (enable)
+            glEnable(mCapability);
+        else
+            glDisable(mCapability);
+    }
+    GLenum mCapability;
+    bool mWasEnabled;
+};
+
+}  // namespace
+
+int stemSetVertexCount(int levels) {
+    return core::STEMS_PER_SET * 2 * samplesPerStem(levels);
+}
+
+int stemSetIndexCount(int levels) {
+    return core::STEMS_PER_SET * (samplesPerStem(levels) - 1) * 6;
+}
+
+glm::mat3 stemSetFrame(glm::vec3 up, float yawRad) {
+    const float length = glm::length(up);
+    const glm::vec3 n = length > 1e-6f ? up / length : glm::vec3(0.0f, 1.0f, 0.0f);
+    const glm::vec3 ref =
+        std::abs(n.z) < 0.9f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+    const glm::vec3 t = glm::normalize(glm::cross(n, ref));
+    const glm::vec3 b = glm::cross(t, n);
+    // Yaw turns model x towards −z and model z towards +x (a right-handed turn about y), then
+    // the tangent frame carries the turned axes onto the surface.
+    const float c = std::cos(yawRad), s = std::sin(yawRad);
+    return glm::mat3(c * t - s * b, n, s * t + c * b);
+}
+
+glm::vec3 stemSetWorldPosition(const core::StemSetInstance& instance, glm::vec3 modelPoint) {
+    const glm::mat3 frame = stemSetFrame(glm::vec3(instance.upYaw), instance.upYaw.w);
+    return glm::vec3(instance.rootMetresPerUnit) +
+           instance.rootMetresPerUnit.w * (frame * modelPoint);
+}
+
+core::StemSetParams stemSetParams(const core::StemSetInstance& instance, int levels) {
+    core::StemSetParams params;
+    params.alpha = instance.alphaBetaThetaB.x;
+    params.beta = instance.alphaBetaThetaB.y;
+    params.theta = instance.alphaBetaThetaB.z;
+    params.levels = clampedLevels(levels);
+    params.spreadX = instance.halfWidthSpread.y;
+    params.spreadZ = instance.halfWidthSpread.z;
+    return params;
+}
+
+Result<gl::Program> loadStemSetProgram(const std::vector<std::string>& defines) {
+    return gl::Program::load(
+        {{GL_VERTEX_SHADER, "stem_set.vert"}, {GL_FRAGMENT_SHADER, "stem_set.frag"}}, "stem sets",
+        defines);
+}
+
+void setStemSetColours(const gl::Program& program, const StemSetColours& colours) {
+    program.set("uHealthyRoot", colours.healthyRoot);
+    program.set("uHealthyTip", colours.healthyTip);
+    program.set("uPoorRoot", colours.poorRoot);
+    program.set("uPoorTip", colours.poorTip);
+}
+
+StemSetField::StemSetField(const std::vector<core::StemSetInstance>& instances,
+                           const std::string& label)
+    : mInstanceCount(instances.size()) {
+    // Zero-sized buffers cannot be bound: an empty field keeps one unused instance.
+    mInstances = instances.empty()
+                     ? gl::Buffer::fromVector(std::vector<core::StemSetInstance>(1), label)
+                     : gl::Buffer::fromVector(instances, label);
+    std::vector<std::uint32_t> indices;
+    for (int levels = 1; levels <= core::MAX_STEM_LEVELS; ++levels) {
+        const std::vector<std::uint32_t> list = templateIndices(levels);
+        indices.insert(indices.end(), list.begin(), list.end());
+    }
+    mIndices = gl::Buffer::fromVector(indices, label + " indices", 0);
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    mVertexArray = gl::VertexArrayHandle(vao);
+    mVertexArray.setLabel(label);
+    glVertexArrayElementBuffer(vao, mIndices.id());
+}
+
+void StemSetField::update(std::size_t first, std::span<const core::StemSetInstance> instances) {
+    if (first >= mInstanceCount)
+        return;
+    const std::size_t count = std::min(instances.size(), mInstanceCount - first);
+    mInstances.update(std::as_bytes(instances.first(count)), first * sizeof(core::StemSetInstance));
+}
+
+void StemSetField::draw(const gl::Program& program, int levels) const {
+    if (mInstanceCount == 0)
+        return;
+    const int drawnLevels = clampedLevels(levels);
+    program.set("uLevels", drawnLevels);
+    const ScopedCapability depthTest(GL_DEPTH_TEST, true);
+    const ScopedCapability cullFace(GL_CULL_FACE, false);
+    glBindVertexArray(mVertexArray.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, STEM_SET_BINDING, mInstances.id());
+    glDrawElementsInstanced(GL_TRIANGLES, stemSetIndexCount(drawnLevels), GL_UNSIGNED_INT,
+                            reinterpret_cast<const void*>(indexOffsetBytes(drawnLevels)),
+                            static_cast<GLsizei>(mInstanceCount));
+    glBindVertexArray(0);
+}
+
+}  // namespace grass::render

@@ -1,0 +1,52 @@
+#version 450 core
+// Kim & Cho stem sets (SPEC §9), one instance per set: the template mesh has no vertex data,
+// gl_VertexID names the stem, the sample along it and the side (editor/render/stem_set_gpu.h),
+// and the set's parameters come from the instance SSBO.
+#include "stem_set.glsl"
+
+// STEM_SET_BINDING in editor/render/stem_set_gpu.h.
+layout(std430, binding = 10) readonly buffer StemSetBuffer {
+    StemSetInstance stemSets[];
+};
+
+#ifdef STEM_SET_CAPTURE
+// Tests compare the geometry with the CPU reference (STEM_SET_CAPTURE_BINDING): per vertex,
+// the world position and the world normal.
+layout(std430, binding = 11) writeonly buffer StemSetCaptureBuffer {
+    vec4 captured[];
+};
+#endif
+
+uniform mat4 uViewProj;
+uniform int uLevels;  // 1..4
+
+out vec3 vPosition;
+out vec3 vNormal;
+out vec3 vUp;
+out float vHeight;
+flat out float vB;
+
+void main() {
+    int levels = clamp(uLevels, 1, MAX_STEM_LEVELS);
+    int verticesPerStem = 2 * STEM_SAMPLES_PER_LEVEL * levels;
+    int stem = gl_VertexID / verticesPerStem;
+    int sampleIndex = (gl_VertexID % verticesPerStem) / 2;
+    int side = gl_VertexID % 2;
+    StemSetInstance stemSet = stemSets[gl_InstanceID];
+
+    StemVertex v = stemRibbonVertex(stemSet, levels, stem, sampleIndex, side);
+    mat3 frame = stemSetFrame(stemSet.upYaw.xyz, stemSet.upYaw.w);
+    vec3 position = stemSetWorldPosition(stemSet, frame, v.position);
+    // The frame is a rotation and the scale uniform: it carries normals as it carries points.
+    vNormal = frame * v.normal;
+#ifdef STEM_SET_CAPTURE
+    int slot = gl_InstanceID * STEMS_PER_SET * verticesPerStem + gl_VertexID;
+    captured[2 * slot] = vec4(position, 1.0);
+    captured[2 * slot + 1] = vec4(vNormal, 0.0);
+#endif
+    vUp = frame[1];
+    vHeight = v.u;
+    vB = stemSet.alphaBetaThetaB.w;
+    vPosition = position;
+    gl_Position = uViewProj * vec4(position, 1.0);
+}
