@@ -33,6 +33,19 @@ const char* geometryPathLabel(GeometryPath path) {
     return path == GeometryPath::Tessellation ? "tess" : "strips";
 }
 
+// The billboards and stem sets stand for the blades: they take the blades' mean AO.
+static float meanFieldAo(const core::Scene& scene) {
+    double aoSum = 0.0;
+    std::size_t aoCount = 0;
+    for (const auto& layer : scene.layers)
+        for (std::size_t i = 0; i < layer.shading.size(); ++i)
+            if (layer.patched.blades[i].h() > 0.0f) {
+                aoSum += layer.shading[i].ao();
+                ++aoCount;
+            }
+    return aoCount > 0 ? static_cast<float>(aoSum / static_cast<double>(aoCount)) : 1.0f;
+}
+
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene) {
     std::unique_ptr<SceneRenderer> renderer(new SceneRenderer());
     renderer->mScene = &scene;
@@ -69,16 +82,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
             return billboards.error();
         renderer->mBillboards = std::make_unique<BillboardField>(std::move(*billboards));
     }
-    // The billboards stand for the blades: they take the blades' mean AO.
-    double aoSum = 0.0;
-    std::size_t aoCount = 0;
-    for (const auto& layer : scene.layers)
-        for (std::size_t i = 0; i < layer.shading.size(); ++i)
-            if (layer.patched.blades[i].h() > 0.0f) {
-                aoSum += layer.shading[i].ao();
-                ++aoCount;
-            }
-    renderer->mFieldAo = aoCount > 0 ? static_cast<float>(aoSum / static_cast<double>(aoCount)) : 1.0f;
+    renderer->mFieldAo = meanFieldAo(scene);
     renderer->mMeshProgram = std::move(*mesh);
     renderer->mStripProgram = std::move(*strips);
     renderer->mTessProgram = std::move(*tess);
@@ -285,6 +289,7 @@ void SceneRenderer::uploadRegrown(std::size_t layer, const core::RegrowReport& r
         return;
     mFields[layer].uploadPatches(report.patches, false);
     mFields[layer].uploadPatches(report.shadedPatches, true);
+    mFieldAo = meanFieldAo(*mScene);
     if (layer < mStemSets.size()) {
         const core::LayerField& field = mScene->layers[layer];
         for (std::uint32_t p : report.patches) {
