@@ -52,9 +52,11 @@ StemSetInstance nullStemSet(const Blade& candidate) {
     return set;
 }
 
-void growSlots(const LayerSource& source, std::uint32_t patch, GrownField& field) {
+// Returns how many slots changed between holding a blade and not.
+std::size_t growSlots(const LayerSource& source, std::uint32_t patch, GrownField& field) {
     const std::uint32_t size = field.patched.patchSize;
     const std::size_t first = static_cast<std::size_t>(patch) * size;
+    std::size_t flipped = 0;
     for (std::size_t slot = first; slot < first + size; ++slot) {
         const std::uint32_t candidate = field.patched.sourceIndex[slot];
         const bool wasLive = field.patched.blades[slot].h() > 0.0f;
@@ -68,7 +70,9 @@ void growSlots(const LayerSource& source, std::uint32_t patch, GrownField& field
                 grown.live ? stemSetFor(source, candidate)
                            : nullStemSet(source.candidates.blades[candidate]);
         field.liveBlades = field.liveBlades - (wasLive ? 1 : 0) + (grown.live ? 1 : 0);
+        flipped += wasLive != grown.live ? 1 : 0;
     }
+    return flipped;
 }
 
 }  // namespace
@@ -130,11 +134,13 @@ GrownField growField(const LayerSource& source, std::uint32_t patchSize) {
     return field;
 }
 
-void regrowPatches(const LayerSource& source, std::span<const std::uint32_t> patches,
-                   GrownField& field) {
+std::size_t regrowPatches(const LayerSource& source, std::span<const std::uint32_t> patches,
+                          GrownField& field) {
+    std::size_t flipped = 0;
     for (std::uint32_t p : patches)
         if (p < field.patched.patches.size())
-            growSlots(source, p, field);
+            flipped += growSlots(source, p, field);
+    return flipped;
 }
 
 std::vector<std::uint32_t> patchesWithRootsIn(const LayerSource& source, const GrownField& field,

@@ -71,8 +71,10 @@ inline constexpr float STEM_SET_SPREAD = 0.25f;
 GrownField growField(const LayerSource& source, std::uint32_t patchSize);
 
 // Re-grows the slots of `patches` (indices into field.patched.patches) from their candidates,
-// updating blades, wilt, stem sets and liveBlades.
-void regrowPatches(const LayerSource& source, std::span<const std::uint32_t> patches,
+// updating blades, wilt, stem sets and liveBlades. Returns how many slots gained or lost their
+// blade: only those change the neighbourhoods the shading bake sums (it counts blades and
+// their surface normals, which growth never changes).
+std::size_t regrowPatches(const LayerSource& source, std::span<const std::uint32_t> patches,
                    GrownField& field);
 
 // The patches holding a candidate whose root lies inside `region` (sorted, unique). A texel a

@@ -184,28 +184,35 @@ Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted,
     RegrowReport report;
     report.patches = patchesWithRootsIn(layer.source, layer, {painted.min - margin,
                                                               painted.max + margin});
-    regrowPatches(layer.source, report.patches, layer);
-    if (report.patches.empty())
-        return report;
-    // The shading of a blade changes with the blades around it: re-bake every slot of the
-    // regrown patches and every blade whose kernels reach one (3σ, bakeBladeShading).
-    const BladeShadingParams params = bladeShadingParams(lighting);
-    Bounds grown = layer.patched.patches[report.patches.front()].bounds;
-    for (std::uint32_t p : report.patches) {
-        grown.min = glm::min(grown.min, layer.patched.patches[p].bounds.min);
-        grown.max = glm::max(grown.max, layer.patched.patches[p].bounds.max);
+    report.bladesAddedOrRemoved = regrowPatches(layer.source, report.patches, layer);
+    report.shadedPatches = report.patches;
+    if (report.bladesAddedOrRemoved > 0) {
+        // The bake counts the blades around each one (AO) and averages their surface normals
+        // (blurred normal); growth changes neither, so only a blade gained or lost changes
+        // them: then every blade whose kernels (3σ) reach a regrown patch is re-baked.
+        const BladeShadingParams params = bladeShadingParams(lighting);
+        Bounds grown = layer.patched.patches[report.patches.front()].bounds;
+        for (std::uint32_t p : report.patches) {
+            grown.min = glm::min(grown.min, layer.patched.patches[p].bounds.min);
+            grown.max = glm::max(grown.max, layer.patched.patches[p].bounds.max);
+        }
+        const glm::vec3 reach(3.0f * std::max(params.aoRadiusM, params.normalBlurRadiusM));
+        report.shadedRegion = {grown.min - reach, grown.max + reach};
+        auto rebaked = rebakeBladeShading(layer.patched.blades, params, layer.seed,
+                                          report.shadedRegion, layer.shading);
+        if (!rebaked)
+            return Error{"lighting", rebaked.error().str()};
+        report.rebakedBlades = *rebaked;
+        report.shadedPatches = patchesWithRootsIn(layer.source, layer, report.shadedRegion);
     }
-    const glm::vec3 reach(3.0f * std::max(params.aoRadiusM, params.normalBlurRadiusM));
-    report.shadedRegion = {grown.min - reach, grown.max + reach};
-    auto rebaked = rebakeBladeShading(layer.patched.blades, params, layer.seed,
-                                      report.shadedRegion, layer.shading);
-    if (!rebaked)
-        return Error{"lighting", rebaked.error().str()};
-    report.rebakedBlades = *rebaked;
-    report.shadedPatches = patchesWithRootsIn(layer.source, layer, report.shadedRegion);
-    // The re-bake resets the wilt it keeps in waterAge.z.
-    for (std::size_t slot = 0; slot < layer.shading.size(); ++slot)
-        layer.shading[slot].waterAge.z = layer.wilt[slot];
+    // The wilt lives in the shading (waterAge.z): regrown slots changed it, and a re-bake
+    // reset it.
+    if (layer.shading.size() == layer.wilt.size()) {
+        const std::size_t size = layer.patched.patchSize;
+        for (std::uint32_t p : report.shadedPatches)
+            for (std::size_t slot = p * size; slot < (p + 1) * size; ++slot)
+                layer.shading[slot].waterAge.z = layer.wilt[slot];
+    }
     return report;
 }
 

@@ -76,18 +76,21 @@ BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting);
 Result<Scene> buildScene(const LoadedProject& project);
 
 // What a repaint re-grew: the patches whose slots changed (renderers re-upload those) and the
-// region whose shading was re-baked (slots there changed shading too).
+// patches whose shading changed (the regrown ones, whose wilt moved, and, when blades were
+// added or removed, every patch with a blade in the re-baked region).
 struct RegrowReport {
     std::vector<std::uint32_t> patches;
-    Bounds shadedRegion;
-    std::vector<std::uint32_t> shadedPatches;  // patches with a root in shadedRegion
+    std::vector<std::uint32_t> shadedPatches;
+    std::size_t bladesAddedOrRemoved = 0;
+    Bounds shadedRegion;  // where the AO and blurred normals were re-baked (when rebakedBlades > 0)
     std::size_t rebakedBlades = 0;
 };
 
 // After layer.source.maps changed inside `painted` (a box on the surface, e.g. a brush stroke's
 // touched texels): re-grows the patches with a root within `texelMarginM` of it (a texel's
-// bilinear footprint on the surface) and re-bakes the shading of the blades whose AO or blurred
-// normal can see them. Everything else in the layer keeps its bits.
+// bilinear footprint on the surface) and, when that added or removed blades (density paints),
+// re-bakes the shading of the blades whose AO or blurred normal can see them. Everything else in
+// the layer keeps its bits.
 Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted, float texelMarginM,
                                        const GrassLightingDesc& lighting);
 

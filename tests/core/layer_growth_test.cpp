@@ -215,5 +215,43 @@ TEST(LayerGrowth, RegrowingARegionMatchesAFullRegrow) {
     EXPECT_LT(worstAo, 0.01f);
 }
 
+// Soil and light reshape and recolour blades but add or remove none, and the shading bake sums
+// blade counts and surface normals only: a soil repaint re-bakes nothing, and the shading comes
+// out exactly as a full bake of the repainted field (with the new wilt).
+TEST(LayerGrowth, SoilRepaintKeepsTheBakeAndUpdatesTheWilt) {
+    const SurfaceMesh mesh = plane();
+    LayerField layer;
+    layer.source = sourceOn(mesh);
+    layer.source.growthEnabled = true;
+    layer.source.maps.soil = makeConstantMap(64, 64, 0.3f);
+    static_cast<GrownField&>(layer) = growField(layer.source, PATCH_SIZE);
+    layer.seed = SEED;
+    const GrassLightingDesc lighting;
+    layer.shading = *bakeBladeShading(layer.patched.blades, bladeShadingParams(lighting), SEED);
+    for (std::size_t slot = 0; slot < layer.shading.size(); ++slot)
+        layer.shading[slot].waterAge.z = layer.wilt[slot];
+
+    for (int y = 8; y < 24; ++y)
+        for (int x = 8; x < 24; ++x)
+            layer.source.maps.soil.texels[static_cast<std::size_t>(y * 64 + x)] = 1.0f;
+    // Texels 8..23 of 64 on the 4 m plane: x and z in [−1.5, −0.5] m.
+    const Bounds painted{{-1.5f, -0.1f, -1.5f}, {-0.5f, 0.1f, -0.5f}};
+    const auto report = regrowLayerRegion(layer, painted, 4.0f / 64.0f, lighting);
+    ASSERT_TRUE(report) << report.error().str();
+    ASSERT_FALSE(report->patches.empty());
+    EXPECT_EQ(report->bladesAddedOrRemoved, 0u);
+    EXPECT_EQ(report->rebakedBlades, 0u);
+    EXPECT_EQ(report->shadedPatches, report->patches) << "only the wilt of regrown slots moved";
+
+    auto full = *bakeBladeShading(layer.patched.blades, bladeShadingParams(lighting), SEED);
+    std::size_t wiltChanged = 0;
+    for (std::size_t slot = 0; slot < full.size(); ++slot) {
+        full[slot].waterAge.z = layer.wilt[slot];
+        ASSERT_EQ(layer.shading[slot], full[slot]) << "slot " << slot;
+        wiltChanged += layer.wilt[slot] < 0.2f ? 1 : 0;  // good soil: b near 0.9
+    }
+    EXPECT_GT(wiltChanged, 0u);
+}
+
 }  // namespace
 }  // namespace grass::core
