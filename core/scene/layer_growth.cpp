@@ -13,7 +13,11 @@ float sampleOrOne(const MapImage& map, glm::vec2 uv) {
     return map.texels.empty() ? 1.0f : map.sample(uv);
 }
 
+// Soil and light count only with growth on (the project says so); off, every point grows as
+// in the best conditions.
 GrowthParams candidateGrowth(const LayerSource& source, std::size_t candidate) {
+    if (!source.growthEnabled)
+        return growthParams(source.curves, 1.0f, 1.0f);
     const glm::vec2 uv = source.candidates.uvs[candidate];
     return growthParams(source.curves, sampleOrOne(source.maps.soil, uv),
                         sampleOrOne(source.maps.light, uv));

@@ -88,8 +88,9 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
             auto map = loadMapImageAt(*path, layer.mapResolution.x, layer.mapResolution.y);
             if (!map)
                 return fromProjectField(loaded, at + key, map.error());
+            // The loader's warnings already start with the file's name.
             for (const auto& warning : map->warnings)
-                scene.notes.push_back(path->string() + ": " + warning);
+                scene.notes.push_back(warning);
             out = std::move(*map);
             return {};
         };

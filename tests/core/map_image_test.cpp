@@ -13,49 +13,16 @@
 #include <iterator>
 #include <utility>
 
-#ifdef _WIN32
-#include <process.h>
-#else
-#include <unistd.h>
-#endif
-
 #include "util/rng.h"
+
+#include "support/scratch_folder.h"
 
 namespace grass::core {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh folder under the system temp folder, removed afterwards. The process id keeps two
-// build trees running these tests at once from sharing (and deleting) each other's files.
-class ScratchFolder {
-public:
-    explicit ScratchFolder(const std::string& name) {
-#ifdef _WIN32
-        const int pid = _getpid();
-#else
-        const int pid = static_cast<int>(getpid());
-#endif
-        mPath = fs::temp_directory_path() / ("grass-map-image-" + name + "-" + std::to_string(pid));
-        fs::remove_all(mPath);
-        fs::create_directories(mPath);
-    }
-    ~ScratchFolder() {
-        std::error_code ec;
-        fs::remove_all(mPath, ec);
-    }
-    ScratchFolder(const ScratchFolder&) = delete;
-    ScratchFolder& operator=(const ScratchFolder&) = delete;
-    const fs::path& path() const {
-        return mPath;
-    }
-    fs::path operator/(const std::string& file) const {
-        return mPath / file;
-    }
-
-private:
-    fs::path mPath;
-};
+using test::ScratchFolder;
 
 MapImage randomMap(int width, int height, std::uint64_t seed) {
     MapImage map = makeConstantMap(width, height, 0.0f);
