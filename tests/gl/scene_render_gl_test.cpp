@@ -44,12 +44,13 @@ TEST_F(SceneRenderTest, MeadowShowsGrassOverAStatedShareOfTheImage) {
     auto result = render::renderOffscreen(*scene, *camera, request);
     ASSERT_TRUE(result.ok()) << result.error().str();
     // The meadow's camera frames the field over the lower ~55 % of the view (sky above). Of
-    // those pixels about 60 % read as clearly green (measured 32 % of the image); shadowed
-    // roots are too dark to count. 25 % leaves room for lighting changes, while an empty
-    // field (soil only: 0 %) or a broken blade pass fails clearly.
+    // those pixels about 40 % read as clearly green (measured 22.8 % of the image; 32 % before
+    // the painted maps: the footpath is bare, and poor soil and shade grow straw-coloured grass
+    // that is not green); shadowed roots are too dark to count. 18 % leaves room for lighting
+    // changes, while an empty field (soil only: 0 %) or a broken blade pass fails clearly.
     const double share = grassPixelShare(result->image.pixels);
     RecordProperty("grass_share", std::to_string(share));
-    EXPECT_GT(share, 0.25) << "grass covers " << share * 100 << " % of the image";
+    EXPECT_GT(share, 0.18) << "grass covers " << share * 100 << " % of the image";
     EXPECT_EQ(result->lastFrame.bladesDrawn, scene->totalBlades());
 }
 
