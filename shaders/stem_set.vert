@@ -33,6 +33,17 @@ void main() {
     int sampleIndex = (gl_VertexID % verticesPerStem) / 2;
     int side = gl_VertexID % 2;
     StemSetInstance stemSet = stemSets[gl_InstanceID];
+#ifndef STEM_SET_CAPTURE
+    // A null set (its slot holds no blade: the density map removed it) collapses outside the
+    // clip volume at once, so its triangles are dropped without evaluating the spline.
+    if (!(stemSet.rootMetresPerUnit.w > 0.0)) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        vPosition = vNormal = vUp = vec3(0.0);
+        vHeight = 0.0;
+        vB = 0.0;
+        return;
+    }
+#endif
 
     StemVertex v = stemRibbonVertex(stemSet, levels, stem, sampleIndex, side);
     mat3 frame = stemSetFrame(stemSet.upYaw.xyz, stemSet.upYaw.w);

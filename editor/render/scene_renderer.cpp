@@ -1,5 +1,7 @@
 #include "scene_renderer.h"
 
+#include <algorithm>
+
 namespace grass::render {
 
 GeometryPath resolveGeometryPath(core::GeometryPath path, bool softwareRenderer) {
@@ -280,7 +282,12 @@ void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat
         setStemSetColours(program, StemSetColours{layer.rootColor, layer.tipColor,
                                                   layer.poorRootColor, layer.poorTipColor});
         mStemSets[i].draw(program, layer.source.stemLevels);
-        mStemSetsDrawn += mStemSets[i].instanceCount();
+        // Null sets (slots without a blade) are instanced too but collapse in the vertex shader.
+        mStemSetsDrawn += static_cast<std::size_t>(
+            std::count_if(layer.stemSets.begin(), layer.stemSets.end(),
+                          [](const core::StemSetInstance& set) {
+                              return set.rootMetresPerUnit.w > 0.0f;
+                          }));
     }
 }
 
