@@ -1,8 +1,9 @@
 // grass-editor: the authoring window. This first version shows the project's mesh and grass
 // in a viewport with an orbit camera: drag to orbit, wheel to zoom, middle- or shift-drag to
-// pan, F to frame the scene, Esc to close; 1–4 switch the cull tests, T the technique, L the
-// lighting, and the title shows the cull counts and pass times twice a second. --screenshot saves what the window shows after
-// --frames frames and exits, so tests and users can see the editor without a person.
+// pan, F to frame the scene, Esc to close; 1–4 switch the cull tests, T the technique (blades,
+// billboards, hybrid, growth), L the lighting, and the title shows the cull counts and pass
+// times twice a second. --screenshot saves what the window shows after --frames frames and
+// exits, so tests and users can see the editor without a person.
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -39,7 +40,7 @@ std::string applyRenderKeys(const editor::InputState& input, render::RenderOptio
     }
     if (input.nextTechnique) {
         options.technique =
-            static_cast<core::GrassTechnique>((static_cast<int>(options.technique) + 1) % 3);
+            static_cast<core::GrassTechnique>((static_cast<int>(options.technique) + 1) % 4);
         return "technique " + std::string(core::grassTechniqueName(options.technique));
     }
     if (input.toggleLighting) {
@@ -102,8 +103,8 @@ int main(int argc, char** argv) {
                      "Opens the grass editor on a project (default: projects/meadow). Drag "
                      "to orbit, wheel to zoom, middle- or shift-drag to pan, F to frame, Esc "
                      "to close; keys 1-4 switch the orientation, frustum, distance and occlusion "
-                     "culling, T cycles blades / billboards / hybrid, L toggles the grass "
-                     "lighting; the title shows cull counts and pass times.");
+                     "culling, T cycles blades / billboards / hybrid / growth (stem sets), L "
+                     "toggles the grass lighting; the title shows cull counts and pass times.");
     parser.positional("project", "a project folder (with project.json) or a .json file",
                       &projectPath, false);
     parser.text("--screenshot", "FILE",
