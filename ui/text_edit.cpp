@@ -1,0 +1,395 @@
+// Single-line text edit and the typed number entry built on it (text_edit.h).
+#include "ui/text_edit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+namespace grass::ui {
+
+namespace {
+
+bool isContinuation(char c) {
+    return (static_cast<unsigned char>(c) & 0xC0u) == 0x80u;
+}
+
+// Pulls a byte offset back onto the start of a code point: the text may have been changed by the
+// app since the cursor was stored.
+std::size_t snap(std::string_view text, std::size_t pos) {
+    pos = std::min(pos, text.size());
+    while (pos > 0 && pos < text.size() && isContinuation(text[pos])) {
+        --pos;
+    }
+    return pos;
+}
+
+struct TextEditState {
+    std::size_t cursor = 0;
+    // The other end of the selection; == cursor when nothing is selected.
+    std::size_t anchor = 0;
+    // How far the text is shifted left so the cursor stays in the box, points.
+    float scroll = 0.0f;
+    bool editing = false;
+    // The text when focus arrived, for Escape.
+    std::string original;
+    // Restarts the caret blink on every edit or move so the caret is visible while typing.
+    double lastActivityS = 0.0;
+};
+
+float offsetX(const FontAtlas& fonts, std::string_view text, std::size_t pos, float sizePt) {
+    return fonts.textSize(text.substr(0, pos), sizePt).x;
+}
+
+// The code point boundary nearest to x (relative to the text start); glyph advances are what the
+// tessellator uses to lay text out, so the cursor lands where the glyphs are drawn.
+std::size_t hitTest(const FontAtlas& fonts, std::string_view text, float x, float sizePt) {
+    float pen = 0.0f;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t next = pos;
+        const float advance = fonts.glyph(decodeUtf8(text, next), sizePt).advance;
+        if (x < pen + 0.5f * advance) {
+            return pos;
+        }
+        pen += advance;
+        pos = next;
+    }
+    return text.size();
+}
+
+std::string_view displayLabel(std::string_view idLabel) {
+    return idLabel.substr(0, std::min(idLabel.find("##"), idLabel.size()));
+}
+
+// The editing logic; `edited` reports a text change (public callers turn it into changed()).
+Response textEditImpl(Ui& ui, std::string_view idLabel, std::string& text, float width,
+                      bool* committed, bool* edited) {
+    Context& ctx = ui.context();
+    const Style& s = ui.style();
+    const FontAtlas& fonts = ctx.fonts();
+    const float size = s.textSizePt;
+    const std::string_view label = displayLabel(idLabel);
+    const Vec2 labelSize = fonts.textSize(label, size);
+    const float height =
+        std::max(s.interactHeight, fonts.lineHeight(size) + 2.0f * s.buttonPadding.y);
+    const Rect total =
+        ui.allocate({width + (label.empty() ? 0.0f : s.itemSpacing.x + labelSize.x), height});
+    const Rect box = Rect::fromMinSize(total.min, {width, height});
+    const Id id = ui.makeId(idLabel);
+    const Response r = ui.interact(box, id, Sense{true, true, true});
+    TextEditState& st = ctx.state<TextEditState>(id);
+    *committed = false;
+    *edited = false;
+    st.cursor = snap(text, st.cursor);
+    st.anchor = snap(text, st.anchor);
+    const double now = ctx.input().timeS;
+    const float textLeft = box.min.x + s.buttonPadding.x;
+
+    if (r.hasFocus() && !st.editing) {
+        st.editing = true;
+        st.original = text;
+        // Focus by keyboard (Tab) or by a program (number entry) selects everything, ready to
+        // be typed over; a click places the cursor below instead.
+        st.anchor = 0;
+        st.cursor = text.size();
+        st.lastActivityS = now;
+    } else if (!r.hasFocus() && st.editing) {
+        st.editing = false;
+        *committed = true;
+    }
+    if (r.hovered() || r.dragged()) {
+        ctx.output().cursor = CursorIcon::Text;
+    }
+
+    if (r.hasFocus()) {
+        const float pointerX = r.pointerPos().x - textLeft + st.scroll;
+        if (r.hovered() && ctx.buttonPressed()) {
+            st.cursor = hitTest(fonts, text, pointerX, size);
+            if (!ctx.input().modifiers.shift) {
+                st.anchor = st.cursor;
+            }
+            st.lastActivityS = now;
+        } else if (r.dragged()) {
+            st.cursor = hitTest(fonts, text, pointerX, size);
+        }
+        if (r.doubleClicked()) {
+            st.anchor = 0;
+            st.cursor = text.size();
+        }
+
+        const auto hasSelection = [&] { return st.cursor != st.anchor; };
+        const auto eraseSelection = [&] {
+            const std::size_t a = std::min(st.cursor, st.anchor);
+            text.erase(a, std::max(st.cursor, st.anchor) - a);
+            st.cursor = st.anchor = a;
+            *edited = true;
+        };
+        const auto insert = [&](std::string_view typed) {
+            if (typed.empty()) {
+                return;
+            }
+            if (hasSelection()) {
+                eraseSelection();
+            }
+            text.insert(st.cursor, typed);
+            st.cursor += typed.size();
+            st.anchor = st.cursor;
+            *edited = true;
+        };
+        insert(ctx.input().text);
+
+        // A copy: consumeKey below edits the input's key list.
+        const std::vector<KeyEvent> keys = ctx.input().keys;
+        for (const KeyEvent& e : keys) {
+            const bool shift = e.modifiers.shift;
+            const bool ctrl = e.modifiers.ctrl && !e.modifiers.alt;
+            bool used = true;
+            const auto moveTo = [&](std::size_t pos) {
+                st.cursor = pos;
+                if (!shift) {
+                    st.anchor = pos;
+                }
+            };
+            switch (e.key) {
+                case Key::Left:
+                    // Without Shift a selection collapses to its start rather than moving on.
+                    moveTo(hasSelection() && !shift ? std::min(st.cursor, st.anchor)
+                                                    : prevCodePoint(text, st.cursor));
+                    break;
+                case Key::Right:
+                    moveTo(hasSelection() && !shift ? std::max(st.cursor, st.anchor)
+                                                    : nextCodePoint(text, st.cursor));
+                    break;
+                case Key::Home:
+                    moveTo(0);
+                    break;
+                case Key::End:
+                    moveTo(text.size());
+                    break;
+                case Key::Backspace:
+                    if (!hasSelection()) {
+                        st.anchor = prevCodePoint(text, st.cursor);
+                    }
+                    eraseSelection();
+                    break;
+                case Key::Delete:
+                    if (!hasSelection()) {
+                        st.anchor = nextCodePoint(text, st.cursor);
+                    }
+                    eraseSelection();
+                    break;
+                case Key::Enter:
+                    st.editing = false;
+                    *committed = true;
+                    ctx.clearFocus();
+                    break;
+                case Key::Escape:
+                    if (text != st.original) {
+                        text = st.original;
+                        *edited = true;
+                    }
+                    st.editing = false;
+                    st.cursor = st.anchor = snap(text, st.cursor);
+                    ctx.clearFocus();
+                    break;
+                case Key::A:
+                    used = ctrl;
+                    if (ctrl) {
+                        st.anchor = 0;
+                        st.cursor = text.size();
+                    }
+                    break;
+                case Key::C:
+                case Key::X:
+                    used = ctrl;
+                    if (ctrl && hasSelection()) {
+                        const std::size_t a = std::min(st.cursor, st.anchor);
+                        ctx.output().copiedText =
+                            text.substr(a, std::max(st.cursor, st.anchor) - a);
+                        if (e.key == Key::X) {
+                            eraseSelection();
+                        }
+                    }
+                    break;
+                case Key::V: {
+                    used = ctrl;
+                    if (ctrl) {
+                        // Single line: line breaks of the pasted text are dropped.
+                        std::string paste = ctx.input().clipboardText;
+                        std::erase_if(paste, [](char c) { return c == '\n' || c == '\r'; });
+                        insert(paste);
+                    }
+                    break;
+                }
+                default:
+                    used = false;
+                    break;
+            }
+            if (used) {
+                ctx.consumeKey(e.key, e.modifiers);
+                st.lastActivityS = now;
+            }
+            if (!st.editing) {
+                break;
+            }
+        }
+    }
+
+    // Scrolls just enough to keep the cursor inside the box, and never past the text's end.
+    const float inner = std::max(0.0f, width - 2.0f * s.buttonPadding.x);
+    const float textWidth = fonts.textSize(text, size).x;
+    const float caretX = offsetX(fonts, text, st.cursor, size);
+    if (r.hasFocus()) {
+        st.scroll = std::clamp(st.scroll, caretX - inner, caretX);
+    }
+    st.scroll = std::clamp(st.scroll, 0.0f, std::max(0.0f, textWidth + 1.0f - inner));
+
+    Painter& p = ui.painter();
+    const WidgetVisuals& v = ui.visuals(r);
+    const Stroke frame = r.hasFocus() ? Stroke{1.0f, s.accent} : v.bgStroke;
+    p.rect(box, s.rounding, s.extremeBg, frame);
+    p.pushClip({{textLeft - 1.0f, box.min.y}, {box.max.x - s.buttonPadding.x + 1.0f, box.max.y}});
+    const float x0 = textLeft - st.scroll;
+    const float lineH = fonts.lineHeight(size);
+    const float top = box.centre().y - 0.5f * lineH;
+    if (r.hasFocus() && st.cursor != st.anchor) {
+        const float a = offsetX(fonts, text, std::min(st.cursor, st.anchor), size);
+        const float b = offsetX(fonts, text, std::max(st.cursor, st.anchor), size);
+        p.rect({{x0 + a, top}, {x0 + b, top + lineH}}, 0.0f, s.selectionFill);
+    }
+    p.text({x0, top}, text, size, v.text);
+    // Blinks with a 1 s period, solid for the first 0.6 s after any activity.
+    if (r.hasFocus() && std::fmod(now - st.lastActivityS, 1.0) < 0.6) {
+        p.line({x0 + caretX, top}, {x0 + caretX, top + lineH}, {1.0f, s.textStrong});
+    }
+    p.popClip();
+    p.text({box.max.x + s.itemSpacing.x, box.centre().y}, label, size, s.text, {0.0f, 0.5f});
+    return r;
+}
+
+std::string formatNumber(float value, int decimals) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", std::max(decimals, 0), double(value));
+    return buffer;
+}
+
+// Enough digits to see a 1% step of the range (0..500 integers, 0..1 two decimals), the rule the
+// slider's own value text follows.
+int rangeDecimals(float min, float max) {
+    const float range = std::abs(max - min);
+    if (!(range > 0.0f) || !std::isfinite(range)) {
+        return 3;
+    }
+    return std::clamp(int(std::ceil(-std::log10(range / 100.0f))), 0, 6);
+}
+
+struct EntryState {
+    bool editing = false;
+    std::string buffer;
+};
+
+}  // namespace
+
+std::size_t nextCodePoint(std::string_view text, std::size_t pos) {
+    if (pos >= text.size()) {
+        return text.size();
+    }
+    std::size_t next = pos;
+    decodeUtf8(text, next);
+    return next;
+}
+
+std::size_t prevCodePoint(std::string_view text, std::size_t pos) {
+    pos = std::min(pos, text.size());
+    if (pos == 0) {
+        return 0;
+    }
+    --pos;
+    while (pos > 0 && isContinuation(text[pos])) {
+        --pos;
+    }
+    return pos;
+}
+
+Response textEdit(Ui& ui, std::string_view idLabel, std::string& text, float width,
+                  bool* committed) {
+    bool commit = false;
+    bool edited = false;
+    Response r = textEditImpl(ui, idLabel, text, width, &commit, &edited);
+    if (committed != nullptr) {
+        *committed = commit;
+    }
+    return edited ? r.markChanged() : r;
+}
+
+Response dragValueWithEntry(Ui& ui, std::string_view label, float& value, float speed, float min,
+                            float max, int decimals) {
+    Context& ctx = ui.context();
+    const Style& s = ui.style();
+    EntryState& st = ctx.state<EntryState>(ui.makeId(label).with("entry"));
+    // The text box gets its own id, but shows the same label.
+    const std::string editId = std::string(label) + "##entry";
+    if (!st.editing) {
+        Response r = ui.dragValue(label, value, speed, min, max, decimals);
+        if (r.doubleClicked()) {
+            st.editing = true;
+            st.buffer = formatNumber(value, decimals);
+            const Id textId = ui.makeId(editId);
+            ctx.requestFocus(textId);
+            // Context drops focus held by a widget it did not see this frame; this zero-size
+            // interaction keeps the requested focus alive until the box appears next frame.
+            ui.interact(Rect{}, textId, Sense::hover());
+        }
+        return r;
+    }
+    const float width =
+        std::max(s.dragValueMinWidth,
+                 ctx.fonts().textSize(st.buffer, s.textSizePt).x + 2.0f * s.buttonPadding.x);
+    bool committed = false;
+    bool edited = false;
+    Response r = textEditImpl(ui, editId, st.buffer, width, &committed, &edited);
+    if (committed) {
+        st.editing = false;
+        char* end = nullptr;
+        const double typed = std::strtod(st.buffer.c_str(), &end);
+        const bool parsed = end != st.buffer.c_str() && std::isfinite(typed);
+        const float v = std::clamp(float(typed), min, max);
+        if (parsed && v != value) {
+            value = v;
+            r.markChanged();
+        }
+    } else if (!r.hasFocus()) {
+        // Escape: back to dragging, value untouched.
+        st.editing = false;
+    }
+    return r;
+}
+
+Response sliderWithEntry(Ui& ui, std::string_view label, float& value, float min, float max,
+                         const SliderOptions& options) {
+    Response result;
+    ui.horizontal([&](Ui& row) {
+        row.pushId(label);
+        SliderOptions trackOnly = options;
+        trackOnly.showValue = false;
+        // The track and the box are both unlabelled: separate salts keep their ids apart.
+        row.pushId("track");
+        result = row.slider("", value, min, max, trackOnly);
+        row.popId();
+        // The box drags at the track's rate: the full range over the track width.
+        const float speed = (max - min) / std::max(row.style().sliderWidth, 1.0f);
+        const int decimals = options.decimals >= 0 ? options.decimals : rangeDecimals(min, max);
+        const Response box = dragValueWithEntry(row, "", value, speed, std::min(min, max),
+                                                std::max(min, max), decimals);
+        row.popId();
+        if (!label.empty()) {
+            row.label(label);
+        }
+        result.unite(box);
+    });
+    return result;
+}
+
+}  // namespace grass::ui
