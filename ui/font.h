@@ -2,7 +2,9 @@
 // fonts-dejavu-core) rasterised with stb_truetype into one single-channel coverage image,
 // shared by every text size the UI uses (sizes are rasterised on first use, at the current
 // pixels-per-point, and packed into the atlas). Texture 0 of the backend. Text positions and
-// sizes are in points.
+// sizes are in points. The const queries (glyph, textSize) may rasterise and grow the atlas:
+// logically const caching, so one atlas must not be used from two threads at once. No kerning:
+// the width of a concatenation is the sum of the widths.
 #pragma once
 
 #include <cstddef>

@@ -51,46 +51,47 @@ void appendArc(std::vector<Vec2>& out, Vec2 centre, float radius, float a0, floa
     }
 }
 
-std::vector<Vec2> roundedRectPath(const Rect& rect, float rounding, float pixelsPerPoint) {
+// Both path builders overwrite `path` (scratch storage reused across shapes: no allocation per
+// shape once it has grown).
+void roundedRectPath(std::vector<Vec2>& path, const Rect& rect, float rounding,
+                     float pixelsPerPoint) {
     const float r = std::clamp(rounding, 0.0f, 0.5f * std::min(rect.width(), rect.height()));
-    std::vector<Vec2> path;
+    path.clear();
     if (r <= 0.0f) {
-        path = {rect.min, {rect.max.x, rect.min.y}, rect.max, {rect.min.x, rect.max.y}};
-        return path;
+        path.insert(path.end(),
+                    {rect.min, {rect.max.x, rect.min.y}, rect.max, {rect.min.x, rect.max.y}});
+        return;
     }
     const int n = quarterSegments(r, pixelsPerPoint);
     constexpr float PI = std::numbers::pi_v<float>;
-    path.reserve(std::size_t(4 * (n + 1)));
     appendArc(path, {rect.min.x + r, rect.min.y + r}, r, PI, 1.5f * PI, n);
     appendArc(path, {rect.max.x - r, rect.min.y + r}, r, 1.5f * PI, 2.0f * PI, n);
     appendArc(path, {rect.max.x - r, rect.max.y - r}, r, 0.0f, 0.5f * PI, n);
     appendArc(path, {rect.min.x + r, rect.max.y - r}, r, 0.5f * PI, PI, n);
-    return path;
 }
 
-std::vector<Vec2> circlePath(Vec2 centre, float radius, float pixelsPerPoint) {
+void circlePath(std::vector<Vec2>& path, Vec2 centre, float radius, float pixelsPerPoint) {
     // At least 8 points: a tiny circle (a radio dot) still reads as round.
     const int n = std::max(2, quarterSegments(radius, pixelsPerPoint));
-    std::vector<Vec2> path;
+    path.clear();
     appendArc(path, centre, radius, 0.0f, 2.0f * std::numbers::pi_v<float>, 4 * n);
     // The arc repeats its first point at 2π.
     path.pop_back();
-    return path;
 }
 
-// Drops repeated points (and, for closed paths, a last point equal to the first).
-std::vector<Vec2> withoutDuplicates(const std::vector<Vec2>& points, bool closed) {
-    std::vector<Vec2> out;
-    out.reserve(points.size());
+// Drops non-finite and repeated points in place (and, for closed paths, a last point equal to
+// the first).
+void removeDuplicates(std::vector<Vec2>& points, bool closed) {
+    std::size_t kept = 0;
     for (const Vec2 p : points) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y))
             continue;
-        if (out.empty() || glm::distance(out.back(), p) > MERGE_DISTANCE)
-            out.push_back(p);
+        if (kept == 0 || glm::distance(points[kept - 1], p) > MERGE_DISTANCE)
+            points[kept++] = p;
     }
-    if (closed && out.size() > 1 && glm::distance(out.front(), out.back()) <= MERGE_DISTANCE)
-        out.pop_back();
-    return out;
+    points.resize(kept);
+    if (closed && kept > 1 && glm::distance(points.front(), points.back()) <= MERGE_DISTANCE)
+        points.pop_back();
 }
 
 // The normal of edge a→b, to the left of its direction in y-down coordinates ((d.y, −d.x)):
@@ -110,13 +111,15 @@ Vec2 miterNormal(Vec2 n0, Vec2 n1) {
     return average / std::max(lengthSq, MIN_MITER_LENGTH_SQ);
 }
 
-// Per-vertex miter normals of a path; open ends take their one edge's normal.
-std::vector<Vec2> pathNormals(const std::vector<Vec2>& p, bool closed) {
+// Per-vertex miter normals of a path into `normals` (`edges` is scratch); open ends take their
+// one edge's normal. `sign` −1 flips them (a counter-clockwise outline's outward side).
+void pathNormals(const std::vector<Vec2>& p, bool closed, float sign, std::vector<Vec2>& edges,
+                 std::vector<Vec2>& normals) {
     const std::size_t n = p.size();
-    std::vector<Vec2> edges(n);
+    edges.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-        edges[i] = edgeNormal(p[i], p[(i + 1) % n]);
-    std::vector<Vec2> normals(n);
+        edges[i] = sign * edgeNormal(p[i], p[(i + 1) % n]);
+    normals.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         if (!closed && i == 0)
             normals[i] = edges[0];
@@ -125,8 +128,12 @@ std::vector<Vec2> pathNormals(const std::vector<Vec2>& p, bool closed) {
         else
             normals[i] = miterNormal(edges[(i + n - 1) % n], edges[i]);
     }
-    return normals;
 }
+
+// Storage reused for every shape of one tessellate() call.
+struct Scratch {
+    std::vector<Vec2> path, edges, normals;
+};
 
 class MeshBuilder {
 public:
@@ -137,13 +144,26 @@ public:
           mPixelsPerPoint(pixelsPerPoint),
           mFeather(featherWidth(pixelsPerPoint)) {}
 
+    // Room for `vertices` and `indices` more, growing geometrically: a reserve of the exact
+    // size per shape would reallocate on every shape.
+    void reserve(std::size_t vertices, std::size_t indices) {
+        const auto grow = [](auto& v, std::size_t more) {
+            if (v.size() + more > v.capacity())
+                v.reserve(std::max(2 * v.capacity(), v.size() + more));
+        };
+        grow(mMesh.vertices, vertices);
+        grow(mMesh.indices, indices);
+    }
+
     std::uint32_t vertex(Vec2 pos, Color32 color) { return vertex(pos, mWhiteUv, color); }
     std::uint32_t vertex(Vec2 pos, Vec2 uv, Color32 color) {
         mMesh.vertices.push_back({pos, uv, color});
         return static_cast<std::uint32_t>(mMesh.vertices.size() - 1);
     }
     void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-        mMesh.indices.insert(mMesh.indices.end(), {a, b, c});
+        mMesh.indices.push_back(a);
+        mMesh.indices.push_back(b);
+        mMesh.indices.push_back(c);
     }
     void quad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
         triangle(a, b, c);
@@ -153,7 +173,7 @@ public:
     // A convex polygon: a fan over an inner outline half a feather inside the edge, plus a
     // band out to half a feather outside where alpha falls to zero. The band's average
     // coverage is 1/2 at the true edge, so the area covered equals the polygon's.
-    void fillConvex(std::vector<Vec2> points, Color32 color) {
+    void fillConvex(const std::vector<Vec2>& points, Color32 color) {
         if (points.size() < 3 || color.a == 0)
             return;
         float area2 = 0.0f;
@@ -161,10 +181,11 @@ public:
             area2 += cross(points[i], points[(i + 1) % points.size()]);
         if (std::abs(area2) < 1e-8f)
             return;
-        // The normals below point outward for positive (clockwise-on-screen) winding.
-        if (area2 < 0.0f)
-            std::reverse(points.begin(), points.end());
-        const std::vector<Vec2> normals = pathNormals(points, true);
+        // Edge normals point outward for positive (clockwise-on-screen) winding; flipped
+        // otherwise. The fan's own winding does not matter (no face culling).
+        std::vector<Vec2>& normals = mScratch.normals;
+        pathNormals(points, true, area2 < 0.0f ? -1.0f : 1.0f, mScratch.edges, normals);
+        reserve(2 * points.size(), 9 * points.size());
         const auto first = static_cast<std::uint32_t>(mMesh.vertices.size());
         const Color32 clear = Color32::transparent();
         const float half = 0.5f * mFeather;
@@ -188,7 +209,9 @@ public:
         if (points.size() < 2 || stroke.width <= 0.0f || stroke.color.a == 0)
             return;
         const bool isClosed = closed && points.size() > 2;
-        const std::vector<Vec2> normals = pathNormals(points, isClosed);
+        std::vector<Vec2>& normals = mScratch.normals;
+        pathNormals(points, isClosed, 1.0f, mScratch.edges, normals);
+        reserve(4 * points.size(), 18 * points.size());
         const Color32 color = premultiply(stroke.color);
         const Color32 clear = Color32::transparent();
         const auto first = static_cast<std::uint32_t>(mMesh.vertices.size());
@@ -240,6 +263,7 @@ public:
 
 private:
     Mesh& mMesh;
+    Scratch& mScratch;
     Vec2 mWhiteUv;
     float mPixelsPerPoint;
     float mFeather;
@@ -281,6 +305,7 @@ void tessellateText(MeshBuilder& out, const TextShape& text, const Rect& clip,
     if (text.color.a == 0)
         return;
     const Color32 color = premultiply(text.color);
+    out.reserve(4 * text.text.size(), 6 * text.text.size());
     const float line = font.lineHeight(text.sizePt);
     const float ascent = font.ascent(text.sizePt);
     float penX = text.pos.x;
@@ -312,8 +337,8 @@ Color32 premultiply(Color32 c) {
     return {mul(c.r), mul(c.g), mul(c.b), c.a};
 }
 
-std::vector<Mesh> tessellate(const std::vector<ClippedShape>& shapes, const FontAtlas& font,
-                             float pixelsPerPoint) {
+void tessellate(const std::vector<ClippedShape>& shapes, const FontAtlas& font,
+                float pixelsPerPoint, std::vector<Mesh>& meshes) {
     // Rasterise every glyph first: a glyph added later could grow the atlas and move the uv of
     // quads (and of the white texel) already written.
     for (const ClippedShape& clipped : shapes) {
@@ -325,37 +350,50 @@ std::vector<Mesh> tessellate(const std::vector<ClippedShape>& shapes, const Font
     const Vec2 whiteUv = font.whiteUv();
     const float feather = featherWidth(pixelsPerPoint);
 
-    std::vector<Mesh> meshes;
+    // Meshes [0, used) are this frame's; those beyond keep last frame's capacity for reuse.
+    std::size_t used = 0;
+    Scratch scratch;
     for (const ClippedShape& clipped : shapes) {
         if (clipped.clip.empty() || !overlaps(shapeBounds(clipped.shape, feather), clipped.clip))
             continue;
         const auto* image = std::get_if<ImageShape>(&clipped.shape);
         const TextureId texture = image != nullptr ? image->texture : TextureId{0};
         // A mesh whose shapes all drew nothing is dropped; the one before it may match again.
-        if (!meshes.empty() && meshes.back().vertices.empty())
-            meshes.pop_back();
-        if (meshes.empty() || meshes.back().clip != clipped.clip ||
-            meshes.back().texture != texture)
-            meshes.push_back(Mesh{clipped.clip, texture, {}, {}});
-        MeshBuilder out(meshes.back(), whiteUv, pixelsPerPoint);
+        if (used > 0 && meshes[used - 1].vertices.empty())
+            --used;
+        if (used == 0 || meshes[used - 1].clip != clipped.clip ||
+            meshes[used - 1].texture != texture) {
+            if (used == meshes.size())
+                meshes.emplace_back();
+            Mesh& fresh = meshes[used++];
+            fresh.clip = clipped.clip;
+            fresh.texture = texture;
+            fresh.vertices.clear();
+            fresh.indices.clear();
+        }
+        MeshBuilder out(meshes[used - 1], scratch, whiteUv, pixelsPerPoint);
         std::visit(
             [&](const auto& s) {
                 using T = std::decay_t<decltype(s)>;
                 if constexpr (std::is_same_v<T, RectShape>) {
                     if (s.rect.empty())
                         return;
-                    const std::vector<Vec2> path = withoutDuplicates(
-                        roundedRectPath(s.rect, s.rounding, pixelsPerPoint), true);
+                    std::vector<Vec2>& path = scratch.path;
+                    roundedRectPath(path, s.rect, s.rounding, pixelsPerPoint);
+                    removeDuplicates(path, true);
                     out.fillConvex(path, premultiply(s.fill));
                     out.stroke(path, true, s.stroke);
                 } else if constexpr (std::is_same_v<T, CircleShape>) {
                     if (!(s.radius > 0.0f))
                         return;
-                    const std::vector<Vec2> path = circlePath(s.centre, s.radius, pixelsPerPoint);
+                    std::vector<Vec2>& path = scratch.path;
+                    circlePath(path, s.centre, s.radius, pixelsPerPoint);
                     out.fillConvex(path, premultiply(s.fill));
                     out.stroke(path, true, s.stroke);
                 } else if constexpr (std::is_same_v<T, PathShape>) {
-                    const std::vector<Vec2> path = withoutDuplicates(s.points, s.closed);
+                    std::vector<Vec2>& path = scratch.path;
+                    path.assign(s.points.begin(), s.points.end());
+                    removeDuplicates(path, s.closed);
                     // A fill closes the outline even when the stroke is left open.
                     out.fillConvex(path, premultiply(s.fill));
                     out.stroke(path, s.closed, s.stroke);
@@ -368,8 +406,15 @@ std::vector<Mesh> tessellate(const std::vector<ClippedShape>& shapes, const Font
             },
             clipped.shape);
     }
-    if (!meshes.empty() && meshes.back().vertices.empty())
-        meshes.pop_back();
+    if (used > 0 && meshes[used - 1].vertices.empty())
+        --used;
+    meshes.resize(used);
+}
+
+std::vector<Mesh> tessellate(const std::vector<ClippedShape>& shapes, const FontAtlas& font,
+                             float pixelsPerPoint) {
+    std::vector<Mesh> meshes;
+    tessellate(shapes, font, pixelsPerPoint, meshes);
     return meshes;
 }
 

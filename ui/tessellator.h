@@ -37,5 +37,9 @@ Color32 premultiply(Color32 color);
 // any vertex is written, so every uv in the result refers to the atlas as it is on return.
 std::vector<Mesh> tessellate(const std::vector<ClippedShape>& shapes, const FontAtlas& font,
                              float pixelsPerPoint);
+// The same into `meshes`, reusing the vertex and index storage it already holds: an editor
+// keeping one vector across frames allocates nothing once the UI stops growing.
+void tessellate(const std::vector<ClippedShape>& shapes, const FontAtlas& font,
+                float pixelsPerPoint, std::vector<Mesh>& meshes);
 
 }  // namespace grass::ui

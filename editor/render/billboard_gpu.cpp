@@ -8,9 +8,13 @@
 #include <string>
 #include <utility>
 
+#include "scoped_capability.h"
+
 namespace grass::render {
 
 namespace {
+
+using gl::ScopedCapability;
 
 // Alpha-to-coverage works on multisampled targets; without samples the fragment shader's cutoff
 // alone decides, so it cuts at half coverage instead of discarding only the empty texels.
@@ -58,30 +62,6 @@ gl::TextureHandle uploadTexture(const Rgba8Pixels& image, std::string_view label
     texture.setLabel(label);
     return texture;
 }
-
-// Restores a capability on scope exit.
-class ScopedCapability {
-public:
-    ScopedCapability(GLenum capability, bool enable)
-        : mCapability(capability), mWasEnabled(glIsEnabled(capability) == GL_TRUE) {
-        if (enable)
-            glEnable(capability);
-        else
-            glDisable(capability);
-    }
-    ~ScopedCapability() {
-        if (mWasEnabled)
-            glEnable(mCapability);
-        else
-            glDisable(mCapability);
-    }
-    ScopedCapability(const ScopedCapability&) = delete;
-    ScopedCapability& operator=(const ScopedCapability&) = delete;
-
-private:
-    GLenum mCapability;
-    bool mWasEnabled;
-};
 
 }  // namespace
 

@@ -4,9 +4,13 @@
 #include <cmath>
 #include <cstdint>
 
+#include "scoped_capability.h"
+
 namespace grass::render {
 
 namespace {
+
+using gl::ScopedCapability;
 
 int clampedLevels(int levels) {
     return std::clamp(levels, 1, core::MAX_STEM_LEVELS);
@@ -37,28 +41,6 @@ std::size_t indexOffsetBytes(int levels) {
         before += static_cast<std::size_t>(stemSetIndexCount(l));
     return before * sizeof(std::uint32_t);
 }
-
-// Sets a capability for a scope and puts back what was there.
-class ScopedCapability {
-public:
-    ScopedCapability(GLenum capability, bool enable)
-        : mCapability(capability), mWasEnabled(glIsEnabled(capability) == GL_TRUE) {
-        setEnabled(enable);
-    }
-    ~ScopedCapability() { setEnabled(mWasEnabled); }
-    ScopedCapability(const ScopedCapability&) = delete;
-    ScopedCapability& operator=(const ScopedCapability&) = delete;
-
-private:
-    void setEnabled(bool enable) const {
-        if (enable)
-            glEnable(mCapability);
-        else
-            glDisable(mCapability);
-    }
-    GLenum mCapability;
-    bool mWasEnabled;
-};
 
 }  // namespace
 

@@ -348,6 +348,36 @@ TEST(Tessellator, InvisibleShapesEmitNothing) {
     EXPECT_TRUE(tessellate(shapes, font(), 1.0f).empty());
 }
 
+// The allocation-free overload: a vector reused across frames ends up exactly as a fresh result,
+// even when the earlier frame had more meshes or more vertices.
+TEST(Tessellator, ReusedOutputEqualsFreshOutput) {
+    std::mt19937 rng(7);
+    const auto frame = [&](int count) {
+        std::vector<ClippedShape> shapes;
+        for (int i = 0; i < count; ++i)
+            shapes.push_back({Rect::fromMinSize({float(i % 3) * 50.0f, 0.0f}, {60.0f, 200.0f}),
+                              randomShape(rng)});
+        return shapes;
+    };
+    const std::vector<ClippedShape> big = frame(60);
+    const std::vector<ClippedShape> small = frame(15);
+    std::vector<Mesh> reused;
+    tessellate(big, font(), 1.0f, reused);
+    tessellate(small, font(), 1.0f, reused);
+    const std::vector<Mesh> fresh = tessellate(small, font(), 1.0f);
+    ASSERT_EQ(reused.size(), fresh.size());
+    for (std::size_t m = 0; m < fresh.size(); ++m) {
+        EXPECT_EQ(reused[m].clip, fresh[m].clip);
+        EXPECT_EQ(reused[m].texture, fresh[m].texture);
+        EXPECT_EQ(reused[m].indices, fresh[m].indices);
+        ASSERT_EQ(reused[m].vertices.size(), fresh[m].vertices.size());
+        for (std::size_t v = 0; v < fresh[m].vertices.size(); ++v) {
+            EXPECT_EQ(reused[m].vertices[v].pos, fresh[m].vertices[v].pos);
+            EXPECT_EQ(reused[m].vertices[v].color, fresh[m].vertices[v].color);
+        }
+    }
+}
+
 TEST(Tessellator, PartlyVisibleShapeKeepsItsClip) {
     const Rect clip = Rect::fromMinSize({0.0f, 0.0f}, {50.0f, 50.0f});
     const auto meshes = tessellateOne(
