@@ -1,6 +1,7 @@
 #include "window.h"
 
 #include "debug_output.h"
+#include "editor_ui.h"
 
 #include <GLFW/glfw3.h>
 #include <epoxy/gl.h>
@@ -18,23 +19,37 @@ struct WindowCallbacks {
         input.cursorX = x;
         input.cursorY = y;
     }
+    static void enter(GLFWwindow* w, int entered) { self(w)->mInput.cursorInside = entered != 0; }
+    static void character(GLFWwindow* w, unsigned int codepoint) {
+        appendUtf8(self(w)->mInput.typed, char32_t(codepoint));
+    }
     static void button(GLFWwindow* w, int button, int action, int mods) {
         InputState& input = self(w)->mInput;
         const bool down = action == GLFW_PRESS;
-        if (button == GLFW_MOUSE_BUTTON_LEFT)
+        if (button == GLFW_MOUSE_BUTTON_LEFT) {
             input.leftDown = down;
+            input.leftPressed = input.leftPressed || down;
+        }
         if (button == GLFW_MOUSE_BUTTON_MIDDLE)
             input.middleDown = down;
         if (button == GLFW_MOUSE_BUTTON_RIGHT)
             input.rightDown = down;
         input.shiftDown = (mods & GLFW_MOD_SHIFT) != 0;
+        input.modifiers = uiModifiers(mods);
     }
-    static void scroll(GLFWwindow* w, double, double dy) { self(w)->mInput.scrollSteps += dy; }
+    static void scroll(GLFWwindow* w, double dx, double dy) {
+        self(w)->mInput.scrollSteps += dy;
+        self(w)->mInput.scrollX += dx;
+    }
     static void key(GLFWwindow* w, int key, int, int action, int mods) {
         InputState& input = self(w)->mInput;
         input.shiftDown =
             (mods & GLFW_MOD_SHIFT) != 0 ||
             (action != GLFW_RELEASE && (key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT));
+        input.modifiers = uiModifiers(mods);
+        if (action != GLFW_RELEASE)
+            if (const auto uiKey = uiKeyFor(key))
+                input.keys.push_back({*uiKey, input.modifiers});
         if (action == GLFW_PRESS && key == GLFW_KEY_F)
             input.frameRequested = true;
         if (action == GLFW_PRESS && key >= GLFW_KEY_1 && key <= GLFW_KEY_4)
@@ -43,8 +58,10 @@ struct WindowCallbacks {
             input.nextTechnique = true;
         if (action == GLFW_PRESS && key == GLFW_KEY_L)
             input.toggleLighting = true;
+        // Escape closes popups and text edits first; the app closes the window only when the
+        // UI did not take it (and asks about unsaved changes).
         if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE)
-            glfwSetWindowShouldClose(w, GLFW_TRUE);
+            input.escapePressed = true;
     }
 };
 
@@ -79,6 +96,8 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
     glfwSetMouseButtonCallback(handle, WindowCallbacks::button);
     glfwSetScrollCallback(handle, WindowCallbacks::scroll);
     glfwSetKeyCallback(handle, WindowCallbacks::key);
+    glfwSetCharCallback(handle, WindowCallbacks::character);
+    glfwSetCursorEnterCallback(handle, WindowCallbacks::enter);
     glfwMakeContextCurrent(handle);
     glfwSwapInterval(1);
     if (gl::GL_DEBUG_BY_DEFAULT) gl::enableDebugOutput();
@@ -97,6 +116,9 @@ bool Window::shouldClose() const {
 void Window::requestClose() {
     glfwSetWindowShouldClose(mWindow, GLFW_TRUE);
 }
+void Window::cancelClose() {
+    glfwSetWindowShouldClose(mWindow, GLFW_FALSE);
+}
 void Window::setTitle(const std::string& title) {
     glfwSetWindowTitle(mWindow, title.c_str());
 }
@@ -106,9 +128,27 @@ void Window::swapBuffers() {
 void Window::framebufferSize(int* width, int* height) const {
     glfwGetFramebufferSize(mWindow, width, height);
 }
+void Window::windowSize(int* width, int* height) const {
+    glfwGetWindowSize(mWindow, width, height);
+}
+float Window::contentScale() const {
+    float x = 1.0f, y = 1.0f;
+    glfwGetWindowContentScale(mWindow, &x, &y);
+    return x > 0.0f ? x : 1.0f;
+}
+std::string Window::clipboard() const {
+    const char* text = glfwGetClipboardString(mWindow);
+    return text ? std::string(text) : std::string();
+}
+void Window::setClipboard(const std::string& text) {
+    glfwSetClipboardString(mWindow, text.c_str());
+}
 
 InputState Window::pollInput() {
-    mInput.dragDx = mInput.dragDy = mInput.scrollSteps = 0.0;
+    mInput.dragDx = mInput.dragDy = mInput.scrollSteps = mInput.scrollX = 0.0;
+    mInput.leftPressed = mInput.escapePressed = false;
+    mInput.typed.clear();
+    mInput.keys.clear();
     mInput.frameRequested = false;
     mInput.toggledCullTest = 0;
     mInput.nextTechnique = mInput.toggleLighting = false;

@@ -1,10 +1,14 @@
 // Window: a GLFW window with an OpenGL 4.5 core context (the editor's only GLFW user). Input
-// arrives through callbacks into an InputState the app reads once per frame.
+// arrives through callbacks into an InputState the app reads once per frame: the camera's view
+// of it (drags, wheel steps, shortcut keys) and the raw events the UI needs (editor_ui.h turns
+// them into a ui::Input).
 #pragma once
 
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "ui/context.h"
 #include "util/result.h"
 
 struct GLFWwindow;
@@ -12,17 +16,26 @@ struct GLFWwindow;
 namespace grass::editor {
 
 struct InputState {
-    double cursorX = 0.0, cursorY = 0.0;
+    double cursorX = 0.0, cursorY = 0.0;  // screen coordinates (GLFW's, not pixels)
     double dragDx = 0.0, dragDy = 0.0;  // cursor motion since last frame while a button is down
     double scrollSteps = 0.0;
+    double scrollX = 0.0;  // horizontal wheel steps, for the UI only
     bool leftDown = false, middleDown = false, rightDown = false;
     bool shiftDown = false;
+    bool cursorInside = true;
+    // A button went down this frame (the UI must see a press even if it was released again).
+    bool leftPressed = false;
     bool frameRequested = false;  // F key: frame the whole scene
     // Keys 1–4: toggle the orientation, frustum, distance, occlusion cull tests; T: next grass
     // technique (blades, billboards, hybrid); L: grass lighting on/off.
     int toggledCullTest = 0;  // 1..4, 0 = none this frame
     bool nextTechnique = false;
     bool toggleLighting = false;
+    bool escapePressed = false;
+    // For the UI: typed text (UTF-8), key presses and repeats, modifiers held now.
+    std::string typed;
+    std::vector<ui::KeyEvent> keys;
+    ui::Modifiers modifiers;
 };
 
 class Window {
@@ -35,11 +48,19 @@ public:
 
     bool shouldClose() const;
     void requestClose();
+    // Keeps the window open after the user asked to close it (the app asks to save first).
+    void cancelClose();
     void setTitle(const std::string& title);
     void swapBuffers();
     // Polls events; the returned input holds this frame's drags and scrolls.
     InputState pollInput();
     void framebufferSize(int* width, int* height) const;
+    // Window size in screen coordinates (what cursor positions are in).
+    void windowSize(int* width, int* height) const;
+    // The monitor's content scale (HiDPI factor, 1 on a plain screen).
+    float contentScale() const;
+    std::string clipboard() const;
+    void setClipboard(const std::string& text);
 
 private:
     Window() = default;

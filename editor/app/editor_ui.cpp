@@ -1,0 +1,119 @@
+#include "editor_ui.h"
+
+#include <GLFW/glfw3.h>
+
+#include "ui/tessellator.h"
+#include "window.h"
+
+namespace grass::editor {
+
+std::optional<ui::Key> uiKeyFor(int glfwKey) {
+    switch (glfwKey) {
+    case GLFW_KEY_LEFT: return ui::Key::Left;
+    case GLFW_KEY_RIGHT: return ui::Key::Right;
+    case GLFW_KEY_UP: return ui::Key::Up;
+    case GLFW_KEY_DOWN: return ui::Key::Down;
+    case GLFW_KEY_HOME: return ui::Key::Home;
+    case GLFW_KEY_END: return ui::Key::End;
+    case GLFW_KEY_BACKSPACE: return ui::Key::Backspace;
+    case GLFW_KEY_DELETE: return ui::Key::Delete;
+    case GLFW_KEY_ENTER:
+    case GLFW_KEY_KP_ENTER: return ui::Key::Enter;
+    case GLFW_KEY_ESCAPE: return ui::Key::Escape;
+    case GLFW_KEY_TAB: return ui::Key::Tab;
+    case GLFW_KEY_A: return ui::Key::A;
+    case GLFW_KEY_C: return ui::Key::C;
+    case GLFW_KEY_V: return ui::Key::V;
+    case GLFW_KEY_X: return ui::Key::X;
+    case GLFW_KEY_Z: return ui::Key::Z;
+    case GLFW_KEY_Y: return ui::Key::Y;
+    default: return std::nullopt;
+    }
+}
+
+ui::Modifiers uiModifiers(int glfwMods) {
+    return {(glfwMods & GLFW_MOD_SHIFT) != 0, (glfwMods & GLFW_MOD_CONTROL) != 0,
+            (glfwMods & GLFW_MOD_ALT) != 0};
+}
+
+void appendUtf8(std::string& out, char32_t cp) {
+    if (cp < 0x20 || cp == 0x7f || (cp >= 0xd800 && cp <= 0xdfff) || cp > 0x10ffff)
+        return;
+    if (cp < 0x80) {
+        out += char(cp);
+    } else if (cp < 0x800) {
+        out += char(0xc0 | (cp >> 6));
+        out += char(0x80 | (cp & 0x3f));
+    } else if (cp < 0x10000) {
+        out += char(0xe0 | (cp >> 12));
+        out += char(0x80 | ((cp >> 6) & 0x3f));
+        out += char(0x80 | (cp & 0x3f));
+    } else {
+        out += char(0xf0 | (cp >> 18));
+        out += char(0x80 | ((cp >> 12) & 0x3f));
+        out += char(0x80 | ((cp >> 6) & 0x3f));
+        out += char(0x80 | (cp & 0x3f));
+    }
+}
+
+Result<std::unique_ptr<EditorUi>> EditorUi::create() {
+    std::unique_ptr<EditorUi> self(new EditorUi());
+    std::string error;
+    auto fonts = ui::FontAtlas::load(ui::FontAtlas::defaultFontPath(), &error);
+    if (!fonts)
+        return makeError(ui::FontAtlas::defaultFontPath().string(),
+                         error + " (install fonts-dejavu-core)");
+    self->mFonts = std::make_unique<ui::FontAtlas>(std::move(*fonts));
+    self->mContext = std::make_unique<ui::Context>(*self->mFonts);
+    auto renderer = gl::UiRenderer::create();
+    if (!renderer)
+        return renderer.error();
+    self->mRenderer = std::make_unique<gl::UiRenderer>(std::move(*renderer));
+    return self;
+}
+
+void EditorUi::beginFrame(Window& window, const InputState& input, double timeS) {
+    int fbW = 0, fbH = 0, winW = 0, winH = 0;
+    window.framebufferSize(&fbW, &fbH);
+    window.windowSize(&winW, &winH);
+    // Points = pixels / content scale; cursor positions come in screen coordinates, which are
+    // pixels on X11 and points on macOS/Wayland, hence the framebuffer/window ratio.
+    const float ppp = window.contentScale();
+    if (ppp != mPixelsPerPoint || mContext->frameNumber() == 0) {
+        mFonts->setPixelsPerPoint(ppp);  // re-rasterises the glyphs sharp at the new scale
+        mPixelsPerPoint = ppp;
+    }
+    const float toPixels = winW > 0 ? float(fbW) / float(winW) : 1.0f;
+    ui::Input in;
+    in.pixelsPerPoint = ppp;
+    in.screenRect = {{0.0f, 0.0f}, {float(fbW) / ppp, float(fbH) / ppp}};
+    in.timeS = timeS;
+    in.hasPointer = input.cursorInside;
+    in.pointerPos = ui::Vec2(float(input.cursorX), float(input.cursorY)) * toPixels / ppp;
+    in.buttonDown = {input.leftDown, input.rightDown, input.middleDown};
+    // A click shorter than a frame: report the press so the UI still sees it.
+    in.buttonPressed[0] = input.leftPressed;
+    // One wheel step scrolls about three lines of 14 pt text, as most toolkits do.
+    in.scrollDelta = ui::Vec2(float(input.scrollX), float(input.scrollSteps)) * 50.0f;
+    in.text = input.typed;
+    in.keys = input.keys;
+    in.modifiers = input.modifiers;
+    for (const ui::KeyEvent& key : input.keys)
+        if (key.key == ui::Key::V && key.modifiers.ctrl)
+            in.clipboardText = window.clipboard();
+    mContext->beginFrame(std::move(in));
+}
+
+const ui::Output& EditorUi::endFrame(Window& window) {
+    const ui::Output& out = mContext->endFrame();
+    if (out.copiedText)
+        window.setClipboard(*out.copiedText);
+    ui::tessellate(out.shapes, *mFonts, out.pixelsPerPoint, mMeshes);
+    return out;
+}
+
+void EditorUi::draw(int framebufferWidth, int framebufferHeight) {
+    mRenderer->draw(mMeshes, *mFonts, {framebufferWidth, framebufferHeight}, mPixelsPerPoint);
+}
+
+}  // namespace grass::editor

@@ -1,0 +1,55 @@
+// The editor's UI plumbing between GLFW and the UI library: GLFW keys, modifiers and characters
+// turned into ui::Input events (window.cpp's callbacks call the translators), and EditorUi, which
+// owns the font atlas, the ui::Context and the GL backend, and runs one UI frame: input in
+// points (the window's content scale is the pixels-per-point), the app's panels, tessellation,
+// and drawing over the scene. Panels themselves live in panels.h.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ui/context.h"
+#include "ui/font.h"
+#include "ui/mesh.h"
+#include "ui_renderer.h"
+#include "util/result.h"
+
+namespace grass::editor {
+
+class Window;
+struct InputState;
+
+// The UI key for a GLFW key code, if the UI reacts to it.
+std::optional<ui::Key> uiKeyFor(int glfwKey);
+ui::Modifiers uiModifiers(int glfwMods);
+// Appends the UTF-8 encoding of a code point (GLFW's char callback gives code points); control
+// characters and invalid code points are dropped, since the UI wants printable text only.
+void appendUtf8(std::string& out, char32_t codepoint);
+
+class EditorUi {
+public:
+    // Loads DejaVu Sans (fonts-dejavu-core) and the UI shaders; the error names what is missing.
+    static Result<std::unique_ptr<EditorUi>> create();
+
+    ui::Context& context() { return *mContext; }
+    // Feeds this frame's input to the context. The clipboard is read from the OS only when a
+    // paste key arrives (reading it is an X round trip).
+    void beginFrame(Window& window, const InputState& input, double timeS);
+    // Ends the frame, hands copied text to the OS clipboard and tessellates the shapes.
+    const ui::Output& endFrame(Window& window);
+    // Draws the last frame's meshes over whatever the bound (default) framebuffer holds.
+    void draw(int framebufferWidth, int framebufferHeight);
+
+private:
+    EditorUi() = default;
+    std::unique_ptr<ui::FontAtlas> mFonts;
+    std::unique_ptr<ui::Context> mContext;
+    std::unique_ptr<gl::UiRenderer> mRenderer;
+    // Kept across frames so tessellation reuses its storage.
+    std::vector<ui::Mesh> mMeshes;
+    float mPixelsPerPoint = 1.0f;
+};
+
+}  // namespace grass::editor

@@ -1,0 +1,205 @@
+#include "panels.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "ui/menu.h"
+#include "ui/text_edit.h"
+#include "ui/ui.h"
+#include "ui/window.h"
+
+namespace grass::editor {
+
+namespace {
+
+// Height of the status bar under the viewport, points.
+constexpr float STATUS_BAR_HEIGHT = 26.0f;
+constexpr float SIDE_PANEL_WIDTH = 330.0f;
+
+// A folder, or a file that does not end in .json, means <path>/project.json: projects are
+// folders (assets are relative to them), so that is what artists type.
+std::filesystem::path projectFileFor(const std::string& path) {
+    std::filesystem::path p(path);
+    if (p.extension() == ".json")
+        return p;
+    return p / "project.json";
+}
+
+void fileMenu(ui::Ui& bar, EditorState& s) {
+    ui::menu(bar, "File", [&](ui::Ui& m) {
+        if (ui::menuItem(m, "New"))
+            s.newRequested = true;
+        if (ui::menuItem(m, "Open…")) {
+            s.fileDialog = FileDialog::Open;
+            s.pathText = s.loaded.folder.string();
+        }
+        if (ui::menuItem(m, "Save")) {
+            if (s.loaded.file.empty()) {
+                s.fileDialog = FileDialog::SaveAs;
+                s.pathText.clear();
+            } else {
+                saveTo(s, s.loaded.file.string());
+            }
+        }
+        if (ui::menuItem(m, "Save As…")) {
+            s.fileDialog = FileDialog::SaveAs;
+            s.pathText = s.loaded.file.string();
+        }
+        m.separator();
+        if (ui::menuItem(m, "Quit"))
+            askQuit(s);
+    });
+}
+
+// The path entry window of Open… and Save As… (there is no native file dialog).
+void fileDialogWindow(ui::Context& ctx, EditorState& s) {
+    if (s.fileDialog == FileDialog::None)
+        return;
+    const bool opening = s.fileDialog == FileDialog::Open;
+    bool open = true;
+    const ui::Rect screen = ctx.screenRect();
+    const ui::Rect defaultRect = ui::Rect::fromMinSize(
+        {screen.centre().x - 230.0f, screen.centre().y - 60.0f}, {460.0f, 120.0f});
+    ui::window(
+        ctx, opening ? "Open project" : "Save project as", &open,
+        [&](ui::Ui& ui) {
+            ui.label(opening ? "Project folder or .json file:" : "Save to folder or .json file:");
+            // The text edit consumes Enter, so look before it: Enter (not a commit by focus loss,
+            // e.g. a click on Cancel) confirms the dialog.
+            const bool enter = ctx.keyPressed(ui::Key::Enter);
+            bool committed = false;
+            ui::textEdit(ui, "##path", s.pathText, ui.availableWidth() - 8.0f, &committed);
+            ui.horizontal([&](ui::Ui& row) {
+                const bool go = row.button(opening ? "Open" : "Save").clicked() ||
+                                (committed && enter);
+                if (go && !s.pathText.empty()) {
+                    if (opening)
+                        s.openRequested = s.pathText;
+                    else
+                        saveTo(s, projectFileFor(s.pathText).string());
+                    s.fileDialog = FileDialog::None;
+                }
+                if (row.button("Cancel").clicked())
+                    s.fileDialog = FileDialog::None;
+            });
+        },
+        defaultRect);
+    if (!open)
+        s.fileDialog = FileDialog::None;
+}
+
+void quitDialogWindow(ui::Context& ctx, EditorState& s) {
+    if (!s.quitDialog)
+        return;
+    const ui::Rect screen = ctx.screenRect();
+    ui::window(
+        ctx, "Unsaved changes", &s.quitDialog,
+        [&](ui::Ui& ui) {
+            ui.label("The project has unsaved changes.");
+            ui.horizontal([&](ui::Ui& row) {
+                if (row.button("Save and quit").clicked()) {
+                    if (s.loaded.file.empty()) {
+                        s.fileDialog = FileDialog::SaveAs;  // no file yet: ask where first
+                        s.quitDialog = false;
+                    } else if (saveTo(s, s.loaded.file.string())) {
+                        s.quitRequested = true;
+                    }
+                }
+                if (row.button("Quit without saving").clicked())
+                    s.quitRequested = true;
+                if (row.button("Cancel").clicked())
+                    s.quitDialog = false;
+            });
+        },
+        ui::Rect::fromMinSize({screen.centre().x - 200.0f, screen.centre().y - 50.0f},
+                              {400.0f, 90.0f}));
+}
+
+void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
+    const ui::Style& style = ctx.style();
+    ui::Painter bg = ctx.painter(ui::Layer::Panels, rect);
+    bg.rect(rect, 0.0f, style.panelFill);
+    bg.line({rect.min.x, rect.min.y + 0.5f}, {rect.max.x, rect.min.y + 0.5f},
+            {1.0f, style.separator});
+    ctx.registerArea(rect);
+    const render::FrameTimings& t = s.status.timings;
+    const bool stems = s.options.technique == core::GrassTechnique::Growth;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%zu blades · %zu drawn   cull %.2f · opaque %.2f · grass %.2f · %s %.2f ms"
+                  "   UI %.2f ms   %.0f fps",
+                  s.status.blades, stems ? t.stemSetsDrawn : t.cull.drawn, t.cullMs, t.meshMs,
+                  t.grassMs, stems ? "stem sets" : "billboards",
+                  stems ? t.stemSetMs : t.billboardMs, s.status.uiMs, s.status.fps);
+    ui::Ui ui(ctx, {rect.min + ui::Vec2(8.0f, 2.0f), rect.max}, ui::Layer::Panels);
+    ui.horizontal([&](ui::Ui& row) {
+        row.label(text);
+        if (!s.message.empty())
+            row.coloredLabel("   " + s.message, style.textWeak);
+    });
+}
+
+}  // namespace
+
+bool saveTo(EditorState& s, const std::string& file) {
+    const std::filesystem::path path(file);
+    std::error_code ec;
+    if (path.has_parent_path())
+        std::filesystem::create_directories(path.parent_path(), ec);
+    if (auto saved = core::saveProject(s.loaded.project, path); !saved) {
+        s.message = "not saved: " + saved.error().str();
+        return false;
+    }
+    s.loaded.file = path;
+    s.loaded.folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    s.dirty = false;
+    s.message = "saved " + path.string();
+    return true;
+}
+
+void askQuit(EditorState& s) {
+    if (s.dirty)
+        s.quitDialog = true;
+    else
+        s.quitRequested = true;
+}
+
+ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
+    ui::topBar(ctx, "menu", [&](ui::Ui& top) {
+        ui::menuBar(top, [&](ui::Ui& bar) {
+            fileMenu(bar, s);
+            const std::string title =
+                s.loaded.project.name + (s.dirty ? " *" : "") +
+                (s.loaded.file.empty() ? "  (not saved)" : "  — " + s.loaded.file.string());
+            bar.coloredLabel(title, ctx.style().textWeak);
+        });
+    });
+    ui::sidePanel(ctx, "side", ui::Side::Left, SIDE_PANEL_WIDTH, [&](ui::Ui& panel) {
+        // Layers with open headers are taller than any screen: the whole panel scrolls.
+        panel.scrollArea("scroll", panel.availableRect().height(), [&](ui::Ui& ui) {
+            ui.horizontal([&](ui::Ui& row) {
+                bool committed = false;
+                std::string name = s.loaded.project.name;
+                ui::textEdit(row, "project##name", name, 200.0f, &committed);
+                if (name != s.loaded.project.name) {
+                    s.loaded.project.name = name;
+                    s.dirty = true;
+                }
+            });
+            ui.separator();
+            layerSection(ui, s);
+            windSection(ui, s);
+            colliderSection(ui, s);
+            renderSection(ui, s);
+        });
+    });
+    ui::Rect central = ui::centralRect(ctx);
+    const ui::Rect bar{{central.min.x, central.max.y - STATUS_BAR_HEIGHT}, central.max};
+    statusBar(ctx, bar, s);
+    central.max.y = bar.min.y;
+    fileDialogWindow(ctx, s);
+    quitDialogWindow(ctx, s);
+    return central;
+}
+
+}  // namespace grass::editor

@@ -1,0 +1,72 @@
+// The editor's panels over the UI library: the menu bar (File: New, Open, Save, Save As, Quit),
+// the left side panel (project, layers, wind, colliders, render settings), the status bar under
+// the viewport, and the small windows the File menu opens (path entry, quit confirmation).
+//
+// Panels edit EditorState in place and say what the edit needs, because edits differ in cost:
+// colours, shapes and render settings are read by the renderer every frame and apply at once
+// (the panels write them into the live Scene and RenderOptions too); scatter, growth, wind and
+// collider edits need the scene re-grown, which takes long enough that main.cpp does it only
+// once the drag or text entry has ended (rebuildPending + no active widget).
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "project/project.h"
+#include "scene/scene.h"
+#include "scene_renderer.h"
+#include "ui/context.h"
+#include "ui/ui.h"
+
+namespace grass::editor {
+
+// What the status bar shows, measured by main.cpp.
+struct FrameStatus {
+    std::size_t blades = 0;  // live blades in the scene
+    render::FrameTimings timings;
+    double fps = 0.0;
+    double uiMs = 0.0;  // CPU time of building and tessellating the UI
+};
+
+enum class FileDialog { None, Open, SaveAs };
+
+struct EditorState {
+    core::LoadedProject loaded;  // file empty: a new project not saved yet
+    render::RenderOptions options;
+    core::Scene* scene = nullptr;  // the live field the renderer draws (colours, shapes)
+    FrameStatus status;
+
+    // Set whenever a panel changes a value; cleared by a save or a load.
+    bool dirty = false;
+    // The scene must be re-grown from `loaded` once no widget is being dragged.
+    bool rebuildPending = false;
+
+    // Requests for main.cpp, which owns the scene and the window.
+    bool newRequested = false;
+    std::string openRequested;  // a path to load
+    bool quitRequested = false;  // the user confirmed (or nothing was unsaved)
+
+    // UI-only state.
+    FileDialog fileDialog = FileDialog::None;
+    std::string pathText;
+    bool quitDialog = false;
+    std::string message;  // last file operation's result, shown in the status bar
+};
+
+// Builds every panel for this frame (between Context::beginFrame and endFrame) and returns the
+// rect left for the 3D viewport, in points.
+ui::Rect buildPanels(ui::Context& ctx, EditorState& state);
+
+// Saves to `file` (atomic), updating the state's file, folder and dirty flag; the message says
+// what happened.
+bool saveTo(EditorState& state, const std::string& file);
+// Asks to quit: straight away when nothing is unsaved, else through the confirmation window.
+void askQuit(EditorState& state);
+
+// The side panel's sections (panels_scene.cpp).
+void layerSection(ui::Ui& ui, EditorState& state);
+void windSection(ui::Ui& ui, EditorState& state);
+void colliderSection(ui::Ui& ui, EditorState& state);
+void renderSection(ui::Ui& ui, EditorState& state);
+
+}  // namespace grass::editor
