@@ -2,6 +2,7 @@
 // The JSON schema itself (both directions) is in project_json.cpp.
 #include "project/project.h"
 
+#include <algorithm>
 #include <system_error>
 
 #include "project/json_reader.h"
@@ -91,6 +92,26 @@ Result<void> saveProject(const Project& project, const fs::path& file) {
                              "cannot create the folder: " + ec.message());
     }
     return writeFileAtomic(file, text);
+}
+
+std::vector<std::string> projectAssetPaths(const Project& project) {
+    std::vector<std::string> paths;
+    const auto add = [&](const std::string& path) {
+        if (!path.empty() && std::find(paths.begin(), paths.end(), path) == paths.end())
+            paths.push_back(path);
+    };
+    if (project.mesh.isFile)
+        add(project.mesh.file);
+    for (const GrassLayer& layer : project.layers) {
+        add(layer.densityMap);
+        add(layer.soilMap);
+        add(layer.lightMap);
+    }
+    add(project.billboards.texture);
+    for (const ColliderDesc& collider : project.colliders)
+        if (collider.shape == ColliderShape::Mesh)
+            add(collider.file);
+    return paths;
 }
 
 }  // namespace grass::core

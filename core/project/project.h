@@ -220,6 +220,11 @@ std::string serializeProject(const Project& project);
 // Atomic save to a .json file.
 Result<void> saveProject(const Project& project, const std::filesystem::path& file);
 
+// Every file the project names (mesh, maps, billboard texture, collider meshes), as written:
+// relative to the project folder, each once, in document order. What "Save As" to another
+// folder must bring along.
+std::vector<std::string> projectAssetPaths(const Project& project);
+
 // Resolves an asset path relative to the project folder; refuses absolute paths and paths that
 // leave the folder (".."), naming the JSON field.
 Result<std::filesystem::path> resolveAssetPath(const std::filesystem::path& folder,

@@ -142,16 +142,34 @@ void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
 }  // namespace
 
 bool saveTo(EditorState& s, const std::string& file) {
-    const std::filesystem::path path(file);
+    namespace fs = std::filesystem;
+    const fs::path path(file);
+    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
     std::error_code ec;
-    if (path.has_parent_path())
-        std::filesystem::create_directories(path.parent_path(), ec);
+    fs::create_directories(folder, ec);
+    // Asset paths are relative to the project's folder: saved elsewhere, the project must take
+    // its files along (mesh, maps, textures), or it would name files that are not there.
+    // Files already at the destination are kept; the copy happens before project.json is
+    // written, so a failure leaves the old project as it was and no new one naming missing files.
+    if (!s.loaded.folder.empty() && !fs::equivalent(s.loaded.folder, folder, ec)) {
+        for (const std::string& asset : core::projectAssetPaths(s.loaded.project)) {
+            const fs::path from = s.loaded.folder / asset, to = folder / asset;
+            if (!fs::exists(from) || fs::exists(to))
+                continue;
+            fs::create_directories(to.parent_path(), ec);
+            if (!fs::copy_file(from, to, ec)) {
+                s.message = "not saved: " + to.string() + ": cannot copy " + from.string() +
+                            " (" + ec.message() + ")";
+                return false;
+            }
+        }
+    }
     if (auto saved = core::saveProject(s.loaded.project, path); !saved) {
         s.message = "not saved: " + saved.error().str();
         return false;
     }
     s.loaded.file = path;
-    s.loaded.folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    s.loaded.folder = folder;
     s.dirty = false;
     s.message = "saved " + path.string();
     return true;

@@ -58,7 +58,8 @@ struct EditorState {
 ui::Rect buildPanels(ui::Context& ctx, EditorState& state);
 
 // Saves to `file` (atomic), updating the state's file, folder and dirty flag; the message says
-// what happened.
+// what happened. Into another folder, the project's files (core::projectAssetPaths) are copied
+// along first.
 bool saveTo(EditorState& state, const std::string& file);
 // Asks to quit: straight away when nothing is unsaved, else through the confirmation window.
 void askQuit(EditorState& state);

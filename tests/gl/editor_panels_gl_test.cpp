@@ -1,0 +1,133 @@
+// The editor's panels driven as a user drives them (issue 7), with simulated input and no window:
+// File → Save As… with a typed path writes the project elsewhere and takes its files along;
+// Quit with unsaved changes asks first. (In grass_gl_tests because the panels link the renderer's
+// options; no GL context is used.)
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "maps/map_image.h"
+#include "panels.h"
+#include "support/scratch_folder.h"
+#include "support/test_paths.h"
+#include "ui/font.h"
+
+namespace grass::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const ui::FontAtlas& fonts() {
+    static const ui::FontAtlas atlas = [] {
+        std::string error;
+        auto loaded = ui::FontAtlas::load(ui::FontAtlas::defaultFontPath(), &error);
+        EXPECT_TRUE(loaded.has_value()) << error;
+        return std::move(*loaded);
+    }();
+    return atlas;
+}
+
+// The editor on a copy of the tiny growth project with a soil map, in `folder`.
+struct EditorDriver {
+    explicit EditorDriver(const fs::path& folder) : ctx(fonts()) {
+        fs::copy_file(sourceDir() / "tests/data/projects/growth_tiny/project.json",
+                      folder / "project.json");
+        fs::create_directories(folder / "maps");
+        EXPECT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.5f), folder / "maps/soil.png")
+                        .ok());
+        auto loaded = core::loadProject(folder);
+        EXPECT_TRUE(loaded.ok()) << loaded.error().str();
+        loaded->project.layers.front().soilMap = "maps/soil.png";
+        auto built = core::buildScene(*loaded);
+        EXPECT_TRUE(built.ok()) << built.error().str();
+        scene = std::move(*built);
+        state.loaded = std::move(*loaded);
+        state.scene = &scene;
+        state.dirty = true;  // the soil map was just added
+        input.screenRect = {{0.0f, 0.0f}, {1280.0f, 720.0f}};
+        input.hasPointer = true;
+        input.pointerPos = {1000.0f, 700.0f};
+    }
+
+    const ui::Output& frame() {
+        ctx.beginFrame(input);
+        editor::buildPanels(ctx, state);
+        const ui::Output& out = ctx.endFrame();
+        input.keys.clear();
+        input.text.clear();
+        input.timeS += 1.0 / 60.0;
+        return out;
+    }
+
+    // Clicks the topmost text shape reading exactly `text` (hover, press, release).
+    void click(std::string_view text) {
+        std::optional<ui::Vec2> at;
+        const ui::Output& out = frame();
+        for (const ui::ClippedShape& shape : out.shapes)
+            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && t->text == text)
+                at = t->pos + ui::Vec2(3.0f, 6.0f);
+        ASSERT_TRUE(at.has_value()) << "nothing reads \"" << text << "\"";
+        input.pointerPos = *at;
+        frame();
+        input.buttonDown[0] = true;
+        frame();
+        input.buttonDown[0] = false;
+        frame();
+    }
+
+    ui::Context ctx;
+    ui::Input input;
+    core::Scene scene;
+    editor::EditorState state;
+};
+
+TEST(EditorPanels, SaveAsTypedPathWritesTheProjectAndItsFilesThere) {
+    const ScratchFolder from("editor-save-as-from"), to("editor-save-as-to");
+    EditorDriver editor(from.path());
+    editor.click("File");
+    editor.click("Save As…");
+    ASSERT_EQ(editor.state.fileDialog, editor::FileDialog::SaveAs);
+    // The path field shows the current file: click into it, select all, type the new folder.
+    editor.click(editor.state.pathText);
+    editor.input.keys.push_back({ui::Key::A, {false, true, false}});
+    editor.frame();
+    editor.input.text = (to.path() / "copy").string();
+    editor.frame();
+    editor.input.keys.push_back({ui::Key::Enter, {}});
+    editor.frame();
+
+    const fs::path saved = to.path() / "copy" / "project.json";
+    ASSERT_TRUE(fs::exists(saved)) << editor.state.message;
+    EXPECT_FALSE(editor.state.dirty);
+    EXPECT_EQ(editor.state.fileDialog, editor::FileDialog::None);
+    EXPECT_EQ(editor.state.loaded.file, saved);
+    // The copy loads and grows on its own: its map came along.
+    EXPECT_TRUE(fs::exists(to.path() / "copy/maps/soil.png"));
+    auto reloaded = core::loadProject(saved);
+    ASSERT_TRUE(reloaded.ok()) << reloaded.error().str();
+    EXPECT_EQ(reloaded->project, editor.state.loaded.project);
+    auto grown = core::buildScene(*reloaded);
+    EXPECT_TRUE(grown.ok()) << grown.error().str();
+}
+
+TEST(EditorPanels, QuitWithUnsavedChangesAsksFirst) {
+    const ScratchFolder folder("editor-quit");
+    EditorDriver editor(folder.path());
+    editor.click("File");
+    editor.click("Quit");
+    EXPECT_FALSE(editor.state.quitRequested) << "unsaved changes must not be dropped silently";
+    ASSERT_TRUE(editor.state.quitDialog);
+    editor.click("Cancel");
+    EXPECT_FALSE(editor.state.quitDialog);
+    EXPECT_FALSE(editor.state.quitRequested);
+    editor.click("File");
+    editor.click("Quit");
+    editor.click("Quit without saving");
+    EXPECT_TRUE(editor.state.quitRequested);
+}
+
+}  // namespace
+}  // namespace grass::test
