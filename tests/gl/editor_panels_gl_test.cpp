@@ -113,6 +113,22 @@ TEST(EditorPanels, SaveAsTypedPathWritesTheProjectAndItsFilesThere) {
     EXPECT_TRUE(grown.ok()) << grown.error().str();
 }
 
+TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
+    const ScratchFolder folder("editor-open");
+    EditorDriver editor(folder.path());
+    editor.click("File");
+    editor.click("Open…");
+    ASSERT_EQ(editor.state.fileDialog, editor::FileDialog::Open);
+    editor.click(editor.state.pathText);
+    editor.input.keys.push_back({ui::Key::A, {false, true, false}});
+    editor.frame();
+    editor.input.text = "projects/meadow";
+    editor.frame();
+    editor.click("Open");
+    EXPECT_EQ(editor.state.openRequested, "projects/meadow");
+    EXPECT_EQ(editor.state.fileDialog, editor::FileDialog::None);
+}
+
 TEST(EditorPanels, QuitWithUnsavedChangesAsksFirst) {
     const ScratchFolder folder("editor-quit");
     EditorDriver editor(folder.path());
