@@ -28,7 +28,7 @@ std::filesystem::path projectFileFor(const std::string& path) {
 void fileMenu(ui::Ui& bar, EditorState& s) {
     ui::menu(bar, "File", [&](ui::Ui& m) {
         if (ui::menuItem(m, "New"))
-            s.newRequested = true;
+            askLeave(s, LeaveAction::New);
         if (ui::menuItem(m, "Open…")) {
             s.fileDialog = FileDialog::Open;
             s.pathText = s.loaded.folder.string();
@@ -74,7 +74,7 @@ void fileDialogWindow(ui::Context& ctx, EditorState& s) {
                                 (committed && enter);
                 if (go && !s.pathText.empty()) {
                     if (opening)
-                        s.openRequested = s.pathText;
+                        askLeave(s, LeaveAction::Open, s.pathText);
                     else
                         saveTo(s, projectFileFor(s.pathText).string());
                     s.fileDialog = FileDialog::None;
@@ -88,6 +88,16 @@ void fileDialogWindow(ui::Context& ctx, EditorState& s) {
         s.fileDialog = FileDialog::None;
 }
 
+// Carries out the confirmed (or harmless) leave action for main.cpp.
+void leave(EditorState& s) {
+    s.quitDialog = false;
+    switch (s.leaveAction) {
+    case LeaveAction::Quit: s.quitRequested = true; break;
+    case LeaveAction::New: s.newRequested = true; break;
+    case LeaveAction::Open: s.openRequested = s.leaveOpenPath; break;
+    }
+}
+
 void quitDialogWindow(ui::Context& ctx, EditorState& s) {
     if (!s.quitDialog)
         return;
@@ -96,17 +106,20 @@ void quitDialogWindow(ui::Context& ctx, EditorState& s) {
         ctx, "Unsaved changes", &s.quitDialog,
         [&](ui::Ui& ui) {
             ui.label("The project has unsaved changes.");
+            const bool quitting = s.leaveAction == LeaveAction::Quit;
             ui.horizontal([&](ui::Ui& row) {
-                if (row.button("Save and quit").clicked()) {
+                if (row.button(quitting ? "Save and quit" : "Save first").clicked()) {
                     if (s.loaded.file.empty()) {
                         s.fileDialog = FileDialog::SaveAs;  // no file yet: ask where first
                         s.quitDialog = false;
                     } else if (saveTo(s, s.loaded.file.string())) {
-                        s.quitRequested = true;
+                        askLeave(s, s.leaveAction, s.leaveOpenPath);
                     }
                 }
-                if (row.button("Quit without saving").clicked())
-                    s.quitRequested = true;
+                // The project stays dirty: if opening the other one fails, the edits are
+                // still there and still count as unsaved.
+                if (row.button(quitting ? "Quit without saving" : "Discard changes").clicked())
+                    leave(s);
                 if (row.button("Cancel").clicked())
                     s.quitDialog = false;
             });
@@ -175,11 +188,16 @@ bool saveTo(EditorState& s, const std::string& file) {
     return true;
 }
 
+void askLeave(EditorState& s, LeaveAction action, const std::string& openPath) {
+    s.leaveAction = action;
+    s.leaveOpenPath = openPath;
+    s.quitDialog = s.dirty;
+    if (!s.dirty)
+        leave(s);
+}
+
 void askQuit(EditorState& s) {
-    if (s.dirty)
-        s.quitDialog = true;
-    else
-        s.quitRequested = true;
+    askLeave(s, LeaveAction::Quit);
 }
 
 ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {

@@ -30,6 +30,9 @@ struct FrameStatus {
 
 enum class FileDialog { None, Open, SaveAs };
 
+// What replaces the open project, and so asks first when it has unsaved changes.
+enum class LeaveAction { Quit, New, Open };
+
 struct EditorState {
     core::LoadedProject loaded;  // file empty: a new project not saved yet
     render::RenderOptions options;
@@ -49,7 +52,10 @@ struct EditorState {
     // UI-only state.
     FileDialog fileDialog = FileDialog::None;
     std::string pathText;
+    // The "Unsaved changes" window, and what it is about (with the path for Open).
     bool quitDialog = false;
+    LeaveAction leaveAction = LeaveAction::Quit;
+    std::string leaveOpenPath;
     std::string message;  // last file operation's result, shown in the status bar
 };
 
@@ -61,7 +67,9 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& state);
 // what happened. Into another folder, the project's files (core::projectAssetPaths) are copied
 // along first.
 bool saveTo(EditorState& state, const std::string& file);
-// Asks to quit: straight away when nothing is unsaved, else through the confirmation window.
+// Asks to quit, start a new project or open another (`openPath`): straight away when nothing is
+// unsaved, else through the confirmation window.
+void askLeave(EditorState& state, LeaveAction action, const std::string& openPath = {});
 void askQuit(EditorState& state);
 
 // The side panel's sections (panels_scene.cpp).

@@ -125,8 +125,13 @@ TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
     editor.input.text = "projects/meadow";
     editor.frame();
     editor.click("Open");
-    EXPECT_EQ(editor.state.openRequested, "projects/meadow");
     EXPECT_EQ(editor.state.fileDialog, editor::FileDialog::None);
+    // The project has unsaved changes: nothing is replaced before the user says so.
+    EXPECT_TRUE(editor.state.openRequested.empty());
+    ASSERT_TRUE(editor.state.quitDialog);
+    editor.click("Discard changes");
+    EXPECT_EQ(editor.state.openRequested, "projects/meadow");
+    EXPECT_TRUE(editor.state.dirty) << "if the open fails, the edits still count as unsaved";
 }
 
 TEST(EditorPanels, QuitWithUnsavedChangesAsksFirst) {
