@@ -12,6 +12,7 @@
 #include "maps/map_image.h"
 #include "panels.h"
 #include "support/scratch_folder.h"
+#include "support/test_fonts.h"
 #include "support/test_paths.h"
 #include "ui/font.h"
 
@@ -20,19 +21,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const ui::FontAtlas& fonts() {
-    static const ui::FontAtlas atlas = [] {
-        std::string error;
-        auto loaded = ui::FontAtlas::load(ui::FontAtlas::defaultFontPath(), &error);
-        EXPECT_TRUE(loaded.has_value()) << error;
-        return std::move(*loaded);
-    }();
-    return atlas;
-}
-
 // The editor on a copy of the tiny growth project with a soil map, in `folder`.
 struct EditorDriver {
-    explicit EditorDriver(const fs::path& folder) : ctx(fonts()) {
+    explicit EditorDriver(const fs::path& folder) : ctx(testFonts()) {
         fs::copy_file(sourceDir() / "tests/data/projects/growth_tiny/project.json",
                       folder / "project.json");
         fs::create_directories(folder / "maps");

@@ -15,6 +15,7 @@
 #include "framebuffer.h"
 #include "gl_context_fixture.h"
 #include "support/image_compare.h"
+#include "support/test_fonts.h"
 #include "support/test_paths.h"
 #include "ui/color_edit.h"
 #include "ui/context.h"
@@ -35,19 +36,6 @@ constexpr double MAX_DIFFERING_SHARE = 0.005;
 constexpr double MAX_MEAN_ABS = 1.0;
 
 using UiPanelTest = GlTest;
-
-const ui::FontAtlas& fonts() {
-    static const ui::FontAtlas atlas = [] {
-        std::string error;
-        auto loaded = ui::FontAtlas::load(ui::FontAtlas::defaultFontPath(), &error);
-        if (!loaded) {
-            ADD_FAILURE() << error;
-            std::abort();
-        }
-        return std::move(*loaded);
-    }();
-    return atlas;
-}
 
 // A layer's settings as the editor's side panel shows them (fixed values, no input).
 struct PanelValues {
@@ -83,7 +71,7 @@ std::vector<ui::Mesh> buildPanel(ui::Context& ctx, PanelValues& values) {
         ui.progressBar(0.6f, "re-growing 60 %");
         ctx.endFrame();
     }
-    return ui::tessellate(ctx.output().shapes, fonts(), 1.0f);
+    return ui::tessellate(ctx.output().shapes, testFonts(), 1.0f);
 }
 
 gl::Rgba8Image render(const std::vector<ui::Mesh>& meshes) {
@@ -95,12 +83,12 @@ gl::Rgba8Image render(const std::vector<ui::Mesh>& meshes) {
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     if (renderer.ok())
-        renderer->draw(meshes, fonts(), {WIDTH, HEIGHT}, 1.0f);
+        renderer->draw(meshes, testFonts(), {WIDTH, HEIGHT}, 1.0f);
     return framebuffer.readPixels();
 }
 
 TEST_F(UiPanelTest, LayerPanelMatchesGolden) {
-    ui::Context ctx(fonts());
+    ui::Context ctx(testFonts());
     PanelValues values;
     const std::vector<ui::Mesh> meshes = buildPanel(ctx, values);
     ASSERT_FALSE(meshes.empty());
@@ -128,7 +116,7 @@ TEST_F(UiPanelTest, LayerPanelMatchesGolden) {
 // The metric sees a change a user would see: the same panel with the checkbox off and another
 // density fails it.
 TEST_F(UiPanelTest, ChangedValuesFailTheGolden) {
-    ui::Context ctx(fonts());
+    ui::Context ctx(testFonts());
     PanelValues values;
     values.growth = false;
     values.density = 400.0f;

@@ -27,6 +27,7 @@
 #include "framebuffer.h"
 #include "gl_context_fixture.h"
 #include "support/image_compare.h"
+#include "support/test_fonts.h"
 #include "support/test_paths.h"
 #include "ui/tessellator.h"
 #include "ui_renderer.h"
@@ -47,19 +48,6 @@ const ui::Rect TITLE_AT = ui::Rect::fromMinSize({12.0f, 10.0f}, {0.0f, 0.0f});
 const ui::Rect CLIP_PROBE = ui::Rect::fromMinSize({138.0f, 84.0f}, {10.0f, 8.0f});
 
 using UiRendererTest = GlTest;
-
-const ui::FontAtlas& font() {
-    static const ui::FontAtlas atlas = [] {
-        std::string error;
-        auto loaded = ui::FontAtlas::load(ui::FontAtlas::defaultFontPath(), &error);
-        if (!loaded) {
-            ADD_FAILURE() << error;
-            std::abort();
-        }
-        return std::move(*loaded);
-    }();
-    return atlas;
-}
 
 // The panel every case draws: what widgets paint most (rounded frames, text in two sizes, a
 // circle, a polyline, a checkbox with its tick), plus a shape clipped to a small rect.
@@ -95,7 +83,7 @@ std::vector<ui::ClippedShape> panelShapes(ui::Vec2 shift = ui::Vec2(0.0f)) {
 }
 
 gl::Rgba8Image render(const std::vector<ui::ClippedShape>& shapes, gl::UiRenderer& renderer,
-                      const ui::FontAtlas& atlas = font(), float ppp = 1.0f) {
+                      const ui::FontAtlas& atlas = testFonts(), float ppp = 1.0f) {
     const int width = int(std::lround(float(WIDTH) * ppp));
     const int height = int(std::lround(float(HEIGHT) * ppp));
     gl::Framebuffer target(width, height, 1);
@@ -175,7 +163,7 @@ TEST_F(UiRendererTest, RegressionIsCaught) {
 TEST_F(UiRendererTest, TextPixelsAppearWhereTextWasPlaced) {
     gl::UiRenderer renderer = makeRenderer();
     const gl::Rgba8Image image = render(panelShapes(), renderer);
-    const ui::Vec2 size = font().textSize("Grass UI", 16.0f);
+    const ui::Vec2 size = testFonts().textSize("Grass UI", 16.0f);
     const ui::Rect title = ui::Rect::fromMinSize(TITLE_AT.min, size);
     const int inside = brightPixels(image, title);
     // Light glyph strokes cover roughly a tenth to a quarter of a line's box.
@@ -188,7 +176,7 @@ TEST_F(UiRendererTest, TextPixelsAppearWhereTextWasPlaced) {
         brightPixels(image, ui::Rect::fromMinSize({title.max.x + 2.0f, 10.0f}, {10.0f, size.y})),
         0);
     const ui::Rect small =
-        ui::Rect::fromMinSize({12.0f, 32.0f}, font().textSize("density 120/m\xC2\xB2", 11.0f));
+        ui::Rect::fromMinSize({12.0f, 32.0f}, testFonts().textSize("density 120/m\xC2\xB2", 11.0f));
     EXPECT_GT(brightPixels(image, small), 0);
 }
 

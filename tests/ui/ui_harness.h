@@ -10,25 +10,12 @@
 
 #include "ui/context.h"
 #include "ui/font.h"
+#include "support/test_fonts.h"
 #include "ui/ui.h"
 
 namespace grass::ui::test {
 
-// The real DejaVu Sans (fonts-dejavu-core), loaded once per test process: layout depends on
-// true text metrics.
-inline const FontAtlas& testFonts() {
-    static std::optional<FontAtlas> fonts = [] {
-        std::string error;
-        std::optional<FontAtlas> f = FontAtlas::load(FontAtlas::defaultFontPath(), &error);
-        if (!f) {
-            std::fprintf(stderr, "UI tests need %s: %s\n",
-                         FontAtlas::defaultFontPath().string().c_str(), error.c_str());
-            std::abort();
-        }
-        return f;
-    }();
-    return *fonts;
-}
+using grass::test::testFonts;
 
 class UiHarness {
 public:
