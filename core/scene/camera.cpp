@@ -59,6 +59,41 @@ OrbitCamera OrbitCamera::lookAt(glm::vec3 eye, glm::vec3 target, float fovYRad) 
     return camera;
 }
 
+namespace {
+// Same clamp as projection(): a zero-height viewport must not divide by zero.
+float aspectOf(glm::vec2 viewportSizePixels) {
+    return std::max(viewportSizePixels.x / std::max(viewportSizePixels.y, 1e-6f), 1e-3f);
+}
+}  // namespace
+
+Ray cameraRay(const OrbitCamera& camera, glm::vec2 pixel, glm::vec2 viewportSizePixels) {
+    const glm::vec2 size = glm::max(viewportSizePixels, glm::vec2(1e-6f));
+    const float ndcX = 2.0f * pixel.x / size.x - 1.0f;
+    const float ndcY = 1.0f - 2.0f * pixel.y / size.y;
+    // The camera basis is the view matrix's rows; building the direction from it (rather than
+    // unprojecting through the inverse view-projection) keeps full precision far from the eye.
+    const glm::mat4 v = camera.view();
+    const glm::vec3 right(v[0][0], v[1][0], v[2][0]);
+    const glm::vec3 up(v[0][1], v[1][1], v[2][1]);
+    const glm::vec3 back(v[0][2], v[1][2], v[2][2]);
+    const float tanHalfFov = std::tan(0.5f * camera.fovYRad);
+    const glm::vec3 dir =
+        -back + (ndcX * tanHalfFov * aspectOf(size)) * right + (ndcY * tanHalfFov) * up;
+    return Ray{camera.position(), glm::normalize(dir)};
+}
+
+std::optional<glm::vec2> projectToPixel(const OrbitCamera& camera, glm::vec3 posWorld,
+                                        glm::vec2 viewportSizePixels) {
+    const glm::vec2 size = glm::max(viewportSizePixels, glm::vec2(1e-6f));
+    const glm::vec4 clip =
+        camera.projection(aspectOf(size)) * camera.view() * glm::vec4(posWorld, 1.0f);
+    // clip.w is the distance in front of the eye; at or behind the eye plane there is no image.
+    if (!(clip.w > 1e-6f * camera.distance))
+        return std::nullopt;
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return glm::vec2(0.5f * (ndc.x + 1.0f) * size.x, 0.5f * (1.0f - ndc.y) * size.y);
+}
+
 OrbitCamera frameBounds(const Bounds& bounds, float fovYRad, glm::vec3 fromDirection) {
     OrbitCamera camera = frameBounds(bounds, fovYRad);
     const float length = glm::length(fromDirection);

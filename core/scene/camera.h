@@ -3,8 +3,11 @@
 // metres, angles in radians; projection to OpenGL clip space (z in [−1, 1]).
 #pragma once
 
+#include <optional>
+
 #include <glm/glm.hpp>
 
+#include "mesh/ray.h"
 #include "mesh/surface_mesh.h"
 
 namespace grass::core {
@@ -30,6 +33,20 @@ struct OrbitCamera {
 
     static OrbitCamera lookAt(glm::vec3 eye, glm::vec3 target, float fovYRad);
 };
+
+// Screen <-> world for picking and gizmos. Pixel coordinates: origin at the top-left corner of
+// the viewport, x right, y down, in the same units as viewportSizePixels (GLFW cursor positions
+// and window sizes, or framebuffer pixels: the caller keeps them consistent). The centre of the
+// top-left pixel is (0.5, 0.5): adding that half pixel is the caller's business. The aspect is
+// width / height and the projection is exactly OrbitCamera::projection's.
+//
+// The ray from the eye (camera.position()) through `pixel`; direction normalized. A ray starts
+// at the eye rather than on the near plane, so picking also finds what is nearer than nearPlane.
+Ray cameraRay(const OrbitCamera& camera, glm::vec2 pixel, glm::vec2 viewportSizePixels);
+// Where `posWorld` appears on screen, in the convention above (it may lie outside the
+// viewport); nullopt when the point is behind the camera or in the eye's plane.
+std::optional<glm::vec2> projectToPixel(const OrbitCamera& camera, glm::vec3 posWorld,
+                                        glm::vec2 viewportSizePixels);
 
 // A camera that sees the whole box from a 3/4 view above, near/far fitted to it.
 OrbitCamera frameBounds(const Bounds& bounds, float fovYRad);
