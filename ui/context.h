@@ -42,7 +42,8 @@ enum class Key {
     V,
     X,
     Z,
-    Y
+    Y,
+    S
 };
 
 struct Modifiers {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 #include "util/assert.h"
 
@@ -114,7 +115,8 @@ void PaintStroke::dab(glm::vec3 centre) {
         const std::uint32_t texel = mDabTexels[k];
         const float v = texels[texel];
         const float distance = glm::length(mSurface->position(texel) - centre);
-        const float w = mSettings.strength * brushFalloff(mSettings.falloff, distance / radius);
+        const float w =
+            mSettings.strength * mPressure * brushFalloff(mSettings.falloff, distance / radius);
         mNewValues[k] = v;
         if (!(w > 0.0f))
             continue;
@@ -146,7 +148,23 @@ void PaintStroke::dab(glm::vec3 centre) {
             mBefore.push_back(texels[texel]);
         }
         texels[texel] = mNewValues[k];
+        const glm::vec3 p = mSurface->position(texel);
+        const float size = mSurface->texelSizeM(texel);
+        const float pad = BOUNDS_PAD_TEXELS * size;
+        if (!mChanged)
+            mChanged = ChangedRegion{Bounds{p - pad, p + pad}, size};
+        mChanged->bounds.min = glm::min(mChanged->bounds.min, p - pad);
+        mChanged->bounds.max = glm::max(mChanged->bounds.max, p + pad);
+        mChanged->texelMarginM = std::max(mChanged->texelMarginM, size);
     }
+}
+
+void PaintStroke::setPressure(float pressure) {
+    mPressure = pressure >= 0.0f ? std::min(pressure, 1.0f) : 0.0f;  // NaN fails >= 0
+}
+
+std::optional<PaintStroke::ChangedRegion> PaintStroke::takeChangedRegion() {
+    return std::exchange(mChanged, std::nullopt);
 }
 
 // Mean of (neighbour − v), not of the values: on a constant map it is exactly 0, so Smooth leaves

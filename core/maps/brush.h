@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -85,6 +86,19 @@ public:
     std::size_t dabCount() const { return mDabs; }
     PaintRecord record() const;
 
+    // Pen pressure in [0, 1] (NaN gives 0) scales the strength of the dabs that follow, as a
+    // tablet's pen does; 1 (the default) paints at the settings' strength.
+    void setPressure(float pressure);
+
+    // Where the map changed since the last call (padded like PaintRecord::touchedBounds) and the
+    // largest changed texel's size on the surface, so a live editor can re-grow just that much
+    // after every mouse move; nullopt when nothing changed since.
+    struct ChangedRegion {
+        Bounds bounds;
+        float texelMarginM = 0.0f;
+    };
+    std::optional<ChangedRegion> takeChangedRegion();
+
 private:
     void dab(glm::vec3 centre);
     float meanNeighbourDifference(std::uint32_t texel);
@@ -96,6 +110,8 @@ private:
     glm::vec3 mLastHit{0.0f};
     float mToNextDabM = 0.0f;
     std::size_t mDabs = 0;
+    float mPressure = 1.0f;
+    std::optional<ChangedRegion> mChanged;
     // Per texel, its entry in mTouched / mBefore (NO_ENTRY if untouched); allocated on the
     // first change so strokes that change nothing cost nothing.
     std::vector<std::uint32_t> mEntry;

@@ -3,6 +3,7 @@
 #include "project/project.h"
 
 #include <algorithm>
+#include <cctype>
 #include <system_error>
 
 #include "project/json_reader.h"
@@ -92,6 +93,13 @@ Result<void> saveProject(const Project& project, const fs::path& file) {
                              "cannot create the folder: " + ec.message());
     }
     return writeFileAtomic(file, text);
+}
+
+std::string defaultMapFile(const std::string& layerName, std::string_view mapName) {
+    std::string safe;
+    for (const char c : layerName)
+        safe += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+    return "maps/" + safe + "-" + std::string(mapName) + ".png";
 }
 
 std::vector<std::string> projectAssetPaths(const Project& project) {

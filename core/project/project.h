@@ -225,6 +225,10 @@ Result<void> saveProject(const Project& project, const std::filesystem::path& fi
 // folder must bring along.
 std::vector<std::string> projectAssetPaths(const Project& project);
 
+// Where a layer's painted map goes when the layer names none yet: maps/<layer>-<map>.png, the
+// layer's name kept to characters safe in any file system (never forming "..").
+std::string defaultMapFile(const std::string& layerName, std::string_view mapName);
+
 // Resolves an asset path relative to the project folder; refuses absolute paths and paths that
 // leave the folder (".."), naming the JSON field.
 Result<std::filesystem::path> resolveAssetPath(const std::filesystem::path& folder,

@@ -27,6 +27,7 @@ std::optional<ui::Key> uiKeyFor(int glfwKey) {
     case GLFW_KEY_X: return ui::Key::X;
     case GLFW_KEY_Z: return ui::Key::Z;
     case GLFW_KEY_Y: return ui::Key::Y;
+    case GLFW_KEY_S: return ui::Key::S;
     default: return std::nullopt;
     }
 }

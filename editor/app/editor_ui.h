@@ -34,6 +34,8 @@ public:
     static Result<std::unique_ptr<EditorUi>> create();
 
     ui::Context& context() { return *mContext; }
+    // Pixels per point of the frame begun last (the window's content scale).
+    float pixelsPerPoint() const { return mPixelsPerPoint; }
     // Feeds this frame's input to the context. The clipboard is read from the OS only when a
     // paste key arrives (reading it is an X round trip).
     void beginFrame(Window& window, const InputState& input, double timeS);

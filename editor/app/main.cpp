@@ -10,11 +10,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 
 #include <epoxy/gl.h>
 
+#include "edit_actions.h"
 #include "editor_ui.h"
 #include "framebuffer.h"
 #include "headless_context.h"
@@ -24,7 +26,9 @@
 #include "scene_renderer.h"
 #include "util/arg_parser.h"
 #include "util/image_file.h"
+#include "input_script.h"
 #include "panels.h"
+#include "viewport_tools.h"
 #include "window.h"
 
 namespace {
@@ -84,24 +88,23 @@ void applyInput(editor::InputState input, bool drag, bool wheel, int viewportHei
 }
 
 // Physics stepping the renderer's blade buffers on the GPU in fixed steps of the project's
-// step_s, catching up with wall time but never more than MAX_STEPS_PER_FRAME per frame (a slow
-// device runs the simulation slower than real time instead of falling further behind).
+// step_s, following the timeline's time but never more than MAX_STEPS_PER_FRAME per frame (a
+// slow device runs the simulation slower than real time instead of falling further behind).
 struct LivePhysics {
     static constexpr int MAX_STEPS_PER_FRAME = 4;
     core::ScenePhysics scene;
     render::ScenePhysicsGpu gpu;
-    double owedS = 0.0;
     std::size_t steps = 0;
-    std::chrono::steady_clock::time_point lastFrame = std::chrono::steady_clock::now();
 
-    void advance(double elapsedS) {
+    double timeS() const { return static_cast<double>(steps) * scene.params.dtS; }
+    // Steps towards `targetS`; returns the time reached.
+    double advanceTo(double targetS) {
         const double dtS = scene.params.dtS;
-        owedS = std::min(owedS + elapsedS, dtS * MAX_STEPS_PER_FRAME);
-        while (owedS >= dtS * (1.0 - 1e-6)) {
-            gpu.step(scene, static_cast<float>(static_cast<double>(steps) * dtS));
+        for (int i = 0; i < MAX_STEPS_PER_FRAME && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++i) {
+            gpu.step(scene, static_cast<float>(timeS()));
             ++steps;
-            owedS -= dtS;
         }
+        return timeS();
     }
 };
 
@@ -110,18 +113,25 @@ struct LivePhysics {
 // before the renderer, the renderer (which points at the scene) before the scene.
 struct Live {
     std::unique_ptr<core::Scene> scene;
+    std::unique_ptr<editor::SceneTools> tools;  // picks and paints `scene`
     std::unique_ptr<render::SceneRenderer> renderer;
     std::optional<LivePhysics> physics;
 };
 
-Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics) {
+// `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
+Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
+                       const std::function<Result<void>(core::Scene&)>& prepare = {}) {
     auto scene = core::buildScene(loaded);
     if (!scene)
         return scene.error();
     for (const auto& note : scene->notes)
         std::fprintf(stderr, "note: %s\n", note.c_str());
+    if (prepare)
+        if (auto prepared = prepare(*scene); !prepared)
+            return prepared.error();
     Live live;
     live.scene = std::make_unique<core::Scene>(std::move(*scene));
+    live.tools = std::make_unique<editor::SceneTools>(*live.scene, loaded.project.lighting);
     auto renderer = render::SceneRenderer::create(*live.scene);
     if (!renderer)
         return renderer.error();
@@ -138,6 +148,22 @@ Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics) {
         live.physics.emplace(LivePhysics{std::move(*built), std::move(*gpu)});
     }
     return live;
+}
+
+// Puts every layer's blades back at rest on the GPU and restarts the simulation from there
+// (keeping its step count).
+Result<void> resetPhysics(Live& live) {
+    for (std::size_t layer = 0; layer < live.scene->layers.size(); ++layer) {
+        core::RegrowReport all;
+        for (std::uint32_t p = 0; p < live.scene->layers[layer].patched.patches.size(); ++p)
+            all.patches.push_back(p);
+        live.renderer->uploadRegrown(layer, all);
+    }
+    auto gpu = render::ScenePhysicsGpu::createOn(*live.scene, live.renderer->bladeBuffers());
+    if (!gpu)
+        return gpu.error();
+    live.physics->gpu = std::move(*gpu);
+    return {};
 }
 
 // The viewport rect (points, y down) in GL pixels (y up), at least one pixel.
@@ -176,6 +202,11 @@ int main(int argc, char** argv) {
     parser.integer("--frames",
                    "frames to draw before the screenshot (with --screenshot: default 3)", &frames,
                    1, 100000);
+    std::string scriptFile;
+    parser.text("--script", "FILE",
+                "replay recorded input (pointer, keys, waits, screenshots; see "
+                "editor/app/input_script.h), one step of physics per frame, then exit",
+                &scriptFile);
     parser.flag("--no-physics",
                 "show the field at rest (by default gravity, wind and colliders run live on the "
                 "GPU, one physics step of the project's step_s per elapsed step, at most 4 per "
@@ -197,6 +228,16 @@ int main(int argc, char** argv) {
         if (auto writable = checkImageWritable(screenshot); !writable)
             return fail(writable.error().str(), 2);
 
+    std::vector<editor::ScriptFrame> script;
+    if (!scriptFile.empty()) {
+        auto parsed = editor::loadInputScript(scriptFile);
+        if (!parsed)
+            return fail("--script: " + parsed.error().str(), 2);
+        script = std::move(*parsed);
+    }
+    // Screenshots and scripts step the simulation once per frame, whatever the machine's speed.
+    const bool replay = !screenshot.empty() || !scriptFile.empty();
+
     auto loaded = core::loadProject(projectPath);
     if (!loaded)
         return fail(loaded.error().str());
@@ -216,7 +257,18 @@ int main(int argc, char** argv) {
         return fail(built.error().str());
     Live live = std::move(*built);
     state.scene = live.scene.get();
+    state.tools = live.tools.get();
     state.options = render::renderOptionsFor(project, gl::isSoftwareRenderer());
+    editor::resetHistory(state);
+    const auto resetTimeline = [&] {
+        state.timeline = core::timelineFor(state.loaded.project);
+        // A minute at least, so an unkeyed scene does not restart its sway every few seconds.
+        state.timeline.setRange(state.timeline.startS(),
+                                std::max(state.timeline.endS(), state.timeline.startS() + 60.0));
+        state.timeline.setLoop(true);
+        state.timeline.play();
+    };
+    resetTimeline();
     std::fprintf(stderr, "grass-editor: %s, %zu blades, geometry %s\n",
                  gl::rendererDescription().c_str(), live.scene->totalBlades(),
                  render::geometryPathLabel(state.options.geometry));
@@ -228,39 +280,58 @@ int main(int argc, char** argv) {
         ui = std::move(*created);
     }
 
-    // Replaces the live field (New, Open, re-grow); on failure the old one stays.
-    const auto rebuild = [&](bool resetCamera) {
-        auto next = buildLive(state.loaded, !noPhysics);
+    // Replaces the live field (New, Open, re-grow); on failure the old one stays. A re-grow of
+    // the same project keeps the maps painted since the last save.
+    const auto rebuild = [&](bool newProject) {
+        std::function<Result<void>(core::Scene&)> carry;
+        if (!newProject)
+            carry = [&](core::Scene& next) {
+                return editor::carryPaintedMaps(state, *live.scene, next);
+            };
+        auto next = buildLive(state.loaded, !noPhysics, carry);
         if (!next) {
             state.message = "cannot grow the field: " + next.error().str();
             return;
         }
+        const std::size_t steps = live.physics ? live.physics->steps : 0;
         live = std::move(*next);
         state.scene = live.scene.get();
-        if (resetCamera) {
+        state.tools = live.tools.get();
+        state.regrown.clear();
+        if (live.physics)
+            live.physics->steps = steps;  // the field restarts from rest, the clock goes on
+        if (newProject) {
             if (auto cam = render::projectCamera(state.loaded.project, ""))
                 *camera = *cam;
             state.options = render::renderOptionsFor(state.loaded.project,
                                                      gl::isSoftwareRenderer());
-            (*window)->setTitle("grass — " + state.loaded.project.name);
+            editor::resetHistory(state);
+            resetTimeline();
         }
     };
 
     std::unique_ptr<gl::Framebuffer> target;
     int frame = 0;
     bool cameraDrag = false;  // a drag that began in the viewport stays the camera's
+    bool toolDrag = false;    // a drag that began on a tool (brush, gizmo) stays the tool's
+    std::string shownTitle;
     const auto startTime = std::chrono::steady_clock::now();
     auto lastStatus = startTime;
     auto lastFrameEnd = startTime;
     double fps = 0.0;
     while (true) {
         if ((*window)->shouldClose()) {
-            if (!ui || !state.dirty || !screenshot.empty())
+            if (!ui || !state.dirty || replay)
                 break;
             (*window)->cancelClose();  // ask first
             editor::askQuit(state);
         }
         editor::InputState input = (*window)->pollInput();
+        if (!scriptFile.empty()) {
+            if (static_cast<std::size_t>(frame) >= script.size())
+                break;
+            input = script[static_cast<std::size_t>(frame)].input;
+        }
         int width = 0, height = 0;
         (*window)->framebufferSize(&width, &height);
         if (width <= 0 || height <= 0)
@@ -270,10 +341,17 @@ int main(int argc, char** argv) {
         const auto uiStart = std::chrono::steady_clock::now();
         PixelRect view{0, 0, width, height};
         bool uiPointer = false, uiKeyboard = false;
+        editor::ViewportPointer pointer;
         if (ui) {
             ui->beginFrame(**window, input,
                            std::chrono::duration<double>(uiStart - startTime).count());
             const ui::Rect central = editor::buildPanels(ui->context(), state);
+            const float ppp = ui->pixelsPerPoint();
+            const ui::Vec2 at = ui->context().pointerPos();
+            pointer.pixel = glm::vec2(at.x - central.min.x, at.y - central.min.y) * ppp;
+            pointer.viewportSize = glm::vec2(central.width(), central.height()) * ppp;
+            pointer.inside = input.cursorInside && central.contains(at);
+            editor::drawViewportOverlay(ui->context(), central, ppp, state, *camera, pointer);
             const ui::Output& out = ui->endFrame(**window);
             uiPointer = out.wantsPointer;
             uiKeyboard = out.wantsKeyboard;
@@ -283,21 +361,58 @@ int main(int argc, char** argv) {
                                                           uiStart)
                     .count();
         }
+        // The viewport's tools: a press on the mesh (brush) or on an object (gizmo) makes the
+        // drag theirs; the camera orbits with the right button meanwhile.
+        bool toolUsed = false;
+        if (ui) {
+            pointer.inside = pointer.inside && !uiPointer && !cameraDrag;
+            pointer.down = input.leftDown;
+            pointer.pressed = input.leftPressed;
+            pointer.released = !input.leftDown;
+            pointer.ctrl = input.modifiers.ctrl;
+            pointer.shift = input.modifiers.shift;
+            pointer.pressure = input.pressure;
+            toolUsed = editor::runViewportTool(state, *camera, pointer);
+            if (toolUsed && pointer.pressed)
+                toolDrag = true;
+            if (!input.leftDown)
+                toolDrag = false;
+            if (toolDrag || state.toolDragActive)
+                input.leftDown = false;
+            if (state.tool != editor::ViewportTool::Camera && input.rightDown)
+                input.leftDown = true;
+        }
         const bool anyDown = input.leftDown || input.middleDown || input.rightDown;
         if (!ui || !anyDown)
-            cameraDrag = anyDown;
-        else if (!cameraDrag && !uiPointer && ui->context().activeId().value == 0)
+            cameraDrag = anyDown && !toolUsed;
+        else if (!cameraDrag && !uiPointer && !toolDrag && ui->context().activeId().value == 0)
             cameraDrag = true;
         applyInput(input, cameraDrag, !uiPointer, view.h, *live.scene, *camera);
         if (!uiKeyboard) {
             if (const std::string changed = applyRenderKeys(input, state.options);
                 !changed.empty())
                 std::fprintf(stderr, "grass-editor: %s\n", changed.c_str());
+            editor::applyToolKeys(state, input.typed);
+            for (const ui::KeyEvent& key : input.keys) {
+                if (!key.modifiers.ctrl)
+                    continue;
+                if (key.key == ui::Key::Z)
+                    key.modifiers.shift ? editor::redo(state) : editor::undo(state);
+                else if (key.key == ui::Key::Y)
+                    editor::redo(state);
+                else if (key.key == ui::Key::S && ui) {
+                    if (state.loaded.file.empty())
+                        state.fileDialog = editor::FileDialog::SaveAs;
+                    else
+                        editor::saveTo(state, state.loaded.file.string());
+                }
+            }
             // With the UI, Escape belongs to it (closing popups and text edits): one press
             // must not also quit. File → Quit and the window's close button remain.
             if (input.escapePressed && !ui)
                 (*window)->requestClose();
         }
+        editor::recordProjectEdit(state, ui && ui->context().activeId().value != 0);
 
         // What the panels asked for.
         if (state.quitRequested)
@@ -323,26 +438,52 @@ int main(int argc, char** argv) {
             }
         }
         // Re-grow once the edit has ended, not on every frame of a drag.
-        if (state.rebuildPending && (!ui || ui->context().activeId().value == 0)) {
+        if (state.rebuildPending && !state.toolDragActive &&
+            (!ui || ui->context().activeId().value == 0)) {
             state.rebuildPending = false;
             rebuild(false);
+        }
+        // Patches the brush or an undo re-grew: only those go up to the GPU.
+        for (const auto& [layer, report] : state.regrown) {
+            live.renderer->uploadRegrown(layer, report);
+            if (live.physics)
+                live.physics->gpu.uploadRegrown(layer, *live.scene, report.patches);
+        }
+        state.regrown.clear();
+        const std::string title = "grass — " + state.loaded.project.name +
+                                  (state.dirty ? " *" : "");
+        if (title != shownTitle) {
+            (*window)->setTitle(title);
+            shownTitle = title;
         }
 
         if (!target || target->width() != view.w || target->height() != view.h)
             target = std::make_unique<gl::Framebuffer>(view.w, view.h,
                                                        state.loaded.project.render.msaaSamples);
         const auto start = std::chrono::steady_clock::now();
-        if (live.physics) {
-            // Screenshots step exactly once per frame, so they do not depend on machine speed.
-            LivePhysics& physics = *live.physics;
+        {
+            // Screenshots advance exactly one step per frame, so they do not depend on
+            // machine speed.
             const double elapsedS =
-                screenshot.empty()
-                    ? std::chrono::duration<double>(start - physics.lastFrame).count()
-                    : physics.scene.params.dtS;
-            physics.advance(elapsedS);
-            physics.lastFrame = start;
-            state.options.timeS = static_cast<float>(static_cast<double>(physics.steps) *
-                                                     physics.scene.params.dtS);
+                !replay ? std::chrono::duration<double>(start - lastFrameEnd).count()
+                        : state.timeline.stepS();
+            const core::TimeUpdate moved = state.timeline.advance(elapsedS);
+            const bool jumped = state.timeJump.needsReset() || moved.needsReset() ||
+                                state.timeJump.change == core::TimeChange::JumpForward;
+            state.timeJump = {};
+            if (live.physics) {
+                LivePhysics& physics = *live.physics;
+                if (jumped) {
+                    // The field restarts from rest at the new time (re-simulating from the
+                    // start would stall the scrub).
+                    if (auto reset = resetPhysics(live); !reset)
+                        state.message = "cannot reset the simulation: " + reset.error().str();
+                    physics.steps = static_cast<std::size_t>(
+                        std::floor(state.timeline.timeS() / physics.scene.params.dtS));
+                }
+                physics.advanceTo(state.timeline.timeS());
+            }
+            state.options.timeS = static_cast<float>(state.timeline.timeS());
         }
         // Statistics cost atomics and a wait when read: only the frame before a status update
         // collects them, and they are read once, after it.
@@ -363,6 +504,14 @@ int main(int argc, char** argv) {
             ui->draw(width, height);
         } else {
             target->blitTo(0, width, height);
+        }
+        if (!scriptFile.empty() && !script[static_cast<std::size_t>(frame)].screenshot.empty()) {
+            const std::string& shot = script[static_cast<std::size_t>(frame)].screenshot;
+            const gl::Rgba8Image shown = gl::readFramebuffer(0, width, height);
+            if (auto written = writeRgba8Image(shot, shown.width, shown.height, shown.pixels);
+                !written)
+                return fail(written.error().str());
+            std::printf("wrote %s (%dx%d) at frame %d\n", shot.c_str(), width, height, frame + 1);
         }
         ++frame;
         if (!screenshot.empty() && frame >= frames) {

@@ -1,5 +1,7 @@
 #include "panels.h"
 
+#include "edit_actions.h"
+
 #include <cstdio>
 #include <filesystem>
 
@@ -48,6 +50,19 @@ void fileMenu(ui::Ui& bar, EditorState& s) {
         m.separator();
         if (ui::menuItem(m, "Quit"))
             askQuit(s);
+    });
+}
+
+void editMenu(ui::Ui& bar, EditorState& s) {
+    ui::menu(bar, "Edit", [&](ui::Ui& m) {
+        const core::Edit* next = s.history.nextUndo();
+        if (ui::menuItem(m, next ? "Undo " + next->label + "   Ctrl+Z" : std::string("Undo")) && next)
+            undo(s);
+        const core::Edit* again = s.history.nextRedo();
+        if (ui::menuItem(m, again ? "Redo " + again->label + "   Ctrl+Shift+Z"
+                                  : std::string("Redo")) &&
+            again)
+            redo(s);
     });
 }
 
@@ -177,6 +192,10 @@ bool saveTo(EditorState& s, const std::string& file) {
             }
         }
     }
+    if (auto maps = savePaintedMaps(s, folder); !maps) {
+        s.message = "not saved: " + maps.error().str();
+        return false;
+    }
     if (auto saved = core::saveProject(s.loaded.project, path); !saved) {
         s.message = "not saved: " + saved.error().str();
         return false;
@@ -204,6 +223,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
     ui::topBar(ctx, "menu", [&](ui::Ui& top) {
         ui::menuBar(top, [&](ui::Ui& bar) {
             fileMenu(bar, s);
+            editMenu(bar, s);
             const std::string title =
                 s.loaded.project.name + (s.dirty ? " *" : "") +
                 (s.loaded.file.empty() ? "  (not saved)" : "  — " + s.loaded.file.string());
@@ -223,6 +243,8 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
                 }
             });
             ui.separator();
+            toolSection(ui, s);
+            timelineSection(ui, s);
             layerSection(ui, s);
             windSection(ui, s);
             colliderSection(ui, s);

@@ -10,7 +10,16 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
+#include <set>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include "edit/gizmo_drag.h"
+#include "edit/history.h"
+#include "edit/timeline.h"
+#include "viewport_tools.h"
 
 #include "project/project.h"
 #include "scene/scene.h"
@@ -41,6 +50,30 @@ struct EditorState {
 
     // Set whenever a panel changes a value; cleared by a save or a load.
     bool dirty = false;
+    // Undo and redo. `committed` is the project as of the last history step: once no widget or
+    // gizmo drag is active, a project that differs from it becomes one step (so a drag is one
+    // step, not one per frame).
+    core::EditHistory history;
+    core::Project committed;
+    // Maps painted since the last save, by layer; saving writes them (edit_actions.h).
+    std::set<std::pair<std::size_t, core::LayerMap>> paintedMaps;
+
+    // The viewport's tools and what they work on (main.cpp points `tools` at the live scene's).
+    ViewportTool tool = ViewportTool::Camera;
+    PaintToolSettings paint;
+    PlaceToolSettings place;
+    SceneTools* tools = nullptr;
+    // A stroke or a gizmo drag is under way (no history step until it ends).
+    bool toolDragActive = false;
+    std::optional<core::GizmoDrag> gizmoDrag;
+    core::Project gizmoStart;  // the project when the drag began
+    // Patches re-grown by painting or undo, for main.cpp to upload to the renderer.
+    std::vector<std::pair<std::size_t, core::RegrowReport>> regrown;
+    // The animation time of wind and colliders: play, pause, step, loop, speed.
+    core::Timeline timeline;
+    // The last scrub, step or play of the timeline panel, for main.cpp (a jump back re-runs the
+    // simulation from rest).
+    core::TimeUpdate timeJump;
     // The scene must be re-grown from `loaded` once no widget is being dragged.
     bool rebuildPending = false;
 
@@ -71,6 +104,10 @@ bool saveTo(EditorState& state, const std::string& file);
 // unsaved, else through the confirmation window.
 void askLeave(EditorState& state, LeaveAction action, const std::string& openPath = {});
 void askQuit(EditorState& state);
+
+// The viewport tools' settings (brush, gizmo) and the timeline (panels_tools.cpp).
+void toolSection(ui::Ui& ui, EditorState& state);
+void timelineSection(ui::Ui& ui, EditorState& state);
 
 // The side panel's sections (panels_scene.cpp).
 void layerSection(ui::Ui& ui, EditorState& state);

@@ -22,6 +22,8 @@ struct InputState {
     double scrollX = 0.0;  // horizontal wheel steps, for the UI only
     bool leftDown = false, middleDown = false, rightDown = false;
     bool shiftDown = false;
+    // Pen pressure in [0, 1]: 1 for a mouse (GLFW reports no tablet pressure); scripts set it.
+    float pressure = 1.0f;
     bool cursorInside = true;
     // A button went down this frame (the UI must see a press even if it was released again).
     bool leftPressed = false;

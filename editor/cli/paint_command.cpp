@@ -88,15 +88,6 @@ std::string boundsText(const core::Bounds& bounds) {
     return text;
 }
 
-// Layer names may hold anything; the default file name keeps to characters safe in any file
-// system and never forms "..".
-std::string fileSafe(const std::string& name) {
-    std::string out;
-    for (const char c : name)
-        out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
-    return out;
-}
-
 // The formats saveMapImage writes at full precision. Checked before any work, so a typo in
 // --file fails at once instead of after the scene is grown.
 bool isMapFormat(const fs::path& file) {
@@ -368,7 +359,7 @@ int runPaint(const std::vector<std::string>& argv) {
     const std::string targetText = !args.file.empty() ? args.file
                                    : !mapField.empty()
                                        ? mapField
-                                       : "maps/" + fileSafe(layer.name) + "-" + args.map + ".png";
+                                       : core::defaultMapFile(layer.name, args.map);
     auto target = core::resolveAssetPath(loaded->folder, targetText, "--file");
     if (!target) {
         printError("paint", target.error().str());

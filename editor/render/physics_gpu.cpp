@@ -57,6 +57,19 @@ void PhysicsGpu::reset(std::span<const core::Blade> blades, std::span<const glm:
     upload(mEta, std::vector<float>(blades.size(), 0.0f), "physics eta");
 }
 
+void PhysicsGpu::resetRange(std::size_t first, std::span<const core::Blade> blades) {
+    GRASS_ASSERT(first + blades.size() <= mBladeCount);
+    if (blades.empty())
+        return;
+    std::vector<glm::vec4> tips;
+    tips.reserve(blades.size());
+    for (const glm::vec3 tip : core::restTipsAsGrown(blades))
+        tips.emplace_back(tip, 0.0f);
+    mRestTips.update(std::as_bytes(std::span<const glm::vec4>(tips)), first * sizeof(glm::vec4));
+    const std::vector<float> eta(blades.size(), 0.0f);
+    mEta.update(std::as_bytes(std::span<const float>(eta)), first * sizeof(float));
+}
+
 void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::PhysicsParams& params,
                       const std::vector<core::WindSource>& wind,
                       const std::vector<core::SphereCollider>& colliders, float timeS) {

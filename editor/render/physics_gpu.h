@@ -44,6 +44,10 @@ public:
     void reset(std::span<const core::Blade> blades);
     // The same with rest tips given (a grown field: core::restTipsAsGrown).
     void reset(std::span<const core::Blade> blades, std::span<const glm::vec3> restTips);
+    // Blades [first, first + count) were re-grown (a brush stroke): their rest tips become the
+    // new blades' own (restTipsAsGrown) and η 0. Preconditions: the range is inside the reset
+    // count.
+    void resetRange(std::size_t first, std::span<const core::Blade> blades);
     // One step of params.dtS from timeS for bladeCount blades of bladeBuffer (the count given to
     // reset). Ends with a barrier, so later draws and buffer reads see the new blades.
     void step(GLuint bladeBuffer, std::size_t bladeCount, const core::PhysicsParams& params,

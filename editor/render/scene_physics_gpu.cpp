@@ -36,6 +36,18 @@ Result<ScenePhysicsGpu> ScenePhysicsGpu::create(const core::Scene& scene) {
     return out;
 }
 
+void ScenePhysicsGpu::uploadRegrown(std::size_t layer, const core::Scene& scene,
+                                    const std::vector<std::uint32_t>& patches) {
+    if (layer >= mLayers.size() || layer >= scene.layers.size())
+        return;
+    const core::PatchedBlades& patched = scene.layers[layer].patched;
+    for (const std::uint32_t p : patches) {
+        const std::size_t first = std::size_t(p) * patched.patchSize;
+        mLayers[layer].physics.resetRange(
+            first, std::span(patched.blades).subspan(first, patched.patchSize));
+    }
+}
+
 void ScenePhysicsGpu::step(const core::ScenePhysics& physics, float timeS) {
     for (Layer& layer : mLayers)
         layer.physics.step(layer.blades, layer.bladeCount, physics.params, physics.wind,

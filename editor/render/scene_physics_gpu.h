@@ -22,6 +22,10 @@ public:
 
     // One step of physics.params.dtS from timeS on every layer (asynchronous: no glFinish).
     void step(const core::ScenePhysics& physics, float timeS);
+    // After a brush re-grew patches of layer `layer` (the renderer uploaded their blades): their
+    // rest tips follow, so physics pulls the new blades to their own rest pose.
+    void uploadRegrown(std::size_t layer, const core::Scene& scene,
+                       const std::vector<std::uint32_t>& patches);
     // Copies blades into `scene` and η into `simulation` (which must be the scene's).
     void readBack(core::Scene& scene, core::SceneSimulation& simulation) const;
 

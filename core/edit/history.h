@@ -1,0 +1,73 @@
+// EditHistory: the editor's undo and redo (issue 8). Two kinds of edit: a change of the project's
+// parameters (a panel drag, a moved wind source, an added collider), kept as the whole project
+// before and after (a project without its maps is a few kilobytes), and a paint stroke, kept as
+// the texels it changed (PaintRecord: index, before, after; 12 bytes a changed texel, nothing
+// for untouched ones), so undo is bit-exact and memory grows with what was painted, not with the
+// map size. The history keeps at most `maxSteps` edits and `maxBytes` of them, dropping the
+// oldest first (the newest edit is always kept, however large).
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <string>
+#include <variant>
+
+#include "maps/brush.h"
+#include "project/project.h"
+#include "scene/layer_growth.h"
+
+namespace grass::core {
+
+struct ProjectEdit {
+    Project before;
+    Project after;
+};
+
+struct PaintEdit {
+    std::size_t layer = 0;
+    LayerMap map = LayerMap::Density;
+    PaintRecord record;
+};
+
+struct Edit {
+    std::string label;  // what the Edit menu and the status bar show: "paint density", "wind"
+    std::variant<ProjectEdit, PaintEdit> change;
+};
+
+// Memory an edit holds, approximately (containers' payloads plus the structs themselves).
+std::size_t editBytes(const Edit& edit);
+
+class EditHistory {
+public:
+    struct Limits {
+        std::size_t maxSteps = 1000;
+        std::size_t maxBytes = std::size_t{512} << 20;
+    };
+    EditHistory() = default;
+    explicit EditHistory(Limits limits) : mLimits(limits) {}
+
+    // Records a done edit: the redo branch is dropped, then the oldest edits beyond the limits.
+    void push(Edit edit);
+    // The edit to revert (the caller applies its `before`) and steps back; null when none.
+    const Edit* undo();
+    // The edit to re-apply (its `after`) and steps forward; null when none.
+    const Edit* redo();
+
+    bool canUndo() const { return mCursor > 0; }
+    bool canRedo() const { return mCursor < mEdits.size(); }
+    const Edit* nextUndo() const { return canUndo() ? &mEdits[mCursor - 1] : nullptr; }
+    const Edit* nextRedo() const { return canRedo() ? &mEdits[mCursor] : nullptr; }
+    std::size_t undoSteps() const { return mCursor; }
+    std::size_t redoSteps() const { return mEdits.size() - mCursor; }
+    std::size_t bytes() const { return mBytes; }
+    void clear();
+
+private:
+    Limits mLimits;
+    std::deque<Edit> mEdits;
+    std::deque<std::size_t> mEditBytes;
+    std::size_t mCursor = 0;  // edits before it are done, from it on undone
+    std::size_t mBytes = 0;
+};
+
+}  // namespace grass::core

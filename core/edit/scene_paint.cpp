@@ -1,0 +1,78 @@
+#include "edit/scene_paint.h"
+
+#include <algorithm>
+
+#include "util/assert.h"
+
+namespace grass::core {
+
+ScenePainter::ScenePainter(Scene& scene, GrassLightingDesc lighting)
+    : mScene(&scene), mLighting(std::move(lighting)) {}
+
+const TexelSurface& ScenePainter::surface(glm::ivec2 resolution) {
+    auto& slot = mSurfaces[{resolution.x, resolution.y}];
+    if (!slot)
+        slot = std::make_unique<TexelSurface>(mScene->mesh, resolution.x, resolution.y);
+    return *slot;
+}
+
+void ScenePainter::begin(std::size_t layer, LayerMap map, glm::ivec2 resolution,
+                         const BrushSettings& brush) {
+    GRASS_ASSERT(layer < mScene->layers.size());
+    GRASS_ASSERT(resolution.x >= 1 && resolution.y >= 1);
+    GRASS_ASSERT(!active());
+    MapImage& painted = layerMap(mScene->layers[layer].source.maps, map);
+    // An absent map reads 1 everywhere, so a new one starts as what the grass already saw.
+    if (painted.texels.empty())
+        painted = makeConstantMap(resolution.x, resolution.y, 1.0f);
+    const TexelSurface& texels = surface({painted.width, painted.height});
+    mStroke = std::make_unique<PaintStroke>(painted, texels, brush);
+    mLayer = layer;
+    mMap = map;
+}
+
+Result<RegrowReport> ScenePainter::paintTo(glm::vec3 hitWorld, float pressure) {
+    GRASS_ASSERT(active());
+    mStroke->setPressure(pressure);
+    mStroke->addHits(std::span<const glm::vec3>(&hitWorld, 1));
+    const auto changed = mStroke->takeChangedRegion();
+    if (!changed)
+        return RegrowReport{};
+    return regrow(mLayer, changed->bounds, changed->texelMarginM);
+}
+
+std::optional<PaintEdit> ScenePainter::end() {
+    GRASS_ASSERT(active());
+    PaintEdit edit{mLayer, mMap, mStroke->record()};
+    mStroke.reset();
+    if (edit.record.empty())
+        return std::nullopt;
+    return edit;
+}
+
+Result<RegrowReport> ScenePainter::apply(const PaintEdit& edit, bool undo) {
+    if (edit.layer >= mScene->layers.size())
+        return Error{"undo", "the painted layer no longer exists"};
+    MapImage& map = layerMap(mScene->layers[edit.layer].source.maps, edit.map);
+    const std::size_t texels = map.texels.size();
+    const bool fits = std::all_of(edit.record.texelIndex.begin(), edit.record.texelIndex.end(),
+                                  [&](std::uint32_t texel) { return texel < texels; });
+    if (!fits || edit.record.empty())
+        return Error{"undo", "the painted map changed size since the stroke"};
+    if (undo)
+        undoPaint(map, edit.record);
+    else
+        redoPaint(map, edit.record);
+    const TexelSurface& texelSurface = surface({map.width, map.height});
+    float marginM = 0.0f;
+    for (const std::uint32_t texel : edit.record.texelIndex)
+        marginM = std::max(marginM, texelSurface.texelSizeM(texel));
+    return regrow(edit.layer, edit.record.touchedBounds, marginM);
+}
+
+Result<RegrowReport> ScenePainter::regrow(std::size_t layer, const Bounds& region,
+                                          float texelMarginM) {
+    return regrowLayerRegion(mScene->layers[layer], region, texelMarginM, mLighting);
+}
+
+}  // namespace grass::core

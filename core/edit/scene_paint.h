@@ -1,0 +1,56 @@
+// ScenePainter: the editor's brush on a live Scene (issue 8). A stroke is fed the surface hits of
+// the viewport's ray casts as the mouse moves; after each hit the grass patches the new dabs can
+// reach re-grow (regrowLayerRegion), so the field follows the brush within the frame and the
+// renderer re-uploads only those patches. A finished stroke becomes a PaintEdit for the history;
+// applying one backwards or forwards writes its texels back bit-exactly and re-grows the region
+// it touched.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "edit/history.h"
+#include "maps/brush.h"
+#include "maps/texel_surface.h"
+#include "scene/scene.h"
+#include "util/result.h"
+
+namespace grass::core {
+
+class ScenePainter {
+public:
+    // `scene` must outlive the painter; its mesh must not change meanwhile.
+    ScenePainter(Scene& scene, GrassLightingDesc lighting);
+
+    // Starts a stroke on `map` of layer `layer` (an index into scene.layers). A layer without
+    // that map gets one of `resolution`, 1 everywhere: what its grass grew from so far.
+    // Preconditions (GRASS_ASSERT): layer in range, resolution >= 1, no stroke active.
+    void begin(std::size_t layer, LayerMap map, glm::ivec2 resolution, const BrushSettings& brush);
+    bool active() const { return mStroke != nullptr; }
+    // Paints from the last hit (or dabs, on the first) to `hitWorld` with the pen's pressure and
+    // re-grows what changed. Preconditions: active().
+    Result<RegrowReport> paintTo(glm::vec3 hitWorld, float pressure = 1.0f);
+    // Ends the stroke: the edit to record, or nullopt when no texel changed.
+    std::optional<PaintEdit> end();
+
+    // Writes an edit's `before` (undo) or `after` (redo) values back and re-grows what they touch.
+    // An error (nothing changed) when the layer or the map no longer matches the edit.
+    Result<RegrowReport> apply(const PaintEdit& edit, bool undo);
+
+    // The texel positions of a map of this size on the scene's mesh, built on first use.
+    const TexelSurface& surface(glm::ivec2 resolution);
+
+private:
+    Result<RegrowReport> regrow(std::size_t layer, const Bounds& region, float texelMarginM);
+
+    Scene* mScene;
+    GrassLightingDesc mLighting;
+    std::map<std::pair<int, int>, std::unique_ptr<TexelSurface>> mSurfaces;
+    std::unique_ptr<PaintStroke> mStroke;
+    std::size_t mLayer = 0;
+    LayerMap mMap = LayerMap::Density;
+};
+
+}  // namespace grass::core

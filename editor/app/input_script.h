@@ -1,0 +1,37 @@
+// Recorded input for the editor (issue 8: `grass-editor --script FILE`): a text file of pointer,
+// key and wait commands turned into one InputState per frame, which main.cpp uses instead of
+// GLFW's, so tests and bug reports replay a session exactly. One command per line, '#' starts a
+// comment; coordinates are window coordinates (GLFW's screen coordinates, y down):
+//
+//   wait N                   N frames with no new input (buttons stay as they are)
+//   move X Y                 the pointer moves to (X, Y): one frame
+//   press [left|right|middle]   / release [...]   one frame each (default left)
+//   drag X0 Y0 X1 Y1 N       press at (X0, Y0), move to (X1, Y1) over N frames, release
+//   hold ctrl|shift|none     modifiers held from now on (hold ctrl+shift for both)
+//   key [ctrl+][shift+]NAME  one key press: a letter, digit, [ ], enter, escape, tab, f
+//   type TEXT                typed text (the rest of the line)
+//   pressure P               pen pressure for what follows, 0…1
+//   screenshot FILE          save the window after this frame (relative to the script's folder)
+//   quit                     stop (also at the end of the script)
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "util/result.h"
+#include "window.h"
+
+namespace grass::editor {
+
+struct ScriptFrame {
+    InputState input;
+    std::string screenshot;  // empty: none after this frame
+};
+
+// Errors name the file and line: "script.txt:4: drag: expected X0 Y0 X1 Y1 N".
+Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
+                                                  const std::filesystem::path& file);
+Result<std::vector<ScriptFrame>> loadInputScript(const std::filesystem::path& file);
+
+}  // namespace grass::editor

@@ -1,0 +1,166 @@
+// The side panel's tool section (brush and gizmo settings, adding and removing wind sources and
+// colliders, keying their motion) and the timeline (play, pause, step, loop, speed, scrub).
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "panels.h"
+#include "ui/text_edit.h"
+#include "ui/ui.h"
+
+namespace grass::editor {
+
+namespace {
+
+void brushSettings(ui::Ui& ui, EditorState& s) {
+    core::Project& project = s.loaded.project;
+    std::vector<std::string> layers;
+    for (const core::GrassLayer& layer : project.layers)
+        layers.push_back(layer.name);
+    int layer = int(s.paint.layer);
+    if (!layers.empty() && ui.comboBox("layer", layer, layers).changed())
+        s.paint.layer = std::size_t(layer);
+    static constexpr std::array<const char*, 3> MAPS{"density", "soil", "light"};
+    int map = int(s.paint.map);
+    if (ui.comboBox("map", map, MAPS).changed())
+        s.paint.map = core::LayerMap(map);
+    core::BrushSettings& b = s.paint.brush;
+    ui.horizontal([&](ui::Ui& row) {
+        row.radioValue(b.mode, core::BrushMode::Add, "add");
+        row.radioValue(b.mode, core::BrushMode::Subtract, "subtract");
+        row.radioValue(b.mode, core::BrushMode::Smooth, "smooth");
+        row.radioValue(b.mode, core::BrushMode::Set, "set");
+    });
+    if (ui::sliderWithEntry(ui, "radius  [ ]", b.radiusM, 0.01f, 100.0f,
+                            {.logarithmic = true, .decimals = 2})
+            .changed())
+        s.paint.radiusChosen = true;
+    ui::sliderWithEntry(ui, "strength", b.strength, 0.0f, 1.0f, {.decimals = 2});
+    static constexpr std::array<const char*, 3> FALLOFFS{"smooth", "linear", "constant"};
+    int falloff = int(b.falloff);
+    if (ui.comboBox("falloff", falloff, FALLOFFS).changed())
+        b.falloff = core::BrushFalloff(falloff);
+    if (b.mode == core::BrushMode::Set)
+        ui::sliderWithEntry(ui, "set value", b.setValue, 0.0f, 1.0f, {.decimals = 2});
+    ui.coloredLabel("left-drag paints, Ctrl inverts; right-drag orbits", ui.style().textWeak);
+}
+
+glm::vec3 newObjectPosition(const EditorState& s) {
+    return s.scene ? s.scene->bounds.centre() + glm::vec3(0.0f, 0.5f * s.scene->bounds.size().y, 0.0f)
+                   : glm::vec3(0.0f);
+}
+
+void placeSettings(ui::Ui& ui, EditorState& s) {
+    core::Project& project = s.loaded.project;
+    ui.horizontal([&](ui::Ui& row) {
+        row.radioValue(s.place.mode, core::GizmoMode::Translate, "move (w)");
+        row.radioValue(s.place.mode, core::GizmoMode::Rotate, "rotate (e)");
+        row.radioValue(s.place.mode, core::GizmoMode::Scale, "scale (r)");
+    });
+    ui.checkbox(s.place.snap.enabled, "snap (or hold Ctrl)");
+    if (s.place.snap.enabled) {
+        ui.dragValue("step m", s.place.snap.translateStepM, 0.01f, 0.001f, 100.0f, 2);
+        ui.dragValue("step °", s.place.snap.rotateStepDeg, 0.5f, 0.5f, 90.0f, 1);
+    }
+    ui.horizontal([&](ui::Ui& row) {
+        if (row.button("add wind").clicked()) {
+            core::WindDesc wind;
+            wind.name = "wind " + std::to_string(project.wind.size() + 1);
+            wind.source.kind = core::WindKind::Point;
+            wind.source.position = newObjectPosition(s);
+            wind.source.radiusM = s.scene ? 0.25f * glm::length(s.scene->bounds.size()) : 5.0f;
+            project.wind.push_back(wind);
+            s.place.selected = PlacedObject{PlacedKind::Wind, project.wind.size() - 1};
+            s.dirty = s.rebuildPending = true;
+        }
+        if (row.button("add ball").clicked()) {
+            core::ColliderDesc ball;
+            ball.name = "ball " + std::to_string(project.colliders.size() + 1);
+            ball.position = newObjectPosition(s);
+            ball.radiusM = s.scene ? 0.05f * glm::length(s.scene->bounds.size()) : 0.5f;
+            project.colliders.push_back(ball);
+            s.place.selected = PlacedObject{PlacedKind::Collider, project.colliders.size() - 1};
+            s.dirty = s.rebuildPending = true;
+        }
+    });
+    if (!s.place.selected) {
+        ui.coloredLabel("click a marker to select it", ui.style().textWeak);
+        return;
+    }
+    const PlacedObject o = *s.place.selected;
+    const bool isWind = o.kind == PlacedKind::Wind;
+    if (o.index >= (isWind ? project.wind.size() : project.colliders.size()))
+        return;
+    std::vector<core::PathKey>& path =
+        isWind ? project.wind[o.index].source.path : project.colliders[o.index].path;
+    const std::string& name = isWind ? project.wind[o.index].name : project.colliders[o.index].name;
+    ui.label("selected: " + name + " (" + std::to_string(path.size()) + " keys)");
+    const float timeS = float(s.timeline.timeS());
+    const float tolerance = 0.5f * float(s.timeline.stepS());
+    ui.horizontal([&](ui::Ui& row) {
+        if (row.button("key here").clicked()) {
+            core::setKey(path, timeS, placedPosition(project, o, timeS), tolerance);
+            s.dirty = s.rebuildPending = true;
+        }
+        if (row.button("remove key").clicked() && core::removeKey(path, timeS, tolerance))
+            s.dirty = s.rebuildPending = true;
+        if (row.button("delete").clicked()) {
+            if (isWind)
+                project.wind.erase(project.wind.begin() + std::ptrdiff_t(o.index));
+            else
+                project.colliders.erase(project.colliders.begin() + std::ptrdiff_t(o.index));
+            s.place.selected.reset();
+            s.dirty = s.rebuildPending = true;
+        }
+    });
+}
+
+}  // namespace
+
+void toolSection(ui::Ui& ui, EditorState& s) {
+    ui.collapsingHeader(
+        "Tools",
+        [&](ui::Ui& section) {
+            section.horizontal([&](ui::Ui& row) {
+                row.radioValue(s.tool, ViewportTool::Camera, "camera (c)");
+                row.radioValue(s.tool, ViewportTool::Paint, "brush (b)");
+                row.radioValue(s.tool, ViewportTool::Place, "gizmo (g)");
+            });
+            if (s.tool == ViewportTool::Paint)
+                brushSettings(section, s);
+            else if (s.tool == ViewportTool::Place)
+                placeSettings(section, s);
+        },
+        true);
+}
+
+void timelineSection(ui::Ui& ui, EditorState& s) {
+    core::Timeline& t = s.timeline;
+    ui.collapsingHeader("Timeline", [&](ui::Ui& section) {
+        section.horizontal([&](ui::Ui& row) {
+            if (row.button("|<").clicked())
+                s.timeJump = t.scrub(t.startS());
+            if (row.button("<").clicked())
+                s.timeJump = t.stepBack();
+            if (row.button(t.playing() ? "pause" : "play").clicked())
+                s.timeJump = t.toggle();
+            if (row.button(">").clicked())
+                s.timeJump = t.stepForward();
+            bool loop = t.looping();
+            if (row.checkbox(loop, "loop").changed())
+                t.setLoop(loop);
+        });
+        float timeS = float(t.timeS());
+        if (section.slider("time s", timeS, float(t.startS()), float(t.endS()), {.decimals = 2})
+                .changed())
+            s.timeJump = t.scrub(timeS);
+        float speed = float(t.speed());
+        if (section.slider("speed", speed, float(core::TIMELINE_MIN_SPEED),
+                           float(core::TIMELINE_MAX_SPEED), {.logarithmic = true, .decimals = 2})
+                .changed())
+            t.setSpeed(speed);
+    });
+}
+
+}  // namespace grass::editor

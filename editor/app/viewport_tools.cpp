@@ -1,0 +1,379 @@
+#include "viewport_tools.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "mesh/surface_ring.h"
+#include "panels.h"
+#include "ui/painter.h"
+
+namespace grass::editor {
+
+namespace {
+
+// The first brush spans this share of the scene's diagonal: readable on any mesh, whatever
+// its units (the CLI's `grass paint` default too).
+constexpr float DEFAULT_RADIUS_SHARE = 0.05f;
+// A click this close to an object's marker (pixels) selects it.
+constexpr float SELECT_PIXELS = 14.0f;
+constexpr int RING_POINTS = 48;
+
+const char* mapName(core::LayerMap map) {
+    switch (map) {
+    case core::LayerMap::Density: return "density";
+    case core::LayerMap::Soil: return "soil";
+    case core::LayerMap::Light: return "light";
+    }
+    return "map";
+}
+
+// Ctrl paints the opposite: add ↔ subtract, set toward 1 − value; smooth stays smooth.
+core::BrushSettings effectiveBrush(const core::BrushSettings& brush, bool invert) {
+    core::BrushSettings b = brush;
+    if (!invert)
+        return b;
+    if (b.mode == core::BrushMode::Add)
+        b.mode = core::BrushMode::Subtract;
+    else if (b.mode == core::BrushMode::Subtract)
+        b.mode = core::BrushMode::Add;
+    else if (b.mode == core::BrushMode::Set)
+        b.setValue = 1.0f - b.setValue;
+    return b;
+}
+
+void queue(EditorState& s, std::size_t layer, const Result<core::RegrowReport>& report) {
+    if (!report)
+        s.message = "re-grow failed: " + report.error().str();
+    else if (!report->patches.empty() || !report->shadedPatches.empty())
+        s.regrown.emplace_back(layer, *report);
+}
+
+void endStroke(EditorState& s) {
+    s.toolDragActive = false;
+    auto edit = s.tools->painter.end();
+    if (!edit)
+        return;
+    s.paintedMaps.insert({edit->layer, edit->map});
+    s.dirty = true;
+    const std::string label = std::string("paint ") + mapName(edit->map);
+    s.history.push(core::Edit{label, std::move(*edit)});
+}
+
+bool runPaint(EditorState& s, const core::OrbitCamera& camera, const ViewportPointer& p) {
+    core::ScenePainter& painter = s.tools->painter;
+    const bool stroking = painter.active();
+    if (!stroking && !(p.pressed && p.inside))
+        return false;
+    if (stroking && (!p.down || p.released)) {
+        endStroke(s);
+        return true;
+    }
+    const auto hit = pickSurface(*s.tools, camera, p);
+    if (!hit) {
+        // Off the mesh: the stroke ends rather than jump across the gap when it comes back.
+        if (stroking)
+            endStroke(s);
+        return true;
+    }
+    if (!stroking) {
+        if (s.paint.layer >= s.scene->layers.size())
+            return true;
+        if (!s.paint.radiusChosen) {
+            s.paint.brush.radiusM = DEFAULT_RADIUS_SHARE * glm::length(s.scene->bounds.size());
+            s.paint.radiusChosen = true;
+        }
+        const core::GrassLayer& layer = s.loaded.project.layers[s.paint.layer];
+        painter.begin(s.paint.layer, s.paint.map, layer.mapResolution,
+                      effectiveBrush(s.paint.brush, p.ctrl));
+        s.toolDragActive = true;
+    }
+    queue(s, s.paint.layer, painter.paintTo(hit->posWorld, p.pressure));
+    return true;
+}
+
+core::GizmoView gizmoView(const core::OrbitCamera& camera, const ViewportPointer& p) {
+    return core::GizmoView{camera, p.viewportSize};
+}
+
+// Applies a drag's delta to the object as it was when the drag began.
+void applyGizmo(EditorState& s, PlacedObject object, const core::GizmoDelta& d, float timeS) {
+    core::Project& project = s.loaded.project;
+    const core::Project& start = s.gizmoStart;
+    const auto moved = [&](glm::vec3 position, std::vector<core::PathKey>& path,
+                           const std::vector<core::PathKey>& startPath) -> glm::vec3 {
+        if (startPath.empty())
+            return position + d.translationWorld;
+        // A keyed object: the drag moves its key at the current time (made if missing).
+        path = startPath;
+        const glm::vec3 at = core::samplePath(startPath, timeS, position);
+        core::setKey(path, timeS, at + d.translationWorld, 0.5f * float(s.timeline.stepS()));
+        return position;
+    };
+    const glm::mat3 rotation =
+        d.angleRad != 0.0f && glm::length(d.rotationAxis) > 0.0f
+            ? glm::mat3(glm::rotate(glm::mat4(1.0f), d.angleRad, d.rotationAxis))
+            : glm::mat3(1.0f);
+    const float uniform = std::max({d.scale.x, d.scale.y, d.scale.z}) >= 1.0f
+                              ? std::max({d.scale.x, d.scale.y, d.scale.z})
+                              : std::min({d.scale.x, d.scale.y, d.scale.z});
+    if (object.kind == PlacedKind::Wind) {
+        core::WindSource& w = project.wind[object.index].source;
+        const core::WindSource& w0 = start.wind[object.index].source;
+        w.position = moved(w0.position, w.path, w0.path);
+        w.direction = rotation * w0.direction;
+        w.axis = rotation * w0.axis;
+        w.radiusM = w0.radiusM * uniform;
+        w.coreRadiusM = w0.coreRadiusM * uniform;
+    } else {
+        core::ColliderDesc& c = project.colliders[object.index];
+        const core::ColliderDesc& c0 = start.colliders[object.index];
+        c.position = moved(c0.position, c.path, c0.path);
+        c.radiusM = c0.radiusM * uniform;
+        c.scale = c0.scale * uniform;
+    }
+}
+
+std::optional<PlacedObject> objectUnder(const EditorState& s, const core::OrbitCamera& camera,
+                                        const ViewportPointer& p) {
+    std::optional<PlacedObject> best;
+    float bestDistance = SELECT_PIXELS;
+    const auto consider = [&](PlacedObject object) {
+        const auto at = core::projectToPixel(
+            camera, placedPosition(s.loaded.project, object, float(s.timeline.timeS())),
+            p.viewportSize);
+        if (!at)
+            return;
+        const float d = glm::length(*at - p.pixel);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = object;
+        }
+    };
+    for (std::size_t i = 0; i < s.loaded.project.wind.size(); ++i)
+        consider({PlacedKind::Wind, i});
+    for (std::size_t i = 0; i < s.loaded.project.colliders.size(); ++i)
+        consider({PlacedKind::Collider, i});
+    return best;
+}
+
+bool validSelection(const EditorState& s) {
+    if (!s.place.selected)
+        return false;
+    const PlacedObject o = *s.place.selected;
+    return o.kind == PlacedKind::Wind ? o.index < s.loaded.project.wind.size()
+                                      : o.index < s.loaded.project.colliders.size();
+}
+
+bool runPlace(EditorState& s, const core::OrbitCamera& camera, const ViewportPointer& p) {
+    const float timeS = float(s.timeline.timeS());
+    if (s.gizmoDrag) {
+        if (!p.down || p.released) {
+            s.gizmoDrag.reset();
+            s.toolDragActive = false;
+            return true;
+        }
+        core::GizmoSnap snap = s.place.snap;
+        snap.enabled = snap.enabled || p.ctrl;
+        if (validSelection(s))
+            applyGizmo(s, *s.place.selected, s.gizmoDrag->update(p.pixel), timeS);
+        s.dirty = true;
+        return true;
+    }
+    if (!(p.pressed && p.inside))
+        return false;
+    if (validSelection(s)) {
+        const glm::vec3 pivot = placedPosition(s.loaded.project, *s.place.selected, timeS);
+        const core::GizmoHandle handle =
+            core::pickGizmoHandle(s.place.mode, gizmoView(camera, p), pivot, p.pixel);
+        if (handle != core::GizmoHandle::None) {
+            core::GizmoSnap snap = s.place.snap;
+            snap.enabled = snap.enabled || p.ctrl;
+            s.gizmoDrag.emplace(s.place.mode, handle, pivot, gizmoView(camera, p), p.pixel, snap);
+            s.gizmoStart = s.loaded.project;
+            s.toolDragActive = true;
+            return true;
+        }
+    }
+    const auto under = objectUnder(s, camera, p);
+    s.place.selected = under;
+    // A click on empty ground keeps the camera's drag; a click on an object selects it.
+    return under.has_value();
+}
+
+// Wind sources and colliders as the overlay shows them: marker, radius, direction.
+void drawObjects(ui::Painter& painter, ui::Rect view, float ppp, const EditorState& s,
+                 const core::OrbitCamera& camera, glm::vec2 size) {
+    const core::Project& project = s.loaded.project;
+    const float timeS = float(s.timeline.timeS());
+    const auto toPoints = [&](glm::vec2 px) {
+        return ui::Vec2(view.min.x + px.x / ppp, view.min.y + px.y / ppp);
+    };
+    // A circle of radius r about `centre` in the plane perpendicular to `normal`.
+    const auto worldCircle = [&](glm::vec3 centre, glm::vec3 normal, float r, ui::Color32 color) {
+        const glm::vec3 n = glm::normalize(normal);
+        const glm::vec3 t = glm::normalize(glm::abs(n.y) < 0.9f ? glm::cross(n, {0, 1, 0})
+                                                                : glm::cross(n, {1, 0, 0}));
+        const glm::vec3 b = glm::cross(n, t);
+        std::vector<ui::Vec2> points;
+        for (int i = 0; i < RING_POINTS; ++i) {
+            const float a = 6.2831853f * float(i) / RING_POINTS;
+            if (auto px = core::projectToPixel(camera, centre + r * (std::cos(a) * t + std::sin(a) * b),
+                                               size))
+                points.push_back(toPoints(*px));
+        }
+        if (points.size() == RING_POINTS)
+            painter.path(std::move(points), true, ui::Color32::transparent(), {1.5f, color});
+    };
+    const auto marker = [&](glm::vec3 at, ui::Color32 color, bool selected) {
+        if (auto px = core::projectToPixel(camera, at, size))
+            painter.circle(toPoints(*px), selected ? 6.0f : 4.5f, color,
+                           {1.0f, ui::Color32::rgb(20, 20, 20)});
+    };
+    const auto isSelected = [&](PlacedKind kind, std::size_t i) {
+        return s.place.selected && *s.place.selected == PlacedObject{kind, i};
+    };
+    const ui::Color32 windColor = ui::Color32::rgb(120, 190, 255);
+    for (std::size_t i = 0; i < project.wind.size(); ++i) {
+        const core::WindSource& w = project.wind[i].source;
+        const glm::vec3 at = placedPosition(project, {PlacedKind::Wind, i}, timeS);
+        marker(at, windColor, isSelected(PlacedKind::Wind, i));
+        if (w.radiusM > 0.0f)
+            worldCircle(at, {0, 1, 0}, w.radiusM, windColor);
+        if (w.kind == core::WindKind::Vortex)
+            worldCircle(at, w.axis, std::max(w.coreRadiusM, 1e-3f), windColor);
+        if (w.kind == core::WindKind::Directional && glm::length(w.direction) > 0.0f) {
+            const float arrow = core::worldLengthForPixels({camera, size}, at, 60.0f);
+            const auto a = core::projectToPixel(camera, at, size);
+            const auto b = core::projectToPixel(camera, at + arrow * glm::normalize(w.direction), size);
+            if (a && b)
+                painter.line(toPoints(*a), toPoints(*b), {2.0f, windColor});
+        }
+        for (const core::PathKey& key : w.path)
+            marker(key.posWorld, ui::Color32::rgb(60, 90, 140), false);
+    }
+    const ui::Color32 colliderColor = ui::Color32::rgb(255, 170, 90);
+    for (std::size_t i = 0; i < project.colliders.size(); ++i) {
+        const core::ColliderDesc& c = project.colliders[i];
+        const glm::vec3 at = placedPosition(project, {PlacedKind::Collider, i}, timeS);
+        marker(at, colliderColor, isSelected(PlacedKind::Collider, i));
+        if (c.shape == core::ColliderShape::Sphere)
+            worldCircle(at, camera.position() - at, c.radiusM, colliderColor);
+        for (const core::PathKey& key : c.path)
+            marker(key.posWorld, ui::Color32::rgb(140, 90, 50), false);
+    }
+}
+
+ui::Color32 handleColor(core::GizmoHandle handle, bool hot) {
+    const auto pick = [&](ui::Color32 normal) { return hot ? ui::Color32::rgb(255, 230, 80) : normal; };
+    switch (handle) {
+    case core::GizmoHandle::X:
+    case core::GizmoHandle::PlaneYZ: return pick(ui::Color32::rgb(230, 70, 70));
+    case core::GizmoHandle::Y:
+    case core::GizmoHandle::PlaneZX: return pick(ui::Color32::rgb(90, 210, 90));
+    case core::GizmoHandle::Z:
+    case core::GizmoHandle::PlaneXY: return pick(ui::Color32::rgb(80, 130, 240));
+    default: return pick(ui::Color32::rgb(220, 220, 220));
+    }
+}
+
+}  // namespace
+
+SceneTools::SceneTools(core::Scene& scene, const core::GrassLightingDesc& lighting)
+    : bvh(scene.mesh), painter(scene, lighting) {}
+
+std::optional<core::RayHit> pickSurface(const SceneTools& tools, const core::OrbitCamera& camera,
+                                        const ViewportPointer& pointer) {
+    return tools.bvh.intersect(core::cameraRay(camera, pointer.pixel, pointer.viewportSize));
+}
+
+glm::vec3 placedPosition(const core::Project& project, PlacedObject object, float timeS) {
+    if (object.kind == PlacedKind::Wind) {
+        const core::WindSource& w = project.wind[object.index].source;
+        return core::samplePath(w.path, timeS, w.position);
+    }
+    const core::ColliderDesc& c = project.colliders[object.index];
+    return core::samplePath(c.path, timeS, c.position);
+}
+
+bool runViewportTool(EditorState& state, const core::OrbitCamera& camera,
+                     const ViewportPointer& pointer) {
+    if (!state.tools || !state.scene)
+        return false;
+    // A stroke ends when the tool changes under it.
+    if (state.tool != ViewportTool::Paint && state.tools->painter.active())
+        endStroke(state);
+    switch (state.tool) {
+    case ViewportTool::Paint: return runPaint(state, camera, pointer);
+    case ViewportTool::Place: return runPlace(state, camera, pointer);
+    case ViewportTool::Camera: return false;
+    }
+    return false;
+}
+
+void applyToolKeys(EditorState& state, std::string_view typed) {
+    for (const char c : typed) {
+        core::BrushSettings& brush = state.paint.brush;
+        switch (c) {
+        case '[': brush.radiusM = std::max(brush.radiusM / 1.25f, 1e-4f); state.paint.radiusChosen = true; break;
+        case ']': brush.radiusM = std::min(brush.radiusM * 1.25f, 1e4f); state.paint.radiusChosen = true; break;
+        case 'b': state.tool = ViewportTool::Paint; break;
+        case 'g': state.tool = ViewportTool::Place; break;
+        case 'c': state.tool = ViewportTool::Camera; break;
+        case 'w': state.place.mode = core::GizmoMode::Translate; break;
+        case 'e': state.place.mode = core::GizmoMode::Rotate; break;
+        case 'r': state.place.mode = core::GizmoMode::Scale; break;
+        default: break;
+        }
+    }
+}
+
+void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const EditorState& s,
+                         const core::OrbitCamera& camera, const ViewportPointer& pointer) {
+    ui::Painter painter = ctx.painter(ui::Layer::Background, view);
+    const auto toPoints = [&](glm::vec2 px) {
+        return ui::Vec2(view.min.x + px.x / ppp, view.min.y + px.y / ppp);
+    };
+    if (s.tool == ViewportTool::Paint && s.tools && (pointer.inside || s.tools->painter.active())) {
+        if (const auto hit = pickSurface(*s.tools, camera, pointer)) {
+            const float radius = s.paint.radiusChosen
+                                     ? s.paint.brush.radiusM
+                                     : DEFAULT_RADIUS_SHARE * glm::length(s.scene->bounds.size());
+            std::vector<ui::Vec2> points;
+            for (const glm::vec3 p :
+                 core::surfacePointsOnRing(s.tools->bvh, hit->posWorld, hit->normal, radius, RING_POINTS))
+                if (auto px = core::projectToPixel(camera, p, pointer.viewportSize))
+                    points.push_back(toPoints(*px));
+            const bool inverted = pointer.ctrl;
+            const ui::Color32 color = inverted ? ui::Color32::rgb(255, 120, 100)
+                                               : ui::Color32::rgb(255, 255, 255);
+            if (points.size() > 2) {
+                painter.path(points, true, ui::Color32::transparent(),
+                             {2.5f, ui::Color32{0, 0, 0, 140}});
+                painter.path(std::move(points), true, ui::Color32::transparent(), {1.2f, color});
+            }
+        }
+    }
+    if (s.tool != ViewportTool::Camera)
+        drawObjects(painter, view, ppp, s, camera, pointer.viewportSize);
+    if (s.tool == ViewportTool::Place && validSelection(s)) {
+        const glm::vec3 pivot =
+            placedPosition(s.loaded.project, *s.place.selected, float(s.timeline.timeS()));
+        const core::GizmoView gv = gizmoView(camera, pointer);
+        const core::GizmoHandle hot =
+            s.gizmoDrag ? s.gizmoDrag->handle()
+                        : (pointer.inside ? core::pickGizmoHandle(s.place.mode, gv, pivot, pointer.pixel)
+                                          : core::GizmoHandle::None);
+        for (const core::GizmoPolyline& line : core::gizmoPolylines(s.place.mode, gv, pivot)) {
+            std::vector<ui::Vec2> points;
+            for (const glm::vec2 px : line.pointsPixels)
+                points.push_back(toPoints(px));
+            const ui::Color32 color = handleColor(line.handle, line.handle == hot);
+            const ui::Color32 fill = line.filled ? color : ui::Color32::transparent();
+            painter.path(std::move(points), line.closed, fill, {line.filled ? 1.0f : 2.0f, color});
+        }
+    }
+}
+
+}  // namespace grass::editor
