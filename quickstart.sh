@@ -18,6 +18,11 @@ packages=(g++ cmake ninja-build pkg-config ccache
   libglfw3-dev libglm-dev libtinygltf-dev libopenmesh-dev libopenimageio-dev libepoxy-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libstb-dev fonts-dejavu-core xvfb xauth)
+# The export tests validate glTF files with the Khronos glTF-Validator, an npm package. Node
+# from elsewhere (nodesource's nodejs bundles npm) will do, so look for the commands first.
+if [ "$mode" = test ] && ! { command -v node && command -v npm; } >/dev/null; then
+  packages+=(nodejs npm)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -46,6 +51,9 @@ if [ "$mode" = run ]; then
   echo "== no display: simulating 5 s of projects/meadow (wind, rolling ball) and rendering it headless"
   exec build/bin/grass render projects/meadow --time 5 --out build/meadow.png
 fi
+
+echo "== installing the glTF validator (npm gltf-validator) into build/gltf-validator"
+tests/export/install_validator.sh build/gltf-validator
 
 echo "== running the tests"
 exec ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600

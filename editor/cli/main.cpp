@@ -17,6 +17,7 @@ commands:
   sim         run a project's physics headless and report its cost and health
   mesh-info   print vertex/triangle counts, area, bounds of a glTF file
   paint       paint a layer's density, soil or light map with brush strokes
+  export      write a project's grass as glTF (instanced blades) or raw GPU buffers
 
 Run 'grass <command> --help' for the options of a command.
 The editor window is 'grass-editor'.
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
         grass::cli::printError(
-            "", "missing command: grass render|sim|mesh-info|paint ... (see grass --help)");
+            "", "missing command: grass render|sim|mesh-info|paint|export ... (see grass --help)");
         return grass::cli::EXIT_USAGE;
     }
     if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
@@ -49,10 +50,13 @@ int main(int argc, char** argv) {
         return grass::cli::runMeshInfo(args);
     if (command == "paint")
         return grass::cli::runPaint(args);
+    if (command == "export")
+        return grass::cli::runExport(args);
     if (command.rfind("-", 0) == 0)
         grass::cli::printError("", command + ": unknown option (see grass --help)");
     else
         grass::cli::printError(
-            command, "unknown command (commands: render, sim, mesh-info, paint; see grass --help)");
+            command,
+            "unknown command (commands: render, sim, mesh-info, paint, export; see grass --help)");
     return grass::cli::EXIT_USAGE;
 }

@@ -1,0 +1,48 @@
+#include "export/blade_instances.h"
+
+#include "util/assert.h"
+
+namespace grass::core {
+
+bool isLiveBlade(const Blade& blade) {
+    return blade.h() > 0.0f && blade.w() > 0.0f;
+}
+
+glm::quat bladeRotation(glm::vec3 up, float theta) {
+    const glm::vec3 y = glm::normalize(up);
+    const glm::vec3 x = widthDirection(y, theta);
+    // Right-handed: z = x × y, so the basis (x, y, z) is a proper rotation.
+    const glm::vec3 z = glm::cross(x, y);
+    // glm matrices are column-major: the columns are the images of +X, +Y, +Z.
+    return glm::normalize(glm::quat_cast(glm::mat3(x, y, z)));
+}
+
+std::vector<BladeInstance> bladeInstances(const LayerField& layer, int lod) {
+    GRASS_ASSERT(lod >= 0 && lod <= 30);
+    const std::size_t stride = std::size_t{1} << lod;
+    const float widthScale = static_cast<float>(stride);
+    const std::vector<Blade>& blades = layer.patched.blades;
+    std::vector<BladeInstance> instances;
+    instances.reserve(layer.liveBlades / stride + 1);
+    std::size_t live = 0;
+    for (std::size_t slot = 0; slot < blades.size(); ++slot) {
+        const Blade& blade = blades[slot];
+        if (!isLiveBlade(blade))
+            continue;
+        if (live++ % stride != 0)
+            continue;
+        const float wilt = slot < layer.wilt.size() ? layer.wilt[slot] : 0.0f;
+        BladeInstance instance;
+        instance.translation = blade.v0();
+        instance.rotation = bladeRotation(blade.up(), blade.theta());
+        instance.scale = glm::vec3(blade.w() * widthScale, blade.h(), blade.w() * widthScale);
+        instance.stiffness = blade.s();
+        instance.rootColor = glm::mix(layer.rootColor, layer.poorRootColor, wilt);
+        instance.tipColor = glm::mix(layer.tipColor, layer.poorTipColor, wilt);
+        instance.tipOffset = blade.v2() - blade.v0();
+        instances.push_back(instance);
+    }
+    return instances;
+}
+
+}  // namespace grass::core

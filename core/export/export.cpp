@@ -1,0 +1,242 @@
+#include "export/export.h"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+#include <system_error>
+
+#include "export/gltf_export.h"
+#include "export/raw_export.h"
+#include "export/staged_files.h"
+
+namespace grass::core {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct NamedMap {
+    const char* name;
+    const MapImage* map;
+};
+
+// The layer's painted maps, in a fixed order; maps without texels (absent: 1 everywhere) are
+// left out.
+std::vector<NamedMap> paintedMaps(const LayerField& layer) {
+    std::vector<NamedMap> maps;
+    for (const NamedMap map :
+         {NamedMap{"density", &layer.source.maps.density},
+          NamedMap{"soil", &layer.source.maps.soil}, NamedMap{"light", &layer.source.maps.light}})
+        if (map.map->width > 0 && map.map->height > 0)
+            maps.push_back(map);
+    return maps;
+}
+
+// A stem per layer, unique within the export even when two layers share a name.
+std::vector<std::string> layerStems(const Scene& scene) {
+    std::vector<std::string> stems;
+    std::set<std::string> used{"manifest"};
+    for (std::size_t i = 0; i < scene.layers.size(); ++i) {
+        std::string stem = exportFileStem(scene.layers[i].name);
+        if (used.count(stem))
+            stem += "-" + std::to_string(i);
+        used.insert(stem);
+        stems.push_back(stem);
+    }
+    return stems;
+}
+
+json colorJson(glm::vec3 color) {
+    return json::array({color.r, color.g, color.b});
+}
+
+// `step` reports progress within the layer (0..1) with what is being done.
+using LayerProgress = std::function<void(float within, const char* stage)>;
+
+Result<void> stageGltfLayer(StagedFiles& staged, const LoadedProject& loaded, const Scene& scene,
+                            std::size_t index, const std::string& stem, int lod,
+                            const LayerProgress& step, ExportedLayer& report) {
+    const LayerField& layer = scene.layers[index];
+    GltfLayerInput input;
+    input.scene = &scene;
+    input.layer = index;
+    input.lod = lod;
+    input.segments = loaded.project.render.stripSegments;
+    input.groundColor = loaded.project.render.groundColor;
+    input.binUri = stem + ".bin";
+    step(0.0f, "maps");
+    for (const NamedMap& map : paintedMaps(layer)) {
+        const std::string uri = stem + "-" + map.name + ".png";
+        if (auto written = staged.addPng(uri, *map.map); !written)
+            return written.error();
+        input.maps.push_back({map.name, uri});
+    }
+    step(0.3f, "terrain and blade instances");
+    const GltfLayerDocument doc = buildLayerGltf(input);
+    step(0.7f, "writing");
+    if (auto written = staged.add(input.binUri, doc.binary); !written)
+        return written.error();
+    if (auto written = staged.add(stem + ".gltf", doc.json); !written)
+        return written.error();
+    report.instances = doc.instances;
+    return {};
+}
+
+Result<json> stageRawLayer(StagedFiles& staged, const LayerField& layer, const std::string& stem,
+                           ExportedLayer& report) {
+    const PatchedBlades& patched = layer.patched;
+    const auto file = [&](const std::string& name, std::size_t count, std::size_t bytes) {
+        return json{{"file", name}, {"count", count}, {"bytes", bytes}};
+    };
+    json entry = {{"name", layer.name},
+                  {"live_blades", layer.liveBlades},
+                  {"patch_size", patched.patchSize},
+                  {"shape", std::string(bladeShapeName(layer.shape))},
+                  {"tip_start", layer.tipStart},
+                  {"colors",
+                   {{"root", colorJson(layer.rootColor)},
+                    {"tip", colorJson(layer.tipColor)},
+                    {"poor_root", colorJson(layer.poorRootColor)},
+                    {"poor_tip", colorJson(layer.poorTipColor)},
+                    {"rule", "colour = mix(healthy, poor, wilt), per slot, root and tip"}}}};
+    const std::string blades = rawBladeBytes(patched.blades);
+    const std::string patches = rawPatchBytes(patched.patches);
+    const std::string wilt = rawFloatBytes(layer.wilt);
+    entry["blades"] = file(stem + ".blades.bin", patched.blades.size(), blades.size());
+    entry["patches"] = file(stem + ".patches.bin", patched.patches.size(), patches.size());
+    entry["wilt"] = file(stem + ".wilt.f32", layer.wilt.size(), wilt.size());
+    const std::pair<const char*, const std::string*> parts[] = {
+        {"blades", &blades}, {"patches", &patches}, {"wilt", &wilt}};
+    for (const auto& [part, bytes] : parts)
+        if (auto written = staged.add(entry[part]["file"].get<std::string>(), *bytes); !written)
+            return written.error();
+    entry["maps"] = json::object();
+    for (const NamedMap& map : paintedMaps(layer)) {
+        const std::string name = stem + "." + map.name + ".f32";
+        const std::string bytes = rawFloatBytes(map.map->texels);
+        if (auto written = staged.add(name, bytes); !written)
+            return written.error();
+        entry["maps"][map.name] = {{"file", name},
+                                   {"width", map.map->width},
+                                   {"height", map.map->height},
+                                   {"bytes", bytes.size()}};
+    }
+    report.instances = patched.blades.size();
+    return entry;
+}
+
+// The out folder: made if missing (with its parents); anything else in its place is an error
+// before any work. `created` says whether it was made here, so a failure can take it back.
+Result<void> prepareOutDir(const fs::path& outDir, bool& created) {
+    if (outDir.empty())
+        return makeError("outDir", "no output folder given");
+    std::error_code ec;
+    const fs::file_status status = fs::status(outDir, ec);
+    if (fs::exists(status)) {
+        if (!fs::is_directory(status))
+            return makeError(outDir.string(),
+                             "exists and is not a folder (give a folder to "
+                             "export into)");
+        return {};
+    }
+    created = fs::create_directories(outDir, ec);
+    if (ec)
+        return makeError(outDir.string(), "cannot create the output folder: " + ec.message());
+    return {};
+}
+
+}  // namespace
+
+std::string_view exportFormatName(ExportFormat format) {
+    return format == ExportFormat::Raw ? "raw" : "gltf";
+}
+
+Result<ExportFormat> parseExportFormat(std::string_view name) {
+    if (name == "gltf")
+        return ExportFormat::Gltf;
+    if (name == "raw")
+        return ExportFormat::Raw;
+    return makeError("", "unknown format \"" + std::string(name) + "\" (gltf, raw)");
+}
+
+std::uint64_t ExportReport::totalBytes() const {
+    std::uint64_t total = 0;
+    for (const ExportedFile& file : files)
+        total += file.bytes;
+    return total;
+}
+
+std::string exportFileStem(const std::string& layerName) {
+    std::string out;
+    for (const char c : layerName)
+        out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+    return out.empty() ? "layer" : out;
+}
+
+Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& scene,
+                                   const ExportOptions& options, const ExportProgress& progress) {
+    if (options.lod < 0 || options.lod > MAX_EXPORT_LOD)
+        return makeError("lod", "must be from 0 to " + std::to_string(MAX_EXPORT_LOD) + " (got " +
+                                    std::to_string(options.lod) + ")");
+    if (options.format == ExportFormat::Raw && options.lod != 0)
+        return makeError("lod", "applies to the gltf format only (raw holds every blade exactly)");
+    bool createdDir = false;
+    if (auto prepared = prepareOutDir(options.outDir, createdDir); !prepared)
+        return prepared.error();
+
+    ExportReport report;
+    Result<void> staging = [&]() -> Result<void> {
+        StagedFiles staged(options.outDir);
+        const std::vector<std::string> stems = layerStems(scene);
+        json layers = json::array();
+        const auto layerCount = static_cast<float>(std::max<std::size_t>(scene.layers.size(), 1));
+        for (std::size_t i = 0; i < scene.layers.size(); ++i) {
+            const LayerField& layer = scene.layers[i];
+            const auto step = [&](float within, const char* stage) {
+                if (progress)
+                    progress((static_cast<float>(i) + within) / layerCount,
+                             "layer \"" + layer.name + "\": " + stage);
+            };
+            ExportedLayer exported{layer.name, layer.liveBlades, 0};
+            if (options.format == ExportFormat::Gltf) {
+                if (auto written = stageGltfLayer(staged, loaded, scene, i, stems[i], options.lod,
+                                                  step, exported);
+                    !written)
+                    return written.error();
+            } else {
+                step(0.0f, "blades, patches and maps");
+                auto entry = stageRawLayer(staged, layer, stems[i], exported);
+                if (!entry)
+                    return entry.error();
+                layers.push_back(std::move(*entry));
+            }
+            report.layers.push_back(exported);
+        }
+        if (options.format == ExportFormat::Raw) {
+            json manifest = {{"format", "grass-raw-export"},
+                             {"version", 1},
+                             {"project", loaded.project.name},
+                             {"layout", rawLayoutManifest()},
+                             {"layers", layers}};
+            if (auto written = staged.add("manifest.json", manifest.dump(2) + "\n"); !written)
+                return written.error();
+        }
+        if (progress)
+            progress(1.0f, "renaming files into place");
+        auto files = staged.commit();
+        if (!files)
+            return files.error();
+        report.files = std::move(*files);
+        return {};
+    }();
+    if (!staging) {
+        std::error_code ignored;
+        if (createdDir)
+            fs::remove(options.outDir, ignored);  // only removes it if it is still empty
+        return staging.error();
+    }
+    return report;
+}
+
+}  // namespace grass::core

@@ -1,0 +1,57 @@
+// One grass layer as a glTF 2.0 document (.gltf JSON + one .bin buffer + the maps as PNG files
+// next to it), for engines and DCC tools:
+//   node "terrain": the project's surface (POSITION, NORMAL, TEXCOORD_0, uint32 indices);
+//   node "<layer> blades": the unit blade mesh (POSITION, NORMAL; blade_instances.h) drawn once
+//     per blade through EXT_mesh_gpu_instancing: TRANSLATION, ROTATION, SCALE and the custom
+//     per-instance attributes _STIFFNESS (SCALAR), _COLOR (VEC3, tip colour), _ROOT_COLOR
+//     (VEC3), _TIP_OFFSET (VEC3, v2 − v0 in metres);
+//   images/textures "density", "soil", "light": the layer's painted maps in the terrain's UV
+//     space. They are data, not material inputs, so no material uses them: validators report
+//     them as unused (information, not a warning).
+// Metres, +Y up, right-handed, as glTF itself.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace grass::core {
+
+// A map PNG written next to the .gltf: which map ("density", "soil", "light") and its file name.
+struct GltfMapImage {
+    std::string map;
+    std::string uri;
+};
+
+struct GltfLayerDocument {
+    std::string json;
+    std::string binary;
+    std::size_t instances = 0;
+};
+
+struct GltfLayerInput {
+    const Scene* scene = nullptr;
+    std::size_t layer = 0;
+    int lod = 0;
+    // Segments along the unit blade (the project's strip segments, 1..32).
+    int segments = 8;
+    glm::vec3 groundColor{0.3f, 0.24f, 0.16f};
+    std::string binUri;
+    std::vector<GltfMapImage> maps;
+};
+
+GltfLayerDocument buildLayerGltf(const GltfLayerInput& input);
+
+// The unit blade of `shape` (SPEC §7) as triangles: positions (x, y, 0), normals −Z, rows at the
+// Bézier parameter v = i/segments where a straight blade's curve is at height 2v − v² (v1 = v2
+// at rest, blade.h), edges at x = 2·t(u, v) − 1 for u = 0, 1 (shaders/include/shapes.glsl).
+struct UnitBladeMesh {
+    std::vector<float> positions;  // xyz per vertex
+    std::vector<float> normals;
+    std::vector<std::uint32_t> indices;
+};
+UnitBladeMesh unitBladeMesh(BladeShape shape, float tipStart, int segments);
+
+}  // namespace grass::core

@@ -1,0 +1,301 @@
+// grass export (core/export/): the glTF re-imports (tinygltf) as one instance per live blade
+// with the blade's root, up, width direction, height and width; the raw files read back bit for
+// bit; LOD thins as documented; a bad output folder fails cleanly and leaves nothing behind.
+#include "export/export.h"
+
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
+#include <cstring>
+#include <fstream>
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+
+#include "export/blade_instances.h"
+#include "export/gltf_export.h"
+#include "export/raw_export.h"
+#include "support/test_paths.h"
+#include "util/atomic_file.h"
+#include "util/rng.h"
+
+namespace grass::core {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Built {
+    LoadedProject loaded;
+    Scene scene;
+};
+
+Built buildProjectAt(const fs::path& path) {
+    auto loaded = loadProject(path);
+    EXPECT_TRUE(loaded.ok()) << (loaded ? "" : loaded.error().str());
+    auto scene = buildScene(*loaded);
+    EXPECT_TRUE(scene.ok()) << (scene ? "" : scene.error().str());
+    return {std::move(*loaded), std::move(*scene)};
+}
+
+// growth_tiny: growth on, so blades lean (v2 off the up axis) and carry wilt.
+Built buildProject(const std::string& name) {
+    return buildProjectAt(test::sourceDir() / "tests/data/projects" / name);
+}
+
+// Blades on a sphere point every way: rotations far from the identity.
+Built buildBall(const fs::path& dir) {
+    std::ofstream(dir / "project.json") << R"({"format": "grass-project", "version": 1,
+        "name": "ball", "mesh": {"procedural": "sphere", "size": 2.0, "resolution": 12},
+        "layers": [{"name": "ball grass", "density": 30.0}]})";
+    return buildProjectAt(dir / "project.json");
+}
+
+std::vector<Blade> liveBlades(const LayerField& layer) {
+    std::vector<Blade> live;
+    for (const Blade& blade : layer.patched.blades)
+        if (isLiveBlade(blade))
+            live.push_back(blade);
+    return live;
+}
+
+// Decoding accepts images without looking at them: the test checks geometry only.
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+               const unsigned char*, int, void*) {
+    return true;
+}
+
+// The float32 values of a tightly packed float accessor.
+std::vector<float> readFloats(const tinygltf::Model& model, int accessorIndex, int components) {
+    const tinygltf::Accessor& accessor =
+        model.accessors.at(static_cast<std::size_t>(accessorIndex));
+    EXPECT_EQ(accessor.componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
+    const tinygltf::BufferView& view =
+        model.bufferViews.at(static_cast<std::size_t>(accessor.bufferView));
+    const tinygltf::Buffer& buffer = model.buffers.at(static_cast<std::size_t>(view.buffer));
+    std::vector<float> values(accessor.count * static_cast<std::size_t>(components));
+    EXPECT_LE(view.byteOffset + accessor.byteOffset + values.size() * 4, buffer.data.size());
+    std::memcpy(values.data(), buffer.data.data() + view.byteOffset + accessor.byteOffset,
+                values.size() * sizeof(float));
+    return values;
+}
+
+struct Reimported {
+    tinygltf::Model model;
+    std::vector<float> translation, rotation, scale, stiffness;
+};
+
+Reimported reimport(const fs::path& file) {
+    Reimported out;
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skipImage, nullptr);
+    std::string error, warning;
+    EXPECT_TRUE(loader.LoadASCIIFromFile(&out.model, &error, &warning, file.string())) << error;
+    for (const tinygltf::Node& node : out.model.nodes) {
+        const auto found = node.extensions.find("EXT_mesh_gpu_instancing");
+        if (found == node.extensions.end())
+            continue;
+        const tinygltf::Value& attributes = found->second.Get("attributes");
+        out.translation = readFloats(out.model, attributes.Get("TRANSLATION").GetNumberAsInt(), 3);
+        out.rotation = readFloats(out.model, attributes.Get("ROTATION").GetNumberAsInt(), 4);
+        out.scale = readFloats(out.model, attributes.Get("SCALE").GetNumberAsInt(), 3);
+        out.stiffness = readFloats(out.model, attributes.Get("_STIFFNESS").GetNumberAsInt(), 1);
+    }
+    return out;
+}
+
+ExportOptions options(ExportFormat format, int lod, const fs::path& outDir) {
+    ExportOptions o;
+    o.format = format;
+    o.lod = lod;
+    o.outDir = outDir;
+    return o;
+}
+
+void expectNear(glm::vec3 a, glm::vec3 b, float tolerance, const std::string& what) {
+    EXPECT_LE(glm::length(a - b), tolerance) << what;
+}
+
+void expectReimportMatches(const Built& built, const fs::path& dir, const std::string& file) {
+    auto report = exportProject(built.loaded, built.scene, options(ExportFormat::Gltf, 0, dir), {});
+    ASSERT_TRUE(report.ok()) << report.error().str();
+    const LayerField& layer = built.scene.layers[0];
+    const std::vector<Blade> blades = liveBlades(layer);
+    ASSERT_GT(blades.size(), 10u);
+    ASSERT_EQ(report->layers.size(), 1u);
+    EXPECT_EQ(report->layers[0].instances, blades.size());
+    EXPECT_EQ(report->layers[0].liveBlades, layer.liveBlades);
+
+    const Reimported gltf = reimport(dir / file);
+    ASSERT_EQ(gltf.translation.size(), blades.size() * 3);
+    ASSERT_EQ(gltf.rotation.size(), blades.size() * 4);
+    for (std::size_t i = 0; i < blades.size(); ++i) {
+        const Blade& b = blades[i];
+        const glm::vec3 root(gltf.translation[3 * i], gltf.translation[3 * i + 1],
+                             gltf.translation[3 * i + 2]);
+        const glm::quat q(gltf.rotation[4 * i + 3], gltf.rotation[4 * i], gltf.rotation[4 * i + 1],
+                          gltf.rotation[4 * i + 2]);
+        const glm::vec3 scale(gltf.scale[3 * i], gltf.scale[3 * i + 1], gltf.scale[3 * i + 2]);
+        const std::string at = "blade " + std::to_string(i);
+        EXPECT_NEAR(glm::length(q), 1.0f, 1e-6f) << at;
+        EXPECT_EQ(root, b.v0()) << at;
+        expectNear(q * glm::vec3(0, 1, 0), glm::normalize(b.up()), 1e-5f, at + " up");
+        expectNear(q * glm::vec3(1, 0, 0), widthDirection(glm::normalize(b.up()), b.theta()), 1e-5f,
+                   at + " width direction");
+        EXPECT_EQ(scale, glm::vec3(b.w(), b.h(), b.w())) << at;
+        EXPECT_EQ(gltf.stiffness[i], b.s()) << at;
+    }
+    // The terrain comes along with every vertex of the surface.
+    ASSERT_FALSE(gltf.model.meshes.empty());
+    EXPECT_EQ(gltf.model.meshes[0].name, "terrain");
+    const int positions = gltf.model.meshes[0].primitives[0].attributes.at("POSITION");
+    EXPECT_EQ(gltf.model.accessors[static_cast<std::size_t>(positions)].count,
+              built.scene.mesh.n_vertices());
+}
+
+TEST(Export, GltfReimportsEveryLiveBladeAsAnInstance) {
+    expectReimportMatches(buildProject("growth_tiny"), test::scratchDir("export_gltf"),
+                          "grass.gltf");
+    const fs::path ball = test::scratchDir("export_gltf_ball");
+    // The layer's name has a space: the file name gets '_' for it.
+    expectReimportMatches(buildBall(ball), ball / "out", "ball_grass.gltf");
+}
+
+TEST(Export, LodKeepsEveryPowerOfTwoBladeWidened) {
+    const Built built = buildProject("growth_tiny");
+    const std::vector<Blade> blades = liveBlades(built.scene.layers[0]);
+    for (int lod = 0; lod <= 3; ++lod) {
+        const std::size_t stride = std::size_t{1} << lod;
+        const std::vector<BladeInstance> instances = bladeInstances(built.scene.layers[0], lod);
+        ASSERT_EQ(instances.size(), (blades.size() + stride - 1) / stride) << "lod " << lod;
+        for (std::size_t k = 0; k < instances.size(); ++k) {
+            const Blade& b = blades[k * stride];
+            EXPECT_EQ(instances[k].translation, b.v0()) << "lod " << lod << ", instance " << k;
+            EXPECT_FLOAT_EQ(instances[k].scale.x, b.w() * static_cast<float>(stride));
+            EXPECT_EQ(instances[k].scale.y, b.h());
+        }
+    }
+}
+
+TEST(Export, RotationTakesYToUpAndXToWidthDirection) {
+    for (std::uint64_t seed = 0; seed < 500; ++seed) {
+        Rng rng(seed);
+        const glm::vec3 up = glm::normalize(glm::vec3(
+            rng.uniform(-1.0f, 1.0f), rng.uniform(0.05f, 1.0f), rng.uniform(-1.0f, 1.0f)));
+        const float theta = rng.uniform(-6.3f, 6.3f);
+        const glm::quat q = bladeRotation(up, theta);
+        EXPECT_NEAR(glm::length(q), 1.0f, 1e-6f) << "seed " << seed;
+        expectNear(q * glm::vec3(0, 1, 0), up, 1e-5f, "up, seed " + std::to_string(seed));
+        expectNear(q * glm::vec3(1, 0, 0), widthDirection(up, theta), 1e-5f,
+                   "width, seed " + std::to_string(seed));
+    }
+}
+
+TEST(Export, RawRoundTripsBitExactly) {
+    const Built built = buildProject("growth_tiny");
+    const fs::path dir = test::scratchDir("export_raw");
+    auto report = exportProject(built.loaded, built.scene, options(ExportFormat::Raw, 0, dir), {});
+    ASSERT_TRUE(report.ok()) << report.error().str();
+    const LayerField& layer = built.scene.layers[0];
+    auto blades = readRawBlades(dir / "grass.blades.bin");
+    ASSERT_TRUE(blades.ok()) << blades.error().str();
+    ASSERT_EQ(blades->size(), layer.patched.blades.size());
+    EXPECT_EQ(std::memcmp(blades->data(), layer.patched.blades.data(), blades->size() * 64), 0);
+    auto patches = readRawPatches(dir / "grass.patches.bin");
+    ASSERT_TRUE(patches.ok()) << patches.error().str();
+    ASSERT_EQ(patches->size(), layer.patched.patches.size());
+    for (std::size_t p = 0; p < patches->size(); ++p) {
+        EXPECT_EQ((*patches)[p].firstBlade, layer.patched.patches[p].firstBlade);
+        EXPECT_EQ((*patches)[p].bladeCount, layer.patched.patches[p].bladeCount);
+        EXPECT_EQ((*patches)[p].bounds, layer.patched.patches[p].bounds);
+    }
+    auto manifestText = readFile(dir / "manifest.json");
+    ASSERT_TRUE(manifestText.ok());
+    const auto manifest = nlohmann::json::parse(*manifestText);
+    EXPECT_EQ(manifest["layout"]["blade_record"]["stride"], 64);
+    EXPECT_EQ(manifest["layers"][0]["blades"]["count"], layer.patched.blades.size());
+    EXPECT_EQ(manifest["layers"][0]["patch_size"], layer.patched.patchSize);
+    EXPECT_EQ(manifest["layers"][0]["live_blades"], layer.liveBlades);
+}
+
+TEST(Export, RawRefusesLod) {
+    const Built built = buildProject("tiny");
+    const fs::path dir = test::scratchDir("export_raw_lod") / "out";
+    auto report = exportProject(built.loaded, built.scene, options(ExportFormat::Raw, 1, dir), {});
+    ASSERT_FALSE(report.ok());
+    EXPECT_EQ(report.error().path, "lod");
+    EXPECT_FALSE(fs::exists(dir));
+}
+
+TEST(Export, FileInPlaceOfFolderFailsAndWritesNothing) {
+    const Built built = buildProject("tiny");
+    const fs::path dir = test::scratchDir("export_file_as_dir");
+    { std::ofstream(dir / "out") << "not a folder"; }
+    auto report =
+        exportProject(built.loaded, built.scene, options(ExportFormat::Gltf, 0, dir / "out"), {});
+    ASSERT_FALSE(report.ok());
+    EXPECT_EQ(report.error().path, (dir / "out").string());
+    EXPECT_NE(report.error().message.find("not a folder"), std::string::npos);
+    EXPECT_EQ(*readFile(dir / "out"), "not a folder");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+TEST(Export, FolderInPlaceOfAFileLeavesNoHalfExport) {
+    const Built built = buildProject("tiny");
+    const fs::path dir = test::scratchDir("export_blocked_file");
+    // The .gltf is staged after the .bin: its failure must take the staged .bin back.
+    fs::create_directories(dir / "grass.gltf");
+    auto report = exportProject(built.loaded, built.scene, options(ExportFormat::Gltf, 0, dir), {});
+    ASSERT_FALSE(report.ok());
+    EXPECT_EQ(report.error().path, (dir / "grass.gltf").string());
+    std::vector<fs::path> left;
+    for (const auto& entry : fs::directory_iterator(dir))
+        left.push_back(entry.path().filename());
+    ASSERT_EQ(left.size(), 1u) << left.back();
+    EXPECT_EQ(left[0], "grass.gltf");
+}
+
+TEST(Export, ProgressRunsFromZeroToOne) {
+    const Built built = buildProject("tiny");
+    const fs::path dir = test::scratchDir("export_progress");
+    std::vector<float> fractions;
+    auto report =
+        exportProject(built.loaded, built.scene, options(ExportFormat::Gltf, 1, dir),
+                      [&](float fraction, std::string_view) { fractions.push_back(fraction); });
+    ASSERT_TRUE(report.ok()) << report.error().str();
+    ASSERT_GE(fractions.size(), 2u);
+    EXPECT_EQ(fractions.front(), 0.0f);
+    EXPECT_EQ(fractions.back(), 1.0f);
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+    EXPECT_EQ(report->files.size(), 2u);  // grass.bin, grass.gltf: tiny has no maps
+    EXPECT_GT(report->totalBytes(), 0u);
+}
+
+TEST(Export, UnitBladeIsOneTallTwoWideWithoutDegenerateTriangles) {
+    for (const BladeShape shape : {BladeShape::Quad, BladeShape::Triangle, BladeShape::Quadratic,
+                                   BladeShape::TriangleTip, BladeShape::Dandelion})
+        for (int segments : {1, 4, 8}) {
+            const UnitBladeMesh mesh = unitBladeMesh(shape, 0.5f, segments);
+            const std::string at =
+                std::string(bladeShapeName(shape)) + " x" + std::to_string(segments);
+            float top = 0.0f, left = 0.0f;
+            for (std::size_t v = 0; v < mesh.positions.size(); v += 3) {
+                top = std::max(top, mesh.positions[v + 1]);
+                left = std::min(left, mesh.positions[v]);
+            }
+            EXPECT_FLOAT_EQ(top, 1.0f) << at;
+            EXPECT_GE(left, -1.0f) << at;
+            ASSERT_EQ(mesh.indices.size() % 3, 0u) << at;
+            for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+                const auto p = [&](std::size_t k) {
+                    const std::size_t i = mesh.indices[t + k] * 3u;
+                    return glm::vec3(mesh.positions[i], mesh.positions[i + 1],
+                                     mesh.positions[i + 2]);
+                };
+                const glm::vec3 n = glm::cross(p(1) - p(0), p(2) - p(0));
+                // Counter-clockwise seen from −Z, the normal's side.
+                EXPECT_LT(n.z, 0.0f) << at << ", triangle " << t / 3;
+            }
+        }
+}
+
+}  // namespace
+}  // namespace grass::core
