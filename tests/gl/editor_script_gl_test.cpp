@@ -1,0 +1,120 @@
+// The editor replaying recorded input under Xvfb (issue 8: `grass-editor --script`): a brush
+// stroke with Ctrl held erases grass where it passes, Ctrl+Z brings the field back exactly as it
+// was, Ctrl+Shift+Z takes it away again, and Ctrl+S saves the painted map next to the project.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include "maps/map_image.h"
+#include "project/project.h"
+#include "support/test_paths.h"
+#include "util/image_file.h"
+
+namespace grass::test {
+namespace {
+
+constexpr int WIDTH = 900, HEIGHT = 560;
+// The 3D view in the window: right of the 330-point side panel, between the menu bar and the
+// status bar (whose timings differ from frame to frame).
+constexpr int VIEW_X0 = 340, VIEW_Y0 = 30, VIEW_X1 = WIDTH, VIEW_Y1 = HEIGHT - 30;
+
+// Share of the view's pixels whose colour differs by more than 24/255 in some channel.
+double changedShare(const Rgba8Pixels& a, const Rgba8Pixels& b) {
+    std::size_t changed = 0, total = 0;
+    for (int y = VIEW_Y0; y < VIEW_Y1; ++y)
+        for (int x = VIEW_X0; x < VIEW_X1; ++x, ++total) {
+            const std::size_t i = (std::size_t(y) * WIDTH + std::size_t(x)) * 4;
+            for (std::size_t c = 0; c < 3; ++c)
+                if (std::abs(int(a.pixels[i + c]) - int(b.pixels[i + c])) > 24) {
+                    ++changed;
+                    break;
+                }
+        }
+    return double(changed) / double(total);
+}
+
+int runEditor(const std::filesystem::path& dir, const std::string& arguments) {
+    const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' " +
+                                std::string(GRASS_EDITOR_EXE) + " " + arguments + " > " +
+                                (dir / "log.txt").string() + " 2>&1";
+    return std::system(command.c_str());
+}
+
+TEST(EditorScript, AStrokeUndoRedoAndSaveReplayedUnderXvfb) {
+    const auto dir = scratchDir("editor_script");
+    std::ofstream(dir / "project.json") << R"({
+  "format": "grass-project", "version": 1, "name": "tiny",
+  "mesh": {"procedural": "plane", "size": 3, "resolution": 4},
+  "layers": [{"name": "grass", "density": 300, "map_resolution": [96, 96]}],
+  "cameras": [{"name": "above", "position": [0, 3.2, 2.2], "target": [0, 0, 0]}],
+  "render": {"width": 900, "height": 560, "geometry": "strips", "msaa": 0}
+})";
+    // The pointer rests over the side panel for every screenshot, so no brush ring shows.
+    std::ofstream(dir / "session.txt") << R"(# paint a bare path across the field, undo, redo, save
+move 100 500
+screenshot before.png
+key b
+hold ctrl
+drag 420 280 860 300 12
+hold none
+move 100 500
+screenshot painted.png
+key ctrl+z
+wait 1
+screenshot undone.png
+key ctrl+shift+z
+wait 1
+screenshot redone.png
+key ctrl+s
+wait 1
+)";
+    const int status = runEditor(dir, dir.string() + " --no-physics --script " +
+                                          (dir / "session.txt").string());
+    ASSERT_EQ(status, 0) << "see " << (dir / "log.txt");
+    auto before = readRgba8Image((dir / "before.png").string());
+    auto painted = readRgba8Image((dir / "painted.png").string());
+    auto undone = readRgba8Image((dir / "undone.png").string());
+    auto redone = readRgba8Image((dir / "redone.png").string());
+    ASSERT_TRUE(before.ok() && painted.ok() && undone.ok() && redone.ok());
+    ASSERT_EQ(before->width, WIDTH);
+    ASSERT_EQ(before->height, HEIGHT);
+
+    // The stroke shows: a path of the view changed. Without physics the renderer is
+    // deterministic, so the undone field is the first one again: a few pixels may differ where
+    // anti-aliased edges meet (the threshold is 24/255), none in bulk.
+    EXPECT_GT(changedShare(before.value(), painted.value()), 0.02);
+    EXPECT_LT(changedShare(before.value(), undone.value()), 0.001);
+    EXPECT_LT(changedShare(painted.value(), redone.value()), 0.001);
+
+    // Ctrl+S wrote the map and named it in the project.
+    auto saved = core::loadProject(dir);
+    ASSERT_TRUE(saved.ok()) << saved.error().str();
+    const std::string mapFile = saved->project.layers.front().densityMap;
+    ASSERT_FALSE(mapFile.empty());
+    auto map = core::loadMapImageAt(dir / mapFile, 96, 96);
+    ASSERT_TRUE(map.ok()) << map.error().str();
+    float lowest = 1.0f;
+    for (const float v : map->texels)
+        lowest = std::min(lowest, v);
+    EXPECT_LT(lowest, 0.6f);
+    EXPECT_EQ(map->maxValue(), 1.0f);
+}
+
+TEST(EditorScript, ABadScriptIsRefusedBeforeAnyWindowOpens) {
+    const auto dir = scratchDir("editor_script_bad");
+    std::ofstream(dir / "bad.txt") << "move 10 10\ndrag 1 2 3\n";
+    const std::string command = std::string(GRASS_EDITOR_EXE) + " --script " +
+                                (dir / "bad.txt").string() + " > " +
+                                (dir / "log.txt").string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    std::ifstream log(dir / "log.txt");
+    const std::string text((std::istreambuf_iterator<char>(log)), {});
+    EXPECT_NE(text.find("bad.txt:2: drag: expected X0 Y0 X1 Y1 N"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace grass::test
