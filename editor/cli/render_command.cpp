@@ -9,7 +9,9 @@
 #include "headless_context.h"
 #include "mesh/gltf_loader.h"
 #include "offscreen_render.h"
+#include "render_turntable.h"
 #include "scene/scene_physics.h"
+#include "scene/turntable.h"
 #include "simulation_runner.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
@@ -32,7 +34,7 @@ struct RenderArgs {
                 animation = "project";
     double timeS = 0.0;
     double lodDistanceM = render::CullSettings{}.lodDistanceM;
-    int width = 0, height = 0, frames = 3, blades = 60000;
+    int width = 0, height = 0, frames = 3, blades = 60000, turntable = 0;
     std::uint64_t seed = 0;
     bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
     bool lightPerVertex = false;
@@ -141,6 +143,27 @@ Result<double> simulateBeforeRender(const RenderArgs& args, const core::LoadedPr
     return run->msPerStep;
 }
 
+// `--turntable N`: the views and their sheet (render_turntable.h); --stats gets the last view.
+int finishTurntable(const RenderArgs& args, const core::Scene& scene,
+                    const core::OrbitCamera& camera, const render::OffscreenRequest& request,
+                    double physicsMsPerStep) {
+    auto run = writeTurntable(scene, camera, request, args.turntable, args.out);
+    if (!run) {
+        printError("render", run.error().str());
+        return EXIT_FAILED;
+    }
+    if (args.stats.empty())
+        return 0;
+    if (auto written =
+            writeFileAtomic(args.stats, statsJson(run->last, physicsMsPerStep, run->lastWallMs));
+        !written) {
+        printError("render", written.error().str());
+        return EXIT_FAILED;
+    }
+    std::printf("wrote %s\n", args.stats.c_str());
+    return 0;
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& argv) {
@@ -192,6 +215,11 @@ int runRender(const std::vector<std::string>& argv) {
     parser.choice("--msaa", {"project", "0", "1", "2", "4", "8"},
                   "multisample anti-aliasing samples per pixel", &args.msaa);
     parser.integer("--frames", "frames to draw and time", &args.frames, 1, 1000);
+    parser.integer("--turntable",
+                   "render N views (0: one image) orbiting 360° about the vertical axis through "
+                   "the camera's target, each drawn once, to <out stem>_0000.png ... and a contact "
+                   "sheet <out stem>_sheet.png; with --time every view shows the same moment",
+                   &args.turntable, core::TURNTABLE_MIN_FRAMES, core::TURNTABLE_MAX_FRAMES);
     parser.integer("--blades", "with --mesh: about how many blades to grow", &args.blades, 1,
                    20000000);
     parser.number("--time", "T",
@@ -315,6 +343,8 @@ int runRender(const std::vector<std::string>& argv) {
             request.options.shape = *shape;
     }
 
+    if (args.turntable > 0)
+        return finishTurntable(args, scene, *camera, request, physicsMsPerStep);
     auto rendered = render::renderOffscreen(scene, *camera, request);
     if (!rendered) {
         printError("render", rendered.error().str());
