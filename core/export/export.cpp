@@ -1,7 +1,6 @@
 #include "export/export.h"
 
 #include <algorithm>
-#include <cctype>
 #include <set>
 #include <system_error>
 
@@ -168,10 +167,7 @@ std::uint64_t ExportReport::totalBytes() const {
 }
 
 std::string exportFileStem(const std::string& layerName) {
-    std::string out;
-    for (const char c : layerName)
-        out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
-    return out.empty() ? "layer" : out;
+    return fileSafeName(layerName);
 }
 
 Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& scene,

@@ -95,11 +95,15 @@ Result<void> saveProject(const Project& project, const fs::path& file) {
     return writeFileAtomic(file, text);
 }
 
-std::string defaultMapFile(const std::string& layerName, std::string_view mapName) {
+std::string fileSafeName(const std::string& name) {
     std::string safe;
-    for (const char c : layerName)
+    for (const char c : name)
         safe += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
-    return "maps/" + safe + "-" + std::string(mapName) + ".png";
+    return safe.empty() ? "layer" : safe;
+}
+
+std::string defaultMapFile(const std::string& layerName, std::string_view mapName) {
+    return "maps/" + fileSafeName(layerName) + "-" + std::string(mapName) + ".png";
 }
 
 std::vector<std::string> projectAssetPaths(const Project& project) {

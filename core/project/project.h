@@ -225,8 +225,10 @@ Result<void> saveProject(const Project& project, const std::filesystem::path& fi
 // folder must bring along.
 std::vector<std::string> projectAssetPaths(const Project& project);
 
-// Where a layer's painted map goes when the layer names none yet: maps/<layer>-<map>.png, the
-// layer's name kept to characters safe in any file system (never forming "..").
+// A name kept to characters safe in any file system (letters, digits, '-', '_'; anything else
+// becomes '_'), so it never forms ".." or a path; "layer" when empty.
+std::string fileSafeName(const std::string& name);
+// Where a layer's painted map goes when the layer names none yet: maps/<layer>-<map>.png.
 std::string defaultMapFile(const std::string& layerName, std::string_view mapName);
 
 // Resolves an asset path relative to the project folder; refuses absolute paths and paths that

@@ -63,7 +63,7 @@ bool applyPaint(EditorState& s, const core::PaintEdit& edit, bool undoing) {
 }
 
 bool step(EditorState& s, bool undoing) {
-    if (s.toolDragActive)
+    if (s.toolDragActive || s.busy())
         return false;
     const core::Edit* edit = undoing ? s.history.undo() : s.history.redo();
     if (!edit)

@@ -417,7 +417,8 @@ int main(int argc, char** argv) {
         // What the panels asked for.
         if (state.quitRequested)
             break;
-        if (state.newRequested) {
+        // An export reads the scene on its worker: replacing or re-growing it waits.
+        if (state.newRequested && !state.busy()) {
             state.newRequested = false;
             state.loaded = core::LoadedProject{core::Project{}, std::filesystem::current_path(),
                                                {}};
@@ -425,7 +426,7 @@ int main(int argc, char** argv) {
             state.message = "new project (not saved)";
             rebuild(true);
         }
-        if (!state.openRequested.empty()) {
+        if (!state.openRequested.empty() && !state.busy()) {
             auto opened = core::loadProject(state.openRequested);
             state.openRequested.clear();
             if (!opened) {
@@ -438,7 +439,7 @@ int main(int argc, char** argv) {
             }
         }
         // Re-grow once the edit has ended, not on every frame of a drag.
-        if (state.rebuildPending && !state.toolDragActive &&
+        if (state.rebuildPending && !state.toolDragActive && !state.busy() &&
             (!ui || ui->context().activeId().value == 0)) {
             state.rebuildPending = false;
             rebuild(false);
@@ -504,6 +505,14 @@ int main(int argc, char** argv) {
             ui->draw(width, height);
         } else {
             target->blitTo(0, width, height);
+        }
+        if (!state.screenshotRequested.empty()) {
+            const gl::Rgba8Image shown = gl::readFramebuffer(0, width, height);
+            const auto written = writeRgba8Image(state.screenshotRequested, shown.width,
+                                                 shown.height, shown.pixels);
+            state.message = written ? "saved " + state.screenshotRequested
+                                    : "screenshot not saved: " + written.error().str();
+            state.screenshotRequested.clear();
         }
         if (!scriptFile.empty() && !script[static_cast<std::size_t>(frame)].screenshot.empty()) {
             const std::string& shot = script[static_cast<std::size_t>(frame)].screenshot;

@@ -48,6 +48,23 @@ void fileMenu(ui::Ui& bar, EditorState& s) {
             s.pathText = s.loaded.file.string();
         }
         m.separator();
+        if (ui::menuItem(m, "Export…")) {
+            s.exportDialog = true;
+            if (s.exportDir.empty())
+                s.exportDir = (s.loaded.folder / "export").string();
+        }
+        if (ui::menuItem(m, "Save screenshot")) {
+            namespace fs = std::filesystem;
+            const fs::path folder = s.loaded.folder.empty() ? fs::current_path() : s.loaded.folder;
+            for (int n = 1; n < 10000; ++n) {
+                const fs::path shot = folder / ("screenshot-" + std::to_string(n) + ".png");
+                if (!fs::exists(shot)) {
+                    s.screenshotRequested = shot.string();
+                    break;
+                }
+            }
+        }
+        m.separator();
         if (ui::menuItem(m, "Quit"))
             askQuit(s);
     });
@@ -257,6 +274,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
     central.max.y = bar.min.y;
     fileDialogWindow(ctx, s);
     quitDialogWindow(ctx, s);
+    exportWindow(ctx, s);
     return central;
 }
 

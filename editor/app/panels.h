@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -19,6 +20,7 @@
 #include "edit/gizmo_drag.h"
 #include "edit/history.h"
 #include "edit/timeline.h"
+#include "export_job.h"
 #include "viewport_tools.h"
 
 #include "project/project.h"
@@ -71,6 +73,16 @@ struct EditorState {
     std::vector<std::pair<std::size_t, core::RegrowReport>> regrown;
     // The animation time of wind and colliders: play, pause, step, loop, speed.
     core::Timeline timeline;
+    // File → Export…: the dialog's choices and the running (or last) job. While it runs the
+    // scene must stay as it is: tools, undo and re-grows wait (busy()).
+    bool exportDialog = false;
+    std::string exportDir;
+    int exportFormat = 0;  // core::ExportFormat
+    int exportLod = 0;
+    std::shared_ptr<ExportJob> exportJob;
+    bool busy() const { return exportJob && !exportJob->done(); }
+    // File → Save screenshot: where main.cpp saves the next frame's window (empty: none).
+    std::string screenshotRequested;
     // The last scrub, step or play of the timeline panel, for main.cpp (a jump back re-runs the
     // simulation from rest).
     core::TimeUpdate timeJump;
@@ -104,6 +116,11 @@ bool saveTo(EditorState& state, const std::string& file);
 // unsaved, else through the confirmation window.
 void askLeave(EditorState& state, LeaveAction action, const std::string& openPath = {});
 void askQuit(EditorState& state);
+
+// File → Export… (panels_export.cpp): the dialog, and the progress window while the job runs.
+void exportWindow(ui::Context& ctx, EditorState& state);
+// Starts exporting the live scene with the dialog's choices.
+void startExport(EditorState& state);
 
 // The viewport tools' settings (brush, gizmo) and the timeline (panels_tools.cpp).
 void toolSection(ui::Ui& ui, EditorState& state);

@@ -299,7 +299,7 @@ glm::vec3 placedPosition(const core::Project& project, PlacedObject object, floa
 
 bool runViewportTool(EditorState& state, const core::OrbitCamera& camera,
                      const ViewportPointer& pointer) {
-    if (!state.tools || !state.scene)
+    if (!state.tools || !state.scene || state.busy())
         return false;
     // A stroke ends when the tool changes under it.
     if (state.tool != ViewportTool::Paint && state.tools->painter.active())

@@ -1,0 +1,58 @@
+#include "export_job.h"
+
+#include <cstdio>
+
+namespace grass::editor {
+
+ExportJob::ExportJob(core::LoadedProject loaded, const core::Scene& scene,
+                     core::ExportOptions options)
+    : mLoaded(std::move(loaded)), mScene(&scene), mOptions(std::move(options)) {
+    mWorker = std::thread([this] {
+        auto result = core::exportProject(mLoaded, *mScene, mOptions,
+                                          [this](float fraction, std::string_view stage) {
+                                              mFraction.store(fraction);
+                                              std::lock_guard lock(mMutex);
+                                              mStage = stage;
+                                          });
+        {
+            std::lock_guard lock(mMutex);
+            mResult.emplace(std::move(result));
+        }
+        mFraction.store(1.0f);
+        mDone.store(true);
+    });
+}
+
+ExportJob::~ExportJob() {
+    if (mWorker.joinable())
+        mWorker.join();
+}
+
+std::string ExportJob::stage() const {
+    std::lock_guard lock(mMutex);
+    return mStage;
+}
+
+bool ExportJob::succeeded() const {
+    std::lock_guard lock(mMutex);
+    return mResult && mResult->ok();
+}
+
+std::string ExportJob::summary() const {
+    std::lock_guard lock(mMutex);
+    if (!mResult)
+        return "exporting…";
+    if (!mResult->ok())
+        return "export failed: " + mResult->error().str();
+    const core::ExportReport& report = mResult->value();
+    std::size_t instances = 0;
+    for (const core::ExportedLayer& layer : report.layers)
+        instances += layer.instances;
+    char text[256];
+    std::snprintf(text, sizeof text, "exported %zu files (%.1f MB, %zu instances) to %s",
+                  report.files.size(), double(report.totalBytes()) / 1e6, instances,
+                  mOptions.outDir.string().c_str());
+    return text;
+}
+
+}  // namespace grass::editor

@@ -1,0 +1,43 @@
+// The editor's export (File → Export…): core::exportProject on a worker thread, so the window
+// keeps drawing and shows a progress bar. While the job runs the scene must not change: the
+// editor holds back painting and re-growing until done() (EditorState::busy()).
+#pragma once
+
+#include <atomic>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "export/export.h"
+
+namespace grass::editor {
+
+class ExportJob {
+public:
+    // Starts exporting `scene` (which must stay unchanged until done()) with a copy of `loaded`.
+    ExportJob(core::LoadedProject loaded, const core::Scene& scene, core::ExportOptions options);
+    ~ExportJob();  // waits for the worker
+    ExportJob(const ExportJob&) = delete;
+    ExportJob& operator=(const ExportJob&) = delete;
+
+    bool done() const { return mDone.load(); }
+    float fraction() const { return mFraction.load(); }
+    std::string stage() const;
+    // After done(): the report's one-line summary, or the error.
+    std::string summary() const;
+    bool succeeded() const;
+
+private:
+    core::LoadedProject mLoaded;
+    const core::Scene* mScene;
+    core::ExportOptions mOptions;
+    std::atomic<bool> mDone{false};
+    std::atomic<float> mFraction{0.0f};
+    mutable std::mutex mMutex;
+    std::string mStage;
+    std::optional<Result<core::ExportReport>> mResult;
+    std::thread mWorker;
+};
+
+}  // namespace grass::editor

@@ -1,0 +1,68 @@
+// File → Export…: where to, which format and LOD, then a progress bar while the worker writes.
+#include <array>
+
+#include "panels.h"
+#include "ui/text_edit.h"
+#include "ui/ui.h"
+#include "ui/window.h"
+
+namespace grass::editor {
+
+void startExport(EditorState& s) {
+    if (!s.scene || s.busy())
+        return;
+    core::ExportOptions options;
+    options.format = core::ExportFormat(s.exportFormat);
+    options.lod = options.format == core::ExportFormat::Gltf ? s.exportLod : 0;
+    std::filesystem::path dir(s.exportDir);
+    if (dir.is_relative() && !s.loaded.folder.empty())
+        dir = s.loaded.folder / dir;
+    options.outDir = dir;
+    s.exportJob = std::make_shared<ExportJob>(s.loaded, *s.scene, options);
+    s.message = "exporting to " + dir.string();
+}
+
+void exportWindow(ui::Context& ctx, EditorState& s) {
+    if (s.exportJob && s.exportJob->done() && !s.exportDialog) {
+        s.message = s.exportJob->summary();
+        s.exportJob.reset();
+    }
+    if (!s.exportDialog)
+        return;
+    const ui::Rect screen = ctx.screenRect();
+    bool open = true;
+    ui::window(
+        ctx, "Export", &open,
+        [&](ui::Ui& ui) {
+            if (s.exportJob) {
+                ui.label(s.exportJob->done() ? s.exportJob->summary() : s.exportJob->stage());
+                ui.progressBar(s.exportJob->fraction());
+                if (s.exportJob->done() && ui.button("Close").clicked()) {
+                    s.message = s.exportJob->summary();
+                    s.exportJob.reset();
+                    s.exportDialog = false;
+                }
+                return;
+            }
+            ui.label("Folder (relative to the project):");
+            ui::textEdit(ui, "##exportdir", s.exportDir, ui.availableWidth() - 8.0f);
+            static constexpr std::array<const char*, 2> FORMATS{
+                "glTF (EXT_mesh_gpu_instancing)", "raw GPU buffers"};
+            ui.comboBox("format", s.exportFormat, FORMATS);
+            if (s.exportFormat == int(core::ExportFormat::Gltf))
+                ui.slider("LOD (keep 1 in 2^N)", s.exportLod, 0, core::MAX_EXPORT_LOD);
+            ui.horizontal([&](ui::Ui& row) {
+                if (row.button("Export").clicked() && !s.exportDir.empty())
+                    startExport(s);
+                if (row.button("Cancel").clicked())
+                    s.exportDialog = false;
+            });
+        },
+        ui::Rect::fromMinSize({screen.centre().x - 230.0f, screen.centre().y - 80.0f},
+                              {460.0f, 160.0f}));
+    // Closing the window while a job runs only hides it; the status bar reports the end.
+    if (!open)
+        s.exportDialog = false;
+}
+
+}  // namespace grass::editor
