@@ -16,6 +16,7 @@
 
 #include <epoxy/gl.h>
 
+#include "autosave.h"
 #include "edit_actions.h"
 #include "editor_ui.h"
 #include "framebuffer.h"
@@ -207,6 +208,16 @@ int main(int argc, char** argv) {
                 "replay recorded input (pointer, keys, waits, screenshots; see "
                 "editor/app/input_script.h), one step of physics per frame, then exit",
                 &scriptFile);
+    double autosaveS = 180.0;
+    parser.number("--autosave-s", "S",
+                  "seconds between autosaves of unsaved changes to <project>.autosave.json (0: "
+                  "never)",
+                  &autosaveS, 0.0, 86400.0, "180");
+    bool recover = false;
+    parser.flag("--recover",
+                "take back an autosave left by a session that did not close cleanly without "
+                "asking (otherwise a window offers it)",
+                &recover);
     parser.flag("--no-physics",
                 "show the field at rest (by default gravity, wind and colliders run live on the "
                 "GPU, one physics step of the project's step_s per elapsed step, at most 4 per "
@@ -260,6 +271,8 @@ int main(int argc, char** argv) {
     state.tools = live.tools.get();
     state.options = render::renderOptionsFor(project, gl::isSoftwareRenderer());
     editor::resetHistory(state);
+    state.recoveryOffer = editor::findAutosave(state.loaded);
+    state.recoverRequested = recover && state.recoveryOffer.has_value();
     const auto resetTimeline = [&] {
         state.timeline = core::timelineFor(state.loaded.project);
         // A minute at least, so an unkeyed scene does not restart its sway every few seconds.
@@ -315,14 +328,19 @@ int main(int argc, char** argv) {
     bool cameraDrag = false;  // a drag that began in the viewport stays the camera's
     bool toolDrag = false;    // a drag that began on a tool (brush, gizmo) stays the tool's
     std::string shownTitle;
+    double autosaveDueS = autosaveS;
     const auto startTime = std::chrono::steady_clock::now();
     auto lastStatus = startTime;
     auto lastFrameEnd = startTime;
     double fps = 0.0;
     while (true) {
         if ((*window)->shouldClose()) {
-            if (!ui || !state.dirty || replay)
+            if (!ui || !state.dirty || replay) {
+                // A clean close leaves nothing to recover (an autosave still on offer stays).
+                if (!state.dirty && !state.recoveryOffer)
+                    editor::removeAutosave(state.loaded);
                 break;
+            }
             (*window)->cancelClose();  // ask first
             editor::askQuit(state);
         }
@@ -414,9 +432,13 @@ int main(int argc, char** argv) {
         }
         editor::recordProjectEdit(state, ui && ui->context().activeId().value != 0);
 
-        // What the panels asked for.
-        if (state.quitRequested)
+        // What the panels asked for. Quitting (after saving, or choosing to drop the changes)
+        // leaves nothing to recover.
+        if (state.quitRequested) {
+            if (!state.recoveryOffer)
+                editor::removeAutosave(state.loaded);
             break;
+        }
         // An export reads the scene on its worker: replacing or re-growing it waits.
         if (state.newRequested && !state.busy()) {
             state.newRequested = false;
@@ -438,6 +460,13 @@ int main(int argc, char** argv) {
                 rebuild(true);
             }
         }
+        if (state.recoverRequested && !state.busy()) {
+            state.recoverRequested = false;
+            state.loaded = std::move(*state.recoveryOffer);
+            state.recoveryOffer.reset();
+            rebuild(true);
+            editor::markRecoveredMaps(state);
+        }
         // Re-grow once the edit has ended, not on every frame of a drag.
         if (state.rebuildPending && !state.toolDragActive && !state.busy() &&
             (!ui || ui->context().activeId().value == 0)) {
@@ -451,6 +480,19 @@ int main(int argc, char** argv) {
                 live.physics->gpu.uploadRegrown(layer, *live.scene, report.patches);
         }
         state.regrown.clear();
+        // Autosave on the simulation's clock when replaying, so scripts see it at a fixed frame.
+        autosaveDueS -= replay ? state.timeline.stepS()
+                               : std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                                               lastFrameEnd)
+                                     .count();
+        if (autosaveS > 0.0 && autosaveDueS <= 0.0 && state.dirty && !state.busy() &&
+            !state.toolDragActive) {
+            autosaveDueS = autosaveS;
+            if (auto written = editor::writeAutosave(state); !written)
+                state.message = "autosave failed: " + written.error().str();
+            else if (!state.loaded.file.empty())
+                state.message = "autosaved to " + editor::autosavePath(state.loaded).string();
+        }
         const std::string title = "grass — " + state.loaded.project.name +
                                   (state.dirty ? " *" : "");
         if (title != shownTitle) {

@@ -1,5 +1,6 @@
 #include "panels.h"
 
+#include "autosave.h"
 #include "edit_actions.h"
 
 #include <cstdio>
@@ -217,6 +218,8 @@ bool saveTo(EditorState& s, const std::string& file) {
         s.message = "not saved: " + saved.error().str();
         return false;
     }
+    // Saved: the autosave side files (of where the project was) have nothing left to recover.
+    removeAutosave(s.loaded);
     s.loaded.file = path;
     s.loaded.folder = folder;
     s.dirty = false;
@@ -275,6 +278,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
     fileDialogWindow(ctx, s);
     quitDialogWindow(ctx, s);
     exportWindow(ctx, s);
+    recoveryWindow(ctx, s);
     return central;
 }
 

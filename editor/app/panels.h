@@ -81,6 +81,10 @@ struct EditorState {
     int exportLod = 0;
     std::shared_ptr<ExportJob> exportJob;
     bool busy() const { return exportJob && !exportJob->done(); }
+    // An autosave left by a session that did not close cleanly, offered back at start; main.cpp
+    // adopts it when the user picks Recover.
+    std::optional<core::LoadedProject> recoveryOffer;
+    bool recoverRequested = false;
     // File → Save screenshot: where main.cpp saves the next frame's window (empty: none).
     std::string screenshotRequested;
     // The last scrub, step or play of the timeline panel, for main.cpp (a jump back re-runs the

@@ -102,6 +102,54 @@ wait 1
     EXPECT_EQ(map->maxValue(), 1.0f);
 }
 
+// A session that ends without saving (the script stops as a crash would) leaves its autosave;
+// the next start takes it back (--recover answers the recovery window's question), and a save
+// then writes the painted map under its real name and removes the side files.
+TEST(EditorScript, AnUnsavedStrokeIsAutosavedAndRecoveredAfterACrash) {
+    const auto dir = scratchDir("editor_autosave");
+    const std::string projectText = R"({
+  "format": "grass-project", "version": 1, "name": "tiny",
+  "mesh": {"procedural": "plane", "size": 3, "resolution": 4},
+  "layers": [{"name": "grass", "density": 300, "map_resolution": [96, 96]}],
+  "cameras": [{"name": "above", "position": [0, 3.2, 2.2], "target": [0, 0, 0]}],
+  "render": {"width": 900, "height": 560, "geometry": "strips", "msaa": 0}
+})";
+    std::ofstream(dir / "project.json") << projectText;
+    std::ofstream(dir / "paint.txt") << R"(key b
+hold ctrl
+drag 420 280 860 300 12
+hold none
+wait 40
+)";
+    // --autosave-s 0.5 at one 1/60 s step a frame: an autosave 30 frames after the stroke.
+    ASSERT_EQ(runEditor(dir, dir.string() + " --no-physics --autosave-s 0.5 --script " +
+                                 (dir / "paint.txt").string()),
+              0)
+        << "see " << (dir / "log.txt");
+    ASSERT_TRUE(std::filesystem::exists(dir / "project.autosave.json"));
+    ASSERT_TRUE(std::filesystem::exists(dir / "maps/grass-density.autosave.png"));
+    // The real project was never touched.
+    std::ifstream original(dir / "project.json");
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(original)), {}), projectText);
+
+    std::ofstream(dir / "save.txt") << "wait 2\nkey ctrl+s\nwait 1\n";
+    ASSERT_EQ(runEditor(dir, dir.string() + " --no-physics --recover --script " +
+                                 (dir / "save.txt").string()),
+              0)
+        << "see " << (dir / "log.txt");
+    auto saved = core::loadProject(dir);
+    ASSERT_TRUE(saved.ok()) << saved.error().str();
+    EXPECT_EQ(saved->project.layers.front().densityMap, "maps/grass-density.png");
+    auto map = core::loadMapImageAt(dir / "maps/grass-density.png", 96, 96);
+    ASSERT_TRUE(map.ok()) << map.error().str();
+    float lowest = 1.0f;
+    for (const float v : map->texels)
+        lowest = std::min(lowest, v);
+    EXPECT_LT(lowest, 0.6f);
+    EXPECT_FALSE(std::filesystem::exists(dir / "project.autosave.json"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "maps/grass-density.autosave.png"));
+}
+
 TEST(EditorScript, ABadScriptIsRefusedBeforeAnyWindowOpens) {
     const auto dir = scratchDir("editor_script_bad");
     std::ofstream(dir / "bad.txt") << "move 10 10\ndrag 1 2 3\n";

@@ -1,0 +1,42 @@
+// Autosave and crash recovery (issue 8). Every few minutes, while there are unsaved changes, the
+// editor writes the project to a side file next to it, <stem>.autosave.json, and each map painted
+// since the last save to its own side file, <map>.autosave.png (a new map: maps/<layer>-<map>
+// .autosave.png), which that side project names. project.json and the real maps are never
+// touched, so a crash loses at most one interval and never the last saved state. A save, or
+// quitting without keeping the changes, removes the side files; at the next start they mean the
+// editor did not close cleanly, and it offers the autosaved work back.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+#include "panels.h"
+#include "util/result.h"
+
+namespace grass::editor {
+
+// <folder>/<stem>.autosave.json for the project file; empty for a project never saved.
+std::filesystem::path autosavePath(const core::LoadedProject& loaded);
+
+// "maps/grass-soil.png" ↔ "maps/grass-soil.autosave.png".
+std::string autosaveMapName(const std::string& relative);
+std::optional<std::string> mapNameOfAutosave(const std::string& relative);
+
+// Writes the side project and the painted maps' side files (atomic, each). Nothing when the
+// project has no file yet.
+Result<void> writeAutosave(const EditorState& state);
+// Removes the side project and every side map it names.
+void removeAutosave(const core::LoadedProject& loaded);
+
+// The autosaved project, if one is left from a session that did not close cleanly: the project
+// as the user had it, its map fields naming the side maps (and its file the real project's).
+std::optional<core::LoadedProject> findAutosave(const core::LoadedProject& loaded);
+// Once the scene is grown from the recovered project (so it holds the side maps' texels): the
+// map fields get their real names back and those maps count as painted, so the next save
+// writes them where they belong; the project counts as unsaved.
+void markRecoveredMaps(EditorState& state);
+
+// The "Recover unsaved work?" window while state.recoveryOffer is set.
+void recoveryWindow(ui::Context& ctx, EditorState& state);
+
+}  // namespace grass::editor
