@@ -25,6 +25,7 @@
 #include "scene/scene_physics.h"
 #include "scene_physics_gpu.h"
 #include "scene_renderer.h"
+#include "turntable_files.h"
 #include "util/arg_parser.h"
 #include "util/image_file.h"
 #include "input_script.h"
@@ -35,6 +36,9 @@
 namespace {
 
 using namespace grass;
+
+// File → Save turntable: a 15° step, smooth enough to read as a turn on the contact sheet.
+constexpr int TURNTABLE_VIEWS = 24;
 
 int fail(const std::string& message, int code = 1) {
     std::fprintf(stderr, "grass-editor: %s\n", message.c_str());
@@ -555,6 +559,21 @@ int main(int argc, char** argv) {
             state.message = written ? "saved " + state.screenshotRequested
                                     : "screenshot not saved: " + written.error().str();
             state.screenshotRequested.clear();
+        }
+        if (!state.turntableRequested.empty()) {
+            // The views show the field as grown (at rest), from the viewport's camera and size.
+            render::OffscreenRequest request;
+            request.width = view.w;
+            request.height = view.h;
+            request.frames = 1;
+            request.options = state.options;
+            auto turned = render::writeTurntable(*live.scene, *camera, request, TURNTABLE_VIEWS,
+                                                 state.turntableRequested);
+            state.message = turned ? "saved a turntable of " +
+                                         std::to_string(turned->framesWritten) + " views: " +
+                                         turned->sheet.string()
+                                   : "turntable not saved: " + turned.error().str();
+            state.turntableRequested.clear();
         }
         if (!scriptFile.empty() && !script[static_cast<std::size_t>(frame)].screenshot.empty()) {
             const std::string& shot = script[static_cast<std::size_t>(frame)].screenshot;

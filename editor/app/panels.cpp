@@ -28,6 +28,19 @@ std::filesystem::path projectFileFor(const std::string& path) {
     return p / "project.json";
 }
 
+// <project folder>/<stem>-<n><extension> with the first n whose file (and turntable frames)
+// do not exist yet, so repeated shots never overwrite each other.
+std::string freshPath(const EditorState& s, const std::string& stem, const std::string& extension) {
+    namespace fs = std::filesystem;
+    const fs::path folder = s.loaded.folder.empty() ? fs::current_path() : s.loaded.folder;
+    for (int n = 1;; ++n) {
+        const std::string name = stem + "-" + std::to_string(n);
+        if (!fs::exists(folder / (name + extension)) &&
+            !fs::exists(folder / (name + "_0000" + extension)))
+            return (folder / (name + extension)).string();
+    }
+}
+
 void fileMenu(ui::Ui& bar, EditorState& s) {
     ui::menu(bar, "File", [&](ui::Ui& m) {
         if (ui::menuItem(m, "New"))
@@ -54,17 +67,10 @@ void fileMenu(ui::Ui& bar, EditorState& s) {
             if (s.exportDir.empty())
                 s.exportDir = (s.loaded.folder / "export").string();
         }
-        if (ui::menuItem(m, "Save screenshot")) {
-            namespace fs = std::filesystem;
-            const fs::path folder = s.loaded.folder.empty() ? fs::current_path() : s.loaded.folder;
-            for (int n = 1; n < 10000; ++n) {
-                const fs::path shot = folder / ("screenshot-" + std::to_string(n) + ".png");
-                if (!fs::exists(shot)) {
-                    s.screenshotRequested = shot.string();
-                    break;
-                }
-            }
-        }
+        if (ui::menuItem(m, "Save screenshot"))
+            s.screenshotRequested = freshPath(s, "screenshot", ".png");
+        if (ui::menuItem(m, "Save turntable (24 views)"))
+            s.turntableRequested = freshPath(s, "turntable", ".png");
         m.separator();
         if (ui::menuItem(m, "Quit"))
             askQuit(s);

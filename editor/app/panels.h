@@ -87,6 +87,8 @@ struct EditorState {
     bool recoverRequested = false;
     // File → Save screenshot: where main.cpp saves the next frame's window (empty: none).
     std::string screenshotRequested;
+    // File → Save turntable: the first view's path (main.cpp renders TURNTABLE_VIEWS views).
+    std::string turntableRequested;
     // The last scrub, step or play of the timeline panel, for main.cpp (a jump back re-runs the
     // simulation from rest).
     core::TimeUpdate timeJump;

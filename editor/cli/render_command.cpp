@@ -9,7 +9,7 @@
 #include "headless_context.h"
 #include "mesh/gltf_loader.h"
 #include "offscreen_render.h"
-#include "render_turntable.h"
+#include "turntable_files.h"
 #include "scene/scene_physics.h"
 #include "scene/turntable.h"
 #include "simulation_runner.h"
@@ -143,11 +143,11 @@ Result<double> simulateBeforeRender(const RenderArgs& args, const core::LoadedPr
     return run->msPerStep;
 }
 
-// `--turntable N`: the views and their sheet (render_turntable.h); --stats gets the last view.
+// `--turntable N`: the views and their sheet (turntable_files.h); --stats gets the last view.
 int finishTurntable(const RenderArgs& args, const core::Scene& scene,
                     const core::OrbitCamera& camera, const render::OffscreenRequest& request,
                     double physicsMsPerStep) {
-    auto run = writeTurntable(scene, camera, request, args.turntable, args.out);
+    auto run = render::writeTurntable(scene, camera, request, args.turntable, args.out);
     if (!run) {
         printError("render", run.error().str());
         return EXIT_FAILED;

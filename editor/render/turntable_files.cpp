@@ -1,4 +1,4 @@
-#include "render_turntable.h"
+#include "turntable_files.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,17 +9,17 @@
 #include "util/contact_sheet.h"
 #include "util/image_file.h"
 
-namespace grass::cli {
+namespace grass::render {
 
 Result<TurntableRun> writeTurntable(const core::Scene& scene, const core::OrbitCamera& start,
-                                    const render::OffscreenRequest& request, int frameCount,
+                                    const OffscreenRequest& request, int frameCount,
                                     const std::filesystem::path& out) {
     const auto begin = std::chrono::steady_clock::now();
     const ContactSheetLayout layout = contactSheetLayout(frameCount, request.width, request.height);
     Rgba8Pixels sheet = blankContactSheet(layout);
     TurntableRun run;
     double wallSumMs = 0.0;
-    auto sink = [&](int frame, const gl::Rgba8Image& image, const render::FrameTimings& timings,
+    auto sink = [&](int frame, const gl::Rgba8Image& image, const FrameTimings& timings,
                     double wallMs) -> Result<void> {
         const std::filesystem::path file = core::turntableFramePath(out, frame, frameCount);
         if (auto written = writeRgba8Image(file, image.width, image.height, image.pixels); !written)
@@ -39,7 +39,7 @@ Result<TurntableRun> writeTurntable(const core::Scene& scene, const core::OrbitC
         wallSumMs += wallMs;
         return {};
     };
-    if (auto turned = render::renderTurntable(scene, start, request, frameCount, sink); !turned)
+    if (auto turned = renderTurntable(scene, start, request, frameCount, sink); !turned)
         return turned.error();
     run.sheet = core::turntableSheetPath(out);
     if (auto written = writeRgba8Image(run.sheet, sheet.width, sheet.height, sheet.pixels);
@@ -59,4 +59,4 @@ Result<TurntableRun> writeTurntable(const core::Scene& scene, const core::OrbitC
     return run;
 }
 
-}  // namespace grass::cli
+}  // namespace grass::render

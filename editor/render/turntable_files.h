@@ -1,5 +1,5 @@
-// `grass render --turntable N`: renders the turn (editor/render/turntable_render.h) and writes
-// each view to <out stem>_0000.png ... and a contact sheet of the turn to <out stem>_sheet.png
+// Turntable files, for `grass render --turntable N` and the editor's File menu: renders the turn
+// (turntable_render.h) and writes each view to <out stem>_0000.png ... and a contact sheet of the turn to <out stem>_sheet.png
 // (the extension follows --out), with a progress line per view on stderr.
 #pragma once
 
@@ -7,14 +7,14 @@
 
 #include "offscreen_render.h"
 
-namespace grass::cli {
+namespace grass::render {
 
 struct TurntableRun {
     int framesWritten = 0;
     std::filesystem::path firstFrame, lastFrame, sheet;
     double meanWallMs = 0.0;    // per view: draw, glFinish (not the read-back or the file)
     double totalMs = 0.0;       // the whole turn: renderer set-up, views, files, sheet
-    render::FrameTimings last;  // GPU timings of the last view
+    FrameTimings last;  // GPU timings of the last view
     double lastWallMs = 0.0;
 };
 
@@ -22,7 +22,7 @@ struct TurntableRun {
 // so an interrupted turn leaves whole images of the views done, never a half-written one; the
 // sheet is written last. Prints where the files went and the time per view on stdout.
 Result<TurntableRun> writeTurntable(const core::Scene& scene, const core::OrbitCamera& start,
-                                    const render::OffscreenRequest& request, int frameCount,
+                                    const OffscreenRequest& request, int frameCount,
                                     const std::filesystem::path& out);
 
-}  // namespace grass::cli
+}  // namespace grass::render
