@@ -29,6 +29,7 @@
 #include "util/arg_parser.h"
 #include "util/image_file.h"
 #include "input_script.h"
+#include "live_scene.h"
 #include "panels.h"
 #include "viewport_tools.h"
 #include "window.h"
@@ -90,85 +91,6 @@ void applyInput(editor::InputState input, bool drag, bool wheel, int viewportHei
     // Keep the depth range proportional to the distance so zooming never clips the field.
     camera.nearPlane = std::max(camera.distance * 1e-3f, 1e-4f);
     camera.farPlane = camera.distance * 20.0f + 100.0f;
-}
-
-// Physics stepping the renderer's blade buffers on the GPU in fixed steps of the project's
-// step_s, following the timeline's time but never more than MAX_STEPS_PER_FRAME per frame (a
-// slow device runs the simulation slower than real time instead of falling further behind).
-struct LivePhysics {
-    static constexpr int MAX_STEPS_PER_FRAME = 4;
-    core::ScenePhysics scene;
-    render::ScenePhysicsGpu gpu;
-    std::size_t steps = 0;
-
-    double timeS() const { return static_cast<double>(steps) * scene.params.dtS; }
-    // Steps towards `targetS`; returns the time reached.
-    double advanceTo(double targetS) {
-        const double dtS = scene.params.dtS;
-        for (int i = 0; i < MAX_STEPS_PER_FRAME && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++i) {
-            gpu.step(scene, static_cast<float>(timeS()));
-            ++steps;
-        }
-        return timeS();
-    }
-};
-
-// What a project becomes on the GPU; rebuilt whole when the project is re-grown or replaced.
-// Members are destroyed in reverse order: the physics (which steps the renderer's buffers)
-// before the renderer, the renderer (which points at the scene) before the scene.
-struct Live {
-    std::unique_ptr<core::Scene> scene;
-    std::unique_ptr<editor::SceneTools> tools;  // picks and paints `scene`
-    std::unique_ptr<render::SceneRenderer> renderer;
-    std::optional<LivePhysics> physics;
-};
-
-// `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
-Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
-                       const std::function<Result<void>(core::Scene&)>& prepare = {}) {
-    auto scene = core::buildScene(loaded);
-    if (!scene)
-        return scene.error();
-    for (const auto& note : scene->notes)
-        std::fprintf(stderr, "note: %s\n", note.c_str());
-    if (prepare)
-        if (auto prepared = prepare(*scene); !prepared)
-            return prepared.error();
-    Live live;
-    live.scene = std::make_unique<core::Scene>(std::move(*scene));
-    live.tools = std::make_unique<editor::SceneTools>(*live.scene, loaded.project.lighting);
-    auto renderer = render::SceneRenderer::create(*live.scene);
-    if (!renderer)
-        return renderer.error();
-    live.renderer = std::move(*renderer);
-    if (withPhysics) {
-        auto built = core::buildScenePhysics(loaded);
-        if (!built)
-            return built.error();
-        for (const auto& note : built->notes)
-            std::fprintf(stderr, "note: %s\n", note.c_str());
-        auto gpu = render::ScenePhysicsGpu::createOn(*live.scene, live.renderer->bladeBuffers());
-        if (!gpu)
-            return gpu.error();
-        live.physics.emplace(LivePhysics{std::move(*built), std::move(*gpu)});
-    }
-    return live;
-}
-
-// Puts every layer's blades back at rest on the GPU and restarts the simulation from there
-// (keeping its step count).
-Result<void> resetPhysics(Live& live) {
-    for (std::size_t layer = 0; layer < live.scene->layers.size(); ++layer) {
-        core::RegrowReport all;
-        for (std::uint32_t p = 0; p < live.scene->layers[layer].patched.patches.size(); ++p)
-            all.patches.push_back(p);
-        live.renderer->uploadRegrown(layer, all);
-    }
-    auto gpu = render::ScenePhysicsGpu::createOn(*live.scene, live.renderer->bladeBuffers());
-    if (!gpu)
-        return gpu.error();
-    live.physics->gpu = std::move(*gpu);
-    return {};
 }
 
 // The viewport rect (points, y down) in GL pixels (y up), at least one pixel.
@@ -267,10 +189,10 @@ int main(int argc, char** argv) {
     auto camera = render::projectCamera(project, "");
     if (!camera)
         return fail(camera.error().str());
-    auto built = buildLive(state.loaded, !noPhysics);
+    auto built = editor::buildLive(state.loaded, !noPhysics);
     if (!built)
         return fail(built.error().str());
-    Live live = std::move(*built);
+    editor::Live live = std::move(*built);
     state.scene = live.scene.get();
     state.tools = live.tools.get();
     state.options = render::renderOptionsFor(project, gl::isSoftwareRenderer());
@@ -305,7 +227,7 @@ int main(int argc, char** argv) {
             carry = [&](core::Scene& next) {
                 return editor::carryPaintedMaps(state, *live.scene, next);
             };
-        auto next = buildLive(state.loaded, !noPhysics, carry);
+        auto next = editor::buildLive(state.loaded, !noPhysics, carry);
         if (!next) {
             state.message = "cannot grow the field: " + next.error().str();
             return;
@@ -519,11 +441,11 @@ int main(int argc, char** argv) {
                                 state.timeJump.change == core::TimeChange::JumpForward;
             state.timeJump = {};
             if (live.physics) {
-                LivePhysics& physics = *live.physics;
+                editor::LivePhysics& physics = *live.physics;
                 if (jumped) {
                     // The field restarts from rest at the new time (re-simulating from the
                     // start would stall the scrub).
-                    if (auto reset = resetPhysics(live); !reset)
+                    if (auto reset = editor::resetPhysics(live); !reset)
                         state.message = "cannot reset the simulation: " + reset.error().str();
                     physics.steps = static_cast<std::size_t>(
                         std::floor(state.timeline.timeS() / physics.scene.params.dtS));

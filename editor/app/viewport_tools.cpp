@@ -231,6 +231,17 @@ void drawObjects(ui::Painter& painter, ui::Rect view, float ppp, const EditorSta
             painter.circle(toPoints(*px), selected ? 6.0f : 4.5f, color,
                            {1.0f, ui::Color32::rgb(20, 20, 20)});
     };
+    // A keyed motion path: the piecewise-linear track between its keys, and a dot per key.
+    const auto pathTrack = [&](const std::vector<core::PathKey>& path, ui::Color32 color) {
+        std::vector<ui::Vec2> points;
+        for (const core::PathKey& key : path)
+            if (auto px = core::projectToPixel(camera, key.posWorld, size))
+                points.push_back(toPoints(*px));
+        if (points.size() >= 2)
+            painter.path(points, false, ui::Color32::transparent(), {1.0f, color});
+        for (const ui::Vec2 point : points)
+            painter.circle(point, 3.0f, color);
+    };
     const auto isSelected = [&](PlacedKind kind, std::size_t i) {
         return s.place.selected && *s.place.selected == PlacedObject{kind, i};
     };
@@ -250,8 +261,7 @@ void drawObjects(ui::Painter& painter, ui::Rect view, float ppp, const EditorSta
             if (a && b)
                 painter.line(toPoints(*a), toPoints(*b), {2.0f, windColor});
         }
-        for (const core::PathKey& key : w.path)
-            marker(key.posWorld, ui::Color32::rgb(60, 90, 140), false);
+        pathTrack(w.path, ui::Color32::rgb(60, 90, 140));
     }
     const ui::Color32 colliderColor = ui::Color32::rgb(255, 170, 90);
     for (std::size_t i = 0; i < project.colliders.size(); ++i) {
@@ -260,8 +270,7 @@ void drawObjects(ui::Painter& painter, ui::Rect view, float ppp, const EditorSta
         marker(at, colliderColor, isSelected(PlacedKind::Collider, i));
         if (c.shape == core::ColliderShape::Sphere)
             worldCircle(at, camera.position() - at, c.radiusM, colliderColor);
-        for (const core::PathKey& key : c.path)
-            marker(key.posWorld, ui::Color32::rgb(140, 90, 50), false);
+        pathTrack(c.path, ui::Color32::rgb(140, 90, 50));
     }
 }
 

@@ -1,0 +1,58 @@
+// The live scene of the editor window: the grown field, the tools that pick and paint it, its
+// renderer and the GPU physics stepping the renderer's blades, built and rebuilt together.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+#include "project/project.h"
+#include "scene/scene.h"
+#include "scene/scene_physics.h"
+#include "scene_physics_gpu.h"
+#include "scene_renderer.h"
+#include "util/result.h"
+#include "viewport_tools.h"
+
+namespace grass::editor {
+
+// Physics stepping the renderer's blade buffers on the GPU in fixed steps of the project's
+// step_s, following the timeline's time but never more than MAX_STEPS_PER_FRAME per frame (a
+// slow device runs the simulation slower than real time instead of falling further behind).
+struct LivePhysics {
+    static constexpr int MAX_STEPS_PER_FRAME = 4;
+    core::ScenePhysics scene;
+    render::ScenePhysicsGpu gpu;
+    std::size_t steps = 0;
+
+    double timeS() const { return static_cast<double>(steps) * scene.params.dtS; }
+    // Steps towards `targetS`; returns the time reached.
+    double advanceTo(double targetS) {
+        const double dtS = scene.params.dtS;
+        for (int i = 0; i < MAX_STEPS_PER_FRAME && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++i) {
+            gpu.step(scene, static_cast<float>(timeS()));
+            ++steps;
+        }
+        return timeS();
+    }
+};
+
+// What a project becomes on the GPU; rebuilt whole when the project is re-grown or replaced.
+// Members are destroyed in reverse order: the physics (which steps the renderer's buffers)
+// before the renderer, the renderer (which points at the scene) before the scene.
+struct Live {
+    std::unique_ptr<core::Scene> scene;
+    std::unique_ptr<SceneTools> tools;  // picks and paints `scene`
+    std::unique_ptr<render::SceneRenderer> renderer;
+    std::optional<LivePhysics> physics;
+};
+
+// `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
+Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
+                       const std::function<Result<void>(core::Scene&)>& prepare = {});
+
+// Puts every layer's blades back at rest on the GPU and restarts the simulation from there
+// (keeping its step count).
+Result<void> resetPhysics(Live& live);
+
+}  // namespace grass::editor
