@@ -18,6 +18,7 @@
 #include "mesh/procedural.h"
 #include "physics/physics.h"
 #include "scatter/scatter.h"
+#include "snow/snow_params.h"
 #include "util/result.h"
 
 namespace grass::core {
@@ -192,6 +193,8 @@ struct Project {
     PhysicsParams physics;
     std::vector<WindDesc> wind;
     std::vector<ColliderDesc> colliders;
+    // Snow accumulation (SPEC §11); off by default, so files without "snow" stay snow-free.
+    SnowParams snow;
     bool operator==(const Project&) const = default;
 };
 

@@ -24,9 +24,9 @@ using json::readList;
 
 constexpr std::string_view FORMAT_NAME = "grass-project";
 
-constexpr std::array<std::string_view, 14> TOP_KEYS{
-    "format", "version", "name",   "seed",       "mesh",    "layers", "cameras",
-    "sun",    "lighting", "render", "billboards", "physics", "wind",   "colliders"};
+constexpr std::array<std::string_view, 15> TOP_KEYS{
+    "format",   "version", "name",       "seed",    "mesh", "layers",    "cameras", "sun",
+    "lighting", "render",  "billboards", "physics", "wind", "colliders", "snow"};
 constexpr std::array<std::string_view, 8> MESH_KEYS{"file",       "procedural",  "size",
                                                     "minor_size", "hill_height", "hill_scale",
                                                     "resolution", "noise_seed"};
@@ -272,6 +272,8 @@ void readProject(json::Reader& reader, const Json& root, Project& project) {
     if (const Json* colliders = top.find("colliders"))
         readList(reader, *colliders, "/colliders", "collider", project.colliders,
                  json::readCollider);
+    if (const Json* snow = top.find("snow"))
+        json::readSnow(reader, *snow, project.snow);
 }
 
 Json meshJson(const MeshSource& mesh) {
@@ -445,6 +447,7 @@ std::string serializeProject(const Project& project) {
     document["colliders"] = Json::array();
     for (const ColliderDesc& collider : project.colliders)
         document["colliders"].push_back(json::colliderJson(collider));
+    document["snow"] = json::snowJson(project.snow);
     std::string text;
     writeJson(text, document, 0);
     text += "\n";

@@ -35,6 +35,10 @@ Json growthJson(const GrowthDesc& growth);
 void readLighting(Reader& reader, const Json& node, GrassLightingDesc& lighting);
 Json lightingJson(const GrassLightingDesc& lighting);
 
+// snow_json.cpp: "snow" (SPEC §11).
+void readSnow(Reader& reader, const Json& node, SnowParams& snow);
+Json snowJson(const SnowParams& snow);
+
 Json physicsJson(const PhysicsParams& physics);
 Json windJson(const WindDesc& wind);
 Json colliderJson(const ColliderDesc& collider);
