@@ -44,7 +44,7 @@ void exportWindow(ui::Context& ctx, EditorState& s) {
                 }
                 return;
             }
-            ui.label("Folder (relative to the project):");
+            ui.label("Folder (a relative path is inside the project folder):");
             ui::textEdit(ui, "##exportdir", s.exportDir, ui.availableWidth() - 8.0f);
             static constexpr std::array<const char*, 2> FORMATS{
                 "glTF (EXT_mesh_gpu_instancing)", "raw GPU buffers"};

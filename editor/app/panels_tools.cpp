@@ -90,8 +90,10 @@ void placeSettings(ui::Ui& ui, EditorState& s) {
     }
     const PlacedObject o = *s.place.selected;
     const bool isWind = o.kind == PlacedKind::Wind;
-    if (o.index >= (isWind ? project.wind.size() : project.colliders.size()))
+    if (o.index >= (isWind ? project.wind.size() : project.colliders.size())) {
+        s.place.selected.reset();  // removed (an undo, a delete): nothing is selected any more
         return;
+    }
     std::vector<core::PathKey>& path =
         isWind ? project.wind[o.index].source.path : project.colliders[o.index].path;
     const std::string& name = isWind ? project.wind[o.index].name : project.colliders[o.index].name;

@@ -172,6 +172,9 @@ bool runPlace(EditorState& s, const core::OrbitCamera& camera, const ViewportPoi
         if (!p.down || p.released) {
             s.gizmoDrag.reset();
             s.toolDragActive = false;
+            // The renderer's props and the GPU physics are built from the project: re-grow.
+            if (s.loaded.project != s.gizmoStart)
+                s.rebuildPending = true;
             return true;
         }
         core::GizmoSnap snap = s.place.snap;
