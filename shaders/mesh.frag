@@ -1,8 +1,10 @@
 #version 450 core
 #include "lighting.glsl"
+#include "snow.glsl"
 
 in vec3 vNormal;
 in vec2 vUv;
+in vec3 vPosWorld;
 
 uniform vec3 uAlbedo;
 
@@ -11,5 +13,7 @@ out vec4 fragColor;
 void main() {
     // Two-sided: glTF meshes may be open shells seen from behind (a Möbius strip always is).
     vec3 normal = normalize(gl_FrontFacing ? vNormal : -vNormal);
-    fragColor = vec4(simpleLighting(uAlbedo, normal, 0.2), 1.0);
+    // Snow settles on the side that faces the sky, whichever side the camera sees.
+    vec3 albedo = snowShade(vPosWorld, vNormal, uAlbedo);
+    fragColor = vec4(simpleLighting(albedo, normal, 0.2), 1.0);
 }

@@ -38,6 +38,7 @@ struct RenderArgs {
     std::uint64_t seed = 0;
     bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
     bool lightPerVertex = false;
+    bool snow = false;
 };
 
 Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& parser,
@@ -113,12 +114,13 @@ std::string statsJson(const render::FrameTimings& frame, double physicsMs, doubl
                   "%.4f, \"total\": %.4f, \"frame_wall\": %.4f},\n"
                   "  \"drawn_per_lod\": [%zu, %zu, %zu],\n"
                   "  \"billboards\": {\"drawn\": %zu, \"draw_calls\": %zu, \"ms\": %.4f},\n"
-                  "  \"stem_sets\": {\"drawn\": %zu, \"ms\": %.4f}\n}\n",
+                  "  \"stem_sets\": {\"drawn\": %zu, \"ms\": %.4f},\n"
+                  "  \"snow\": {\"depth_pass_ms\": %.4f}\n}\n",
                   c.bladesIn, c.culledPatch, c.culledOrientation, c.culledFrustum, c.culledDistance,
                   c.culledOcclusion, c.drawn, physicsMs, frame.cullMs, frame.meshMs, grassMs,
                   total, wallMs, c.drawnPerLod[0], c.drawnPerLod[1], c.drawnPerLod[2],
                   frame.billboardsDrawn, frame.billboardDrawCalls, frame.billboardMs,
-                  frame.stemSetsDrawn, frame.stemSetMs);
+                  frame.stemSetsDrawn, frame.stemSetMs, frame.snowMs);
     return text;
 }
 
@@ -208,6 +210,10 @@ int runRender(const std::vector<std::string>& argv) {
     parser.flag("--light-per-vertex",
                 "light blades per vertex (as the article does) instead of per pixel",
                 &args.lightPerVertex);
+    parser.flag("--snow",
+                "snow on (SPEC §11) with the project's snow settings (their defaults when the "
+                "project has none); --stats adds the snow pass time",
+                &args.snow);
     parser.number("--lod-distance", "M",
                   "blades nearer than M metres get every strip segment / tessellation level, "
                   "half up to 3·M, a quarter beyond",
@@ -329,6 +335,8 @@ int runRender(const std::vector<std::string>& argv) {
     request.options.cull.lodDistanceM = static_cast<float>(args.lodDistanceM);
     request.options.timeS = static_cast<float>(args.timeS);
     request.options.lightPerVertex = args.lightPerVertex;
+    if (args.snow)
+        request.options.snow.enabled = 1u;
     if (args.technique != "project")
         if (auto technique = core::parseGrassTechnique(args.technique))
             request.options.technique = *technique;
@@ -366,10 +374,11 @@ int runRender(const std::vector<std::string>& argv) {
     std::printf("  frames     %zu, wall ms: first %.1f, median %.1f, min %.1f\n",
                 rendered->frameWallMs.size(), rendered->frameWallMs.front(),
                 frames[frames.size() / 2], frames.front());
-    std::printf("  gpu ms     mesh %.2f, grass %.2f, billboards %.2f, stem sets %.2f (last frame, "
-                "timer queries)\n",
+    std::printf("  gpu ms     mesh %.2f, grass %.2f, billboards %.2f, stem sets %.2f, snow map "
+                "%.2f (last frame, timer queries)\n",
                 rendered->lastFrame.meshMs, rendered->lastFrame.grassMs,
-                rendered->lastFrame.billboardMs, rendered->lastFrame.stemSetMs);
+                rendered->lastFrame.billboardMs, rendered->lastFrame.stemSetMs,
+                rendered->lastFrame.snowMs);
     std::printf("  technique  %s; billboards drawn %zu in %zu draw call(s); stem sets drawn %zu\n",
                 std::string(core::grassTechniqueName(request.options.technique)).c_str(),
                 rendered->lastFrame.billboardsDrawn, rendered->lastFrame.billboardDrawCalls,

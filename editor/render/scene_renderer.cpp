@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "util/assert.h"
+
 namespace grass::render {
 
 GeometryPath resolveGeometryPath(core::GeometryPath path, bool softwareRenderer) {
@@ -28,6 +30,7 @@ RenderOptions renderOptionsFor(const core::Project& project, bool softwareRender
     options.groundColor = settings.groundColor;
     options.technique = settings.technique;
     options.billboards = project.billboards;
+    options.snow = project.snow;
     return options;
 }
 
@@ -98,6 +101,9 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     return renderer;
 }
 
+// The texture unit of the snow depth map in the mesh program.
+constexpr int SNOW_MAP_UNIT = 6;
+
 static void setLighting(const gl::Program& program, const RenderOptions& options) {
     const glm::vec3 direction = glm::length(options.sun.direction) > 0.0f
                                     ? glm::normalize(options.sun.direction)
@@ -141,6 +147,16 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
     const glm::mat4 projection = camera.projection(aspect);
     const glm::mat4 viewProj = projection * camera.view();
+
+    mSnowTimer.begin();
+    if (options.snow.enabled != 0u) {
+        renderSnowMap(options);
+        mSnow->bind(mMeshProgram, options.snow, core::snowAmountAt(options.snow, options.timeS),
+                    SNOW_MAP_UNIT);
+    } else {
+        disableSnow(mMeshProgram);
+    }
+    mSnowTimer.end();
 
     mMeshTimer.begin();
     mMeshProgram.use();
@@ -307,6 +323,40 @@ void SceneRenderer::uploadRegrown(std::size_t layer, const core::RegrowReport& r
     }
 }
 
+// The depth map along the snowfall over the terrain and the props where they stand now: the
+// view covers both, so a ball above the ground shelters what lies under it.
+void SceneRenderer::renderSnowMap(const RenderOptions& options) {
+    if (!mSnow) {
+        auto pass = SnowPass::create();
+        GRASS_ASSERT(pass.ok());  // the shader ships with the program; a load failure is a bug
+        mSnow = std::make_unique<SnowPass>(std::move(*pass));
+    }
+    core::Bounds bounds = mScene->bounds;
+    for (const core::SceneProp& prop : mScene->props) {
+        const core::Bounds local = core::meshBounds(prop.mesh);
+        const glm::mat4 model = prop.modelAt(options.timeS);
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 p{(corner & 1) ? local.max.x : local.min.x,
+                              (corner & 2) ? local.max.y : local.min.y,
+                              (corner & 4) ? local.max.z : local.min.z};
+            const glm::vec3 q = glm::vec3(model * glm::vec4(p, 1.0f));
+            bounds.min = glm::min(bounds.min, q);
+            bounds.max = glm::max(bounds.max, q);
+        }
+    }
+    const float margin = 0.02f * glm::length(bounds.size()) + 1e-3f;
+    const core::OrthoSnowView view =
+        core::makeOrthoSnowView(options.snow.fallDirection, bounds, margin);
+    mSnow->run(view, options.snow.mapResolution, [&](const gl::Program& program) {
+        program.set("uModel", glm::mat4(1.0f));
+        mMesh->draw();
+        for (std::size_t i = 0; i < mProps.size(); ++i) {
+            program.set("uModel", mScene->props[i].modelAt(options.timeS));
+            mProps[i].draw();
+        }
+    });
+}
+
 // The terrain, then each prop where its path puts it at options.timeS. `shaded` sets the albedo
 // (the depth pre-pass of the cull needs none).
 void SceneRenderer::drawOpaque(const RenderOptions& options, bool shaded) const {
@@ -341,6 +391,7 @@ FrameTimings SceneRenderer::lastTimings() const {
     timings.bladesDrawn = mBladesDrawn;
     timings.stemSetsDrawn = mStemSetsDrawn;
     timings.stemSetMs = mStemSetTimer.milliseconds();
+    timings.snowMs = mSnowTimer.milliseconds();
     if (mStatsFrame)
         timings.cull = mCull->readStats(mFields);
     return timings;

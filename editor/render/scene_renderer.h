@@ -10,6 +10,7 @@
 
 #include "billboard_gpu.h"
 #include "cull_pass.h"
+#include "snow_pass.h"
 #include "field_gpu.h"
 #include "mesh_gpu.h"
 #include "program.h"
@@ -43,6 +44,8 @@ struct RenderOptions {
     core::BillboardDesc billboards;
     // Scene time in seconds: where the props (colliders) stand on their paths.
     float timeS = 0.0f;
+    // Snow (SPEC §11); off by default. Its depth pass runs, and its map exists, only when on.
+    core::SnowParams snow;
     // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for
     // tests that measure a shape alone.
     bool widthCorrection = true;
@@ -67,6 +70,9 @@ struct FrameTimings {
     // Technique growth: stem sets drawn (one instanced draw per layer, no culling) and GPU time.
     std::size_t stemSetsDrawn = 0;
     double stemSetMs = 0.0;
+    // Snow: GPU time of the depth pass along the snowfall (0 with snow off; the snow shading
+    // itself is part of the opaque pass).
+    double snowMs = 0.0;
     // Live blades handed to the cull pass; what survived it is cull.drawn.
     std::size_t bladesDrawn = 0;
     // Per-test counts, filled only when the frame ran with RenderOptions::cull.collectStats.
@@ -106,10 +112,13 @@ private:
     std::vector<MeshGpu> mProps;
     std::vector<FieldGpu> mFields;
     std::unique_ptr<CullPass> mCull;
+    // Made on the first frame with snow on: a snow-free scene allocates no map.
+    std::unique_ptr<SnowPass> mSnow;
+    void renderSnowMap(const RenderOptions& options);
     std::unique_ptr<BillboardField> mBillboards;
     std::vector<StemSetField> mStemSets;
     std::size_t mStemSetsDrawn = 0;
-    gl::GpuTimer mMeshTimer, mGrassTimer, mCullTimer, mBillboardTimer, mStemSetTimer;
+    gl::GpuTimer mMeshTimer, mGrassTimer, mCullTimer, mBillboardTimer, mStemSetTimer, mSnowTimer;
     std::size_t mBladesDrawn = 0;
     std::size_t mBillboardsDrawn = 0;
     float mFieldAo = 1.0f;
