@@ -87,4 +87,27 @@ Rgba8Image readFramebuffer(GLuint framebuffer, int width, int height) {
     return image;
 }
 
+DepthTarget makeDepthTarget(int width, int height, const std::string& label) {
+    DepthTarget target;
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    target.texture = TextureHandle(texture);
+    target.texture.setLabel(label);
+    glTextureStorage2D(texture, 1, GL_DEPTH_COMPONENT32F, width, height);
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    GLuint framebuffer = 0;
+    glCreateFramebuffers(1, &framebuffer);
+    target.framebuffer = FramebufferHandle(framebuffer);
+    target.framebuffer.setLabel(label);
+    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, texture, 0);
+    glNamedFramebufferDrawBuffer(framebuffer, GL_NONE);
+    target.width = width;
+    target.height = height;
+    return target;
+}
+
 }  // namespace grass::gl

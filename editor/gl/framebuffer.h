@@ -3,11 +3,23 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "gl_handle.h"
 
 namespace grass::gl {
+
+// A depth-only target whose depth can be sampled (texelFetch, no comparison): the cull pass's
+// occlusion pre-pass and the snow depth map.
+struct DepthTarget {
+    TextureHandle texture;
+    FramebufferHandle framebuffer;
+    int width = 0, height = 0;
+};
+// A 32-bit float depth texture of width × height, nearest filtering, clamped, attached to a
+// framebuffer with no colour buffer; both labelled `label`.
+DepthTarget makeDepthTarget(int width, int height, const std::string& label);
 
 struct Rgba8Image {
     int width = 0;

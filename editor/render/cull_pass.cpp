@@ -27,26 +27,8 @@ Result<CullPass> CullPass::create() {
 // next to the blades, and full resolution keeps the depth under a blade's root within a pixel
 // of the root itself, so a small bias (cull.comp) keeps grass on visible terrain.
 void CullPass::resizeDepth(int width, int height) {
-    if (width == mDepthWidth && height == mDepthHeight)
-        return;
-    GLuint texture = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-    mDepth = gl::TextureHandle(texture);
-    mDepth.setLabel("cull depth");
-    glTextureStorage2D(texture, 1, GL_DEPTH_COMPONENT32F, width, height);
-    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    GLuint framebuffer = 0;
-    glCreateFramebuffers(1, &framebuffer);
-    mDepthFramebuffer = gl::FramebufferHandle(framebuffer);
-    mDepthFramebuffer.setLabel("cull depth pre-pass");
-    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, texture, 0);
-    glNamedFramebufferDrawBuffer(framebuffer, GL_NONE);
-    mDepthWidth = width;
-    mDepthHeight = height;
+    if (width != mDepth.width || height != mDepth.height)
+        mDepth = gl::makeDepthTarget(width, height, "cull depth pre-pass");
 }
 
 void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
@@ -56,9 +38,9 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
     resizeDepth(std::max(view.width, 1), std::max(view.height, 1));
     if (settings.occlusion) {
         const float clearDepth = 1.0f;
-        glClearNamedFramebufferfv(mDepthFramebuffer.id(), GL_DEPTH, 0, &clearDepth);
-        glBindFramebuffer(GL_FRAMEBUFFER, mDepthFramebuffer.id());
-        glViewport(0, 0, mDepthWidth, mDepthHeight);
+        glClearNamedFramebufferfv(mDepth.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
+        glBindFramebuffer(GL_FRAMEBUFFER, mDepth.framebuffer.id());
+        glViewport(0, 0, mDepth.width, mDepth.height);
         drawOpaque();
         glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
         glViewport(0, 0, view.width, view.height);
@@ -87,7 +69,7 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
     mProgram.set("uLodDistance", std::max(settings.lodDistanceM, 0.0f));
     mProgram.set("uCollectStats", settings.collectStats ? 1 : 0);
     mProgram.set("uSceneDepth", 0);
-    glBindTextureUnit(0, mDepth.id());
+    glBindTextureUnit(0, mDepth.texture.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, COUNTER_BINDING, mCounters.id());
     for (FieldGpu& field : fields) {
         field.resetCommands(view.stripSegments);

@@ -13,6 +13,7 @@
 
 #include "buffer.h"
 #include "field_gpu.h"
+#include "framebuffer.h"
 #include "gl_handle.h"
 #include "program.h"
 
@@ -82,9 +83,7 @@ private:
     void resizeDepth(int width, int height);
     gl::Program mProgram;
     gl::Buffer mCounters;
-    gl::TextureHandle mDepth;
-    gl::FramebufferHandle mDepthFramebuffer;
-    int mDepthWidth = 0, mDepthHeight = 0;
+    gl::DepthTarget mDepth;
     bool mStatsValid = false;
 };
 

@@ -29,20 +29,7 @@ Result<SnowPass> SnowPass::create() {
 void SnowPass::run(const core::OrthoSnowView& view, int resolution,
                    const std::function<void(const gl::Program&)>& draw) {
     if (resolution != mResolution) {
-        GLuint texture = 0;
-        glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-        mDepth = gl::TextureHandle(texture);
-        mDepth.setLabel("snow depth map");
-        glTextureStorage2D(texture, 1, GL_DEPTH_COMPONENT32F, resolution, resolution);
-        glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-        GLuint framebuffer = 0;
-        glCreateFramebuffers(1, &framebuffer);
-        mFramebuffer = gl::FramebufferHandle(framebuffer);
-        mFramebuffer.setLabel("snow depth pass");
-        glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, texture, 0);
-        glNamedFramebufferDrawBuffer(framebuffer, GL_NONE);
+        mDepth = gl::makeDepthTarget(resolution, resolution, "snow depth map");
         mResolution = resolution;
     }
     mView = view;
@@ -51,8 +38,8 @@ void SnowPass::run(const core::OrthoSnowView& view, int resolution,
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
     glGetIntegerv(GL_VIEWPORT, previousViewport);
     const float clearDepth = 1.0f;  // nothing above: every point is exposed
-    glClearNamedFramebufferfv(mFramebuffer.id(), GL_DEPTH, 0, &clearDepth);
-    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
+    glClearNamedFramebufferfv(mDepth.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
+    glBindFramebuffer(GL_FRAMEBUFFER, mDepth.framebuffer.id());
     glViewport(0, 0, resolution, resolution);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -85,7 +72,7 @@ void SnowPass::bind(const gl::Program& program, const core::SnowParams& params, 
     program.set("uSnowBiasM", params.depthBiasM);
     program.set("uSnowResolution", mResolution);
     setView(program, mView);
-    glBindTextureUnit(GLuint(unit), mDepth.id());
+    glBindTextureUnit(GLuint(unit), mDepth.texture.id());
     program.set("uSnowDepth", unit);
 }
 

@@ -5,6 +5,7 @@
 
 #include <functional>
 
+#include "framebuffer.h"
 #include "gl_handle.h"
 #include "program.h"
 #include "snow/snow.h"
@@ -24,13 +25,12 @@ public:
     void bind(const gl::Program& program, const core::SnowParams& params, float amountM,
               int unit) const;
     // The depth texture (depth / depthRange), for tests.
-    GLuint depthTexture() const { return mDepth.id(); }
+    GLuint depthTexture() const { return mDepth.texture.id(); }
     const core::OrthoSnowView& view() const { return mView; }
 
 private:
     gl::Program mProgram;
-    gl::TextureHandle mDepth;
-    gl::FramebufferHandle mFramebuffer;
+    gl::DepthTarget mDepth;
     int mResolution = 0;
     core::OrthoSnowView mView;
 };
