@@ -13,13 +13,9 @@ namespace {
 
 const std::string SOURCE = "projects/test/project.json";
 
-std::string documentWithLighting(const std::string& members) {
-    return R"({"format": "grass-project", "version": 1, "lighting": {)" + members + "}}";
-}
-
 void expectError(const std::string& members, const std::string& pointer,
                  const std::string& problem) {
-    test::expectProjectError(documentWithLighting(members), SOURCE, pointer, problem);
+    test::expectObjectError("lighting", members, SOURCE, pointer, problem);
 }
 
 TEST(ProjectLighting, MissingObjectMeansGrassLightingWithDefaults) {

@@ -11,12 +11,12 @@ namespace {
 const std::string SOURCE = "projects/test/project.json";
 
 std::string documentWithSnow(const std::string& members) {
-    return R"({"format": "grass-project", "version": 1, "snow": {)" + members + "}}";
+    return test::documentWithObject("snow", members);
 }
 
 void expectError(const std::string& members, const std::string& pointer,
                  const std::string& problem) {
-    test::expectProjectError(documentWithSnow(members), SOURCE, pointer, problem);
+    test::expectObjectError("snow", members, SOURCE, pointer, problem);
 }
 
 TEST(ProjectSnow, MissingObjectMeansNoSnow) {

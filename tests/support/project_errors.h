@@ -21,4 +21,16 @@ inline void expectProjectError(const std::string& text, const std::string& sourc
     EXPECT_EQ(error.find('\n'), std::string::npos) << "not one line: " << error;
 }
 
+// A minimal project document whose top-level object `key` holds `members` (JSON text without
+// the braces), and the error check on it: what each section's tests ("snow", "lighting") share.
+inline std::string documentWithObject(const std::string& key, const std::string& members) {
+    return R"({"format": "grass-project", "version": 1, ")" + key + R"(": {)" + members + "}}";
+}
+
+inline void expectObjectError(const std::string& key, const std::string& members,
+                              const std::string& source, const std::string& pointer,
+                              const std::string& problem) {
+    expectProjectError(documentWithObject(key, members), source, pointer, problem);
+}
+
 }  // namespace grass::test
