@@ -161,6 +161,7 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     mMeshTimer.begin();
     mMeshProgram.use();
     mMeshProgram.set("uViewProj", viewProj);
+    mMeshProgram.set("uSnowCoverageView", options.snowCoverageView ? 1 : 0);
     setLighting(mMeshProgram, options);
     drawOpaque(options, true);
     mMeshTimer.end();

@@ -46,6 +46,8 @@ struct RenderOptions {
     float timeS = 0.0f;
     // Snow (SPEC §11); off by default. Its depth pass runs, and its map exists, only when on.
     core::SnowParams snow;
+    // Draw the opaque surfaces as (Fp, Fe, Fi) in (R, G, B), unlit, to measure the snow mask.
+    bool snowCoverageView = false;
     // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for
     // tests that measure a shape alone.
     bool widthCorrection = true;

@@ -175,13 +175,20 @@ vec3 snowDisplacement(vec3 posWorld, vec3 normal) {
     return uSnowAmountM * snowBoundaryExposure(posWorld, normal) * Zn * normalize(normal);
 }
 
-// C = Fp·Cs + (1 − Fp)·Cn (paper eq. 3) with Fp = Fe·Fi.
-vec3 snowShade(vec3 posWorld, vec3 normal, vec3 Cn) {
+// (Fp, Fe, Fi) at a surface point: Fp = Fe·Fi (paper eq. 3); zero where no snow lies.
+vec3 snowCoverageTerms(vec3 posWorld, vec3 normal) {
     if (!snowLies())
-        return Cn;
+        return vec3(0.0);
     float noise = snowNoiseAt(posWorld);
     float Fi = inclineCoefficient(normal, uSnowUp, noise, uSnowInclineNoise);
     float Fe = exposureCoefficient(posWorld, normal, uSnowSamples, uSnowRadiusTexels);
-    float Fp = Fe * Fi;
+    return vec3(Fe * Fi, Fe, Fi);
+}
+
+// C = Fp·Cs + (1 − Fp)·Cn (paper eq. 3).
+vec3 snowShade(vec3 posWorld, vec3 normal, vec3 Cn) {
+    if (!snowLies())
+        return Cn;
+    float Fp = snowCoverageTerms(posWorld, normal).x;
     return Fp * uSnowColor + (1.0 - Fp) * Cn;
 }
