@@ -2,11 +2,12 @@
 // Per-blade culling (SPEC §6, Jahrmann §6). One invocation per blade slot; patches hold a
 // multiple of 32 blades and the buffer is patch-major, so a work-group lies in one patch.
 // Stage 1: the patch's box against the view frustum. Stage 2, per blade: orientation, frustum,
-// distance, occlusion, in that order; a blade is counted by the first test that removes it.
+// distance, occlusion, burial under snow, in that order; a blade is counted by the first test that removes it.
 // Survivors append their index to the visible list of their level of detail (lod.glsl) and bump
 // that LOD's strip and tessellation instance counts (reset to 0 before the dispatch).
 #include "blade.glsl"
 #include "lod.glsl"
+#include "snow.glsl"
 
 layout(local_size_x = 32) in;
 
@@ -23,9 +24,14 @@ layout(std430, binding = 5) writeonly buffer VisibleBuffer {
 layout(std430, binding = 6) buffer CommandBuffer {
     uint commands[8 * LOD_COUNT];
 };
-// Statistics: blades in, culled by patch, orientation, frustum, distance, occlusion.
+// Statistics: blades in, culled by patch, orientation, frustum, distance, occlusion, snow.
 layout(std430, binding = 7) buffer CounterBuffer {
     uint counters[8];
+};
+// Snow (SPEC §11): the whiteness of each surviving blade's tip (bladeTipSnow), read by the blade
+// shaders; bound, and written, only while snow lies.
+layout(std430, binding = 10) writeonly buffer TipSnowBuffer {
+    float tipSnow[];
 };
 
 uniform sampler2D uSceneDepth;  // window-space depth of the opaque pre-pass
@@ -63,9 +69,11 @@ const uint RESULT_ORIENTATION = 2u;
 const uint RESULT_FRUSTUM = 3u;
 const uint RESULT_DISTANCE = 4u;
 const uint RESULT_OCCLUSION = 5u;
-const uint RESULT_SKIPPED = 6u;
+const uint RESULT_SNOW = 6u;
+const uint RESULT_SKIPPED = 7u;
+const uint COUNTED_RESULTS = 7u;
 
-shared uint sCounts[6];
+shared uint sCounts[COUNTED_RESULTS];
 shared uint sSurvivors[LOD_COUNT];
 shared uint sBase[LOD_COUNT];
 
@@ -143,12 +151,21 @@ uint classify(uint index) {
     if (uTestOcclusion != 0 && hiddenByOpaque(clipV0) && hiddenByOpaque(clipM) &&
         hiddenByOpaque(clipV2))
         return RESULT_OCCLUSION;
+    // Last, as the dearest test (two exposure lookups of uSnowSamples taps): a blade shorter than
+    // the snow at its root is buried (core::bladeBuriedBySnow); a survivor's tip whitens by the
+    // exposure of the tip (core::bladeTipSnow).
+    if (snowLies()) {
+        if (bladeBuriedBySnow(blade.v1H.w, snowDepthAt(v0, up)))
+            return RESULT_SNOW;
+        tipSnow[index] =
+            bladeTipSnow(exposureCoefficient(v2, uSnowUp, uSnowSamples, uSnowRadiusTexels));
+    }
     return RESULT_VISIBLE;
 }
 
 void main() {
     uint index = gl_GlobalInvocationID.x;
-    if (gl_LocalInvocationIndex < 6u)
+    if (gl_LocalInvocationIndex < COUNTED_RESULTS)
         sCounts[gl_LocalInvocationIndex] = 0u;
     if (gl_LocalInvocationIndex < uint(LOD_COUNT))
         sSurvivors[gl_LocalInvocationIndex] = 0u;
@@ -174,7 +191,7 @@ void main() {
         sBase[groupLod] = atomicAdd(commands[4u * groupLod + 1u], sSurvivors[groupLod]);
         atomicAdd(commands[4u * (uint(LOD_COUNT) + groupLod) + 1u], sSurvivors[groupLod]);
     }
-    if (uCollectStats != 0 && gl_LocalInvocationIndex < 6u &&
+    if (uCollectStats != 0 && gl_LocalInvocationIndex < COUNTED_RESULTS &&
         sCounts[gl_LocalInvocationIndex] != 0u)
         atomicAdd(counters[gl_LocalInvocationIndex], sCounts[gl_LocalInvocationIndex]);
     barrier();

@@ -275,6 +275,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
             windSection(ui, s);
             colliderSection(ui, s);
             renderSection(ui, s);
+            snowSection(ui, s);
         });
     });
     ui::Rect central = ui::centralRect(ctx);

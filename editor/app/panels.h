@@ -137,5 +137,7 @@ void layerSection(ui::Ui& ui, EditorState& state);
 void windSection(ui::Ui& ui, EditorState& state);
 void colliderSection(ui::Ui& ui, EditorState& state);
 void renderSection(ui::Ui& ui, EditorState& state);
+// Snow accumulation (panels_snow.cpp); keeps state.options.snow equal to the project's.
+void snowSection(ui::Ui& ui, EditorState& state);
 
 }  // namespace grass::editor

@@ -109,7 +109,8 @@ std::string statsJson(const render::FrameTimings& frame, double physicsMs, doubl
     char text[1024];
     std::snprintf(text, sizeof text,
                   "{\n  \"blades_in\": %zu,\n  \"culled\": {\"patch\": %zu, \"orientation\": %zu, "
-                  "\"frustum\": %zu, \"distance\": %zu, \"occlusion\": %zu},\n  \"drawn\": %zu,\n"
+                  "\"frustum\": %zu, \"distance\": %zu, \"occlusion\": %zu, \"snow\": %zu},\n"
+                  "  \"drawn\": %zu,\n"
                   "  \"ms\": {\"physics\": %.4f, \"cull\": %.4f, \"opaque\": %.4f, \"grass\": "
                   "%.4f, \"total\": %.4f, \"frame_wall\": %.4f},\n"
                   "  \"drawn_per_lod\": [%zu, %zu, %zu],\n"
@@ -117,7 +118,7 @@ std::string statsJson(const render::FrameTimings& frame, double physicsMs, doubl
                   "  \"stem_sets\": {\"drawn\": %zu, \"ms\": %.4f},\n"
                   "  \"snow\": {\"depth_pass_ms\": %.4f}\n}\n",
                   c.bladesIn, c.culledPatch, c.culledOrientation, c.culledFrustum, c.culledDistance,
-                  c.culledOcclusion, c.drawn, physicsMs, frame.cullMs, frame.meshMs, grassMs,
+                  c.culledOcclusion, c.culledSnow, c.drawn, physicsMs, frame.cullMs, frame.meshMs, grassMs,
                   total, wallMs, c.drawnPerLod[0], c.drawnPerLod[1], c.drawnPerLod[2],
                   frame.billboardsDrawn, frame.billboardDrawCalls, frame.billboardMs,
                   frame.stemSetsDrawn, frame.stemSetMs, frame.snowMs);
@@ -387,10 +388,10 @@ int runRender(const std::vector<std::string>& argv) {
     const double inBlades = static_cast<double>(std::max<std::size_t>(cull.bladesIn, 1));
     std::printf(
         "  culling    %zu in, %zu drawn (%.1f %%); culled: patch %zu, orientation %zu, "
-        "frustum %zu, distance %zu, occlusion %zu; cull %.2f ms\n",
+        "frustum %zu, distance %zu, occlusion %zu, snow %zu; cull %.2f ms\n",
         cull.bladesIn, cull.drawn, 100.0 * static_cast<double>(cull.drawn) / inBlades,
         cull.culledPatch, cull.culledOrientation, cull.culledFrustum, cull.culledDistance,
-        cull.culledOcclusion, rendered->lastFrame.cullMs);
+        cull.culledOcclusion, cull.culledSnow, rendered->lastFrame.cullMs);
     std::printf("  detail     drawn per LOD %zu / %zu / %zu (full, half, quarter segments; "
                 "--lod-distance %.3g m)\n",
                 cull.drawnPerLod[0], cull.drawnPerLod[1], cull.drawnPerLod[2], args.lodDistanceM);

@@ -101,6 +101,7 @@ CullStats CullPass::readStats(const std::vector<FieldGpu>& fields) const {
     stats.culledFrustum = counters[3];
     stats.culledDistance = counters[4];
     stats.culledOcclusion = counters[5];
+    stats.culledSnow = counters[6];
     for (const FieldGpu& field : fields) {
         const auto drawn = field.readDrawnCounts();
         for (int lod = 0; lod < LOD_COUNT; ++lod) {

@@ -51,10 +51,12 @@ struct CullStats {
     std::size_t culledFrustum = 0;
     std::size_t culledDistance = 0;
     std::size_t culledOcclusion = 0;
+    std::size_t culledSnow = 0;  // buried: shorter than the snow at the root (SPEC §11)
     std::size_t drawn = 0;
     std::array<std::size_t, LOD_COUNT> drawnPerLod{};  // sums to drawn
     std::size_t culledTotal() const {
-        return culledPatch + culledOrientation + culledFrustum + culledDistance + culledOcclusion;
+        return culledPatch + culledOrientation + culledFrustum + culledDistance + culledOcclusion +
+               culledSnow;
     }
 };
 
@@ -78,6 +80,8 @@ public:
              const std::function<void()>& drawOpaque);
     // Counters of the last run(); zero unless it ran with collectStats. Waits for the GPU.
     CullStats readStats(const std::vector<FieldGpu>& fields) const;
+    // The cull program, for the snow uniforms (SnowPass::bind / disableSnow) before run().
+    const gl::Program& program() const { return mProgram; }
 
 private:
     void resizeDepth(int width, int height);

@@ -87,8 +87,26 @@ void FieldGpu::resetCommands(int segments) {
     mCommands.update(std::as_bytes(std::span(commands)), 0);
 }
 
+void FieldGpu::enableTipSnow() {
+    if (mTipSnow.id() == 0)
+        mTipSnow = gl::Buffer::fromVector(
+            std::vector<float>(std::max<std::size_t>(mBladeCount, 1), 0.0f),
+            "tip snow " + mField->name);
+}
+
+std::vector<float> FieldGpu::readTipSnow() const {
+    if (mTipSnow.id() == 0 || mBladeCount == 0)
+        return {};
+    std::vector<float> values(mBladeCount);
+    glGetNamedBufferSubData(mTipSnow.id(), 0, GLsizeiptr(values.size() * sizeof(float)),
+                            values.data());
+    return values;
+}
+
 void FieldGpu::bindForCull() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mBlades.id());
+    if (mTipSnow.id() != 0)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, TIP_SNOW_BINDING, mTipSnow.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PATCH_BOUNDS_BINDING, mPatchBounds.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, VISIBLE_BINDING, mVisible.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, COMMAND_BINDING, mCommands.id());
@@ -110,6 +128,8 @@ void FieldGpu::bindForDraw() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mBlades.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, VISIBLE_BINDING, mVisible.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SHADING_BINDING, mShading.id());
+    if (mTipSnow.id() != 0)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, TIP_SNOW_BINDING, mTipSnow.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands.id());
 }
 

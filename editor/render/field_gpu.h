@@ -7,6 +7,7 @@
 
 #include <array>
 #include <span>
+#include <vector>
 
 #include "buffer.h"
 #include "gl_handle.h"
@@ -40,6 +41,8 @@ inline constexpr GLuint VISIBLE_BINDING = 5;
 inline constexpr GLuint COMMAND_BINDING = 6;
 // shaders/include/blade_shading.glsl: the baked lighting inputs, one per blade slot.
 inline constexpr GLuint SHADING_BINDING = 9;
+// shaders/cull.comp writes, shaders/include/blade_shade.glsl reads: snow on each blade's tip.
+inline constexpr GLuint TIP_SNOW_BINDING = 10;
 
 class FieldGpu {
 public:
@@ -56,6 +59,11 @@ public:
 
     // Before the cull dispatch: zero survivors, and each LOD's strip vertex count for `segments`.
     void resetCommands(int segments);
+    // Snow: allocates the per-slot tip-whiteness buffer (once); from then on the cull and the
+    // draws bind it. A field never drawn with snow has none.
+    void enableTipSnow();
+    // The tip whiteness of every slot as the last cull wrote it (empty without snow; tests).
+    std::vector<float> readTipSnow() const;
     // Binds the blade, patch-box, visible and command buffers for the cull dispatch.
     void bindForCull() const;
     // The instance counts the cull pass wrote per LOD (waits for the GPU; statistics only).
@@ -75,6 +83,7 @@ private:
     gl::Buffer mPatchBounds;
     gl::Buffer mVisible;
     gl::Buffer mCommands;
+    gl::Buffer mTipSnow;
     gl::VertexArrayHandle mEmptyVertexArray;  // core profile needs a VAO bound to draw
 };
 

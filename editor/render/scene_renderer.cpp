@@ -1,6 +1,7 @@
 #include "scene_renderer.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "util/assert.h"
 
@@ -149,12 +150,16 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     const glm::mat4 viewProj = projection * camera.view();
 
     mSnowTimer.begin();
+    const float snowAmountM = core::snowAmountAt(options.snow, options.timeS);
+    mSnowLies = options.snow.enabled != 0u && snowAmountM > 0.0f;
     if (options.snow.enabled != 0u) {
         renderSnowMap(options);
-        mSnow->bind(mMeshProgram, options.snow, core::snowAmountAt(options.snow, options.timeS),
-                    SNOW_MAP_UNIT);
+        // The surfaces whiten and rise; the cull buries short blades and whitens the tips.
+        for (const gl::Program* program : {&std::as_const(mMeshProgram), &mCull->program()})
+            mSnow->bind(*program, options.snow, snowAmountM, SNOW_MAP_UNIT);
     } else {
         disableSnow(mMeshProgram);
+        disableSnow(mCull->program());
     }
     mSnowTimer.end();
 
@@ -209,6 +214,9 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
         cull.cutoffDistanceM = options.billboards.crossFadeM.y;
     mCullTimer.begin();
     const CullView cullView{camera.view(), projection, camera.position(), width, height, segments};
+    if (mSnowLies)
+        for (FieldGpu& field : mFields)
+            field.enableTipSnow();
     mCull->run(mFields, cullView, cull, [this, &options] {
         mMeshProgram.use();
         drawOpaque(options, false);
@@ -232,6 +240,8 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     setLighting(program, options);
     setGrassLighting(program, options.lighting);
     program.set("uLightPerVertex", options.lightPerVertex ? 1 : 0);
+    program.set("uSnowTips", mSnowLies ? 1 : 0);
+    program.set("uSnowTipColor", options.snow.snowColor);
     if (hybrid)
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     mBladesDrawn = 0;

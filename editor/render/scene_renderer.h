@@ -96,6 +96,12 @@ public:
     // After core::regrowLayerRegion changed layer `layer` of the scene: re-uploads the regrown
     // patches' blades and stem sets and the re-baked shading; nothing else moves.
     void uploadRegrown(std::size_t layer, const core::RegrowReport& report);
+    // Snow read-backs for tests and tools (wait for the GPU): the depth pass of the last frame
+    // with snow (null before one), and the tip whiteness the cull wrote for layer `layer`.
+    const SnowPass* snowPass() const { return mSnow.get(); }
+    std::vector<float> readTipSnow(std::size_t layer) const {
+        return layer < mFields.size() ? mFields[layer].readTipSnow() : std::vector<float>{};
+    }
 
 private:
     SceneRenderer() = default;
@@ -116,6 +122,7 @@ private:
     std::unique_ptr<CullPass> mCull;
     // Made on the first frame with snow on: a snow-free scene allocates no map.
     std::unique_ptr<SnowPass> mSnow;
+    bool mSnowLies = false;  // this frame: snow on with an amount > 0
     void renderSnowMap(const RenderOptions& options);
     std::unique_ptr<BillboardField> mBillboards;
     std::vector<StemSetField> mStemSets;

@@ -14,6 +14,17 @@ uniform vec3 uPoorRootColor;
 uniform vec3 uPoorTipColor;
 uniform int uGrassLighting;
 uniform int uLightPerVertex;
+// Snow on the tips (SPEC §11): the cull pass writes each drawn blade's tip whiteness; 0 = no snow
+// (the buffer is then not bound and not read).
+uniform int uSnowTips;
+uniform vec3 uSnowTipColor;
+layout(std430, binding = 10) readonly buffer TipSnowBuffer {
+    float tipSnow[];
+};
+// The share of the snow colour at height τ (core::bladeSnowWhiteness, SNOW_TIP_FRACTION 0.3).
+float bladeSnowWhiteness(float tipSnowAmount, float tau) {
+    return tipSnowAmount * smoothstep(0.7, 1.0, tau);
+}
 
 vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeIndex) {
     vec3 toEye = uCameraPosition - position;
@@ -26,6 +37,11 @@ vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeInd
     BladeShading baked = bladeShading[bladeIndex];
     vec3 albedo = mix(mix(uRootColor, uTipColor, height), mix(uPoorRootColor, uPoorTipColor, height),
                       baked.waterAge.z);
+    if (uSnowTips != 0) {
+        // C = Fp·Cs + (1 − Fp)·Cn (paper eq. 3) with the tip's whiteness for Fp.
+        float white = bladeSnowWhiteness(tipSnow[bladeIndex], height);
+        albedo = white * uSnowTipColor + (1.0 - white) * albedo;
+    }
     if (uGrassLighting == 0) {
         // A thin blade's normal is nearly horizontal, so a high sun would leave the field
         // black; leaning it towards the surface normal lights it the way a field scatters.

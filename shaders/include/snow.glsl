@@ -175,6 +175,19 @@ vec3 snowDisplacement(vec3 posWorld, vec3 normal) {
     return uSnowAmountM * snowBoundaryExposure(posWorld, normal) * Zn * normalize(normal);
 }
 
+// Local snow depth in metres, As·Fe·Zn with the boundary's Fe (core::snowDepthAt).
+float snowDepthAt(vec3 posWorld, vec3 normal) {
+    return length(snowDisplacement(posWorld, normal));
+}
+
+bool bladeBuriedBySnow(float heightM, float snowDepthM) {
+    return heightM < snowDepthM;
+}
+
+float bladeTipSnow(float tipFe) {
+    return snowLies() ? clamp(tipFe, 0.0, 1.0) : 0.0;
+}
+
 // (Fp, Fe, Fi) at a surface point: Fp = Fe·Fi (paper eq. 3); zero where no snow lies.
 vec3 snowCoverageTerms(vec3 posWorld, vec3 normal) {
     if (!snowLies())

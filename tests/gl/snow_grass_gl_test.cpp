@@ -1,0 +1,173 @@
+// Snow meets grass on the GPU (SPEC §11, issue 9): the cull pass buries blades shorter than the
+// snow at their roots (the drawn count drops, and turning snow off restores it) and whitens the
+// tips of the rest by their exposure, both held to the CPU reference of core/snow.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "framebuffer.h"
+#include "gl_context_fixture.h"
+#include "scene/scene.h"
+#include "scene_renderer.h"
+#include "snow/snow.h"
+#include "support/plane_project.h"
+
+namespace grass::test {
+namespace {
+
+using SnowGrassGlTest = GlTest;
+
+constexpr int SIZE = 96;
+
+// Every blade goes through the cull (no test removes any), so only snow can cull.
+render::RenderOptions allBladesOptions(const core::Project& project) {
+    render::RenderOptions options = render::renderOptionsFor(project, true);
+    options.cull.frustum = options.cull.orientation = false;
+    options.cull.distance = options.cull.occlusion = false;
+    options.cull.collectStats = true;
+    return options;
+}
+
+struct Frame {
+    render::CullStats cull;
+    std::vector<float> tipSnow;
+};
+
+Frame renderFrame(render::SceneRenderer& renderer, const render::RenderOptions& options) {
+    const core::OrbitCamera camera =
+        core::OrbitCamera::lookAt({0.0f, 5.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, 0.9f);
+    gl::Framebuffer framebuffer(SIZE, SIZE, 0);
+    renderer.render(camera, SIZE, SIZE, framebuffer.id(), options);
+    glFinish();
+    return {renderer.lastTimings().cull, renderer.readTipSnow(0)};
+}
+
+// The GPU depth map of the last frame as a core::SnowDepthMap (the GL snow test holds it equal
+// to the CPU rasteriser), so the CPU functions can be evaluated on exactly the GPU's map.
+core::SnowDepthMap readDepthMap(const render::SnowPass& pass, int resolution) {
+    core::SnowDepthMap map;
+    map.view = pass.view();
+    map.resolution = resolution;
+    map.depthM.resize(std::size_t(resolution) * std::size_t(resolution));
+    glGetTextureImage(pass.depthTexture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                      GLsizei(map.depthM.size() * sizeof(float)), map.depthM.data());
+    for (float& depth : map.depthM)
+        depth = depth < 1.0f ? depth * map.view.depthRangeM : core::SNOW_MAP_EMPTY;
+    return map;
+}
+
+TEST_F(SnowGrassGlTest, BuriedBladesAreCulledAndSnowOffRestoresTheCount) {
+    PlaneField field;
+    field.sizeM = 3.0f;
+    field.resolution = 4;
+    field.density = 300.0f;
+    field.heightMinM = 0.05f;
+    field.heightMaxM = 0.4f;
+    const core::LoadedProject loaded = planeFieldProject(field);
+    auto scene = core::buildScene(loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    auto renderer = render::SceneRenderer::create(*scene);
+    ASSERT_TRUE(renderer.ok()) << renderer.error().str();
+    render::RenderOptions options = allBladesOptions(loaded.project);
+
+    const Frame bare = renderFrame(**renderer, options);
+    ASSERT_GT(bare.cull.bladesIn, 1000u);
+    EXPECT_EQ(bare.cull.drawn, bare.cull.bladesIn);
+    EXPECT_EQ(bare.cull.culledSnow, 0u);
+
+    core::SnowParams& snow = options.snow;
+    snow.enabled = 1u;
+    snow.amountM = 0.25f;
+    snow.mapResolution = 512;
+    const Frame snowy = renderFrame(**renderer, options);
+    EXPECT_EQ(snowy.cull.bladesIn, bare.cull.bladesIn);
+    EXPECT_GT(snowy.cull.culledSnow, bare.cull.bladesIn / 10) << "short blades vanish";
+    EXPECT_LT(snowy.cull.drawn, bare.cull.drawn);
+    EXPECT_EQ(snowy.cull.drawn + snowy.cull.culledSnow, snowy.cull.bladesIn);
+
+    // The CPU reference on the same map: blades shorter than As·Fe·Zn at their roots.
+    const render::SnowPass* pass = (*renderer)->snowPass();
+    ASSERT_NE(pass, nullptr);
+    const core::SnowDepthMap map = readDepthMap(*pass, snow.mapResolution);
+    std::size_t buried = 0;
+    for (const core::Blade& blade : scene->layers.front().patched.blades) {
+        if (!(blade.h() > 0.0f))
+            continue;
+        const float fe = core::snowBoundaryExposure(map, blade.v0(), blade.up(), snow);
+        buried += core::bladeBuriedBySnow(blade.h(), core::snowDepthAt(blade.v0(), fe, snow));
+    }
+    // Only blades within float rounding of the snow surface may be judged differently.
+    const auto difference = std::max(buried, snowy.cull.culledSnow) -
+                            std::min(buried, snowy.cull.culledSnow);
+    EXPECT_LE(difference, bare.cull.bladesIn / 500) << "CPU " << buried << " GPU "
+                                                    << snowy.cull.culledSnow;
+
+    snow.amountM = 20.0f;  // deeper than any blade except where the noise nearly cancels Zn
+    const Frame deep = renderFrame(**renderer, options);
+    EXPECT_LT(deep.cull.drawn, bare.cull.bladesIn / 50);
+
+    snow.enabled = 0u;
+    const Frame restored = renderFrame(**renderer, options);
+    EXPECT_EQ(restored.cull.drawn, bare.cull.drawn);
+    EXPECT_EQ(restored.cull.culledSnow, 0u);
+}
+
+TEST_F(SnowGrassGlTest, ExposedTipsWhitenAndShelteredTipsDoNot) {
+    PlaneField field;
+    field.sizeM = 4.0f;
+    field.resolution = 8;
+    field.density = 60.0f;
+    core::LoadedProject loaded = planeFieldProject(field);
+    core::ColliderDesc ball;
+    ball.position = {0.0f, 1.4f, 0.0f};
+    ball.radiusM = 0.8f;
+    loaded.project.colliders.push_back(ball);
+    auto scene = core::buildScene(loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    auto renderer = render::SceneRenderer::create(*scene);
+    ASSERT_TRUE(renderer.ok()) << renderer.error().str();
+    render::RenderOptions options = allBladesOptions(loaded.project);
+    core::SnowParams& snow = options.snow;
+    snow.enabled = 1u;
+    snow.amountM = 0.01f;  // too thin to bury any blade: every tip is judged
+    snow.mapResolution = 512;
+    snow.fallDirection = {0.0f, -1.0f, 0.0f};
+    const Frame frame = renderFrame(**renderer, options);
+    ASSERT_EQ(frame.cull.culledSnow, 0u);
+    const core::SnowDepthMap map = readDepthMap(*(*renderer)->snowPass(), snow.mapResolution);
+    const auto& blades = scene->layers.front().patched.blades;
+    ASSERT_EQ(frame.tipSnow.size(), blades.size());
+
+    std::size_t exposedWhite = 0, exposed = 0, shelteredWhite = 0, sheltered = 0, mismatched = 0;
+    std::size_t live = 0;
+    for (std::size_t i = 0; i < blades.size(); ++i) {
+        if (!(blades[i].h() > 0.0f))
+            continue;
+        ++live;
+        const float cpu = core::bladeTipSnow(
+            core::exposureCoefficient(map, blades[i].v2(), core::snowUp(snow), snow.samples,
+                                      snow.sampleRadiusTexels, snow.depthBiasM),
+            snow);
+        // One jittered sample more or less where a sample sits on a texel edge.
+        mismatched += std::abs(cpu - frame.tipSnow[i]) > 1.01f / float(snow.samples);
+        const glm::vec3 root = blades[i].v0();
+        const float fromAxis = std::hypot(root.x, root.z);
+        if (fromAxis < 0.5f) {
+            ++sheltered;
+            shelteredWhite += frame.tipSnow[i] > 0.5f;
+        } else if (fromAxis > 1.2f) {
+            ++exposed;
+            exposedWhite += frame.tipSnow[i] > 0.99f;
+        }
+    }
+    EXPECT_LE(mismatched, live / 200);
+    ASSERT_GT(sheltered, 20u);
+    ASSERT_GT(exposed, 200u);
+    EXPECT_EQ(shelteredWhite, 0u) << "under the ball no snow reaches the tips";
+    EXPECT_EQ(exposedWhite, exposed) << "in the open every tip carries snow";
+}
+
+}  // namespace
+}  // namespace grass::test
