@@ -7,7 +7,9 @@
 // that LOD's strip and tessellation instance counts (reset to 0 before the dispatch).
 #include "blade.glsl"
 #include "lod.glsl"
+#ifdef GRASS_SNOW
 #include "snow.glsl"
+#endif
 
 layout(local_size_x = 32) in;
 
@@ -28,11 +30,13 @@ layout(std430, binding = 6) buffer CommandBuffer {
 layout(std430, binding = 7) buffer CounterBuffer {
     uint counters[8];
 };
+#ifdef GRASS_SNOW
 // Snow (SPEC §11): the whiteness of each surviving blade's tip (bladeTipSnow), read by the blade
-// shaders; bound, and written, only while snow lies.
+// shaders. This program variant runs only while snow lies.
 layout(std430, binding = 10) writeonly buffer TipSnowBuffer {
     float tipSnow[];
 };
+#endif
 
 uniform sampler2D uSceneDepth;  // window-space depth of the opaque pre-pass
 uniform mat4 uViewProj;
@@ -154,12 +158,12 @@ uint classify(uint index) {
     // Last, as the dearest test (two exposure lookups of uSnowSamples taps): a blade shorter than
     // the snow at its root is buried (core::bladeBuriedBySnow); a survivor's tip whitens by the
     // exposure of the tip (core::bladeTipSnow).
-    if (snowLies()) {
-        if (bladeBuriedBySnow(blade.v1H.w, snowDepthAt(v0, up)))
-            return RESULT_SNOW;
-        tipSnow[index] =
-            bladeTipSnow(exposureCoefficient(v2, uSnowUp, uSnowSamples, uSnowRadiusTexels));
-    }
+#ifdef GRASS_SNOW
+    if (bladeBuriedBySnow(blade.v1H.w, snowDepthAt(v0, up)))
+        return RESULT_SNOW;
+    tipSnow[index] =
+        bladeTipSnow(exposureCoefficient(v2, uSnowUp, uSnowSamples, uSnowRadiusTexels));
+#endif
     return RESULT_VISIBLE;
 }
 

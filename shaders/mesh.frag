@@ -1,26 +1,34 @@
 #version 450 core
+// Opaque meshes, lit. Built twice: plain, and with GRASS_SNOW for the surfaces under snow (the
+// snow-free program holds no snow code at all, so a scene without snow pays nothing for it, not
+// even on software rasterizers that execute both sides of a uniform branch).
 #include "lighting.glsl"
+#ifdef GRASS_SNOW
 #include "snow.glsl"
+// Draws (Fp, Fe, Fi) unlit instead of the shaded surface: docs/snow.md measures the snow mask's
+// error against a reference with it.
+uniform bool uSnowCoverageView;
+#endif
 
 in vec3 vNormal;
 in vec2 vUv;
 in vec3 vPosWorld;
 
 uniform vec3 uAlbedo;
-// Draws (Fp, Fe, Fi) unlit instead of the shaded surface: docs/snow.md measures the snow mask's
-// error against a reference with it.
-uniform bool uSnowCoverageView;
 
 out vec4 fragColor;
 
 void main() {
     // Two-sided: glTF meshes may be open shells seen from behind (a Möbius strip always is).
+    vec3 normal = normalize(gl_FrontFacing ? vNormal : -vNormal);
+    vec3 albedo = uAlbedo;
+#ifdef GRASS_SNOW
     if (uSnowCoverageView) {
         fragColor = vec4(snowCoverageTerms(vPosWorld, vNormal), 1.0);
         return;
     }
-    vec3 normal = normalize(gl_FrontFacing ? vNormal : -vNormal);
     // Snow settles on the side that faces the sky, whichever side the camera sees.
-    vec3 albedo = snowShade(vPosWorld, vNormal, uAlbedo);
+    albedo = snowShade(vPosWorld, vNormal, albedo);
+#endif
     fragColor = vec4(simpleLighting(albedo, normal, 0.2), 1.0);
 }

@@ -1,10 +1,7 @@
 #version 450 core
 // Opaque meshes: the surface the grass grows on (uModel = identity) and the props (colliders,
-// uModel = translation · uniform scale, so normals need no inverse transpose). With snow on, the
-// surface rises by the snow's depth along its normal (SPEC §11, paper eq. 5) where the sky
-// reaches it, with a smooth falloff at the edge of sheltered ground.
-#include "snow.glsl"
-
+// uModel = translation · uniform scale, so normals need no inverse transpose). Snow-free: under
+// snow the surface goes through mesh_snow.vert and the tessellation stages instead.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
@@ -19,9 +16,6 @@ out vec3 vPosWorld;
 void main() {
     vNormal = mat3(uModel) * aNormal;
     vUv = aUv;
-    vec3 posWorld = (uModel * vec4(aPosition, 1.0)).xyz;
-    // The exposure is taken where the ground is, before it rises.
-    vPosWorld = posWorld;
-    posWorld += snowDisplacement(posWorld, vNormal);
-    gl_Position = uViewProj * vec4(posWorld, 1.0);
+    vPosWorld = (uModel * vec4(aPosition, 1.0)).xyz;
+    gl_Position = uViewProj * vec4(vPosWorld, 1.0);
 }

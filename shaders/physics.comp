@@ -14,6 +14,7 @@ uniform uint bladeCount;
 uniform uint substepCount;
 uniform uint windCount;
 uniform uint colliderCount;
+uniform float gravityLoadScale;  // 0: no load buffer bound
 
 const float ETA_MAX = 1.0e4;
 // See VALIDATION_ITERATIONS in core/physics/physics.cpp: passes 2–3 converge to a fixed point.
@@ -136,7 +137,7 @@ bool collide(inout Blade blade, inout float bladeEta, uint substep) {
     return hit;
 }
 
-void stepBlade(inout Blade blade, inout float bladeEta, vec3 restTipIn) {
+void stepBlade(inout Blade blade, inout float bladeEta, vec3 restTipIn, float extraGravity) {
     blade = repairBlade(blade);
     bladeEta = isFiniteFloat(bladeEta) ? clamp(bladeEta, 0.0, ETA_MAX) : 0.0;
     float h = blade.v1H.w;
@@ -146,7 +147,8 @@ void stepBlade(inout Blade blade, inout float bladeEta, vec3 restTipIn) {
         return;
     }
     vec3 iv2 = isFinite(restTipIn) ? restTipIn : v0 + h * up;
-    float gMagnitude = isFiniteFloat(params.gravity.w) ? params.gravity.w : 0.0;
+    float extra = isFiniteFloat(extraGravity) ? max(extraGravity, 0.0) : 0.0;
+    float gMagnitude = (isFiniteFloat(params.gravity.w) ? params.gravity.w : 0.0) + extra;
     // Nothing acts on a blade at rest: skip it.
     if (windCount == 0u && colliderCount == 0u && gMagnitude == 0.0 && bladeEta == 0.0 &&
         blade.v2W.xyz == iv2)
@@ -213,7 +215,8 @@ void main() {
     const float originalEta = eta[index];
     Blade blade = original;
     float bladeEta = originalEta;
-    stepBlade(blade, bladeEta, restTips[index].xyz);
+    float extraGravity = gravityLoadScale > 0.0 ? gravityLoadScale * gravityLoad[index] : 0.0;
+    stepBlade(blade, bladeEta, restTips[index].xyz, extraGravity);
     // A blade at rest is not written back: a still field costs reads only.
     if (blade != original)
         physicsBlades[index] = blade;

@@ -102,9 +102,15 @@ bool collide(Blade& blade, float& eta, const std::vector<SphereCollider>& collid
 
 void stepRange(std::span<Blade> blades, std::span<float> eta, std::span<const glm::vec3> restTips,
                const PhysicsParams& params, const std::vector<WindSource>& wind,
-               const std::vector<SphereCollider>& colliders, float timeS) {
+               const std::vector<SphereCollider>& colliders, float timeS, GravityLoad load) {
     for (std::size_t i = 0; i < blades.size(); ++i)
-        stepBlade(blades[i], eta[i], restTips[i], params, wind, colliders, timeS);
+        stepBlade(blades[i], eta[i], restTips[i], params, wind, colliders, timeS, load.at(i));
+}
+
+GravityLoad subLoad(GravityLoad load, std::size_t begin, std::size_t count) {
+    if (!load.perBlade.empty())
+        load.perBlade = load.perBlade.subspan(begin, count);
+    return load;
 }
 
 }  // namespace
@@ -226,7 +232,7 @@ void validateBlade(Blade& blade) {
 
 void stepBlade(Blade& blade, float& eta, glm::vec3 restTipIn, const PhysicsParams& params,
                const std::vector<WindSource>& wind, const std::vector<SphereCollider>& colliders,
-               float timeS) {
+               float timeS, float extraGravity) {
     blade = repairBlade(blade);
     eta = std::isfinite(eta) ? std::clamp(eta, 0.0f, ETA_MAX) : 0.0f;
     const float h = blade.h();
@@ -236,7 +242,8 @@ void stepBlade(Blade& blade, float& eta, glm::vec3 restTipIn, const PhysicsParam
         return;
     }
     const glm::vec3 iv2 = isFinite(restTipIn) ? restTipIn : v0 + h * up;
-    const float gMagnitude = std::isfinite(params.gravity.w) ? params.gravity.w : 0.0f;
+    const float extra = std::isfinite(extraGravity) ? std::max(extraGravity, 0.0f) : 0.0f;
+    const float gMagnitude = (std::isfinite(params.gravity.w) ? params.gravity.w : 0.0f) + extra;
     // Nothing acts on a blade at rest: skip it (a still field costs one comparison per blade).
     if (wind.empty() && colliders.empty() && gMagnitude == 0.0f && eta == 0.0f && blade.v2() == iv2)
         return;
@@ -297,15 +304,16 @@ void stepBlade(Blade& blade, float& eta, glm::vec3 restTipIn, const PhysicsParam
 void stepPhysics(std::span<Blade> blades, std::span<float> eta,
                  std::span<const glm::vec3> restTipsIn, const PhysicsParams& params,
                  const std::vector<WindSource>& wind, const std::vector<SphereCollider>& colliders,
-                 float timeS, unsigned threadCount) {
+                 float timeS, unsigned threadCount, GravityLoad load) {
     GRASS_ASSERT(eta.size() == blades.size() && restTipsIn.size() == blades.size());
+    GRASS_ASSERT(load.perBlade.empty() || load.perBlade.size() == blades.size());
     unsigned threads = threadCount > 0 ? threadCount : std::thread::hardware_concurrency();
     threads = std::clamp(threads, 1u, MAX_THREADS);
     const std::size_t byWork = blades.size() / MIN_BLADES_PER_THREAD;
     threads =
         static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(byWork, 1)));
     if (threads <= 1) {
-        stepRange(blades, eta, restTipsIn, params, wind, colliders, timeS);
+        stepRange(blades, eta, restTipsIn, params, wind, colliders, timeS, load);
         return;
     }
     // Every blade is independent, so any split gives bit-identical results.
@@ -317,12 +325,13 @@ void stepPhysics(std::span<Blade> blades, std::span<float> eta,
         const std::size_t count = std::min(chunk, blades.size() - begin);
         workers.emplace_back([=, &params, &wind, &colliders] {
             stepRange(blades.subspan(begin, count), eta.subspan(begin, count),
-                      restTipsIn.subspan(begin, count), params, wind, colliders, timeS);
+                      restTipsIn.subspan(begin, count), params, wind, colliders, timeS,
+                      subLoad(load, begin, count));
         });
     }
     const std::size_t first = std::min(chunk, blades.size());
     stepRange(blades.first(first), eta.first(first), restTipsIn.first(first), params, wind,
-              colliders, timeS);
+              colliders, timeS, subLoad(load, 0, first));
     for (std::thread& w : workers)
         w.join();
 }

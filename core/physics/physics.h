@@ -102,10 +102,19 @@ Blade repairBlade(Blade blade);
 // Precondition: up is unit length (repairBlade).
 void validateBlade(Blade& blade);
 
+// Extra gravity per blade (the load snow puts on it, SPEC §11): blade i's |gE| grows by
+// scale·perBlade[i] m/s² along the gravity direction. Empty perBlade or scale 0: none.
+struct GravityLoad {
+    std::span<const float> perBlade;
+    float scale = 0.0f;
+    float at(std::size_t i) const { return perBlade.empty() ? 0.0f : scale * perBlade[i]; }
+};
+
 // One step of dtS for one blade from timeS (the function stepPhysics applies to every blade).
+// extraGravity: m/s² added to |gE| (GravityLoad::at); non-finite or negative counts as 0.
 void stepBlade(Blade& blade, float& eta, glm::vec3 restTip, const PhysicsParams& params,
                const std::vector<WindSource>& wind, const std::vector<SphereCollider>& colliders,
-               float timeS);
+               float timeS, float extraGravity = 0.0f);
 
 // One step for all blades, split into contiguous ranges over threadCount threads (0: hardware
 // concurrency, at most 8). Results do not depend on the thread count. eta and restTips are
@@ -113,6 +122,6 @@ void stepBlade(Blade& blade, float& eta, glm::vec3 restTip, const PhysicsParams&
 void stepPhysics(std::span<Blade> blades, std::span<float> eta, std::span<const glm::vec3> restTips,
                  const PhysicsParams& params, const std::vector<WindSource>& wind,
                  const std::vector<SphereCollider>& colliders, float timeS,
-                 unsigned threadCount = 0);
+                 unsigned threadCount = 0, GravityLoad load = {});
 
 }  // namespace grass::core

@@ -6,6 +6,7 @@
 
 #include "collider/packing_cache.h"
 #include "scene/scene_props.h"
+#include "scene/scene_snow.h"
 
 namespace grass::core {
 
@@ -86,6 +87,7 @@ Result<ScenePhysics> buildScenePhysics(const LoadedProject& loaded) {
     const Project& project = loaded.project;
     ScenePhysics out;
     out.params = project.physics;
+    out.snow = project.snow;
     for (const WindDesc& wind : project.wind)
         out.wind.push_back(wind.source);
     for (std::size_t i = 0; i < project.colliders.size(); ++i) {
@@ -107,12 +109,26 @@ SceneSimulation::SceneSimulation(Scene& scene, ScenePhysics physics, unsigned th
         mEta.emplace_back(layer.patched.blades.size(), 0.0f);
         mRestTips.push_back(core::restTipsAsGrown(layer.patched.blades));
     }
+    // The exposures are taken once, from the scene at rest at the start (scene_snow.h says why).
+    if (snowLoadsBlades(mPhysics.snow) && mPhysics.snowLoadPerMetre.empty()) {
+        const SnowDepthMap map = sceneSnowDepthMap(mScene, mPhysics.snow, 0.0f);
+        for (const LayerField& layer : mScene.layers)
+            mPhysics.snowLoadPerMetre.push_back(
+                snowLoadPerMetre(layer.patched.blades, map, mPhysics.snow));
+    }
+}
+
+GravityLoad ScenePhysics::snowLoad(std::size_t layer, float timeS) const {
+    if (layer >= snowLoadPerMetre.size() || snowLoadPerMetre[layer].empty())
+        return {};
+    return {snowLoadPerMetre[layer], snowAmountAt(snow, timeS)};
 }
 
 void SceneSimulation::step() {
     for (std::size_t i = 0; i < mScene.layers.size(); ++i)
         stepPhysics(mScene.layers[i].patched.blades, mEta[i], mRestTips[i], mPhysics.params,
-                    mPhysics.wind, mPhysics.colliders, mTimeS, mThreadCount);
+                    mPhysics.wind, mPhysics.colliders, mTimeS, mThreadCount,
+                    mPhysics.snowLoad(i, mTimeS));
     advanceClock();
 }
 

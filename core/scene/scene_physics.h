@@ -11,6 +11,7 @@
 #include "physics/physics.h"
 #include "project/project.h"
 #include "scene/scene.h"
+#include "snow/snow_params.h"
 
 namespace grass::core {
 
@@ -19,6 +20,12 @@ struct ScenePhysics {
     std::vector<WindSource> wind;
     std::vector<SphereCollider> colliders;  // spheres and packed meshes, world space
     std::vector<std::string> notes;         // what packing did (cache hits, measures)
+    // Snow (SPEC §11): the project's settings, and per layer the snow load of each blade per
+    // metre of snow (scene_snow.h; empty without a load), filled by SceneSimulation.
+    SnowParams snow;
+    std::vector<std::vector<float>> snowLoadPerMetre;
+    // The load at timeS (GravityLoad over layer `layer`'s blades).
+    GravityLoad snowLoad(std::size_t layer, float timeS) const;
 };
 
 // Reads mesh collider files and packs (or loads the cached packing of) each. Errors name the

@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "util/assert.h"
+
 namespace grass::render {
 
 namespace {
@@ -19,6 +21,16 @@ Result<CullPass> CullPass::create() {
     const std::array<GLuint, COUNTER_COUNT> zeros{};
     pass.mCounters = gl::Buffer(std::as_bytes(std::span(zeros)), "cull counters");
     return pass;
+}
+
+const gl::Program& CullPass::snowProgram() {
+    if (mSnowProgram.id() == 0) {
+        auto program = gl::Program::load({{GL_COMPUTE_SHADER, "cull.comp"}}, "blade cull (snow)",
+                                         {"GRASS_SNOW"});
+        GRASS_ASSERT(program.ok());  // the shader ships with the program; a failure is a bug
+        mSnowProgram = std::move(*program);
+    }
+    return mSnowProgram;
 }
 
 // Occlusion depth: a depth-only pre-pass of the opaque scene into a single-sample depth
@@ -48,27 +60,28 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
 
+    const gl::Program& program = settings.snow ? snowProgram() : mProgram;
     mStatsValid = settings.collectStats;
     if (settings.collectStats) {
         const GLuint zero = 0;
         glClearNamedBufferData(mCounters.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     }
-    mProgram.use();
-    mProgram.set("uViewProj", view.projection * view.view);
-    mProgram.set("uCameraPosition", view.cameraPosition);
-    mProgram.set("uProj22", view.projection[2][2]);
-    mProgram.set("uProj32", view.projection[3][2]);
-    mProgram.set("uTestPatch", settings.frustum ? 1 : 0);
-    mProgram.set("uTestOrientation", settings.orientation ? 1 : 0);
-    mProgram.set("uTestFrustum", settings.frustum ? 1 : 0);
-    mProgram.set("uTestDistance", settings.distance && settings.maxDistanceM > 0.0f ? 1 : 0);
-    mProgram.set("uTestOcclusion", settings.occlusion ? 1 : 0);
-    mProgram.set("uDistanceClasses", std::max(settings.distanceClasses, 1));
-    mProgram.set("uMaxDistance", std::max(settings.maxDistanceM, 1e-3f));
-    mProgram.set("uCutoffDistance", std::max(settings.cutoffDistanceM, 0.0f));
-    mProgram.set("uLodDistance", std::max(settings.lodDistanceM, 0.0f));
-    mProgram.set("uCollectStats", settings.collectStats ? 1 : 0);
-    mProgram.set("uSceneDepth", 0);
+    program.use();
+    program.set("uViewProj", view.projection * view.view);
+    program.set("uCameraPosition", view.cameraPosition);
+    program.set("uProj22", view.projection[2][2]);
+    program.set("uProj32", view.projection[3][2]);
+    program.set("uTestPatch", settings.frustum ? 1 : 0);
+    program.set("uTestOrientation", settings.orientation ? 1 : 0);
+    program.set("uTestFrustum", settings.frustum ? 1 : 0);
+    program.set("uTestDistance", settings.distance && settings.maxDistanceM > 0.0f ? 1 : 0);
+    program.set("uTestOcclusion", settings.occlusion ? 1 : 0);
+    program.set("uDistanceClasses", std::max(settings.distanceClasses, 1));
+    program.set("uMaxDistance", std::max(settings.maxDistanceM, 1e-3f));
+    program.set("uCutoffDistance", std::max(settings.cutoffDistanceM, 0.0f));
+    program.set("uLodDistance", std::max(settings.lodDistanceM, 0.0f));
+    program.set("uCollectStats", settings.collectStats ? 1 : 0);
+    program.set("uSceneDepth", 0);
     glBindTextureUnit(0, mDepth.texture.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, COUNTER_BINDING, mCounters.id());
     for (FieldGpu& field : fields) {
@@ -76,8 +89,8 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
         if (field.bladeCount() == 0)
             continue;
         field.bindForCull();
-        mProgram.set("uBladeCount", static_cast<unsigned>(field.bladeCount()));
-        mProgram.set("uPatchSize", std::max(field.patchSize(), 1u));
+        program.set("uBladeCount", static_cast<unsigned>(field.bladeCount()));
+        program.set("uPatchSize", std::max(field.patchSize(), 1u));
         const auto groups =
             static_cast<GLuint>((field.bladeCount() + WORK_GROUP_SIZE - 1) / WORK_GROUP_SIZE);
         glDispatchCompute(groups, 1, 1);

@@ -40,6 +40,9 @@ struct CullSettings {
     float cutoffDistanceM = 0.0f;
     // Count blades per test (statistics); costs a few atomics per work-group.
     bool collectStats = false;
+    // Snow lies (SPEC §11): run the snow variant of the cull, which buries blades and writes the
+    // tips' whiteness; its snow uniforms are set through snowProgram() before run().
+    bool snow = false;
     bool anyEnabled() const { return frustum || orientation || distance || occlusion; }
 };
 
@@ -80,12 +83,13 @@ public:
              const std::function<void()>& drawOpaque);
     // Counters of the last run(); zero unless it ran with collectStats. Waits for the GPU.
     CullStats readStats(const std::vector<FieldGpu>& fields) const;
-    // The cull program, for the snow uniforms (SnowPass::bind / disableSnow) before run().
-    const gl::Program& program() const { return mProgram; }
+    // The snow variant of the cull program (compiled on first use), for SnowPass::bind.
+    const gl::Program& snowProgram();
 
 private:
     void resizeDepth(int width, int height);
     gl::Program mProgram;
+    gl::Program mSnowProgram;
     gl::Buffer mCounters;
     gl::DepthTarget mDepth;
     bool mStatsValid = false;

@@ -49,4 +49,12 @@ void MeshGpu::draw() const {
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mIndexCount), GL_UNSIGNED_INT, nullptr);
 }
 
+void MeshGpu::drawPatches() const {
+    if (mIndexCount == 0)
+        return;
+    glBindVertexArray(mVertexArray.id());
+    glPatchParameteri(GL_PATCH_VERTICES, 3);
+    glDrawElements(GL_PATCHES, static_cast<GLsizei>(mIndexCount), GL_UNSIGNED_INT, nullptr);
+}
+
 }  // namespace grass::render

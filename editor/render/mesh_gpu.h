@@ -11,6 +11,8 @@ class MeshGpu {
 public:
     explicit MeshGpu(const core::SurfaceMesh& mesh);
     void draw() const;
+    // The triangles as 3-vertex patches, for the tessellated snow surface (mesh_snow.tesc).
+    void drawPatches() const;
     std::size_t triangleCount() const { return mIndexCount / 3; }
 
 private:

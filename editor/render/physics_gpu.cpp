@@ -70,9 +70,16 @@ void PhysicsGpu::resetRange(std::size_t first, std::span<const core::Blade> blad
     mEta.update(std::as_bytes(std::span<const float>(eta)), first * sizeof(float));
 }
 
+void PhysicsGpu::setGravityLoad(std::span<const float> perBlade) {
+    GRASS_ASSERT(perBlade.empty() || perBlade.size() == mBladeCount);
+    mGravityLoad = perBlade.empty() ? gl::Buffer()
+                                    : gl::Buffer(std::as_bytes(perBlade), "physics gravity load");
+}
+
 void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::PhysicsParams& params,
                       const std::vector<core::WindSource>& wind,
-                      const std::vector<core::SphereCollider>& colliders, float timeS) {
+                      const std::vector<core::SphereCollider>& colliders, float timeS,
+                      float gravityLoadScale) {
     GRASS_ASSERT(bladeCount == mBladeCount);
     const std::uint32_t n = core::substepCount(params);
     if (bladeCount == 0 || n == 0)
@@ -112,6 +119,10 @@ void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::Ph
     mProgram.set("substepCount", static_cast<unsigned>(n));
     mProgram.set("windCount", static_cast<unsigned>(wind.size()));
     mProgram.set("colliderCount", static_cast<unsigned>(colliders.size()));
+    const bool loaded = mGravityLoad.id() != 0 && gravityLoadScale > 0.0f;
+    mProgram.set("gravityLoadScale", loaded ? gravityLoadScale : 0.0f);
+    if (loaded)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, mGravityLoad.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bladeBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, mParams.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, mEta.id());

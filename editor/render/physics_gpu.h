@@ -48,11 +48,16 @@ public:
     // new blades' own (restTipsAsGrown) and η 0. Preconditions: the range is inside the reset
     // count.
     void resetRange(std::size_t first, std::span<const core::Blade> blades);
+    // The per-blade part of core::GravityLoad (snow load), one value per blade of the reset
+    // count; empty frees it. Allocated only while a scene has a load.
+    void setGravityLoad(std::span<const float> perBlade);
     // One step of params.dtS from timeS for bladeCount blades of bladeBuffer (the count given to
-    // reset). Ends with a barrier, so later draws and buffer reads see the new blades.
+    // reset), with |gE| of blade i raised by gravityLoadScale · perBlade[i] (setGravityLoad).
+    // Ends with a barrier, so later draws and buffer reads see the new blades.
     void step(GLuint bladeBuffer, std::size_t bladeCount, const core::PhysicsParams& params,
               const std::vector<core::WindSource>& wind,
-              const std::vector<core::SphereCollider>& colliders, float timeS);
+              const std::vector<core::SphereCollider>& colliders, float timeS,
+              float gravityLoadScale = 0.0f);
     // η of every blade (a GPU read-back, for tests and tools).
     std::vector<float> readEta() const;
 
@@ -67,6 +72,7 @@ private:
     gl::Buffer mColliders;
     gl::Buffer mColliderGroups;
     gl::Buffer mSubsteps;
+    gl::Buffer mGravityLoad;
 };
 
 }  // namespace grass::render

@@ -49,9 +49,17 @@ void ScenePhysicsGpu::uploadRegrown(std::size_t layer, const core::Scene& scene,
 }
 
 void ScenePhysicsGpu::step(const core::ScenePhysics& physics, float timeS) {
-    for (Layer& layer : mLayers)
+    for (std::size_t i = 0; i < mLayers.size(); ++i) {
+        Layer& layer = mLayers[i];
+        const core::GravityLoad load = physics.snowLoad(i, timeS);
+        // Uploaded once: the per-metre load is fixed when the simulation starts.
+        if (!layer.loadUploaded && !load.perBlade.empty()) {
+            layer.physics.setGravityLoad(load.perBlade);
+            layer.loadUploaded = true;
+        }
         layer.physics.step(layer.blades, layer.bladeCount, physics.params, physics.wind,
-                           physics.colliders, timeS);
+                           physics.colliders, timeS, load.scale);
+    }
 }
 
 void ScenePhysicsGpu::readBack(core::Scene& scene, core::SceneSimulation& simulation) const {

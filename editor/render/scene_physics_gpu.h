@@ -35,6 +35,7 @@ private:
         GLuint blades = 0;
         std::size_t bladeCount = 0;
         PhysicsGpu physics;
+        bool loadUploaded = false;  // the snow load per metre (ScenePhysics) is on the GPU
     };
     std::vector<Layer> mLayers;
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "scene/scene_snow.h"
 #include "util/assert.h"
 
 namespace grass::render {
@@ -149,25 +150,29 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     const glm::mat4 projection = camera.projection(aspect);
     const glm::mat4 viewProj = projection * camera.view();
 
+    // Snow: only a frame where snow lies (on, amount > 0) runs the depth pass and the snow
+    // variants of the opaque and cull programs; any other frame runs exactly the snow-free ones.
     mSnowTimer.begin();
     const float snowAmountM = core::snowAmountAt(options.snow, options.timeS);
     mSnowLies = options.snow.enabled != 0u && snowAmountM > 0.0f;
-    if (options.snow.enabled != 0u) {
+    if (mSnowLies) {
         renderSnowMap(options);
         // The surfaces whiten and rise; the cull buries short blades and whitens the tips.
-        for (const gl::Program* program : {&std::as_const(mMeshProgram), &mCull->program()})
+        for (const gl::Program* program : {&snowMeshProgram(), &mCull->snowProgram()})
             mSnow->bind(*program, options.snow, snowAmountM, SNOW_MAP_UNIT);
-    } else {
-        disableSnow(mMeshProgram);
-        disableSnow(mCull->program());
+        const gl::Program& snowMesh = snowMeshProgram();
+        snowMesh.set("uSnowCoverageView", options.snowCoverageView ? 1 : 0);
+        snowMesh.set("uViewportPixels", glm::vec2(float(width), float(height)));
+        snowMesh.set("uSnowTessPixels", std::max(options.snowTessPixels, 1.0f));
+        snowMesh.set("uSnowTessMax", float(std::clamp(options.snowTessMax, 1, 64)));
     }
     mSnowTimer.end();
 
     mMeshTimer.begin();
-    mMeshProgram.use();
-    mMeshProgram.set("uViewProj", viewProj);
-    mMeshProgram.set("uSnowCoverageView", options.snowCoverageView ? 1 : 0);
-    setLighting(mMeshProgram, options);
+    const gl::Program& opaque = mSnowLies ? snowMeshProgram() : mMeshProgram;
+    opaque.use();
+    opaque.set("uViewProj", viewProj);
+    setLighting(opaque, options);
     drawOpaque(options, true);
     mMeshTimer.end();
 
@@ -217,8 +222,9 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     if (mSnowLies)
         for (FieldGpu& field : mFields)
             field.enableTipSnow();
+    cull.snow = mSnowLies;
     mCull->run(mFields, cullView, cull, [this, &options] {
-        mMeshProgram.use();
+        (mSnowLies ? snowMeshProgram() : mMeshProgram).use();
         drawOpaque(options, false);
     });
     mCullTimer.end();
@@ -310,11 +316,9 @@ void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat
                                                   layer.poorRootColor, layer.poorTipColor});
         mStemSets[i].draw(program, layer.source.stemLevels);
         // Null sets (slots without a blade) are instanced too but collapse in the vertex shader.
-        mStemSetsDrawn += static_cast<std::size_t>(
-            std::count_if(layer.stemSets.begin(), layer.stemSets.end(),
-                          [](const core::StemSetInstance& set) {
-                              return set.rootMetresPerUnit.w > 0.0f;
-                          }));
+        mStemSetsDrawn += static_cast<std::size_t>(std::count_if(
+            layer.stemSets.begin(), layer.stemSets.end(),
+            [](const core::StemSetInstance& set) { return set.rootMetresPerUnit.w > 0.0f; }));
     }
 }
 
@@ -328,8 +332,7 @@ void SceneRenderer::uploadRegrown(std::size_t layer, const core::RegrowReport& r
         const core::LayerField& field = mScene->layers[layer];
         for (std::uint32_t p : report.patches) {
             const auto [first, end] = core::patchStemSets(field, p);
-            mStemSets[layer].update(
-                first, std::span(field.stemSets).subspan(first, end - first));
+            mStemSets[layer].update(first, std::span(field.stemSets).subspan(first, end - first));
         }
     }
 }
@@ -342,22 +345,7 @@ void SceneRenderer::renderSnowMap(const RenderOptions& options) {
         GRASS_ASSERT(pass.ok());  // the shader ships with the program; a load failure is a bug
         mSnow = std::make_unique<SnowPass>(std::move(*pass));
     }
-    core::Bounds bounds = mScene->bounds;
-    for (const core::SceneProp& prop : mScene->props) {
-        const core::Bounds local = core::meshBounds(prop.mesh);
-        const glm::mat4 model = prop.modelAt(options.timeS);
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 p{(corner & 1) ? local.max.x : local.min.x,
-                              (corner & 2) ? local.max.y : local.min.y,
-                              (corner & 4) ? local.max.z : local.min.z};
-            const glm::vec3 q = glm::vec3(model * glm::vec4(p, 1.0f));
-            bounds.min = glm::min(bounds.min, q);
-            bounds.max = glm::max(bounds.max, q);
-        }
-    }
-    const float margin = 0.02f * glm::length(bounds.size()) + 1e-3f;
-    const core::OrthoSnowView view =
-        core::makeOrthoSnowView(options.snow.fallDirection, bounds, margin);
+    const core::OrthoSnowView view = core::sceneSnowView(*mScene, options.snow, options.timeS);
     mSnow->run(view, options.snow.mapResolution, [&](const gl::Program& program) {
         program.set("uModel", glm::mat4(1.0f));
         mMesh->draw();
@@ -368,19 +356,37 @@ void SceneRenderer::renderSnowMap(const RenderOptions& options) {
     });
 }
 
-// The terrain, then each prop where its path puts it at options.timeS. `shaded` sets the albedo
-// (the depth pre-pass of the cull needs none).
-void SceneRenderer::drawOpaque(const RenderOptions& options, bool shaded) const {
-    mMeshProgram.set("uModel", glm::mat4(1.0f));
+// The program of the snow surface (tessellated, displaced, whitened), compiled on the first
+// frame with snow.
+const gl::Program& SceneRenderer::snowMeshProgram() {
+    if (mSnowMeshProgram.id() == 0) {
+        auto program = gl::Program::load({{GL_VERTEX_SHADER, "mesh_snow.vert"},
+                                          {GL_TESS_CONTROL_SHADER, "mesh_snow.tesc"},
+                                          {GL_TESS_EVALUATION_SHADER, "mesh_snow.tese"},
+                                          {GL_FRAGMENT_SHADER, "mesh.frag"}},
+                                         "mesh under snow", {"GRASS_SNOW"});
+        GRASS_ASSERT(program.ok());  // the shaders ship with the program; a failure is a bug
+        mSnowMeshProgram = std::move(*program);
+    }
+    return mSnowMeshProgram;
+}
+
+// The terrain, then each prop where its path puts it at options.timeS, with the opaque program
+// of this frame (bound by the caller). `shaded` sets the albedo (the cull's depth pre-pass
+// needs none).
+void SceneRenderer::drawOpaque(const RenderOptions& options, bool shaded) {
+    const gl::Program& program = mSnowLies ? snowMeshProgram() : mMeshProgram;
+    const auto draw = [this](const MeshGpu& mesh) { mSnowLies ? mesh.drawPatches() : mesh.draw(); };
+    program.set("uModel", glm::mat4(1.0f));
     if (shaded)
-        mMeshProgram.set("uAlbedo", options.groundColor);
-    mMesh->draw();
+        program.set("uAlbedo", options.groundColor);
+    draw(*mMesh);
     for (std::size_t i = 0; i < mProps.size(); ++i) {
         const core::SceneProp& prop = mScene->props[i];
-        mMeshProgram.set("uModel", prop.modelAt(options.timeS));
+        program.set("uModel", prop.modelAt(options.timeS));
         if (shaded)
-            mMeshProgram.set("uAlbedo", prop.albedo);
-        mProps[i].draw();
+            program.set("uAlbedo", prop.albedo);
+        draw(mProps[i]);
     }
 }
 

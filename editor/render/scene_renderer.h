@@ -48,6 +48,10 @@ struct RenderOptions {
     core::SnowParams snow;
     // Draw the opaque surfaces as (Fp, Fe, Fi) in (R, G, B), unlit, to measure the snow mask.
     bool snowCoverageView = false;
+    // The snow surface is tessellated so that its edges span about snowTessPixels on screen,
+    // cut at most snowTessMax times (shaders/mesh_snow.tesc).
+    float snowTessPixels = 8.0f;
+    int snowTessMax = 16;
     // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for
     // tests that measure a shape alone.
     bool widthCorrection = true;
@@ -107,7 +111,9 @@ private:
     SceneRenderer() = default;
     const core::Scene* mScene = nullptr;
     gl::Program mMeshProgram, mStripProgram, mTessProgram, mStemSetProgram;
-    void drawOpaque(const RenderOptions& options, bool shaded) const;
+    gl::Program mSnowMeshProgram;  // compiled on the first frame with snow
+    const gl::Program& snowMeshProgram();
+    void drawOpaque(const RenderOptions& options, bool shaded);
     void drawBlades(const core::OrbitCamera& camera, const glm::mat4& projection, int width,
                     int height, const RenderOptions& options);
     void drawBillboards(const core::OrbitCamera& camera, const glm::mat4& viewProj,

@@ -76,8 +76,4 @@ void SnowPass::bind(const gl::Program& program, const core::SnowParams& params, 
     program.set("uSnowDepth", unit);
 }
 
-void disableSnow(const gl::Program& program) {
-    program.set("uSnowEnabled", 0);
-}
-
 }  // namespace grass::render

@@ -35,7 +35,4 @@ private:
     core::OrthoSnowView mView;
 };
 
-// Uniforms disabling snow in `program` (a pass that includes snow.glsl without a map).
-void disableSnow(const gl::Program& program);
-
 }  // namespace grass::render

@@ -67,6 +67,11 @@ struct ColliderGroup {
 layout(std430, binding = 8) readonly buffer ColliderGroupBuffer {
     ColliderGroup colliderGroups[];
 };
+// core::GravityLoad: blade i's |gE| grows by gravityLoadScale · gravityLoad[i] (snow load);
+// bound and read only when gravityLoadScale > 0.
+layout(std430, binding = 9) readonly buffer GravityLoadBuffer {
+    float gravityLoad[];
+};
 // substepTimes[i]: x = t = timeS + i·τ, y = τ, z = t + τ (the collision time).
 layout(std430, binding = 7) readonly buffer SubstepBuffer {
     vec4 substepTimes[];

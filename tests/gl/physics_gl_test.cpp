@@ -149,5 +149,38 @@ TEST_F(PhysicsGpuTest, MatchesCpuReferenceOverThousandSteps) {
     EXPECT_LT(maxEtaError, 1e-3f * std::max(maxEtaCpu, 1e-3f));
 }
 
+// The snow load (core::GravityLoad, SPEC §11): extra gravity per blade, growing over time as snow
+// accumulates, bends the GPU's blades exactly as the CPU reference's.
+TEST_F(PhysicsGpuTest, SnowLoadMatchesCpuReference) {
+    std::vector<core::Blade> cpu = makeBlades();
+    const std::vector<glm::vec3> tips = core::restTips(cpu);
+    std::vector<float> eta(cpu.size(), 0.0f);
+    const core::PhysicsParams params;
+    // Uneven loads, some blades sheltered (0): a load per metre of snow between 0 and 40 m/s².
+    std::vector<float> perMetre(cpu.size());
+    for (std::size_t i = 0; i < perMetre.size(); ++i)
+        perMetre[i] = i % 5 == 0 ? 0.0f : 40.0f * float(i % 7) / 6.0f;
+    auto physics = render::PhysicsGpu::load();
+    ASSERT_TRUE(physics.ok()) << physics.error().str();
+    physics->reset(cpu);
+    physics->setGravityLoad(perMetre);
+    gl::Buffer gpuBlades = gl::Buffer::fromVector(cpu, "snow load test blades");
+    float maxError = 0.0f, maxSag = 0.0f;
+    for (int step = 0; step < 200; ++step) {
+        const float timeS = static_cast<float>(step) * params.dtS;
+        const float snowM = 0.05f + 0.1f * timeS;  // accumulating
+        core::stepPhysics(cpu, eta, tips, params, {}, {}, timeS, 1, {perMetre, snowM});
+        physics->step(gpuBlades.id(), cpu.size(), params, {}, {}, timeS, snowM);
+    }
+    const std::vector<core::Blade> gpu = readBlades(gpuBlades, cpu.size());
+    for (std::size_t i = 0; i < cpu.size(); ++i) {
+        const float h = cpu[i].h();
+        maxError = std::max(maxError, glm::length(gpu[i].v2() - cpu[i].v2()) / h);
+        maxSag = std::max(maxSag, glm::length(cpu[i].v2() - tips[i]) / h);
+    }
+    EXPECT_GT(maxSag, 0.05f) << "the load must bend blades for the comparison to mean much";
+    EXPECT_LT(maxError, 1e-3f);  // the tolerance of the test above, for the same reasons
+}
+
 }  // namespace
 }  // namespace grass::test

@@ -99,10 +99,10 @@ TEST_F(SnowGrassGlTest, BuriedBladesAreCulledAndSnowOffRestoresTheCount) {
         buried += core::bladeBuriedBySnow(blade.h(), core::snowDepthAt(blade.v0(), fe, snow));
     }
     // Only blades within float rounding of the snow surface may be judged differently.
-    const auto difference = std::max(buried, snowy.cull.culledSnow) -
-                            std::min(buried, snowy.cull.culledSnow);
-    EXPECT_LE(difference, bare.cull.bladesIn / 500) << "CPU " << buried << " GPU "
-                                                    << snowy.cull.culledSnow;
+    const auto difference =
+        std::max(buried, snowy.cull.culledSnow) - std::min(buried, snowy.cull.culledSnow);
+    EXPECT_LE(difference, bare.cull.bladesIn / 500)
+        << "CPU " << buried << " GPU " << snowy.cull.culledSnow;
 
     snow.amountM = 20.0f;  // deeper than any blade except where the noise nearly cancels Zn
     const Frame deep = renderFrame(**renderer, options);

@@ -1,0 +1,27 @@
+#version 450 core
+// The snow surface (paper eq. 5): each tessellated point rises along the interpolated normal by
+// As·Fe·Zn, Fe taken over the boundary falloff (snow.glsl), so the snow swells into drifts and
+// fades smoothly at the edge of sheltered ground. The fragment shader (mesh.frag) shades the
+// ground position under the snow, where the exposure was measured.
+layout(triangles, equal_spacing, ccw) in;
+#include "snow.glsl"
+
+in vec3 tePosWorld[];
+in vec3 teNormal[];
+in vec2 teUv[];
+
+uniform mat4 uViewProj;
+
+out vec3 vNormal;
+out vec2 vUv;
+out vec3 vPosWorld;
+
+void main() {
+    vec3 b = gl_TessCoord;
+    vec3 posWorld = b.x * tePosWorld[0] + b.y * tePosWorld[1] + b.z * tePosWorld[2];
+    vec3 normal = b.x * teNormal[0] + b.y * teNormal[1] + b.z * teNormal[2];
+    vNormal = normal;
+    vUv = b.x * teUv[0] + b.y * teUv[1] + b.z * teUv[2];
+    vPosWorld = posWorld;
+    gl_Position = uViewProj * vec4(posWorld + snowDisplacement(posWorld, normal), 1.0);
+}
