@@ -169,5 +169,45 @@ TEST_F(SnowGrassGlTest, ExposedTipsWhitenAndShelteredTipsDoNot) {
     EXPECT_EQ(exposedWhite, exposed) << "in the open every tip carries snow";
 }
 
+// --time: As(t) = clamp(As + (accumulation − melt)·t, 0, max). Snow that starts at nothing
+// buries blades once enough has fallen, and snow that melts away gives the snow-free frame back.
+TEST_F(SnowGrassGlTest, SnowAccumulatesAndMeltsOverTime) {
+    PlaneField field;
+    field.sizeM = 3.0f;
+    field.resolution = 4;
+    field.density = 200.0f;
+    field.heightMinM = 0.05f;
+    field.heightMaxM = 0.4f;
+    const core::LoadedProject loaded = planeFieldProject(field);
+    auto scene = core::buildScene(loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    auto renderer = render::SceneRenderer::create(*scene);
+    ASSERT_TRUE(renderer.ok()) << renderer.error().str();
+    render::RenderOptions options = allBladesOptions(loaded.project);
+    core::SnowParams& snow = options.snow;
+    snow.enabled = 1u;
+    snow.amountM = 0.0f;
+    snow.accumulationRate = 0.01f;  // 1 cm a second
+    snow.mapResolution = 512;
+    std::vector<std::size_t> buried;
+    for (const float t : {0.0f, 10.0f, 30.0f}) {
+        options.timeS = t;
+        buried.push_back(renderFrame(**renderer, options).cull.culledSnow);
+    }
+    EXPECT_EQ(buried[0], 0u) << "no snow has fallen at t = 0";
+    EXPECT_GT(buried[1], 0u);
+    EXPECT_GT(buried[2], buried[1]) << "deeper snow buries more";
+
+    snow.amountM = 0.3f;
+    snow.accumulationRate = 0.0f;
+    snow.meltRate = 0.01f;  // gone after 30 s
+    options.timeS = 5.0f;
+    EXPECT_GT(renderFrame(**renderer, options).cull.culledSnow, 0u);
+    options.timeS = 40.0f;
+    const Frame melted = renderFrame(**renderer, options);
+    EXPECT_EQ(melted.cull.culledSnow, 0u);
+    EXPECT_EQ(melted.cull.drawn, melted.cull.bladesIn);
+}
+
 }  // namespace
 }  // namespace grass::test
