@@ -11,7 +11,8 @@
 // renderer takes it) to show how far it is from converged. Results: docs/snow.md.
 //
 // Usage: snow_quality [project.json] [--out table.md] [--frames N] [--images DIR]
-//                     [--camera NAME]
+//                     [--camera NAME] [--tess-pixels P]
+// --tess-pixels sets RenderOptions::snowTessPixels (default 8; 1e6 = every edge level 1).
 // Default project: projects/winter when it exists, else projects/meadow with snow switched on
 // here (fall direction (0.3, −1, 0.2), 0.1 m): its hills have lee slopes and its ball collider
 // shelters the ground under it and overhangs itself, so the mask has edges to get wrong.
@@ -94,10 +95,8 @@ Result<void> writeImage(const std::filesystem::path& file, const std::vector<flo
     for (std::size_t y = 0; y < HEIGHT; ++y)
         for (std::size_t i = 0; i < row; ++i) {
             const float v = std::clamp(pixels[(HEIGHT - 1 - y) * row + i], 0.0f, 1.0f);
-            rgba[y * row + i] = static_cast<std::uint8_t>(std::lround(255.0f * v));
+            rgba[y * row + i] = i % 4 == 3 ? 255 : static_cast<std::uint8_t>(std::lround(255 * v));
         }
-    for (std::size_t i = 3; i < rgba.size(); i += 4)
-        rgba[i] = 255;
     return writeRgba8Image(file, WIDTH, HEIGHT, rgba);
 }
 
@@ -294,9 +293,10 @@ Result<core::LoadedProject> loadInput(const std::string& path) {
 int main(int argc, char** argv) {
     std::string projectPath, outPath, imageFolder, cameraName;
     int frames = 5;
+    double tessPixels = render::RenderOptions{}.snowTessPixels;
     ArgParser parser(
         "snow_quality [project.json] [--out table.md] [--frames N] [--images DIR] "
-        "[--camera NAME]",
+        "[--camera NAME] [--tess-pixels P]",
         "Snow map resolution × samples: snow cost against the error of the snow "
         "mask Fp (reference 2048², 32 samples); prints a markdown table.");
     parser.positional("project", "project folder or .json (default: winter, else meadow)",
@@ -306,6 +306,8 @@ int main(int argc, char** argv) {
     parser.text("--images", "DIR", "write coverage and shaded PNGs here", &imageFolder);
     parser.text("--camera", "NAME", "which of the project's cameras (default: the first)",
                 &cameraName);
+    parser.number("--tess-pixels", "P", "snow surface edge length on screen in px", &tessPixels,
+                  1.0, 1e9, "8");
     if (auto parsed = parser.parse(std::vector<std::string>(argv + 1, argv + argc)); !parsed) {
         std::fprintf(stderr, "snow_quality: %s\n", parsed.error().str().c_str());
         return 2;
@@ -314,32 +316,27 @@ int main(int argc, char** argv) {
         std::fputs(parser.help().c_str(), stdout);
         return 0;
     }
-    auto loaded = loadInput(projectPath);
-    if (!loaded) {
-        std::fprintf(stderr, "snow_quality: %s\n", loaded.error().str().c_str());
+    const auto fail = [](const auto& error) {
+        std::fprintf(stderr, "snow_quality: %s\n", error.str().c_str());
         return 1;
-    }
+    };
+    auto loaded = loadInput(projectPath);
+    if (!loaded)
+        return fail(loaded.error());
     // The mask is measured on the opaque surfaces, which blades would hide; the blades' own
     // snow (white tips, burial) is not part of this measurement.
     loaded->project.layers.clear();
     const core::SnowParams snow = loaded->project.snow;
     auto context = gl::HeadlessContext::create();
-    if (!context) {
-        std::fprintf(stderr, "snow_quality: %s\n", context.error().str().c_str());
-        return 1;
-    }
+    if (!context)
+        return fail(context.error());
     auto scene = core::buildScene(*loaded);
     auto camera = render::projectCamera(loaded->project, cameraName);
-    if (!scene || !camera) {
-        std::fprintf(stderr, "snow_quality: %s\n",
-                     (!scene ? scene.error() : camera.error()).str().c_str());
-        return 1;
-    }
+    if (!scene || !camera)
+        return fail(!scene ? scene.error() : camera.error());
     auto renderer = render::SceneRenderer::create(*scene);
-    if (!renderer) {
-        std::fprintf(stderr, "snow_quality: %s\n", renderer.error().str().c_str());
-        return 1;
-    }
+    if (!renderer)
+        return fail(renderer.error());
     const FloatTarget target = makeFloatTarget();
     const std::string device = gl::rendererDescription();
     std::fprintf(stderr, "GL: %s\nproject: %s, %zu triangles, %zu props\n", device.c_str(),
@@ -348,6 +345,7 @@ int main(int argc, char** argv) {
     Bench bench{**renderer, *camera,
                 target,     render::renderOptionsFor(loaded->project, gl::isSoftwareRenderer()),
                 frames,     imageFolder};
+    bench.shaded.snowTessPixels = static_cast<float>(tessPixels);
     core::SnowParams off = snow;
     off.enabled = 0u;
     const Timing baseline = bench.time(off);
@@ -386,18 +384,16 @@ int main(int argc, char** argv) {
         header, sizeof header,
         "Device: %s\nProject: %s (grass layers left out), camera \"%s\", %dx%d, 1 "
         "sample per pixel, %d timed frames per row (medians).\nSnow: fall direction "
-        "(%.2f, %.2f, %.2f), amount %.2f m, sample radius %.2f texels.\n",
+        "(%.2f, %.2f, %.2f), amount %.2f m, sample radius %.2f texels, tessellation %g px.\n",
         device.c_str(), loaded->project.name.c_str(),
         cameraName.empty() ? loaded->project.cameras.front().name.c_str() : cameraName.c_str(),
         WIDTH, HEIGHT, frames, static_cast<double>(fall.x), static_cast<double>(fall.y),
         static_cast<double>(fall.z), static_cast<double>(snow.amountM),
-        static_cast<double>(snow.sampleRadiusTexels));
+        static_cast<double>(snow.sampleRadiusTexels), tessPixels);
     const std::string table = formatTable(rows, baseline, referenceError, header);
     std::fputs(table.c_str(), stdout);
     if (!outPath.empty())
-        if (auto written = writeFileAtomic(outPath, table); !written) {
-            std::fprintf(stderr, "snow_quality: %s\n", written.error().str().c_str());
-            return 1;
-        }
+        if (auto written = writeFileAtomic(outPath, table); !written)
+            return fail(written.error());
     return 0;
 }

@@ -146,5 +146,64 @@ TEST_F(SnowGlTest, SnowWhitensOpenGroundNotShelteredGroundAndNoAmountChangesNoth
     EXPECT_LT(shelteredSnow, shelteredBare + 25.0f) << shelteredBare << " -> " << shelteredSnow;
 }
 
+// The snow surface is tessellated (mesh_snow.tesc): a plane of two triangles under snow seen from
+// the side shows the snow's noisy height along its far edge. With the tessellation capped at one
+// cut per edge, only the four corners rise and the far edge stays a straight line.
+TEST_F(SnowGlTest, TheSnowSurfaceIsTessellatedIntoDrifts) {
+    PlaneField field;
+    field.sizeM = 4.0f;
+    field.resolution = 1;
+    auto scene = core::buildScene(planeFieldProject(field));
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    scene->layers.clear();
+    const core::OrbitCamera camera =
+        core::OrbitCamera::lookAt({0.0f, 1.2f, 4.0f}, {0.0f, 0.0f, -2.0f}, 0.45f);
+    constexpr int W = 200, H = 120;
+    const auto silhouette = [&](int tessMax) {
+        render::OffscreenRequest request;
+        request.width = W;
+        request.height = H;
+        request.msaaSamples = 0;
+        request.frames = 1;
+        request.options.snow.enabled = 1u;
+        request.options.snow.amountM = 1.0f;
+        request.options.snow.maxAmountM = 1.0f;
+        request.options.snow.noiseScaleM = 0.77f;  // off the lattice of the plane's corners
+        request.options.snowTessMax = tessMax;
+        request.options.skyColor = {1.0f, 0.0f, 1.0f};
+        auto out = render::renderOffscreen(*scene, camera, request);
+        EXPECT_TRUE(out.ok()) << out.error().str();
+        // Per column, the first row from the top that is not sky.
+        std::vector<float> top(W, float(H));
+        for (int x = 0; out.ok() && x < W; ++x)
+            for (int y = 0; y < H; ++y) {
+                const std::uint8_t* p = &out->image.pixels[(std::size_t(y) * W + x) * 4];
+                if (!(p[0] == 255 && p[1] == 0 && p[2] == 255)) {
+                    top[std::size_t(x)] = float(y);
+                    break;
+                }
+            }
+        return top;
+    };
+    // The largest distance of the silhouette from the straight line through its ends, over the
+    // middle 80 % of the columns (the plane's side edges bend the ends).
+    const auto bumpiness = [](const std::vector<float>& top) {
+        const std::size_t a = top.size() / 10, b = top.size() - 1 - top.size() / 10;
+        float worst = 0.0f;
+        for (std::size_t x = a; x <= b; ++x) {
+            const float t = float(x - a) / float(b - a);
+            worst = std::max(worst, std::abs(top[x] - (top[a] + t * (top[b] - top[a]))));
+        }
+        return worst;
+    };
+    const float flat = bumpiness(silhouette(1));
+    const float drifts = bumpiness(silhouette(16));
+    std::printf("[ snow ] silhouette off its chord: %.1f px untessellated, %.1f px tessellated\n",
+                double(flat), double(drifts));
+    EXPECT_LE(flat, 1.0f);
+    // Measured 0.7 and 9.4 px: 1 m of snow, Zn over 0.77 m noise cells, ~44 px a metre there.
+    EXPECT_GE(drifts, 4.0f);
+}
+
 }  // namespace
 }  // namespace grass::test
