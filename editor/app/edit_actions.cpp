@@ -35,6 +35,8 @@ std::string projectEditLabel(const core::Project& before, const core::Project& a
         return "layers";
     if (before.render != after.render || before.lighting != after.lighting)
         return "render settings";
+    if (before.snow != after.snow)
+        return "snow";
     if (before.name != after.name)
         return "project name";
     return "project";
@@ -43,6 +45,10 @@ std::string projectEditLabel(const core::Project& before, const core::Project& a
 bool applyProject(EditorState& s, const core::Project& project) {
     s.loaded.project = project;
     s.committed = project;
+    // The viewport's settings that mirror the project follow it back and forth.
+    s.options.technique = project.render.technique;
+    s.options.lighting = project.lighting;
+    s.options.snow = project.snow;
     s.dirty = s.rebuildPending = true;
     return true;
 }
