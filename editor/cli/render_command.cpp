@@ -116,13 +116,22 @@ std::string statsJson(const render::FrameTimings& frame, double physicsMs, doubl
                   "  \"drawn_per_lod\": [%zu, %zu, %zu],\n"
                   "  \"billboards\": {\"drawn\": %zu, \"draw_calls\": %zu, \"ms\": %.4f},\n"
                   "  \"stem_sets\": {\"drawn\": %zu, \"ms\": %.4f},\n"
-                  "  \"snow\": {\"depth_pass_ms\": %.4f}\n}\n",
+                  "  \"snow\": {\"depth_pass_ms\": %.4f},\n",
                   c.bladesIn, c.culledPatch, c.culledOrientation, c.culledFrustum, c.culledDistance,
                   c.culledOcclusion, c.culledSnow, c.drawn, physicsMs, frame.cullMs, frame.meshMs, grassMs,
                   total, wallMs, c.drawnPerLod[0], c.drawnPerLod[1], c.drawnPerLod[2],
                   frame.billboardsDrawn, frame.billboardDrawCalls, frame.billboardMs,
                   frame.stemSetsDrawn, frame.stemSetMs, frame.snowMs);
-    return text;
+    const auto list = [](const std::vector<std::string>& names) {
+        std::string out = "[";
+        for (const std::string& name : names)
+            out += (out.size() > 1 ? ", \"" : "\"") + name + "\"";
+        return out + "]";
+    };
+    // Which passes ran and what the renderer allocated: a feature a scene does not use shows in
+    // neither (issue 10).
+    return std::string(text) + "  \"passes\": " + list(frame.passes) +
+           ",\n  \"allocated\": " + list(frame.allocated) + "\n}\n";
 }
 
 // `--time`: the field as it is after T seconds of the project's physics. Returns ms per step.

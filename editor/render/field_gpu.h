@@ -64,6 +64,7 @@ public:
     void enableTipSnow();
     // The tip whiteness of every slot as the last cull wrote it (empty without snow; tests).
     std::vector<float> readTipSnow() const;
+    bool hasTipSnow() const { return mTipSnow.id() != 0; }
     // Binds the blade, patch-box, visible and command buffers for the cull dispatch.
     void bindForCull() const;
     // The instance counts the cull pass wrote per LOD (waits for the GPU; statistics only).

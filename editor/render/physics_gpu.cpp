@@ -109,10 +109,15 @@ void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::Ph
         sources.push_back(toGpu(source));
     upload(mParams, std::vector<core::PhysicsParams>{params}, "physics params");
     upload(mSubsteps, substeps, "physics substeps");
-    upload(mWindSources, sources, "physics wind sources");
-    upload(mWindCentres, windCentres, "physics wind centres");
-    upload(mColliders, spheres, "physics colliders");
-    upload(mColliderGroups, groups, "physics collider groups");
+    // A scene without wind or colliders holds no buffers for them (the shader reads none).
+    if (!wind.empty()) {
+        upload(mWindSources, sources, "physics wind sources");
+        upload(mWindCentres, windCentres, "physics wind centres");
+    }
+    if (!colliders.empty()) {
+        upload(mColliders, spheres, "physics colliders");
+        upload(mColliderGroups, groups, "physics collider groups");
+    }
 
     mProgram.use();
     mProgram.set("bladeCount", static_cast<unsigned>(bladeCount));
@@ -127,11 +132,15 @@ void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::Ph
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, mParams.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, mEta.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, mRestTips.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, mWindSources.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, mWindCentres.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, mColliders.id());
+    if (!wind.empty()) {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, mWindSources.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, mWindCentres.id());
+    }
+    if (!colliders.empty()) {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, mColliders.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, mColliderGroups.id());
+    }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, mSubsteps.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, mColliderGroups.id());
     for (std::size_t first = 0; first < bladeCount; first += LOCAL_SIZE * MAX_GROUPS) {
         const std::size_t count = std::min(bladeCount - first, LOCAL_SIZE * MAX_GROUPS);
         mProgram.set("firstBlade", static_cast<unsigned>(first));
@@ -139,6 +148,17 @@ void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::Ph
     }
     // Blades feed the draws (SSBO reads) and read-backs; η feeds the next step.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+std::vector<std::string> PhysicsGpu::allocated() const {
+    std::vector<std::string> out;
+    if (mWindSources.id() != 0)
+        out.push_back("wind");
+    if (mColliders.id() != 0)
+        out.push_back("colliders");
+    if (mGravityLoad.id() != 0)
+        out.push_back("snow_load");
+    return out;
 }
 
 std::vector<float> PhysicsGpu::readEta() const {

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "buffer.h"
@@ -58,6 +59,9 @@ public:
               const std::vector<core::WindSource>& wind,
               const std::vector<core::SphereCollider>& colliders, float timeS,
               float gravityLoadScale = 0.0f);
+    // The optional inputs that hold GPU buffers (issue 10: none without their feature): "wind",
+    // "colliders", "snow_load".
+    std::vector<std::string> allocated() const;
     // η of every blade (a GPU read-back, for tests and tools).
     std::vector<float> readEta() const;
 

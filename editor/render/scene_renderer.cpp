@@ -80,15 +80,6 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     if (!cull)
         return cull.error();
     renderer->mCull = std::make_unique<CullPass>(std::move(*cull));
-    // Scenes assembled by hand (tests) may have no billboards: the techniques that use them then
-    // draw none.
-    if (!scene.billboards.objects.empty()) {
-        auto billboards =
-            BillboardField::create(scene.billboards.objects, scene.billboards.texture);
-        if (!billboards)
-            return billboards.error();
-        renderer->mBillboards = std::make_unique<BillboardField>(std::move(*billboards));
-    }
     renderer->mFieldAo = meanFieldAo(scene);
     renderer->mMeshProgram = std::move(*mesh);
     renderer->mStripProgram = std::move(*strips);
@@ -152,11 +143,13 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
 
     // Snow: only a frame where snow lies (on, amount > 0) runs the depth pass and the snow
     // variants of the opaque and cull programs; any other frame runs exactly the snow-free ones.
+    mPasses.clear();
     mSnowTimer.begin();
     const float snowAmountM = core::snowAmountAt(options.snow, options.timeS);
     mSnowLies = options.snow.enabled != 0u && snowAmountM > 0.0f;
     if (mSnowLies) {
         renderSnowMap(options);
+        mPasses.push_back("snow_depth");
         // The surfaces whiten and rise; the cull buries short blades and whitens the tips.
         for (const gl::Program* program : {&snowMeshProgram(), &mCull->snowProgram()})
             mSnow->bind(*program, options.snow, snowAmountM, SNOW_MAP_UNIT);
@@ -174,6 +167,7 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     opaque.set("uViewProj", viewProj);
     setLighting(opaque, options);
     drawOpaque(options, true);
+    mPasses.push_back(mSnowLies ? "opaque_snow" : "opaque");
     mMeshTimer.end();
 
     // Timers run every frame, empty where a technique skips a pass, so readings are never stale.
@@ -192,15 +186,18 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
         mBladesDrawn = 0;
     }
     mBillboardTimer.begin();
-    if (billboards && mBillboards)
+    if (billboards && billboardField() != nullptr) {
         drawBillboards(camera, viewProj, options);
-    else
+        mPasses.push_back("billboards");
+    } else
         mBillboardsDrawn = mBillboardDrawCalls = 0;
     mBillboardTimer.end();
     mStemSetTimer.begin();
     mStemSetsDrawn = 0;
-    if (options.technique == core::GrassTechnique::Growth)
+    if (options.technique == core::GrassTechnique::Growth) {
         drawStemSets(camera, viewProj, options);
+        mPasses.push_back("stem_sets");
+    }
     mStemSetTimer.end();
     glBindVertexArray(0);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -228,6 +225,9 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
         drawOpaque(options, false);
     });
     mCullTimer.end();
+    if (cull.occlusion)
+        mPasses.push_back("occlusion_prepass");
+    mPasses.push_back(mSnowLies ? "cull_snow" : "cull");
     mStatsFrame = options.cull.collectStats;
 
     mGrassTimer.begin();
@@ -266,7 +266,20 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
         mBladesDrawn += field.field().liveBlades;
     }
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    mPasses.push_back("blades");
     mGrassTimer.end();
+}
+
+// The billboard clusters, uploaded on the first frame that draws them: a scene drawn by blades
+// alone allocates none. Null when the scene has no billboards (scenes assembled by hand).
+BillboardField* SceneRenderer::billboardField() {
+    if (!mBillboards && !mScene->billboards.objects.empty()) {
+        auto billboards =
+            BillboardField::create(mScene->billboards.objects, mScene->billboards.texture);
+        GRASS_ASSERT(billboards.ok());  // the shaders ship with the program; a failure is a bug
+        mBillboards = std::make_unique<BillboardField>(std::move(*billboards));
+    }
+    return mBillboards.get();
 }
 
 void SceneRenderer::drawBillboards(const core::OrbitCamera& camera, const glm::mat4& viewProj,
@@ -408,9 +421,22 @@ FrameTimings SceneRenderer::lastTimings() const {
     timings.bladesDrawn = mBladesDrawn;
     timings.stemSetsDrawn = mStemSetsDrawn;
     timings.stemSetMs = mStemSetTimer.milliseconds();
-    timings.snowMs = mSnowTimer.milliseconds();
+    // A frame without snow ran no snow pass: 0, not the timer's reading of an empty range.
+    timings.snowMs = mSnowLies ? mSnowTimer.milliseconds() : 0.0;
     if (mStatsFrame)
         timings.cull = mCull->readStats(mFields);
+    timings.passes = mPasses;
+    if (mSnow)
+        timings.allocated.push_back("snow_map");
+    if (mSnowMeshProgram.id() != 0)
+        timings.allocated.push_back("snow_programs");
+    if (std::any_of(mFields.begin(), mFields.end(),
+                    [](const FieldGpu& field) { return field.hasTipSnow(); }))
+        timings.allocated.push_back("tip_snow");
+    if (mBillboards)
+        timings.allocated.push_back("billboards");
+    if (!mStemSets.empty())
+        timings.allocated.push_back("stem_sets");
     return timings;
 }
 

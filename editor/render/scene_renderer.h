@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "billboard_gpu.h"
@@ -83,6 +84,13 @@ struct FrameTimings {
     std::size_t bladesDrawn = 0;
     // Per-test counts, filled only when the frame ran with RenderOptions::cull.collectStats.
     CullStats cull;
+    // The passes the frame ran, in order (issue 10: a pass a scene does not use does not run):
+    // snow_depth, opaque (or opaque_snow: tessellated under snow), occlusion_prepass, cull (or
+    // cull_snow), blades, billboards, stem_sets.
+    std::vector<std::string> passes;
+    // What the renderer holds on the GPU beyond the terrain, props and blades, allocated on
+    // first use: snow_map, snow_programs, tip_snow, billboards, stem_sets.
+    std::vector<std::string> allocated;
 };
 
 class SceneRenderer {
@@ -131,6 +139,7 @@ private:
     bool mSnowLies = false;  // this frame: snow on with an amount > 0
     void renderSnowMap(const RenderOptions& options);
     std::unique_ptr<BillboardField> mBillboards;
+    BillboardField* billboardField();
     std::vector<StemSetField> mStemSets;
     std::size_t mStemSetsDrawn = 0;
     gl::GpuTimer mMeshTimer, mGrassTimer, mCullTimer, mBillboardTimer, mStemSetTimer, mSnowTimer;
@@ -139,6 +148,7 @@ private:
     float mFieldAo = 1.0f;
     std::size_t mBillboardDrawCalls = 0;
     bool mStatsFrame = false;
+    std::vector<std::string> mPasses;
 };
 
 }  // namespace grass::render
