@@ -22,10 +22,11 @@ constexpr std::array<std::string_view, 3> GRAVITY_KEYS{"direction", "centre", "s
 constexpr std::array<std::string_view, 12> WIND_KEYS{
     "name",   "kind",        "position",   "direction", "axis", "strength",
     "radius", "core_radius", "wavelength", "speed",     "gust", "path"};
-constexpr std::array<std::string_view, 9> COLLIDER_KEYS{
+constexpr std::array<std::string_view, 10> COLLIDER_KEYS{
     "name",  "shape",   "position",           "radius", "file",
-    "scale", "spheres", "packing_resolution", "path"};
+    "scale", "spheres", "packing_resolution", "path", "color"};
 constexpr std::array<std::string_view, 2> PATH_KEY_KEYS{"time", "position"};
+constexpr std::string_view RGB = "[r, g, b]";
 
 constexpr std::array<std::string_view, 3> WIND_KIND_NAMES{"directional", "point", "vortex"};
 constexpr std::array<std::string_view, 2> COLLIDER_SHAPE_NAMES{"sphere", "mesh"};
@@ -158,6 +159,11 @@ void readCollider(Reader& reader, const Json& node, const std::string& pointer,
             collider.shape = static_cast<ColliderShape>(index);
     }
     object.readVec3("position", ANY_NUMBER, XYZ, collider.position);
+    if (object.find("color") != nullptr) {
+        glm::vec3 color{0.0f};
+        object.readVec3("color", UNIT_INTERVAL, RGB, color);
+        collider.color = color;
+    }
     if (const Json* path = object.find("path"))
         readPath(reader, *path, object.pointerTo("path"), collider.path);
     const bool mesh = collider.shape == ColliderShape::Mesh;
@@ -233,6 +239,8 @@ Json colliderJson(const ColliderDesc& collider) {
     out["name"] = collider.name;
     out["shape"] = std::string(COLLIDER_SHAPE_NAMES[static_cast<std::size_t>(collider.shape)]);
     out["position"] = jsonVec3(collider.position);
+    if (collider.color)
+        out["color"] = jsonVec3(*collider.color);
     if (collider.shape == ColliderShape::Sphere) {
         out["radius"] = jsonFloat(collider.radiusM);
     } else {

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -176,6 +177,8 @@ struct ColliderDesc {
     std::uint32_t sphereCount = 32;        // mesh: spheres to pack it into
     std::uint32_t packingResolution = 64;  // mesh: voxels along the longest side when packing
     std::vector<PathKey> path;
+    // Linear RGB the prop is drawn with; unset: grey for spheres, stone for meshes.
+    std::optional<glm::vec3> color;
     bool operator==(const ColliderDesc&) const = default;
 };
 

@@ -46,14 +46,14 @@ Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded) {
         if (collider.shape == ColliderShape::Sphere) {
             prop.mesh = makeProceduralMesh(sphere);
             prop.scale = collider.radiusM;
-            prop.albedo = SPHERE_ALBEDO;
+            prop.albedo = collider.color.value_or(SPHERE_ALBEDO);
         } else {
             auto loadedMesh = loadColliderMesh(loaded, collider, i);
             if (!loadedMesh)
                 return loadedMesh.error();
             prop.mesh = std::move(loadedMesh->imported.mesh);
             prop.scale = collider.scale;
-            prop.albedo = MESH_ALBEDO;
+            prop.albedo = collider.color.value_or(MESH_ALBEDO);
         }
         props.push_back(std::move(prop));
     }

@@ -78,7 +78,7 @@ TEST(ProjectPhysics, ReadsEveryKind) {
         "wind": [{"name": "w", "kind": "directional", "strength": 20, "wavelength": 5},
                  {"name": "heli", "kind": "point", "position": [1, 2, 3], "radius": 6},
                  {"name": "twister", "kind": "vortex", "axis": [0, 1, 0], "core_radius": 0.5}],
-        "colliders": [{"name": "ball", "radius": 1.5,
+        "colliders": [{"name": "ball", "radius": 1.5, "color": [0.2, 0.3, 0.4],
                        "path": [{"time": 0, "position": [0, 1, 0]},
                                 {"time": 5, "position": [9, 1, 0]}]}])"),
                                      SOURCE);
@@ -93,6 +93,11 @@ TEST(ProjectPhysics, ReadsEveryKind) {
     EXPECT_EQ(parsed->colliders[0].shape, ColliderShape::Sphere);
     ASSERT_EQ(parsed->colliders[0].path.size(), 2u);
     EXPECT_EQ(samplePath(parsed->colliders[0].path, 2.5f, {}), glm::vec3(4.5f, 1.0f, 0.0f));
+    EXPECT_EQ(parsed->colliders[0].color, glm::vec3(0.2f, 0.3f, 0.4f));
+    // The colour is written back only when set, and read back the same.
+    const auto again = parseProject(serializeProject(*parsed), SOURCE);
+    ASSERT_TRUE(again) << again.error().str();
+    EXPECT_EQ(again->colliders, parsed->colliders);
 }
 
 TEST(ProjectPhysics, BadValuesAreRejectedWithTheirPath) {
@@ -130,6 +135,9 @@ TEST(ProjectPhysics, BadValuesAreRejectedWithTheirPath) {
     expectError(document(R"("colliders": [{"shape": "mesh", "file": "r.glb",
                                            "packing_resolution": 4}])"),
                 "/colliders/0/packing_resolution", "8");
+    expectError(document(R"("colliders": [{"color": [1.5, 0, 0]}])"), "/colliders/0/color/0",
+                "[0, 1]");
+    expectError(document(R"("colliders": [{"color": "red"}])"), "/colliders/0/color", "[r, g, b]");
 }
 
 }  // namespace
