@@ -50,7 +50,8 @@ struct RenderOptions {
     // Draw the opaque surfaces as (Fp, Fe, Fi) in (R, G, B), unlit, to measure the snow mask.
     bool snowCoverageView = false;
     // The snow surface is tessellated so that its edges span about snowTessPixels on screen,
-    // cut at most snowTessMax times (shaders/mesh_snow.tesc).
+    // cut at most snowTessMax times (shaders/mesh_snow.tesc); renderOptionsFor doubles it on
+    // software rasterizers.
     float snowTessPixels = 8.0f;
     int snowTessMax = 16;
     // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for

@@ -7,16 +7,13 @@
 //   - the error: mean |Fp − Fp_ref| over the surface pixels, Fp from the coverage view (mesh.frag
 //     draws (Fp, Fe, Fi) unlit) read back as floats, the reference 2048² with 32 samples; and
 //     the share of pixels off by more than 0.1 (a visible step in the snow's whiteness).
-// The reference itself is compared with 4096²/32 (beyond the project format's range; the
-// renderer takes it) to show how far it is from converged. Results: docs/snow.md.
+// The reference is checked against 4096²/32 (beyond the format's range). Results: docs/snow.md.
 //
 // Usage: snow_quality [project.json] [--out table.md] [--frames N] [--images DIR]
-//                     [--camera NAME] [--tess-pixels P]
-// --tess-pixels sets RenderOptions::snowTessPixels (default 8; 1e6 = every edge level 1).
-// Default project: projects/winter when it exists, else projects/meadow with snow switched on
-// here (fall direction (0.3, −1, 0.2), 0.1 m): its hills have lee slopes and its ball collider
-// shelters the ground under it and overhangs itself, so the mask has edges to get wrong.
-// A project with snow off is measured with its snow settings switched on.
+//                     [--camera NAME] [--tess-pixels P] [--row MAPxS]
+// --tess-pixels: RenderOptions::snowTessPixels (1e6 = every edge level 1); --row: one row only.
+// Default project: projects/winter, else projects/meadow with snow switched on (fall (0.3, −1,
+// 0.2), 0.1 m: lee slopes, and a ball that shelters the ground and overhangs itself).
 // Build RelWithDebInfo (-O3 trips GCC 12 false positives under -Werror), -DGRASS_BUILD_BENCH=ON.
 #include <algorithm>
 #include <chrono>
@@ -216,9 +213,8 @@ bool isReference(const Row& row) {
     return row.resolution == REFERENCE_RESOLUTION && row.samples == REFERENCE_SAMPLES;
 }
 
-// On the front: no other row is at most as costly and as wrong, and strictly better in one.
-// Cost is the wall-clock snow cost: llvmpipe's timer queries are unreliable (docs/rendering.md).
-// The reference is left out: its error is 0 by definition, not by measurement.
+// On the front: no other row is at most as costly and as wrong, and strictly better in one. Cost
+// is wall clock (llvmpipe's timer queries are unreliable); the reference (error 0) is left out.
 void markPareto(std::vector<Row>& rows, const Timing& baseline) {
     for (Row& row : rows) {
         row.pareto = !isReference(row);
@@ -291,12 +287,12 @@ Result<core::LoadedProject> loadInput(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string projectPath, outPath, imageFolder, cameraName;
+    std::string projectPath, outPath, imageFolder, cameraName, onlyRow;
     int frames = 5;
     double tessPixels = render::RenderOptions{}.snowTessPixels;
     ArgParser parser(
         "snow_quality [project.json] [--out table.md] [--frames N] [--images DIR] "
-        "[--camera NAME] [--tess-pixels P]",
+        "[--camera NAME] [--tess-pixels P] [--row MAPxS]",
         "Snow map resolution × samples: snow cost against the error of the snow "
         "mask Fp (reference 2048², 32 samples); prints a markdown table.");
     parser.positional("project", "project folder or .json (default: winter, else meadow)",
@@ -308,6 +304,7 @@ int main(int argc, char** argv) {
                 &cameraName);
     parser.number("--tess-pixels", "P", "snow surface edge length on screen in px", &tessPixels,
                   1.0, 1e9, "8");
+    parser.text("--row", "MAPxS", "measure only this map size and sample count (1024x8)", &onlyRow);
     if (auto parsed = parser.parse(std::vector<std::string>(argv + 1, argv + argc)); !parsed) {
         std::fprintf(stderr, "snow_quality: %s\n", parsed.error().str().c_str());
         return 2;
@@ -362,6 +359,9 @@ int main(int argc, char** argv) {
     std::vector<Row> rows;
     for (const int resolution : RESOLUTIONS)
         for (const int samples : SAMPLE_COUNTS) {
+            if (!onlyRow.empty() &&
+                onlyRow != std::to_string(resolution) + "x" + std::to_string(samples))
+                continue;
             core::SnowParams params = snow;
             params.mapResolution = resolution;
             params.samples = samples;
