@@ -18,6 +18,7 @@ commands:
   mesh-info   print vertex/triangle counts, area, bounds of a glTF file
   paint       paint a layer's density, soil or light map with brush strokes
   export      write a project's grass as glTF (instanced blades) or raw GPU buffers
+  bench       run the standard benchmark set and print per-stage costs (--compare old runs)
 
 Run 'grass <command> --help' for the options of a command.
 The editor window is 'grass-editor'.
@@ -28,8 +29,9 @@ The editor window is 'grass-editor'.
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
-        grass::cli::printError(
-            "", "missing command: grass render|sim|mesh-info|paint|export ... (see grass --help)");
+        grass::cli::printError("",
+                               "missing command: grass render|sim|mesh-info|paint|export|bench ... "
+                               "(see grass --help)");
         return grass::cli::EXIT_USAGE;
     }
     if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
@@ -52,11 +54,14 @@ int main(int argc, char** argv) {
         return grass::cli::runPaint(args);
     if (command == "export")
         return grass::cli::runExport(args);
+    if (command == "bench")
+        return grass::cli::runBench(args);
     if (command.rfind("-", 0) == 0)
         grass::cli::printError("", command + ": unknown option (see grass --help)");
     else
         grass::cli::printError(
             command,
-            "unknown command (commands: render, sim, mesh-info, paint, export; see grass --help)");
+            "unknown command (commands: render, sim, mesh-info, paint, export, bench; see grass "
+            "--help)");
     return grass::cli::EXIT_USAGE;
 }

@@ -6,6 +6,8 @@
 //                                         image against strips of 32 segments with LOD off
 //   BM_Lighting/<n>/{grass,grass_vertex,simple}   the grass lighting model (SPEC §10) per pixel,
 //                                         per vertex, and the wrapped Lambert
+//   BM_Feature/<n>/{built_without,billboards_unused,snow_off,snow_no_amount}   features present
+//                                         but unused against a scene built without them
 // Run (RelWithDebInfo: -O3 trips GCC 12 false-positive warnings under -Werror):
 //   cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_BUILD_BENCH=ON
 //   cmake --build build-bench --target bench_render
@@ -250,6 +252,43 @@ void registerCulling(BenchState& benchState, std::size_t blades) {
     }
 }
 
+// Pay only for what you use (issue 10, SPEC §13): the blades technique on a scene built with
+// billboards and snow settings but using neither, against the same scene built without them.
+// The four should cost the same within the run-to-run scatter (docs/rendering.md states it).
+void registerFeatures(BenchState& benchState, std::size_t blades) {
+    const char* variants[] = {"built_without", "billboards_unused", "snow_off", "snow_no_amount"};
+    for (const char* variant : variants) {
+        const std::string name = std::string("BM_Feature/") + label(blades) + "/" + variant;
+        configure(benchmark::RegisterBenchmark(
+                      name.c_str(),
+                      [&benchState, blades, variant = std::string(variant)](
+                          benchmark::State& state) {
+                          const BenchScene* bench = benchState.scene(blades, state);
+                          if (!bench)
+                              return;
+                          BenchScene without;
+                          if (variant == "built_without") {
+                              without.project = bench->project;
+                              without.scene = bench->scene;
+                              without.scene.billboards.objects.clear();
+                              bench = &without;
+                          }
+                          render::RenderOptions options = baseOptions(*bench);
+                          core::SnowParams snow;
+                          snow.amountM = 0.3f;
+                          if (variant == "snow_off")
+                              options.snow = snow;  // configured, enabled = 0
+                          if (variant == "snow_no_amount") {
+                              snow.enabled = 1u;
+                              snow.amountM = 0.0f;
+                              options.snow = snow;
+                          }
+                          runFrames(state, *bench, options, false);
+                      }),
+                  5);
+    }
+}
+
 void registerTechniques(BenchState& benchState, std::size_t blades) {
     const std::pair<const char*, core::GrassTechnique> techniques[] = {
         {"blades", core::GrassTechnique::Blades},
@@ -388,6 +427,7 @@ int main(int argc, char** argv) {
     BenchState benchState;
     registerCulling(benchState, 100'000);
     registerCulling(benchState, 1'000'000);
+    registerFeatures(benchState, 100'000);
     registerTechniques(benchState, 100'000);
     registerTechniques(benchState, 1'000'000);
     registerQuality(benchState, QUALITY_BLADES);

@@ -1,0 +1,36 @@
+# CLI tests of `grass bench` (issue 10, item 4). Included from cli_tests.cmake, after
+# grass_cli_test() is defined. The measuring test runs the tiny case only (80 blades, one timed
+# frame): about a second on llvmpipe. The error tests fail before any GL work.
+
+grass_cli_test(bench_help OK --no-stderr
+    --stdout "^usage: grass bench" --stdout "^  --cases LIST" --stdout "^  --quick"
+    --stdout "^  --frames N" --stdout "^  --out FILE\\.json" --stdout "^  --compare OLD\\.json"
+    --stdout "^  --results FILE\\.json" --stdout "^  --help"
+    -- ${GRASS_BIN} bench --help)
+
+# --out writes every figure with sane values; a saved run compared with itself gives 1.00; a run
+# at another size refuses the comparison (bench_cli_test.sh).
+add_test(NAME cli.bench_tiny_out_compare
+         COMMAND ${GRASS_BASH} ${GRASS_CLI_DIR}/bench_cli_test.sh ${GRASS_BIN}
+                 ${GRASS_CLI_TMP}/bench)
+set_tests_properties(cli.bench_tiny_out_compare PROPERTIES LABELS "cli;gl" TIMEOUT 150
+    ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
+
+# --compare files that are not a bench run: named in one line, exit non-zero, nothing measured.
+grass_cli_test(bench_compare_missing ERROR "no-such-run.json"
+    -- ${GRASS_BIN} bench --cases tiny --compare ${GRASS_CLI_TMP}/no-such-run.json)
+grass_cli_test(bench_compare_not_json ERROR "cube.glb" --also "not valid JSON"
+    -- ${GRASS_BIN} bench --cases tiny --compare ${GRASS_CLI_GLTF}/cube.glb)
+grass_cli_test(bench_compare_not_bench ERROR "tiny/project.json" --also "not a grass bench result"
+    -- ${GRASS_BIN} bench --cases tiny --compare ${GRASS_CLI_PROJECTS}/tiny/project.json)
+grass_cli_test(bench_unknown_case ERROR "--cases" --also "unknown case \"meadow-5k\""
+    --also "nature-100k"
+    -- ${GRASS_BIN} bench --cases tiny,meadow-5k)
+grass_cli_test(bench_quick_leaves_none ERROR "--quick"
+    -- ${GRASS_BIN} bench --quick --cases nature-1m)
+grass_cli_test(bench_bad_frames ERROR "--frames"
+    -- ${GRASS_BIN} bench --cases tiny --frames 0)
+grass_cli_test(bench_results_with_cases ERROR "--cases" --also "--results"
+    -- ${GRASS_BIN} bench --results ${GRASS_CLI_TMP}/any.json --cases tiny)
+grass_cli_test(bench_out_folder_missing ERROR "no-such-folder"
+    -- ${GRASS_BIN} bench --cases tiny --out ${GRASS_CLI_TMP}/no-such-folder/bench.json)
