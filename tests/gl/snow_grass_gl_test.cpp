@@ -58,14 +58,19 @@ core::SnowDepthMap readDepthMap(const render::SnowPass& pass, int resolution) {
     return map;
 }
 
-TEST_F(SnowGrassGlTest, BuriedBladesAreCulledAndSnowOffRestoresTheCount) {
+// A 3 m plane of blades 5 to 40 cm tall: snow of a few centimetres buries some of them.
+core::LoadedProject shortAndTallBlades(float density) {
     PlaneField field;
     field.sizeM = 3.0f;
     field.resolution = 4;
-    field.density = 300.0f;
+    field.density = density;
     field.heightMinM = 0.05f;
     field.heightMaxM = 0.4f;
-    const core::LoadedProject loaded = planeFieldProject(field);
+    return planeFieldProject(field);
+}
+
+TEST_F(SnowGrassGlTest, BuriedBladesAreCulledAndSnowOffRestoresTheCount) {
+    const core::LoadedProject loaded = shortAndTallBlades(300.0f);
     auto scene = core::buildScene(loaded);
     ASSERT_TRUE(scene.ok()) << scene.error().str();
     auto renderer = render::SceneRenderer::create(*scene);
@@ -172,13 +177,7 @@ TEST_F(SnowGrassGlTest, ExposedTipsWhitenAndShelteredTipsDoNot) {
 // --time: As(t) = clamp(As + (accumulation − melt)·t, 0, max). Snow that starts at nothing
 // buries blades once enough has fallen, and snow that melts away gives the snow-free frame back.
 TEST_F(SnowGrassGlTest, SnowAccumulatesAndMeltsOverTime) {
-    PlaneField field;
-    field.sizeM = 3.0f;
-    field.resolution = 4;
-    field.density = 200.0f;
-    field.heightMinM = 0.05f;
-    field.heightMaxM = 0.4f;
-    const core::LoadedProject loaded = planeFieldProject(field);
+    const core::LoadedProject loaded = shortAndTallBlades(200.0f);
     auto scene = core::buildScene(loaded);
     ASSERT_TRUE(scene.ok()) << scene.error().str();
     auto renderer = render::SceneRenderer::create(*scene);

@@ -20,17 +20,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include "gl_context_fixture.h"
 #include "mesh/procedural.h"
 #include "offscreen_render.h"
-#include "support/image_compare.h"
+#include "support/golden_file.h"
 #include "support/plane_project.h"
-#include "support/test_paths.h"
-#include "util/image_file.h"
 
 namespace grass::test {
 namespace {
@@ -145,8 +142,8 @@ TEST_F(SnowRoofGlTest, SnowOutsideNoneUnderTheRoofAndTheEdgeNarrowsWithQuality) 
         const gl::Rgba8Image image = renderRoof(roofSnow(resolution, samples), true);
         EXPECT_EQ(image.pixels.size(), std::size_t(SIDE) * SIDE * 4);
         const Edge edge = image.pixels.empty() ? Edge{} : measureEdge(image);
-        std::printf("[ roof ] %4d² %2d samples: edge %.1f px, soft %.0f px\n", resolution,
-                    samples, double(edge.widthPx), double(edge.softPx));
+        std::printf("[ roof ] %4d² %2d samples: edge %.1f px, soft %.0f px\n", resolution, samples,
+                    double(edge.widthPx), double(edge.softPx));
         EXPECT_EQ(edge.shelteredMax, 0.0f) << "no snow under the roof";
         EXPECT_EQ(edge.openMin, 1.0f) << "full snow in the open";
         return edge;
@@ -170,24 +167,7 @@ TEST_F(SnowRoofGlTest, SnowOutsideNoneUnderTheRoofAndTheEdgeNarrowsWithQuality) 
 TEST_F(SnowRoofGlTest, ShadedImageMatchesItsReference) {
     const gl::Rgba8Image image = renderRoof(roofSnow(1024, 8), false);
     ASSERT_EQ(image.pixels.size(), std::size_t(SIDE) * SIDE * 4);
-    const std::filesystem::path reference = sourceDir() / "tests/data/golden/snow-roof.png";
-    const char* update = std::getenv("GRASS_UPDATE_GOLDEN");
-    if (update != nullptr && std::string(update) == "1") {
-        ASSERT_TRUE(writeRgba8Image(reference, SIDE, SIDE, image.pixels).ok());
-        return;
-    }
-    auto expected = readRgba8Image(reference);
-    ASSERT_TRUE(expected.ok()) << expected.error().str()
-                               << " (GRASS_UPDATE_GOLDEN=1 writes the reference)";
-    const ImageDifference diff = compareImages(image.pixels, expected->pixels, PIXEL_THRESHOLD);
-    std::printf("[ golden ] snow-roof differing %.4f, mean abs %.3f, max %d\n",
-                diff.differingShare, diff.meanAbs, diff.maxChannel);
-    if (diff.differingShare > MAX_DIFFERING_SHARE || diff.meanAbs > MAX_MEAN_ABS) {
-        const auto actual = scratchDir("golden") / "snow-roof.actual.png";
-        EXPECT_TRUE(writeRgba8Image(actual, SIDE, SIDE, image.pixels).ok());
-        ADD_FAILURE() << "differs from " << reference << ": share " << diff.differingShare
-                      << ", mean " << diff.meanAbs << "; this render is in " << actual;
-    }
+    expectMatchesGolden("snow-roof", image, {PIXEL_THRESHOLD, MAX_DIFFERING_SHARE, MAX_MEAN_ABS});
     // The golden must show both sides: bright snow on the right, darker bare ground on the left.
     const auto brightness = [&](int x) {
         const std::size_t i = (std::size_t(SIDE / 2) * SIDE + std::size_t(x)) * 4;

@@ -14,6 +14,7 @@
 
 #include "framebuffer.h"
 #include "gl_context_fixture.h"
+#include "support/golden_file.h"
 #include "support/image_compare.h"
 #include "support/test_fonts.h"
 #include "support/test_paths.h"
@@ -94,23 +95,7 @@ TEST_F(UiPanelTest, LayerPanelMatchesGolden) {
     ASSERT_FALSE(meshes.empty());
     const gl::Rgba8Image image = render(meshes);
     ASSERT_EQ(image.pixels.size(), std::size_t(WIDTH) * HEIGHT * 4);
-    const auto golden = sourceDir() / "tests/data/golden/ui-panel.png";
-    const char* update = std::getenv("GRASS_UPDATE_GOLDEN");
-    if (update != nullptr && std::string(update) == "1") {
-        ASSERT_TRUE(writeRgba8Image(golden, WIDTH, HEIGHT, image.pixels).ok());
-        return;
-    }
-    auto reference = readRgba8Image(golden);
-    ASSERT_TRUE(reference.ok()) << reference.error().str();
-    const ImageDifference diff = compareImages(image.pixels, reference->pixels, PIXEL_THRESHOLD);
-    std::printf("[ golden ] ui-panel differing %.4f, mean abs %.3f, max %d\n",
-                diff.differingShare, diff.meanAbs, diff.maxChannel);
-    if (diff.differingShare > MAX_DIFFERING_SHARE || diff.meanAbs > MAX_MEAN_ABS) {
-        const auto actual = scratchDir("ui-panel") / "ui-panel.actual.png";
-        EXPECT_TRUE(writeRgba8Image(actual, WIDTH, HEIGHT, image.pixels).ok());
-        ADD_FAILURE() << "differs from " << golden << ": share " << diff.differingShare
-                      << ", mean " << diff.meanAbs << "; this render is in " << actual;
-    }
+    expectMatchesGolden("ui-panel", image, {PIXEL_THRESHOLD, MAX_DIFFERING_SHARE, MAX_MEAN_ABS});
 }
 
 // The metric sees a change a user would see: the same panel with the checkbox off and another
