@@ -176,13 +176,17 @@ void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
     ctx.registerArea(rect);
     const render::FrameTimings& t = s.status.timings;
     const bool stems = s.options.technique == core::GrassTechnique::Growth;
+    // The snow map's time shows only while snow lies (its pass runs only then).
+    char snow[32] = "";
+    if (t.snowMs > 0.0)
+        std::snprintf(snow, sizeof snow, " · snow %.2f", t.snowMs);
     char text[320];
     std::snprintf(text, sizeof text,
-                  "%zu blades · %zu drawn   cull %.2f · opaque %.2f · grass %.2f · %s %.2f ms"
+                  "%zu blades · %zu drawn   cull %.2f · opaque %.2f · grass %.2f · %s %.2f%s ms"
                   "   UI %.2f ms   %.0f fps",
                   s.status.blades, stems ? t.stemSetsDrawn : t.cull.drawn, t.cullMs, t.meshMs,
                   t.grassMs, stems ? "stem sets" : "billboards",
-                  stems ? t.stemSetMs : t.billboardMs, s.status.uiMs, s.status.fps);
+                  stems ? t.stemSetMs : t.billboardMs, snow, s.status.uiMs, s.status.fps);
     ui::Ui ui(ctx, {rect.min + ui::Vec2(8.0f, 2.0f), rect.max}, ui::Layer::Panels);
     ui.horizontal([&](ui::Ui& row) {
         row.label(text);
