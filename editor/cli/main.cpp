@@ -19,6 +19,7 @@ commands:
   paint       paint a layer's density, soil or light map with brush strokes
   export      write a project's grass as glTF (instanced blades) or raw GPU buffers
   bench       run the standard benchmark set and print per-stage costs (--compare old runs)
+  tradeoff    sweep quality knobs against a reference: cost/error table, tradeoff.json, plots
 
 Run 'grass <command> --help' for the options of a command.
 The editor window is 'grass-editor'.
@@ -30,7 +31,8 @@ int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
         grass::cli::printError("",
-                               "missing command: grass render|sim|mesh-info|paint|export|bench ... "
+                               "missing command: grass render|sim|mesh-info|paint|export|bench|"
+                               "tradeoff ... "
                                "(see grass --help)");
         return grass::cli::EXIT_USAGE;
     }
@@ -56,12 +58,14 @@ int main(int argc, char** argv) {
         return grass::cli::runExport(args);
     if (command == "bench")
         return grass::cli::runBench(args);
+    if (command == "tradeoff")
+        return grass::cli::runTradeoff(args);
     if (command.rfind("-", 0) == 0)
         grass::cli::printError("", command + ": unknown option (see grass --help)");
     else
         grass::cli::printError(
             command,
-            "unknown command (commands: render, sim, mesh-info, paint, export, bench; see grass "
-            "--help)");
+            "unknown command (commands: render, sim, mesh-info, paint, export, bench, tradeoff; "
+            "see grass --help)");
     return grass::cli::EXIT_USAGE;
 }

@@ -1,0 +1,152 @@
+// grass tradeoff: sweep a project's quality knobs against a high-quality reference and write the
+// cost/error table, tradeoff.json and one gnuplot plot per knob (issue 10, SPEC §13).
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "commands.h"
+#include "debug_output.h"
+#include "headless_context.h"
+#include "tradeoff_plot.h"
+#include "tradeoff_report.h"
+#include "tradeoff_sweep.h"
+#include "util/arg_parser.h"
+#include "util/atomic_file.h"
+
+namespace grass::cli {
+
+namespace {
+
+std::vector<std::string> splitKnobs(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ','))
+        if (!item.empty())
+            out.push_back(item);
+    return out;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& name : names)
+        out += (out.empty() ? "" : ",") + name;
+    return out;
+}
+
+}  // namespace
+
+int runTradeoff(const std::vector<std::string>& argv) {
+    std::string project, knobs, out = "tradeoff", camera;
+    int width = 640, height = 360, frames = 5, msaa = 4;
+    double sceneTimeS = 1.0, physicsSeconds = 2.0;
+    bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
+    const std::string allKnobs = joined(render::tradeoffKnobNames());
+    ArgParser parser(
+        "grass tradeoff <project-dir|project.json> [--knobs K1,K2,...] [--out DIR]",
+        "Sweeps the project's quality knobs (" + allKnobs +
+            ") from cheap to expensive and measures, per setting, the frame cost (wall clock to "
+            "glFinish, median and min–max of the timed frames, and the GL timer of each stage) "
+            "and the error against a high-quality reference of the same scene at the same time: "
+            "mean CIELAB ΔE76 over the pixels the feature touches (images) or the tips' "
+            "trajectory error in blade heights (physics step). Knobs the project does not use "
+            "(snow off, no billboards) are skipped with a note. Writes DIR/tradeoff.json, "
+            "DIR/tradeoff.md and per knob DIR/<knob>.png (gnuplot; .gp and .dat next to it).");
+    parser.positional("project", "a project folder (with project.json) or a project .json file",
+                      &project, true);
+    parser.text("--knobs", "K1,K2", "the knobs to sweep (default: all of " + allKnobs + ")",
+                &knobs);
+    parser.text("--out", "DIR", "output folder (default: tradeoff)", &out);
+    parser.integer("--width", "frame width in pixels", &width, 16, 8192);
+    parser.integer("--height", "frame height in pixels", &height, 16, 8192);
+    parser.integer("--frames", "timed frames per setting, after one warm-up", &frames, 1, 100);
+    parser.integer("--msaa", "samples per pixel", &msaa, 1, 8);
+    parser.text("--camera", "NAME", "which of the project's cameras (default: the first)", &camera);
+    parser.number("--time", "S", "scene time of the images (the project's physics runs to it)",
+                  &sceneTimeS, 0.0, 3600.0, "1");
+    parser.number("--physics-seconds", "S", "simulated span of the physics-step sweep",
+                  &physicsSeconds, 0.1, 600.0, "2");
+    parser.flag("--gl-debug", "print GL debug output", &glDebug);
+    if (auto parsed = parser.parse(argv); !parsed) {
+        printError("tradeoff", parsed.error().str());
+        return EXIT_USAGE;
+    }
+    if (parser.helpRequested()) {
+        std::fputs(parser.help().c_str(), stdout);
+        return 0;
+    }
+    render::TradeoffOptions options;
+    options.knobs = splitKnobs(knobs);
+    const std::vector<std::string> known = render::tradeoffKnobNames();
+    for (const std::string& knob : options.knobs)
+        if (std::find(known.begin(), known.end(), knob) == known.end()) {
+            printError("tradeoff",
+                       "--knobs: unknown knob \"" + knob + "\" (knobs: " + allKnobs + ")");
+            return EXIT_USAGE;
+        }
+    if (parser.given("--knobs") && options.knobs.empty()) {
+        printError("tradeoff", "--knobs: no knob named (knobs: " + allKnobs + ")");
+        return EXIT_USAGE;
+    }
+    if (auto writable = checkFileWritable(std::filesystem::path(out) / "tradeoff.json",
+                                          "tradeoff/tradeoff.json");
+        !writable) {
+        std::error_code error;
+        std::filesystem::create_directories(out, error);
+        if (error) {
+            printError("tradeoff", "--out: " + out + ": " + error.message());
+            return EXIT_USAGE;
+        }
+    }
+    options.width = width;
+    options.height = height;
+    options.frames = frames;
+    options.msaaSamples = msaa;
+    options.camera = camera;
+    options.sceneTimeS = static_cast<float>(sceneTimeS);
+    options.physicsSeconds = physicsSeconds;
+    options.progress = [](const std::string& line) {
+        std::fprintf(stderr, "%s\n", line.c_str());
+        std::fflush(stderr);
+    };
+
+    auto loaded = core::loadProject(project);
+    if (!loaded) {
+        printError("tradeoff", loaded.error().str());
+        return EXIT_FAILED;
+    }
+    auto context = gl::HeadlessContext::create(glDebug);
+    if (!context) {
+        printError("tradeoff", context.error().str());
+        return EXIT_FAILED;
+    }
+    auto report = render::runTradeoffSweep(*loaded, options);
+    if (!report) {
+        printError("tradeoff", report.error().str());
+        return EXIT_FAILED;
+    }
+    const std::filesystem::path folder = out;
+    const std::string table = render::tradeoffTable(*report);
+    std::fputs(table.c_str(), stdout);
+    for (const auto& [file, text] :
+         {std::pair{folder / "tradeoff.json", render::tradeoffJson(*report).dump(2) + "\n"},
+          {folder / "tradeoff.md", table}})
+        if (auto written = writeFileAtomic(file, text); !written) {
+            printError("tradeoff", written.error().str());
+            return EXIT_FAILED;
+        }
+    auto plots = render::writeTradeoffPlots(*report, folder);
+    if (!plots) {
+        printError("tradeoff", plots.error().str());
+        return EXIT_FAILED;
+    }
+    if (!plots->warning.empty())
+        std::fprintf(stderr, "grass tradeoff: warning: %s\n", plots->warning.c_str());
+    std::printf("wrote %s/tradeoff.json, tradeoff.md and %zu plot files\n", out.c_str(),
+                plots->written.size());
+    return 0;
+}
+
+}  // namespace grass::cli

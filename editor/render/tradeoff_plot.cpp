@@ -1,0 +1,114 @@
+#include "tradeoff_plot.h"
+
+#include <cstdlib>
+
+#include "util/atomic_file.h"
+
+namespace grass::render {
+
+namespace {
+
+// Columns: cost median, min, max, error, on the front (0/1), role (0 setting, 1 reference,
+// 2 check), label. Sorted as swept; the front is re-sorted by cost in the script.
+std::string dataFile(const KnobResult& knob) {
+    std::string out = "# " + knob.name + ": " + knob.description + "\n# cost: " + knob.costMetric +
+                      "\n# error: " + knob.errorMetric +
+                      "\n# cost_median cost_min cost_max error front role label\n";
+    char line[256];
+    for (const SettingResult& s : knob.settings) {
+        std::snprintf(line, sizeof line, "%.6g %.6g %.6g %.6g %d %d \"%s\"\n", s.costMs.median,
+                      s.costMs.min, s.costMs.max, s.error, s.pareto ? 1 : 0,
+                      s.reference ? 1
+                      : s.check   ? 2
+                                  : 0,
+                      s.label.c_str());
+        out += line;
+    }
+    return out;
+}
+
+// The enhanced-text terminal reads _ ^ { } @ & ~ as markup; the metrics' "v2_ref" must print
+// as written.
+std::string plain(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&' || c == '~')
+            out += "\\\\";
+        out += c;
+    }
+    return out;
+}
+
+std::string script(const TradeoffReport& report, const KnobResult& knob) {
+    const std::string dat = knob.name + ".dat";
+    std::string out;
+    out += "# gnuplot " + knob.name + ".gp  (writes " + knob.name + ".png)\n";
+    out += "set terminal pngcairo size 1000,640 enhanced font 'Sans,11'\n";
+    out += "set output '" + knob.name + ".png'\n";
+    out += "set title \"" + plain(report.project) + ": " + plain(knob.description) + "\\n{/*0.8 " +
+           report.device + ", " + std::to_string(report.width) + "×" +
+           std::to_string(report.height) + "}\"\n";
+    out += "set xlabel \"cost: " + plain(knob.costMetric) + "\"\n";
+    out += "set ylabel \"error: " + plain(knob.errorMetric) + "\" font ',9'\n";
+    // Costs and errors are never negative: the axes start at 0 and leave room for the labels.
+    out += "set grid\nset key top right\nset xrange [0:*]\nset yrange [0:*]\n";
+    out += "set offsets 0, graph 0.08, graph 0.12, 0\n";
+    // Error bars: the spread (min–max) of the timed frames.
+    out += "plot '" + dat +
+           "' using 1:4:2:3 with xerrorbars lc rgb '#888888' pt 7 ps 0.8 "
+           "title 'setting (cost min–max)', \\\n";
+    out += "     '" + dat +
+           "' using ($5==1 ? $1 : 1/0):4 smooth unique with linespoints "
+           "lc rgb '#d62728' lw 2 pt 7 ps 1.4 title 'Pareto front', \\\n";
+    out += "     '" + dat +
+           "' using ($6==1 ? $1 : 1/0):4 with points lc rgb '#1f77b4' pt 5 ps 1.8 "
+           "title 'reference', \\\n";
+    if (!knob.checkLabel.empty())
+        out += "     '" + dat +
+               "' using ($6==2 ? $1 : 1/0):4 with points lc rgb '#2ca02c' pt 9 ps 1.6 "
+               "title 'reference check (finer)', \\\n";
+    out += "     '" + dat + "' using 1:4:7 with labels offset 0,1.1 font ',10' notitle\n";
+    return out;
+}
+
+std::string shellQuote(const std::string& text) {
+    std::string out = "'";
+    for (const char c : text)
+        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+}  // namespace
+
+Result<PlotFiles> writeTradeoffPlots(const TradeoffReport& report,
+                                     const std::filesystem::path& folder) {
+    PlotFiles files;
+    const bool haveGnuplot = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
+    for (const KnobResult& knob : report.knobs) {
+        if (!knob.skipped.empty() || knob.settings.empty())
+            continue;
+        for (const auto& [name, text] : {std::pair{knob.name + ".dat", dataFile(knob)},
+                                         {knob.name + ".gp", script(report, knob)}}) {
+            if (auto written = writeFileAtomic(folder / name, text); !written)
+                return written.error();
+            files.written.push_back(folder / name);
+        }
+        if (!haveGnuplot)
+            continue;
+        const std::string command = "cd " + shellQuote(folder.string()) + " && gnuplot " +
+                                    shellQuote(knob.name + ".gp") + " 2>&1";
+        if (std::system(command.c_str()) != 0) {
+            files.warning = "gnuplot failed on " + (folder / (knob.name + ".gp")).string();
+            continue;
+        }
+        files.written.push_back(folder / (knob.name + ".png"));
+    }
+    if (!haveGnuplot)
+        files.warning =
+            "gnuplot is not installed (Debian: apt install gnuplot-nox); the plots are "
+            "scripts only: run `gnuplot <knob>.gp` in " +
+            folder.string();
+    return files;
+}
+
+}  // namespace grass::render
