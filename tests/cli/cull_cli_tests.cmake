@@ -4,8 +4,10 @@
 grass_cli_test(render_cull_stats GL OK
     --stdout "^  culling +[0-9]+ in, [0-9]+ drawn"
     --file ${GRASS_CLI_TMP}/cull-stats.json "\"blades_in\": [0-9]+"
-    --file ${GRASS_CLI_TMP}/cull-stats.json "\"culled\": \\{\"patch\": [0-9]+, \"orientation\": [0-9]+, \"frustum\": [0-9]+, \"distance\": [0-9]+, \"occlusion\": [0-9]+\\}"
+    --file ${GRASS_CLI_TMP}/cull-stats.json "\"culled\": \\{\"patch\": [0-9]+, \"orientation\": [0-9]+, \"frustum\": [0-9]+, \"distance\": [0-9]+, \"occlusion\": [0-9]+, \"snow\": [0-9]+\\}"
     --file ${GRASS_CLI_TMP}/cull-stats.json "\"ms\": \\{\"physics\": "
+    --file ${GRASS_CLI_TMP}/cull-stats.json "\"passes\": \\[\"opaque\", \"cull\", \"blades\"\\]"
+    --file ${GRASS_CLI_TMP}/cull-stats.json "\"allocated\": \\[\\]"
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_TMP}/cull.png
        --width 64 --height 48 --frames 1 --cull frustum,distance --stats ${GRASS_CLI_TMP}/cull-stats.json)
 grass_cli_test(render_cull_none_draws_all GL OK
