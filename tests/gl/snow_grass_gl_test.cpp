@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "framebuffer.h"
@@ -28,6 +29,30 @@ render::RenderOptions allBladesOptions(const core::Project& project) {
     options.cull.distance = options.cull.occlusion = false;
     options.cull.collectStats = true;
     return options;
+}
+
+// A project's scene and a renderer over it, with every blade going through the cull.
+struct DrawnField {
+    core::Scene scene;
+    std::unique_ptr<render::SceneRenderer> renderer;
+    render::RenderOptions options;
+};
+
+// On the heap: the renderer keeps a pointer to the scene.
+std::unique_ptr<DrawnField> drawnField(const core::LoadedProject& loaded) {
+    auto drawn = std::make_unique<DrawnField>();
+    auto scene = core::buildScene(loaded);
+    EXPECT_TRUE(scene.ok()) << scene.error().str();
+    if (!scene.ok())
+        return nullptr;
+    drawn->scene = std::move(*scene);
+    auto renderer = render::SceneRenderer::create(drawn->scene);
+    EXPECT_TRUE(renderer.ok()) << renderer.error().str();
+    if (!renderer.ok())
+        return nullptr;
+    drawn->renderer = std::move(*renderer);
+    drawn->options = allBladesOptions(loaded.project);
+    return drawn;
 }
 
 struct Frame {
@@ -60,24 +85,24 @@ core::SnowDepthMap readDepthMap(const render::SnowPass& pass, int resolution) {
 
 // A 3 m plane of blades 5 to 40 cm tall: snow of a few centimetres buries some of them.
 core::LoadedProject shortAndTallBlades(float density) {
-    PlaneField field;
-    field.sizeM = 3.0f;
-    field.resolution = 4;
-    field.density = density;
-    field.heightMinM = 0.05f;
-    field.heightMaxM = 0.4f;
-    return planeFieldProject(field);
+    PlaneField plane;
+    plane.sizeM = 3.0f;
+    plane.resolution = 4;
+    plane.density = density;
+    plane.heightMinM = 0.05f;
+    plane.heightMaxM = 0.4f;
+    return planeFieldProject(plane);
 }
 
 TEST_F(SnowGrassGlTest, BuriedBladesAreCulledAndSnowOffRestoresTheCount) {
     const core::LoadedProject loaded = shortAndTallBlades(300.0f);
-    auto scene = core::buildScene(loaded);
-    ASSERT_TRUE(scene.ok()) << scene.error().str();
-    auto renderer = render::SceneRenderer::create(*scene);
-    ASSERT_TRUE(renderer.ok()) << renderer.error().str();
-    render::RenderOptions options = allBladesOptions(loaded.project);
+    const auto drawn = drawnField(loaded);
+    ASSERT_NE(drawn, nullptr);
+    render::SceneRenderer& renderer = *drawn->renderer;
+    const core::Scene& scene = drawn->scene;
+    render::RenderOptions& options = drawn->options;
 
-    const Frame bare = renderFrame(**renderer, options);
+    const Frame bare = renderFrame(renderer, options);
     ASSERT_GT(bare.cull.bladesIn, 1000u);
     EXPECT_EQ(bare.cull.drawn, bare.cull.bladesIn);
     EXPECT_EQ(bare.cull.culledSnow, 0u);
@@ -86,18 +111,18 @@ TEST_F(SnowGrassGlTest, BuriedBladesAreCulledAndSnowOffRestoresTheCount) {
     snow.enabled = 1u;
     snow.amountM = 0.25f;
     snow.mapResolution = 512;
-    const Frame snowy = renderFrame(**renderer, options);
+    const Frame snowy = renderFrame(renderer, options);
     EXPECT_EQ(snowy.cull.bladesIn, bare.cull.bladesIn);
     EXPECT_GT(snowy.cull.culledSnow, bare.cull.bladesIn / 10) << "short blades vanish";
     EXPECT_LT(snowy.cull.drawn, bare.cull.drawn);
     EXPECT_EQ(snowy.cull.drawn + snowy.cull.culledSnow, snowy.cull.bladesIn);
 
     // The CPU reference on the same map: blades shorter than As·Fe·Zn at their roots.
-    const render::SnowPass* pass = (*renderer)->snowPass();
+    const render::SnowPass* pass = renderer.snowPass();
     ASSERT_NE(pass, nullptr);
     const core::SnowDepthMap map = readDepthMap(*pass, snow.mapResolution);
     std::size_t buried = 0;
-    for (const core::Blade& blade : scene->layers.front().patched.blades) {
+    for (const core::Blade& blade : scene.layers.front().patched.blades) {
         if (!(blade.h() > 0.0f))
             continue;
         const float fe = core::snowBoundaryExposure(map, blade.v0(), blade.up(), snow);
@@ -110,39 +135,39 @@ TEST_F(SnowGrassGlTest, BuriedBladesAreCulledAndSnowOffRestoresTheCount) {
         << "CPU " << buried << " GPU " << snowy.cull.culledSnow;
 
     snow.amountM = 20.0f;  // deeper than any blade except where the noise nearly cancels Zn
-    const Frame deep = renderFrame(**renderer, options);
+    const Frame deep = renderFrame(renderer, options);
     EXPECT_LT(deep.cull.drawn, bare.cull.bladesIn / 50);
 
     snow.enabled = 0u;
-    const Frame restored = renderFrame(**renderer, options);
+    const Frame restored = renderFrame(renderer, options);
     EXPECT_EQ(restored.cull.drawn, bare.cull.drawn);
     EXPECT_EQ(restored.cull.culledSnow, 0u);
 }
 
 TEST_F(SnowGrassGlTest, ExposedTipsWhitenAndShelteredTipsDoNot) {
-    PlaneField field;
-    field.sizeM = 4.0f;
-    field.resolution = 8;
-    field.density = 60.0f;
-    core::LoadedProject loaded = planeFieldProject(field);
+    PlaneField plane;
+    plane.sizeM = 4.0f;
+    plane.resolution = 8;
+    plane.density = 60.0f;
+    core::LoadedProject loaded = planeFieldProject(plane);
     core::ColliderDesc ball;
     ball.position = {0.0f, 1.4f, 0.0f};
     ball.radiusM = 0.8f;
     loaded.project.colliders.push_back(ball);
-    auto scene = core::buildScene(loaded);
-    ASSERT_TRUE(scene.ok()) << scene.error().str();
-    auto renderer = render::SceneRenderer::create(*scene);
-    ASSERT_TRUE(renderer.ok()) << renderer.error().str();
-    render::RenderOptions options = allBladesOptions(loaded.project);
+    const auto drawn = drawnField(loaded);
+    ASSERT_NE(drawn, nullptr);
+    render::SceneRenderer& renderer = *drawn->renderer;
+    const core::Scene& scene = drawn->scene;
+    render::RenderOptions& options = drawn->options;
     core::SnowParams& snow = options.snow;
     snow.enabled = 1u;
     snow.amountM = 0.01f;  // too thin to bury any blade: every tip is judged
     snow.mapResolution = 512;
     snow.fallDirection = {0.0f, -1.0f, 0.0f};
-    const Frame frame = renderFrame(**renderer, options);
+    const Frame frame = renderFrame(renderer, options);
     ASSERT_EQ(frame.cull.culledSnow, 0u);
-    const core::SnowDepthMap map = readDepthMap(*(*renderer)->snowPass(), snow.mapResolution);
-    const auto& blades = scene->layers.front().patched.blades;
+    const core::SnowDepthMap map = readDepthMap(*renderer.snowPass(), snow.mapResolution);
+    const auto& blades = scene.layers.front().patched.blades;
     ASSERT_EQ(frame.tipSnow.size(), blades.size());
 
     std::size_t exposedWhite = 0, exposed = 0, shelteredWhite = 0, sheltered = 0, mismatched = 0;
@@ -178,11 +203,10 @@ TEST_F(SnowGrassGlTest, ExposedTipsWhitenAndShelteredTipsDoNot) {
 // buries blades once enough has fallen, and snow that melts away gives the snow-free frame back.
 TEST_F(SnowGrassGlTest, SnowAccumulatesAndMeltsOverTime) {
     const core::LoadedProject loaded = shortAndTallBlades(200.0f);
-    auto scene = core::buildScene(loaded);
-    ASSERT_TRUE(scene.ok()) << scene.error().str();
-    auto renderer = render::SceneRenderer::create(*scene);
-    ASSERT_TRUE(renderer.ok()) << renderer.error().str();
-    render::RenderOptions options = allBladesOptions(loaded.project);
+    const auto drawn = drawnField(loaded);
+    ASSERT_NE(drawn, nullptr);
+    render::SceneRenderer& renderer = *drawn->renderer;
+    render::RenderOptions& options = drawn->options;
     core::SnowParams& snow = options.snow;
     snow.enabled = 1u;
     snow.amountM = 0.0f;
@@ -191,7 +215,7 @@ TEST_F(SnowGrassGlTest, SnowAccumulatesAndMeltsOverTime) {
     std::vector<std::size_t> buried;
     for (const float t : {0.0f, 10.0f, 30.0f}) {
         options.timeS = t;
-        buried.push_back(renderFrame(**renderer, options).cull.culledSnow);
+        buried.push_back(renderFrame(renderer, options).cull.culledSnow);
     }
     EXPECT_EQ(buried[0], 0u) << "no snow has fallen at t = 0";
     EXPECT_GT(buried[1], 0u);
@@ -201,9 +225,9 @@ TEST_F(SnowGrassGlTest, SnowAccumulatesAndMeltsOverTime) {
     snow.accumulationRate = 0.0f;
     snow.meltRate = 0.01f;  // gone after 30 s
     options.timeS = 5.0f;
-    EXPECT_GT(renderFrame(**renderer, options).cull.culledSnow, 0u);
+    EXPECT_GT(renderFrame(renderer, options).cull.culledSnow, 0u);
     options.timeS = 40.0f;
-    const Frame melted = renderFrame(**renderer, options);
+    const Frame melted = renderFrame(renderer, options);
     EXPECT_EQ(melted.cull.culledSnow, 0u);
     EXPECT_EQ(melted.cull.drawn, melted.cull.bladesIn);
 }
