@@ -152,6 +152,11 @@ struct RenderSettings {
     glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
     std::uint32_t patchSize = 256;  // blades per patch, a multiple of 32 (the cull work-group)
     GrassTechnique technique = GrassTechnique::Blades;
+    // Level of detail (SPEC §7): full segments up to this camera distance, half to 3×, a quarter
+    // beyond; 0 keeps every blade at full detail.
+    float lodDistanceM = 8.0f;
+    // Distance thinning (SPEC §6): the field thins in eighths out to this distance; 0 = off.
+    float thinningDistanceM = 100.0f;
     bool operator==(const RenderSettings&) const = default;
 };
 

@@ -37,9 +37,12 @@ constexpr std::array<std::string_view, 15> LAYER_KEYS{
 constexpr std::array<std::string_view, 3> BLADE_KEYS{"height", "width", "stiffness"};
 constexpr std::array<std::string_view, 4> CAMERA_KEYS{"name", "position", "target", "fov_y_deg"};
 constexpr std::array<std::string_view, 3> SUN_KEYS{"direction", "color", "intensity"};
-constexpr std::array<std::string_view, 10> RENDER_KEYS{
-    "width",      "height",    "geometry",     "tess_level", "strip_segments",
-    "msaa",       "patch_size", "sky_color",   "ground_color", "technique"};
+constexpr std::array<std::string_view, 12> RENDER_KEYS{
+    "width",      "height",       "geometry",   "tess_level",   "strip_segments",
+    "msaa",       "patch_size",   "sky_color",  "ground_color", "technique",
+    "lod_distance", "thinning_distance"};
+// Camera distances beyond 100 km are typos (and push the LOD bands out of float range).
+constexpr json::NumberRule DISTANCE_OR_OFF{0.0, 1e5};
 
 constexpr int MAX_IMAGE_SIDE = 16384;
 constexpr int MAX_MESH_RESOLUTION = 1024;
@@ -205,6 +208,8 @@ void readRender(json::Reader& reader, const Json& node, RenderSettings& render) 
         if (reader.readEnum(*technique, "/render/technique", json::TECHNIQUE_NAMES, index))
             render.technique = static_cast<GrassTechnique>(index);
     }
+    object.readFloat("lod_distance", DISTANCE_OR_OFF, render.lodDistanceM);
+    object.readFloat("thinning_distance", DISTANCE_OR_OFF, render.thinningDistanceM);
 }
 
 void readHeader(json::Reader& reader, const Json& root) {
@@ -339,6 +344,8 @@ Json renderJson(const RenderSettings& render) {
     out["sky_color"] = jsonVec3(render.skyColor);
     out["ground_color"] = jsonVec3(render.groundColor);
     out["technique"] = std::string(grassTechniqueName(render.technique));
+    out["lod_distance"] = jsonFloat(render.lodDistanceM);
+    out["thinning_distance"] = jsonFloat(render.thinningDistanceM);
     return out;
 }
 

@@ -3,6 +3,7 @@
 #include <system_error>
 
 #include "maps/map_image.h"
+#include "quality/quality_presets.h"
 
 namespace grass::editor {
 
@@ -27,6 +28,8 @@ std::string& mapField(core::GrassLayer& layer, core::LayerMap map) {
 
 // A short name for a project step: the part of the project that changed.
 std::string projectEditLabel(const core::Project& before, const core::Project& after) {
+    if (const auto preset = core::matchingPreset(after); preset && preset != core::matchingPreset(before))
+        return "quality " + std::string(core::qualityPresetName(*preset));
     if (before.wind != after.wind)
         return "wind";
     if (before.colliders != after.colliders)
@@ -48,7 +51,7 @@ bool applyProject(EditorState& s, const core::Project& project) {
     // The viewport's settings that mirror the project follow it back and forth.
     s.options.technique = project.render.technique;
     s.options.lighting = project.lighting;
-    s.options.snow = project.snow;
+    syncQualityOptions(project, s.options);
     s.dirty = s.rebuildPending = true;
     return true;
 }

@@ -137,6 +137,10 @@ void layerSection(ui::Ui& ui, EditorState& state);
 void windSection(ui::Ui& ui, EditorState& state);
 void colliderSection(ui::Ui& ui, EditorState& state);
 void renderSection(ui::Ui& ui, EditorState& state);
+// The Render section's quality preset menu and measured cost/error readout
+// (panels_quality.cpp), and the render options that follow the project's quality settings.
+void qualityRows(ui::Ui& ui, EditorState& state);
+void syncQualityOptions(const core::Project& project, render::RenderOptions& options);
 // Snow accumulation (panels_snow.cpp); keeps state.options.snow equal to the project's.
 void snowSection(ui::Ui& ui, EditorState& state);
 

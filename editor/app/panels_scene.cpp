@@ -200,6 +200,7 @@ void renderSection(ui::Ui& ui, EditorState& s) {
                 s.loaded.project.lighting.model = s.options.lighting.model;
                 live(s, r);
             }
+            qualityRows(section, s);
         },
         true);
 }

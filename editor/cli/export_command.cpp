@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "export/export.h"
 #include "project/project.h"
+#include "preset_option.h"
 #include "scene/scene.h"
 #include "util/arg_parser.h"
 
@@ -24,7 +25,7 @@ double msSince(Clock::time_point start) {
 }
 
 struct ExportArgs {
-    std::string project, out, format = "gltf";
+    std::string project, out, format = "gltf", preset = "project";
     int lod = 0;
 };
 
@@ -56,6 +57,7 @@ int runExport(const std::vector<std::string>& argv) {
     parser.text("--format", "gltf|raw", "what to write (default gltf)", &args.format);
     parser.integer("--lod", "gltf only: keep every 2^N-th blade, each 2^N times wider; 0 keeps all",
                    &args.lod, 0, core::MAX_EXPORT_LOD);
+    addPresetOption(parser, &args.preset);
     if (auto parsed = parser.parse(argv); !parsed) {
         printError("export", parsed.error().str());
         return EXIT_USAGE;
@@ -97,6 +99,7 @@ int runExport(const std::vector<std::string>& argv) {
         printError("export", loaded.error().str());
         return EXIT_FAILED;
     }
+    applyPresetOption(args.preset, loaded->project);
     std::fprintf(stderr, "note: growing %s ...\n", loaded->file.c_str());
     auto scene = core::buildScene(*loaded);
     if (!scene) {

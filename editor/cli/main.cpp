@@ -20,6 +20,7 @@ commands:
   export      write a project's grass as glTF (instanced blades) or raw GPU buffers
   bench       run the standard benchmark set and print per-stage costs (--compare old runs)
   tradeoff    sweep quality knobs against a reference: cost/error table, tradeoff.json, plots
+  presets     print the quality presets (--preset of render, sim, export) and their measurements
 
 Run 'grass <command> --help' for the options of a command.
 The editor window is 'grass-editor'.
@@ -32,7 +33,7 @@ int main(int argc, char** argv) {
     if (args.empty()) {
         grass::cli::printError("",
                                "missing command: grass render|sim|mesh-info|paint|export|bench|"
-                               "tradeoff ... "
+                               "tradeoff|presets ... "
                                "(see grass --help)");
         return grass::cli::EXIT_USAGE;
     }
@@ -60,12 +61,14 @@ int main(int argc, char** argv) {
         return grass::cli::runBench(args);
     if (command == "tradeoff")
         return grass::cli::runTradeoff(args);
+    if (command == "presets")
+        return grass::cli::runPresets(args);
     if (command.rfind("-", 0) == 0)
         grass::cli::printError("", command + ": unknown option (see grass --help)");
     else
         grass::cli::printError(
             command,
-            "unknown command (commands: render, sim, mesh-info, paint, export, bench, tradeoff; "
+            "unknown command (commands: render, sim, mesh-info, paint, export, bench, tradeoff, presets; "
             "see grass --help)");
     return grass::cli::EXIT_USAGE;
 }

@@ -13,6 +13,7 @@
 #include "scene/scene_physics.h"
 #include "scene/turntable.h"
 #include "simulation_runner.h"
+#include "preset_option.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
 #include "util/image_file.h"
@@ -31,7 +32,7 @@ struct RenderArgs {
     std::string project, mesh, out, camera, geometry = "project", msaa = "project";
     std::string backend = "gpu", shape = "project";
     std::string cull = "all", stats, lighting = "project", technique = "project",
-                animation = "project";
+                animation = "project", preset = "project";
     double timeS = 0.0;
     double lodDistanceM = render::CullSettings{}.lodDistanceM;
     int width = 0, height = 0, frames = 3, blades = 60000, turntable = 0;
@@ -51,6 +52,7 @@ Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& p
             core::projectForMesh(args.mesh, imported->mesh, static_cast<std::size_t>(args.blades));
         if (!loaded)
             return loaded.error();
+        applyPresetOption(args.preset, loaded->project);
         std::vector<std::string> notes;
         for (auto& note : imported->notes)
             notes.push_back(args.mesh + ": " + note);
@@ -65,6 +67,7 @@ Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& p
         return loaded.error();
     if (parser.given("--seed"))
         loaded->project.seed = args.seed;
+    applyPresetOption(args.preset, loaded->project);
     auto built = core::buildScene(*loaded);
     if (!built)
         return built.error();
@@ -227,7 +230,8 @@ int runRender(const std::vector<std::string>& argv) {
     parser.number("--lod-distance", "M",
                   "blades nearer than M metres get every strip segment / tessellation level, "
                   "half up to 3·M, a quarter beyond",
-                  &args.lodDistanceM, 0.0, 1e6, "8; 0: full detail everywhere");
+                  &args.lodDistanceM, 0.0, 1e5, "the project's lod_distance; 0: full detail everywhere");
+    addPresetOption(parser, &args.preset);
     parser.choice("--msaa", {"project", "0", "1", "2", "4", "8"},
                   "multisample anti-aliasing samples per pixel", &args.msaa);
     parser.integer("--frames", "frames to draw and time", &args.frames, 1, 1000);
@@ -339,10 +343,16 @@ int runRender(const std::vector<std::string>& argv) {
         if (auto path = core::parseGeometryPath(args.geometry))
             request.options.geometry = render::resolveGeometryPath(*path, gl::isSoftwareRenderer());
     }
-    // Counters are read once after the last frame: cheap for a one-shot render.
-    request.options.cull = *cullSettings;
-    request.options.cull.collectStats = true;
-    request.options.cull.lodDistanceM = static_cast<float>(args.lodDistanceM);
+    // Counters are read once after the last frame: cheap for a one-shot render. The list picks
+    // the tests; distances come from the project (thinning only where it has a distance).
+    render::CullSettings& culling = request.options.cull;
+    culling.frustum = cullSettings->frustum;
+    culling.orientation = cullSettings->orientation;
+    culling.occlusion = cullSettings->occlusion;
+    culling.distance = culling.distance && cullSettings->distance;
+    culling.collectStats = true;
+    if (parser.given("--lod-distance"))
+        culling.lodDistanceM = static_cast<float>(args.lodDistanceM);
     request.options.timeS = static_cast<float>(args.timeS);
     request.options.lightPerVertex = args.lightPerVertex;
     if (args.snow)
@@ -403,7 +413,8 @@ int runRender(const std::vector<std::string>& argv) {
         cull.culledOcclusion, cull.culledSnow, rendered->lastFrame.cullMs);
     std::printf("  detail     drawn per LOD %zu / %zu / %zu (full, half, quarter segments; "
                 "--lod-distance %.3g m)\n",
-                cull.drawnPerLod[0], cull.drawnPerLod[1], cull.drawnPerLod[2], args.lodDistanceM);
+                cull.drawnPerLod[0], cull.drawnPerLod[1], cull.drawnPerLod[2],
+                static_cast<double>(request.options.cull.lodDistanceM));
     if (!args.stats.empty()) {
         const std::string json =
             statsJson(rendered->lastFrame, physicsMsPerStep, rendered->frameWallMs.back());

@@ -10,6 +10,7 @@
 #include "debug_output.h"
 #include "headless_context.h"
 #include "scene/scene_physics.h"
+#include "preset_option.h"
 #include "simulation_runner.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
@@ -19,7 +20,7 @@ namespace grass::cli {
 namespace {
 
 struct SimArgs {
-    std::string project, report, backend = "cpu";
+    std::string project, report, backend = "cpu", preset = "project";
     double seconds = 5.0;
     double dtS = 0.0;
     int threads = 0;
@@ -83,6 +84,7 @@ int runSim(const std::vector<std::string>& argv) {
     parser.text("--report", "FILE", "write the figures as a JSON object to FILE", &args.report);
     parser.unsignedInteger("--seed", "scatter seed, overrides the project's", &args.seed);
     parser.flag("--gl-debug", "print GL debug output (gpu backend)", &args.glDebug);
+    addPresetOption(parser, &args.preset);
     if (auto parsed = parser.parse(argv); !parsed) {
         printError("sim", parsed.error().str());
         return EXIT_USAGE;
@@ -106,6 +108,8 @@ int runSim(const std::vector<std::string>& argv) {
         loaded->project.seed = args.seed;
     if (parser.given("--dt"))
         loaded->project.physics.dtS = static_cast<float>(args.dtS);
+    // After --dt: the preset fits its substeps into the step actually taken.
+    applyPresetOption(args.preset, loaded->project);
     auto scene = core::buildScene(*loaded);
     if (!scene) {
         printError("sim", scene.error().str());

@@ -39,8 +39,8 @@ std::string joined(const std::vector<std::string>& names) {
 }  // namespace
 
 int runTradeoff(const std::vector<std::string>& argv) {
-    std::string project, knobs, out = "tradeoff", camera;
-    int width = 640, height = 360, frames = 5, msaa = 4;
+    std::string project, knobs, out = "tradeoff", camera, technique = "project";
+    int width = 1280, height = 720, frames = 5, msaa = 4;
     double sceneTimeS = 1.0, physicsSeconds = 2.0;
     bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
     const std::string allKnobs = joined(render::tradeoffKnobNames());
@@ -59,11 +59,15 @@ int runTradeoff(const std::vector<std::string>& argv) {
     parser.text("--knobs", "K1,K2", "the knobs to sweep (default: all of " + allKnobs + ")",
                 &knobs);
     parser.text("--out", "DIR", "output folder (default: tradeoff)", &out);
-    parser.integer("--width", "frame width in pixels", &width, 16, 8192);
-    parser.integer("--height", "frame height in pixels", &height, 16, 8192);
+    parser.integer("--width", "frame width in pixels (default 1280)", &width, 16, 8192);
+    parser.integer("--height", "frame height in pixels (default 720)", &height, 16, 8192);
     parser.integer("--frames", "timed frames per setting, after one warm-up", &frames, 1, 100);
     parser.integer("--msaa", "samples per pixel", &msaa, 1, 8);
     parser.text("--camera", "NAME", "which of the project's cameras (default: the first)", &camera);
+    parser.choice("--technique", {"project", "blades", "billboards", "hybrid", "growth"},
+                  "draw the grass this way instead of the project's technique (hybrid measures "
+                  "billboard_fade on a project that has no billboards)",
+                  &technique);
     parser.number("--time", "S", "scene time of the images (the project's physics runs to it)",
                   &sceneTimeS, 0.0, 3600.0, "1");
     parser.number("--physics-seconds", "S", "simulated span of the physics-step sweep",
@@ -117,6 +121,9 @@ int runTradeoff(const std::vector<std::string>& argv) {
         printError("tradeoff", loaded.error().str());
         return EXIT_FAILED;
     }
+    if (technique != "project")
+        if (auto chosen = core::parseGrassTechnique(technique))
+            loaded->project.render.technique = *chosen;
     auto context = gl::HeadlessContext::create(glDebug);
     if (!context) {
         printError("tradeoff", context.error().str());

@@ -33,6 +33,10 @@ RenderOptions renderOptionsFor(const core::Project& project, bool softwareRender
     options.technique = settings.technique;
     options.billboards = project.billboards;
     options.snow = project.snow;
+    options.cull.lodDistanceM = settings.lodDistanceM;
+    options.cull.distance = settings.thinningDistanceM > 0.0f;
+    if (options.cull.distance)
+        options.cull.maxDistanceM = settings.thinningDistanceM;
     // Tessellation is what snow costs most on a software rasterizer (docs/snow.md: 8 px edges
     // 1.3–2.2 s a frame on llvmpipe, 16 px 0.6–1.4 s); GPUs tessellate in hardware.
     options.snowTessPixels = softwareRenderer ? 16.0f : 8.0f;

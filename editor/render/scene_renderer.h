@@ -60,7 +60,8 @@ struct RenderOptions {
 };
 
 // Project settings → options; Auto picks strips on software rasterizers (SPEC §7 figures).
-// Culling keeps CullSettings' defaults: every test on, statistics off.
+// Culling: every test on (thinning only with a thinning distance), the project's LOD and
+// thinning distances, statistics off.
 RenderOptions renderOptionsFor(const core::Project& project, bool softwareRenderer);
 GeometryPath resolveGeometryPath(core::GeometryPath path, bool softwareRenderer);
 const char* geometryPathLabel(GeometryPath path);

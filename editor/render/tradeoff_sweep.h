@@ -22,8 +22,8 @@ namespace grass::render {
 struct TradeoffOptions {
     // Knob names (tradeoffKnobNames()); empty: every knob.
     std::vector<std::string> knobs;
-    int width = 640;
-    int height = 360;
+    int width = 1280;
+    int height = 720;
     int msaaSamples = 4;
     int frames = 5;               // timed frames per setting, after one untimed warm-up frame
     std::string camera;           // the project's camera by name ("": the first)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 
 #include "blade/bezier.h"
@@ -91,13 +92,13 @@ TEST(Physics, TipNeverGoesBelowTheGroundPlane) {
 }
 
 // SPEC §3 / issue 4: every combination of the extremes, with wind, gravity and a collider
-// (tests/support/physics_cases.h).
-TEST(Physics, ExtremesStayFiniteAboveGroundAndKeepLength) {
+// (tests/support/physics_cases.h); returns the largest relative length error.
+float runExtremes(const std::function<PhysicsParams(const test::ExtremeCase&)>& paramsFor) {
     float maxRel = 0.0f;
     const std::vector<test::ExtremeCase> cases = test::extremeCases();
-    ASSERT_EQ(cases.size(), 810u);
+    EXPECT_EQ(cases.size(), 810u);
     for (const test::ExtremeCase& c : cases) {
-        const PhysicsParams params = test::extremeParams(c);
+        const PhysicsParams params = paramsFor(c);
         const std::vector<WindSource> wind = test::extremeWind(c);
         const std::vector<SphereCollider> colliders = test::extremeColliders(c);
         Blade b = test::extremeBlade(c);
@@ -106,13 +107,37 @@ TEST(Physics, ExtremesStayFiniteAboveGroundAndKeepLength) {
         for (int step = 0; step < test::EXTREME_STEP_COUNT; ++step) {
             const glm::vec3 before = b.v2();
             stepBlade(b, eta, tip, params, wind, colliders, test::extremeStepTimeS(c, step));
-            ASSERT_TRUE(test::keepsExtremeInvariants(b, eta, c, before))
-                << test::describeCase(c) << " step " << step;
+            if (!test::keepsExtremeInvariants(b, eta, c, before)) {
+                ADD_FAILURE() << test::describeCase(c) << " step " << step;
+                return maxRel;
+            }
             maxRel = std::max(maxRel, test::relativeLengthError(b, c.h));
         }
     }
-    std::printf("%zu combinations, max relative length error %.3g\n", cases.size(), maxRel);
+    return maxRel;
 }
+
+TEST(Physics, ExtremesStayFiniteAboveGroundAndKeepLength) {
+    const float maxRel =
+        runExtremes([](const test::ExtremeCase& c) { return test::extremeParams(c); });
+    std::printf("810 combinations, max relative length error %.3g\n", maxRel);
+}
+
+// Issue 10: the same sweep at every quality preset (their substep policies differ).
+class PhysicsAtPreset : public ::testing::TestWithParam<QualityPreset> {};
+
+TEST_P(PhysicsAtPreset, ExtremesStayFiniteAboveGroundAndKeepLength) {
+    const QualityPreset preset = GetParam();
+    const float maxRel = runExtremes(
+        [preset](const test::ExtremeCase& c) { return test::extremeParams(c, preset); });
+    std::printf("%s: 810 combinations, max relative length error %.3g\n",
+                std::string(qualityPresetName(preset)).c_str(), maxRel);
+}
+
+INSTANTIATE_TEST_SUITE_P(Presets, PhysicsAtPreset, ::testing::ValuesIn(QUALITY_PRESETS),
+                         [](const auto& preset) {
+                             return std::string(qualityPresetName(preset.param));
+                         });
 
 TEST(Physics, DegenerateBladesAreReportedAndRepaired) {
     const float nan = std::numeric_limits<float>::quiet_NaN();

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <optional>
+#include <string>
 
 #include "buffer.h"
 #include "gl_context_fixture.h"
@@ -51,7 +53,10 @@ std::vector<std::vector<ExtremeCase>> groupCases(const std::vector<ExtremeCase>&
     return groups;
 }
 
-TEST_F(PhysicsExtremesGpuTest, ExtremesStayFiniteAboveGroundAndKeepLength) {
+// The sweep on the GPU and the CPU side by side; `preset`: its substep policy on top (issue 10).
+// `tipTolerance` bounds |v2_gpu − v2_cpu| / h.
+void runExtremesOnGpu(std::optional<core::QualityPreset> preset, float tipTolerance) {
+    const std::string label = preset ? std::string(core::qualityPresetName(*preset)) : "project";
     const auto start = std::chrono::steady_clock::now();
     auto physics = render::PhysicsGpu::load();
     ASSERT_TRUE(physics.ok()) << physics.error().str();
@@ -65,7 +70,8 @@ TEST_F(PhysicsExtremesGpuTest, ExtremesStayFiniteAboveGroundAndKeepLength) {
     std::string worstCase;
     for (const std::vector<ExtremeCase>& group : groups) {
         const ExtremeCase& first = group.front();
-        const core::PhysicsParams params = extremeParams(first);
+        const core::PhysicsParams params =
+            preset ? extremeParams(first, *preset) : extremeParams(first);
         const std::vector<core::WindSource> wind = extremeWind(first);
         const std::vector<core::SphereCollider> colliders = extremeColliders(first);
         std::vector<core::Blade> cpu;
@@ -86,7 +92,7 @@ TEST_F(PhysicsExtremesGpuTest, ExtremesStayFiniteAboveGroundAndKeepLength) {
             for (std::size_t i = 0; i < group.size(); ++i) {
                 const ExtremeCase& c = group[i];
                 ASSERT_TRUE(keepsExtremeInvariants(gpu[i], eta[i], c, before[i].v2()))
-                    << describeCase(c) << " step " << step;
+                    << label << ": " << describeCase(c) << " step " << step;
                 maxRel = std::max(maxRel, relativeLengthError(gpu[i], c.h));
                 const float deviation = glm::length(gpu[i].v2() - cpu[i].v2()) / c.h;
                 if (deviation > maxTipDeviation) {
@@ -99,14 +105,29 @@ TEST_F(PhysicsExtremesGpuTest, ExtremesStayFiniteAboveGroundAndKeepLength) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(
-        "[ physics ] %zu cases in %zu dispatch groups x %d steps, %.2f s; max relative length "
-        "error %.3g; max |v2_gpu - v2_cpu| / h = %.3g (%s)\n",
-        cases.size(), groups.size(), EXTREME_STEP_COUNT, seconds, static_cast<double>(maxRel),
-        static_cast<double>(maxTipDeviation), worstCase.c_str());
+        "[ physics ] %s: %zu cases in %zu dispatch groups x %d steps, %.2f s; max relative "
+        "length error %.3g; max |v2_gpu - v2_cpu| / h = %.3g (%s)\n",
+        label.c_str(), cases.size(), groups.size(), EXTREME_STEP_COUNT, seconds,
+        static_cast<double>(maxRel), static_cast<double>(maxTipDeviation), worstCase.c_str());
     // The bound of physics_gl_test, 1e-3·h: a real divergence (another step order, a missed
     // substep) moves tips by 1e-2·h or more. Measured on llvmpipe: 5.2e-5·h (Δt = 1 s, s = 100,
     // wind 1e3, h = 1; the rounding of GLSL's sin and exp).
-    EXPECT_LT(maxTipDeviation, 1e-3f) << worstCase;
+    EXPECT_LT(maxTipDeviation, tipTolerance) << label << ": " << worstCase;
+}
+
+TEST_F(PhysicsExtremesGpuTest, ExtremesStayFiniteAboveGroundAndKeepLength) {
+    runExtremesOnGpu(std::nullopt, 1e-3f);
+}
+
+// Issue 10: the sweep passes at the cheapest and at the most exact preset. The invariants are
+// the same; GPU and CPU agree within 1e-2·h here. Measured on llvmpipe: reference 7.8e-5·h,
+// draft 5.2e-3·h, on the stiffest, windiest blade (s = 100, wind 1e3, Δt = 1 s): draft runs it
+// as 30 substeps of 1/30 s (the project default caps at 8), and the float rounding of GLSL's
+// sin and exp grows over the extra substeps of a blade that the wind throws from cap to cap.
+TEST_F(PhysicsExtremesGpuTest, ExtremesHoldAtTheDraftAndReferencePresets) {
+    for (const core::QualityPreset preset :
+         {core::QualityPreset::Draft, core::QualityPreset::Reference})
+        runExtremesOnGpu(preset, 1e-2f);
 }
 
 // Every float of the GPU's blade against the CPU's: the repair only selects and normalises, and

@@ -17,6 +17,8 @@
 #include "blade/blade.h"
 #include "physics/physics.h"
 #include "physics/wind.h"
+#include "project/project.h"
+#include "quality/quality_presets.h"
 
 namespace grass::test {
 
@@ -69,6 +71,15 @@ inline core::PhysicsParams extremeParams(const ExtremeCase& c) {
     core::PhysicsParams params;
     params.dtS = c.dtS;
     return params;
+}
+
+// The same at a quality preset (issue 10): the preset's substep policy on top, as `--preset`
+// writes it into a project (a 10 s step at reference's 1/960 s substep hits the cap of 64).
+inline core::PhysicsParams extremeParams(const ExtremeCase& c, core::QualityPreset preset) {
+    core::Project project;
+    project.physics = extremeParams(c);
+    core::applyQuality(core::qualitySettings(preset), project);
+    return project.physics;
 }
 
 // A fully gusty wave plus a vortex about the y axis through the origin, both at the case's

@@ -1,0 +1,41 @@
+# CLI tests of the quality presets (issue 10, item 2). Included from cli_tests.cmake, after
+# grass_cli_test() is defined. The windy project steps 0.02 s: the reference preset's 1/960 s
+# substep makes 20 substeps a step, draft's 1/30 s one.
+
+grass_cli_test(presets_table OK --no-stderr
+    --stdout "^\\| knob \\| draft \\| balanced \\| high \\| reference \\| measured on \\|$"
+    --stdout "^\\| `physics_step` \\| \\*\\*1/"
+    --stdout "^\\| `geometry_detail` \\| \\*\\*[0-9]+\\*\\*: "
+    --stdout "^\\| `snow_map` \\| "
+    --stdout "^Measured on: "
+    -- ${GRASS_BIN} presets)
+grass_cli_test(presets_help OK --no-stderr --stdout "^usage: grass presets"
+    -- ${GRASS_BIN} presets --help)
+# docs/presets.md shows exactly what `grass presets` prints (the table cannot drift).
+add_test(NAME cli.presets_doc_matches
+         COMMAND ${GRASS_BASH} ${GRASS_CLI_DIR}/presets_doc_test.sh ${GRASS_BIN}
+                 ${PROJECT_SOURCE_DIR}/docs/presets.md)
+set_tests_properties(cli.presets_doc_matches PROPERTIES LABELS cli TIMEOUT 30)
+
+grass_cli_test(sim_preset_reference OK
+    --stdout "^simulated 0\\.100 s of windy: 5 steps of 0\\.02 s \\(20 substeps each\\)"
+    -- ${GRASS_BIN} sim ${GRASS_CLI_PROJECTS}/windy --seconds 0.1 --preset reference)
+grass_cli_test(sim_preset_draft OK
+    --stdout "^simulated 0\\.100 s of windy: 5 steps of 0\\.02 s \\(1 substeps each\\)"
+    -- ${GRASS_BIN} sim ${GRASS_CLI_PROJECTS}/windy --seconds 0.1 --preset draft)
+# An explicit --lod-distance wins over the preset's (reference: LOD off).
+grass_cli_test(render_preset_reference GL OK
+    --stdout "--lod-distance 0 m\\)$"
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --preset reference --frames 1
+       --out ${GRASS_CLI_TMP}/preset-reference.png)
+grass_cli_test(render_preset_flag_wins GL OK
+    --stdout "--lod-distance 3 m\\)$"
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --preset reference --lod-distance 3
+       --frames 1 --out ${GRASS_CLI_TMP}/preset-flag.png)
+grass_cli_test(export_preset OK
+    -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --preset draft --format gltf
+       --out ${GRASS_CLI_TMP}/preset-export)
+grass_cli_test(render_unknown_preset ERROR "--preset" --also "draft"
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --preset fast)
+grass_cli_test(sim_unknown_preset ERROR "--preset"
+    -- ${GRASS_BIN} sim ${GRASS_CLI_PROJECTS}/tiny --preset ultra)
