@@ -249,9 +249,10 @@ std::optional<double> projectKnobValue(const Project& project, const std::string
             return std::nullopt;
         return double(project.physics.dtS) / substeps;
     }
-    if (knobName == "geometry_detail")
-        return project.render.geometry == GeometryPath::Tessellation ? project.render.tessLevel
-                                                                      : project.render.stripSegments;
+    if (knobName == "geometry_detail") {
+        const bool tess = project.render.geometry == GeometryPath::Tessellation;
+        return tess ? project.render.tessLevel : project.render.stripSegments;
+    }
     if (knobName == "lod_distance")
         return project.render.lodDistanceM;
     if (knobName == "cull_distance")

@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
     else
         grass::cli::printError(
             command,
-            "unknown command (commands: render, sim, mesh-info, paint, export, bench, tradeoff, presets; "
-            "see grass --help)");
+            "unknown command (commands: render, sim, mesh-info, paint, export, bench, tradeoff, "
+            "presets; see grass --help)");
     return grass::cli::EXIT_USAGE;
 }

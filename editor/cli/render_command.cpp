@@ -230,7 +230,8 @@ int runRender(const std::vector<std::string>& argv) {
     parser.number("--lod-distance", "M",
                   "blades nearer than M metres get every strip segment / tessellation level, "
                   "half up to 3·M, a quarter beyond",
-                  &args.lodDistanceM, 0.0, 1e5, "the project's lod_distance; 0: full detail everywhere");
+                  &args.lodDistanceM, 0.0, 1e5,
+                  "the project's lod_distance; 0: full detail everywhere");
     addPresetOption(parser, &args.preset);
     parser.choice("--msaa", {"project", "0", "1", "2", "4", "8"},
                   "multisample anti-aliasing samples per pixel", &args.msaa);

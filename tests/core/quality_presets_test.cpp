@@ -186,8 +186,8 @@ TEST(QualityPresets, MalformedMeasurementsNameTheFileAndTheProblem) {
     expectError(R"({"knobs": [{"name": "lod_distance", "settings": [{"value": 1, "error": 0,
                 "role": "reference"}]}]})",
                 "cost_ms");
-    const auto skipped = parseTradeoffJson(R"({"knobs": [{"name": "snow_map", "skipped": "no snow"}]})",
-                                           "t.json");
+    const auto skipped = parseTradeoffJson(
+        R"({"knobs": [{"name": "snow_map", "skipped": "no snow"}]})", "t.json");
     ASSERT_TRUE(skipped);
     EXPECT_TRUE(skipped->empty());
 }

@@ -3,6 +3,7 @@
 // one, and the JSON and plot files are written.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -101,6 +102,61 @@ TEST_F(TradeoffTest, ErrorFallsWithStepAndSegmentsAndReferencesConverge) {
                 << name;
         }
     }
+}
+
+// The tessellation path sweeps the tessellation level (SPEC §7): the error falls with it too.
+TEST_F(TradeoffTest, ErrorFallsWithTheTessellationLevel) {
+    core::LoadedProject loaded = windyField();
+    loaded.project.render.geometry = core::GeometryPath::Tessellation;
+    render::TradeoffOptions options = smallSweep();
+    options.knobs = {"geometry_detail"};
+    auto report = render::runTradeoffSweep(loaded, options);
+    ASSERT_TRUE(report.ok()) << report.error().str();
+    EXPECT_EQ(report->geometry, "tess");
+    const render::KnobResult& detail = knobNamed(*report, "geometry_detail");
+    EXPECT_NE(detail.description.find("tessellation"), std::string::npos);
+    expectFallingError(detail);
+}
+
+// Snow on a 16 m field with a ball sheltering part of it, the camera close to the shelter edge
+// (a 512² map's texel, 3 cm, spans several pixels there): at every sample count the error falls
+// as the map grows (512² → 1024² → 2048²), and with the samples: step by step at 2048², where
+// the sampling noise dominates, and from 1 to 16 at every size (at 512² the map's own blur
+// dominates from 8 samples on: 0.229 against 0.228 measured). On a field whose texels are far
+// below a pixel the resolution does not show and only the sample noise is left.
+TEST_F(TradeoffTest, SnowErrorFallsWithMapResolutionAndSamples) {
+    core::LoadedProject loaded = planeFieldProject({16.0f, 4, 0.5f, 0.3f, 0.5f}, sourceDir());
+    loaded.project.cameras.front().position = {2.2f, 1.6f, 2.2f};
+    loaded.project.cameras.front().target = {0.6f, 0.0f, 0.6f};
+    loaded.project.snow.enabled = 1u;
+    loaded.project.snow.amountM = 0.05f;
+    core::ColliderDesc ball;
+    ball.position = {0.0f, 0.8f, 0.0f};
+    ball.radiusM = 0.7f;
+    loaded.project.colliders.push_back(ball);
+    render::TradeoffOptions options = smallSweep();
+    options.knobs = {"snow_map"};
+    auto report = render::runTradeoffSweep(loaded, options);
+    ASSERT_TRUE(report.ok()) << report.error().str();
+    const render::KnobResult& snow = knobNamed(*report, "snow_map");
+    const auto error = [&](int resolution, int samples) {
+        for (const render::SettingResult& s : snow.settings)
+            if (!s.check && !s.reference && s.value == resolution * 100 + samples)
+                return s.error;
+        ADD_FAILURE() << "no setting " << resolution << " x " << samples;
+        return 0.0;
+    };
+    const std::string table = render::tradeoffTable(*report);
+    std::printf("%s", table.c_str());
+    for (const int samples : {1, 4, 8, 16}) {
+        EXPECT_GT(error(512, samples), error(1024, samples)) << samples << " samples\n" << table;
+        EXPECT_GT(error(1024, samples), error(2048, samples)) << samples << " samples\n" << table;
+    }
+    for (const auto& [fewer, more] : {std::pair{1, 4}, {4, 8}, {8, 16}})
+        EXPECT_GT(error(2048, fewer), error(2048, more))
+            << fewer << " vs " << more << "\n" << table;
+    for (const int resolution : {512, 1024, 2048})
+        EXPECT_GT(error(resolution, 1), error(resolution, 16)) << resolution << "²\n" << table;
 }
 
 TEST_F(TradeoffTest, UnknownKnobIsAnErrorAndAbsentFeaturesAreSkipped) {
