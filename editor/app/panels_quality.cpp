@@ -16,26 +16,28 @@ constexpr std::array<const char*, 5> PRESET_ITEMS{"custom", "draft", "balanced",
                                                   "reference"};
 
 std::string knobTitle(const std::string& name) {
+    // Short: a row must fit the side panel.
     if (name == "physics_step")
-        return "physics substep";
+        return "substep";
     if (name == "geometry_detail")
-        return "blade segments";
+        return "segments";
     if (name == "lod_distance")
-        return "LOD distance";
+        return "LOD";
     if (name == "cull_distance")
         return "thinning";
     if (name == "snow_map")
-        return "snow map";
+        return "snow";
     if (name == "billboard_fade")
-        return "billboard fade";
+        return "fade";
     return name;
 }
 
 std::string estimateText(const core::KnobEstimate& e) {
     char text[160];
-    std::snprintf(text, sizeof text, "%s %s%s: %.0f ms, %.3g %s", knobTitle(e.knob->name).c_str(),
+    const bool tips = e.knob->name == "physics_step";
+    std::snprintf(text, sizeof text, "%s %s%s: %.0f ms, %s %.2g", knobTitle(e.knob->name).c_str(),
                   e.exact ? "" : "~", e.setting->label.c_str(), e.setting->costMs,
-                  e.setting->error, std::string(core::knobErrorUnit(e.knob->name)).c_str());
+                  tips ? "tip h" : "ΔE", e.setting->error);
     return text;
 }
 
@@ -67,15 +69,26 @@ void qualityRows(ui::Ui& ui, EditorState& s) {
         if (project.physics != physicsBefore)
             s.rebuildPending = true;
     }
-    const std::vector<core::KnobEstimate> estimates = core::estimateQuality(project);
+    // Only the knobs this scene uses: a blades-only field pays nothing for billboards.
+    std::vector<core::KnobEstimate> estimates;
+    for (const core::KnobEstimate& e : core::estimateQuality(project)) {
+        if (e.knob->name == "billboard_fade" &&
+            project.render.technique != core::GrassTechnique::Hybrid)
+            continue;
+        if (e.knob->name == "snow_map" && project.snow.enabled == 0u)
+            continue;
+        estimates.push_back(e);
+    }
     if (estimates.empty())
         return;
-    ui.label("measured cost and error at these settings:");
+    // The device string's renderer part: "llvmpipe (LLVM 15.0.6, 256 bits)".
+    const std::string& device = estimates.front().knob->device;
+    ui.label("measured cost, error here:");
     ui.indent([&](ui::Ui& body) {
         for (const core::KnobEstimate& e : estimates)
             body.label(estimateText(e));
-        body.label("(" + estimates.front().knob->project + ", " + estimates.front().knob->device +
-                   "; ~ nearest measured; docs/presets.md)");
+        body.label("~ nearest measured value");
+        body.label("on " + device.substr(0, device.find(" |")));
     });
 }
 
