@@ -8,7 +8,7 @@ namespace grass::core::json {
 
 namespace {
 
-constexpr std::array<std::string_view, 17> LIGHTING_KEYS{"model",
+constexpr std::array<std::string_view, 18> LIGHTING_KEYS{"model",
                                                          "diffuse_low",
                                                          "diffuse_mid",
                                                          "diffuse_high",
@@ -24,6 +24,7 @@ constexpr std::array<std::string_view, 17> LIGHTING_KEYS{"model",
                                                          "ao_strength",
                                                          "ao_floor",
                                                          "normal_blur_radius",
+                                                         "ao_cell",
                                                          "water"};
 constexpr std::array<std::string_view, 2> MODEL_NAMES{"grass", "simple"};
 constexpr std::string_view RGB = "[r, g, b]";
@@ -60,6 +61,10 @@ void readLighting(Reader& reader, const Json& node, GrassLightingDesc& lighting)
     object.readFloat("ao_strength", WEIGHT_RULE, lighting.aoStrength);
     object.readFloat("ao_floor", UNIT_INTERVAL, lighting.aoFloor);
     object.readFloat("normal_blur_radius", RADIUS_RULE, lighting.normalBlurRadiusM);
+    object.readFloat("ao_cell", NumberRule{0.0, 4.0}, lighting.aoCellSigmas);
+    // Between 0 (exact) and the bake's smallest cells the value would be slow and mean nothing.
+    if (lighting.aoCellSigmas > 0.0f && lighting.aoCellSigmas < 0.05f)
+        reader.fail("/lighting/ao_cell", "must be 0 (exact sums) or in [0.05, 4] kernel sigmas");
     object.readRange("water", UNIT_INTERVAL, lighting.water.x, lighting.water.y);
 }
 
@@ -81,6 +86,7 @@ Json lightingJson(const GrassLightingDesc& lighting) {
     out["ao_strength"] = jsonFloat(lighting.aoStrength);
     out["ao_floor"] = jsonFloat(lighting.aoFloor);
     out["normal_blur_radius"] = jsonFloat(lighting.normalBlurRadiusM);
+    out["ao_cell"] = jsonFloat(lighting.aoCellSigmas);
     out["water"] = jsonRange(lighting.water.x, lighting.water.y);
     return out;
 }

@@ -116,6 +116,8 @@ struct GrassLightingDesc {
     float aoStrength = 0.007f;              // m² one neighbour occludes (Beer–Lambert)
     float aoFloor = 0.35f;                  // darkest AO
     float normalBlurRadiusM = 0.75f;        // Gaussian σ of the terrain-normal blur
+    // The bake's clustering cells in kernel σ (BladeShadingParams::cellSigmas); 0: exact sums.
+    float aoCellSigmas = 0.5f;
     glm::vec2 water{0.15f, 0.6f};           // water of the oldest .. youngest blade
     bool operator==(const GrassLightingDesc&) const = default;
 };

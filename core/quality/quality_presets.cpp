@@ -210,6 +210,8 @@ QualitySettings qualitySettingsFor(const std::vector<MeasuredKnob>& knobs, Quali
     }
     if (const auto v = chosen("billboard_fade"))
         out.billboardFadeStartM = static_cast<float>(*v);
+    if (const auto v = chosen("ao_kernel"))
+        out.aoCellSigmas = static_cast<float>(*v);
     return out;
 }
 
@@ -240,6 +242,8 @@ void applyQuality(const QualitySettings& settings, Project& project) {
     if (settings.billboardFadeStartM)
         project.billboards.crossFadeM = {*settings.billboardFadeStartM,
                                          FADE_END_PER_START * *settings.billboardFadeStartM};
+    if (settings.aoCellSigmas)
+        project.lighting.aoCellSigmas = *settings.aoCellSigmas;
 }
 
 std::optional<double> projectKnobValue(const Project& project, const std::string& knobName) {
@@ -261,6 +265,8 @@ std::optional<double> projectKnobValue(const Project& project, const std::string
         return double(project.snow.mapResolution) * 100.0 + project.snow.samples;
     if (knobName == "billboard_fade")
         return project.billboards.crossFadeM.x;
+    if (knobName == "ao_kernel")
+        return project.lighting.aoCellSigmas;
     return std::nullopt;
 }
 

@@ -72,13 +72,14 @@ struct QualitySettings {
     std::optional<int> snowMapResolution;
     std::optional<int> snowSamples;
     std::optional<float> billboardFadeStartM;  // end = 1.6 × start, as measured
+    std::optional<float> aoCellSigmas;         // the shading bake's cells; 0: exact
 };
 
 QualitySettings qualitySettingsFor(const std::vector<MeasuredKnob>& knobs, QualityPreset preset);
 QualitySettings qualitySettings(QualityPreset preset);  // from builtInMeasurements()
 
 // Writes the settings into the project: physics substeps, strip segments and tessellation
-// level, LOD and thinning distances, snow map and samples, billboard cross-fade. A substep
+// level, LOD and thinning distances, snow map and samples, billboard cross-fade, AO bake cells. A substep
 // longer than the project's step makes one substep per step; the substep cap grows to fit.
 void applyQuality(const QualitySettings& settings, Project& project);
 

@@ -28,11 +28,13 @@ constexpr double KERNEL_MASS = 1.0 - 0.011108996538242306 * 5.5;
 // cells are σ/2 wide), which keeps the nearest, heaviest terms exact where it matters, in sparse
 // grass; beyond it the AO sits near its floor and the cell's clusters are good enough.
 constexpr std::uint32_t EXACT_CELL_MAX = 64;
-// Other cells are summed per cluster at its centroid. Cells of σ/2 keep that error small: for
-// blades spread uniformly over a cell of side a the kernel errs by (a/σ)²/24·(r²/σ² - 2)
-// relative, -2% at the centre to +7% at the 3σ rim, and over a uniform field the errors
-// integrate to zero. Smaller cells cost more entries per blade (their number grows as 1/a²).
-constexpr float CELL_PER_SIGMA = 0.5f;
+// Other cells are summed per cluster at its centroid. Cells of σ/2 (the default of
+// BladeShadingParams::cellSigmas) keep that error small: for blades spread uniformly over a cell
+// of side a the kernel errs by (a/σ)²/24·(r²/σ² - 2) relative, -2% at the centre to +7% at the
+// 3σ rim, and over a uniform field the errors integrate to zero. Smaller cells cost more
+// entries per blade (their number grows as 1/a²).
+constexpr float MIN_CELL_SIGMAS = 0.05f;
+constexpr float MAX_CELL_SIGMAS = 4.0f;
 constexpr float CLUSTER_CONE_COS = 0.9659258f;  // cos 15°, see Cluster
 // Cell coordinates are packed 21 bits per axis into a 64-bit key.
 constexpr std::uint32_t MAX_CELL_COORD = (1u << 21) - 1;
@@ -81,6 +83,10 @@ Result<void> validate(const BladeShadingParams& p) {
         if (!r)
             return r.error();
     }
+    if (!(p.cellSigmas == 0.0f ||
+          (p.cellSigmas >= MIN_CELL_SIGMAS && p.cellSigmas <= MAX_CELL_SIGMAS)))
+        return makeError("cellSigmas", "must be 0 (exact) or in [0.05, 4] kernel sigmas, got " +
+                                           number(p.cellSigmas));
     if (!(p.aoStrength >= 0.0f) || !std::isfinite(p.aoStrength))
         return makeError("aoStrength", "must be a finite number >= 0 (m² per blade), got " +
                                            number(p.aoStrength));
@@ -141,8 +147,9 @@ struct ClusterGrid {
     std::vector<std::uint32_t> coarseClusters;  // ...in this list of cluster indices
 };
 
+// cellSigmas 0: the smallest cells the key can hold, so that every blade is its own cluster.
 ClusterGrid buildGrid(const std::vector<Blade>& blades, const std::vector<std::uint32_t>& live,
-                      float sigma) {
+                      float sigma, float cellSigmas) {
     ClusterGrid g;
     g.sigma = sigma;
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
@@ -156,7 +163,7 @@ ClusterGrid buildGrid(const std::vector<Blade>& blades, const std::vector<std::u
     // A field so large that σ/2 cells overflow the key gets coarser cells: less accurate, still
     // correct (every blade within 3σ is still found).
     const float keyLimit = maxExtent / static_cast<float>(MAX_CELL_COORD - 1);
-    const float cellSize = std::max(CELL_PER_SIGMA * sigma, keyLimit);
+    const float cellSize = std::max(cellSigmas * sigma, keyLimit);
     g.coarseSize = std::max(CUTOFF_SIGMAS * sigma, keyLimit);
 
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(live.size());
@@ -449,7 +456,7 @@ void bakeInto(const std::vector<Blade>& blades, const std::vector<std::uint32_t>
     // over the layer's random range, and a pure density keeps aoStrength calibrated in blades
     // per m² (SPEC §10 "from the density of surrounding grass").
     if (params.aoRadiusM > 0.0f) {
-        const ClusterGrid grid = buildGrid(blades, live, params.aoRadiusM);
+        const ClusterGrid grid = buildGrid(blades, live, params.aoRadiusM, params.cellSigmas);
         const double norm = 2.0 * std::numbers::pi * double(params.aoRadiusM) *
                             double(params.aoRadiusM) * KERNEL_MASS;
         const float perWeight = static_cast<float>(1.0 / norm);
@@ -464,7 +471,8 @@ void bakeInto(const std::vector<Blade>& blades, const std::vector<std::uint32_t>
         });
     }
     if (params.normalBlurRadiusM > 0.0f) {
-        const ClusterGrid grid = buildGrid(blades, live, params.normalBlurRadiusM);
+        const ClusterGrid grid =
+            buildGrid(blades, live, params.normalBlurRadiusM, params.cellSigmas);
         forEachBladeSums(grid, threads, [&](std::uint32_t i, glm::vec3 up, const KernelSums& s) {
             if (!targeted(i))
                 return;

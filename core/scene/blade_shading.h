@@ -52,6 +52,10 @@ struct BladeShadingParams {
     float aoFloor = 0.35f;
     // Gaussian sigma (metres) of the terrain-normal blur; 0 keeps each blade's own up.
     float normalBlurRadiusM = 0.75f;
+    // Side of the clustering cells in σ of each kernel (the bake's speed/accuracy knob, issue 10):
+    // neighbours in other cells are summed per cluster at its centroid. 0 sums every neighbour
+    // on its own (exact, and slow in dense fields); otherwise in [0.05, 4].
+    float cellSigmas = 0.5f;
     // Water of the oldest (age 1) and the youngest (age 0) blade, each in [0, 1].
     glm::vec2 waterRange{0.15f, 0.6f};
 
@@ -76,7 +80,8 @@ struct BladeShadingParams {
 // waterRange.x, age).
 // Deterministic for a given seed and identical for any threadCount (0: hardware concurrency).
 // Errors: a parameter that is NaN, infinite or out of range (the path names the field): radii
-// must be 0 (off) or in [1e-4, 1e5] m, aoFloor and waterRange in [0, 1], aoStrength >= 0.
+// must be 0 (off) or in [1e-4, 1e5] m, aoFloor and waterRange in [0, 1], aoStrength >= 0,
+// cellSigmas 0 (exact) or in [0.05, 4].
 Result<std::vector<BladeShading>> bakeBladeShading(const std::vector<Blade>& blades,
                                                    const BladeShadingParams& params,
                                                    std::uint64_t seed, unsigned threadCount = 0);

@@ -175,6 +175,7 @@ BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting) {
     params.aoStrength = lighting.aoStrength;
     params.aoFloor = lighting.aoFloor;
     params.normalBlurRadiusM = lighting.normalBlurRadiusM;
+    params.cellSigmas = lighting.aoCellSigmas;
     params.waterRange = lighting.water;
     return params;
 }

@@ -29,6 +29,8 @@ std::string knobTitle(const std::string& name) {
         return "snow";
     if (name == "billboard_fade")
         return "fade";
+    if (name == "ao_kernel")
+        return "AO cells";
     return name;
 }
 

@@ -9,7 +9,8 @@ void addPresetOption(ArgParser& parser, std::string* preset) {
     parser.choice("--preset", {"project", "draft", "balanced", "high", "reference"},
                   "quality preset chosen from the measured speed/accuracy fronts "
                   "(docs/presets.md): sets the physics substep, blade segments, LOD and thinning "
-                  "distances, snow map and billboard cross-fade; project: the project's own",
+                  "distances, snow map, billboard cross-fade and AO bake cells; project: the "
+                  "project's own",
                   preset);
 }
 

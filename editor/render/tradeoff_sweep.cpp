@@ -319,6 +319,82 @@ Result<KnobResult> measurePhysicsKnob(const core::Scene& grown, const core::Scen
     return knob;
 }
 
+// The AO bake (SPEC §10): neighbours summed per cluster in cells of `cellSigmas` σ, against
+// the exact sums. Cost is the bake's CPU wall time (it runs when the scene is built or painted);
+// the error is the grass's ΔE76 in the frame drawn with that bake.
+Result<KnobResult> measureAoKnob(ImageBench& bench, const core::Scene& scene,
+                                 const core::GrassLightingDesc& lighting, const std::string& prefix) {
+    KnobResult knob;
+    knob.name = "ao_kernel";
+    knob.description = "AO and normal-blur bake: cluster cell side in kernel σ (exact: every "
+                       "neighbour on its own)";
+    knob.errorMetric = "mean CIELAB ΔE76 over the pixels the grass touches in either image";
+    knob.costMetric = "bake wall ms over all layers (CPU, every core; median of the bakes)";
+    const gl::Rgba8Image background =
+        bench.draw(bench.noGrass, bench.base, prefix + " background").image;
+    const auto bakeAndDraw = [&](float cellSigmas,
+                                 const std::string& label) -> Result<std::pair<Frame, Spread>> {
+        core::Scene baked = scene;
+        core::BladeShadingParams params = core::bladeShadingParams(lighting);
+        params.cellSigmas = cellSigmas;
+        std::vector<double> bakeMs;
+        const int bakes = std::clamp(bench.options.frames, 1, 3);
+        for (int b = 0; b < bakes; ++b) {
+            double ms = 0.0;
+            for (core::LayerField& layer : baked.layers) {
+                const auto start = Clock::now();
+                auto shading = core::bakeBladeShading(layer.patched.blades, params, layer.seed);
+                if (!shading)
+                    return shading.error();
+                ms += msSince(start);
+                // Only the AO and the blurred normal change; water, age and wilt stay.
+                for (std::size_t i = 0; i < shading->size() && i < layer.shading.size(); ++i)
+                    (*shading)[i].waterAge = layer.shading[i].waterAge;
+                layer.shading = std::move(*shading);
+            }
+            bakeMs.push_back(ms);
+        }
+        auto renderer = SceneRenderer::create(baked);
+        if (!renderer)
+            return renderer.error();
+        Frame frame = bench.draw(**renderer, bench.base, prefix + " " + label);
+        return std::pair{std::move(frame), spreadOf(bakeMs)};
+    };
+    auto reference = bakeAndDraw(0.0f, "reference exact");
+    if (!reference)
+        return reference.error();
+    const auto result = [&](const std::pair<Frame, Spread>& run, const std::string& label,
+                            double value) {
+        SettingResult s = run.first.timing;
+        s.label = label;
+        s.value = value;
+        s.costMs = run.second;
+        std::vector<std::uint8_t> mask(
+            bench.framebuffer.width() * std::size_t(bench.framebuffer.height()), 0);
+        markTouched(run.first.image, background, mask);
+        markTouched(reference->first.image, background, mask);
+        const core::MaskedDeltaE e =
+            core::maskedDeltaE76(run.first.image.pixels, reference->first.image.pixels, mask);
+        s.error = e.meanDeltaE;
+        s.errorMax = e.maxDeltaE;
+        s.pixels = e.pixels;
+        return s;
+    };
+    for (const float cell : {2.0f, 1.0f, 0.5f, 0.25f}) {
+        char label[32];
+        std::snprintf(label, sizeof label, "%g σ", static_cast<double>(cell));
+        auto run = bakeAndDraw(cell, label);
+        if (!run)
+            return run.error();
+        knob.settings.push_back(result(*run, label, cell));
+    }
+    SettingResult ref = result(*reference, "exact", 0.0);
+    ref.reference = true;
+    knob.settings.push_back(ref);
+    finishKnob(knob);
+    return knob;
+}
+
 KnobResult skippedKnob(const std::string& name, const std::string& why) {
     KnobResult knob;
     knob.name = name;
@@ -329,8 +405,8 @@ KnobResult skippedKnob(const std::string& name, const std::string& why) {
 }  // namespace
 
 std::vector<std::string> tradeoffKnobNames() {
-    return {"physics_step",  "geometry_detail", "lod_distance",
-            "cull_distance", "snow_map",        "billboard_fade"};
+    return {"physics_step", "geometry_detail", "lod_distance", "cull_distance",
+            "snow_map",     "billboard_fade",  "ao_kernel"};
 }
 
 Result<TradeoffReport> runTradeoffSweep(const core::LoadedProject& loaded,
@@ -402,6 +478,18 @@ Result<TradeoffReport> runTradeoffSweep(const core::LoadedProject& loaded,
             options.progress(prefix);
         if (name == "physics_step") {
             auto knob = measurePhysicsKnob(*grown, *physics, options, prefix);
+            if (!knob)
+                return knob.error();
+            report.knobs.push_back(std::move(*knob));
+            continue;
+        }
+        if (name == "ao_kernel") {
+            if (project.lighting.model != core::LightingModel::Grass ||
+                project.lighting.aoRadiusM <= 0.0f) {
+                report.knobs.push_back(skippedKnob(name, "the project's lighting has no AO"));
+                continue;
+            }
+            auto knob = measureAoKnob(bench, scene, project.lighting, prefix);
             if (!knob)
                 return knob.error();
             report.knobs.push_back(std::move(*knob));

@@ -319,6 +319,34 @@ TEST(BladeShading, CellSumsMatchTheExactSums) {
     }
 }
 
+// The bake's speed/accuracy knob (issue 10): cells of 0 σ are the exact sums, and the error
+// shrinks as the cells do.
+TEST(BladeShading, CellSizeIsTheAccuracyKnobAndZeroIsExact) {
+    Rng rng(4, 9);
+    std::vector<Blade> blades;
+    for (int clump = 0; clump < 6; ++clump) {
+        const glm::vec2 c(rng.uniform(-1.5f, 1.5f), rng.uniform(-1.5f, 1.5f));
+        addUniformSquare(blades, c, rng.uniform(0.2f, 1.0f), 200 + rng.below(400), rng);
+    }
+    BladeShadingParams p;
+    const std::vector<BladeShading> exact = bruteForce(blades, p);
+    float previous = INFINITY;
+    for (const float cell : {2.0f, 0.5f, 0.0f}) {
+        p.cellSigmas = cell;
+        const std::vector<BladeShading> baked = bake(blades, p, 4);
+        float aoError = 0.0f;
+        for (std::size_t i = 0; i < blades.size(); ++i)
+            aoError = std::max(aoError, std::abs(baked[i].ao() - exact[i].ao()));
+        std::printf("[ cells %.1f σ ] max AO error %.5f\n", static_cast<double>(cell),
+                    static_cast<double>(aoError));
+        if (cell == 0.0f)
+            EXPECT_LT(aoError, 1e-4f);  // float summation order only
+        else
+            EXPECT_LT(aoError, previous) << cell;
+        previous = aoError;
+    }
+}
+
 TEST(BladeShading, WaterIsWithinRangeAndFollowsAge) {
     const std::vector<Blade> blades = uniformSquare(4.0f, 200.0f, 3);
     BladeShadingParams p;
@@ -427,6 +455,11 @@ TEST(BladeShading, RejectsBadParameters) {
     p = {};
     p.aoStrength = nan;
     failsOn(p, "aoStrength");
+    p = {};
+    p.cellSigmas = 0.01f;  // between exact and the smallest cells
+    failsOn(p, "cellSigmas");
+    p.cellSigmas = nan;
+    failsOn(p, "cellSigmas");
     p = {};
     p.aoStrength = -1.0f;
     failsOn(p, "aoStrength");

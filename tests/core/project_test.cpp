@@ -198,6 +198,8 @@ TEST(Project, OutOfRangeSettingsAreRejected) {
     expectError(document(R"("render": {"tess_level": 65})"), "/render/tess_level", "1..64");
     expectError(document(R"("render": {"strip_segments": 0})"), "/render/strip_segments", "1..32");
     expectError(document(R"("render": {"msaa": 3})"), "/render/msaa", "0, 1, 2, 4 or 8");
+    expectError(document(R"("lighting": {"ao_cell": 0.01})"), "/lighting/ao_cell", "0 (exact");
+    expectError(document(R"("lighting": {"ao_cell": 5})"), "/lighting/ao_cell", "[0, 4]");
     expectError(document(R"("render": {"lod_distance": -1})"), "/render/lod_distance",
                 "[0, 100000]");
     expectError(document(R"("render": {"thinning_distance": 1e9})"), "/render/thinning_distance",

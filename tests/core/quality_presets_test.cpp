@@ -72,7 +72,7 @@ TEST(QualityPresets, EveryBuiltInDocumentParses) {
         EXPECT_FALSE(parsed->empty()) << document.name;
     }
     for (const char* name : {"physics_step", "geometry_detail", "lod_distance", "cull_distance",
-                             "snow_map", "billboard_fade"})
+                             "snow_map", "billboard_fade", "ao_kernel"})
         EXPECT_NE(knobNamed(name), nullptr) << name;
 }
 
@@ -123,6 +123,7 @@ TEST(QualityPresets, ApplySetsEveryKnobAndFitsTheSubsteps) {
     settings.snowMapResolution = 2048;
     settings.snowSamples = 16;
     settings.billboardFadeStartM = 20.0f;
+    settings.aoCellSigmas = 0.0f;
     Project project;
     project.physics.dtS = 1.0f / 60.0f;
     applyQuality(settings, project);
@@ -135,6 +136,7 @@ TEST(QualityPresets, ApplySetsEveryKnobAndFitsTheSubsteps) {
     EXPECT_EQ(project.snow.mapResolution, 2048u);
     EXPECT_EQ(project.snow.samples, 16);
     EXPECT_FLOAT_EQ(project.billboards.crossFadeM.y, 32.0f);
+    EXPECT_EQ(project.lighting.aoCellSigmas, 0.0f);
     // A substep longer than the step: one substep per step.
     settings.physicsStepS = 1.0f / 30.0f;
     applyQuality(settings, project);

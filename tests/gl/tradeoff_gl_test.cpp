@@ -159,6 +159,18 @@ TEST_F(TradeoffTest, SnowErrorFallsWithMapResolutionAndSamples) {
         EXPECT_GT(error(resolution, 1), error(resolution, 16)) << resolution << "²\n" << table;
 }
 
+// The AO bake's cells (SPEC §10): the error against the exact sums falls as the cells shrink.
+TEST_F(TradeoffTest, AoErrorFallsWithTheBakeCells) {
+    core::LoadedProject loaded = windyField();
+    render::TradeoffOptions options = smallSweep();
+    options.knobs = {"ao_kernel"};
+    auto report = render::runTradeoffSweep(loaded, options);
+    ASSERT_TRUE(report.ok()) << report.error().str();
+    const render::KnobResult& ao = knobNamed(*report, "ao_kernel");
+    std::printf("%s", render::tradeoffTable(*report).c_str());
+    expectFallingError(ao);
+}
+
 TEST_F(TradeoffTest, UnknownKnobIsAnErrorAndAbsentFeaturesAreSkipped) {
     render::TradeoffOptions options = smallSweep();
     options.knobs = {"warp_drive"};
