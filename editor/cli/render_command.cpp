@@ -252,7 +252,8 @@ int runRender(const std::vector<std::string>& argv) {
                   &args.backend);
     parser.text("--cull", "LIST",
                 "per-blade culling tests, comma-separated: orientation,frustum,distance,occlusion; "
-                "all or none (none draws every blade)",
+                "all or none (none draws every blade); distance thins only where the project "
+                "has a render.thinning_distance (0 turns it off)",
                 &args.cull);
     parser.text("--stats", "FILE.json",
                 "write the last frame's blade counts per cull test and pass timings as JSON",

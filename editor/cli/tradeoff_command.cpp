@@ -36,10 +36,54 @@ std::string joined(const std::vector<std::string>& names) {
     return out;
 }
 
+// tradeoff.json, tradeoff.md and the plots into `folder`; prints the table and what it wrote.
+int writeOutputs(const render::TradeoffReport& report, const std::filesystem::path& folder,
+                 bool writeJson) {
+    const std::string table = render::tradeoffTable(report);
+    std::fputs(table.c_str(), stdout);
+    if (writeJson)
+        if (auto written = writeFileAtomic(folder / "tradeoff.json",
+                                           render::tradeoffJson(report).dump(2) + "\n");
+            !written) {
+            printError("tradeoff", written.error().str());
+            return EXIT_FAILED;
+        }
+    if (auto written = writeFileAtomic(folder / "tradeoff.md", table); !written) {
+        printError("tradeoff", written.error().str());
+        return EXIT_FAILED;
+    }
+    auto plots = render::writeTradeoffPlots(report, folder);
+    if (!plots) {
+        printError("tradeoff", plots.error().str());
+        return EXIT_FAILED;
+    }
+    if (!plots->warning.empty())
+        std::fprintf(stderr, "grass tradeoff: warning: %s\n", plots->warning.c_str());
+    std::printf("wrote %s/%stradeoff.md and %zu plot files\n", folder.string().c_str(),
+                writeJson ? "tradeoff.json, " : "", plots->written.size());
+    return 0;
+}
+
+// --replot DIR: tables and plots again from DIR/tradeoff.json, nothing measured.
+int replot(const std::string& folder) {
+    const std::filesystem::path file = std::filesystem::path(folder) / "tradeoff.json";
+    auto text = readFile(file);
+    if (!text) {
+        printError("tradeoff", "--replot: " + text.error().str());
+        return EXIT_FAILED;
+    }
+    auto report = render::tradeoffFromJson(*text, file.string());
+    if (!report) {
+        printError("tradeoff", report.error().str());
+        return EXIT_FAILED;
+    }
+    return writeOutputs(*report, folder, false);
+}
+
 }  // namespace
 
 int runTradeoff(const std::vector<std::string>& argv) {
-    std::string project, knobs, out = "tradeoff", camera, technique = "project";
+    std::string project, knobs, out = "tradeoff", camera, technique = "project", replotDir;
     int width = 1280, height = 720, frames = 5, msaa = 4;
     double sceneTimeS = 1.0, physicsSeconds = 2.0;
     bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
@@ -53,9 +97,13 @@ int runTradeoff(const std::vector<std::string>& argv) {
             "mean CIELAB ΔE76 over the pixels the feature touches (images) or the tips' "
             "trajectory error in blade heights (physics step). Knobs the project does not use "
             "(snow off, no billboards) are skipped with a note. Writes DIR/tradeoff.json, "
-            "DIR/tradeoff.md and per knob DIR/<knob>.png (gnuplot; .gp and .dat next to it).");
+            "DIR/tradeoff.md and per knob DIR/<knob>.png (gnuplot; .gp and .dat next to it), "
+            "each marking the settings the quality presets' rule would choose from this run.");
     parser.positional("project", "a project folder (with project.json) or a project .json file",
-                      &project, true);
+                      &project, false);
+    parser.text("--replot", "DIR",
+                "no measuring: write DIR/tradeoff.md and the plots again from DIR/tradeoff.json",
+                &replotDir);
     parser.text("--knobs", "K1,K2", "the knobs to sweep (default: all of " + allKnobs + ")",
                 &knobs);
     parser.text("--out", "DIR", "output folder (default: tradeoff)", &out);
@@ -80,6 +128,12 @@ int runTradeoff(const std::vector<std::string>& argv) {
     if (parser.helpRequested()) {
         std::fputs(parser.help().c_str(), stdout);
         return 0;
+    }
+    if (!replotDir.empty())
+        return replot(replotDir);
+    if (project.empty()) {
+        printError("tradeoff", "missing the project to measure (or --replot DIR)");
+        return EXIT_USAGE;
     }
     render::TradeoffOptions options;
     options.knobs = splitKnobs(knobs);
@@ -134,26 +188,7 @@ int runTradeoff(const std::vector<std::string>& argv) {
         printError("tradeoff", report.error().str());
         return EXIT_FAILED;
     }
-    const std::filesystem::path folder = out;
-    const std::string table = render::tradeoffTable(*report);
-    std::fputs(table.c_str(), stdout);
-    for (const auto& [file, text] :
-         {std::pair{folder / "tradeoff.json", render::tradeoffJson(*report).dump(2) + "\n"},
-          {folder / "tradeoff.md", table}})
-        if (auto written = writeFileAtomic(file, text); !written) {
-            printError("tradeoff", written.error().str());
-            return EXIT_FAILED;
-        }
-    auto plots = render::writeTradeoffPlots(*report, folder);
-    if (!plots) {
-        printError("tradeoff", plots.error().str());
-        return EXIT_FAILED;
-    }
-    if (!plots->warning.empty())
-        std::fprintf(stderr, "grass tradeoff: warning: %s\n", plots->warning.c_str());
-    std::printf("wrote %s/tradeoff.json, tradeoff.md and %zu plot files\n", out.c_str(),
-                plots->written.size());
-    return 0;
+    return writeOutputs(*report, out, true);
 }
 
 }  // namespace grass::cli

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 
+#include "tradeoff_report.h"
 #include "util/atomic_file.h"
 
 namespace grass::render {
@@ -9,19 +10,23 @@ namespace grass::render {
 namespace {
 
 // Columns: cost median, min, max, error, on the front (0/1), role (0 setting, 1 reference,
-// 2 check), label. Sorted as swept; the front is re-sorted by cost in the script.
+// 2 check), label, the presets this run would choose there ("" for none). Sorted as swept; the
+// front is re-sorted by cost in the script.
 std::string dataFile(const KnobResult& knob) {
     std::string out = "# " + knob.name + ": " + knob.description + "\n# cost: " + knob.costMetric +
                       "\n# error: " + knob.errorMetric +
-                      "\n# cost_median cost_min cost_max error front role label\n";
+                      "\n# cost_median cost_min cost_max error front role label presets\n";
     char line[256];
-    for (const SettingResult& s : knob.settings) {
-        std::snprintf(line, sizeof line, "%.6g %.6g %.6g %.6g %d %d \"%s\"\n", s.costMs.median,
+    const std::vector<std::string> presets = presetLabels(knob);
+    for (std::size_t i = 0; i < knob.settings.size(); ++i) {
+        const SettingResult& s = knob.settings[i];
+        std::snprintf(line, sizeof line, "%.6g %.6g %.6g %.6g %d %d \"%s\" \"%s\"\n",
+                      s.costMs.median,
                       s.costMs.min, s.costMs.max, s.error, s.pareto ? 1 : 0,
                       s.reference ? 1
                       : s.check   ? 2
                                   : 0,
-                      s.label.c_str());
+                      s.label.c_str(), presets[i].c_str());
         out += line;
     }
     return out;
@@ -67,7 +72,10 @@ std::string script(const TradeoffReport& report, const KnobResult& knob) {
         out += "     '" + dat +
                "' using ($6==2 ? $1 : 1/0):4 with points lc rgb '#2ca02c' pt 9 ps 1.6 "
                "title 'reference check (finer)', \\\n";
-    out += "     '" + dat + "' using 1:4:7 with labels offset 0,1.1 font ',10' notitle\n";
+    out += "     '" + dat + "' using 1:4:7 with labels offset 0,1.1 font ',10' notitle, \\\n";
+    // The presets the rule picks from this run, under their settings.
+    out += "     '" + dat +
+           "' using 1:4:8 with labels left offset 0.9,-0.9 font ',9' tc rgb '#9467bd' notitle\n";
     return out;
 }
 

@@ -2,11 +2,13 @@
 
 #include <cstdio>
 
+#include "quality/quality_presets.h"
+
 namespace grass::render {
 
 namespace {
 
-nlohmann::ordered_json settingJson(const SettingResult& s) {
+nlohmann::ordered_json settingJson(const SettingResult& s, const std::string& presets) {
     nlohmann::ordered_json out;
     out["label"] = s.label;
     out["value"] = s.value;
@@ -20,10 +22,27 @@ nlohmann::ordered_json settingJson(const SettingResult& s) {
     out["error_max"] = s.errorMax;
     out["pixels"] = s.pixels;
     out["pareto"] = s.pareto;
+    out["presets"] = presets;
     return out;
 }
 
 }  // namespace
+
+std::vector<std::string> presetLabels(const KnobResult& knob) {
+    core::MeasuredKnob measured;
+    measured.name = knob.name;
+    for (const SettingResult& s : knob.settings)
+        measured.settings.push_back(
+            {s.label, s.value, s.costMs.median, s.error, s.reference, s.check, s.pareto});
+    std::vector<std::string> labels(knob.settings.size());
+    if (knob.settings.empty())
+        return labels;
+    for (const core::QualityPreset preset : core::QUALITY_PRESETS) {
+        std::string& label = labels[core::choosePresetSetting(measured, preset)];
+        label += (label.empty() ? "" : ", ") + std::string(core::qualityPresetName(preset));
+    }
+    return labels;
+}
 
 nlohmann::ordered_json tradeoffJson(const TradeoffReport& report) {
     nlohmann::ordered_json out;
@@ -56,11 +75,78 @@ nlohmann::ordered_json tradeoffJson(const TradeoffReport& report) {
                                     {"converged", knob.referenceConverged},
                                     {"rule", "check error < 0.5 × the smallest swept error"}};
         k["settings"] = nlohmann::ordered_json::array();
-        for (const SettingResult& s : knob.settings)
-            k["settings"].push_back(settingJson(s));
+        const std::vector<std::string> presets = presetLabels(knob);
+        for (std::size_t i = 0; i < knob.settings.size(); ++i)
+            k["settings"].push_back(settingJson(knob.settings[i], presets[i]));
         out["knobs"].push_back(k);
     }
     return out;
+}
+
+Result<TradeoffReport> tradeoffFromJson(const std::string& text, const std::string& sourceName) {
+    using Json = nlohmann::json;
+    const Json root = Json::parse(text, nullptr, false);
+    const auto bad = [&](const std::string& what) {
+        return makeError(sourceName, what + " (not a grass tradeoff.json?)");
+    };
+    if (root.is_discarded() || !root.is_object() || !root.contains("knobs") ||
+        !root["knobs"].is_array())
+        return bad("not a JSON object with a \"knobs\" array");
+    try {
+        TradeoffReport report;
+        report.project = root.value("project", std::string());
+        report.device = root.value("device", std::string());
+        report.geometry = root.value("geometry", std::string());
+        report.width = root.value("width", 0);
+        report.height = root.value("height", 0);
+        report.msaaSamples = root.value("msaa", 0);
+        report.frames = root.value("frames", 0);
+        report.sceneTimeS = root.value("scene_time_s", 0.0f);
+        report.physicsSeconds = root.value("physics_seconds", 0.0);
+        report.blades = root.value("blades", std::size_t(0));
+        report.wallS = root.value("wall_s", 0.0);
+        for (const Json& k : root["knobs"]) {
+            KnobResult knob;
+            knob.name = k.at("name").get<std::string>();
+            knob.skipped = k.value("skipped", std::string());
+            knob.description = k.value("description", std::string());
+            knob.costMetric = k.value("cost_metric", std::string());
+            knob.errorMetric = k.value("error_metric", std::string());
+            if (const auto check = k.find("reference_check"); check != k.end()) {
+                knob.checkLabel = check->at("against").get<std::string>();
+                knob.referenceCheckError = check->at("error").get<double>();
+                knob.referenceConverged = check->at("converged").get<bool>();
+            }
+            for (const Json& s : k.value("settings", Json::array())) {
+                SettingResult r;
+                r.label = s.at("label").get<std::string>();
+                r.value = s.at("value").get<double>();
+                const std::string role = s.value("role", std::string("setting"));
+                r.reference = role == "reference";
+                r.check = role == "check";
+                const Json& cost = s.at("cost_ms");
+                r.costMs = {cost.at("median").get<double>(), cost.at("min").get<double>(),
+                            cost.at("max").get<double>()};
+                const Json timers = s.value("gpu_timer_ms", Json::object());
+                r.meshMs = timers.value("opaque", 0.0);
+                r.cullMs = timers.value("cull", 0.0);
+                r.grassMs = timers.value("grass", 0.0);
+                r.billboardMs = timers.value("billboards", 0.0);
+                r.snowMs = timers.value("snow", 0.0);
+                r.physicsGpuMs = timers.value("physics", 0.0);
+                r.bladesDrawn = s.value("blades_drawn", std::size_t(0));
+                r.error = s.at("error").get<double>();
+                r.errorMax = s.value("error_max", 0.0);
+                r.pixels = s.value("pixels", std::size_t(0));
+                r.pareto = s.value("pareto", false);
+                knob.settings.push_back(r);
+            }
+            report.knobs.push_back(std::move(knob));
+        }
+        return report;
+    } catch (const Json::exception& e) {
+        return bad(std::string("a field is missing or of the wrong type: ") + e.what());
+    }
 }
 
 std::string tradeoffTable(const TradeoffReport& report) {
@@ -83,17 +169,20 @@ std::string tradeoffTable(const TradeoffReport& report) {
                "\nerror: " + knob.errorMetric + "\n\n";
         out +=
             "| setting | cost ms (min–max) | opaque | cull | grass | physics | error | "
-            "error max | front |\n|---|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
-        for (const SettingResult& s : knob.settings) {
+            "error max | front | presets |\n|---|---:|---:|---:|---:|---:|---:|---:|:---:|---|\n";
+        const std::vector<std::string> presets = presetLabels(knob);
+        for (std::size_t i = 0; i < knob.settings.size(); ++i) {
+            const SettingResult& s = knob.settings[i];
             std::snprintf(line, sizeof line,
                           "| %s%s | %.2f (%.2f–%.2f) | %.2f | %.2f | %.2f | %.2f | %.4g | %.4g | "
-                          "%s |\n",
+                          "%s | %s |\n",
                           s.label.c_str(),
                           s.reference ? " (ref)"
                           : s.check   ? " (check)"
                                       : "",
                           s.costMs.median, s.costMs.min, s.costMs.max, s.meshMs, s.cullMs,
-                          s.grassMs, s.physicsGpuMs, s.error, s.errorMax, s.pareto ? "*" : "");
+                          s.grassMs, s.physicsGpuMs, s.error, s.errorMax, s.pareto ? "*" : "",
+                          presets[i].c_str());
             out += line;
         }
         if (!knob.checkLabel.empty()) {

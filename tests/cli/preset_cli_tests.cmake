@@ -39,3 +39,28 @@ grass_cli_test(render_unknown_preset ERROR "--preset" --also "draft"
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --preset fast)
 grass_cli_test(sim_unknown_preset ERROR "--preset"
     -- ${GRASS_BIN} sim ${GRASS_CLI_PROJECTS}/tiny --preset ultra)
+
+# --replot: tables and plots again from a tradeoff.json, nothing measured (no GL needed). The
+# presets column marks the settings the presets' rule picks from that run.
+set(REPLOT ${GRASS_CLI_TMP}/replot)
+add_test(NAME cli.tradeoff_replot_setup
+         COMMAND ${CMAKE_COMMAND} -E copy ${PROJECT_SOURCE_DIR}/core/quality/measured/meadow_ao.json
+                 ${REPLOT}/tradeoff.json)
+set_tests_properties(cli.tradeoff_replot_setup PROPERTIES LABELS cli FIXTURES_SETUP replot_json)
+grass_cli_test(tradeoff_replot OK
+    --stdout "^\\| setting \\| .* \\| presets \\|$"
+    --stdout "^\\| exact \\(ref\\) \\|.*\\| reference \\|$"
+    --stdout "^wrote .*tradeoff\\.md and [0-9]+ plot files$"
+    --file ${REPLOT}/ao_kernel.dat "\"reference\"$"
+    -- ${GRASS_BIN} tradeoff --replot ${REPLOT})
+set_tests_properties(cli.tradeoff_replot PROPERTIES FIXTURES_REQUIRED replot_json)
+grass_cli_test(tradeoff_replot_missing ERROR "--replot" --also "no-such-dir/tradeoff.json"
+    -- ${GRASS_BIN} tradeoff --replot ${GRASS_CLI_TMP}/no-such-dir)
+add_test(NAME cli.tradeoff_replot_project_setup
+         COMMAND ${CMAKE_COMMAND} -E copy ${GRASS_CLI_PROJECTS}/tiny/project.json
+                 ${GRASS_CLI_TMP}/not-tradeoff/tradeoff.json)
+set_tests_properties(cli.tradeoff_replot_project_setup PROPERTIES LABELS cli
+    FIXTURES_SETUP replot_project)
+grass_cli_test(tradeoff_replot_not_tradeoff ERROR "not-tradeoff/tradeoff.json" --also "knobs"
+    -- ${GRASS_BIN} tradeoff --replot ${GRASS_CLI_TMP}/not-tradeoff)
+set_tests_properties(cli.tradeoff_replot_not_tradeoff PROPERTIES FIXTURES_REQUIRED replot_project)

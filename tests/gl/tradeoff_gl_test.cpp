@@ -88,6 +88,20 @@ TEST_F(TradeoffTest, ErrorFallsWithStepAndSegmentsAndReferencesConverge) {
                 EXPECT_TRUE(s.pareto) << knob->name;
             }
 
+    // Every preset lands on exactly one setting of each knob, and reference on the reference.
+    for (const render::KnobResult* knob : {&physics, &detail}) {
+        const std::vector<std::string> presets = render::presetLabels(*knob);
+        std::string all;
+        for (std::size_t i = 0; i < presets.size(); ++i) {
+            all += presets[i] + ";";
+            if (knob->settings[i].reference) {
+                EXPECT_NE(presets[i].find("reference"), std::string::npos) << knob->name;
+            }
+        }
+        for (const char* name : {"draft", "balanced", "high", "reference"})
+            EXPECT_EQ(all.find(name), all.rfind(name)) << knob->name << ": " << all;
+    }
+
     const std::filesystem::path folder = scratchDir("tradeoff");
     const auto json = render::tradeoffJson(*report);
     EXPECT_EQ(json["knobs"].size(), 2u);
