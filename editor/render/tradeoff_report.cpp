@@ -73,7 +73,12 @@ nlohmann::ordered_json tradeoffJson(const TradeoffReport& report) {
             k["reference_check"] = {{"against", knob.checkLabel},
                                     {"error", knob.referenceCheckError},
                                     {"converged", knob.referenceConverged},
-                                    {"rule", "check error < 0.5 × the smallest swept error"}};
+                                    {"converged_below", knob.convergedBelow},
+                                    {"resolves_every_setting", knob.referenceResolvesSweep},
+                                    {"rule", "converged: check error below a tenth of a "
+                                             "just-noticeable difference (0.23 ΔE76; 0.001 h); "
+                                             "resolves every setting: below half the smallest "
+                                             "swept error"}};
         k["settings"] = nlohmann::ordered_json::array();
         const std::vector<std::string> presets = presetLabels(knob);
         for (std::size_t i = 0; i < knob.settings.size(); ++i)
@@ -116,6 +121,8 @@ Result<TradeoffReport> tradeoffFromJson(const std::string& text, const std::stri
                 knob.checkLabel = check->at("against").get<std::string>();
                 knob.referenceCheckError = check->at("error").get<double>();
                 knob.referenceConverged = check->at("converged").get<bool>();
+                knob.convergedBelow = check->value("converged_below", 0.0);
+                knob.referenceResolvesSweep = check->value("resolves_every_setting", true);
             }
             for (const Json& s : k.value("settings", Json::array())) {
                 SettingResult r;
@@ -186,9 +193,14 @@ std::string tradeoffTable(const TradeoffReport& report) {
             out += line;
         }
         if (!knob.checkLabel.empty()) {
-            std::snprintf(line, sizeof line, "reference against %s: error %.4g (%s)\n",
+            std::snprintf(line, sizeof line, "reference against %s: error %.4g (%s, under %g: %s)\n",
                           knob.checkLabel.c_str(), knob.referenceCheckError,
-                          knob.referenceConverged ? "converged" : "NOT converged");
+                          knob.referenceConverged ? "converged" : "NOT converged",
+                          knob.convergedBelow,
+                          knob.referenceResolvesSweep
+                              ? "resolves every swept setting"
+                              : "does NOT resolve every swept setting (under half the smallest "
+                                "swept error)");
             out += line;
         }
     }

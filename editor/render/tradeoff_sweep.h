@@ -66,10 +66,14 @@ struct KnobResult {
     std::string skipped;  // non-empty: why the knob was not measured (the project lacks it)
     std::vector<SettingResult> settings;  // the swept settings, then the reference (and check)
     // The reference against the finer check setting (0 and empty label when the reference is
-    // exact, e.g. LOD off); converged when it is under half the smallest swept error.
+    // exact, e.g. LOD off). Converged: under convergedBelow (a tenth of a just-noticeable
+    // difference, 0.23 ΔE76; 0.001 h for the tips). Resolves the sweep: under half the smallest
+    // swept error, so every swept error is known within a factor of 2.
     std::string checkLabel;
     double referenceCheckError = 0.0;
+    double convergedBelow = 0.0;
     bool referenceConverged = true;
+    bool referenceResolvesSweep = true;
 };
 
 struct TradeoffReport {
