@@ -403,6 +403,66 @@ Result<KnobResult> measureAoKnob(ImageBench& bench, const core::Scene& scene,
     return knob;
 }
 
+// Distance thinning keeps ceil(n·(1 − d/dmax))/n of the blades at distance d (cull.comp): n
+// classes approximate the continuous falloff 1 − d/dmax from above. Which blades a class count
+// keeps differs with n (index mod n), so images of two counts differ blade by blade and pixel
+// ΔE cannot rank them; the error is the density's instead: the mean excess kept share over the
+// live blades within dmax, from the blades' distances as the cull pass measures them. Cost is
+// the frame.
+KnobResult measureClassesKnob(ImageBench& bench, const core::Scene& scene,
+                              const std::string& prefix) {
+    KnobResult knob;
+    knob.name = "distance_classes";
+    char description[96];
+    std::snprintf(description, sizeof description,
+                  "distance thinning classes at the project's thinning distance (%g m)",
+                  static_cast<double>(bench.base.cull.maxDistanceM));
+    knob.description = description;
+    knob.errorMetric = "mean kept share above the continuous 1 − d/dmax over the blades within "
+                       "dmax (density error)";
+    knob.costMetric = "frame wall ms (median of the timed frames, glFinish included)";
+    const glm::vec3 eye = bench.camera.position();
+    const float dmax = bench.base.cull.maxDistanceM;
+    std::vector<float> falloff;  // 1 − d/dmax of every live blade within dmax
+    for (const core::LayerField& layer : scene.layers)
+        for (const core::Blade& blade : layer.patched.blades) {
+            if (!(blade.h() > 0.0f))
+                continue;
+            const glm::vec3 up = glm::normalize(blade.up());
+            const glm::vec3 toBlade = blade.v0() - eye;
+            const float d = glm::length(toBlade - up * glm::dot(toBlade, up));
+            if (d < dmax)
+                falloff.push_back(1.0f - d / dmax);
+        }
+    const auto densityError = [&](int n) {
+        double sum = 0.0;
+        for (const float f : falloff)
+            sum += std::ceil(double(n) * f) / n - f;
+        return falloff.empty() ? 0.0 : sum / double(falloff.size());
+    };
+    const auto measure = [&](int n, const std::string& what) {
+        RenderOptions options = bench.base;
+        options.cull.distanceClasses = n;
+        SettingResult s = bench.draw(bench.renderer, options, prefix + " " + what).timing;
+        s.label = std::to_string(n);
+        s.value = n;
+        s.error = densityError(n);
+        s.errorMax = 1.0 / n;  // a class's share: the largest excess at any distance
+        s.pixels = falloff.size();
+        return s;
+    };
+    for (const int n : {2, 4, 8, 16})
+        knob.settings.push_back(measure(n, std::to_string(n)));
+    // The reference is the continuous falloff, against which every error above is exact; 64
+    // classes stand in for it in the frame (its own small error is listed, not zeroed).
+    SettingResult reference = measure(64, "reference 64");
+    reference.label = "64 (≈ continuous)";
+    reference.reference = true;
+    knob.settings.push_back(reference);
+    finishKnob(knob);
+    return knob;
+}
+
 KnobResult skippedKnob(const std::string& name, const std::string& why) {
     KnobResult knob;
     knob.name = name;
@@ -413,8 +473,8 @@ KnobResult skippedKnob(const std::string& name, const std::string& why) {
 }  // namespace
 
 std::vector<std::string> tradeoffKnobNames() {
-    return {"physics_step", "geometry_detail", "lod_distance", "cull_distance",
-            "snow_map",     "billboard_fade",  "ao_kernel"};
+    return {"physics_step", "geometry_detail", "lod_distance",   "cull_distance",
+            "distance_classes", "snow_map",  "billboard_fade", "ao_kernel"};
 }
 
 Result<TradeoffReport> runTradeoffSweep(const core::LoadedProject& loaded,
@@ -489,6 +549,14 @@ Result<TradeoffReport> runTradeoffSweep(const core::LoadedProject& loaded,
             if (!knob)
                 return knob.error();
             report.knobs.push_back(std::move(*knob));
+            continue;
+        }
+        if (name == "distance_classes") {
+            if (!base.cull.distance)
+                report.knobs.push_back(
+                    skippedKnob(name, "the project does not thin (thinning_distance 0)"));
+            else
+                report.knobs.push_back(measureClassesKnob(bench, scene, prefix));
             continue;
         }
         if (name == "ao_kernel") {

@@ -88,8 +88,8 @@ struct TradeoffReport {
     double wallS = 0.0;
 };
 
-// physics_step, geometry_detail, lod_distance, cull_distance, snow_map, billboard_fade,
-// ao_kernel.
+// physics_step, geometry_detail, lod_distance, cull_distance, distance_classes, snow_map,
+// billboard_fade, ao_kernel.
 std::vector<std::string> tradeoffKnobNames();
 
 // Runs the sweep on a current GL context. Errors: an unknown knob name, a project that does not

@@ -189,6 +189,28 @@ TEST_F(TradeoffTest, AoErrorFallsWithTheBakeCells) {
     expectFallingError(ao);
 }
 
+// Thinning classes: the density error against the continuous falloff falls as the classes grow.
+// The field is thinned out to 3 m, so its blades span the falloff (at the default 100 m every
+// blade of a 1.5 m field sits in the first class whatever n is).
+TEST_F(TradeoffTest, ThinningDensityErrorFallsWithTheClasses) {
+    core::LoadedProject loaded = windyField();
+    loaded.project.render.thinningDistanceM = 3.0f;
+    render::TradeoffOptions options = smallSweep();
+    options.knobs = {"distance_classes"};
+    auto report = render::runTradeoffSweep(loaded, options);
+    ASSERT_TRUE(report.ok()) << report.error().str();
+    const render::KnobResult& classes = knobNamed(*report, "distance_classes");
+    expectFallingError(classes);
+    // A class is 1/n of the blades: the excess never exceeds it.
+    for (const render::SettingResult& s : classes.settings)
+        EXPECT_LE(s.error, 1.0 / s.value) << s.label;
+    // Without thinning the knob is skipped.
+    loaded.project.render.thinningDistanceM = 0.0f;
+    auto skipped = render::runTradeoffSweep(loaded, options);
+    ASSERT_TRUE(skipped.ok()) << skipped.error().str();
+    EXPECT_FALSE(skipped->knobs.front().skipped.empty());
+}
+
 TEST_F(TradeoffTest, UnknownKnobIsAnErrorAndAbsentFeaturesAreSkipped) {
     render::TradeoffOptions options = smallSweep();
     options.knobs = {"warp_drive"};
