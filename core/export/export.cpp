@@ -7,6 +7,7 @@
 #include "export/gltf_export.h"
 #include "export/raw_export.h"
 #include "export/staged_files.h"
+#include "util/atomic_file.h"
 
 namespace grass::core {
 
@@ -137,6 +138,8 @@ Result<void> prepareOutDir(const fs::path& outDir, bool& created) {
             return makeError(outDir.string(),
                              "exists and is not a folder (give a folder to "
                              "export into)");
+        // An export killed mid-write left its staged temporaries: this one clears them.
+        removeStaleTemporaries(outDir);
         return {};
     }
     created = fs::create_directories(outDir, ec);

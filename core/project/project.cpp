@@ -72,6 +72,14 @@ Result<LoadedProject> loadProject(const fs::path& path) {
     if (!project)
         return project.error();
     loaded.project = std::move(*project);
+    // A save of this project killed mid-write left its temporary next to the file it was
+    // replacing: the next start clears them (the files themselves are whole, old or new).
+    removeStaleTemporaries(loaded.folder);
+    for (const std::string& asset : projectAssetPaths(loaded.project)) {
+        const fs::path folder = (loaded.folder / asset).parent_path();
+        if (folder != loaded.folder)
+            removeStaleTemporaries(folder);
+    }
     return loaded;
 }
 

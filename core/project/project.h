@@ -217,7 +217,8 @@ std::string_view billboardAnimationName(BillboardWindMode mode);
 Result<BillboardWindMode> parseBillboardAnimation(std::string_view name);
 Result<GeometryPath> parseGeometryPath(std::string_view name);  // "auto" | "tess" | "strips"
 
-// Load: `path` is a project folder (reads path/project.json) or a .json file.
+// Load: `path` is a project folder (reads path/project.json) or a .json file. Temporaries that a
+// killed save left in the project's folders (removeStaleTemporaries) are removed.
 // On success, `folder` receives the folder assets are relative to.
 struct LoadedProject {
     Project project;

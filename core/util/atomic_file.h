@@ -17,6 +17,12 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 // Writes `bytes` to `target` atomically.
 Result<void> writeFileAtomic(const std::filesystem::path& target, std::string_view bytes);
 
+// Removes the temporaries (temporaryPathFor's ".name.tmp-<pid>[.ext]") in `folder` (not its
+// subfolders) whose process no longer runs: what a save killed mid-write (SIGKILL, power loss)
+// left. The target files themselves are never touched. Returns how many were removed; a folder
+// that cannot be read removes nothing.
+std::size_t removeStaleTemporaries(const std::filesystem::path& folder);
+
 // Flushes a finished temporary file and renames it over `target`; removes it on failure.
 Result<void> commitTemporaryFile(const std::filesystem::path& temporary,
                                  const std::filesystem::path& target);

@@ -1,0 +1,74 @@
+// Atomic saves and what a killed save leaves (DEVELOPERS.md non-negotiable 4, issue 11).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "support/test_paths.h"
+#include "util/atomic_file.h"
+
+namespace grass {
+namespace {
+
+namespace fs = std::filesystem;
+
+void touch(const fs::path& file) {
+    std::ofstream(file) << "x";
+}
+
+// A pid that ran and is gone: a child that exits at once, reaped.
+pid_t deadPid() {
+    const pid_t child = ::fork();
+    if (child == 0)
+        ::_exit(0);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    return child;
+}
+
+TEST(AtomicFile, StaleTemporariesOfDeadProcessesAreRemovedAndNothingElse) {
+    const fs::path dir = test::scratchDir("atomic-stale");
+    const std::string dead = std::to_string(deadPid());
+    const std::string alive = std::to_string(::getpid());
+    const std::vector<std::string> removed = {".project.tmp-" + dead + ".json",
+                                              ".grass-density.tmp-" + dead + ".png",
+                                              ".bin.tmp-" + dead};
+    const std::vector<std::string> kept = {
+        "project.json",                    // the file itself
+        ".project.tmp-" + alive + ".json",  // a save under way (this process)
+        ".project.tmp-abc.json",           // not a pid
+        "project.tmp-" + dead + ".json",    // not hidden: not ours
+        ".project.tmp-" + dead + "x.json",  // digits must end the tag
+    };
+    for (const auto& name : removed)
+        touch(dir / name);
+    for (const auto& name : kept)
+        touch(dir / name);
+    fs::create_directories(dir / ("sub"));
+    touch(dir / "sub" / (".map.tmp-" + dead + ".png"));  // subfolders are not searched
+
+    EXPECT_EQ(removeStaleTemporaries(dir), removed.size());
+    for (const auto& name : removed)
+        EXPECT_FALSE(fs::exists(dir / name)) << name;
+    for (const auto& name : kept)
+        EXPECT_TRUE(fs::exists(dir / name)) << name;
+    EXPECT_TRUE(fs::exists(dir / "sub" / (".map.tmp-" + dead + ".png")));
+    EXPECT_EQ(removeStaleTemporaries(dir / "no-such-folder"), 0u);
+}
+
+TEST(AtomicFile, TemporaryNamesAreFoundAgain) {
+    const fs::path dir = test::scratchDir("atomic-names");
+    // The writer's own temporary of a save in progress is never taken for stale.
+    const fs::path temporary = temporaryPathFor(dir / "project.json");
+    touch(temporary);
+    EXPECT_EQ(removeStaleTemporaries(dir), 0u);
+    EXPECT_TRUE(fs::exists(temporary));
+    ASSERT_TRUE(writeFileAtomic(dir / "project.json", "{}").ok());
+    EXPECT_TRUE(fs::exists(dir / "project.json"));
+}
+
+}  // namespace
+}  // namespace grass
