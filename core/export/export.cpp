@@ -4,6 +4,7 @@
 #include <set>
 #include <system_error>
 
+#include "export/content_names.h"
 #include "export/gltf_export.h"
 #include "export/raw_export.h"
 #include "export/staged_files.h"
@@ -31,6 +32,13 @@ std::vector<NamedMap> paintedMaps(const LayerField& layer) {
         if (map.map->width > 0 && map.map->height > 0)
             maps.push_back(map);
     return maps;
+}
+
+// A map's texels and size as one content hash (content_names.h).
+std::uint64_t mapHash(const MapImage& map) {
+    const int size[2] = {map.width, map.height};
+    const std::uint64_t seed = contentHash(std::as_bytes(std::span(size)));
+    return contentHash(std::as_bytes(std::span(map.texels)), seed);
 }
 
 // A stem per layer, unique within the export even when two layers share a name.
@@ -64,10 +72,11 @@ Result<void> stageGltfLayer(StagedFiles& staged, const LoadedProject& loaded, co
     input.lod = lod;
     input.segments = loaded.project.render.stripSegments;
     input.groundColor = loaded.project.render.groundColor;
-    input.binUri = stem + ".bin";
+    input.binStem = stem;
     step(0.0f, "maps");
     for (const NamedMap& map : paintedMaps(layer)) {
-        const std::string uri = stem + "-" + map.name + ".png";
+        const std::string uri =
+            contentAddressedName(stem + "-" + map.name, mapHash(*map.map), ".png");
         if (auto written = staged.addPng(uri, *map.map); !written)
             return written.error();
         input.maps.push_back({map.name, uri});
@@ -75,7 +84,7 @@ Result<void> stageGltfLayer(StagedFiles& staged, const LoadedProject& loaded, co
     step(0.3f, "terrain and blade instances");
     const GltfLayerDocument doc = buildLayerGltf(input);
     step(0.7f, "writing");
-    if (auto written = staged.add(input.binUri, doc.binary); !written)
+    if (auto written = staged.add(doc.binUri, doc.binary); !written)
         return written.error();
     if (auto written = staged.add(stem + ".gltf", doc.json); !written)
         return written.error();
@@ -103,9 +112,14 @@ Result<json> stageRawLayer(StagedFiles& staged, const LayerField& layer, const s
     const std::string blades = rawBladeBytes(patched.blades);
     const std::string patches = rawPatchBytes(patched.patches);
     const std::string wilt = rawFloatBytes(layer.wilt);
-    entry["blades"] = file(stem + ".blades.bin", patched.blades.size(), blades.size());
-    entry["patches"] = file(stem + ".patches.bin", patched.patches.size(), patches.size());
-    entry["wilt"] = file(stem + ".wilt.f32", layer.wilt.size(), wilt.size());
+    const auto name = [&](const char* part, const std::string& bytes, const char* extension) {
+        return contentAddressedName(stem + "." + part, contentHash(bytes), extension);
+    };
+    entry["blades"] =
+        file(name("blades", blades, ".bin"), patched.blades.size(), blades.size());
+    entry["patches"] =
+        file(name("patches", patches, ".bin"), patched.patches.size(), patches.size());
+    entry["wilt"] = file(name("wilt", wilt, ".f32"), layer.wilt.size(), wilt.size());
     const std::pair<const char*, const std::string*> parts[] = {
         {"blades", &blades}, {"patches", &patches}, {"wilt", &wilt}};
     for (const auto& [part, bytes] : parts)
@@ -113,11 +127,11 @@ Result<json> stageRawLayer(StagedFiles& staged, const LayerField& layer, const s
             return written.error();
     entry["maps"] = json::object();
     for (const NamedMap& map : paintedMaps(layer)) {
-        const std::string name = stem + "." + map.name + ".f32";
         const std::string bytes = rawFloatBytes(map.map->texels);
-        if (auto written = staged.add(name, bytes); !written)
+        const std::string mapFile = name(map.name, bytes, ".f32");
+        if (auto written = staged.add(mapFile, bytes); !written)
             return written.error();
-        entry["maps"][map.name] = {{"file", name},
+        entry["maps"][map.name] = {{"file", mapFile},
                                    {"width", map.map->width},
                                    {"height", map.map->height},
                                    {"bytes", bytes.size()}};
@@ -227,6 +241,9 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
         if (!files)
             return files.error();
         report.files = std::move(*files);
+        // Only now, with every entry point renamed into place, may what the previous export
+        // named go: before, a kill would leave an entry point without its files.
+        removeUnreferencedExportFiles(options.outDir);
         return {};
     }();
     if (!staging) {

@@ -88,8 +88,13 @@ int GltfBuilder::addIndices(std::span<const std::uint32_t> indices) {
     return static_cast<int>(mDocument["accessors"].size()) - 1;
 }
 
-std::string GltfBuilder::finishJson(const std::string& binUri) {
+const std::string& GltfBuilder::finishBinary() {
     mBinary.resize((mBinary.size() + 3) / 4 * 4, '\0');
+    return mBinary;
+}
+
+std::string GltfBuilder::finishJson(const std::string& binUri) {
+    finishBinary();
     if (!mBinary.empty())
         mDocument["buffers"] = {{{"uri", binUri}, {"byteLength", mBinary.size()}}};
     // The spec forbids empty top-level arrays (a layer with no blades on an empty mesh).

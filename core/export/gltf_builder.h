@@ -27,6 +27,8 @@ public:
     int addIndices(std::span<const std::uint32_t> indices);
 
     nlohmann::json& document() { return mDocument; }
+    // Pads the buffer to its final length (a multiple of 4) and returns it: what the .bin holds.
+    const std::string& finishBinary();
     // Adds the buffer (uri = the .bin file next to the .gltf) and returns the finished JSON.
     std::string finishJson(const std::string& binUri);
     const std::string& binary() const { return mBinary; }

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "export/blade_instances.h"
+#include "export/content_names.h"
 #include "export/gltf_builder.h"
 #include "util/assert.h"
 
@@ -201,8 +202,9 @@ GltfLayerDocument buildLayerGltf(const GltfLayerInput& input) {
 
     GltfLayerDocument out;
     out.instances = instances.size();
-    out.json = builder.finishJson(input.binUri);
-    out.binary = builder.binary();
+    out.binary = builder.finishBinary();
+    out.binUri = contentAddressedName(input.binStem, contentHash(out.binary), ".bin");
+    out.json = builder.finishJson(out.binUri);
     return out;
 }
 

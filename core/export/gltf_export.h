@@ -28,6 +28,7 @@ struct GltfMapImage {
 struct GltfLayerDocument {
     std::string json;
     std::string binary;
+    std::string binUri;  // content-addressed: "<binStem>-<hash>.bin" (content_names.h)
     std::size_t instances = 0;
 };
 
@@ -38,7 +39,8 @@ struct GltfLayerInput {
     // Segments along the unit blade (the project's strip segments, 1..32).
     int segments = 8;
     glm::vec3 groundColor{0.3f, 0.24f, 0.16f};
-    std::string binUri;
+    // The buffer's file is named "<binStem>-<hash of its bytes>.bin" (content_names.h).
+    std::string binStem;
     std::vector<GltfMapImage> maps;
 };
 

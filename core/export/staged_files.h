@@ -25,7 +25,8 @@ public:
     Result<void> add(const std::string& name, std::string_view bytes);
     // A map as a 16-bit greyscale PNG (map_image.h): 1/65535 steps, what the editor saves.
     Result<void> addPng(const std::string& name, const MapImage& map);
-    // Renames every staged file into place, in the order staged.
+    // Renames every staged file into place, in the order staged: stage the files an entry point
+    // names before the entry point (content_names.h), so a kill never separates them.
     Result<std::vector<ExportedFile>> commit();
 
 private:

@@ -14,12 +14,13 @@ grass_cli_test(export_help OK --no-stderr
 grass_cli_test(export_tiny_gltf OK
     --file ${GRASS_EXPORT_TMP}/tiny-gltf/grass.gltf "EXT_mesh_gpu_instancing"
     --stdout "^layer \"grass\": [1-9][0-9]* live blades, [1-9][0-9]* instances$"
-    --stdout "^wrote .*grass\\.gltf \\([0-9]+ bytes\\)$" --stdout "^wrote .*grass\\.bin "
+    --stdout "^wrote .*grass\\.gltf \\([0-9]+ bytes\\)$" --stdout "^wrote .*grass-[0-9a-f]{16}\\.bin "
     --stderr "^note: export +100%"
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/tiny-gltf)
 grass_cli_test(export_tiny_raw OK
     --file ${GRASS_EXPORT_TMP}/tiny-raw/manifest.json "\"format\": \"grass-raw-export\""
-    --stdout "^wrote .*grass\\.blades\\.bin " --stdout "^wrote .*grass\\.patches\\.bin "
+    --stdout "^wrote .*grass\\.blades-[0-9a-f]{16}\\.bin "
+    --stdout "^wrote .*grass\\.patches-[0-9a-f]{16}\\.bin "
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/tiny-raw
        --format raw)
 

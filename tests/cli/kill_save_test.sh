@@ -60,22 +60,29 @@ for ((i = 1; i <= paintKills; ++i)); do
 done
 echo "paint: $paintKills runs ($paintMs ms each): $killed killed, $finished finished first, $leftBehind left a temporary; every time the project and map loaded and the next start removed the temporaries"
 
-# The exports below all write the same field (the project no longer changes): each file is
-# replaced atomically, but the set is not (docs/reliability.md), so a kill between two renames
-# mixes the previous export's files with the new one's, which only load together when equal.
+# Every export run changes the field against the one before (LOD 0 and 1 alternate), so a
+# mixed set of files would not load: the buffer and maps are named by their content and renamed
+# first, the .gltf last (core/export/content_names.h), so the .gltf in place always names files
+# that are there and whole.
 start=$(now_ms); "$bin" export "$project" --out "$out" >/dev/null 2>&1 || fail "a plain export fails"
 exportMs=$(( $(now_ms) - start ))
 killed=0; finished=0; leftBehind=0
 for ((i = 1; i <= exportKills; ++i)); do
-    result=$(kill_after "$(delay_ms "$exportMs")" "$bin" export "$project" --out "$out")
+    result=$(kill_after "$(delay_ms "$exportMs")" "$bin" export "$project" --out "$out" --lod $((i % 2)))
     [[ $result == killed ]] && killed=$((killed + 1)) || finished=$((finished + 1))
     (( $(temporaries "$out") > 0 )) && leftBehind=$((leftBehind + 1))
-    # Whatever the kill left, the files in place are whole: the glTF is the previous export's.
-    [[ -s $out/grass.gltf && -s $out/grass.bin ]] || fail "export kill $i: the previous export is gone"
+    # Whatever the kill left, the files in place are whole and belong together.
+    [[ -s $out/grass.gltf ]] || fail "export kill $i: the previous export is gone"
     "$bin" mesh-info "$out/grass.gltf" >/dev/null 2>"$work/info.err" ||
         fail "export kill $i: the export in place does not load: $(cat "$work/info.err")"
-    # The next export into the folder clears what the killed one left.
-    "$bin" export "$project" --out "$out" >/dev/null 2>&1 || fail "export kill $i: the next export fails"
+    # The next export into the folder clears what the killed one left: its temporaries and the
+    # files no .gltf names any more (one .gltf plus the files it names remain).
+    "$bin" export "$project" --out "$out" --lod $(((i + 1) % 2)) >/dev/null 2>&1 ||
+        fail "export kill $i: the next export fails"
     (( $(temporaries "$out") == 0 )) || fail "export kill $i: temporaries left after the next export"
+    named=$(grep -c '"uri"' "$out/grass.gltf")
+    present=$(find "$out" -maxdepth 1 -type f | wc -l)
+    (( present == named + 1 )) ||
+        fail "export kill $i: $present files after the next export, the .gltf names $named: $(ls "$out")"
 done
 echo "export: $exportKills runs ($exportMs ms each): $killed killed, $finished finished first, $leftBehind left a temporary; every time the export in place loaded and the next export removed the temporaries"

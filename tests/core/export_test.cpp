@@ -8,6 +8,7 @@
 
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
@@ -195,11 +196,17 @@ TEST(Export, RawRoundTripsBitExactly) {
     auto report = exportProject(built.loaded, built.scene, options(ExportFormat::Raw, 0, dir), {});
     ASSERT_TRUE(report.ok()) << report.error().str();
     const LayerField& layer = built.scene.layers[0];
-    auto blades = readRawBlades(dir / "grass.blades.bin");
+    auto manifestText = readFile(dir / "manifest.json");
+    ASSERT_TRUE(manifestText.ok());
+    const auto manifest = nlohmann::json::parse(*manifestText);
+    const auto named = [&](const char* part) {
+        return dir / manifest["layers"][0][part]["file"].get<std::string>();
+    };
+    auto blades = readRawBlades(named("blades"));
     ASSERT_TRUE(blades.ok()) << blades.error().str();
     ASSERT_EQ(blades->size(), layer.patched.blades.size());
     EXPECT_EQ(std::memcmp(blades->data(), layer.patched.blades.data(), blades->size() * 64), 0);
-    auto patches = readRawPatches(dir / "grass.patches.bin");
+    auto patches = readRawPatches(named("patches"));
     ASSERT_TRUE(patches.ok()) << patches.error().str();
     ASSERT_EQ(patches->size(), layer.patched.patches.size());
     for (std::size_t p = 0; p < patches->size(); ++p) {
@@ -207,9 +214,6 @@ TEST(Export, RawRoundTripsBitExactly) {
         EXPECT_EQ((*patches)[p].bladeCount, layer.patched.patches[p].bladeCount);
         EXPECT_EQ((*patches)[p].bounds, layer.patched.patches[p].bounds);
     }
-    auto manifestText = readFile(dir / "manifest.json");
-    ASSERT_TRUE(manifestText.ok());
-    const auto manifest = nlohmann::json::parse(*manifestText);
     EXPECT_EQ(manifest["layout"]["blade_record"]["stride"], 64);
     EXPECT_EQ(manifest["layers"][0]["blades"]["count"], layer.patched.blades.size());
     EXPECT_EQ(manifest["layers"][0]["patch_size"], layer.patched.patchSize);
@@ -253,6 +257,31 @@ TEST(Export, FolderInPlaceOfAFileLeavesNoHalfExport) {
     EXPECT_EQ(left[0], "grass.gltf");
 }
 
+// An export is atomic as a set (content_names.h): the .gltf names its buffer by content, so a
+// re-export of a changed field writes a new buffer beside the old one and only then replaces the
+// .gltf; the old buffer goes once nothing names it. An unchanged field keeps its names.
+TEST(Export, ReExportNamesFilesByContentAndRemovesWhatIsNoLongerNamed) {
+    const Built built = buildProject("tiny");
+    const fs::path dir = test::scratchDir("export_content_names");
+    const auto exportedNames = [&](int lod) {
+        auto report =
+            exportProject(built.loaded, built.scene, options(ExportFormat::Gltf, lod, dir), {});
+        EXPECT_TRUE(report.ok()) << report.error().str();
+        std::set<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir))
+            names.insert(entry.path().filename().string());
+        return names;
+    };
+    const std::set<std::string> first = exportedNames(0);
+    EXPECT_EQ(first.size(), 2u);
+    EXPECT_EQ(exportedNames(0), first);
+    const std::set<std::string> coarser = exportedNames(2);
+    EXPECT_EQ(coarser.size(), 2u);
+    EXPECT_TRUE(coarser.count("grass.gltf"));
+    EXPECT_NE(coarser, first) << "LOD 2 holds fewer instances: another buffer, another name";
+    EXPECT_EQ(reimport(dir / "grass.gltf").translation.size(), 3 * bladeInstances(built.scene.layers[0], 2).size());
+}
+
 TEST(Export, ProgressRunsFromZeroToOne) {
     const Built built = buildProject("tiny");
     const fs::path dir = test::scratchDir("export_progress");
@@ -265,7 +294,7 @@ TEST(Export, ProgressRunsFromZeroToOne) {
     EXPECT_EQ(fractions.front(), 0.0f);
     EXPECT_EQ(fractions.back(), 1.0f);
     EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
-    EXPECT_EQ(report->files.size(), 2u);  // grass.bin, grass.gltf: tiny has no maps
+    EXPECT_EQ(report->files.size(), 2u);  // grass-<hash>.bin, grass.gltf: tiny has no maps
     EXPECT_GT(report->totalBytes(), 0u);
 }
 
