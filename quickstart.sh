@@ -2,7 +2,8 @@
 # grass quick start: installs what is missing (as root) or says what to install, builds, then
 #   ./quickstart.sh run    opens the editor on projects/meadow (or, with no display, renders it
 #                          headless after 5 s of its physics to build/meadow.png, with timings)
-#   ./quickstart.sh test   runs the whole test suite (what CI runs: .ci/run)
+#   ./quickstart.sh test   runs the whole test suite (what CI runs: .ci/run), then fuzzes every
+#                          file reader for a bounded time (tests/fuzz/README.md)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -22,6 +23,10 @@ packages=(g++ cmake ninja-build pkg-config ccache
 # from elsewhere (nodesource's nodejs bundles npm) will do, so look for the commands first.
 if [ "$mode" = test ] && ! { command -v node && command -v npm; } >/dev/null; then
   packages+=(nodejs npm)
+fi
+# The fuzz stage of the tests builds core with clang and links libFuzzer (tests/fuzz/README.md).
+if [ "$mode" = test ]; then
+  packages+=(clang libclang-rt-14-dev)
 fi
 missing=()
 for p in "${packages[@]}"; do
@@ -56,4 +61,20 @@ echo "== installing the glTF validator (npm gltf-validator) into build/gltf-vali
 tests/export/install_validator.sh build/gltf-validator
 
 echo "== running the tests"
-exec ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600
+status=0
+ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600 || status=1
+
+# Every file reader under libFuzzer (tests/fuzz/README.md): core built again with clang, ASan,
+# UBSan and coverage in build-fuzz/; the kept regression inputs and seeds run once, then each
+# target is fuzzed for GRASS_FUZZ_SECONDS (default 20 s: 9 targets, $jobs at a time). Any
+# crash, leak, hang or sanitizer report fails the suite.
+fuzz_seconds="${GRASS_FUZZ_SECONDS:-20}"
+echo "== fuzzing the file readers (build-fuzz/, clang, ${fuzz_seconds} s per target)"
+if cmake -S tests/fuzz -B build-fuzz -G Ninja -DCMAKE_C_COMPILER=clang \
+    -DCMAKE_CXX_COMPILER=clang++ >/dev/null && cmake --build build-fuzz -j "$jobs"; then
+  tests/fuzz/run_fuzz.sh -j "$jobs" build-fuzz "$fuzz_seconds" || status=1
+else
+  echo "fuzz build failed" >&2
+  status=1
+fi
+exit "$status"
