@@ -43,6 +43,8 @@ public:
     float timeS() const { return mTimeS; }
     std::size_t stepsDone() const { return mSteps; }
     const ScenePhysics& physics() const { return mPhysics; }
+    // For a driver that changes the scene between steps (grass soak keeps paths looping).
+    ScenePhysics& physics() { return mPhysics; }
     FieldHealth health() const;
 
     // For a GPU execution that took over: the state of layer i.

@@ -15,6 +15,7 @@ int runExport(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);
 int runTradeoff(const std::vector<std::string>& args);
 int runPresets(const std::vector<std::string>& args);
+int runSoak(const std::vector<std::string>& args);
 
 // Exit codes: 0 success, 1 failed (bad file, GL failure), 2 bad command line.
 inline constexpr int EXIT_FAILED = 1;

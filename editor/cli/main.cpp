@@ -21,6 +21,7 @@ commands:
   bench       run the standard benchmark set and print per-stage costs (--compare old runs)
   tradeoff    sweep quality knobs against a reference: cost/error table, tradeoff.json, plots
   presets     print the quality presets (--preset of render, sim, export) and their measurements
+  soak        run a project's physics for an hour of game time: length drift, NaN, memory, GL leaks
 
 Run 'grass <command> --help' for the options of a command.
 The editor window is 'grass-editor'.
@@ -33,7 +34,7 @@ int main(int argc, char** argv) {
     if (args.empty()) {
         grass::cli::printError("",
                                "missing command: grass render|sim|mesh-info|paint|export|bench|"
-                               "tradeoff|presets ... "
+                               "tradeoff|presets|soak ... "
                                "(see grass --help)");
         return grass::cli::EXIT_USAGE;
     }
@@ -63,12 +64,14 @@ int main(int argc, char** argv) {
         return grass::cli::runTradeoff(args);
     if (command == "presets")
         return grass::cli::runPresets(args);
+    if (command == "soak")
+        return grass::cli::runSoak(args);
     if (command.rfind("-", 0) == 0)
         grass::cli::printError("", command + ": unknown option (see grass --help)");
     else
         grass::cli::printError(
             command,
             "unknown command (commands: render, sim, mesh-info, paint, export, bench, tradeoff, "
-            "presets; see grass --help)");
+            "presets, soak; see grass --help)");
     return grass::cli::EXIT_USAGE;
 }

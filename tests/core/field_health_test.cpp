@@ -40,8 +40,31 @@ TEST(FieldHealth, CountsEveryProblem) {
     EXPECT_DOUBLE_EQ(health.crushedShare(), 1.0);
     const double expectedLength = bladeLengthEstimate(bent);
     EXPECT_NEAR(health.maxRelLengthError, std::abs(expectedLength - 1.0), 1e-6);
+    EXPECT_NEAR(health.meanRelLengthError(), std::abs(expectedLength - 1.0), 1e-6);
+    EXPECT_NEAR(health.maxLengthErrorPerTolerance,
+                std::abs(expectedLength - 1.0) / lengthTolerance(bent), 1e-3);
     EXPECT_NEAR(health.maxTipDisplacementM, glm::length(bent.v2() - rest), 1e-6);
     EXPECT_NEAR(health.meanTipDisplacementM(), glm::length(bent.v2() - rest), 1e-6);
+}
+
+TEST(FieldHealth, LengthToleranceGrowsWithDistanceFromOrigin) {
+    const Blade nearOrigin = makeRestBlade({0, 0, 0}, {0, 1, 0}, 0.5f, 0.01f, 10.0f, 0.0f);
+    const Blade farAway = makeRestBlade({-1000, 2, 30}, {0, 1, 0}, 0.5f, 0.01f, 10.0f, 0.0f);
+    const float eps = std::numeric_limits<float>::epsilon();
+    EXPECT_FLOAT_EQ(lengthTolerance(nearOrigin), 1e-4f * 0.5f + 4.0f * eps * 0.5f);
+    EXPECT_FLOAT_EQ(lengthTolerance(farAway), 1e-4f * 0.5f + 4.0f * eps * 1000.5f);
+    // A blade stretched by twice its tolerance reads 2; a rest blade well under 1.
+    Blade stretched = nearOrigin;
+    const float scale = 1.0f + 2.0f * lengthTolerance(nearOrigin) / 0.5f;
+    stretched.v1H = glm::vec4(scale * glm::vec3(stretched.v1H), stretched.h());
+    stretched.v2W = glm::vec4(scale * glm::vec3(stretched.v2W), stretched.w());
+    const std::vector<Blade> blades{nearOrigin, stretched};
+    const std::vector<float> eta(2, 0.0f);
+    const FieldHealth health = measureHealth(blades, eta, restTips(blades));
+    EXPECT_NEAR(health.maxLengthErrorPerTolerance, 2.0, 1e-2);
+    const FieldHealth rest = measureHealth(std::span(blades).first(1), std::span(eta).first(1),
+                                           restTips(std::vector<Blade>{nearOrigin}));
+    EXPECT_LT(rest.maxLengthErrorPerTolerance, 0.1);
 }
 
 TEST(FieldHealth, AddCombinesLayers) {
@@ -55,12 +78,16 @@ TEST(FieldHealth, AddCombinesLayers) {
     b.sumTipDisplacementM = 0.2;
     b.maxTipDisplacementM = 0.1;
     b.maxRelLengthError = 1e-5;
+    b.sumRelLengthError = 4e-5;
+    b.maxLengthErrorPerTolerance = 0.2;
     a.add(b);
     EXPECT_EQ(a.blades, 4u);
     EXPECT_DOUBLE_EQ(a.crushedShare(), 0.25);
     EXPECT_DOUBLE_EQ(a.meanTipDisplacementM(), 0.3);
     EXPECT_DOUBLE_EQ(a.maxTipDisplacementM, 0.7);
     EXPECT_DOUBLE_EQ(a.maxRelLengthError, 1e-5);
+    EXPECT_DOUBLE_EQ(a.meanRelLengthError(), 1e-5);
+    EXPECT_DOUBLE_EQ(a.maxLengthErrorPerTolerance, 0.2);
 }
 
 }  // namespace

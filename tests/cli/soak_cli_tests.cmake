@@ -1,0 +1,38 @@
+# grass soak (issue 11): the bounded version of the hour-long soak, on the small windy project (400
+# blades, a vortex and a ball on one-second paths that soak drives forth and back). Included from
+# cli_tests.cmake, after grass_cli_test() and WINDY are defined. docs/soak.md has the full hour.
+
+grass_cli_test(soak_help OK --no-stderr
+    --stdout "^usage: grass soak" --stdout "^  --seconds S" --stdout "^  --backend"
+    --stdout "^  --sample-every S" --stdout "^  --report FILE" --stdout "1e-4\\*h"
+    -- ${GRASS_BIN} soak --help)
+
+# 5 minutes of game time at 60 Hz on the CPU (18 000 steps, ~15 s on one idle core) and 10 minutes
+# on the GPU (36 000 steps, ~12 s on llvmpipe), 10 samples each: every check passes and says so.
+set(SOAK_REPORT ${GRASS_CLI_TMP}/soak-windy.json)
+grass_cli_test(soak_windy_cpu OK
+    --stdout "^soak of windy: 300\\.000 s at dt 0\\.01667 s \\(18000 steps\\), wind 2 source\\(s\\), 1 collider sphere\\(s\\), 2 path\\(s\\) driven forth and back \\(longest period 2 s\\)$"
+    --stdout "^cpu \\(CPU reference, 1 thread\\): 18000 steps, 300\\.000 s simulated"
+    --stdout "^  length .* ok$" --stdout "^  nonfinite  0  ok$" --stdout "^  RSS .* ok$"
+    --stdout "^soak passed$" --stderr "^soak cpu: t = 300\\.0/300 s \\(100 %\\)"
+    --file ${SOAK_REPORT} "\"passed\": true"
+    -- ${GRASS_BIN} soak ${WINDY} --seconds 300 --sample-every 30 --backend cpu --threads 1
+       --report ${SOAK_REPORT})
+grass_cli_test(soak_windy_gpu GL OK
+    --stdout "^gpu \\(.*\\): 36000 steps, 600\\.000 s simulated"
+    --stdout "^  length .* ok$" --stdout "^  nonfinite  0  ok$" --stdout "^  RSS .* ok$"
+    --stdout "^  GL +before set-up none; after set-up [1-9].* buffers.*; after tear-down none  ok$"
+    --stdout "^soak passed$"
+    -- ${GRASS_BIN} soak ${WINDY} --seconds 600 --sample-every 60 --backend gpu)
+
+# Bad command lines fail before anything runs.
+grass_cli_test(soak_seconds_nan ERROR "--seconds" -- ${GRASS_BIN} soak ${WINDY} --seconds nan)
+grass_cli_test(soak_seconds_negative ERROR "--seconds" -- ${GRASS_BIN} soak ${WINDY} --seconds -60)
+grass_cli_test(soak_dt_zero ERROR "--dt" -- ${GRASS_BIN} soak ${WINDY} --dt 0)
+grass_cli_test(soak_sample_every_zero ERROR "--sample-every"
+    -- ${GRASS_BIN} soak ${WINDY} --sample-every 0)
+grass_cli_test(soak_backend_unknown ERROR "--backend" -- ${GRASS_BIN} soak ${WINDY} --backend tpu)
+grass_cli_test(soak_no_project ERROR "project" -- ${GRASS_BIN} soak)
+grass_cli_test(soak_report_folder_missing ERROR "no-such-folder"
+    --absent ${GRASS_CLI_TMP}/no-such-folder
+    -- ${GRASS_BIN} soak ${WINDY} --seconds 1 --report ${GRASS_CLI_TMP}/no-such-folder/s.json)
