@@ -1,6 +1,7 @@
 #include "mesh/surface_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <OpenMesh/Core/System/omstream.hh>
@@ -83,23 +84,26 @@ Bounds meshBounds(const SurfaceMesh& mesh) {
 }
 
 void computeAreaWeightedNormals(SurfaceMesh& mesh) {
-    std::vector<glm::vec3> sums(mesh.n_vertices(), glm::vec3(0.0f));
+    // In double: a cross product of finite float positions far from the origin (a glTF may
+    // hold 1e30) overflows float, and inf / inf would make the normal NaN (found by fuzzing).
+    std::vector<glm::dvec3> sums(mesh.n_vertices(), glm::dvec3(0.0));
     for (const auto fh : mesh.faces()) {
         SurfaceMesh::VertexHandle v[3];
         int i = 0;
         for (const auto vh : mesh.fv_range(fh))
             v[i++] = vh;
-        const glm::vec3 a = toGlm(mesh.point(v[0]));
-        const glm::vec3 b = toGlm(mesh.point(v[1]));
-        const glm::vec3 c = toGlm(mesh.point(v[2]));
-        const glm::vec3 weighted = glm::cross(b - a, c - a);  // length = 2·area
+        const glm::dvec3 a(toGlm(mesh.point(v[0])));
+        const glm::dvec3 b(toGlm(mesh.point(v[1])));
+        const glm::dvec3 c(toGlm(mesh.point(v[2])));
+        const glm::dvec3 weighted = glm::cross(b - a, c - a);  // length = 2·area
         for (const auto vh : v)
             sums[static_cast<std::size_t>(vh.idx())] += weighted;
     }
     for (const auto vh : mesh.vertices()) {
-        const glm::vec3 sum = sums[static_cast<std::size_t>(vh.idx())];
-        const float length = glm::length(sum);
-        const glm::vec3 n = length > 0.0f ? sum / length : glm::vec3(0, 1, 0);
+        const glm::dvec3 sum = sums[static_cast<std::size_t>(vh.idx())];
+        const double length = glm::length(sum);
+        const glm::vec3 n = length > 0.0 && std::isfinite(length) ? glm::vec3(sum / length)
+                                                                   : glm::vec3(0, 1, 0);
         mesh.set_normal(vh, OpenMesh::Vec3f(n.x, n.y, n.z));
     }
 }

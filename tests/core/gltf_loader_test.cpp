@@ -244,6 +244,24 @@ TEST(GltfLoader, NegativeScaleKeepsOutwardWindingAndNormals) {
     }
 }
 
+// Found by fuzzing (tests/fuzz/regressions/glb/): finite positions far from the origin overflow
+// a float cross product, and the computed normals came out NaN.
+TEST(GltfLoader, ComputedNormalsStayFiniteForHugeCoordinates) {
+    const fs::path dir = test::scratchDir("gltf_huge");
+    const fs::path file = dir / "huge.gltf";
+    test::GltfPrimitive triangle;
+    triangle.positions = {{0.0f, 0.0f, 0.0f}, {3e30f, 0.0f, 0.0f}, {0.0f, 0.0f, -3e30f}};
+    test::writeGltf(file, test::singleMeshAsset(triangle));
+    const GltfImport import = loadOk(file);
+    ASSERT_FALSE(import.hasNormals);
+    for (const auto vh : import.mesh.vertices()) {
+        const auto normal = import.mesh.normal(vh);
+        EXPECT_NEAR(normal[0], 0.0f, 1e-6f);
+        EXPECT_NEAR(normal[1], 1.0f, 1e-6f);
+        EXPECT_NEAR(normal[2], 0.0f, 1e-6f);
+    }
+}
+
 TEST(GltfLoader, LoadsGlbLikeTheSameGltf) {
     const fs::path dir = test::scratchDir("gltf_glb");
     const GltfAsset asset = hierarchyAsset();
