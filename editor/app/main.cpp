@@ -17,6 +17,7 @@
 #include <epoxy/gl.h>
 
 #include "autosave.h"
+#include "debug_output.h"
 #include "edit_actions.h"
 #include "editor_ui.h"
 #include "framebuffer.h"
@@ -144,6 +145,9 @@ int main(int argc, char** argv) {
                 "take back an autosave left by a session that did not close cleanly without "
                 "asking (otherwise a window offers it)",
                 &recover);
+    bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
+    parser.flag("--gl-debug", "print GL debug output (driver errors and warnings) to stderr",
+                &glDebug);
     parser.flag("--no-physics",
                 "show the field at rest (by default gravity, wind and colliders run live on the "
                 "GPU, one physics step of the project's step_s per elapsed step, at most 4 per "
@@ -183,7 +187,7 @@ int main(int argc, char** argv) {
     const core::Project& project = state.loaded.project;
 
     auto window = editor::Window::create(project.render.width, project.render.height,
-                                         "grass — " + project.name);
+                                         "grass — " + project.name, glDebug);
     if (!window)
         return fail(window.error().message);
     auto camera = render::projectCamera(project, "");

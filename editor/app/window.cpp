@@ -69,7 +69,8 @@ static void onGlfwError(int, const char*) {
     // Reported through Result by create(); GLFW's own message would be a second line.
 }
 
-Result<std::unique_ptr<Window>> Window::create(int width, int height, const std::string& title) {
+Result<std::unique_ptr<Window>> Window::create(int width, int height, const std::string& title,
+                                               bool debugOutput) {
     glfwSetErrorCallback(onGlfwError);
     if (!glfwInit())
         return makeError("grass-editor",
@@ -80,7 +81,7 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, gl::GL_DEBUG_BY_DEFAULT ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debugOutput ? GLFW_TRUE : GLFW_FALSE);
     GLFWwindow* handle = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!handle) {
         const char* why = nullptr;
@@ -100,7 +101,8 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
     glfwSetCursorEnterCallback(handle, WindowCallbacks::enter);
     glfwMakeContextCurrent(handle);
     glfwSwapInterval(1);
-    if (gl::GL_DEBUG_BY_DEFAULT) gl::enableDebugOutput();
+    if (debugOutput)
+        gl::enableDebugOutput();
     glfwGetCursorPos(handle, &window->mInput.cursorX, &window->mInput.cursorY);
     return window;
 }

@@ -42,8 +42,10 @@ struct InputState {
 
 class Window {
 public:
-    // The error says there is no display and how to render without one.
-    static Result<std::unique_ptr<Window>> create(int width, int height, const std::string& title);
+    // The error says there is no display and how to render without one. `debugOutput` asks for
+    // a debug context whose messages go to stderr (gl/debug_output.h).
+    static Result<std::unique_ptr<Window>> create(int width, int height, const std::string& title,
+                                                  bool debugOutput);
     ~Window();
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;

@@ -8,3 +8,19 @@ add_test(NAME cli.kill_during_save
                  ${GRASS_CLI_PROJECTS}/growth_tiny ${GRASS_CLI_TMP}/kill-save 25 12)
 set_tests_properties(cli.kill_during_save PROPERTIES LABELS cli TIMEOUT 300
     PASS_REGULAR_EXPRESSION "^paint: 25 runs .*\nexport: 12 runs ")
+
+# The editor's autosave survives a kill: 10 painting sessions SIGKILLed at random moments, each
+# next one recovering the autosave (kill_autosave_test.sh); under Xvfb, about a minute.
+if(TARGET grass-editor)
+    find_program(GRASS_XVFB_RUN xvfb-run)
+    if(NOT GRASS_XVFB_RUN)
+        set(GRASS_XVFB_RUN xvfb-run)  # fails with "not found": never a silent skip
+    endif()
+    add_test(NAME cli.kill_during_autosave
+             COMMAND ${GRASS_XVFB_RUN} -a -s "-screen 0 1024x768x24"
+                     ${GRASS_BASH} ${GRASS_CLI_DIR}/kill_autosave_test.sh
+                     $<TARGET_FILE:grass-editor> ${GRASS_BIN} ${GRASS_CLI_TMP}/kill-autosave 10)
+    set_tests_properties(cli.kill_during_autosave PROPERTIES LABELS "cli;gl" TIMEOUT 400
+        PASS_REGULAR_EXPRESSION "autosave: 10 sessions killed"
+        ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
+endif()

@@ -58,11 +58,16 @@ float lowestSavedDensity(const std::filesystem::path& dir) {
     return lowest;
 }
 
+// Runs the editor with GL debug output on; any GL error it reports fails the test.
 int runEditor(const std::filesystem::path& dir, const std::string& arguments) {
     const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' " +
-                                std::string(GRASS_EDITOR_EXE) + " " + arguments + " > " +
-                                (dir / "log.txt").string() + " 2>&1";
-    return std::system(command.c_str());
+                                std::string(GRASS_EDITOR_EXE) + " --gl-debug " + arguments +
+                                " > " + (dir / "log.txt").string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    std::ifstream log(dir / "log.txt");
+    for (std::string line; std::getline(log, line);)
+        EXPECT_EQ(line.find("GL error:"), std::string::npos) << line;
+    return status;
 }
 
 TEST(EditorScript, AStrokeUndoRedoAndSaveReplayedUnderXvfb) {

@@ -1,5 +1,7 @@
 #include "gl_context_fixture.h"
 
+#include "debug_output.h"
+
 namespace grass::test {
 
 std::unique_ptr<gl::HeadlessContext>& GlTest::context() {
@@ -24,6 +26,13 @@ void GlTest::SetUpTestSuite() {
 
 void GlTest::SetUp() {
     ASSERT_TRUE(context()) << "no headless OpenGL 4.5 context: " << contextError();
+    mDebugErrorsAtStart = gl::debugOutputCounts().errors;
+}
+
+void GlTest::TearDown() {
+    const gl::DebugOutputCounts counts = gl::debugOutputCounts();
+    EXPECT_EQ(counts.errors, mDebugErrorsAtStart)
+        << "GL debug output reported errors during the test; the latest: " << counts.lastError;
 }
 
 double grassPixelShare(const std::vector<std::uint8_t>& rgba) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <memory>
 
 #include "headless_context.h"
@@ -14,8 +15,14 @@ class GlTest : public ::testing::Test {
 protected:
     static void SetUpTestSuite();
     void SetUp() override;
+    // Fails the test when GL debug output reported an error during it (the context is created
+    // with debug output on): a GL error is a bug even when the pixels come out right.
+    void TearDown() override;
     static std::unique_ptr<gl::HeadlessContext>& context();
     static std::string& contextError();
+
+private:
+    std::uint64_t mDebugErrorsAtStart = 0;
 };
 
 // Share of pixels whose colour is grass-like: green clearly above red and blue.
