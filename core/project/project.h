@@ -142,6 +142,13 @@ struct BillboardDesc {
     bool operator==(const BillboardDesc&) const = default;
 };
 
+// Bytes of GPU frame buffers one render of width × height pixels takes: colour (RGBA8) and depth
+// (32-bit float) per sample, the resolved colour, a depth texture and the read-back image
+// (editor/gl/framebuffer.cpp). Project loading and `grass render` refuse renders above
+// MAX_FRAMEBUFFER_BYTES before any buffer is made: 16384² at 2 samples fits, at 4 it does not.
+double framebufferBytes(int width, int height, int msaaSamples);
+inline constexpr double MAX_FRAMEBUFFER_BYTES = 8.0 * 1024.0 * 1024.0 * 1024.0;
+
 struct RenderSettings {
     int width = 1280;
     int height = 720;

@@ -8,8 +8,10 @@
 #include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "project/project_json_parts.h"
+#include "util/byte_size.h"
 
 namespace grass::core {
 
@@ -99,6 +101,50 @@ void readMesh(json::Reader& reader, const Json& node, MeshSource& mesh) {
     object.readUint64("noise_seed", params.noiseSeed);
 }
 
+// [width, height] of a layer's maps; a side beyond the limit is refused with the memory the map
+// would take (float texels), since each map of the layer is allocated at this size.
+void readMapResolution(json::Reader& reader, const json::Object& object, glm::ivec2& resolution) {
+    const Json* size = object.find("map_resolution");
+    if (!size)
+        return;
+    const std::string at = object.pointerTo("map_resolution");
+    if (!size->is_array() || size->size() != 2) {
+        reader.fail(at, "must be an array of 2 integers [width, height] (got " +
+                            json::describeValue(*size) + ")");
+        return;
+    }
+    const auto side = [&](std::size_t i) {
+        const Json& value = (*size)[i];
+        return value.is_number_integer() ? value.get<double>() : 0.0;
+    };
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (side(i) <= MAX_MAP_RESOLUTION)
+            continue;
+        const double width = side(0) > 0.0 ? side(0) : side(1);
+        const double height = side(1) > 0.0 ? side(1) : side(0);
+        const auto texels = [](double w, double h) {
+            char text[64];
+            std::snprintf(text, sizeof text, "%.0f×%.0f", w, h);
+            return std::string(text);
+        };
+        const auto bytes = [](double w, double h) {
+            return byteSizeText(w * h * static_cast<double>(sizeof(float)));
+        };
+        const auto limit = static_cast<double>(MAX_MAP_RESOLUTION);
+        reader.fail(json::childPointer(at, i),
+                    "must be an integer in 1.." + std::to_string(MAX_MAP_RESOLUTION) + " (got " +
+                        json::describeValue((*size)[i]) + ": a " + texels(width, height) +
+                        " map would take " + bytes(width, height) +
+                        " of float texels; the limit, " + texels(limit, limit) + ", takes " +
+                        bytes(limit, limit) + ")");
+        return;
+    }
+    std::int64_t width = 0, height = 0;
+    if (reader.readInt((*size)[0], json::childPointer(at, 0), 1, MAX_MAP_RESOLUTION, width) &&
+        reader.readInt((*size)[1], json::childPointer(at, 1), 1, MAX_MAP_RESOLUTION, height))
+        resolution = {static_cast<int>(width), static_cast<int>(height)};
+}
+
 void readLayer(json::Reader& reader, const Json& node, const std::string& pointer,
                GrassLayer& layer) {
     json::Object object(reader, node, pointer, LAYER_KEYS);
@@ -113,18 +159,7 @@ void readLayer(json::Reader& reader, const Json& node, const std::string& pointe
     readMapPath("density_map", layer.densityMap);
     readMapPath("soil_map", layer.soilMap);
     readMapPath("light_map", layer.lightMap);
-    if (const Json* size = object.find("map_resolution")) {
-        std::int64_t width = 0, height = 0;
-        const std::string at = object.pointerTo("map_resolution");
-        if (!size->is_array() || size->size() != 2)
-            reader.fail(at, "must be an array of 2 integers [width, height] (got " +
-                                json::describeValue(*size) + ")");
-        else if (reader.readInt((*size)[0], json::childPointer(at, 0), 1, MAX_MAP_RESOLUTION,
-                                width) &&
-                 reader.readInt((*size)[1], json::childPointer(at, 1), 1, MAX_MAP_RESOLUTION,
-                                height))
-            layer.mapResolution = {static_cast<int>(width), static_cast<int>(height)};
-    }
+    readMapResolution(reader, object, layer.mapResolution);
     object.readFloat("clump_spacing", json::NON_NEGATIVE, scatter.clumpSpacing);
     object.readInt("blades_per_clump", 0, MAX_BLADES_PER_CLUMP, scatter.bladesPerClump);
     object.readFloat("clump_radius", json::NON_NEGATIVE, scatter.clumpRadius);
@@ -210,6 +245,14 @@ void readRender(json::Reader& reader, const Json& node, RenderSettings& render) 
     }
     object.readFloat("lod_distance", DISTANCE_OR_OFF, render.lodDistanceM);
     object.readFloat("thinning_distance", DISTANCE_OR_OFF, render.thinningDistanceM);
+    const double bytes = framebufferBytes(render.width, render.height, render.msaaSamples);
+    if (reader.ok() && bytes > MAX_FRAMEBUFFER_BYTES)
+        reader.fail("/render",
+                    "width × height at msaa must fit the frame buffer limit, " +
+                        byteSizeText(MAX_FRAMEBUFFER_BYTES) + " (got " +
+                        std::to_string(render.width) + "×" + std::to_string(render.height) +
+                        " at " + std::to_string(render.msaaSamples) +
+                        " samples: " + byteSizeText(bytes) + "): lower width, height or msaa");
 }
 
 void readHeader(json::Reader& reader, const Json& root) {
@@ -393,6 +436,15 @@ void json::checkAssetPath(json::Reader& reader, const std::string& pointer,
     const auto resolved = resolveAssetPath({}, path, pointer);
     if (!resolved)
         reader.fail(pointer, resolved.error().message);
+}
+
+double framebufferBytes(int width, int height, int msaaSamples) {
+    // RGBA8 + DEPTH_COMPONENT32F per sample; resolved RGBA8, depth texture, read-back RGBA8.
+    constexpr double BYTES_PER_SAMPLE = 4.0 + 4.0;
+    constexpr double BYTES_PER_PIXEL = 4.0 + 4.0 + 4.0;
+    const double samples = std::max(1, msaaSamples);
+    return static_cast<double>(width) * static_cast<double>(height) *
+           (BYTES_PER_SAMPLE * samples + BYTES_PER_PIXEL);
 }
 
 std::string_view geometryPathName(GeometryPath path) {

@@ -8,6 +8,7 @@
 #include "mesh/gltf_loader.h"
 #include "mesh/procedural.h"
 #include "scene/camera.h"
+#include "util/byte_size.h"
 #include "util/rng.h"
 
 namespace grass::core {
@@ -35,6 +36,72 @@ double estimateLayerBlades(const ScatterParams& params, double area) {
     return blades;
 }
 
+std::size_t sceneBytesPerBlade() {
+    // The candidate (blade, uv, thinning), the grown slot (blade, wilt, shading), the physics
+    // state (η, rest tip) and the GPU copy (blade, shading).
+    return sizeof(Blade) + sizeof(glm::vec2) + sizeof(CandidateThinning) + sizeof(Blade) +
+           sizeof(float) + sizeof(BladeShading) + sizeof(float) + sizeof(glm::vec3) +
+           sizeof(Blade) + sizeof(BladeShading);
+}
+
+std::size_t sceneBytesPerBillboard() {
+    // The object, its star's vertices on the CPU and the GPU, and its indices.
+    return sizeof(GrassObject) + 2 * STAR_VERTICES_PER_OBJECT * sizeof(StarVertex) +
+           STAR_INDICES_PER_OBJECT * sizeof(std::uint32_t);
+}
+
+// "4e+08", "1600", "0.25": 3 significant digits for messages.
+static std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
+// Up front, before a blade or billboard is allocated: a typo'd density (or a 100 km mesh) is
+// refused with what it would have needed, instead of running the machine out of memory.
+static Result<void> refuseHugeScene(const LoadedProject& loaded, double area) {
+    const Project& project = loaded.project;
+    if (!std::isfinite(area))
+        return Error{loaded.file.string(), "/mesh: the surface area must be finite (got " +
+                                               number(area) + " m²): lower size or hill_height"};
+    double total = 0.0;
+    for (std::size_t i = 0; i < project.layers.size(); ++i) {
+        const ScatterParams& scatter = project.layers[i].scatter;
+        const double blades = estimateLayerBlades(scatter, area);
+        total += blades;
+        // Written so that a NaN estimate is refused too.
+        if (total <= MAX_SCENE_BLADES)
+            continue;
+        std::string asks = "density " + number(scatter.density) + " /m²";
+        if (scatter.clumpSpacing > 0.0f && scatter.bladesPerClump > 0)
+            asks += " and clumps of " + std::to_string(scatter.bladesPerClump) + " blades " +
+                    number(scatter.clumpSpacing) + " m apart";
+        const double bytes = blades * static_cast<double>(sceneBytesPerBlade());
+        return Error{
+            loaded.file.string(),
+            "/layers/" + std::to_string(i) + ": " + asks + " on " + number(area) +
+                " m² of surface asks for about " + number(blades) + " blades, " +
+                byteSizeText(bytes) + " of blade data; the limit is " +
+                number(MAX_SCENE_BLADES / 1e6) + " million blades per scene (" +
+                byteSizeText(MAX_SCENE_BLADES * static_cast<double>(sceneBytesPerBlade())) +
+                "): lower density, raise clump_spacing, lower blades_per_clump or shrink the "
+                "/mesh"};
+    }
+    const float density = project.billboards.placement.density;
+    const double objects = static_cast<double>(density) * area;
+    if (!(objects <= MAX_SCENE_BILLBOARDS)) {
+        const auto perObject = static_cast<double>(sceneBytesPerBillboard());
+        return Error{loaded.file.string(),
+                     "/billboards/density: " + number(density) + " /m² on " + number(area) +
+                         " m² of surface asks for about " + number(objects) + " billboards, " +
+                         byteSizeText(objects * perObject) + "; the limit is " +
+                         number(MAX_SCENE_BILLBOARDS / 1e6) + " million per scene (" +
+                         byteSizeText(MAX_SCENE_BILLBOARDS * perObject) +
+                         "): lower it (0 when the technique draws no billboards)"};
+    }
+    return {};
+}
+
 Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes) {
     const MeshSource& source = loaded.project.mesh;
     if (!source.isFile)
@@ -59,20 +126,8 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
     scene.area = surfaceArea(scene.mesh);
     scene.notes = std::move(notes);
     const Project& project = loaded.project;
-    double total = 0.0;
-    for (std::size_t i = 0; i < project.layers.size(); ++i) {
-        const double blades = estimateLayerBlades(project.layers[i].scatter, scene.area);
-        total += blades;
-        if (total > MAX_SCENE_BLADES) {
-            char message[256];
-            std::snprintf(message, sizeof message,
-                          "/layers/%zu: would grow about %.3g blades on %.4g m² of surface "
-                          "(limit %.0f million per scene): lower density, or raise clump_spacing "
-                          "or lower blades_per_clump",
-                          i, blades, scene.area, MAX_SCENE_BLADES / 1e6);
-            return Error{loaded.file.string(), message};
-        }
-    }
+    if (auto refused = refuseHugeScene(loaded, scene.area); !refused)
+        return refused.error();
     for (std::size_t i = 0; i < project.layers.size(); ++i) {
         const GrassLayer& layer = project.layers[i];
         LayerField field;

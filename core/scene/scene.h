@@ -55,9 +55,16 @@ struct Scene {
     std::size_t totalBlades() const;
 };
 
-// The most blades one scene may hold: 64 bytes each on the GPU plus the CPU copy, so 20 million
-// is ~2.6 GB; far beyond that a typo in a density would freeze the machine instead of failing.
+// The most blades one scene may hold: with the CPU copies, the GPU copy and the physics state,
+// sceneBytesPerBlade() each (292 bytes), 20 million is ~5.4 GiB; far beyond that a typo in a
+// density would freeze the machine instead of failing. buildScene refuses more up front, naming
+// the layer, the blade count and the memory it would need.
 inline constexpr double MAX_SCENE_BLADES = 20.0e6;
+std::size_t sceneBytesPerBlade();
+// The most star billboards (SPEC §8) one scene may hold: ~1.2 kB each with their star mesh, so
+// ~2.4 GiB; 1000 /m² (the density limit) on 2000 m² of surface.
+inline constexpr double MAX_SCENE_BILLBOARDS = 2.0e6;
+std::size_t sceneBytesPerBillboard();
 
 // Upper estimate of the blades a layer grows on `area` m²: uniform density × area plus, for
 // clumps, the densest Poisson-disk packing (hexagonal, 2/(√3·spacing²) centres per m²).

@@ -9,13 +9,14 @@
 #include "headless_context.h"
 #include "mesh/gltf_loader.h"
 #include "offscreen_render.h"
-#include "turntable_files.h"
+#include "preset_option.h"
 #include "scene/scene_physics.h"
 #include "scene/turntable.h"
 #include "simulation_runner.h"
-#include "preset_option.h"
+#include "turntable_files.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
+#include "util/byte_size.h"
 #include "util/image_file.h"
 
 namespace grass::cli {
@@ -42,6 +43,22 @@ struct RenderArgs {
     bool snow = false;
 };
 
+// The frame buffers of the image asked for (--width/--height/--msaa over the project's) must fit
+// core::MAX_FRAMEBUFFER_BYTES: refused before the scene is grown or a GL context is made.
+Result<void> checkFramebuffer(const RenderArgs& args, const core::RenderSettings& settings) {
+    const int width = args.width > 0 ? args.width : settings.width;
+    const int height = args.height > 0 ? args.height : settings.height;
+    const int samples = args.msaa == "project" ? settings.msaaSamples : std::stoi(args.msaa);
+    const double bytes = core::framebufferBytes(width, height, samples);
+    if (bytes <= core::MAX_FRAMEBUFFER_BYTES)
+        return {};
+    return makeError(
+        "--width/--height/--msaa",
+        std::to_string(width) + "×" + std::to_string(height) + " at " + std::to_string(samples) +
+            " samples needs " + byteSizeText(bytes) + " of frame buffers; the limit is " +
+            byteSizeText(core::MAX_FRAMEBUFFER_BYTES) + ": lower the size or the samples");
+}
+
 Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& parser,
                                       core::Scene* scene) {
     if (!args.mesh.empty()) {
@@ -53,6 +70,8 @@ Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& p
         if (!loaded)
             return loaded.error();
         applyPresetOption(args.preset, loaded->project);
+        if (auto fits = checkFramebuffer(args, loaded->project.render); !fits)
+            return fits.error();
         std::vector<std::string> notes;
         for (auto& note : imported->notes)
             notes.push_back(args.mesh + ": " + note);
@@ -68,6 +87,8 @@ Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& p
     if (parser.given("--seed"))
         loaded->project.seed = args.seed;
     applyPresetOption(args.preset, loaded->project);
+    if (auto fits = checkFramebuffer(args, loaded->project.render); !fits)
+        return fits.error();
     auto built = core::buildScene(*loaded);
     if (!built)
         return built.error();

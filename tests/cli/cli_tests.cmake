@@ -230,10 +230,10 @@ grass_cli_test(render_project_infinite_density ERROR "/layers/0/density" --absen
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/inf_density --out ${OUT})
 grass_cli_test(render_project_negative_density ERROR "/layers/0/density" --absent ${OUT}
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/negative_density --out ${OUT})
-# 1e8 blades/m² on 4 m² is 4e8 blades: refused with a message naming the layer, not grown
-# for minutes into gigabytes. DISABLED until the project loader or the scatter has a limit
-# (today it runs past 60 s and 3.8 GB); enable it with the fix.
-grass_cli_test(render_project_density_too_high ERROR "/layers/0" --absent ${OUT}
+# 1e8 blades/m² on 4 m² is 4e8 blades: refused before scattering, with a message naming the
+# layer, the blade count and the memory it would need, not grown for minutes into gigabytes.
+grass_cli_test(render_project_density_too_high ERROR "/layers/0" --also "4e+08 blades"
+    --also "GiB of blade data" --absent ${OUT}
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/huge_density --out ${OUT})
 set_tests_properties(cli.render_project_density_too_high PROPERTIES
                      ENVIRONMENT GRASS_CLI_TIMEOUT=30)
@@ -286,4 +286,5 @@ include(${GRASS_CLI_DIR}/turntable_cli_tests.cmake)
 include(${GRASS_CLI_DIR}/bench_cli_tests.cmake)
 include(${GRASS_CLI_DIR}/preset_cli_tests.cmake)
 include(${GRASS_CLI_DIR}/reliability_cli_tests.cmake)
+include(${GRASS_CLI_DIR}/extreme_cli_tests.cmake)
 include(${GRASS_CLI_DIR}/soak_cli_tests.cmake)

@@ -289,6 +289,30 @@ TEST(MapImage, BadFilesGiveOneLineErrorsNamingTheFile) {
     expectOneLineErrorNaming(loadMapImage(dir / "zero.png"), "zero.png", "0×0 header");
 }
 
+// A header claiming 65536×65536 (16 GiB as float texels) is refused from the header alone, with
+// the memory it would take: the file holds one pixel, so nothing of that size is ever allocated.
+TEST(MapImage, HugeHeaderIsRefusedBeforeDecoding) {
+    const ScratchFolder dir("huge");
+    ASSERT_TRUE(saveMapImage(makeConstantMap(1, 1, 0.5f), dir / "huge.png").ok());
+    std::vector<char> png = readBytes(dir / "huge.png");
+    ASSERT_GT(png.size(), 33u);
+    ASSERT_EQ(std::string(&png[12], 4), "IHDR");
+    // Width and height, big-endian 0x00010000 = 65536, at offsets 16 and 20.
+    for (std::size_t at : {16u, 20u}) {
+        png[at] = png[at + 2] = png[at + 3] = '\0';
+        png[at + 1] = '\1';
+    }
+    const std::uint32_t crc = crc32(png, 12, 17);
+    for (int i = 0; i < 4; ++i)
+        png[29 + static_cast<std::size_t>(i)] = static_cast<char>((crc >> (24 - 8 * i)) & 0xFFu);
+    writeBytes(dir / "huge.png", png);
+    const Result<MapImage> huge = loadMapImage(dir / "huge.png");
+    expectOneLineErrorNaming(huge, "huge.png", "65536² header");
+    ASSERT_FALSE(huge.ok());
+    for (const char* part : {"65536×65536", "16 GiB", "16384×16384", "1 GiB", "before decoding"})
+        EXPECT_NE(huge.error().message.find(part), std::string::npos) << huge.error().str();
+}
+
 // A zero size is refused at every door: nothing to save, no size to load at, and asking
 // resampleMap for one is a bug in the caller (GRASS_ASSERT).
 TEST(MapImage, ZeroSizesAreRefused) {
