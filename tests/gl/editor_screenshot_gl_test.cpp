@@ -32,10 +32,11 @@ TEST_F(EditorScreenshotTest, WindowUnderXvfbShowsWhatHeadlessRenderShows) {
 })";
     const std::string shot = (dir / "window.png").string();
     const std::string command = "xvfb-run -a -s '-screen 0 640x480x24' " +
-                                std::string(GRASS_EDITOR_EXE) + " " + dir.string() +
+                                std::string(GRASS_EDITOR_EXE) + " --gl-debug " + dir.string() +
                                 " --no-ui --screenshot " + shot + " --frames 2 > " +
                                 (dir / "log.txt").string() + " 2>&1";
     const int status = std::system(command.c_str());
+    expectNoGlErrorLines(dir / "log.txt");
     ASSERT_EQ(status, 0) << command << "\n(see " << (dir / "log.txt")
                          << "; needs the xvfb package)";
     auto window = readRgba8Image(shot);
@@ -99,10 +100,11 @@ TEST_F(EditorScreenshotTest, WindowShowsSidePanelAndGrassViewport) {
 })";
     const std::string shot = (dir / "window.png").string();
     const std::string command = "xvfb-run -a -s '-screen 0 1280x720x24' " +
-                                std::string(GRASS_EDITOR_EXE) + " " + dir.string() +
+                                std::string(GRASS_EDITOR_EXE) + " --gl-debug " + dir.string() +
                                 " --screenshot " + shot + " --frames 3 > " +
                                 (dir / "log.txt").string() + " 2>&1";
     const int status = std::system(command.c_str());
+    expectNoGlErrorLines(dir / "log.txt");
     ASSERT_EQ(status, 0) << command << "\n(see " << (dir / "log.txt") << ")";
     auto window = readRgba8Image(shot);
     ASSERT_TRUE(window.ok()) << window.error().str();

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "gl_context_fixture.h"
 #include "maps/map_image.h"
 #include "project/project.h"
 #include "support/test_paths.h"
@@ -64,9 +65,7 @@ int runEditor(const std::filesystem::path& dir, const std::string& arguments) {
                                 std::string(GRASS_EDITOR_EXE) + " --gl-debug " + arguments +
                                 " > " + (dir / "log.txt").string() + " 2>&1";
     const int status = std::system(command.c_str());
-    std::ifstream log(dir / "log.txt");
-    for (std::string line; std::getline(log, line);)
-        EXPECT_EQ(line.find("GL error:"), std::string::npos) << line;
+    expectNoGlErrorLines(dir / "log.txt");
     return status;
 }
 

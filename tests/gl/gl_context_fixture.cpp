@@ -1,5 +1,8 @@
 #include "gl_context_fixture.h"
 
+#include <fstream>
+#include <string>
+
 #include "debug_output.h"
 
 namespace grass::test {
@@ -33,6 +36,13 @@ void GlTest::TearDown() {
     const gl::DebugOutputCounts counts = gl::debugOutputCounts();
     EXPECT_EQ(counts.errors, mDebugErrorsAtStart)
         << "GL debug output reported errors during the test; the latest: " << counts.lastError;
+}
+
+void expectNoGlErrorLines(const std::filesystem::path& log) {
+    std::ifstream file(log);
+    EXPECT_TRUE(file.good()) << "cannot read " << log;
+    for (std::string line; std::getline(file, line);)
+        EXPECT_EQ(line.find("GL error:"), std::string::npos) << log << ": " << line;
 }
 
 double grassPixelShare(const std::vector<std::uint8_t>& rgba) {

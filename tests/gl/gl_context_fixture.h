@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 
 #include "headless_context.h"
@@ -24,6 +25,10 @@ protected:
 private:
     std::uint64_t mDebugErrorsAtStart = 0;
 };
+
+// For the editor run as a process with --gl-debug: fails the test for every "GL error:" line
+// of its log (debug_output.cpp's format).
+void expectNoGlErrorLines(const std::filesystem::path& log);
 
 // Share of pixels whose colour is grass-like: green clearly above red and blue.
 double grassPixelShare(const std::vector<std::uint8_t>& rgba);
