@@ -41,8 +41,16 @@ function(grass_cli_test name)
     if(ARG_GL)
         list(APPEND labels gl)
     endif()
-    set_tests_properties(cli.${name} PROPERTIES LABELS "${labels}" TIMEOUT 150
-        ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
+    # A sanitizer build (Debug, ASan + UBSan) runs a command several times slower: the soaks
+    # take minutes there, so the bound on one command grows from 120 s to 600 s.
+    set(timeout 150)
+    set(environment "${GRASS_GL_TEST_ENV_MODIFICATION}")
+    if(GRASS_SANITIZE)
+        set(timeout 700)
+        list(APPEND environment "GRASS_CLI_TIMEOUT=set:600")
+    endif()
+    set_tests_properties(cli.${name} PROPERTIES LABELS "${labels}" TIMEOUT ${timeout}
+        ENVIRONMENT_MODIFICATION "${environment}")
 endfunction()
 
 # The drivers catch what they claim to catch (success, crash, hang, extra lines, ...).
