@@ -3,7 +3,8 @@
 #   ./quickstart.sh run    opens the editor on projects/meadow (or, with no display, renders it
 #                          headless after 5 s of its physics to build/meadow.png, with timings)
 #   ./quickstart.sh test   runs the whole test suite (what CI runs: .ci/run), then fuzzes every
-#                          file reader for a bounded time (tests/fuzz/README.md)
+#                          file reader for a bounded time (tests/fuzz/README.md) and runs the
+#                          unit tests again under AddressSanitizer and UBSan
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -67,14 +68,21 @@ ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600 || status=1
 # Every file reader under libFuzzer (tests/fuzz/README.md): core built again with clang, ASan,
 # UBSan and coverage in build-fuzz/; the kept regression inputs and seeds run once, then each
 # target is fuzzed for GRASS_FUZZ_SECONDS (default 20 s: 9 targets, $jobs at a time). Any
-# crash, leak, hang or sanitizer report fails the suite.
+# crash, leak, hang or sanitizer report fails the suite. The same build then runs the unit tests.
 fuzz_seconds="${GRASS_FUZZ_SECONDS:-20}"
 echo "== fuzzing the file readers (build-fuzz/, clang, ${fuzz_seconds} s per target)"
 if cmake -S tests/fuzz -B build-fuzz -G Ninja -DCMAKE_C_COMPILER=clang \
     -DCMAKE_CXX_COMPILER=clang++ >/dev/null && cmake --build build-fuzz -j "$jobs"; then
   tests/fuzz/run_fuzz.sh -j "$jobs" build-fuzz "$fuzz_seconds" || status=1
+  # The same build holds the unit tests of core and ui (no GL) under these sanitizers; the whole
+  # suite, GL and command line included, runs under them in .ci/sanitize.
+  echo "== the unit tests under AddressSanitizer, LeakSanitizer and UBSan (build-fuzz/)"
+  mkdir -p build-fuzz/test-tmp
+  GRASS_TEST_TMP="$PWD/build-fuzz/test-tmp" UBSAN_OPTIONS=print_stacktrace=1 \
+    LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0" \
+    build-fuzz/bin/sanitized_unit_tests --gtest_brief=1 || status=1
 else
-  echo "fuzz build failed" >&2
+  echo "fuzz and sanitizer build failed" >&2
   status=1
 fi
 exit "$status"

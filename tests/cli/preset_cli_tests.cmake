@@ -64,3 +64,6 @@ set_tests_properties(cli.tradeoff_replot_project_setup PROPERTIES LABELS cli
 grass_cli_test(tradeoff_replot_not_tradeoff ERROR "not-tradeoff/tradeoff.json" --also "knobs"
     -- ${GRASS_BIN} tradeoff --replot ${GRASS_CLI_TMP}/not-tradeoff)
 set_tests_properties(cli.tradeoff_replot_not_tradeoff PROPERTIES FIXTURES_REQUIRED replot_project)
+# --msaa takes the sample counts render and bench take; 3 is refused before anything is measured.
+grass_cli_test(tradeoff_msaa_three ERROR "--msaa" --also "1|2|4|8"
+    -- ${GRASS_BIN} tradeoff ${GRASS_CLI_PROJECTS}/tiny --msaa 3)

@@ -12,20 +12,33 @@ grass_cli_test(soak_help OK --no-stderr
 set(SOAK_REPORT ${GRASS_CLI_TMP}/soak-windy.json)
 grass_cli_test(soak_windy_cpu OK
     --stdout "^soak of windy: 300\\.000 s at dt 0\\.01667 s \\(18000 steps\\), wind 2 source\\(s\\), 1 collider sphere\\(s\\), 2 path\\(s\\) driven forth and back \\(longest period 2 s\\)$"
-    --stdout "^cpu \\(CPU reference, 1 thread\\): 18000 steps, 300\\.000 s simulated"
+    --stdout "^cpu \\(CPU reference, 1 thread\\): 400 blades, 18000 steps, 300\\.000 s simulated"
     --stdout "^  length .* ok$" --stdout "^  nonfinite  0  ok$" --stdout "^  RSS .* ok$"
     --stdout "^soak passed$" --stderr "^soak cpu: t = 300\\.0/300 s \\(100 %\\)"
     --file ${SOAK_REPORT} "\"passed\": true"
     -- ${GRASS_BIN} soak ${WINDY} --seconds 300 --sample-every 30 --backend cpu --threads 1
        --report ${SOAK_REPORT})
 grass_cli_test(soak_windy_gpu GL OK
-    --stdout "^gpu \\(.*\\): 36000 steps, 600\\.000 s simulated"
+    --stdout "^gpu \\(.*\\): 400 blades, 36000 steps, 600\\.000 s simulated"
     --stdout "^  length .* ok$" --stdout "^  nonfinite  0  ok$" --stdout "^  RSS .* ok$"
     --stdout "^  GL +before set-up none; after set-up [1-9].* buffers.*; after tear-down none  ok$"
     --stdout "^soak passed$"
     -- ${GRASS_BIN} soak ${WINDY} --seconds 600 --sample-every 60 --backend gpu)
 
+# --density-scale thins the field (how projects/nature's hour fits a slow machine, docs/soak.md):
+# windy at a quarter of its density grows fewer blades, and the report says the scale.
+set(SOAK_THIN_REPORT ${GRASS_CLI_TMP}/soak-windy-thin.json)
+grass_cli_test(soak_density_scale OK
+    --stdout "^cpu \\(CPU reference, 1 thread\\): 100 blades, 60 steps"
+    --stdout "^soak passed$" --file ${SOAK_THIN_REPORT} "\"density_scale\": 0\\.25"
+    -- ${GRASS_BIN} soak ${WINDY} --seconds 1 --backend cpu --threads 1 --density-scale 0.25
+       --report ${SOAK_THIN_REPORT})
+
 # Bad command lines fail before anything runs.
+grass_cli_test(soak_density_scale_zero ERROR "--density-scale" --also "expected"
+    -- ${GRASS_BIN} soak ${WINDY} --density-scale 0)
+grass_cli_test(soak_density_scale_above_one ERROR "--density-scale" --also "expected"
+    -- ${GRASS_BIN} soak ${WINDY} --density-scale 2)
 grass_cli_test(soak_seconds_nan ERROR "--seconds" -- ${GRASS_BIN} soak ${WINDY} --seconds nan)
 grass_cli_test(soak_seconds_negative ERROR "--seconds" -- ${GRASS_BIN} soak ${WINDY} --seconds -60)
 grass_cli_test(soak_dt_zero ERROR "--dt" -- ${GRASS_BIN} soak ${WINDY} --dt 0)
