@@ -105,13 +105,15 @@ void printRun(const char* backendName, const std::string& device, std::size_t bl
     std::printf("%s (%s): %zu blades, %zu steps, %.3f s simulated in %.1f s wall (%.3f ms/step)\n",
                 backendName, device.c_str(), blades, last.steps, last.simulatedS, run.wallS,
                 last.steps > 0 ? 1000.0 * run.wallS / static_cast<double>(last.steps) : 0.0);
-    std::printf("  %10s %10s %12s %12s %12s %9s %10s %10s\n", "t (s)", "wall (s)", "len err/tol",
-                "max |L-h|/h", "mean |L-h|/h", "nonfinite", "RSS (MiB)", "GL objects");
+    std::printf("  %10s %10s %12s %12s %12s %9s %10s %11s %10s\n", "t (s)", "wall (s)",
+                "len err/tol", "max |L-h|/h", "mean |L-h|/h", "nonfinite", "RSS (MiB)",
+                "heap (MiB)", "GL objects");
     for (const SoakSample& s : run.samples)
-        std::printf("  %10.1f %10.1f %12.3g %12.3g %12.3g %9zu %10.1f %10lld\n", s.simulatedS,
-                    s.wallS, s.health.maxLengthErrorPerTolerance, s.health.maxRelLengthError,
-                    s.health.meanRelLengthError(), s.health.nonfinite,
+        std::printf("  %10.1f %10.1f %12.3g %12.3g %12.3g %9zu %10.1f %11.1f %10lld\n",
+                    s.simulatedS, s.wallS, s.health.maxLengthErrorPerTolerance,
+                    s.health.maxRelLengthError, s.health.meanRelLengthError(), s.health.nonfinite,
                     static_cast<double>(s.rssBytes) / MIB,
+                    static_cast<double>(s.heapInUseBytes) / MIB,
                     static_cast<long long>(s.glObjects.total()));
     std::printf(
         "  length     max error %.3g of the tolerance (max |L-h|/h %.3g, mean up to %.3g)  %s\n",
@@ -120,10 +122,12 @@ void printRun(const char* backendName, const std::string& device, std::size_t bl
     std::printf("  nonfinite  %zu  %s\n", v.maxNonfinite, v.maxNonfinite == 0 ? "ok" : "FAILED");
     std::printf(
         "  RSS        start %.1f MiB, at t = %.1f s %.1f MiB, end %.1f MiB: %+.1f MiB after "
-        "warm-up (bound %.0f MiB)  %s\n",
+        "warm-up (bound %.0f MiB; heap in use %+.1f MiB)  %s\n",
         static_cast<double>(first.rssBytes) / MIB, v.warmedUp->simulatedS,
         static_cast<double>(v.warmedUp->rssBytes) / MIB, static_cast<double>(last.rssBytes) / MIB,
         v.rssGrowthMiB, RSS_GROWTH_BOUND_MIB,
+        (static_cast<double>(last.heapInUseBytes) - static_cast<double>(v.warmedUp->heapInUseBytes)) /
+            MIB,
         v.rssGrowthMiB <= RSS_GROWTH_BOUND_MIB ? "ok" : "FAILED");
     if (backend == SimBackend::Gpu) {
         const bool steady = last.glObjects.noMoreThan(run.glAfterFirstStep);
@@ -160,6 +164,9 @@ nlohmann::ordered_json runJson(const char* backendName, const std::string& devic
     out["rss_warmed_up_bytes"] = v.warmedUp->rssBytes;
     out["rss_end_bytes"] = run.samples.back().rssBytes;
     out["rss_growth_after_warm_up_mib"] = v.rssGrowthMiB;
+    out["heap_in_use_start_bytes"] = run.samples.front().heapInUseBytes;
+    out["heap_in_use_warmed_up_bytes"] = v.warmedUp->heapInUseBytes;
+    out["heap_in_use_end_bytes"] = run.samples.back().heapInUseBytes;
     if (backend == SimBackend::Gpu) {
         out["gl_before_set_up"] = counts(run.glBeforeSetUp);
         out["gl_after_set_up"] = counts(run.samples.front().glObjects);
@@ -178,6 +185,7 @@ nlohmann::ordered_json runJson(const char* backendName, const std::string& devic
                            {"mean_rel_length_error", s.health.meanRelLengthError()},
                            {"nonfinite", s.health.nonfinite},
                            {"rss_bytes", s.rssBytes},
+                           {"heap_in_use_bytes", s.heapInUseBytes},
                            {"gl_objects", s.glObjects.total()}});
     return out;
 }

@@ -1,5 +1,6 @@
 #include "soak_run.h"
 
+#include <malloc.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -28,10 +29,11 @@ void printSample(std::FILE* out, const char* label, const SoakSample& sample, do
     const double leftS = done > 0.0 ? sample.wallS * (1.0 - done) / done : 0.0;
     std::fprintf(out,
                  "soak %s: t = %.1f/%.0f s (%.0f %%), %.1f s wall, ~%.0f s left: length error "
-                 "%.3g of tolerance, nonfinite %zu, RSS %.1f MiB, GL objects %lld\n",
+                 "%.3g of tolerance, nonfinite %zu, RSS %.1f MiB (heap %.1f), GL objects %lld\n",
                  label, sample.simulatedS, totalS, 100.0 * done, sample.wallS, leftS,
                  sample.health.maxLengthErrorPerTolerance, sample.health.nonfinite,
                  static_cast<double>(sample.rssBytes) / (1024.0 * 1024.0),
+                 static_cast<double>(sample.heapInUseBytes) / (1024.0 * 1024.0),
                  static_cast<long long>(sample.glObjects.total()));
     std::fflush(out);
 }
@@ -45,6 +47,15 @@ std::uint64_t residentBytes() {
         return 0;
     const long pageBytes = sysconf(_SC_PAGESIZE);
     return residentPages * static_cast<std::uint64_t>(pageBytes > 0 ? pageBytes : 4096);
+}
+
+std::uint64_t heapInUseBytes() {
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+    const struct mallinfo2 info = mallinfo2();
+    return static_cast<std::uint64_t>(info.uordblks) + static_cast<std::uint64_t>(info.hblkhd);
+#else
+    return 0;
+#endif
 }
 
 Result<SoakRun> soakSimulation(core::Scene& scene, core::SceneSimulation& simulation,
@@ -79,6 +90,7 @@ Result<SoakRun> soakSimulation(core::Scene& scene, core::SceneSimulation& simula
         s.wallS = secondsSince(start);
         s.health = simulation.health();
         s.rssBytes = residentBytes();
+        s.heapInUseBytes = heapInUseBytes();
         s.glObjects = gl::liveGlObjects();
         run.samples.push_back(s);
         printSample(progress, options.label, s, static_cast<double>(totalSteps) * dtS);

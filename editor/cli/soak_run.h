@@ -20,6 +20,9 @@ struct SoakSample {
     double wallS = 0.0;  // since the first step (the GPU waited for at each sample)
     core::FieldHealth health;
     std::uint64_t rssBytes = 0;
+    // Bytes malloc has handed out and not had back (all arenas plus mmapped blocks): when RSS
+    // grows but this does not, the growth is the allocator's or a mapping's, not a leak.
+    std::uint64_t heapInUseBytes = 0;
     gl::GlObjectCounts glObjects;
 };
 
@@ -42,6 +45,8 @@ struct SoakRun {
 
 // The resident set size of this process (/proc/self/statm), 0 where it cannot be read.
 std::uint64_t residentBytes();
+// What malloc has handed out and not had back (glibc's mallinfo2), 0 where unknown.
+std::uint64_t heapInUseBytes();
 
 // Steps `simulation` (whose scene is `scene`) on `backend` for options.seconds, keeping every path
 // of its physics looping, with one progress line per sample on `progress`. The GPU backend needs a

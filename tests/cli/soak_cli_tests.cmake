@@ -16,6 +16,8 @@ grass_cli_test(soak_windy_cpu OK
     --stdout "^  length .* ok$" --stdout "^  nonfinite  0  ok$" --stdout "^  RSS .* ok$"
     --stdout "^soak passed$" --stderr "^soak cpu: t = 300\\.0/300 s \\(100 %\\)"
     --file ${SOAK_REPORT} "\"passed\": true"
+    --file ${SOAK_REPORT} "\"heap_in_use_end_bytes\": [0-9]+,"
+    --stdout "^  RSS .*; heap in use [-+][0-9.]+ MiB\\)  ok$"
     -- ${GRASS_BIN} soak ${WINDY} --seconds 300 --sample-every 30 --backend cpu --threads 1
        --report ${SOAK_REPORT})
 grass_cli_test(soak_windy_gpu GL OK
