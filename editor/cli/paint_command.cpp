@@ -260,7 +260,8 @@ int runPaint(const std::vector<std::string>& argv) {
                   "add or subtract the brush weight, smooth toward the neighbours, or set toward "
                   "--value",
                   &args.mode);
-    parser.number("--radius", "M", "brush radius in world units (> 0)", &args.radiusM, 0.0, 1e9,
+    // A micrometre at least: a brush of radius 0 paints nothing.
+    parser.number("--radius", "M", "brush radius in world units", &args.radiusM, 1e-6, 1e9,
                   "5 % of the mesh bounds diagonal");
     parser.number("--strength", "S", "weight of one dab at its centre", &args.strength, 0.0, 1.0,
                   "0.5");
@@ -305,12 +306,6 @@ int runPaint(const std::vector<std::string>& argv) {
     }
     if (args.strokes.empty()) {
         printError("paint", "--stroke: missing: give at least one --stroke \"x,y,z; x,y,z\"");
-        return EXIT_USAGE;
-    }
-    if (parser.given("--radius") && !(args.radiusM > 0.0)) {
-        char message[80];
-        std::snprintf(message, sizeof message, "--radius: must be > 0 (got %g)", args.radiusM);
-        printError("paint", message);
         return EXIT_USAGE;
     }
     std::vector<std::vector<glm::vec3>> points;

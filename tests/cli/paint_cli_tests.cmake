@@ -99,7 +99,7 @@ paint_cli_test(paint_stroke_not_finite "" ERROR "--stroke" --also "stroke 1, poi
     -- ${GRASS_BIN} paint ${ERR} --map soil --stroke "nan,0,0")
 paint_cli_test(paint_strength_out_of_range "" ERROR "--strength" --absent ${ERR}/maps
     -- ${GRASS_BIN} paint ${ERR} --map soil --strength 2 --stroke "0,0,0")
-paint_cli_test(paint_radius_zero "" ERROR "--radius" --absent ${ERR}/maps
+paint_cli_test(paint_radius_zero "" ERROR "--radius" --also "1e-06" --absent ${ERR}/maps
     -- ${GRASS_BIN} paint ${ERR} --map soil --radius 0 --stroke "0,0,0")
 paint_cli_test(paint_uv_off_mesh "" ERROR "--stroke" --also "not on the mesh"
     --absent ${ERR}/maps
