@@ -8,6 +8,7 @@
 #include <exception>
 #include <string>
 
+#include "maps/exr_header.h"
 #include "util/assert.h"
 #include "util/atomic_file.h"
 #include "util/byte_size.h"
@@ -60,6 +61,10 @@ Result<MapImage> readMap(const fs::path& file) {
         return makeError(name, "file not found");
     if (fs::is_directory(file, ec))
         return makeError(name, "is a folder, not an image");
+    // OpenEXR allocates what a damaged header claims before reading it: look first.
+    if (hasExrMagic(file))
+        if (auto header = checkExrHeader(file, MAX_MAP_SIDE); !header)
+            return header.error();
     // The stored values, not colour premultiplied by alpha: alpha is not density.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);

@@ -1,0 +1,169 @@
+// The OpenEXR header look before OpenImageIO opens a map (core/maps/exr_header.h): a damaged
+// header is refused by name and size without allocating what it claims.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "maps/exr_header.h"
+#include "maps/map_image.h"
+#include "support/test_paths.h"
+
+namespace grass::core {
+namespace {
+
+constexpr int MAX_SIDE = 16384;
+
+// Bytes of an EXR file, written field by field as the OpenEXR file layout has them.
+struct ExrBytes {
+    std::string bytes{"\x76\x2f\x31\x01", 4};
+
+    ExrBytes& u32(std::uint32_t v) {
+        for (int i = 0; i < 4; ++i)
+            bytes.push_back(static_cast<char>((v >> (8 * i)) & 0xffu));
+        return *this;
+    }
+    ExrBytes& name(const std::string& text) {
+        bytes += text;
+        bytes.push_back('\0');
+        return *this;
+    }
+    ExrBytes& attribute(const std::string& attr, const std::string& type, std::uint32_t size) {
+        return name(attr).name(type).u32(size);
+    }
+    ExrBytes& box(std::int32_t xMin, std::int32_t yMin, std::int32_t xMax, std::int32_t yMax) {
+        attribute("dataWindow", "box2i", 16);
+        for (const std::int32_t v : {xMin, yMin, xMax, yMax})
+            u32(static_cast<std::uint32_t>(v));
+        return *this;
+    }
+    std::filesystem::path write(const std::string& test) const {
+        const auto file = test::scratchDir("exr_header_" + test) / "map.exr";
+        std::ofstream(file, std::ios::binary) << bytes;
+        return file;
+    }
+};
+
+TEST(ExrHeader, AMapSavedAsExrPassesAndLoads) {
+    const auto file = test::scratchDir("exr_header_saved") / "density.exr";
+    ASSERT_TRUE(saveMapImage(makeConstantMap(40, 30, 0.25f), file, MapSampleFormat::Auto));
+    EXPECT_TRUE(hasExrMagic(file));
+    EXPECT_TRUE(checkExrHeader(file, MAX_SIDE)) << checkExrHeader(file, MAX_SIDE).error().str();
+    auto map = loadMapImage(file);
+    ASSERT_TRUE(map) << map.error().str();
+    EXPECT_EQ(map->width, 40);
+    EXPECT_EQ(map->height, 30);
+}
+
+TEST(ExrHeader, APngHasNoExrMagic) {
+    const auto file = test::scratchDir("exr_header_png") / "density.png";
+    ASSERT_TRUE(saveMapImage(makeConstantMap(4, 4, 1.0f), file, MapSampleFormat::Auto));
+    EXPECT_FALSE(hasExrMagic(file));
+}
+
+// The fuzz target's finding (tests/fuzz/regressions/map_exr): a string attribute claiming
+// 1.8 GB in a file of a few hundred bytes, which OpenEXR allocated before reading.
+TEST(ExrHeader, AnAttributeClaimingMoreThanTheFileIsRefusedByName) {
+    ExrBytes exr;
+    exr.u32(2).attribute("capDate", "string", 0x6f640013u);
+    exr.bytes += std::string(300, 'x');
+    const auto file = exr.write("claims");
+    auto checked = checkExrHeader(file, MAX_SIDE);
+    ASSERT_FALSE(checked);
+    const std::string message = checked.error().str();
+    EXPECT_NE(message.find("map.exr"), std::string::npos) << message;
+    EXPECT_NE(message.find("\"capDate\" claims 1868824595 bytes"), std::string::npos) << message;
+    auto loaded = loadMapImage(file);
+    ASSERT_FALSE(loaded);
+    EXPECT_EQ(loaded.error().str(), message);
+}
+
+TEST(ExrHeader, ANegativeSizeAndACutShortHeaderAreRefused) {
+    ExrBytes negative;
+    negative.u32(2).attribute("channels", "chlist", 0xffffffffu);
+    auto checked = checkExrHeader(negative.write("negative"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("claims -1 bytes"), std::string::npos);
+
+    ExrBytes cut;
+    cut.u32(2).name("compression").name("compression");
+    checked = checkExrHeader(cut.write("cut"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("\"compression\" is cut short"), std::string::npos)
+        << checked.error().str();
+
+    ExrBytes unterminated;
+    unterminated.u32(2).attribute("lineOrder", "lineOrder", 1);
+    unterminated.bytes.push_back('\0');
+    checked = checkExrHeader(unterminated.write("unterminated"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("ends inside the header"), std::string::npos)
+        << checked.error().str();
+}
+
+// Found by the fuzz target too: a name read from the file holds a newline; errors stay one line.
+TEST(ExrHeader, NamesFromTheFileAreShownOnOneLine) {
+    ExrBytes exr;
+    exr.u32(2).attribute("cap\nDate", "string", 1000);
+    auto checked = checkExrHeader(exr.write("newline"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    const std::string message = checked.error().str();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_NE(message.find("\"cap\\x0aDate\" claims 1000 bytes"), std::string::npos) << message;
+}
+
+TEST(ExrHeader, NamesLongerThanTheVersionAllowsAreRefused) {
+    const std::string longName(40, 'a');
+    ExrBytes shortNames;
+    shortNames.u32(2).attribute(longName, "int", 4).u32(0).name("");
+    auto checked = checkExrHeader(shortNames.write("short_names"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("longer than 31"), std::string::npos);
+    // Bit 10 of the version field allows 255.
+    ExrBytes longNames;
+    longNames.u32(2 | 0x400).attribute(longName, "int", 4).u32(0).name("");
+    EXPECT_TRUE(checkExrHeader(longNames.write("long_names"), MAX_SIDE));
+}
+
+TEST(ExrHeader, ADataWindowOverTheMapLimitIsRefusedBeforeDecoding) {
+    ExrBytes wide;
+    wide.u32(2).box(0, 0, 65535, 65535).name("");
+    auto checked = checkExrHeader(wide.write("wide"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("65536×65536"), std::string::npos)
+        << checked.error().str();
+    EXPECT_NE(checked.error().str().find("refused before decoding"), std::string::npos);
+
+    ExrBytes empty;
+    empty.u32(2).box(10, 0, 9, 0).name("");
+    checked = checkExrHeader(empty.write("empty"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("data window is empty"), std::string::npos);
+
+    ExrBytes fits;
+    fits.u32(2).box(-8, -8, 7, 7).name("");
+    EXPECT_TRUE(checkExrHeader(fits.write("fits"), MAX_SIDE));
+}
+
+// A multi-part file (version bit 12) is a list of headers ended by an empty one: each part is
+// checked, and a list without its end is cut short.
+TEST(ExrHeader, EveryPartOfAMultiPartFileIsChecked) {
+    ExrBytes parts;
+    parts.u32(2 | 0x1000).box(0, 0, 3, 3).name("").box(0, 0, 99999, 3).name("").name("");
+    auto checked = checkExrHeader(parts.write("parts"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("100000×4"), std::string::npos) << checked.error().str();
+
+    ExrBytes good;
+    good.u32(2 | 0x1000).box(0, 0, 3, 3).name("").box(0, 0, 7, 3).name("").name("");
+    EXPECT_TRUE(checkExrHeader(good.write("good"), MAX_SIDE));
+
+    ExrBytes unended;
+    unended.u32(2 | 0x1000).box(0, 0, 3, 3).name("");
+    EXPECT_FALSE(checkExrHeader(unended.write("unended"), MAX_SIDE));
+}
+
+}  // namespace
+}  // namespace grass::core
