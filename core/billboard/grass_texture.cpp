@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "util/assert.h"
+#include "util/image_header.h"
 #include "util/rng.h"
 
 namespace grass::core {
@@ -152,6 +153,8 @@ Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file) {
     // Read through OpenImageIO directly rather than readRgba8Image: we need to know whether the
     // file has an alpha channel at all (readRgba8Image fills a missing one with 255), and the
     // colours as stored (unassociated, as PNG defines them), not premultiplied by alpha.
+    if (auto header = checkImageHeader(file, MAX_IMAGE_SIDE); !header)
+        return header.error();
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
     auto in = OIIO::ImageInput::open(file.string(), &config);

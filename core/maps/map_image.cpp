@@ -8,10 +8,10 @@
 #include <exception>
 #include <string>
 
-#include "maps/exr_header.h"
 #include "util/assert.h"
 #include "util/atomic_file.h"
 #include "util/byte_size.h"
+#include "util/image_header.h"
 
 namespace grass::core {
 
@@ -21,7 +21,7 @@ namespace {
 
 // Past this, a "map" is a mistake (a 16k² float map is already 1 GiB); refused before any
 // pixel is allocated.
-constexpr int MAX_MAP_SIDE = 16384;
+constexpr int MAX_MAP_SIDE = MAX_IMAGE_SIDE;
 // Rows read at a time from scanline files, so an RGBA file never needs its whole float copy.
 constexpr int ROWS_PER_BAND = 256;
 // Rec. 709 luma weights.
@@ -61,10 +61,9 @@ Result<MapImage> readMap(const fs::path& file) {
         return makeError(name, "file not found");
     if (fs::is_directory(file, ec))
         return makeError(name, "is a folder, not an image");
-    // OpenEXR allocates what a damaged header claims before reading it: look first.
-    if (hasExrMagic(file))
-        if (auto header = checkExrHeader(file, MAX_MAP_SIDE); !header)
-            return header.error();
+    // OpenEXR and libpng allocate what a damaged header claims before reading it: look first.
+    if (auto header = checkImageHeader(file, MAX_MAP_SIDE); !header)
+        return header.error();
     // The stored values, not colour premultiplied by alpha: alpha is not density.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);

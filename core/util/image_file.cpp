@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "util/atomic_file.h"
+#include "util/image_header.h"
 
 namespace grass {
 
@@ -54,6 +55,8 @@ Result<Rgba8Pixels> readRgba8Image(const fs::path& file) {
     std::error_code ec;
     if (!fs::exists(file, ec))
         return makeError(file.string(), "file not found");
+    if (auto header = core::checkImageHeader(file, core::MAX_IMAGE_SIDE); !header)
+        return header.error();
     auto in = OIIO::ImageInput::open(file.string());
     if (!in)
         return makeError(file.string(), "not a readable image: " + oneLine(OIIO::geterror()));

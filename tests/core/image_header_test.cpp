@@ -1,5 +1,5 @@
-// The OpenEXR header look before OpenImageIO opens a map (core/maps/exr_header.h): a damaged
-// header is refused by name and size without allocating what it claims.
+// The header look before OpenImageIO opens an image (core/util/image_header.h): a damaged EXR
+// header or PNG chunk is refused by name and size without allocating what it claims.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "maps/exr_header.h"
 #include "maps/map_image.h"
 #include "support/test_paths.h"
+#include "util/image_header.h"
 
 namespace grass::core {
 namespace {
@@ -41,6 +41,34 @@ struct ExrBytes {
     }
     std::filesystem::path write(const std::string& test) const {
         const auto file = test::scratchDir("exr_header_" + test) / "map.exr";
+        std::ofstream(file, std::ios::binary) << bytes;
+        return file;
+    }
+};
+
+// Bytes of a PNG file, chunk by chunk (CRCs left zero: the check leaves them to libpng).
+struct PngBytes {
+    std::string bytes{"\x89PNG\r\n\x1a\n", 8};
+
+    PngBytes& u32(std::uint32_t v) {
+        for (int i = 3; i >= 0; --i)
+            bytes.push_back(static_cast<char>((v >> (8 * i)) & 0xffu));
+        return *this;
+    }
+    PngBytes& chunk(const std::string& type, const std::string& data) {
+        u32(static_cast<std::uint32_t>(data.size()));
+        bytes += type + data;
+        return u32(0);
+    }
+    PngBytes& header(std::uint32_t width, std::uint32_t height) {
+        PngBytes ihdr;
+        ihdr.bytes.clear();
+        ihdr.u32(width).u32(height);
+        ihdr.bytes += std::string("\x08\x00\x00\x00\x00", 5);
+        return chunk("IHDR", ihdr.bytes);
+    }
+    std::filesystem::path write(const std::string& test) const {
+        const auto file = test::scratchDir("png_header_" + test) / "map.png";
         std::ofstream(file, std::ios::binary) << bytes;
         return file;
     }
@@ -163,6 +191,71 @@ TEST(ExrHeader, EveryPartOfAMultiPartFileIsChecked) {
     ExrBytes unended;
     unended.u32(2 | 0x1000).box(0, 0, 3, 3).name("");
     EXPECT_FALSE(checkExrHeader(unended.write("unended"), MAX_SIDE));
+}
+
+TEST(PngChunks, AMapSavedAsPngPasses) {
+    const auto file = test::scratchDir("png_header_saved") / "density.png";
+    ASSERT_TRUE(saveMapImage(makeConstantMap(40, 30, 0.25f), file, MapSampleFormat::Auto));
+    EXPECT_TRUE(checkPngChunks(file, MAX_SIDE)) << checkPngChunks(file, MAX_SIDE).error().str();
+    EXPECT_TRUE(checkImageHeader(file, MAX_SIDE));
+}
+
+// The map_png fuzz target's finding (tests/fuzz/regressions/map_png): a tEXt chunk claiming
+// 1.85 GB, which took 2 GB of memory before the read failed.
+TEST(PngChunks, AChunkClaimingMoreThanTheFileIsRefusedByName) {
+    PngBytes png;
+    png.header(8, 6).u32(1852243990u);
+    png.bytes += "tEXtoiio:ColorSpace";
+    const auto file = png.write("claims");
+    auto checked = checkImageHeader(file, MAX_SIDE);
+    ASSERT_FALSE(checked);
+    const std::string message = checked.error().str();
+    EXPECT_NE(message.find("map.png"), std::string::npos) << message;
+    EXPECT_NE(message.find("chunk \"tEXt\" claims 1852243990 bytes"), std::string::npos) << message;
+    auto loaded = loadMapImage(file);
+    ASSERT_FALSE(loaded);
+    EXPECT_EQ(loaded.error().str(), message);
+    // The PNG limit on a chunk's length is 2^31 - 1 whatever the file holds.
+    PngBytes over;
+    over.header(8, 6).u32(0x80000000u);
+    over.bytes += std::string(64, 'x');
+    checked = checkPngChunks(over.write("over"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("claims 2147483648 bytes"), std::string::npos);
+}
+
+TEST(PngChunks, TheHeaderMustComeFirstAndFitTheLimit) {
+    PngBytes wide;
+    wide.header(65536, 2).chunk("IEND", "");
+    auto checked = checkPngChunks(wide.write("wide"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("65536×2"), std::string::npos) << checked.error().str();
+    EXPECT_NE(checked.error().str().find("refused before decoding"), std::string::npos);
+
+    PngBytes noHeader;
+    noHeader.chunk("IDAT", "xx").chunk("IEND", "");
+    checked = checkPngChunks(noHeader.write("no_header"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("not IHDR"), std::string::npos);
+
+    PngBytes noEnd;
+    noEnd.header(4, 4).chunk("IDAT", "xx");
+    checked = checkPngChunks(noEnd.write("no_end"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("ends before the IEND"), std::string::npos);
+
+    PngBytes fits;
+    fits.header(4, 4).chunk("IDAT", "xx").chunk("IEND", "");
+    EXPECT_TRUE(checkPngChunks(fits.write("fits"), MAX_SIDE));
+}
+
+TEST(ImageHeader, OtherFilesPassUnchecked) {
+    const auto file = test::scratchDir("image_header_other") / "map.tif";
+    ASSERT_TRUE(saveMapImage(makeConstantMap(4, 4, 0.5f), file, MapSampleFormat::Auto));
+    EXPECT_TRUE(checkImageHeader(file, MAX_SIDE));
+    const auto text = test::scratchDir("image_header_text") / "notes.png";
+    std::ofstream(text) << "not an image\n";
+    EXPECT_TRUE(checkImageHeader(text, MAX_SIDE));
 }
 
 }  // namespace

@@ -1,0 +1,225 @@
+#include "util/image_header.h"
+
+#include <array>
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <utility>
+
+#include "util/byte_size.h"
+
+namespace grass::core {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::array<unsigned char, 4> EXR_MAGIC{0x76, 0x2f, 0x31, 0x01};
+constexpr std::array<unsigned char, 8> PNG_SIGNATURE{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+constexpr std::int64_t PNG_MAX_CHUNK_LENGTH = 0x7fffffff;
+// Version field flags (OpenEXR file layout): names of up to 255 characters, several parts.
+constexpr std::uint32_t LONG_NAMES_FLAG = 0x400;
+constexpr std::uint32_t MULTI_PART_FLAG = 0x1000;
+constexpr std::size_t LONG_NAME_MAX = 255;
+constexpr std::size_t SHORT_NAME_MAX = 31;
+
+// OpenEXR stores integers little-endian.
+std::int64_t littleEndian32(const unsigned char* bytes, bool isSigned) {
+    const std::uint32_t v =
+        static_cast<std::uint32_t>(bytes[0]) | static_cast<std::uint32_t>(bytes[1]) << 8 |
+        static_cast<std::uint32_t>(bytes[2]) << 16 | static_cast<std::uint32_t>(bytes[3]) << 24;
+    return isSigned ? static_cast<std::int64_t>(static_cast<std::int32_t>(v))
+                    : static_cast<std::int64_t>(v);
+}
+
+std::int64_t bigEndian32(const unsigned char* bytes) {
+    return static_cast<std::int64_t>(
+        static_cast<std::uint32_t>(bytes[0]) << 24 | static_cast<std::uint32_t>(bytes[1]) << 16 |
+        static_cast<std::uint32_t>(bytes[2]) << 8 | static_cast<std::uint32_t>(bytes[3]));
+}
+
+template <std::size_t N>
+bool startsWith(const fs::path& file, const std::array<unsigned char, N>& magic) {
+    std::ifstream in(file, std::ios::binary);
+    std::array<unsigned char, N> start{};
+    return in.read(reinterpret_cast<char*>(start.data()), start.size()) && start == magic;
+}
+
+std::string sizeText(std::int64_t width, std::int64_t height) {
+    return std::to_string(width) + "×" + std::to_string(height);
+}
+
+// Every image grass reads becomes 4 bytes a pixel (float map texels, RGBA8 texture pixels).
+Result<void> checkSize(const std::string& name, std::int64_t width, std::int64_t height,
+                       int maxSide) {
+    if (width <= maxSide && height <= maxSide)
+        return {};
+    const auto bytes = [](std::int64_t w, std::int64_t h) {
+        return byteSizeText(4.0 * static_cast<double>(w) * static_cast<double>(h));
+    };
+    return makeError(name, "the image is " + sizeText(width, height) + " (" + bytes(width, height) +
+                               " at 4 bytes a pixel); images may be at "
+                               "most " +
+                               sizeText(maxSide, maxSide) + " pixels (" + bytes(maxSide, maxSide) +
+                               "); refused before decoding");
+}
+
+// A null-terminated string of at most maxLength characters; false at the end of the file or
+// when it is longer.
+bool readName(std::istream& in, std::size_t maxLength, std::string& out) {
+    out.clear();
+    for (char c; in.get(c);) {
+        if (c == '\0')
+            return true;
+        if (out.size() == maxLength)
+            return false;
+        out.push_back(c);
+    }
+    return false;
+}
+
+// A name read from the file as our one-line errors may show it: bytes outside printable ASCII
+// (a newline, say) as \xNN.
+std::string printableName(const std::string& name) {
+    std::string out = "\"";
+    for (const char c : name) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7f && c != '"' && c != '\\') {
+            out.push_back(c);
+        } else {
+            constexpr char HEX[] = "0123456789abcdef";
+            out += "\\x";
+            out.push_back(HEX[byte >> 4]);
+            out.push_back(HEX[byte & 0xf]);
+        }
+    }
+    return out + "\"";
+}
+
+// An image file opened for a look at its header, with what its errors say.
+struct HeaderFile {
+    HeaderFile(const fs::path& file, std::string what)
+        : name(file.string()), kind(std::move(what)), in(file, std::ios::binary) {
+        std::error_code ec;
+        const auto size = fs::file_size(file, ec);
+        bytes = ec ? -1 : static_cast<std::int64_t>(size);
+    }
+    Error damaged(const std::string& what) const {
+        return makeError(name, "a damaged " + kind + ": " + what);
+    }
+    std::int64_t left() { return bytes - static_cast<std::int64_t>(in.tellg()); }
+
+    std::string name, kind;
+    std::ifstream in;
+    std::int64_t bytes = -1;
+};
+
+}  // namespace
+
+bool hasExrMagic(const fs::path& file) {
+    return startsWith(file, EXR_MAGIC);
+}
+
+Result<void> checkExrHeader(const fs::path& file, int maxSide) {
+    HeaderFile exr(file, "OpenEXR header");
+    if (exr.bytes < 0 || !exr.in)
+        return makeError(exr.name, "cannot read the file");
+    std::ifstream& in = exr.in;
+    const auto damaged = [&](const std::string& what) { return exr.damaged(what); };
+    std::array<unsigned char, 8> start{};
+    if (!in.read(reinterpret_cast<char*>(start.data()), start.size()))
+        return damaged("the file ends inside the magic number and version");
+    const auto version = static_cast<std::uint32_t>(littleEndian32(start.data() + 4, false));
+    const std::size_t maxName = version & LONG_NAMES_FLAG ? LONG_NAME_MAX : SHORT_NAME_MAX;
+    const bool multiPart = (version & MULTI_PART_FLAG) != 0;
+
+    std::string attribute, type;
+    for (int part = 0;; ++part) {
+        bool emptyHeader = true;
+        for (;;) {
+            if (!readName(in, maxName, attribute))
+                return damaged(in ? "an attribute name longer than " + std::to_string(maxName) +
+                                        " characters"
+                                  : "the file ends inside the header");
+            if (attribute.empty())
+                break;
+            emptyHeader = false;
+            std::array<unsigned char, 4> sizeBytes{};
+            if (!readName(in, maxName, type) ||
+                !in.read(reinterpret_cast<char*>(sizeBytes.data()), sizeBytes.size()))
+                return damaged("attribute " + printableName(attribute) + " is cut short");
+            const std::int64_t size = littleEndian32(sizeBytes.data(), true);
+            const std::int64_t left = exr.left();
+            if (size < 0 || size > left)
+                return damaged("attribute " + printableName(attribute) + " claims " +
+                               std::to_string(size) + " bytes, the file has " +
+                               std::to_string(left) + " left");
+            if (attribute == "dataWindow" && type == "box2i" && size == 16) {
+                std::array<unsigned char, 16> box{};
+                in.read(reinterpret_cast<char*>(box.data()), box.size());
+                const std::int64_t width =
+                    littleEndian32(box.data() + 8, true) - littleEndian32(box.data(), true) + 1;
+                const std::int64_t height = littleEndian32(box.data() + 12, true) -
+                                            littleEndian32(box.data() + 4, true) + 1;
+                if (width < 1 || height < 1)
+                    return damaged("the data window is empty");
+                if (auto fits = checkSize(exr.name, width, height, maxSide); !fits)
+                    return fits;
+            } else {
+                in.seekg(size, std::ios::cur);
+            }
+        }
+        // A single-part file has one header; a multi-part file's list ends with an empty one.
+        if (!multiPart || (emptyHeader && part > 0))
+            return {};
+    }
+}
+
+Result<void> checkPngChunks(const fs::path& file, int maxSide) {
+    HeaderFile png(file, "PNG");
+    if (png.bytes < 0 || !png.in)
+        return makeError(png.name, "cannot read the file");
+    std::ifstream& in = png.in;
+    const auto damaged = [&](const std::string& what) { return png.damaged(what); };
+    in.seekg(static_cast<std::streamoff>(PNG_SIGNATURE.size()));
+    for (bool first = true;; first = false) {
+        std::array<unsigned char, 8> head{};
+        if (!in.read(reinterpret_cast<char*>(head.data()), head.size()))
+            return damaged("the file ends before the IEND chunk");
+        const std::int64_t length = bigEndian32(head.data());
+        std::string type(reinterpret_cast<const char*>(head.data() + 4), 4);
+        const std::int64_t left = png.left();
+        if (length > PNG_MAX_CHUNK_LENGTH || length + 4 > left)
+            return damaged("chunk " + printableName(type) + " claims " + std::to_string(length) +
+                           " bytes and a 4-byte CRC, the file has " + std::to_string(left) +
+                           " left");
+        if (first) {
+            if (type != "IHDR" || length < 8)
+                return damaged("the first chunk is " + printableName(type) + ", not IHDR");
+            std::array<unsigned char, 8> size{};
+            in.read(reinterpret_cast<char*>(size.data()), size.size());
+            const std::int64_t width = bigEndian32(size.data());
+            const std::int64_t height = bigEndian32(size.data() + 4);
+            if (width < 1 || height < 1)
+                return makeError(png.name,
+                                 "the image has a " + sizeText(width, height) + " header");
+            if (auto fits = checkSize(png.name, width, height, maxSide); !fits)
+                return fits;
+            in.seekg(length - 8 + 4, std::ios::cur);
+        } else {
+            in.seekg(length + 4, std::ios::cur);
+        }
+        if (type == "IEND")
+            return {};
+    }
+}
+
+Result<void> checkImageHeader(const fs::path& file, int maxSide) {
+    if (startsWith(file, EXR_MAGIC))
+        return checkExrHeader(file, maxSide);
+    if (startsWith(file, PNG_SIGNATURE))
+        return checkPngChunks(file, maxSide);
+    return {};
+}
+
+}  // namespace grass::core

@@ -1,0 +1,37 @@
+// A look at an image file's header before OpenImageIO opens it. The libraries under it allocate
+// what a size field claims before they read it: a damaged 391-byte EXR whose "capDate"
+// attribute claimed 1.8 GB, and a PNG whose tEXt chunk claimed 1.85 GB, each took 2 GB of
+// memory (found by the map_exr and map_png fuzz targets). Here every size field is checked
+// against the bytes the file has left, and the image size against a limit, without allocating.
+#pragma once
+
+#include <filesystem>
+
+#include "util/result.h"
+
+namespace grass::core {
+
+// The largest image side grass reads (maps, grass textures): a 16384² float map is 1 GiB.
+inline constexpr int MAX_IMAGE_SIDE = 16384;
+
+// True when the file starts with the OpenEXR magic number (76 2f 31 01); false when not or
+// when it cannot be read.
+bool hasExrMagic(const std::filesystem::path& file);
+
+// For a file with the PNG signature: walks the chunks (PNG spec §5.3: big-endian length, type,
+// data, CRC) up to IEND and fails, naming the file and the chunk, when a length exceeds
+// 2^31 − 1 or the bytes left, the file ends inside a chunk, or IHDR is empty or wider or taller
+// than maxSide. CRCs are left to libpng.
+Result<void> checkPngChunks(const std::filesystem::path& file, int maxSide);
+
+// checkExrHeader or checkPngChunks by the file's first bytes; other files pass unchecked.
+Result<void> checkImageHeader(const std::filesystem::path& file, int maxSide);
+
+// For a file with the OpenEXR magic number: walks every header (one, or the parts of a
+// multi-part file; OpenEXR file layout: name\0 type\0 int32 size, value; a header ends with an
+// empty name) and fails, naming the file and the attribute, when a name runs past 255
+// characters, an attribute's size is negative or beyond the end of the file, the header is
+// cut short, or a dataWindow (box2i) is empty or wider or taller than maxSide.
+Result<void> checkExrHeader(const std::filesystem::path& file, int maxSide);
+
+}  // namespace grass::core
