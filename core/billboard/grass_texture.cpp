@@ -150,11 +150,11 @@ Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file) {
     std::error_code ec;
     if (!std::filesystem::exists(file, ec))
         return makeError(file.string(), "grass texture not found");
+    if (auto header = checkImageHeader(file, MAX_IMAGE_SIDE); !header)
+        return header.error();
     // Read through OpenImageIO directly rather than readRgba8Image: we need to know whether the
     // file has an alpha channel at all (readRgba8Image fills a missing one with 255), and the
     // colours as stored (unassociated, as PNG defines them), not premultiplied by alpha.
-    if (auto header = checkImageHeader(file, MAX_IMAGE_SIDE); !header)
-        return header.error();
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
     auto in = OIIO::ImageInput::open(file.string(), &config);
@@ -162,6 +162,8 @@ Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file) {
         return makeError(file.string(),
                          "grass texture is not a readable image: " + oneLine(OIIO::geterror()));
     const OIIO::ImageSpec& spec = in->spec();
+    if (auto fits = checkImageSize(file.string(), spec.width, spec.height, MAX_IMAGE_SIDE); !fits)
+        return fits.error();
     const int channels = spec.nchannels;
     const bool hasAlpha = spec.alpha_channel >= 0 || channels == 4 || channels == 2;
     if (!hasAlpha)

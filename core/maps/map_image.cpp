@@ -10,7 +10,6 @@
 
 #include "util/assert.h"
 #include "util/atomic_file.h"
-#include "util/byte_size.h"
 #include "util/image_header.h"
 
 namespace grass::core {
@@ -75,18 +74,8 @@ Result<MapImage> readMap(const fs::path& file) {
         return makeError(name, "the image has zero size (" + std::to_string(spec.width) + "×" +
                                    std::to_string(spec.height) + ", " +
                                    std::to_string(spec.nchannels) + " channels)");
-    if (spec.width > MAX_MAP_SIDE || spec.height > MAX_MAP_SIDE) {
-        const auto floatBytes = [](double w, double h) {
-            return byteSizeText(w * h * static_cast<double>(sizeof(float)));
-        };
-        const auto limit = static_cast<double>(MAX_MAP_SIDE);
-        return makeError(
-            name, "the image is " + std::to_string(spec.width) + "×" + std::to_string(spec.height) +
-                      ", " + floatBytes(spec.width, spec.height) +
-                      " as float texels; maps may be at most " + std::to_string(MAX_MAP_SIDE) +
-                      "×" + std::to_string(MAX_MAP_SIDE) + " texels (" + floatBytes(limit, limit) +
-                      "); refused before decoding");
-    }
+    if (auto fits = checkImageSize(name, spec.width, spec.height, MAX_MAP_SIDE); !fits)
+        return fits.error();
     if (spec.depth > 1)
         return makeError(name, "a volume image cannot be a map");
 

@@ -61,6 +61,10 @@ Result<Rgba8Pixels> readRgba8Image(const fs::path& file) {
     if (!in)
         return makeError(file.string(), "not a readable image: " + oneLine(OIIO::geterror()));
     const OIIO::ImageSpec& spec = in->spec();
+    if (auto fits =
+            core::checkImageSize(file.string(), spec.width, spec.height, core::MAX_IMAGE_SIDE);
+        !fits)
+        return fits.error();
     const int channels = spec.nchannels;
     std::vector<std::uint8_t> raw(static_cast<std::size_t>(spec.width) *
                                   static_cast<std::size_t>(spec.height) *

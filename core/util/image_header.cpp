@@ -49,21 +49,6 @@ std::string sizeText(std::int64_t width, std::int64_t height) {
     return std::to_string(width) + "×" + std::to_string(height);
 }
 
-// Every image grass reads becomes 4 bytes a pixel (float map texels, RGBA8 texture pixels).
-Result<void> checkSize(const std::string& name, std::int64_t width, std::int64_t height,
-                       int maxSide) {
-    if (width <= maxSide && height <= maxSide)
-        return {};
-    const auto bytes = [](std::int64_t w, std::int64_t h) {
-        return byteSizeText(4.0 * static_cast<double>(w) * static_cast<double>(h));
-    };
-    return makeError(name, "the image is " + sizeText(width, height) + " (" + bytes(width, height) +
-                               " at 4 bytes a pixel); images may be at "
-                               "most " +
-                               sizeText(maxSide, maxSide) + " pixels (" + bytes(maxSide, maxSide) +
-                               "); refused before decoding");
-}
-
 // A null-terminated string of at most maxLength characters; false at the end of the file or
 // when it is longer.
 bool readName(std::istream& in, std::size_t maxLength, std::string& out) {
@@ -116,6 +101,20 @@ struct HeaderFile {
 
 }  // namespace
 
+Result<void> checkImageSize(const std::string& name, std::int64_t width, std::int64_t height,
+                            int maxSide) {
+    if (width <= maxSide && height <= maxSide)
+        return {};
+    const auto bytes = [](std::int64_t w, std::int64_t h) {
+        return byteSizeText(4.0 * static_cast<double>(w) * static_cast<double>(h));
+    };
+    return makeError(name, "the image is " + sizeText(width, height) + " (" + bytes(width, height) +
+                               " at 4 bytes a pixel); images may be at "
+                               "most " +
+                               sizeText(maxSide, maxSide) + " pixels (" + bytes(maxSide, maxSide) +
+                               "); refused before decoding");
+}
+
 bool hasExrMagic(const fs::path& file) {
     return startsWith(file, EXR_MAGIC);
 }
@@ -163,7 +162,7 @@ Result<void> checkExrHeader(const fs::path& file, int maxSide) {
                                             littleEndian32(box.data() + 4, true) + 1;
                 if (width < 1 || height < 1)
                     return damaged("the data window is empty");
-                if (auto fits = checkSize(exr.name, width, height, maxSide); !fits)
+                if (auto fits = checkImageSize(exr.name, width, height, maxSide); !fits)
                     return fits;
             } else {
                 in.seekg(size, std::ios::cur);
@@ -203,7 +202,7 @@ Result<void> checkPngChunks(const fs::path& file, int maxSide) {
             if (width < 1 || height < 1)
                 return makeError(png.name,
                                  "the image has a " + sizeText(width, height) + " header");
-            if (auto fits = checkSize(png.name, width, height, maxSide); !fits)
+            if (auto fits = checkImageSize(png.name, width, height, maxSide); !fits)
                 return fits;
             in.seekg(length - 8 + 4, std::ios::cur);
         } else {

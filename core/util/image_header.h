@@ -5,7 +5,9 @@
 // against the bytes the file has left, and the image size against a limit, without allocating.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <string>
 
 #include "util/result.h"
 
@@ -13,6 +15,12 @@ namespace grass::core {
 
 // The largest image side grass reads (maps, grass textures): a 16384² float map is 1 GiB.
 inline constexpr int MAX_IMAGE_SIDE = 16384;
+
+// Every image grass reads becomes 4 bytes a pixel (float map texels, RGBA8 texture pixels):
+// an image wider or taller than maxSide is refused, naming the memory it would need. Used on
+// the header here and on OpenImageIO's spec for the formats not looked at first.
+Result<void> checkImageSize(const std::string& name, std::int64_t width, std::int64_t height,
+                            int maxSide);
 
 // True when the file starts with the OpenEXR magic number (76 2f 31 01); false when not or
 // when it cannot be read.
