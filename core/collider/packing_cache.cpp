@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "util/atomic_file.h"
+#include "util/json_text.h"
 
 namespace grass::core {
 
@@ -57,8 +58,11 @@ std::optional<std::uint64_t> unsignedNumber(const Json* value) {
 // (truncated, hand-edited, another version) is nullopt and gets repacked.
 std::optional<SpherePacking> parseCache(const std::string& text, const std::string& key,
                                         const SpherePackingParams& params) {
-    const Json doc = Json::parse(text, nullptr, false);
-    if (doc.is_discarded() || !doc.is_object())
+    const auto parsed = parseJsonText(text, key);
+    if (!parsed)
+        return std::nullopt;
+    const Json& doc = *parsed;
+    if (!doc.is_object())
         return std::nullopt;
     const Json* format = member(doc, "format");
     const Json* cachedKey = member(doc, "key");
@@ -168,7 +172,7 @@ Result<SpherePacking> loadOrPackSpheres(const fs::path& meshFile, const SurfaceM
     const bool cacheExists = fs::is_regular_file(cacheFile, ec);
     const std::uintmax_t cacheSize = cacheExists ? fs::file_size(cacheFile, ec) : 0;
     if (cacheExists && !ec && cacheSize <= MAX_CACHE_BYTES) {
-        if (const Result<std::string> text = readFile(cacheFile); text) {
+        if (const Result<std::string> text = readFile(cacheFile, MAX_JSON_FILE_BYTES); text) {
             if (std::optional<SpherePacking> cached = parseCache(*text, key, params)) {
                 if (fromCache != nullptr)
                     *fromCache = true;

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "util/atomic_file.h"
+#include "util/json_text.h"
 
 namespace grass::core {
 
@@ -88,13 +89,14 @@ std::size_t removeUnreferencedExportFiles(const fs::path& folder) {
             continue;
         const fs::path& file = entry.path();
         if (isEntryPoint(file)) {
-            auto text = readFile(file);
+            auto text = readFile(file, MAX_JSON_FILE_BYTES);
             if (!text)
                 return 0;
-            const json parsed = json::parse(*text, nullptr, /*allow_exceptions=*/false);
-            if (parsed.is_discarded())
+            // Not ours, or nested deep enough to overflow a recursive walk: keep every file.
+            const auto parsed = parseJsonText(*text, file.string());
+            if (!parsed)
                 return 0;
-            collectNames(parsed, named);
+            collectNames(*parsed, named);
         } else if (isContentAddressedName(file.filename().string())) {
             candidates.push_back(file);
         }

@@ -8,7 +8,9 @@
 #include "export/gltf_export.h"
 #include "export/raw_export.h"
 #include "export/staged_files.h"
+#include "project/project_inputs.h"
 #include "util/atomic_file.h"
+#include "util/folder_lock.h"
 
 namespace grass::core {
 
@@ -42,11 +44,11 @@ std::uint64_t mapHash(const MapImage& map) {
 }
 
 // A stem per layer, unique within the export even when two layers share a name.
-std::vector<std::string> layerStems(const Scene& scene) {
+std::vector<std::string> layerStems(const std::vector<std::string>& layerNames) {
     std::vector<std::string> stems;
     std::set<std::string> used{"manifest"};
-    for (std::size_t i = 0; i < scene.layers.size(); ++i) {
-        std::string stem = exportFileStem(scene.layers[i].name);
+    for (std::size_t i = 0; i < layerNames.size(); ++i) {
+        std::string stem = exportFileStem(layerNames[i]);
         if (used.count(stem))
             stem += "-" + std::to_string(i);
         used.insert(stem);
@@ -115,8 +117,7 @@ Result<json> stageRawLayer(StagedFiles& staged, const LayerField& layer, const s
     const auto name = [&](const char* part, const std::string& bytes, const char* extension) {
         return contentAddressedName(stem + "." + part, contentHash(bytes), extension);
     };
-    entry["blades"] =
-        file(name("blades", blades, ".bin"), patched.blades.size(), blades.size());
+    entry["blades"] = file(name("blades", blades, ".bin"), patched.blades.size(), blades.size());
     entry["patches"] =
         file(name("patches", patches, ".bin"), patched.patches.size(), patches.size());
     entry["wilt"] = file(name("wilt", wilt, ".f32"), layer.wilt.size(), wilt.size());
@@ -187,8 +188,28 @@ std::string exportFileStem(const std::string& layerName) {
     return fileSafeName(layerName);
 }
 
+Result<void> refuseExportOverInputs(const LoadedProject& loaded, const ExportOptions& options) {
+    std::vector<std::string> layerNames;
+    for (const GrassLayer& layer : loaded.project.layers)
+        layerNames.push_back(layer.name);
+    std::vector<std::string> entries;
+    if (options.format == ExportFormat::Raw)
+        entries.push_back("manifest.json");
+    else
+        for (const std::string& stem : layerStems(layerNames))
+            entries.push_back(stem + ".gltf");
+    const std::vector<ProjectInput> inputs = projectInputFiles(loaded);
+    for (const std::string& entry : entries)
+        if (auto refused = refuseOverwritingInput(inputs, options.outDir / entry, "outDir");
+            !refused)
+            return refused;
+    return {};
+}
+
 Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& scene,
                                    const ExportOptions& options, const ExportProgress& progress) {
+    if (auto refused = refuseExportOverInputs(loaded, options); !refused)
+        return refused.error();
     if (options.lod < 0 || options.lod > MAX_EXPORT_LOD)
         return makeError("lod", "must be from 0 to " + std::to_string(MAX_EXPORT_LOD) + " (got " +
                                     std::to_string(options.lod) + ")");
@@ -197,11 +218,18 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
     bool createdDir = false;
     if (auto prepared = prepareOutDir(options.outDir, createdDir); !prepared)
         return prepared.error();
+    auto lock = FolderLock::acquire(options.outDir, "grass export");
+    if (!lock)
+        return lock.error();
 
     ExportReport report;
     Result<void> staging = [&]() -> Result<void> {
         StagedFiles staged(options.outDir);
-        const std::vector<std::string> stems = layerStems(scene);
+        staged.protect(projectInputFiles(loaded));
+        std::vector<std::string> layerNames;
+        for (const LayerField& layer : scene.layers)
+            layerNames.push_back(layer.name);
+        const std::vector<std::string> stems = layerStems(layerNames);
         json layers = json::array();
         const auto layerCount = static_cast<float>(std::max<std::size_t>(scene.layers.size(), 1));
         for (std::size_t i = 0; i < scene.layers.size(); ++i) {

@@ -68,4 +68,10 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
 // with anything else replaced by '_'.
 std::string exportFileStem(const std::string& layerName);
 
+// Refuses, before any work, an export whose entry points (<layer>.gltf, manifest.json) would
+// replace one of the project's own files (project_inputs.h): an export into the project folder
+// with a layer named like its mesh. exportProject checks it too, and refuses any file it would
+// stage over an input.
+Result<void> refuseExportOverInputs(const LoadedProject& loaded, const ExportOptions& options);
+
 }  // namespace grass::core

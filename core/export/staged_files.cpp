@@ -23,6 +23,8 @@ Result<void> StagedFiles::checkTarget(const fs::path& target) const {
         return makeError(target.string(),
                          "exists and is not a file (remove it or export to "
                          "another folder)");
+    if (auto refused = refuseOverwritingInput(mProtected, target, "outDir"); !refused)
+        return refused;
     for (const Staged& staged : mStaged)
         if (staged.target == target)
             return makeError(target.string(), "written twice by one export (a bug)");

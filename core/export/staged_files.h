@@ -10,6 +10,7 @@
 
 #include "export/export.h"
 #include "maps/map_image.h"
+#include "project/project_inputs.h"
 #include "util/result.h"
 
 namespace grass::core {
@@ -21,6 +22,8 @@ public:
     StagedFiles(const StagedFiles&) = delete;
     StagedFiles& operator=(const StagedFiles&) = delete;
 
+    // Files no target may be (the project's own inputs): staging one of them is refused.
+    void protect(std::vector<ProjectInput> inputs) { mProtected = std::move(inputs); }
     // `name` is a plain file name inside the folder; errors name the target file.
     Result<void> add(const std::string& name, std::string_view bytes);
     // A map as a 16-bit greyscale PNG (map_image.h): 1/65535 steps, what the editor saves.
@@ -37,6 +40,7 @@ private:
 
     std::filesystem::path mFolder;
     std::vector<Staged> mStaged;
+    std::vector<ProjectInput> mProtected;
 };
 
 }  // namespace grass::core

@@ -10,6 +10,7 @@
 
 #include "util/assert.h"
 #include "util/atomic_file.h"
+#include "util/image_file.h"
 #include "util/image_header.h"
 
 namespace grass::core {
@@ -197,6 +198,10 @@ Result<void> writeMap(const MapImage& map, const fs::path& file, MapSampleFormat
         return makeError(name, "write failed: " + reason);
     }
     out.reset();
+    if (auto whole = verifyWrittenImage(temporary, name, map.width, map.height); !whole) {
+        fs::remove(temporary, ec);
+        return whole;
+    }
     return commitTemporaryFile(temporary, file);
 }
 

@@ -26,4 +26,8 @@ struct GltfImport {
 
 Result<GltfImport> loadGltf(const std::filesystem::path& file);
 
+// The files a .gltf names by relative URI (buffers and images; data: URIs and anything outside
+// its folder left out), as paths next to it. Empty for a .glb or a file that cannot be read.
+std::vector<std::filesystem::path> gltfExternalFiles(const std::filesystem::path& file);
+
 }  // namespace grass::core

@@ -10,17 +10,16 @@
 #include <nlohmann/json.hpp>
 #include <string_view>
 
+#include "mesh/gltf_loader.h"
 #include "util/atomic_file.h"
+#include "util/json_text.h"
+#include "util/path_inside.h"
 
 namespace grass::core::gltf {
 namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
-
-// Far deeper than any glTF JSON (about 10 levels): nlohmann's dump and tinygltf's parsing of
-// extras recurse once per level, so a hostile file nested deeper could overflow the stack.
-constexpr std::size_t MAX_JSON_DEPTH = 256;
 
 // GLB container constants (glTF 2.0 §4.4).
 constexpr std::uint32_t GLB_VERSION = 2;
@@ -133,29 +132,6 @@ Result<GlbChunks> splitGlb(std::string_view bytes, const std::string& display) {
     if (chunks.json.empty())
         return makeError(display, "GLB is corrupt: its JSON chunk is empty");
     return chunks;
-}
-
-// How deeply arrays and objects nest in JSON text (brackets inside strings do not count).
-std::size_t jsonDepth(std::string_view text) {
-    std::size_t depth = 0, deepest = 0;
-    bool inString = false, escaped = false;
-    for (const char c : text) {
-        if (inString) {
-            if (escaped)
-                escaped = false;
-            else if (c == '\\')
-                escaped = true;
-            else if (c == '"')
-                inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '{' || c == '[') {
-            deepest = std::max(deepest, ++depth);
-        } else if ((c == '}' || c == ']') && depth > 0) {
-            --depth;
-        }
-    }
-    return deepest;
 }
 
 bool startsWithNoCase(std::string_view text, std::string_view prefix) {
@@ -321,6 +297,10 @@ Result<void> prepareBuffer(Json& buffer, std::size_t index, const GlbChunks* glb
         return relative.error();
     const fs::path file = folder / *relative;
     std::error_code ec;
+    if (!isInsideFolder(file, folder))
+        return makeError(display, what + " file \"" + relative->generic_string() +
+                                      "\" is a symbolic link leading outside the glTF file's "
+                                      "folder; copy the file next to the glTF instead");
     if (!fs::is_regular_file(file, ec))
         return makeError(display, what + " file \"" + relative->generic_string() +
                                       "\" not found next to the glTF file");
@@ -478,3 +458,33 @@ Result<GltfSource> parseGltfFile(const fs::path& file) {
 }
 
 }  // namespace grass::core::gltf
+
+namespace grass::core {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> gltfExternalFiles(const fs::path& file) {
+    std::vector<fs::path> files;
+    auto bytes = readFile(file, MAX_JSON_FILE_BYTES);
+    if (!bytes || bytes->starts_with("glTF"))
+        return files;
+    const auto doc = parseJsonText(*bytes, file.string());
+    if (!doc)
+        return files;
+    for (const char* key : {"buffers", "images"}) {
+        const gltf::Json* list = gltf::member(*doc, key);
+        if (list == nullptr || !list->is_array())
+            continue;
+        for (const gltf::Json& entry : *list) {
+            const gltf::Json* uri = gltf::member(entry, "uri");
+            if (uri == nullptr || !uri->is_string() ||
+                gltf::startsWithNoCase(uri->get<std::string>(), "data:"))
+                continue;
+            if (auto relative = gltf::resolveFileUri(uri->get<std::string>(), key, file.string()))
+                files.push_back(file.parent_path() / *relative);
+        }
+    }
+    return files;
+}
+
+}  // namespace grass::core

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <vector>
+
+#include "util/json_text.h"
 
 namespace grass::core::json {
 
@@ -169,6 +172,9 @@ bool obeys(const NumberRule& rule, double value) {
 }  // namespace
 
 Result<Json> parseDocument(std::string_view text, const std::string& sourceName) {
+    if (jsonDepth(text) > MAX_JSON_DEPTH)
+        return Error{sourceName, "JSON nested more than " + std::to_string(MAX_JSON_DEPTH) +
+                                     " levels deep; a project nests about 5"};
     SyntaxChecker checker(text, sourceName);
     const bool accepted = Json::sax_parse(text.begin(), text.end(), &checker);
     if (!accepted || checker.error) {
@@ -330,7 +336,12 @@ bool Reader::readFloat(const Json& node, const std::string& pointer, NumberRule 
         return false;
     }
     const float single = static_cast<float>(value);
-    if (!obeys(rule, static_cast<double>(single))) {
+    // The bounds as floats too, so that a value typed as the bound itself (1e-5, which no float
+    // holds exactly) is inside it.
+    NumberRule singleRule = rule;
+    singleRule.min = static_cast<double>(static_cast<float>(rule.min));
+    singleRule.max = static_cast<double>(static_cast<float>(rule.max));
+    if (!obeys(singleRule, static_cast<double>(single))) {
         fail(pointer, expected + " (got " + describeValue(node) + ")");
         return false;
     }
@@ -388,6 +399,16 @@ bool Reader::readString(const Json& node, const std::string& pointer, bool allow
         fail(pointer, "must not be empty");
         return false;
     }
+    // Names and paths end up in file names, window titles and on the terminal, where a control
+    // character (an escape sequence, a newline, NUL) would do what the file says, not show it.
+    for (std::size_t i = 0; i < text.size(); ++i)
+        if (const auto byte = static_cast<unsigned char>(text[i]); byte < 0x20 || byte == 0x7f) {
+            char code[8];
+            std::snprintf(code, sizeof code, "0x%02x", byte);
+            fail(pointer, std::string("must not contain control characters (character ") +
+                              std::to_string(i + 1) + " is " + code + ")");
+            return false;
+        }
     out = text;
     return true;
 }

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "project/project_json_parts.h"
+#include "scene/blade_shading.h"
 
 namespace grass::core::json {
 
@@ -62,6 +63,12 @@ void readLighting(Reader& reader, const Json& node, GrassLightingDesc& lighting)
     object.readFloat("ao_floor", UNIT_INTERVAL, lighting.aoFloor);
     object.readFloat("normal_blur_radius", RADIUS_RULE, lighting.normalBlurRadiusM);
     object.readFloat("ao_cell", NumberRule{0.0, 4.0}, lighting.aoCellSigmas);
+    // Below a tenth of a millimetre a kernel covers no neighbour: 0 turns the term off instead.
+    for (const auto& [key, radius] : {std::pair{"ao_radius", lighting.aoRadiusM},
+                                      {"normal_blur_radius", lighting.normalBlurRadiusM}})
+        if (radius > 0.0f && radius < MIN_KERNEL_RADIUS_M)
+            reader.fail(std::string("/lighting/") + key,
+                        "must be 0 (off) or from 0.0001 to 100 metres");
     // Between 0 (exact) and the bake's smallest cells the value would be slow and mean nothing.
     if (lighting.aoCellSigmas > 0.0f && lighting.aoCellSigmas < 0.05f)
         reader.fail("/lighting/ao_cell", "must be 0 (exact sums) or in [0.05, 4] kernel sigmas");

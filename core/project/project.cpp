@@ -8,6 +8,7 @@
 
 #include "project/json_reader.h"
 #include "util/atomic_file.h"
+#include "util/path_inside.h"
 
 namespace grass::core {
 
@@ -34,8 +35,7 @@ Result<fs::path> resolveAssetPath(const fs::path& folder, const std::string& rel
     if (path.has_root_path())
         return makeError(fieldPath, "must be relative to the project folder, not absolute (got " +
                                         json::quote(relative) + ")");
-    // Lexical: "a/../b" is "b", "a/../../b" leaves the folder. Symbolic links are the
-    // user's own business.
+    // Lexical first: "a/../b" is "b", "a/../../b" leaves the folder.
     const fs::path normal = path.lexically_normal();
     if (!normal.empty() && *normal.begin() == "..")
         return makeError(fieldPath, "leaves the project folder (got " + json::quote(relative) +
@@ -43,7 +43,17 @@ Result<fs::path> resolveAssetPath(const fs::path& folder, const std::string& rel
     if (normal.empty() || normal == "." || !normal.has_filename())
         return makeError(fieldPath,
                          "must name a file, not a folder (got " + json::quote(relative) + ")");
-    return folder.empty() ? normal : folder / normal;
+    if (folder.empty())
+        return normal;
+    // A symbolic link inside the project to a file outside it (a system file, another user's
+    // data) is refused too: a project reads and writes only under its own folder.
+    const fs::path joined = folder / normal;
+    if (!isInsideFolder(joined, folder))
+        return makeError(fieldPath, json::quote(relative) +
+                                        " is a symbolic link (or lies in a linked folder) leading "
+                                        "outside the project folder; copy the file into the "
+                                        "project instead");
+    return joined;
 }
 
 Result<LoadedProject> loadProject(const fs::path& path) {
@@ -65,7 +75,7 @@ Result<LoadedProject> loadProject(const fs::path& path) {
         loaded.file = path;
         loaded.folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
     }
-    auto text = readFile(loaded.file);
+    auto text = readFile(loaded.file, MAX_JSON_FILE_BYTES);
     if (!text)
         return text.error();
     auto project = parseProject(*text, loaded.file.string());

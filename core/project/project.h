@@ -26,6 +26,14 @@ namespace grass::core {
 
 inline constexpr int PROJECT_FORMAT_VERSION = 1;
 
+// Lists a project may hold (docs/project-format.md "Limits"): every frame draws each layer and
+// every physics step visits each wind source and collider, so beyond these nothing runs at an
+// interactive rate; no scene of ours uses more than 4.
+inline constexpr std::size_t MAX_LAYERS = 256;
+inline constexpr std::size_t MAX_CAMERAS = 256;
+inline constexpr std::size_t MAX_WIND_SOURCES = 256;
+inline constexpr std::size_t MAX_COLLIDERS = 256;
+
 // Where the surface comes from: a procedural shape by name, or a glTF file.
 struct MeshSource {
     bool isFile = false;
@@ -105,20 +113,20 @@ struct GrassLightingDesc {
     // Diffuse normal: the blade normal leaned this far towards the (SSS) terrain normal; a
     // blade's own normal is nearly horizontal, so alone it paints a field in stripes.
     float terrainNormalWeight = 0.5f;
-    float specular = 0.6f;                  // weight of the GGX lobes
-    glm::vec2 specularFadeM{0.5f, 6.0f};    // specular rises from 0 to full over these distances
-    float transmission = 0.8f;              // I of SPEC §10
-    float transmissionDistortion = 0.3f;    // k: fakeN = −normalize(mix(N, L, k))
-    float transmissionPower = 4.0f;         // e
-    float sss = 0.35f;                      // weight of the SSS term
-    float sssIntensity = 0.7f;              // terrain normal → blurred terrain normal
-    float aoRadiusM = 0.15f;                // Gaussian σ of the neighbour-density AO kernel
-    float aoStrength = 0.007f;              // m² one neighbour occludes (Beer–Lambert)
-    float aoFloor = 0.35f;                  // darkest AO
-    float normalBlurRadiusM = 0.75f;        // Gaussian σ of the terrain-normal blur
+    float specular = 0.6f;                // weight of the GGX lobes
+    glm::vec2 specularFadeM{0.5f, 6.0f};  // specular rises from 0 to full over these distances
+    float transmission = 0.8f;            // I of SPEC §10
+    float transmissionDistortion = 0.3f;  // k: fakeN = −normalize(mix(N, L, k))
+    float transmissionPower = 4.0f;       // e
+    float sss = 0.35f;                    // weight of the SSS term
+    float sssIntensity = 0.7f;            // terrain normal → blurred terrain normal
+    float aoRadiusM = 0.15f;              // Gaussian σ of the neighbour-density AO kernel
+    float aoStrength = 0.007f;            // m² one neighbour occludes (Beer–Lambert)
+    float aoFloor = 0.35f;                // darkest AO
+    float normalBlurRadiusM = 0.75f;      // Gaussian σ of the terrain-normal blur
     // The bake's clustering cells in kernel σ (BladeShadingParams::cellSigmas); 0: exact sums.
     float aoCellSigmas = 0.5f;
-    glm::vec2 water{0.15f, 0.6f};           // water of the oldest .. youngest blade
+    glm::vec2 water{0.15f, 0.6f};  // water of the oldest .. youngest blade
     bool operator==(const GrassLightingDesc&) const = default;
 };
 

@@ -33,16 +33,15 @@ constexpr std::array<std::string_view, 8> MESH_KEYS{"file",       "procedural", 
                                                     "minor_size", "hill_height", "hill_scale",
                                                     "resolution", "noise_seed"};
 constexpr std::array<std::string_view, 15> LAYER_KEYS{
-    "name",         "density",      "density_map", "soil_map",  "light_map",
+    "name",           "density",       "density_map",      "soil_map",     "light_map",
     "map_resolution", "clump_spacing", "blades_per_clump", "clump_radius", "blade",
-    "shape",        "tip_start",    "root_color",  "tip_color", "growth"};
+    "shape",          "tip_start",     "root_color",       "tip_color",    "growth"};
 constexpr std::array<std::string_view, 3> BLADE_KEYS{"height", "width", "stiffness"};
 constexpr std::array<std::string_view, 4> CAMERA_KEYS{"name", "position", "target", "fov_y_deg"};
 constexpr std::array<std::string_view, 3> SUN_KEYS{"direction", "color", "intensity"};
 constexpr std::array<std::string_view, 12> RENDER_KEYS{
-    "width",      "height",       "geometry",   "tess_level",   "strip_segments",
-    "msaa",       "patch_size",   "sky_color",  "ground_color", "technique",
-    "lod_distance", "thinning_distance"};
+    "width",      "height",    "geometry",     "tess_level", "strip_segments", "msaa",
+    "patch_size", "sky_color", "ground_color", "technique",  "lod_distance",   "thinning_distance"};
 // Camera distances beyond 100 km are typos (and push the LOD bands out of float range).
 constexpr json::NumberRule DISTANCE_OR_OFF{0.0, 1e5};
 
@@ -50,6 +49,10 @@ constexpr int MAX_IMAGE_SIDE = 16384;
 constexpr int MAX_MESH_RESOLUTION = 1024;
 // Blades per clump: beyond this a clump is a carpet, and a typo (12000 for 12) would stall.
 constexpr int MAX_BLADES_PER_CLUMP = 10000;
+// Blades up to 100 m tall and 10 m wide (ours are 0.15-0.9 m): far beyond, the float positions
+// of a blade's control points lose the bits its length is kept to (1e30 broke it by 100 %).
+constexpr json::NumberRule BLADE_HEIGHT_RULE{0.0, 100.0, true, false};
+constexpr json::NumberRule BLADE_WIDTH_RULE{0.0, 10.0, true, false};
 // The cull shader's work-group is 32 blades; a patch is whole groups.
 constexpr std::uint32_t PATCH_GRANULE = 32;
 constexpr std::uint32_t MAX_PATCH_SIZE = 65536;
@@ -166,8 +169,8 @@ void readLayer(json::Reader& reader, const Json& node, const std::string& pointe
     if (const Json* blade = object.find("blade")) {
         json::Object ranges(reader, *blade, object.pointerTo("blade"), BLADE_KEYS);
         BladeRanges& b = scatter.blade;
-        ranges.readRange("height", json::POSITIVE, b.heightMin, b.heightMax);
-        ranges.readRange("width", json::POSITIVE, b.widthMin, b.widthMax);
+        ranges.readRange("height", BLADE_HEIGHT_RULE, b.heightMin, b.heightMax);
+        ranges.readRange("width", BLADE_WIDTH_RULE, b.widthMin, b.widthMax);
         ranges.readRange("stiffness", json::NON_NEGATIVE, b.stiffnessMin, b.stiffnessMax);
     }
     if (const Json* shape = object.find("shape")) {
@@ -299,9 +302,9 @@ void readProject(json::Reader& reader, const Json& root, Project& project) {
     if (const Json* mesh = top.find("mesh"))
         readMesh(reader, *mesh, project.mesh);
     if (const Json* layers = top.find("layers"))
-        readList(reader, *layers, "/layers", "layer", project.layers, readLayer);
+        readList(reader, *layers, "/layers", "layer", MAX_LAYERS, project.layers, readLayer);
     if (const Json* cameras = top.find("cameras")) {
-        readList(reader, *cameras, "/cameras", "camera", project.cameras, readCamera);
+        readList(reader, *cameras, "/cameras", "camera", MAX_CAMERAS, project.cameras, readCamera);
         if (reader.ok() && project.cameras.empty())
             reader.fail("/cameras", "must hold at least one camera");
     }
@@ -316,9 +319,10 @@ void readProject(json::Reader& reader, const Json& root, Project& project) {
     if (const Json* physics = top.find("physics"))
         json::readPhysics(reader, *physics, project.physics);
     if (const Json* wind = top.find("wind"))
-        readList(reader, *wind, "/wind", "wind source", project.wind, json::readWind);
+        readList(reader, *wind, "/wind", "wind source", MAX_WIND_SOURCES, project.wind,
+                 json::readWind);
     if (const Json* colliders = top.find("colliders"))
-        readList(reader, *colliders, "/colliders", "collider", project.colliders,
+        readList(reader, *colliders, "/colliders", "collider", MAX_COLLIDERS, project.colliders,
                  json::readCollider);
     if (const Json* snow = top.find("snow"))
         json::readSnow(reader, *snow, project.snow);

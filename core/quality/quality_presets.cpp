@@ -6,6 +6,7 @@
 
 #include "measured_tradeoffs.h"
 #include "physics/physics.h"
+#include "util/json_text.h"
 
 namespace grass::core {
 
@@ -98,8 +99,12 @@ Result<QualityPreset> parseQualityPreset(std::string_view name) {
 
 Result<std::vector<MeasuredKnob>> parseTradeoffJson(std::string_view text,
                                                     const std::string& sourceName) {
-    const Json root = Json::parse(text, nullptr, false);
-    if (root.is_discarded() || !root.is_object())
+    const auto parsed = parseJsonText(text, sourceName);
+    if (!parsed)
+        return makeError(sourceName,
+                         "not a JSON object (a grass tradeoff.json): " + parsed.error().message);
+    const Json& root = *parsed;
+    if (!root.is_object())
         return makeError(sourceName, "not a JSON object (a grass tradeoff.json)");
     const auto knobs = root.find("knobs");
     if (knobs == root.end() || !knobs->is_array())

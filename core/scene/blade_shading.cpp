@@ -41,9 +41,8 @@ constexpr std::uint32_t MAX_CELL_COORD = (1u << 21) - 1;
 constexpr unsigned MAX_THREADS = 64;
 constexpr std::size_t MIN_CELLS_PER_CHUNK = 64;
 
-// Radii below a tenth of a millimetre or beyond 100 km are typos; they would also push σ² out
-// of float range.
-constexpr float MIN_RADIUS_M = 1e-4f;
+// Radii beyond 100 km are typos; they would also push σ² out of float range.
+constexpr float MIN_RADIUS_M = MIN_KERNEL_RADIUS_M;
 constexpr float MAX_RADIUS_M = 1e5f;
 
 bool isFinite(glm::vec3 v) {
@@ -76,20 +75,23 @@ Result<void> checkUnit(const char* name, float v) {
 }
 
 Result<void> validate(const BladeShadingParams& p) {
-    for (Result<void> r :
-         {checkRadius("aoRadiusM", p.aoRadiusM),
-          checkRadius("normalBlurRadiusM", p.normalBlurRadiusM), checkUnit("aoFloor", p.aoFloor),
-          checkUnit("waterRange[0]", p.waterRange.x), checkUnit("waterRange[1]", p.waterRange.y)}) {
+    for (Result<void> r : {checkRadius("/lighting/ao_radius", p.aoRadiusM),
+                           checkRadius("/lighting/normal_blur_radius", p.normalBlurRadiusM),
+                           checkUnit("/lighting/ao_floor", p.aoFloor),
+                           checkUnit("/lighting/water/0", p.waterRange.x),
+                           checkUnit("/lighting/water/1", p.waterRange.y)}) {
         if (!r)
             return r.error();
     }
     if (!(p.cellSigmas == 0.0f ||
           (p.cellSigmas >= MIN_CELL_SIGMAS && p.cellSigmas <= MAX_CELL_SIGMAS)))
-        return makeError("cellSigmas", "must be 0 (exact) or in [0.05, 4] kernel sigmas, got " +
-                                           number(p.cellSigmas));
+        return makeError(
+            "/lighting/ao_cell",
+            "must be 0 (exact) or in [0.05, 4] kernel sigmas, got " + number(p.cellSigmas));
     if (!(p.aoStrength >= 0.0f) || !std::isfinite(p.aoStrength))
-        return makeError("aoStrength", "must be a finite number >= 0 (m² per blade), got " +
-                                           number(p.aoStrength));
+        return makeError(
+            "/lighting/ao_strength",
+            "must be a finite number >= 0 (m² per blade), got " + number(p.aoStrength));
     return {};
 }
 
@@ -426,15 +428,14 @@ void forEachBladeSums(const ClusterGrid& g, unsigned threads, Write&& write) {
 namespace {
 
 bool insideBox(glm::vec3 p, glm::vec3 lo, glm::vec3 hi) {
-    return p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x <= hi.x && p.y <= hi.y &&
-           p.z <= hi.z;
+    return p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x <= hi.x && p.y <= hi.y && p.z <= hi.z;
 }
 
 // The bake of the blades marked in `target` (all live ones when null), summing over `live`
 // neighbours; entries not targeted are left as they are.
 void bakeInto(const std::vector<Blade>& blades, const std::vector<std::uint32_t>& live,
-              const std::vector<bool>* target, const BladeShadingParams& params,
-              std::uint64_t seed, unsigned threadCount, std::vector<BladeShading>& out) {
+              const std::vector<bool>* target, const BladeShadingParams& params, std::uint64_t seed,
+              unsigned threadCount, std::vector<BladeShading>& out) {
     const auto targeted = [&](std::uint32_t i) { return target == nullptr || (*target)[i]; };
     for (std::uint32_t i : live) {
         if (!targeted(i))

@@ -40,6 +40,10 @@ struct BladeShading {
 static_assert(sizeof(BladeShading) == 32, "BladeShading must be two vec4 (std430)");
 static_assert(offsetof(BladeShading, waterAge) == 16, "BladeShading layout must match GLSL");
 
+// Kernel radii below a tenth of a millimetre cover no neighbour (and push σ² out of float
+// range): 0 turns a term off instead. The project reader refuses them with their JSON pointer.
+inline constexpr float MIN_KERNEL_RADIUS_M = 1e-4f;
+
 struct BladeShadingParams {
     // Gaussian sigma (metres) of the neighbour-density kernel; 0 turns AO off (AO = 1).
     float aoRadiusM = 0.15f;

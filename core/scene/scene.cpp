@@ -209,7 +209,7 @@ Result<BillboardLayer> buildBillboards(const LoadedProject& loaded, const Surfac
     if (!desc.texture.empty()) {
         auto path = resolveAssetPath(loaded.folder, desc.texture, "/billboards/texture");
         if (!path)
-            return Error{loaded.file.string(), path.error().message};
+            return Error{loaded.file.string(), path.error().str()};
         auto texture = loadGrassTexture(*path);
         if (!texture)
             return texture.error();
@@ -239,8 +239,8 @@ Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted,
                                        const GrassLightingDesc& lighting) {
     const glm::vec3 margin(std::max(texelMarginM, 0.0f));
     RegrowReport report;
-    report.patches = patchesWithRootsIn(layer.source, layer, {painted.min - margin,
-                                                              painted.max + margin});
+    report.patches =
+        patchesWithRootsIn(layer.source, layer, {painted.min - margin, painted.max + margin});
     report.bladesAddedOrRemoved = regrowPatches(layer.source, report.patches, layer);
     report.shadedPatches = report.patches;
     if (report.bladesAddedOrRemoved > 0) {
@@ -307,6 +307,12 @@ Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, cons
     layer.scatter.blade.heightMax = 1.3f * height;
     layer.scatter.blade.widthMin = 0.03f * height;
     layer.scatter.blade.widthMax = 0.05f * height;
+    // Billboards follow the field's size too: the default density per m² on a large mesh (a
+    // model in millimetres) asked for millions of them, refused in terms of a setting the user
+    // of --mesh never gave. One billboard per 16 blades at most.
+    StarBillboardParams& billboards = project.billboards.placement;
+    billboards.density = std::min(
+        billboards.density, static_cast<float>(static_cast<double>(targetBlades) / 16.0 / area));
 
     const OrbitCamera framed = frameBounds(bounds, 0.785f, preferredViewDirection(mesh));
     CameraDesc& camera = project.cameras.front();

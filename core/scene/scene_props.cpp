@@ -23,7 +23,7 @@ Result<ColliderMesh> loadColliderMesh(const LoadedProject& loaded, const Collide
     const std::string field = "/colliders/" + std::to_string(index) + "/file";
     auto file = resolveAssetPath(loaded.folder, collider.file, field);
     if (!file)
-        return Error{loaded.file.string(), file.error().message};
+        return Error{loaded.file.string(), file.error().str()};
     auto imported = loadGltf(*file);
     if (!imported)
         return imported.error();

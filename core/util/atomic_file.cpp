@@ -2,13 +2,14 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <sstream>
+
+#include "util/byte_size.h"
 
 namespace grass {
 
@@ -78,36 +79,56 @@ static void testSaveDelay() {
         ::usleep(static_cast<useconds_t>(ms) * 1000u);
 }
 
-Result<void> commitTemporaryFile(const fs::path& temporary, const fs::path& target) {
+Result<void> commitTemporaryFile(const fs::path& temporary, const fs::path& target,
+                                 std::uint64_t minimumBytes) {
     std::error_code ec;
-    if (auto synced = syncFile(temporary); !synced) {
+    const auto refuse = [&](Result<void> failed) {
         fs::remove(temporary, ec);
-        return synced;
-    }
+        return failed;
+    };
+    if (auto synced = syncFile(temporary); !synced)
+        return refuse(synced);
+    const std::uintmax_t size = fs::file_size(temporary, ec);
+    if (ec || size < minimumBytes)
+        return refuse(
+            makeError(target.string(), "write failed: only " + std::to_string(ec ? 0 : size) +
+                                           " bytes reached the disk (disk full?); the file was "
+                                           "left as it was"));
     testSaveDelay();
     fs::rename(temporary, target, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        return makeError(target.string(), "cannot replace the file: " + ec.message());
-    }
+    if (ec)
+        return refuse(makeError(target.string(), "cannot replace the file: " + ec.message()));
     return {};
 }
 
 Result<void> writeFileAtomic(const fs::path& target, std::string_view bytes) {
     const fs::path temporary = temporaryPathFor(target);
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out)
-            return makeError(target.string(), "cannot write: " + std::string(std::strerror(errno)));
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.flush();
-        if (!out) {
-            std::error_code ec;
-            fs::remove(temporary, ec);
-            return makeError(target.string(), "write failed (disk full?)");
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0)
+        return makeError(target.string(), "cannot write: " + std::string(std::strerror(errno)));
+    std::size_t done = 0;
+    int writeError = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            writeError = n < 0 ? errno : ENOSPC;
+            break;
         }
+        done += static_cast<std::size_t>(n);
     }
-    return commitTemporaryFile(temporary, target);
+    // close() reports what a network or quota file system deferred.
+    if (::close(fd) != 0 && writeError == 0)
+        writeError = errno;
+    if (writeError != 0) {
+        std::error_code ec;
+        fs::remove(temporary, ec);
+        return makeError(target.string(),
+                         "write failed: " + std::string(std::strerror(writeError)) +
+                             "; the file was left as it was");
+    }
+    return commitTemporaryFile(temporary, target, bytes.size());
 }
 
 Result<void> checkFileWritable(const std::filesystem::path& target, std::string_view example) {
@@ -118,23 +139,80 @@ Result<void> checkFileWritable(const std::filesystem::path& target, std::string_
     if (target.has_parent_path() && !std::filesystem::is_directory(target.parent_path(), ec))
         return makeError(target.string(),
                          "the folder " + target.parent_path().string() + " does not exist");
+    // Write access is only known by trying: the temporary the save will use, made and removed
+    // (a read-only or full file system, a folder of someone else's, /proc).
+    const fs::path probe = temporaryPathFor(target);
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0)
+        return makeError(target.string(),
+                         "cannot write here: " + std::string(std::strerror(errno)));
+    ::close(fd);
+    fs::remove(probe, ec);
     return {};
 }
 
-Result<std::string> readFile(const fs::path& file) {
-    std::error_code ec;
-    if (!fs::exists(file, ec))
-        return makeError(file.string(), "file not found");
-    if (fs::is_directory(file, ec))
-        return makeError(file.string(), "is a folder, not a file");
-    std::ifstream in(file, std::ios::binary);
-    if (!in)
-        return makeError(file.string(), std::string("cannot open: ") + std::strerror(errno));
-    std::ostringstream contents;
-    contents << in.rdbuf();
-    if (in.bad())
-        return makeError(file.string(), "read failed");
-    return contents.str();
+// What a path is when it is not a regular file, for the message.
+static std::string kindOf(mode_t mode) {
+    if (S_ISDIR(mode))
+        return "is a folder, not a file";
+    if (S_ISFIFO(mode))
+        return "is a FIFO (named pipe), not a regular file; reading it could wait for ever";
+    if (S_ISCHR(mode) || S_ISBLK(mode))
+        return "is a device, not a regular file";
+    if (S_ISSOCK(mode))
+        return "is a socket, not a regular file";
+    return "is not a regular file";
+}
+
+Result<void> checkRegularFile(const fs::path& file) {
+    struct stat info {};
+    if (::stat(file.c_str(), &info) != 0)
+        return makeError(file.string(), errno == ENOENT
+                                            ? std::string("file not found")
+                                            : std::string("cannot open: ") + std::strerror(errno));
+    if (!S_ISREG(info.st_mode))
+        return makeError(file.string(), kindOf(info.st_mode));
+    return {};
+}
+
+Result<std::string> readFile(const fs::path& file, std::uint64_t maxBytes) {
+    // Non-blocking, so that a FIFO put in a file's place cannot hang the open itself.
+    const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0)
+        return makeError(file.string(), errno == ENOENT
+                                            ? std::string("file not found")
+                                            : std::string("cannot open: ") + std::strerror(errno));
+    struct stat info {};
+    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+        ::close(fd);
+        return makeError(file.string(), kindOf(info.st_mode));
+    }
+    const auto size = static_cast<std::uint64_t>(info.st_size);
+    if (size > maxBytes) {
+        ::close(fd);
+        return makeError(file.string(), "is " + byteSizeText(static_cast<double>(size)) +
+                                            ", more than the " +
+                                            byteSizeText(static_cast<double>(maxBytes)) +
+                                            " this reader accepts; is it the right file?");
+    }
+    std::string contents(static_cast<std::size_t>(size), '\0');
+    std::size_t done = 0;
+    while (done < contents.size()) {
+        const ssize_t n = ::read(fd, contents.data() + done, contents.size() - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0) {
+            const int error = errno;
+            ::close(fd);
+            return makeError(file.string(), std::string("read failed: ") + std::strerror(error));
+        }
+        if (n == 0)
+            break;  // shrank while we read: what is there is the file
+        done += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
+    contents.resize(done);
+    return contents;
 }
 
 }  // namespace grass

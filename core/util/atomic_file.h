@@ -3,6 +3,7 @@
 // either the old file or the new one, never half of one.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string_view>
 
@@ -23,15 +24,31 @@ Result<void> writeFileAtomic(const std::filesystem::path& target, std::string_vi
 // that cannot be read removes nothing.
 std::size_t removeStaleTemporaries(const std::filesystem::path& folder);
 
-// Flushes a finished temporary file and renames it over `target`; removes it on failure.
+// Flushes a finished temporary file and renames it over `target`; removes it on failure. A
+// temporary shorter than `minimumBytes` (default: empty) is refused as a failed write: some
+// writers (libpng inside OpenImageIO) drop the error of a full disk and report success.
 Result<void> commitTemporaryFile(const std::filesystem::path& temporary,
-                                 const std::filesystem::path& target);
+                                 const std::filesystem::path& target,
+                                 std::uint64_t minimumBytes = 1);
 
 // Fails early (before long work) when `target` cannot be a file to write: it is a folder or its
 // folder does not exist. `example` names a valid file in the message ("report.json").
 Result<void> checkFileWritable(const std::filesystem::path& target, std::string_view example);
 
-// Reads a whole file; the error names the file.
-Result<std::string> readFile(const std::filesystem::path& file);
+// The most any reader takes in by default (a glTF mesh with its buffers), and the most a JSON
+// document of ours may be (project.json, tradeoff.json, bench results, an export's .gltf): a
+// 200 MB project.json would take 4-5 GB of memory as a JSON tree before it could be refused.
+constexpr std::uint64_t MAX_READ_BYTES = std::uint64_t{2} << 30;
+constexpr std::uint64_t MAX_JSON_FILE_BYTES = std::uint64_t{64} << 20;
+
+// Refuses anything but a regular file (after following links) without opening it for long: a
+// folder, a device such as /dev/zero, a FIFO that would block for ever, a socket. The error
+// names the file and what it is instead.
+Result<void> checkRegularFile(const std::filesystem::path& file);
+
+// Reads a whole regular file of at most `maxBytes` (checked before a byte is read); the error
+// names the file, and the size and the cap when it is too large.
+Result<std::string> readFile(const std::filesystem::path& file,
+                             std::uint64_t maxBytes = MAX_READ_BYTES);
 
 }  // namespace grass

@@ -27,6 +27,30 @@ Result<void> checkImageWritable(const fs::path& file) {
     return {};
 }
 
+Result<void> verifyWrittenImage(const fs::path& written, const std::string& name, int width,
+                                int height) {
+    const std::string failed = "write failed: the file did not read back whole (disk full?); ";
+    // A PNG is whole when its chunks run to IEND: walked here, since libpng would print its
+    // own lines on stderr about a truncated file.
+    if (core::startsWithPngSignature(written)) {
+        if (auto png = core::checkPngChunks(written, core::MAX_IMAGE_SIDE); !png)
+            return makeError(name, failed + png.error().message);
+        return {};
+    }
+    auto in = OIIO::ImageInput::open(written.string());
+    if (!in)
+        return makeError(name, failed + oneLine(OIIO::geterror()));
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width != width || spec.height != height)
+        return makeError(name, failed + "it holds " + std::to_string(spec.width) + "×" +
+                                   std::to_string(spec.height) + " pixels");
+    std::vector<float> pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
+                              static_cast<std::size_t>(spec.nchannels));
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
+        return makeError(name, failed + oneLine(in->geterror()));
+    return {};
+}
+
 Result<void> writeRgba8Image(const fs::path& file, int width, int height,
                              std::span<const std::uint8_t> pixels) {
     if (width <= 0 || height <= 0 ||
@@ -47,6 +71,11 @@ Result<void> writeRgba8Image(const fs::path& file, int width, int height,
     if (!written || !closed) {
         fs::remove(temporary, ec);
         return makeError(file.string(), "write failed: " + oneLine(out->geterror()));
+    }
+    out.reset();
+    if (auto whole = verifyWrittenImage(temporary, file.string(), width, height); !whole) {
+        fs::remove(temporary, ec);
+        return whole;
     }
     return commitTemporaryFile(temporary, file);
 }

@@ -25,6 +25,12 @@ struct Rgba8Pixels {
     int height = 0;
     std::vector<std::uint8_t> pixels;  // RGBA, row 0 = top
 };
+// Reads a just-written image file back in full (size and every pixel) before it replaces
+// anything: OpenImageIO's PNG writer can report success when the disk filled up under it.
+// `name` is the file the user asked for, which the error names.
+Result<void> verifyWrittenImage(const std::filesystem::path& written, const std::string& name,
+                                int width, int height);
+
 // OpenImageIO's error text on one line (its messages may hold newlines and trailing spaces).
 std::string oneLine(std::string text);
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "util/atomic_file.h"
 #include "util/byte_size.h"
 
 namespace grass::core {
@@ -119,6 +120,10 @@ bool hasExrMagic(const fs::path& file) {
     return startsWith(file, EXR_MAGIC);
 }
 
+bool startsWithPngSignature(const fs::path& file) {
+    return startsWith(file, PNG_SIGNATURE);
+}
+
 Result<void> checkExrHeader(const fs::path& file, int maxSide) {
     HeaderFile exr(file, "OpenEXR header");
     if (exr.bytes < 0 || !exr.in)
@@ -214,6 +219,9 @@ Result<void> checkPngChunks(const fs::path& file, int maxSide) {
 }
 
 Result<void> checkImageHeader(const fs::path& file, int maxSide) {
+    // OpenImageIO would block on a FIFO and read /dev/zero for ever: regular files only.
+    if (auto regular = checkRegularFile(file); !regular)
+        return regular;
     if (startsWith(file, EXR_MAGIC))
         return checkExrHeader(file, maxSide);
     if (startsWith(file, PNG_SIGNATURE))

@@ -25,6 +25,8 @@ Result<void> checkImageSize(const std::string& name, std::int64_t width, std::in
 // True when the file starts with the OpenEXR magic number (76 2f 31 01); false when not or
 // when it cannot be read.
 bool hasExrMagic(const std::filesystem::path& file);
+// The same for the PNG signature (89 50 4E 47 0D 0A 1A 0A).
+bool startsWithPngSignature(const std::filesystem::path& file);
 
 // For a file with the PNG signature: walks the chunks (PNG spec §5.3: big-endian length, type,
 // data, CRC) up to IEND and fails, naming the file and the chunk, when a length exceeds

@@ -22,16 +22,16 @@
 #include "editor_ui.h"
 #include "framebuffer.h"
 #include "headless_context.h"
+#include "input_script.h"
+#include "live_scene.h"
 #include "offscreen_render.h"
+#include "panels.h"
 #include "scene/scene_physics.h"
 #include "scene_physics_gpu.h"
 #include "scene_renderer.h"
 #include "turntable_files.h"
 #include "util/arg_parser.h"
 #include "util/image_file.h"
-#include "input_script.h"
-#include "live_scene.h"
-#include "panels.h"
 #include "viewport_tools.h"
 #include "window.h"
 
@@ -67,14 +67,13 @@ std::string applyRenderKeys(const editor::InputState& input, render::RenderOptio
                                      ? core::LightingModel::Simple
                                      : core::LightingModel::Grass;
         return options.lighting.model == core::LightingModel::Grass ? "grass lighting"
-                                                                     : "simple lighting";
+                                                                    : "simple lighting";
     }
     return {};
 }
 
 void applyInput(editor::InputState input, bool drag, bool wheel, int viewportHeight,
-                const core::Scene& scene,
-                core::OrbitCamera& camera) {
+                const core::Scene& scene, core::OrbitCamera& camera) {
     if (!drag)
         input.leftDown = input.middleDown = false;
     if (!wheel)
@@ -246,8 +245,8 @@ int main(int argc, char** argv) {
         if (newProject) {
             if (auto cam = render::projectCamera(state.loaded.project, ""))
                 *camera = *cam;
-            state.options = render::renderOptionsFor(state.loaded.project,
-                                                     gl::isSoftwareRenderer());
+            state.options =
+                render::renderOptionsFor(state.loaded.project, gl::isSoftwareRenderer());
             editor::resetHistory(state);
             resetTimeline();
         }
@@ -304,10 +303,9 @@ int main(int argc, char** argv) {
             uiPointer = out.wantsPointer;
             uiKeyboard = out.wantsKeyboard;
             view = toPixels(central, out.pixelsPerPoint, height);
-            state.status.uiMs =
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
-                                                          uiStart)
-                    .count();
+            state.status.uiMs = std::chrono::duration<double, std::milli>(
+                                    std::chrono::steady_clock::now() - uiStart)
+                                    .count();
         }
         // The viewport's tools: a press on the mesh (brush) or on an object (gizmo) makes the
         // drag theirs; the camera orbits with the right button meanwhile.
@@ -337,8 +335,7 @@ int main(int argc, char** argv) {
             cameraDrag = true;
         applyInput(input, cameraDrag, !uiPointer, view.h, *live.scene, *camera);
         if (!uiKeyboard) {
-            if (const std::string changed = applyRenderKeys(input, state.options);
-                !changed.empty())
+            if (const std::string changed = applyRenderKeys(input, state.options); !changed.empty())
                 std::fprintf(stderr, "grass-editor: %s\n", changed.c_str());
             editor::applyToolKeys(state, input.typed);
             for (const ui::KeyEvent& key : input.keys) {
@@ -372,8 +369,8 @@ int main(int argc, char** argv) {
         // An export reads the scene on its worker: replacing or re-growing it waits.
         if (state.newRequested && !state.busy()) {
             state.newRequested = false;
-            state.loaded = core::LoadedProject{core::Project{}, std::filesystem::current_path(),
-                                               {}};
+            state.loaded =
+                core::LoadedProject{core::Project{}, std::filesystem::current_path(), {}};
             state.dirty = true;  // exists only in memory until saved
             state.message = "new project (not saved)";
             rebuild(true);
@@ -411,20 +408,20 @@ int main(int argc, char** argv) {
         }
         state.regrown.clear();
         // Autosave on the simulation's clock when replaying, so scripts see it at a fixed frame.
-        autosaveDueS -= replay ? state.timeline.stepS()
-                               : std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                                               lastFrameEnd)
-                                     .count();
+        autosaveDueS -=
+            replay ? state.timeline.stepS()
+                   : std::chrono::duration<double>(std::chrono::steady_clock::now() - lastFrameEnd)
+                         .count();
         if (autosaveS > 0.0 && autosaveDueS <= 0.0 && state.dirty && !state.busy() &&
             !state.toolDragActive) {
             autosaveDueS = autosaveS;
             if (auto written = editor::writeAutosave(state); !written)
                 state.message = "autosave failed: " + written.error().str();
-            else if (!state.loaded.file.empty())
+            else if (!state.loaded.file.empty() && !state.messageIsSaveError)
                 state.message = "autosaved to " + editor::autosavePath(state.loaded).string();
         }
-        const std::string title = "grass — " + state.loaded.project.name +
-                                  (state.dirty ? " *" : "");
+        const std::string title =
+            "grass — " + state.loaded.project.name + (state.dirty ? " *" : "");
         if (title != shownTitle) {
             (*window)->setTitle(title);
             shownTitle = title;
@@ -480,8 +477,8 @@ int main(int argc, char** argv) {
         }
         if (!state.screenshotRequested.empty()) {
             const gl::Rgba8Image shown = gl::readFramebuffer(0, width, height);
-            const auto written = writeRgba8Image(state.screenshotRequested, shown.width,
-                                                 shown.height, shown.pixels);
+            const auto written =
+                writeRgba8Image(state.screenshotRequested, shown.width, shown.height, shown.pixels);
             state.message = written ? "saved " + state.screenshotRequested
                                     : "screenshot not saved: " + written.error().str();
             state.screenshotRequested.clear();
@@ -495,10 +492,10 @@ int main(int argc, char** argv) {
             request.options = state.options;
             auto turned = render::writeTurntable(*live.scene, *camera, request, TURNTABLE_VIEWS,
                                                  state.turntableRequested);
-            state.message = turned ? "saved a turntable of " +
-                                         std::to_string(turned->framesWritten) + " views: " +
-                                         turned->sheet.string()
-                                   : "turntable not saved: " + turned.error().str();
+            state.message = turned
+                                ? "saved a turntable of " + std::to_string(turned->framesWritten) +
+                                      " views: " + turned->sheet.string()
+                                : "turntable not saved: " + turned.error().str();
             state.turntableRequested.clear();
         }
         if (!scriptFile.empty() && !script[static_cast<std::size_t>(frame)].screenshot.empty()) {

@@ -80,11 +80,12 @@ void fileMenu(ui::Ui& bar, EditorState& s) {
 void editMenu(ui::Ui& bar, EditorState& s) {
     ui::menu(bar, "Edit", [&](ui::Ui& m) {
         const core::Edit* next = s.history.nextUndo();
-        if (ui::menuItem(m, next ? "Undo " + next->label + "   Ctrl+Z" : std::string("Undo")) && next)
+        if (ui::menuItem(m, next ? "Undo " + next->label + "   Ctrl+Z" : std::string("Undo")) &&
+            next)
             undo(s);
         const core::Edit* again = s.history.nextRedo();
-        if (ui::menuItem(m, again ? "Redo " + again->label + "   Ctrl+Shift+Z"
-                                  : std::string("Redo")) &&
+        if (ui::menuItem(
+                m, again ? "Redo " + again->label + "   Ctrl+Shift+Z" : std::string("Redo")) &&
             again)
             redo(s);
     });
@@ -109,8 +110,8 @@ void fileDialogWindow(ui::Context& ctx, EditorState& s) {
             bool committed = false;
             ui::textEdit(ui, "##path", s.pathText, ui.availableWidth() - 8.0f, &committed);
             ui.horizontal([&](ui::Ui& row) {
-                const bool go = row.button(opening ? "Open" : "Save").clicked() ||
-                                (committed && enter);
+                const bool go =
+                    row.button(opening ? "Open" : "Save").clicked() || (committed && enter);
                 if (go && !s.pathText.empty()) {
                     if (opening)
                         askLeave(s, LeaveAction::Open, s.pathText);
@@ -131,9 +132,15 @@ void fileDialogWindow(ui::Context& ctx, EditorState& s) {
 void leave(EditorState& s) {
     s.quitDialog = false;
     switch (s.leaveAction) {
-    case LeaveAction::Quit: s.quitRequested = true; break;
-    case LeaveAction::New: s.newRequested = true; break;
-    case LeaveAction::Open: s.openRequested = s.leaveOpenPath; break;
+        case LeaveAction::Quit:
+            s.quitRequested = true;
+            break;
+        case LeaveAction::New:
+            s.newRequested = true;
+            break;
+        case LeaveAction::Open:
+            s.openRequested = s.leaveOpenPath;
+            break;
     }
 }
 
@@ -190,8 +197,11 @@ void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
     ui::Ui ui(ctx, {rect.min + ui::Vec2(8.0f, 2.0f), rect.max}, ui::Layer::Panels);
     ui.horizontal([&](ui::Ui& row) {
         row.label(text);
+        // A failed save in warning orange, so that it reads as something to act on.
         if (!s.message.empty())
-            row.coloredLabel("   " + s.message, style.textWeak);
+            row.coloredLabel("   " + s.message, s.messageIsSaveError
+                                                    ? ui::Color32::rgb(255, 150, 60)
+                                                    : style.textWeak);
     });
 }
 
@@ -214,18 +224,21 @@ bool saveTo(EditorState& s, const std::string& file) {
                 continue;
             fs::create_directories(to.parent_path(), ec);
             if (!fs::copy_file(from, to, ec)) {
-                s.message = "not saved: " + to.string() + ": cannot copy " + from.string() +
-                            " (" + ec.message() + ")";
+                s.message = "not saved: " + to.string() + ": cannot copy " + from.string() + " (" +
+                            ec.message() + ")";
+                s.messageIsSaveError = true;
                 return false;
             }
         }
     }
     if (auto maps = savePaintedMaps(s, folder); !maps) {
         s.message = "not saved: " + maps.error().str();
+        s.messageIsSaveError = true;
         return false;
     }
     if (auto saved = core::saveProject(s.loaded.project, path); !saved) {
         s.message = "not saved: " + saved.error().str();
+        s.messageIsSaveError = true;
         return false;
     }
     // Saved: the autosave side files (of where the project was) have nothing left to recover.
@@ -234,6 +247,7 @@ bool saveTo(EditorState& s, const std::string& file) {
     s.loaded.folder = folder;
     s.dirty = false;
     s.message = "saved " + path.string();
+    s.messageIsSaveError = false;
     return true;
 }
 

@@ -108,6 +108,9 @@ struct EditorState {
     LeaveAction leaveAction = LeaveAction::Quit;
     std::string leaveOpenPath;
     std::string message;  // last file operation's result, shown in the status bar
+    // A failed save stays on screen: routine messages (autosaved) do not replace it until a
+    // save succeeds.
+    bool messageIsSaveError = false;
 };
 
 // Builds every panel for this frame (between Context::beginFrame and endFrame) and returns the

@@ -1,6 +1,7 @@
 // File → Export…: where to, which format and LOD, then a progress bar while the worker writes.
 #include <array>
 
+#include "autosave.h"
 #include "panels.h"
 #include "ui/text_edit.h"
 #include "ui/ui.h"
@@ -18,6 +19,14 @@ void startExport(EditorState& s) {
     if (dir.is_relative() && !s.loaded.folder.empty())
         dir = s.loaded.folder / dir;
     options.outDir = dir;
+    // An export reads what already lies in its folder (the clean-up of files no longer named):
+    // whatever happens there, unsaved work is in the autosave first.
+    if (s.dirty)
+        if (auto kept = writeAutosave(s); !kept) {
+            s.message = "not exported: the unsaved work could not be autosaved first: " +
+                        kept.error().str();
+            return;
+        }
     s.exportJob = std::make_shared<ExportJob>(s.loaded, *s.scene, options);
     s.message = "exporting to " + dir.string();
 }
@@ -46,8 +55,8 @@ void exportWindow(ui::Context& ctx, EditorState& s) {
             }
             ui.label("Folder (a relative path is inside the project folder):");
             ui::textEdit(ui, "##exportdir", s.exportDir, ui.availableWidth() - 8.0f);
-            static constexpr std::array<const char*, 2> FORMATS{
-                "glTF (EXT_mesh_gpu_instancing)", "raw GPU buffers"};
+            static constexpr std::array<const char*, 2> FORMATS{"glTF (EXT_mesh_gpu_instancing)",
+                                                                "raw GPU buffers"};
             ui.comboBox("format", s.exportFormat, FORMATS);
             if (s.exportFormat == int(core::ExportFormat::Gltf))
                 ui.slider("LOD (keep 1 in 2^N)", s.exportLod, 0, core::MAX_EXPORT_LOD);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "util/atomic_file.h"
+#include "util/json_text.h"
 
 namespace grass::cli {
 
@@ -101,12 +102,14 @@ std::string benchRunJson(const BenchRun& run) {
 }
 
 Result<BenchRun> readBenchRun(const std::string& file) {
-    auto text = readFile(file);
+    auto text = readFile(file, MAX_JSON_FILE_BYTES);
     if (!text)
         return text.error();
-    const Json document = Json::parse(text->begin(), text->end(), nullptr, false);
-    if (document.is_discarded())
-        return fileError(file, "not valid JSON (expected a file written by grass bench --out)");
+    const auto parsed = parseJsonText(*text, file);
+    if (!parsed)
+        return fileError(
+            file, parsed.error().message + " (expected a file written by grass bench --out)");
+    const Json& document = *parsed;
     if (!document.is_object() || document.value("format", Json()) != FORMAT)
         return fileError(file,
                          "not a grass bench result (no \"format\": \"grass-bench\"; write "

@@ -9,8 +9,8 @@
 
 #include "commands.h"
 #include "export/export.h"
-#include "project/project.h"
 #include "preset_option.h"
+#include "project/project.h"
 #include "scene/scene.h"
 #include "util/arg_parser.h"
 
@@ -100,6 +100,14 @@ int runExport(const std::vector<std::string>& argv) {
         return EXIT_FAILED;
     }
     applyPresetOption(args.preset, loaded->project);
+    core::ExportOptions options;
+    options.format = *format;
+    options.lod = args.lod;
+    options.outDir = args.out;
+    if (auto refused = core::refuseExportOverInputs(*loaded, options); !refused) {
+        printError("export", withFlagNames(refused.error()).str());
+        return EXIT_USAGE;
+    }
     std::fprintf(stderr, "note: growing %s ...\n", loaded->file.c_str());
     auto scene = core::buildScene(*loaded);
     if (!scene) {
@@ -112,10 +120,6 @@ int runExport(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "note: grown in %.0f ms: %zu blades in %zu layers\n", growMs,
                  scene->totalBlades(), scene->layers.size());
 
-    core::ExportOptions options;
-    options.format = *format;
-    options.lod = args.lod;
-    options.outDir = args.out;
     const auto exportStart = Clock::now();
     auto report =
         core::exportProject(*loaded, *scene, options, [](float fraction, std::string_view stage) {

@@ -9,7 +9,9 @@
 #include "headless_context.h"
 #include "mesh/gltf_loader.h"
 #include "offscreen_render.h"
+#include "physics/step_count.h"
 #include "preset_option.h"
+#include "project/project_inputs.h"
 #include "scene/scene_physics.h"
 #include "scene/turntable.h"
 #include "simulation_runner.h"
@@ -18,6 +20,7 @@
 #include "util/atomic_file.h"
 #include "util/byte_size.h"
 #include "util/image_file.h"
+#include "util/path_inside.h"
 
 namespace grass::cli {
 
@@ -59,9 +62,24 @@ Result<void> checkFramebuffer(const RenderArgs& args, const core::RenderSettings
             byteSizeText(core::MAX_FRAMEBUFFER_BYTES) + ": lower the size or the samples");
 }
 
-Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& parser,
+// Refuses, before any work, an --out or --stats that is one of the files read.
+Result<void> refuseOutputsOverInputs(const RenderArgs& args,
+                                     const std::vector<core::ProjectInput>& inputs) {
+    for (const auto& [option, file] : {std::pair{"--out", &args.out}, {"--stats", &args.stats}})
+        if (!file->empty())
+            if (auto refused = core::refuseOverwritingInput(inputs, *file, option); !refused)
+                return refused;
+    return {};
+}
+
+Result<core::LoadedProject> loadInput(RenderArgs& args, const ArgParser& parser,
                                       core::Scene* scene) {
     if (!args.mesh.empty()) {
+        std::vector<core::ProjectInput> inputs{{realPath(args.mesh), args.mesh, "--mesh file"}};
+        for (const auto& part : core::gltfExternalFiles(args.mesh))
+            inputs.push_back({realPath(part), part, "--mesh file's " + part.filename().string()});
+        if (auto refused = refuseOutputsOverInputs(args, inputs); !refused)
+            return refused.error();
         auto imported = core::loadGltf(args.mesh);
         if (!imported)
             return imported.error();
@@ -84,6 +102,13 @@ Result<core::LoadedProject> loadInput(const RenderArgs& args, const ArgParser& p
     auto loaded = core::loadProject(args.project);
     if (!loaded)
         return loaded.error();
+    if (args.out.empty())
+        args.out = core::fileSafeName(loaded->project.name) + ".png";
+    if (auto steps = core::simulationSteps(args.timeS, loaded->project.physics.dtS, "--time");
+        !steps)
+        return steps.error();
+    if (auto refused = refuseOutputsOverInputs(args, core::projectInputFiles(*loaded)); !refused)
+        return refused.error();
     if (parser.given("--seed"))
         loaded->project.seed = args.seed;
     applyPresetOption(args.preset, loaded->project);
@@ -142,8 +167,8 @@ std::string statsJson(const render::FrameTimings& frame, double physicsMs, doubl
                   "  \"stem_sets\": {\"drawn\": %zu, \"ms\": %.4f},\n"
                   "  \"snow\": {\"depth_pass_ms\": %.4f},\n",
                   c.bladesIn, c.culledPatch, c.culledOrientation, c.culledFrustum, c.culledDistance,
-                  c.culledOcclusion, c.culledSnow, c.drawn, physicsMs, frame.cullMs, frame.meshMs, grassMs,
-                  total, wallMs, c.drawnPerLod[0], c.drawnPerLod[1], c.drawnPerLod[2],
+                  c.culledOcclusion, c.culledSnow, c.drawn, physicsMs, frame.cullMs, frame.meshMs,
+                  grassMs, total, wallMs, c.drawnPerLod[0], c.drawnPerLod[1], c.drawnPerLod[2],
                   frame.billboardsDrawn, frame.billboardDrawCalls, frame.billboardMs,
                   frame.stemSetsDrawn, frame.stemSetMs, frame.snowMs);
     const auto list = [](const std::vector<std::string>& names) {
@@ -215,7 +240,10 @@ int runRender(const std::vector<std::string>& argv) {
                       &args.project, false);
     parser.text("--mesh", "FILE", "render a default field on this glTF file instead of a project",
                 &args.mesh);
-    parser.text("--out", "FILE", "image to write (default: <project name>.png)", &args.out);
+    parser.text("--out", "FILE",
+                "image to write (default: <project name>.png in the working folder, the name kept "
+                "to letters, digits, - and _)",
+                &args.out);
     parser.integer("--width", "image width in pixels (default: the project's)", &args.width, 1,
                    16384);
     parser.integer("--height", "image height in pixels (default: the project's)", &args.height, 1,
@@ -240,7 +268,8 @@ int runRender(const std::vector<std::string>& argv) {
                   "shader by vertex position or by object centre",
                   &args.animation);
     parser.choice("--lighting", {"project", "grass", "simple"},
-                  "blade lighting: the grass model of SPEC §10 or a wrapped Lambert", &args.lighting);
+                  "blade lighting: the grass model of SPEC §10 or a wrapped Lambert",
+                  &args.lighting);
     parser.flag("--light-per-vertex",
                 "light blades per vertex (as the article does) instead of per pixel",
                 &args.lightPerVertex);
@@ -311,7 +340,7 @@ int runRender(const std::vector<std::string>& argv) {
     }
     if (!args.stats.empty())
         if (auto writable = checkFileWritable(args.stats, "stats.json"); !writable) {
-            printError("render", writable.error().str());
+            printError("render", "--stats: " + writable.error().str());
             return EXIT_USAGE;
         }
     // Fail before the (possibly long) scene build and render when the image can't be written.
@@ -339,7 +368,7 @@ int runRender(const std::vector<std::string>& argv) {
         return EXIT_USAGE;
     }
     if (args.out.empty())
-        args.out = project.name + ".png";
+        args.out = core::fileSafeName(project.name) + ".png";
 
     auto context = gl::HeadlessContext::create(args.glDebug);
     if (!context) {
@@ -417,11 +446,11 @@ int runRender(const std::vector<std::string>& argv) {
     std::printf("  frames     %zu, wall ms: first %.1f, median %.1f, min %.1f\n",
                 rendered->frameWallMs.size(), rendered->frameWallMs.front(),
                 frames[frames.size() / 2], frames.front());
-    std::printf("  gpu ms     mesh %.2f, grass %.2f, billboards %.2f, stem sets %.2f, snow map "
-                "%.2f (last frame, timer queries)\n",
-                rendered->lastFrame.meshMs, rendered->lastFrame.grassMs,
-                rendered->lastFrame.billboardMs, rendered->lastFrame.stemSetMs,
-                rendered->lastFrame.snowMs);
+    std::printf(
+        "  gpu ms     mesh %.2f, grass %.2f, billboards %.2f, stem sets %.2f, snow map "
+        "%.2f (last frame, timer queries)\n",
+        rendered->lastFrame.meshMs, rendered->lastFrame.grassMs, rendered->lastFrame.billboardMs,
+        rendered->lastFrame.stemSetMs, rendered->lastFrame.snowMs);
     std::printf("  technique  %s; billboards drawn %zu in %zu draw call(s); stem sets drawn %zu\n",
                 std::string(core::grassTechniqueName(request.options.technique)).c_str(),
                 rendered->lastFrame.billboardsDrawn, rendered->lastFrame.billboardDrawCalls,
@@ -434,10 +463,11 @@ int runRender(const std::vector<std::string>& argv) {
         cull.bladesIn, cull.drawn, 100.0 * static_cast<double>(cull.drawn) / inBlades,
         cull.culledPatch, cull.culledOrientation, cull.culledFrustum, cull.culledDistance,
         cull.culledOcclusion, cull.culledSnow, rendered->lastFrame.cullMs);
-    std::printf("  detail     drawn per LOD %zu / %zu / %zu (full, half, quarter segments; "
-                "--lod-distance %.3g m)\n",
-                cull.drawnPerLod[0], cull.drawnPerLod[1], cull.drawnPerLod[2],
-                static_cast<double>(request.options.cull.lodDistanceM));
+    std::printf(
+        "  detail     drawn per LOD %zu / %zu / %zu (full, half, quarter segments; "
+        "--lod-distance %.3g m)\n",
+        cull.drawnPerLod[0], cull.drawnPerLod[1], cull.drawnPerLod[2],
+        static_cast<double>(request.options.cull.lodDistanceM));
     if (!args.stats.empty()) {
         const std::string json =
             statsJson(rendered->lastFrame, physicsMsPerStep, rendered->frameWallMs.back());

@@ -9,8 +9,10 @@
 #include "commands.h"
 #include "debug_output.h"
 #include "headless_context.h"
-#include "scene/scene_physics.h"
+#include "physics/step_count.h"
 #include "preset_option.h"
+#include "project/project_inputs.h"
+#include "scene/scene_physics.h"
 #include "simulation_runner.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
@@ -95,7 +97,7 @@ int runSim(const std::vector<std::string>& argv) {
     }
     if (!args.report.empty())
         if (auto writable = checkFileWritable(args.report, "report.json"); !writable) {
-            printError("sim", writable.error().str());
+            printError("sim", "--report: " + writable.error().str());
             return EXIT_USAGE;
         }
 
@@ -104,12 +106,23 @@ int runSim(const std::vector<std::string>& argv) {
         printError("sim", loaded.error().str());
         return EXIT_FAILED;
     }
+    if (!args.report.empty())
+        if (auto refused = core::refuseOverwritingInput(*loaded, args.report, "--report");
+            !refused) {
+            printError("sim", refused.error().str());
+            return EXIT_USAGE;
+        }
     if (parser.given("--seed"))
         loaded->project.seed = args.seed;
     if (parser.given("--dt"))
         loaded->project.physics.dtS = static_cast<float>(args.dtS);
     // After --dt: the preset fits its substeps into the step actually taken.
     applyPresetOption(args.preset, loaded->project);
+    if (auto steps = core::simulationSteps(args.seconds, loaded->project.physics.dtS, "--seconds");
+        !steps) {
+        printError("sim", steps.error().str());
+        return EXIT_USAGE;
+    }
     auto scene = core::buildScene(*loaded);
     if (!scene) {
         printError("sim", scene.error().str());

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "physics/step_count.h"
 #include "scene_physics_gpu.h"
 
 namespace grass::cli {
@@ -67,7 +68,10 @@ std::size_t stepsFor(double seconds, float dtS) {
 Result<SimRun> runSimulation(core::Scene& scene, core::SceneSimulation& simulation, double seconds,
                              SimBackend backend, const std::string& command) {
     SimRun run;
-    run.steps = stepsFor(seconds, simulation.physics().params.dtS);
+    auto steps = core::simulationSteps(seconds, simulation.physics().params.dtS, command);
+    if (!steps)
+        return steps.error();
+    run.steps = *steps;
     Progress progress(command, run.steps);
     const auto start = Clock::now();
     if (backend == SimBackend::Cpu) {

@@ -10,6 +10,8 @@
 #include "debug_output.h"
 #include "headless_context.h"
 #include "physics/path_loop.h"
+#include "physics/step_count.h"
+#include "project/project_inputs.h"
 #include "soak_run.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
@@ -126,7 +128,8 @@ void printRun(const char* backendName, const std::string& device, std::size_t bl
         static_cast<double>(first.rssBytes) / MIB, v.warmedUp->simulatedS,
         static_cast<double>(v.warmedUp->rssBytes) / MIB, static_cast<double>(last.rssBytes) / MIB,
         v.rssGrowthMiB, RSS_GROWTH_BOUND_MIB,
-        (static_cast<double>(last.heapInUseBytes) - static_cast<double>(v.warmedUp->heapInUseBytes)) /
+        (static_cast<double>(last.heapInUseBytes) -
+         static_cast<double>(v.warmedUp->heapInUseBytes)) /
             MIB,
         v.rssGrowthMiB <= RSS_GROWTH_BOUND_MIB ? "ok" : "FAILED");
     if (backend == SimBackend::Gpu) {
@@ -142,7 +145,8 @@ void printRun(const char* backendName, const std::string& device, std::size_t bl
 }
 
 nlohmann::ordered_json runJson(const char* backendName, const std::string& device,
-                               std::size_t blades, const SoakRun& run, const SoakVerdict& v, SimBackend backend) {
+                               std::size_t blades, const SoakRun& run, const SoakVerdict& v,
+                               SimBackend backend) {
     const auto counts = [](const gl::GlObjectCounts& c) {
         nlohmann::ordered_json out;
         for (std::size_t i = 0; i < gl::GL_OBJECT_KIND_COUNT; ++i)
@@ -234,7 +238,7 @@ int runSoak(const std::vector<std::string>& argv) {
     }
     if (!args.report.empty())
         if (auto writable = checkFileWritable(args.report, "soak.json"); !writable) {
-            printError("soak", writable.error().str());
+            printError("soak", "--report: " + writable.error().str());
             return EXIT_USAGE;
         }
     if (!parser.given("--sample-every"))
@@ -245,7 +249,19 @@ int runSoak(const std::vector<std::string>& argv) {
         printError("soak", loaded.error().str());
         return EXIT_FAILED;
     }
+    if (!args.report.empty())
+        if (auto refused = core::refuseOverwritingInput(*loaded, args.report, "--report");
+            !refused) {
+            printError("soak", refused.error().str());
+            return EXIT_USAGE;
+        }
     loaded->project.physics.dtS = static_cast<float>(args.dtS);
+    for (const auto& [option, seconds] :
+         {std::pair{"--seconds", args.seconds}, {"--sample-every", args.sampleEveryS}})
+        if (auto steps = core::simulationSteps(seconds, args.dtS, option); !steps) {
+            printError("soak", steps.error().str());
+            return EXIT_USAGE;
+        }
     for (core::GrassLayer& layer : loaded->project.layers)
         layer.scatter.density *= static_cast<float>(args.densityScale);
     auto physics = core::buildScenePhysics(*loaded);

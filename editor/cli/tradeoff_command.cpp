@@ -29,13 +29,6 @@ std::vector<std::string> splitKnobs(const std::string& text) {
     return out;
 }
 
-std::string joined(const std::vector<std::string>& names) {
-    std::string out;
-    for (const std::string& name : names)
-        out += (out.empty() ? "" : ",") + name;
-    return out;
-}
-
 // tradeoff.json, tradeoff.md and the plots into `folder`; prints the table and what it wrote.
 int writeOutputs(const render::TradeoffReport& report, const std::filesystem::path& folder,
                  bool writeJson) {
@@ -67,7 +60,7 @@ int writeOutputs(const render::TradeoffReport& report, const std::filesystem::pa
 // --replot DIR: tables and plots again from DIR/tradeoff.json, nothing measured.
 int replot(const std::string& folder) {
     const std::filesystem::path file = std::filesystem::path(folder) / "tradeoff.json";
-    auto text = readFile(file);
+    auto text = readFile(file, MAX_JSON_FILE_BYTES);
     if (!text) {
         printError("tradeoff", "--replot: " + text.error().str());
         return EXIT_FAILED;
@@ -88,7 +81,7 @@ int runTradeoff(const std::vector<std::string>& argv) {
     std::string msaa = "4";
     double sceneTimeS = 1.0, physicsSeconds = 2.0;
     bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
-    const std::string allKnobs = joined(render::tradeoffKnobNames());
+    const std::string allKnobs = render::tradeoffKnobList();
     ArgParser parser(
         "grass tradeoff <project-dir|project.json> [--knobs K1,K2,...] [--out DIR]",
         "Sweeps the project's quality knobs (" + allKnobs +

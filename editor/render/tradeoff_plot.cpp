@@ -4,42 +4,57 @@
 
 #include "tradeoff_report.h"
 #include "util/atomic_file.h"
+#include "util/printable_text.h"
 
 namespace grass::render {
 
 namespace {
 
+// Every string here comes from tradeoff.json, which `--replot` reads back from any folder: it is
+// data, never script. Control characters (a newline would end the gnuplot command) become
+// spaces, and text goes into single-quoted gnuplot strings, the one kind in which gnuplot runs
+// no `backquoted` command and reads no backslash escape ('' is a quote).
+
+// A single-quoted string for the enhanced-text terminal, which reads _ ^ { } @ & ~ \ as markup:
+// the metrics' "v2_ref" must print as written.
+std::string quoted(const std::string& text) {
+    std::string out = "'";
+    for (const char c : printableText(text)) {
+        if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&' || c == '~' ||
+            c == '\\')
+            out += '\\';
+        out += c == '\'' ? std::string("''") : std::string(1, c);
+    }
+    return out + "'";
+}
+
+// A quoted column of the data file: gnuplot's data files have no escape for '"'.
+std::string dataLabel(const std::string& text) {
+    std::string out = printableText(text);
+    for (char& c : out)
+        if (c == '"')
+            c = '\'';
+    return out;
+}
+
 // Columns: cost median, min, max, error, on the front (0/1), role (0 setting, 1 reference,
 // 2 check), label, the presets this run would choose there ("" for none). Sorted as swept; the
 // front is re-sorted by cost in the script.
 std::string dataFile(const KnobResult& knob) {
-    std::string out = "# " + knob.name + ": " + knob.description + "\n# cost: " + knob.costMetric +
-                      "\n# error: " + knob.errorMetric +
+    std::string out = "# " + knob.name + ": " + printableText(knob.description) +
+                      "\n# cost: " + printableText(knob.costMetric) +
+                      "\n# error: " + printableText(knob.errorMetric) +
                       "\n# cost_median cost_min cost_max error front role label presets\n";
     char line[256];
     const std::vector<std::string> presets = presetLabels(knob);
     for (std::size_t i = 0; i < knob.settings.size(); ++i) {
         const SettingResult& s = knob.settings[i];
-        std::snprintf(line, sizeof line, "%.6g %.6g %.6g %.6g %d %d \"%s\" \"%s\"\n",
-                      s.costMs.median,
+        std::snprintf(line, sizeof line, "%.6g %.6g %.6g %.6g %d %d ", s.costMs.median,
                       s.costMs.min, s.costMs.max, s.error, s.pareto ? 1 : 0,
                       s.reference ? 1
                       : s.check   ? 2
-                                  : 0,
-                      s.label.c_str(), presets[i].c_str());
-        out += line;
-    }
-    return out;
-}
-
-// The enhanced-text terminal reads _ ^ { } @ & ~ as markup; the metrics' "v2_ref" must print
-// as written.
-std::string plain(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&' || c == '~')
-            out += "\\\\";
-        out += c;
+                                  : 0);
+        out += line + ("\"" + dataLabel(s.label) + "\" \"" + dataLabel(presets[i]) + "\"\n");
     }
     return out;
 }
@@ -50,11 +65,13 @@ std::string script(const TradeoffReport& report, const KnobResult& knob) {
     out += "# gnuplot " + knob.name + ".gp  (writes " + knob.name + ".png)\n";
     out += "set terminal pngcairo size 1000,640 enhanced font 'Sans,11'\n";
     out += "set output '" + knob.name + ".png'\n";
-    out += "set title \"" + plain(report.project) + ": " + plain(knob.description) + "\\n{/*0.8 " +
-           report.device + ", " + std::to_string(report.width) + "×" +
-           std::to_string(report.height) + "}\"\n";
-    out += "set xlabel \"cost: " + plain(knob.costMetric) + "\"\n";
-    out += "set ylabel \"error: " + plain(knob.errorMetric) + "\" font ',9'\n";
+    out += "set title " + quoted(report.project + ": " + knob.description) +
+           " . \"\\n\" . '{/*0.8 ' . " +
+           quoted(report.device + ", " + std::to_string(report.width) + "×" +
+                  std::to_string(report.height)) +
+           " . '}'\n";
+    out += "set xlabel " + quoted("cost: " + knob.costMetric) + "\n";
+    out += "set ylabel " + quoted("error: " + knob.errorMetric) + " font ',9'\n";
     // Costs and errors are never negative: the axes start at 0 and leave room for the labels.
     out += "set grid\nset key top right\nset xrange [0:*]\nset yrange [0:*]\n";
     out += "set offsets 0, graph 0.08, graph 0.12, 0\n";

@@ -1,8 +1,11 @@
 #include "tradeoff_report.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "quality/quality_presets.h"
+#include "util/json_text.h"
+#include "util/printable_text.h"
 
 namespace grass::render {
 
@@ -75,10 +78,11 @@ nlohmann::ordered_json tradeoffJson(const TradeoffReport& report) {
                                     {"converged", knob.referenceConverged},
                                     {"converged_below", knob.convergedBelow},
                                     {"resolves_every_setting", knob.referenceResolvesSweep},
-                                    {"rule", "converged: check error below a tenth of a "
-                                             "just-noticeable difference (0.23 ΔE76; 0.001 h); "
-                                             "resolves every setting: below half the smallest "
-                                             "swept error"}};
+                                    {"rule",
+                                     "converged: check error below a tenth of a "
+                                     "just-noticeable difference (0.23 ΔE76; 0.001 h); "
+                                     "resolves every setting: below half the smallest "
+                                     "swept error"}};
         k["settings"] = nlohmann::ordered_json::array();
         const std::vector<std::string> presets = presetLabels(knob);
         for (std::size_t i = 0; i < knob.settings.size(); ++i)
@@ -90,12 +94,14 @@ nlohmann::ordered_json tradeoffJson(const TradeoffReport& report) {
 
 Result<TradeoffReport> tradeoffFromJson(const std::string& text, const std::string& sourceName) {
     using Json = nlohmann::json;
-    const Json root = Json::parse(text, nullptr, false);
     const auto bad = [&](const std::string& what) {
         return makeError(sourceName, what + " (not a grass tradeoff.json?)");
     };
-    if (root.is_discarded() || !root.is_object() || !root.contains("knobs") ||
-        !root["knobs"].is_array())
+    const auto parsed = parseJsonText(text, sourceName);
+    if (!parsed)
+        return bad(parsed.error().message);
+    const Json& root = *parsed;
+    if (!root.is_object() || !root.contains("knobs") || !root["knobs"].is_array())
         return bad("not a JSON object with a \"knobs\" array");
     try {
         TradeoffReport report;
@@ -110,9 +116,19 @@ Result<TradeoffReport> tradeoffFromJson(const std::string& text, const std::stri
         report.physicsSeconds = root.value("physics_seconds", 0.0);
         report.blades = root.value("blades", std::size_t(0));
         report.wallS = root.value("wall_s", 0.0);
-        for (const Json& k : root["knobs"]) {
+        const std::vector<std::string> known = tradeoffKnobNames();
+        for (std::size_t index = 0; index < root["knobs"].size(); ++index) {
+            const Json& k = root["knobs"][index];
             KnobResult knob;
             knob.name = k.at("name").get<std::string>();
+            // Knob names become file names (<knob>.gp, .dat, .png): only the names we write.
+            if (std::find(known.begin(), known.end(), knob.name) == known.end())
+                return makeError(sourceName + ": /knobs/" + std::to_string(index) + "/name",
+                                 "unknown knob " +
+                                     nlohmann::json(knob.name).dump(
+                                         -1, ' ', false, Json::error_handler_t::replace) +
+                                     " (a grass tradeoff.json names only " + tradeoffKnobList() +
+                                     ")");
             knob.skipped = k.value("skipped", std::string());
             knob.description = k.value("description", std::string());
             knob.costMetric = k.value("cost_metric", std::string());
@@ -149,6 +165,16 @@ Result<TradeoffReport> tradeoffFromJson(const std::string& text, const std::stri
                 knob.settings.push_back(r);
             }
             report.knobs.push_back(std::move(knob));
+        }
+        // Printed on the terminal and in tradeoff.md: shown, never obeyed.
+        for (std::string* field : {&report.project, &report.device, &report.geometry})
+            *field = printableText(*field);
+        for (KnobResult& knob : report.knobs) {
+            for (std::string* field : {&knob.skipped, &knob.description, &knob.costMetric,
+                                       &knob.errorMetric, &knob.checkLabel})
+                *field = printableText(*field);
+            for (SettingResult& setting : knob.settings)
+                setting.label = printableText(setting.label);
         }
         return report;
     } catch (const Json::exception& e) {
@@ -193,14 +219,14 @@ std::string tradeoffTable(const TradeoffReport& report) {
             out += line;
         }
         if (!knob.checkLabel.empty()) {
-            std::snprintf(line, sizeof line, "reference against %s: error %.4g (%s, under %g: %s)\n",
-                          knob.checkLabel.c_str(), knob.referenceCheckError,
-                          knob.referenceConverged ? "converged" : "NOT converged",
-                          knob.convergedBelow,
-                          knob.referenceResolvesSweep
-                              ? "resolves every swept setting"
-                              : "does NOT resolve every swept setting (under half the smallest "
-                                "swept error)");
+            std::snprintf(
+                line, sizeof line, "reference against %s: error %.4g (%s, under %g: %s)\n",
+                knob.checkLabel.c_str(), knob.referenceCheckError,
+                knob.referenceConverged ? "converged" : "NOT converged", knob.convergedBelow,
+                knob.referenceResolvesSweep
+                    ? "resolves every swept setting"
+                    : "does NOT resolve every swept setting (under half the smallest "
+                      "swept error)");
             out += line;
         }
     }

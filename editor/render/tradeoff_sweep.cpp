@@ -6,6 +6,7 @@
 
 #include "headless_context.h"
 #include "offscreen_render.h"
+#include "physics/step_count.h"
 #include "scene_physics_gpu.h"
 #include "tradeoff_bench.h"
 
@@ -85,8 +86,15 @@ KnobResult skippedKnob(const std::string& name, const std::string& why) {
 }  // namespace
 
 std::vector<std::string> tradeoffKnobNames() {
-    return {"physics_step", "geometry_detail", "lod_distance",   "cull_distance",
-            "distance_classes", "snow_map",  "billboard_fade", "ao_kernel"};
+    return {"physics_step",     "geometry_detail", "lod_distance",   "cull_distance",
+            "distance_classes", "snow_map",        "billboard_fade", "ao_kernel"};
+}
+
+std::string tradeoffKnobList() {
+    std::string out;
+    for (const std::string& name : tradeoffKnobNames())
+        out += (out.empty() ? "" : ",") + name;
+    return out;
 }
 
 Result<TradeoffReport> runTradeoffSweep(const core::LoadedProject& loaded,
@@ -126,9 +134,10 @@ Result<TradeoffReport> runTradeoffSweep(const core::LoadedProject& loaded,
         auto gpu = ScenePhysicsGpu::create(scene);
         if (!gpu)
             return gpu.error();
-        const auto steps =
-            static_cast<std::size_t>(std::llround(options.sceneTimeS / physics->params.dtS));
-        for (std::size_t i = 0; i < steps; ++i) {
+        const auto steps = core::simulationSteps(options.sceneTimeS, physics->params.dtS, "--time");
+        if (!steps)
+            return steps.error();
+        for (std::size_t i = 0; i < *steps; ++i) {
             gpu->step(simulation.physics(), simulation.timeS());
             simulation.advanceClock();
         }

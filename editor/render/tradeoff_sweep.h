@@ -91,6 +91,8 @@ struct TradeoffReport {
 // physics_step, geometry_detail, lod_distance, cull_distance, distance_classes, snow_map,
 // billboard_fade, ao_kernel.
 std::vector<std::string> tradeoffKnobNames();
+// The knob names joined by commas: "physics_step,geometry_detail,...".
+std::string tradeoffKnobList();
 
 // Runs the sweep on a current GL context. Errors: an unknown knob name, a project that does not
 // build, a shader that does not compile.

@@ -24,3 +24,16 @@ if(TARGET grass-editor)
         PASS_REGULAR_EXPRESSION "autosave: 10 sessions killed"
         ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
 endif()
+
+# Hostile files and careless paths (issue 22): one test per class of defect, each a list of
+# commands a hostile or careless user could give (hostile_input_test.sh says what each checks).
+# Several render headless, so all carry the GL label and environment.
+foreach(class gnuplot paths disk_full output_is_input export_cleanup special_files bounds
+              messages)
+    add_test(NAME cli.hostile_${class}
+             COMMAND ${GRASS_BASH} ${GRASS_CLI_DIR}/hostile_input_test.sh ${GRASS_BIN}
+                     ${GRASS_CLI_DATA} ${GRASS_CLI_TMP}/hostile-${class} ${class})
+    set_tests_properties(cli.hostile_${class} PROPERTIES LABELS "cli;gl" TIMEOUT 300
+        PASS_REGULAR_EXPRESSION "^${class}: [1-9][0-9]* cases, 0 failed"
+        ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
+endforeach()

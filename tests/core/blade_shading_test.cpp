@@ -442,36 +442,36 @@ TEST(BladeShading, RejectsBadParameters) {
     const float nan = std::nanf("");
     BladeShadingParams p;
     p.aoRadiusM = nan;
-    failsOn(p, "aoRadiusM");
+    failsOn(p, "/lighting/ao_radius");
     p = {};
     p.aoRadiusM = -0.1f;
-    failsOn(p, "aoRadiusM");
+    failsOn(p, "/lighting/ao_radius");
     p = {};
     p.normalBlurRadiusM = INFINITY;
-    failsOn(p, "normalBlurRadiusM");
+    failsOn(p, "/lighting/normal_blur_radius");
     p = {};
     p.normalBlurRadiusM = 1e-9f;
-    failsOn(p, "normalBlurRadiusM");
+    failsOn(p, "/lighting/normal_blur_radius");
     p = {};
     p.aoStrength = nan;
-    failsOn(p, "aoStrength");
+    failsOn(p, "/lighting/ao_strength");
     p = {};
     p.cellSigmas = 0.01f;  // between exact and the smallest cells
-    failsOn(p, "cellSigmas");
+    failsOn(p, "/lighting/ao_cell");
     p.cellSigmas = nan;
-    failsOn(p, "cellSigmas");
+    failsOn(p, "/lighting/ao_cell");
     p = {};
     p.aoStrength = -1.0f;
-    failsOn(p, "aoStrength");
+    failsOn(p, "/lighting/ao_strength");
     p = {};
     p.aoFloor = 1.5f;
-    failsOn(p, "aoFloor");
+    failsOn(p, "/lighting/ao_floor");
     p = {};
     p.waterRange.x = -0.1f;
-    failsOn(p, "waterRange[0]");
+    failsOn(p, "/lighting/water/0");
     p = {};
     p.waterRange.y = nan;
-    failsOn(p, "waterRange[1]");
+    failsOn(p, "/lighting/water/1");
 }
 
 }  // namespace

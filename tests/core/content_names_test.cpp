@@ -76,5 +76,17 @@ TEST(ContentNames, AnEntryPointThatDoesNotParseStopsTheCleanUp) {
     EXPECT_TRUE(fs::exists(dir / "grass-1111111111111111.bin"));
 }
 
+// Issue 22: a .gltf nested 50,000 levels deep in the export folder overflowed the stack of the
+// clean-up's recursive walk (SIGSEGV). Now it is refused before it is parsed, and, unreadable,
+// stops the clean-up like any entry point that does not parse.
+TEST(ContentNames, DeeplyNestedGltfStopsTheCleanUp) {
+    const fs::path dir = test::scratchDir("content-names-deep");
+    write(dir / "deep.gltf", "{\"uri\":" + std::string(50000, '[') + "1" + std::string(50000, ']') +
+                                 "}");
+    write(dir / "grass-1111111111111111.bin", "data");
+    EXPECT_EQ(removeUnreferencedExportFiles(dir), 0u);
+    EXPECT_TRUE(fs::exists(dir / "grass-1111111111111111.bin"));
+}
+
 }  // namespace
 }  // namespace grass::core

@@ -101,7 +101,7 @@ TEST(ProjectPhysics, ReadsEveryKind) {
 }
 
 TEST(ProjectPhysics, BadValuesAreRejectedWithTheirPath) {
-    expectError(document(R"("physics": {"step_s": 0})"), "/physics/step_s", "(0, 60]");
+    expectError(document(R"("physics": {"step_s": 0})"), "/physics/step_s", "[0.00001, 60]");
     expectError(document(R"("physics": {"max_substeps": 0})"), "/physics/max_substeps", "1");
     expectError(document(R"("physics": {"gravity": {"direction": [0, 0, 0]}})"),
                 "/physics/gravity/direction", "must not be [0, 0, 0]");

@@ -24,7 +24,8 @@ seconds="$2"
 shift 2
 targets=("$@")
 if ((${#targets[@]} == 0)); then
-  targets=(project gltf glb map_png map_tiff map_exr grass_texture packing_cache raw_export)
+  targets=(project gltf glb map_png map_tiff map_exr grass_texture packing_cache raw_export
+    export_cleanup)
 fi
 for t in "${targets[@]}"; do
   if [ ! -x "$build/bin/fuzz_$t" ]; then
