@@ -81,6 +81,13 @@ Result<void> writeAutosave(const EditorState& s) {
     return core::saveProject(project, file);
 }
 
+void autosaveNow(EditorState& state) {
+    if (auto written = writeAutosave(state); !written)
+        state.message = "autosave failed: " + written.error().str();
+    else if (!state.loaded.file.empty() && !state.messageIsSaveError)
+        state.message = "autosaved to " + autosavePath(state.loaded).string();
+}
+
 void removeAutosave(const core::LoadedProject& loaded) {
     const fs::path file = autosavePath(loaded);
     if (file.empty())

@@ -25,6 +25,9 @@ std::optional<std::string> mapNameOfAutosave(const std::string& relative);
 // Writes the side project and the painted maps' side files (atomic, each). Nothing when the
 // project has no file yet.
 Result<void> writeAutosave(const EditorState& state);
+// writeAutosave, with what happened in the status bar: a failure always, "autosaved to …" only
+// when it does not replace a failed save's message (that stays until a save succeeds).
+void autosaveNow(EditorState& state);
 // Removes the side project and every side map it names.
 void removeAutosave(const core::LoadedProject& loaded);
 

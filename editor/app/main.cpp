@@ -415,10 +415,7 @@ int main(int argc, char** argv) {
         if (autosaveS > 0.0 && autosaveDueS <= 0.0 && state.dirty && !state.busy() &&
             !state.toolDragActive) {
             autosaveDueS = autosaveS;
-            if (auto written = editor::writeAutosave(state); !written)
-                state.message = "autosave failed: " + written.error().str();
-            else if (!state.loaded.file.empty() && !state.messageIsSaveError)
-                state.message = "autosaved to " + editor::autosavePath(state.loaded).string();
+            editor::autosaveNow(state);
         }
         const std::string title =
             "grass — " + state.loaded.project.name + (state.dirty ? " *" : "");

@@ -9,6 +9,7 @@
 #include <string>
 #include <variant>
 
+#include "autosave.h"
 #include "maps/map_image.h"
 #include "panels.h"
 #include "support/scratch_folder.h"
@@ -102,6 +103,26 @@ TEST(EditorPanels, SaveAsTypedPathWritesTheProjectAndItsFilesThere) {
     EXPECT_EQ(reloaded->project, editor.state.loaded.project);
     auto grown = core::buildScene(*reloaded);
     EXPECT_TRUE(grown.ok()) << grown.error().str();
+}
+
+// Issue 22: a failed save stays on screen; the autosave that follows a few minutes later must
+// not replace its message with "autosaved to …" (the user would think the work is saved).
+TEST(EditorPanels, AFailedSaveStaysInTheStatusBarUntilASaveSucceeds) {
+    const ScratchFolder folder("editor-failed-save");
+    EditorDriver editor(folder.path());
+    fs::create_directories(folder.path() / "blocked" / "project.json");  // a folder in the way
+    EXPECT_FALSE(editor::saveTo(editor.state, (folder.path() / "blocked/project.json").string()));
+    const std::string failed = editor.state.message;
+    ASSERT_EQ(failed.rfind("not saved: ", 0), 0u) << failed;
+    EXPECT_TRUE(editor.state.messageIsSaveError);
+    editor::autosaveNow(editor.state);
+    EXPECT_EQ(editor.state.message, failed);
+    EXPECT_TRUE(fs::exists(editor::autosavePath(editor.state.loaded)));  // the work is kept
+    ASSERT_TRUE(editor::saveTo(editor.state, (folder.path() / "project.json").string()));
+    EXPECT_FALSE(editor.state.messageIsSaveError);
+    editor.state.dirty = true;
+    editor::autosaveNow(editor.state);
+    EXPECT_EQ(editor.state.message.rfind("autosaved to ", 0), 0u) << editor.state.message;
 }
 
 TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
