@@ -48,10 +48,6 @@ std::string projectEditLabel(const core::Project& before, const core::Project& a
 bool applyProject(EditorState& s, const core::Project& project) {
     s.loaded.project = project;
     s.committed = project;
-    // The viewport's settings that mirror the project follow it back and forth.
-    s.options.technique = project.render.technique;
-    s.options.lighting = project.lighting;
-    syncQualityOptions(project, s.options);
     s.dirty = s.rebuildPending = true;
     return true;
 }
@@ -92,6 +88,8 @@ void recordProjectEdit(EditorState& s, bool widgetActive) {
     std::string label = projectEditLabel(edit.before, edit.after);
     s.committed = s.loaded.project;
     s.history.push(core::Edit{std::move(label), std::move(edit)});
+    // Every change of the project, from any source (panel, key, gizmo, script), passes here.
+    s.dirty = true;
 }
 
 bool undo(EditorState& s) {

@@ -23,6 +23,7 @@
 #include "framebuffer.h"
 #include "headless_context.h"
 #include "input_script.h"
+#include "document.h"
 #include "live_scene.h"
 #include "offscreen_render.h"
 #include "panels.h"
@@ -48,26 +49,28 @@ int fail(const std::string& message, int code = 1) {
 }
 
 // Keys that change how the field is drawn (window.h); returns what changed, for the console.
-std::string applyRenderKeys(const editor::InputState& input, render::RenderOptions& options) {
-    render::CullSettings& cull = options.cull;
-    bool* tests[] = {&cull.orientation, &cull.frustum, &cull.distance, &cull.occlusion};
+// 1-4 switch a cull test of the view; T and L change the project's technique and lighting (a
+// project edit like the Render panel's combo boxes: saved, undoable, marking it unsaved).
+std::string applyRenderKeys(const editor::InputState& input, editor::EditorState& state) {
+    editor::ViewOverrides& view = state.view;
+    bool* tests[] = {&view.orientation, &view.frustum, &view.distance, &view.occlusion};
     const char* names[] = {"orientation", "frustum", "distance", "occlusion"};
     if (input.toggledCullTest >= 1 && input.toggledCullTest <= 4) {
         bool& test = *tests[input.toggledCullTest - 1];
         test = !test;
         return std::string(names[input.toggledCullTest - 1]) + " culling " + (test ? "on" : "off");
     }
+    core::Project& project = state.loaded.project;
     if (input.nextTechnique) {
-        options.technique =
-            static_cast<core::GrassTechnique>((static_cast<int>(options.technique) + 1) % 4);
-        return "technique " + std::string(core::grassTechniqueName(options.technique));
+        project.render.technique =
+            static_cast<core::GrassTechnique>((static_cast<int>(project.render.technique) + 1) % 4);
+        return "technique " + std::string(core::grassTechniqueName(project.render.technique));
     }
     if (input.toggleLighting) {
-        options.lighting.model = options.lighting.model == core::LightingModel::Grass
-                                     ? core::LightingModel::Simple
-                                     : core::LightingModel::Grass;
-        return options.lighting.model == core::LightingModel::Grass ? "grass lighting"
-                                                                    : "simple lighting";
+        core::LightingModel& model = project.lighting.model;
+        model = model == core::LightingModel::Grass ? core::LightingModel::Simple
+                                                    : core::LightingModel::Grass;
+        return model == core::LightingModel::Grass ? "grass lighting" : "simple lighting";
     }
     return {};
 }
@@ -198,7 +201,8 @@ int main(int argc, char** argv) {
     editor::Live live = std::move(*built);
     state.scene = live.scene.get();
     state.tools = live.tools.get();
-    state.options = render::renderOptionsFor(project, gl::isSoftwareRenderer());
+    state.softwareRenderer = gl::isSoftwareRenderer();
+    state.options = editor::viewRenderOptions(state);
     editor::resetHistory(state);
     state.recoveryOffer = editor::findAutosave(state.loaded);
     state.recoverRequested = recover && state.recoveryOffer.has_value();
@@ -222,15 +226,12 @@ int main(int argc, char** argv) {
         ui = std::move(*created);
     }
 
-    // Replaces the live field (New, Open, re-grow); on failure the old one stays. A re-grow of
-    // the same project keeps the maps painted since the last save.
-    const auto rebuild = [&](bool newProject) {
-        std::function<Result<void>(core::Scene&)> carry;
-        if (!newProject)
-            carry = [&](core::Scene& next) {
-                return editor::carryPaintedMaps(state, *live.scene, next);
-            };
-        auto next = editor::buildLive(state.loaded, !noPhysics, carry);
+    // Re-grows the live field from the open project (after an edit that needs it), keeping the
+    // maps painted since the last save; on failure the old field stays.
+    const auto regrowLive = [&] {
+        auto next = editor::buildLive(state.loaded, !noPhysics, [&](core::Scene& grown) {
+            return editor::carryPaintedMaps(state, *live.scene, grown);
+        });
         if (!next) {
             state.message = "cannot grow the field: " + next.error().str();
             return;
@@ -242,14 +243,15 @@ int main(int argc, char** argv) {
         state.regrown.clear();
         if (live.physics)
             live.physics->steps = steps;  // the field restarts from rest, the clock goes on
-        if (newProject) {
-            if (auto cam = render::projectCamera(state.loaded.project, ""))
-                *camera = *cam;
-            state.options =
-                render::renderOptionsFor(state.loaded.project, gl::isSoftwareRenderer());
-            editor::resetHistory(state);
-            resetTimeline();
-        }
+    };
+    // New, Open, Recover: the document is replaced only once its field is grown.
+    const auto adoptDocument = [&](core::LoadedProject next, std::string_view what) {
+        if (!editor::replaceDocument(state, live, std::move(next), !noPhysics, what))
+            return false;
+        if (auto cam = render::projectCamera(state.loaded.project, ""))
+            *camera = *cam;
+        resetTimeline();
+        return true;
     };
 
     std::unique_ptr<gl::Framebuffer> target;
@@ -335,7 +337,7 @@ int main(int argc, char** argv) {
             cameraDrag = true;
         applyInput(input, cameraDrag, !uiPointer, view.h, *live.scene, *camera);
         if (!uiKeyboard) {
-            if (const std::string changed = applyRenderKeys(input, state.options); !changed.empty())
+            if (const std::string changed = applyRenderKeys(input, state); !changed.empty())
                 std::fprintf(stderr, "grass-editor: %s\n", changed.c_str());
             editor::applyToolKeys(state, input.typed);
             for (const ui::KeyEvent& key : input.keys) {
@@ -369,36 +371,34 @@ int main(int argc, char** argv) {
         // An export reads the scene on its worker: replacing or re-growing it waits.
         if (state.newRequested && !state.busy()) {
             state.newRequested = false;
-            state.loaded =
-                core::LoadedProject{core::Project{}, std::filesystem::current_path(), {}};
-            state.dirty = true;  // exists only in memory until saved
-            state.message = "new project (not saved)";
-            rebuild(true);
+            if (adoptDocument(core::LoadedProject{core::Project{}, std::filesystem::current_path(), {}},
+                        "cannot start a new project")) {
+                state.dirty = true;  // exists only in memory until saved
+                state.message = "new project (not saved)";
+            }
         }
         if (!state.openRequested.empty() && !state.busy()) {
             auto opened = core::loadProject(state.openRequested);
             state.openRequested.clear();
             if (!opened) {
                 state.message = "cannot open: " + opened.error().str();
-            } else {
-                state.loaded = std::move(*opened);
+            } else if (adoptDocument(std::move(*opened), "cannot open")) {
                 state.dirty = false;
                 state.message = "opened " + state.loaded.file.string();
-                rebuild(true);
             }
         }
         if (state.recoverRequested && !state.busy()) {
             state.recoverRequested = false;
-            state.loaded = std::move(*state.recoveryOffer);
+            core::LoadedProject recovered = std::move(*state.recoveryOffer);
             state.recoveryOffer.reset();
-            rebuild(true);
-            editor::markRecoveredMaps(state);
+            if (adoptDocument(std::move(recovered), "cannot recover the autosave"))
+                editor::markRecoveredMaps(state);
         }
         // Re-grow once the edit has ended, not on every frame of a drag.
         if (state.rebuildPending && !state.toolDragActive && !state.busy() &&
             (!ui || ui->context().activeId().value == 0)) {
             state.rebuildPending = false;
-            rebuild(false);
+            regrowLive();
         }
         // Patches the brush or an undo re-grew: only those go up to the GPU.
         for (const auto& [layer, report] : state.regrown) {
@@ -428,6 +428,8 @@ int main(int argc, char** argv) {
             target = std::make_unique<gl::Framebuffer>(view.w, view.h,
                                                        state.loaded.project.render.msaaSamples);
         const auto start = std::chrono::steady_clock::now();
+        // This frame's picture follows the project as it is now, with the view's overrides.
+        state.options = editor::viewRenderOptions(state);
         {
             // Screenshots advance exactly one step per frame, so they do not depend on
             // machine speed.
@@ -450,8 +452,8 @@ int main(int argc, char** argv) {
                 }
                 physics.advanceTo(state.timeline.timeS());
             }
-            state.options.timeS = static_cast<float>(state.timeline.timeS());
         }
+        state.options.timeS = static_cast<float>(state.timeline.timeS());
         // Statistics cost atomics and a wait when read: only the frame before a status update
         // collects them, and they are read once, after it.
         const bool statusDue = frame == 0 || std::chrono::steady_clock::now() - lastStatus >

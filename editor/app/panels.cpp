@@ -182,7 +182,7 @@ void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
             {1.0f, style.separator});
     ctx.registerArea(rect);
     const render::FrameTimings& t = s.status.timings;
-    const bool stems = s.options.technique == core::GrassTechnique::Growth;
+    const bool stems = s.loaded.project.render.technique == core::GrassTechnique::Growth;
     // The snow map's time shows only while snow lies (its pass runs only then).
     char snow[32] = "";
     if (t.snowMs > 0.0)
@@ -206,6 +206,16 @@ void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
 }
 
 }  // namespace
+
+render::RenderOptions viewRenderOptions(const EditorState& s) {
+    render::RenderOptions options = render::renderOptionsFor(s.loaded.project, s.softwareRenderer);
+    render::CullSettings& cull = options.cull;
+    cull.orientation = cull.orientation && s.view.orientation;
+    cull.frustum = cull.frustum && s.view.frustum;
+    cull.distance = cull.distance && s.view.distance;
+    cull.occlusion = cull.occlusion && s.view.occlusion;
+    return options;
+}
 
 bool saveTo(EditorState& s, const std::string& file) {
     namespace fs = std::filesystem;

@@ -2,11 +2,11 @@
 // the left side panel (project, layers, wind, colliders, render settings), the status bar under
 // the viewport, and the small windows the File menu opens (path entry, quit confirmation).
 //
-// Panels edit EditorState in place and say what the edit needs, because edits differ in cost:
-// colours, shapes and render settings are read by the renderer every frame and apply at once
-// (the panels write them into the live Scene and RenderOptions too); scatter, growth, wind and
-// collider edits need the scene re-grown, which takes long enough that main.cpp does it only
-// once the drag or text entry has ended (rebuildPending + no active widget).
+// Panels edit the project in EditorState in place and say what the edit needs, because edits
+// differ in cost: colours, shapes and render settings are read by the renderer every frame and
+// apply at once (the render options are derived from the project each frame: viewRenderOptions);
+// scatter, growth, wind and collider edits need the scene re-grown, which takes long enough that
+// main.cpp does it only once the drag or text entry has ended (rebuildPending + no active widget).
 #pragma once
 
 #include <cstddef>
@@ -41,11 +41,24 @@ struct FrameStatus {
 
 enum class FileDialog { None, Open, SaveAs };
 
+// What the viewport draws differently from the project, to look at the field: the per-blade
+// cull tests switched off (keys 1-4, the Render panel's checkboxes). Never saved, not undone.
+struct ViewOverrides {
+    bool orientation = true;
+    bool frustum = true;
+    bool distance = true;  // the project's thinning still decides whether the test exists
+    bool occlusion = true;
+};
+
 // What replaces the open project, and so asks first when it has unsaved changes.
 enum class LeaveAction { Quit, New, Open };
 
 struct EditorState {
     core::LoadedProject loaded;  // file empty: a new project not saved yet
+    ViewOverrides view;
+    bool softwareRenderer = false;  // picks the geometry path of the project's "auto"
+    // What the renderer draws this frame: viewRenderOptions(*this) plus the scene time, set by
+    // main.cpp each frame. Derived, never edited: a setting lives in the project alone.
     render::RenderOptions options;
     core::Scene* scene = nullptr;  // the live field the renderer draws (colours, shapes)
     FrameStatus status;
@@ -141,10 +154,13 @@ void windSection(ui::Ui& ui, EditorState& state);
 void colliderSection(ui::Ui& ui, EditorState& state);
 void renderSection(ui::Ui& ui, EditorState& state);
 // The Render section's quality preset menu and measured cost/error readout
-// (panels_quality.cpp), and the render options that follow the project's quality settings.
+// (panels_quality.cpp).
 void qualityRows(ui::Ui& ui, EditorState& state);
-void syncQualityOptions(const core::Project& project, render::RenderOptions& options);
-// Snow accumulation (panels_snow.cpp); keeps state.options.snow equal to the project's.
+// Snow accumulation (panels_snow.cpp).
 void snowSection(ui::Ui& ui, EditorState& state);
+
+// The render options of the viewport: the project's (render::renderOptionsFor) with the view's
+// overrides. One function, so the panels, the keys and undo can never disagree with the picture.
+render::RenderOptions viewRenderOptions(const EditorState& state);
 
 }  // namespace grass::editor

@@ -45,18 +45,6 @@ std::string estimateText(const core::KnobEstimate& e) {
 
 }  // namespace
 
-void syncQualityOptions(const core::Project& project, render::RenderOptions& options) {
-    // The fields copied below do not depend on the rasterizer.
-    const render::RenderOptions fromProject = render::renderOptionsFor(project, false);
-    options.tessLevel = fromProject.tessLevel;
-    options.stripSegments = fromProject.stripSegments;
-    options.cull.lodDistanceM = fromProject.cull.lodDistanceM;
-    options.cull.distance = fromProject.cull.distance;
-    options.cull.maxDistanceM = fromProject.cull.maxDistanceM;
-    options.billboards = fromProject.billboards;
-    options.snow = fromProject.snow;
-}
-
 void qualityRows(ui::Ui& ui, EditorState& s) {
     core::Project& project = s.loaded.project;
     const std::optional<core::QualityPreset> current = core::matchingPreset(project);
@@ -65,7 +53,6 @@ void qualityRows(ui::Ui& ui, EditorState& s) {
         r.changed() && selected > 0) {
         const core::PhysicsParams physicsBefore = project.physics;
         core::applyQuality(core::qualitySettings(core::QualityPreset(selected - 1)), project);
-        syncQualityOptions(project, s.options);
         s.dirty = true;
         // The live simulation was built with the old substeps: re-grow it.
         if (project.physics != physicsBefore)

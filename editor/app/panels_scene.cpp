@@ -4,7 +4,9 @@
 #include <cstdint>
 #include <string>
 
+#include "edit/timeline.h"
 #include "panels.h"
+#include "physics/wind.h"
 #include "ui/color_edit.h"
 #include "ui/curve_edit.h"
 #include "ui/text_edit.h"
@@ -48,6 +50,22 @@ void vec3Row(ui::Ui& ui, EditorState& s, const char* label, glm::vec3& v, float 
             }
         });
     });
+}
+
+// An object on a keyed path stands where its path says, not at `position`: the row shows and
+// edits the path at the timeline's time (the key there, added if none), so a typed position
+// moves it as the gizmo would. Unkeyed, it edits `position`.
+void positionRow(ui::Ui& ui, EditorState& s, glm::vec3& position, std::vector<core::PathKey>& path) {
+    if (path.empty()) {
+        vec3Row(ui, s, "position", position, 0.02f);
+        return;
+    }
+    const float timeS = float(s.timeline.timeS());
+    const glm::vec3 before = core::samplePath(path, timeS, position);
+    glm::vec3 at = before;
+    vec3Row(ui, s, "position (key at now)", at, 0.02f);
+    if (at != before)
+        core::setKey(path, timeS, at, 0.5f * float(s.timeline.stepS()));
 }
 
 void growthCurves(ui::Ui& ui, EditorState& s, core::GrowthCurves& c) {
@@ -140,7 +158,7 @@ void windSection(ui::Ui& ui, EditorState& s) {
                     regrow(s, body.dragValue("speed m/s", w.speedMps, 0.02f, 0.0f, 100.0f, 2));
                     regrow(s, body.slider("gust", w.gust, 0.0f, 1.0f));
                 } else {
-                    vec3Row(body, s, "position", w.position, 0.02f);
+                    positionRow(body, s, w.position, w.path);
                     regrow(s, body.dragValue("core radius m", w.coreRadiusM, 0.02f, 0.0f, 1e3f, 2));
                 }
             });
@@ -160,7 +178,7 @@ void colliderSection(ui::Ui& ui, EditorState& s) {
                 core::ColliderDesc& c = colliders[i];
                 section.label(c.name + (c.shape == core::ColliderShape::Mesh ? " (mesh)" : ""));
                 section.indent([&](ui::Ui& body) {
-                    vec3Row(body, s, "position", c.position, 0.02f);
+                    positionRow(body, s, c.position, c.path);
                     if (c.shape == core::ColliderShape::Sphere)
                         regrow(s, body.dragValue("radius m", c.radiusM, 0.01f, 0.01f, 100.0f, 2));
                     else
@@ -175,31 +193,27 @@ void renderSection(ui::Ui& ui, EditorState& s) {
     ui.collapsingHeader(
         "Render",
         [&](ui::Ui& section) {
-            render::CullSettings& cull = s.options.cull;
-            section.label("Culling");
+            // The cull tests are the view's (a look at what each removes), not the project's.
+            ViewOverrides& view = s.view;
+            section.label("Culling (view only)");
             section.indent([&](ui::Ui& body) {
-                body.checkbox(cull.orientation, "orientation");
-                body.checkbox(cull.frustum, "frustum");
-                body.checkbox(cull.distance, "distance");
-                body.checkbox(cull.occlusion, "occlusion");
+                body.checkbox(view.orientation, "orientation");
+                body.checkbox(view.frustum, "frustum");
+                body.checkbox(view.distance, "distance");
+                body.checkbox(view.occlusion, "occlusion");
             });
             static constexpr std::array<const char*, 4> TECHNIQUES{"blades", "billboards",
                                                                    "hybrid", "growth"};
-            int technique = int(s.options.technique);
+            core::Project& project = s.loaded.project;
+            int technique = int(project.render.technique);
             if (const ui::Response r = section.comboBox("technique", technique, TECHNIQUES);
-                r.changed()) {
-                s.options.technique = core::GrassTechnique(technique);
-                s.loaded.project.render.technique = s.options.technique;
-                live(s, r);
-            }
+                r.changed())
+                project.render.technique = core::GrassTechnique(technique);
             static constexpr std::array<const char*, 2> LIGHTING{"grass", "simple"};
-            int lighting = int(s.options.lighting.model);
+            int lighting = int(project.lighting.model);
             if (const ui::Response r = section.comboBox("lighting", lighting, LIGHTING);
-                r.changed()) {
-                s.options.lighting.model = core::LightingModel(lighting);
-                s.loaded.project.lighting.model = s.options.lighting.model;
-                live(s, r);
-            }
+                r.changed())
+                project.lighting.model = core::LightingModel(lighting);
             qualityRows(section, s);
         },
         true);

@@ -125,9 +125,6 @@ void snowBody(ui::Ui& ui, EditorState& s, core::SnowParams& snow) {
 void snowSection(ui::Ui& ui, EditorState& s) {
     core::SnowParams& snow = s.loaded.project.snow;
     ui.collapsingHeader("Snow", [&](ui::Ui& section) { snowBody(section, s, snow); });
-    // After the edits, and on frames without any: an undo or an opened project replaces the
-    // project's snow, and the viewport must draw what the project says.
-    s.options.snow = snow;
 }
 
 }  // namespace grass::editor

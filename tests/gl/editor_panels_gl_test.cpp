@@ -10,7 +10,9 @@
 #include <variant>
 
 #include "autosave.h"
+#include "edit_actions.h"
 #include "maps/map_image.h"
+#include "physics/wind.h"
 #include "panels.h"
 #include "support/scratch_folder.h"
 #include "support/test_fonts.h"
@@ -160,6 +162,52 @@ TEST(EditorPanels, QuitWithUnsavedChangesAsksFirst) {
     editor.click("Quit");
     editor.click("Quit without saving");
     EXPECT_TRUE(editor.state.quitRequested);
+}
+
+// Issue 23: a collider on a keyed path stands where the path says; before, typing its position
+// marked the project unsaved and moved nothing. Now the row edits the path at the timeline's
+// time, so the object moves where the user typed.
+TEST(EditorPanels, ATypedPositionMovesAKeyedCollider) {
+    const ScratchFolder folder("editor-keyed-collider");
+    EditorDriver editor(folder.path());
+    core::ColliderDesc ball;
+    ball.name = "ball";
+    ball.path = {{0.0f, {-1.0f, 0.2f, 0.0f}}, {2.0f, {1.0f, 0.2f, 0.0f}}};
+    editor.state.loaded.project.colliders.push_back(ball);
+    editor::resetHistory(editor.state);
+    editor.state.timeline = core::timelineFor(editor.state.loaded.project);
+    const glm::vec3 before = core::samplePath(ball.path, 0.0f, ball.position);
+
+    editor.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 3000.0f}};  // no scrolling
+    editor.click("Colliders (1)");
+    // The row's last box sits left of its label; a press there and a drag to the right.
+    std::optional<ui::Vec2> label;
+    for (const ui::ClippedShape& shape : editor.frame().shapes)
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape);
+            t && t->text == "position (key at now)")
+            label = t->pos;
+    ASSERT_TRUE(label.has_value()) << "a keyed collider's position row names the key";
+    editor.input.pointerPos = *label + ui::Vec2(-20.0f, 6.0f);
+    editor.frame();
+    editor.input.buttonDown[0] = true;
+    editor.frame();
+    for (int i = 0; i < 4; ++i) {
+        editor.input.pointerPos.x += 10.0f;
+        editor.frame();
+    }
+    editor.input.buttonDown[0] = false;
+    editor.frame();
+    editor::recordProjectEdit(editor.state, false);
+
+    const core::ColliderDesc& edited = editor.state.loaded.project.colliders.back();
+    const glm::vec3 after = core::samplePath(edited.path, 0.0f, edited.position);
+    EXPECT_GT(after.z, before.z + 0.05f) << "the collider must move where the field says";
+    EXPECT_EQ(after.x, before.x);
+    EXPECT_EQ(edited.path.size(), 2u) << "the key at the timeline's time was edited in place";
+    EXPECT_TRUE(editor.state.dirty);
+    EXPECT_TRUE(editor.state.rebuildPending);
+    ASSERT_TRUE(editor::undo(editor.state));
+    EXPECT_EQ(editor.state.loaded.project.colliders.back().path, ball.path);
 }
 
 }  // namespace

@@ -113,6 +113,49 @@ wait 1
     EXPECT_LT(lowestSavedDensity(dir), 0.6f);
 }
 
+// Replays `script` in the editor on the project in `dir` (no physics) and loads what it saved.
+core::Project replayAndLoad(const std::filesystem::path& dir, const std::string& name,
+                            const std::string& script) {
+    std::ofstream(dir / name) << script;
+    EXPECT_EQ(runEditor(dir, dir.string() + " --no-physics --script " + (dir / name).string()), 0)
+        << "see " << (dir / "log.txt");
+    auto saved = core::loadProject(dir);
+    EXPECT_TRUE(saved.ok()) << saved.error().str();
+    return saved.ok() ? saved->project : core::Project{};
+}
+
+// Issue 23: T and L are project edits, like the Render panel's combo boxes: Ctrl+S saves them
+// and Ctrl+Z takes them back. Before, they changed the view only.
+TEST(EditorScript, TechniqueAndLightingKeysAreSavedAndUndone) {
+    const auto dir = scratchDir("editor_script_keys");
+    std::ofstream(dir / "project.json") << PROJECT;
+    core::Project saved = replayAndLoad(dir, "keys.txt", R"(# next technique, other lighting, save
+move 600 300
+key t
+wait 1
+key l
+wait 1
+key ctrl+s
+wait 1
+)");
+    EXPECT_EQ(saved.render.technique, core::GrassTechnique::Billboards);
+    EXPECT_EQ(saved.lighting.model, core::LightingModel::Simple);
+    // The next session: T once more and undone, L once more; saved.
+    saved = replayAndLoad(dir, "undo.txt", R"(# T undone, L kept, save
+move 600 300
+key t
+wait 1
+key ctrl+z
+wait 1
+key l
+wait 1
+key ctrl+s
+wait 1
+)");
+    EXPECT_EQ(saved.render.technique, core::GrassTechnique::Billboards);
+    EXPECT_EQ(saved.lighting.model, core::LightingModel::Grass);
+}
+
 // A session that ends without saving (the script stops as a crash would) leaves its autosave;
 // the next start takes it back (--recover answers the recovery window's question), and a save
 // then writes the painted map under its real name and removes the side files.

@@ -25,7 +25,7 @@ struct SnowPanelDriver {
         auto loaded = core::loadProject(sourceDir() / "tests/data/projects/growth_tiny");
         EXPECT_TRUE(loaded.ok()) << loaded.error().str();
         state.loaded = std::move(*loaded);
-        state.options.snow = state.loaded.project.snow;
+        state.options = editor::viewRenderOptions(state);
         editor::resetHistory(state);
         input.screenRect = {{0.0f, 0.0f}, {1280.0f, 3000.0f}};
         input.hasPointer = true;
@@ -37,6 +37,8 @@ struct SnowPanelDriver {
         editor::buildPanels(ctx, state);
         const ui::Output& out = ctx.endFrame();
         editor::recordProjectEdit(state, ctx.activeId().value != 0);
+        // What the viewport draws next, derived from the project as main.cpp does each frame.
+        state.options = editor::viewRenderOptions(state);
         input.keys.clear();
         input.text.clear();
         input.timeS += 1.0 / 60.0;
