@@ -31,10 +31,24 @@ void ScenePainter::begin(std::size_t layer, LayerMap map, glm::ivec2 resolution,
     mMap = map;
 }
 
+void ScenePainter::adoptSurface(std::unique_ptr<TexelSurface> surface) {
+    mSurfaces[{surface->width(), surface->height()}] = std::move(surface);
+}
+
 Result<RegrowReport> ScenePainter::paintTo(glm::vec3 hitWorld, float pressure) {
     GRASS_ASSERT(active());
     mStroke->setPressure(pressure);
-    mStroke->addHits(std::span<const glm::vec3>(&hitWorld, 1));
+    addHits(std::span<const glm::vec3>(&hitWorld, 1));
+    return regrowChanged();
+}
+
+void ScenePainter::addHits(std::span<const glm::vec3> hits) {
+    GRASS_ASSERT(active());
+    mStroke->addHits(hits);
+}
+
+Result<RegrowReport> ScenePainter::regrowChanged() {
+    GRASS_ASSERT(active());
     const auto changed = mStroke->takeChangedRegion();
     if (!changed)
         return RegrowReport{};

@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "edit/history.h"
 #include "maps/brush.h"
@@ -32,6 +33,12 @@ public:
     // Paints from the last hit (or dabs, on the first) to `hitWorld` with the pen's pressure and
     // re-grows what changed. Preconditions: active().
     Result<RegrowReport> paintTo(glm::vec3 hitWorld, float pressure = 1.0f);
+    // A scripted stroke (`grass paint`): paints along many hits without re-growing; then
+    // regrowChanged() re-grows once what they changed (an empty report when nothing did).
+    // Preconditions: active().
+    void addHits(std::span<const glm::vec3> hits);
+    Result<RegrowReport> regrowChanged();
+    std::size_t dabCount() const { return mStroke ? mStroke->dabCount() : 0; }
     // Ends the stroke: the edit to record, or nullopt when no texel changed.
     std::optional<PaintEdit> end();
 
@@ -41,6 +48,8 @@ public:
 
     // The texel positions of a map of this size on the scene's mesh, built on first use.
     const TexelSurface& surface(glm::ivec2 resolution);
+    // Hands over a surface already built on the scene's mesh (the caller needed it first).
+    void adoptSurface(std::unique_ptr<TexelSurface> surface);
 
 private:
     Result<RegrowReport> regrow(std::size_t layer, const Bounds& region, float texelMarginM);

@@ -10,15 +10,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <string_view>
 
 #include "commands.h"
-#include "stroke_text.h"
+#include "edit/scene_paint.h"
 #include "maps/brush.h"
 #include "maps/map_image.h"
 #include "maps/texel_surface.h"
 #include "project/project.h"
 #include "scene/scene.h"
+#include "stroke_text.h"
 #include "util/arg_parser.h"
 
 namespace grass::cli {
@@ -114,46 +116,33 @@ core::BrushSettings brushSettings(const PaintArgs& args) {
     return brush;
 }
 
-// What painting one stroke did, for its summary line.
-struct StrokeResult {
-    std::size_t dabs = 0;
-    std::size_t changed = 0;
-    core::PaintRecord record;
-};
-
-// Paints one stroke into `map`, feeding the points in chunks so a stroke of many points can
-// report its progress.
-StrokeResult paintOne(core::MapImage& map, const core::TexelSurface& surface,
-                      const core::BrushSettings& brush, const std::vector<glm::vec3>& hits,
-                      std::size_t strokeNumber) {
-    core::PaintStroke stroke(map, surface, brush);
+// Feeds one stroke's points to the painter in chunks, so a stroke of many points can report its
+// progress. Returns the dabs it took.
+std::size_t feedStroke(core::ScenePainter& painter, const std::vector<glm::vec3>& hits,
+                       std::size_t strokeNumber) {
     auto lastReport = Clock::now();
     for (std::size_t start = 0; start < hits.size(); start += PROGRESS_CHUNK_POINTS) {
         const std::size_t count = std::min(PROGRESS_CHUNK_POINTS, hits.size() - start);
-        stroke.addHits(std::span<const glm::vec3>(hits).subspan(start, count));
+        painter.addHits(std::span<const glm::vec3>(hits).subspan(start, count));
         if (msSince(lastReport) > PROGRESS_INTERVAL_MS && start + count < hits.size()) {
             std::printf("  stroke %zu: %zu of %zu points, %zu dabs so far\n", strokeNumber,
-                        start + count, hits.size(), stroke.dabCount());
+                        start + count, hits.size(), painter.dabCount());
             std::fflush(stdout);
             lastReport = Clock::now();
         }
     }
-    StrokeResult result;
-    result.dabs = stroke.dabCount();
-    result.record = stroke.record();
-    for (std::size_t k = 0; k < result.record.texelIndex.size(); ++k)
-        result.changed += result.record.before[k] != result.record.after[k] ? 1 : 0;
-    return result;
+    return painter.dabCount();
 }
 
-// Paints the strokes one by one into `painted` (the map `field` grows from) and re-grows the
-// patches each stroke can reach right after it, as the editor does at the end of a stroke;
-// prints a line per stroke and the total. Returns how many texels the whole run changed.
-Result<std::size_t> paintAndRegrow(core::LayerField& field, core::MapImage& painted,
-                                   const core::TexelSurface& surface,
+// Paints the strokes one by one with the editor's brush (core::ScenePainter) into the map the
+// layer grows from, and re-grows the patches each stroke can reach right after it, as the
+// editor does at the end of a stroke; prints a line per stroke and the total. Returns how many
+// texels the whole run changed.
+Result<std::size_t> paintAndRegrow(core::ScenePainter& painter, std::size_t layerIndex,
+                                   core::LayerMap which, const core::LayerField& field,
+                                   const core::MapImage& painted, const core::TexelSurface& surface,
                                    const core::BrushSettings& brush,
-                                   const std::vector<std::vector<glm::vec3>>& points,
-                                   const core::GrassLightingDesc& lighting) {
+                                   const std::vector<std::vector<glm::vec3>>& points) {
     // The value of every texel before its first change, to count the texels the whole run
     // changed (a texel painted by two strokes counts once, one painted back not at all).
     std::vector<std::uint8_t> touched(painted.texels.size(), 0);
@@ -164,10 +153,16 @@ Result<std::size_t> paintAndRegrow(core::LayerField& field, core::MapImage& pain
     bool anyTouched = false;
     core::Bounds totalBounds;
     for (std::size_t s = 0; s < points.size(); ++s) {
-        const StrokeResult result = paintOne(painted, surface, brush, points[s], s + 1);
-        const core::PaintRecord& record = result.record;
-        totalDabs += result.dabs;
-        if (record.empty()) {
+        painter.begin(layerIndex, which, {painted.width, painted.height}, brush);
+        const std::size_t dabs = feedStroke(painter, points[s], s + 1);
+        totalDabs += dabs;
+        const auto regrowStart = Clock::now();
+        auto report = painter.regrowChanged();
+        const double strokeMs = msSince(regrowStart);
+        const std::optional<core::PaintEdit> edit = painter.end();
+        if (!report)
+            return report.error();
+        if (!edit) {
             float nearestM = std::numeric_limits<float>::infinity();
             for (const glm::vec3 point : points[s])
                 nearestM = std::min(nearestM, distanceToBounds(point, surface.bounds()));
@@ -179,39 +174,32 @@ Result<std::size_t> paintAndRegrow(core::LayerField& field, core::MapImage& pain
                              boundsText(surface.bounds()).c_str(),
                              static_cast<double>(brush.radiusM));
             std::printf("stroke %zu: %zu points, %zu dabs, 0 texels changed%s\n", s + 1,
-                        points[s].size(), result.dabs,
+                        points[s].size(), dabs,
                         nearestM > brush.radiusM ? " (off the mesh)"
                                                  : " (the map already holds what it paints)");
             continue;
         }
-        for (std::size_t k = 0; k < record.texelIndex.size(); ++k)
+        const core::PaintRecord& record = edit->record;
+        std::size_t changed = 0;
+        for (std::size_t k = 0; k < record.texelIndex.size(); ++k) {
+            changed += record.before[k] != record.after[k] ? 1 : 0;
             if (!touched[record.texelIndex[k]]) {
                 touched[record.texelIndex[k]] = 1;
                 original.emplace_back(record.texelIndex[k], record.before[k]);
             }
+        }
         totalBounds = anyTouched ? core::Bounds{glm::min(totalBounds.min, record.touchedBounds.min),
                                                 glm::max(totalBounds.max, record.touchedBounds.max)}
                                  : record.touchedBounds;
         anyTouched = true;
-        // A changed texel moves the grass within its bilinear footprint: one texel on the
-        // surface, the largest such step among the changed texels.
-        float marginM = 0.0f;
-        for (const std::uint32_t texel : record.texelIndex)
-            marginM = std::max(marginM, surface.texelSizeM(texel));
-        const auto regrowStart = Clock::now();
-        auto report = core::regrowLayerRegion(field, record.touchedBounds, marginM, lighting);
-        const double strokeMs = msSince(regrowStart);
-        if (!report)
-            return report.error();
         regrowMs += strokeMs;
         for (const std::uint32_t patch : report->patches)
             regrown[patch] = 1;
         std::printf(
             "stroke %zu: %zu points, %zu dabs, %zu texels changed, bounds %s; re-grew %zu "
             "of %zu patches in %.2f ms\n",
-            s + 1, points[s].size(), result.dabs, result.changed,
-            boundsText(record.touchedBounds).c_str(), report->patches.size(),
-            field.patched.patches.size(), strokeMs);
+            s + 1, points[s].size(), dabs, changed, boundsText(record.touchedBounds).c_str(),
+            report->patches.size(), field.patched.patches.size(), strokeMs);
         std::fflush(stdout);
     }
     std::size_t totalChanged = 0;
@@ -351,10 +339,9 @@ int runPaint(const std::vector<std::string>& argv) {
         "/layers/" + std::to_string(layerIndex) + "/" + args.map + "_map";
 
     // Where the painted map goes: --file, else the layer's own file, else a new default one.
-    const std::string targetText = !args.file.empty() ? args.file
-                                   : !mapField.empty()
-                                       ? mapField
-                                       : core::defaultMapFile(layer.name, args.map);
+    const std::string targetText = !args.file.empty()  ? args.file
+                                   : !mapField.empty() ? mapField
+                                                       : core::defaultMapFile(layer.name, args.map);
     auto target = core::resolveAssetPath(loaded->folder, targetText, "--file");
     if (!target) {
         printError("paint", target.error().str());
@@ -404,7 +391,8 @@ int runPaint(const std::vector<std::string>& argv) {
         printError("paint", mesh.error().str());
         return EXIT_FAILED;
     }
-    const core::TexelSurface surface(*mesh, size.x, size.y);
+    auto ownSurface = std::make_unique<core::TexelSurface>(*mesh, size.x, size.y);
+    const core::TexelSurface& surface = *ownSurface;
     if (args.uv)
         for (std::size_t s = 0; s < points.size(); ++s)
             for (std::size_t p = 0; p < points[s].size(); ++p) {
@@ -458,7 +446,11 @@ int runPaint(const std::vector<std::string>& argv) {
                 args.falloff.c_str(), args.spacing, setValue);
 
     const std::size_t liveBefore = field.liveBlades;
-    auto totals = paintAndRegrow(field, painted, surface, brush, points, project.lighting);
+    // The editor's brush on the grown scene, with the texel surface already built above.
+    core::ScenePainter painter(scene, project.lighting);
+    painter.adoptSurface(std::move(ownSurface));
+    auto totals =
+        paintAndRegrow(painter, layerIndex, which, field, painted, surface, brush, points);
     if (!totals) {
         printError("paint", totals.error().str());
         return EXIT_FAILED;
