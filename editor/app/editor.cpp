@@ -1,0 +1,339 @@
+#include "editor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <epoxy/gl.h>
+
+#include "autosave.h"
+#include "debug_output.h"
+#include "document.h"
+#include "edit_actions.h"
+#include "headless_context.h"
+#include "offscreen_render.h"
+#include "scene_renderer.h"
+#include "turntable_files.h"
+#include "util/image_file.h"
+#include "viewport_tools.h"
+
+namespace grass::editor {
+
+namespace {
+
+// File → Save turntable: a 15° step, smooth enough to read as a turn on the contact sheet.
+constexpr int TURNTABLE_VIEWS = 24;
+
+}  // namespace
+
+Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
+    std::unique_ptr<Editor> editor(new Editor());
+    Editor& e = *editor;
+    if (!settings.scriptFile.empty()) {
+        auto parsed = loadInputScript(settings.scriptFile);
+        if (!parsed)
+            return makeError("--script", parsed.error().str());
+        e.mScript = std::move(*parsed);
+    }
+    // Screenshots and scripts step the simulation once per frame, whatever the machine's speed.
+    e.mReplay = !settings.screenshot.empty() || !settings.scriptFile.empty();
+    e.mAutosaveDueS = settings.autosaveS;
+    e.mSettings = std::move(settings);
+
+    auto loaded = core::loadProject(e.mSettings.projectPath);
+    if (!loaded)
+        return loaded.error();
+    EditorState& state = e.mState;
+    state.loaded = std::move(*loaded);
+    const core::Project& project = state.loaded.project;
+    auto window = Window::create(project.render.width, project.render.height,
+                                 "grass — " + project.name, e.mSettings.glDebug);
+    if (!window)
+        return window.error();
+    e.mWindow = std::move(*window);
+    auto camera = render::projectCamera(project, "");
+    if (!camera)
+        return camera.error();
+    e.mCamera = *camera;
+    auto built = buildLive(state.loaded, !e.mSettings.noPhysics);
+    if (!built)
+        return built.error();
+    e.mLive = std::move(*built);
+    state.scene = e.mLive.scene.get();
+    state.tools = e.mLive.tools.get();
+    state.softwareRenderer = gl::isSoftwareRenderer();
+    state.options = viewRenderOptions(state);
+    resetHistory(state);
+    state.recoveryOffer = findAutosave(state.loaded);
+    state.recoverRequested = e.mSettings.recover && state.recoveryOffer.has_value();
+    e.resetTimeline();
+    std::fprintf(stderr, "grass-editor: %s, %zu blades, geometry %s\n",
+                 gl::rendererDescription().c_str(), e.mLive.scene->totalBlades(),
+                 render::geometryPathLabel(state.options.geometry));
+    if (!e.mSettings.noUi) {
+        auto created = EditorUi::create();
+        if (!created)
+            return created.error();
+        e.mUi = std::move(*created);
+    }
+    e.mStartTime = e.mLastStatus = e.mLastFrameEnd = Clock::now();
+    return editor;
+}
+
+Result<bool> Editor::frame() {
+    if (mWindow->shouldClose() && closeRequested())
+        return false;
+    InputState input = mWindow->pollInput();
+    if (!mSettings.scriptFile.empty()) {
+        if (static_cast<std::size_t>(mFrame) >= mScript.size())
+            return false;
+        input = mScript[static_cast<std::size_t>(mFrame)].input;
+    }
+    int width = 0, height = 0;
+    mWindow->framebufferSize(&width, &height);
+    if (width <= 0 || height <= 0)
+        return true;  // minimised
+    runInput(input, width, height);
+    recordProjectEdit(mState, mUi && mUi->context().activeId().value != 0);
+    if (applyRequests())
+        return false;
+    autosaveWhenDue();
+    const std::string title = "grass — " + mState.loaded.project.name + (mState.dirty ? " *" : "");
+    if (title != mShownTitle) {
+        mWindow->setTitle(title);
+        mShownTitle = title;
+    }
+    const Clock::time_point start = Clock::now();
+    // This frame's picture follows the project as it is now, with the view's overrides.
+    mState.options = viewRenderOptions(mState);
+    advanceTime(start);
+    // Statistics cost atomics and a wait when read: only the frame before a status update
+    // collects them, and they are read once, after it.
+    const bool statusDue =
+        mFrame == 0 || Clock::now() - mLastStatus > std::chrono::milliseconds(500);
+    mState.options.cull.collectStats = statusDue;
+    render(width, height);
+    auto more = writeOutputs(width, height);
+    if (!more || !*more)
+        return more;
+    mWindow->swapBuffers();
+    updateStatus(statusDue);
+    return true;
+}
+
+bool Editor::closeRequested() {
+    if (!mUi || !mState.dirty || mReplay) {
+        // A clean close leaves nothing to recover (an autosave still on offer stays).
+        if (!mState.dirty && !mState.recoveryOffer)
+            removeAutosave(mState.loaded);
+        return true;
+    }
+    mWindow->cancelClose();  // ask first
+    askQuit(mState);
+    return false;
+}
+
+bool Editor::applyRequests() {
+    EditorState& state = mState;
+    // Quitting (after saving, or choosing to drop the changes) leaves nothing to recover.
+    if (state.quitRequested) {
+        if (!state.recoveryOffer)
+            removeAutosave(state.loaded);
+        return true;
+    }
+    // An export reads the scene on its worker: replacing or re-growing it waits.
+    if (state.newRequested && !state.busy()) {
+        state.newRequested = false;
+        if (adoptDocument(core::LoadedProject{core::Project{}, std::filesystem::current_path(), {}},
+                          "cannot start a new project")) {
+            state.dirty = true;  // exists only in memory until saved
+            state.message = "new project (not saved)";
+        }
+    }
+    if (!state.openRequested.empty() && !state.busy()) {
+        auto opened = core::loadProject(state.openRequested);
+        state.openRequested.clear();
+        if (!opened) {
+            state.message = "cannot open: " + opened.error().str();
+        } else if (adoptDocument(std::move(*opened), "cannot open")) {
+            state.dirty = false;
+            state.message = "opened " + state.loaded.file.string();
+        }
+    }
+    if (state.recoverRequested && !state.busy()) {
+        state.recoverRequested = false;
+        core::LoadedProject recovered = std::move(*state.recoveryOffer);
+        state.recoveryOffer.reset();
+        if (adoptDocument(std::move(recovered), "cannot recover the autosave"))
+            markRecoveredMaps(state);
+    }
+    // Re-grow once the edit has ended, not on every frame of a drag.
+    if (state.rebuildPending && !state.toolDragActive && !state.busy() &&
+        (!mUi || mUi->context().activeId().value == 0)) {
+        state.rebuildPending = false;
+        regrowLive();
+    }
+    // Patches the brush or an undo re-grew: only those go up to the GPU.
+    for (const auto& [layer, report] : state.regrown) {
+        mLive.renderer->uploadRegrown(layer, report);
+        if (mLive.physics)
+            mLive.physics->gpu.uploadRegrown(layer, *mLive.scene, report.patches);
+    }
+    state.regrown.clear();
+    return false;
+}
+
+// Re-grows the live field from the open project (after an edit that needs it), keeping the maps
+// painted since the last save; on failure the old field stays.
+void Editor::regrowLive() {
+    auto next = buildLive(mState.loaded, !mSettings.noPhysics, [&](core::Scene& grown) {
+        return carryPaintedMaps(mState, *mLive.scene, grown);
+    });
+    if (!next) {
+        mState.message = "cannot grow the field: " + next.error().str();
+        return;
+    }
+    const std::size_t steps = mLive.physics ? mLive.physics->steps : 0;
+    mLive = std::move(*next);
+    mState.scene = mLive.scene.get();
+    mState.tools = mLive.tools.get();
+    mState.regrown.clear();
+    if (mLive.physics)
+        mLive.physics->steps = steps;  // the field restarts from rest, the clock goes on
+}
+
+// New, Open, Recover: the document is replaced only once its field is grown.
+bool Editor::adoptDocument(core::LoadedProject next, std::string_view what) {
+    if (!replaceDocument(mState, mLive, std::move(next), !mSettings.noPhysics, what))
+        return false;
+    if (auto camera = render::projectCamera(mState.loaded.project, ""))
+        mCamera = *camera;
+    resetTimeline();
+    return true;
+}
+
+void Editor::resetTimeline() {
+    core::Timeline& timeline = mState.timeline;
+    timeline = core::timelineFor(mState.loaded.project);
+    // A minute at least, so an unkeyed scene does not restart its sway every few seconds.
+    timeline.setRange(timeline.startS(), std::max(timeline.endS(), timeline.startS() + 60.0));
+    timeline.setLoop(true);
+    timeline.play();
+}
+
+void Editor::autosaveWhenDue() {
+    // On the simulation's clock when replaying, so scripts see it at a fixed frame.
+    mAutosaveDueS -= mReplay ? mState.timeline.stepS()
+                             : std::chrono::duration<double>(Clock::now() - mLastFrameEnd).count();
+    if (mSettings.autosaveS > 0.0 && mAutosaveDueS <= 0.0 && mState.dirty && !mState.busy() &&
+        !mState.toolDragActive) {
+        mAutosaveDueS = mSettings.autosaveS;
+        autosaveNow(mState);
+    }
+}
+
+void Editor::advanceTime(Clock::time_point start) {
+    EditorState& state = mState;
+    // Screenshots advance exactly one step per frame, so they do not depend on machine speed.
+    const double elapsedS = !mReplay ? std::chrono::duration<double>(start - mLastFrameEnd).count()
+                                     : state.timeline.stepS();
+    const core::TimeUpdate moved = state.timeline.advance(elapsedS);
+    const bool jumped = state.timeJump.needsReset() || moved.needsReset() ||
+                        state.timeJump.change == core::TimeChange::JumpForward;
+    state.timeJump = {};
+    if (mLive.physics) {
+        LivePhysics& physics = *mLive.physics;
+        if (jumped) {
+            // The field restarts from rest at the new time (re-simulating from the start would
+            // stall the scrub).
+            if (auto reset = resetPhysics(mLive); !reset)
+                state.message = "cannot reset the simulation: " + reset.error().str();
+            physics.steps = static_cast<std::size_t>(
+                std::floor(state.timeline.timeS() / physics.scene.params.dtS));
+        }
+        physics.advanceTo(state.timeline.timeS());
+    }
+    state.options.timeS = static_cast<float>(state.timeline.timeS());
+}
+
+void Editor::render(int width, int height) {
+    if (!mTarget || mTarget->width() != mView.w || mTarget->height() != mView.h)
+        mTarget = std::make_unique<gl::Framebuffer>(mView.w, mView.h,
+                                                    mState.loaded.project.render.msaaSamples);
+    mLive.renderer->render(mCamera, mView.w, mView.h, mTarget->id(), mState.options);
+    if (!mUi) {
+        mTarget->blitTo(0, width, height);
+        return;
+    }
+    // The panels cover the rest; clear it so nothing stale shows through at the edges.
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(0.106f, 0.106f, 0.106f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    // A multisampled blit may move the rectangle but not scale it: sizes match here.
+    glBlitNamedFramebuffer(mTarget->id(), 0, 0, 0, mView.w, mView.h, mView.x, mView.y,
+                           mView.x + mView.w, mView.y + mView.h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    mUi->draw(width, height);
+}
+
+Result<bool> Editor::writeOutputs(int width, int height) {
+    EditorState& state = mState;
+    const auto shownImage = [&](const std::string& file) {
+        const gl::Rgba8Image shown = gl::readFramebuffer(0, width, height);
+        return writeRgba8Image(file, shown.width, shown.height, shown.pixels);
+    };
+    if (!state.screenshotRequested.empty()) {
+        const auto written = shownImage(state.screenshotRequested);
+        state.message = written ? "saved " + state.screenshotRequested
+                                : "screenshot not saved: " + written.error().str();
+        state.screenshotRequested.clear();
+    }
+    if (!state.turntableRequested.empty()) {
+        // The views show the field as grown (at rest), from the viewport's camera and size.
+        render::OffscreenRequest request;
+        request.width = mView.w;
+        request.height = mView.h;
+        request.frames = 1;
+        request.options = state.options;
+        auto turned = render::writeTurntable(*mLive.scene, mCamera, request, TURNTABLE_VIEWS,
+                                             state.turntableRequested);
+        state.message = turned ? "saved a turntable of " + std::to_string(turned->framesWritten) +
+                                     " views: " + turned->sheet.string()
+                               : "turntable not saved: " + turned.error().str();
+        state.turntableRequested.clear();
+    }
+    if (!mSettings.scriptFile.empty() &&
+        !mScript[static_cast<std::size_t>(mFrame)].screenshot.empty()) {
+        const std::string& shot = mScript[static_cast<std::size_t>(mFrame)].screenshot;
+        if (auto written = shownImage(shot); !written)
+            return written.error();
+        std::printf("wrote %s (%dx%d) at frame %d\n", shot.c_str(), width, height, mFrame + 1);
+    }
+    ++mFrame;
+    if (!mSettings.screenshot.empty() && mFrame >= mSettings.frames) {
+        if (auto written = shownImage(mSettings.screenshot); !written)
+            return written.error();
+        std::printf("wrote %s (%dx%d) after %d frames\n", mSettings.screenshot.c_str(), width,
+                    height, mFrame);
+        return false;
+    }
+    return true;
+}
+
+void Editor::updateStatus(bool statusDue) {
+    const Clock::time_point now = Clock::now();
+    const double frameS = std::chrono::duration<double>(now - mLastFrameEnd).count();
+    mLastFrameEnd = now;
+    // Smoothed, so the number stays readable.
+    if (frameS > 0.0)
+        mFps = mFps == 0.0 ? 1.0 / frameS : 0.9 * mFps + 0.1 / frameS;
+    mState.status.blades = mLive.scene->totalBlades();  // live: a re-grow shows at once
+    if (statusDue) {
+        mState.status.timings = mLive.renderer->lastTimings();
+        mState.status.fps = mFps;
+        mLastStatus = now;
+    }
+}
+
+}  // namespace grass::editor

@@ -1,0 +1,97 @@
+// The editor window's session (issue 23): the document and its live field, the view, the UI, and
+// what one frame does to them. main.cpp is the table of contents (arguments, one Editor, the
+// loop); this is the chapter. A frame, in order:
+//   input (the window's, or the replayed script's)
+//   → UI (panels first: they decide who gets the pointer and the keys)
+//   → viewport tools and camera → keys (render keys, tool keys, undo, save)
+//   → history (a changed project becomes one undo step, editor/app/edit_actions.h)
+//   → requests (New, Open, Recover replace the document whole, editor/app/document.h;
+//     a pending re-grow; re-grown patches up to the GPU)
+//   → autosave → time and physics → render → outputs (screenshots, turntable) → status.
+// Edits of the document happen in the panels, the tools and the keys; they all meet in the
+// project in EditorState, and the render settings are derived from it (viewRenderOptions).
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "editor_ui.h"
+#include "framebuffer.h"
+#include "input_script.h"
+#include "live_scene.h"
+#include "panels.h"
+#include "scene/camera.h"
+#include "util/result.h"
+#include "window.h"
+
+namespace grass::editor {
+
+// What the command line chose (grass-editor --help says each).
+struct EditorSettings {
+    std::string projectPath;
+    std::string screenshot;  // save the window after `frames` frames, then stop
+    int frames = 0;
+    std::string scriptFile;  // replay recorded input, then stop
+    double autosaveS = 180.0;
+    bool recover = false;
+    bool glDebug = false;
+    bool noPhysics = false;
+    bool noUi = false;
+};
+
+// The viewport rect (points, y down) in GL pixels (y up), at least one pixel.
+struct PixelRect {
+    int x = 0, y = 0, w = 1, h = 1;
+};
+
+class Editor {
+public:
+    // Opens the window on the project, grows its field and, unless --no-ui, builds the UI.
+    static Result<std::unique_ptr<Editor>> open(EditorSettings settings);
+    // Runs one frame; false once the session is over (quit, the script's end, the screenshot
+    // saved). An error (a script's screenshot that cannot be written) ends it too.
+    Result<bool> frame();
+
+private:
+    Editor() = default;
+    using Clock = std::chrono::steady_clock;
+
+    // The window's close button: true when the session ends here (else it asks first).
+    bool closeRequested();
+    // Panels, overlay and the viewport's tools and camera; the keys unless the UI took them.
+    void runInput(InputState input, int width, int height);
+    void applyKeys(const InputState& input);
+    // New, Open, Recover and re-grows; true when the user quit.
+    bool applyRequests();
+    void regrowLive();
+    bool adoptDocument(core::LoadedProject next, std::string_view what);
+    void resetTimeline();
+    void autosaveWhenDue();
+    void advanceTime(Clock::time_point start);
+    void render(int width, int height);
+    // Screenshots and the turntable; false when the --screenshot was written (the end).
+    Result<bool> writeOutputs(int width, int height);
+    void updateStatus(bool statusDue);
+
+    EditorSettings mSettings;
+    bool mReplay = false;  // screenshots and scripts: one physics step per frame
+    std::vector<ScriptFrame> mScript;
+    EditorState mState;
+    std::unique_ptr<Window> mWindow;
+    std::unique_ptr<EditorUi> mUi;
+    core::OrbitCamera mCamera;
+    Live mLive;
+    std::unique_ptr<gl::Framebuffer> mTarget;
+    PixelRect mView;
+    int mFrame = 0;
+    bool mCameraDrag = false;  // a drag that began in the viewport stays the camera's
+    bool mToolDrag = false;    // a drag that began on a tool (brush, gizmo) stays the tool's
+    std::string mShownTitle;
+    double mAutosaveDueS = 0.0;
+    Clock::time_point mStartTime, mLastStatus, mLastFrameEnd;
+    double mFps = 0.0;
+};
+
+}  // namespace grass::editor

@@ -1,0 +1,153 @@
+// The editor's input each frame: the UI first, then the viewport's tools, the camera and the
+// keys (editor.h describes the whole frame).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "edit_actions.h"
+#include "editor.h"
+#include "viewport_tools.h"
+
+namespace grass::editor {
+
+namespace {
+
+// Keys that change how the field is drawn (window.h); returns what changed, for the console.
+// 1-4 switch a cull test of the view; T and L change the project's technique and lighting (a
+// project edit like the Render panel's combo boxes: saved, undoable, marking it unsaved).
+std::string applyRenderKeys(const InputState& input, EditorState& state) {
+    ViewOverrides& view = state.view;
+    bool* tests[] = {&view.orientation, &view.frustum, &view.distance, &view.occlusion};
+    const char* names[] = {"orientation", "frustum", "distance", "occlusion"};
+    if (input.toggledCullTest >= 1 && input.toggledCullTest <= 4) {
+        bool& test = *tests[input.toggledCullTest - 1];
+        test = !test;
+        return std::string(names[input.toggledCullTest - 1]) + " culling " + (test ? "on" : "off");
+    }
+    core::Project& project = state.loaded.project;
+    if (input.nextTechnique) {
+        project.render.technique =
+            static_cast<core::GrassTechnique>((static_cast<int>(project.render.technique) + 1) % 4);
+        return "technique " + std::string(core::grassTechniqueName(project.render.technique));
+    }
+    if (input.toggleLighting) {
+        core::LightingModel& model = project.lighting.model;
+        model = model == core::LightingModel::Grass ? core::LightingModel::Simple
+                                                    : core::LightingModel::Grass;
+        return model == core::LightingModel::Grass ? "grass lighting" : "simple lighting";
+    }
+    return {};
+}
+
+void moveCamera(InputState input, bool drag, bool wheel, int viewportHeight,
+                const core::Scene& scene, core::OrbitCamera& camera) {
+    if (!drag)
+        input.leftDown = input.middleDown = false;
+    if (!wheel)
+        input.scrollSteps = 0.0;
+    const bool panning = input.middleDown || (input.leftDown && input.shiftDown);
+    if (panning)
+        camera.pan(static_cast<float>(input.dragDx), static_cast<float>(input.dragDy),
+                   static_cast<float>(viewportHeight));
+    else if (input.leftDown)
+        camera.orbit(static_cast<float>(input.dragDx), static_cast<float>(input.dragDy));
+    if (input.scrollSteps != 0.0)
+        camera.zoom(static_cast<float>(input.scrollSteps));
+    if (input.frameRequested)
+        camera = core::frameBounds(scene.bounds, camera.fovYRad);
+    // Keep the depth range proportional to the distance so zooming never clips the field.
+    camera.nearPlane = std::max(camera.distance * 1e-3f, 1e-4f);
+    camera.farPlane = camera.distance * 20.0f + 100.0f;
+}
+
+PixelRect toPixels(ui::Rect r, float ppp, int framebufferHeight) {
+    PixelRect p;
+    p.x = int(std::lround(r.min.x * ppp));
+    p.w = std::max(1, int(std::lround(r.max.x * ppp)) - p.x);
+    const int top = int(std::lround(r.min.y * ppp));
+    p.h = std::max(1, int(std::lround(r.max.y * ppp)) - top);
+    p.y = framebufferHeight - top - p.h;
+    return p;
+}
+
+}  // namespace
+
+void Editor::runInput(InputState input, int width, int height) {
+    // The UI first: it decides who gets the pointer and the keys this frame.
+    const Clock::time_point uiStart = Clock::now();
+    mView = PixelRect{0, 0, width, height};
+    bool uiPointer = false, uiKeyboard = false;
+    ViewportPointer pointer;
+    if (mUi) {
+        mUi->beginFrame(*mWindow, input,
+                        std::chrono::duration<double>(uiStart - mStartTime).count());
+        const ui::Rect central = buildPanels(mUi->context(), mState);
+        const float ppp = mUi->pixelsPerPoint();
+        const ui::Vec2 at = mUi->context().pointerPos();
+        pointer.pixel = glm::vec2(at.x - central.min.x, at.y - central.min.y) * ppp;
+        pointer.viewportSize = glm::vec2(central.width(), central.height()) * ppp;
+        pointer.inside = input.cursorInside && central.contains(at);
+        drawViewportOverlay(mUi->context(), central, ppp, mState, mCamera, pointer);
+        const ui::Output& out = mUi->endFrame(*mWindow);
+        uiPointer = out.wantsPointer;
+        uiKeyboard = out.wantsKeyboard;
+        mView = toPixels(central, out.pixelsPerPoint, height);
+        mState.status.uiMs =
+            std::chrono::duration<double, std::milli>(Clock::now() - uiStart).count();
+    }
+    // The viewport's tools: a press on the mesh (brush) or on an object (gizmo) makes the drag
+    // theirs; the camera orbits with the right button meanwhile.
+    bool toolUsed = false;
+    if (mUi) {
+        pointer.inside = pointer.inside && !uiPointer && !mCameraDrag;
+        pointer.down = input.leftDown;
+        pointer.pressed = input.leftPressed;
+        pointer.released = !input.leftDown;
+        pointer.ctrl = input.modifiers.ctrl;
+        pointer.shift = input.modifiers.shift;
+        pointer.pressure = input.pressure;
+        toolUsed = runViewportTool(mState, mCamera, pointer);
+        if (toolUsed && pointer.pressed)
+            mToolDrag = true;
+        if (!input.leftDown)
+            mToolDrag = false;
+        if (mToolDrag || mState.toolDragActive)
+            input.leftDown = false;
+        if (mState.tool != ViewportTool::Camera && input.rightDown)
+            input.leftDown = true;
+    }
+    const bool anyDown = input.leftDown || input.middleDown || input.rightDown;
+    if (!mUi || !anyDown)
+        mCameraDrag = anyDown && !toolUsed;
+    else if (!mCameraDrag && !uiPointer && !mToolDrag && mUi->context().activeId().value == 0)
+        mCameraDrag = true;
+    moveCamera(input, mCameraDrag, !uiPointer, mView.h, *mLive.scene, mCamera);
+    if (!uiKeyboard)
+        applyKeys(input);
+}
+
+void Editor::applyKeys(const InputState& input) {
+    if (const std::string changed = applyRenderKeys(input, mState); !changed.empty())
+        std::fprintf(stderr, "grass-editor: %s\n", changed.c_str());
+    applyToolKeys(mState, input.typed);
+    for (const ui::KeyEvent& key : input.keys) {
+        if (!key.modifiers.ctrl)
+            continue;
+        if (key.key == ui::Key::Z)
+            key.modifiers.shift ? redo(mState) : undo(mState);
+        else if (key.key == ui::Key::Y)
+            redo(mState);
+        else if (key.key == ui::Key::S && mUi) {
+            if (mState.loaded.file.empty())
+                mState.fileDialog = FileDialog::SaveAs;
+            else
+                saveTo(mState, mState.loaded.file.string());
+        }
+    }
+    // With the UI, Escape belongs to it (closing popups and text edits): one press must not
+    // also quit. File → Quit and the window's close button remain.
+    if (input.escapePressed && !mUi)
+        mWindow->requestClose();
+}
+
+}  // namespace grass::editor
