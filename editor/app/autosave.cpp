@@ -1,4 +1,4 @@
-#include "autosave.h"
+#include "app/autosave.h"
 
 #include <system_error>
 

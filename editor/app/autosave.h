@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "panels.h"
+#include "app/panels.h"
 #include "util/result.h"
 
 namespace grass::editor {

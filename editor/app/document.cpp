@@ -1,8 +1,8 @@
-#include "document.h"
+#include "app/document.h"
 
 #include <string>
 
-#include "edit_actions.h"
+#include "app/edit_actions.h"
 
 namespace grass::editor {
 

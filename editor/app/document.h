@@ -7,8 +7,8 @@
 
 #include <string_view>
 
-#include "live_scene.h"
-#include "panels.h"
+#include "app/live_scene.h"
+#include "app/panels.h"
 
 namespace grass::editor {
 

@@ -1,4 +1,4 @@
-#include "edit_actions.h"
+#include "app/edit_actions.h"
 
 #include <system_error>
 

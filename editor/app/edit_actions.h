@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "panels.h"
+#include "app/panels.h"
 #include "util/result.h"
 
 namespace grass::editor {

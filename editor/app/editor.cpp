@@ -1,4 +1,4 @@
-#include "editor.h"
+#include "app/editor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,16 +7,16 @@
 
 #include <epoxy/gl.h>
 
-#include "autosave.h"
-#include "debug_output.h"
-#include "document.h"
-#include "edit_actions.h"
-#include "headless_context.h"
-#include "offscreen_render.h"
-#include "scene_renderer.h"
-#include "turntable_files.h"
+#include "app/autosave.h"
+#include "gl/debug_output.h"
+#include "app/document.h"
+#include "app/edit_actions.h"
+#include "gl/headless_context.h"
+#include "render/offscreen_render.h"
+#include "render/scene_renderer.h"
+#include "render/turntable_files.h"
 #include "util/image_file.h"
-#include "viewport_tools.h"
+#include "app/viewport_tools.h"
 
 namespace grass::editor {
 

@@ -17,14 +17,14 @@
 #include <string>
 #include <vector>
 
-#include "editor_ui.h"
-#include "framebuffer.h"
-#include "input_script.h"
-#include "live_scene.h"
-#include "panels.h"
+#include "app/editor_ui.h"
+#include "gl/framebuffer.h"
+#include "app/input_script.h"
+#include "app/live_scene.h"
+#include "app/panels.h"
 #include "scene/camera.h"
 #include "util/result.h"
-#include "window.h"
+#include "app/window.h"
 
 namespace grass::editor {
 

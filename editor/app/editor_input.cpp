@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "edit_actions.h"
-#include "editor.h"
-#include "viewport_tools.h"
+#include "app/edit_actions.h"
+#include "app/editor.h"
+#include "app/viewport_tools.h"
 
 namespace grass::editor {
 

@@ -1,9 +1,9 @@
-#include "editor_ui.h"
+#include "app/editor_ui.h"
 
 #include <GLFW/glfw3.h>
 
 #include "ui/tessellator.h"
-#include "window.h"
+#include "app/window.h"
 
 namespace grass::editor {
 

@@ -13,7 +13,7 @@
 #include "ui/context.h"
 #include "ui/font.h"
 #include "ui/mesh.h"
-#include "ui_renderer.h"
+#include "gl/ui_renderer.h"
 #include "util/result.h"
 
 namespace grass::editor {

@@ -1,4 +1,4 @@
-#include "export_job.h"
+#include "app/export_job.h"
 
 #include <cstdio>
 

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "util/result.h"
-#include "window.h"
+#include "app/window.h"
 
 namespace grass::editor {
 

@@ -1,4 +1,4 @@
-#include "live_scene.h"
+#include "app/live_scene.h"
 
 #include <cstdio>
 

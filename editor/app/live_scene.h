@@ -9,10 +9,10 @@
 #include "project/project.h"
 #include "scene/scene.h"
 #include "scene/scene_physics.h"
-#include "scene_physics_gpu.h"
-#include "scene_renderer.h"
+#include "render/scene_physics_gpu.h"
+#include "render/scene_renderer.h"
 #include "util/result.h"
-#include "viewport_tools.h"
+#include "app/viewport_tools.h"
 
 namespace grass::editor {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "debug_output.h"
-#include "editor.h"
+#include "gl/debug_output.h"
+#include "app/editor.h"
 #include "util/arg_parser.h"
 #include "util/image_file.h"
 

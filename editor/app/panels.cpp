@@ -1,7 +1,7 @@
-#include "panels.h"
+#include "app/panels.h"
 
-#include "autosave.h"
-#include "edit_actions.h"
+#include "app/autosave.h"
+#include "app/edit_actions.h"
 
 #include <cstdio>
 #include <filesystem>

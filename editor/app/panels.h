@@ -20,12 +20,12 @@
 #include "edit/gizmo_drag.h"
 #include "edit/history.h"
 #include "edit/timeline.h"
-#include "export_job.h"
-#include "viewport_tools.h"
+#include "app/export_job.h"
+#include "app/viewport_tools.h"
 
 #include "project/project.h"
 #include "scene/scene.h"
-#include "scene_renderer.h"
+#include "render/scene_renderer.h"
 #include "ui/context.h"
 #include "ui/ui.h"
 

@@ -1,8 +1,8 @@
 // File → Export…: where to, which format and LOD, then a progress bar while the worker writes.
 #include <array>
 
-#include "autosave.h"
-#include "panels.h"
+#include "app/autosave.h"
+#include "app/panels.h"
 #include "ui/text_edit.h"
 #include "ui/ui.h"
 #include "ui/window.h"

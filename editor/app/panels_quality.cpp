@@ -4,7 +4,7 @@
 #include <array>
 #include <cstdio>
 
-#include "panels.h"
+#include "app/panels.h"
 #include "quality/quality_presets.h"
 #include "ui/ui.h"
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "edit/timeline.h"
-#include "panels.h"
+#include "app/panels.h"
 #include "physics/wind.h"
 #include "ui/color_edit.h"
 #include "ui/curve_edit.h"

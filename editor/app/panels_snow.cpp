@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "panels.h"
+#include "app/panels.h"
 #include "ui/color_edit.h"
 #include "ui/text_edit.h"
 #include "ui/ui.h"

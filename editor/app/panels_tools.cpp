@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "panels.h"
+#include "app/panels.h"
 #include "ui/text_edit.h"
 #include "ui/ui.h"
 

@@ -1,4 +1,4 @@
-#include "viewport_tools.h"
+#include "app/viewport_tools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "mesh/surface_ring.h"
-#include "panels.h"
+#include "app/panels.h"
 #include "ui/painter.h"
 
 namespace grass::editor {

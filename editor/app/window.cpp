@@ -1,7 +1,7 @@
-#include "window.h"
+#include "app/window.h"
 
-#include "debug_output.h"
-#include "editor_ui.h"
+#include "gl/debug_output.h"
+#include "app/editor_ui.h"
 
 #include <GLFW/glfw3.h>
 #include <epoxy/gl.h>

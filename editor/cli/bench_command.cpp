@@ -13,18 +13,18 @@
 #include <optional>
 #include <string_view>
 
-#include "bench_report.h"
-#include "commands.h"
-#include "debug_output.h"
-#include "framebuffer.h"
-#include "headless_context.h"
+#include "cli/bench_report.h"
+#include "cli/commands.h"
+#include "gl/debug_output.h"
+#include "gl/framebuffer.h"
+#include "gl/headless_context.h"
 #include "mesh/surface_mesh.h"
-#include "offscreen_render.h"
-#include "panels.h"
+#include "render/offscreen_render.h"
 #include "scene/scene_physics.h"
-#include "scene_physics_gpu.h"
+#include "render/scene_physics_gpu.h"
+#include "tools/median.h"
+#include "tools/ui_cost.h"
 #include "ui/font.h"
-#include "ui/tessellator.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
 
@@ -60,7 +60,6 @@ constexpr std::string_view DEFAULT_CASES =
 // Above this many blades a case is "large": fewer frames and steps (a 1M-blade frame takes
 // seconds on llvmpipe), and --quick leaves it out.
 constexpr double LARGE_CASE_BLADES = 1e5;
-constexpr int UI_FRAMES = 30;
 
 struct BenchArgs {
     std::string cases{DEFAULT_CASES}, out, compare, results, root = GRASS_SOURCE_DIR;
@@ -71,13 +70,7 @@ struct BenchArgs {
     bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
 };
 
-double median(std::vector<double> values) {
-    if (values.empty())
-        return 0.0;
-    std::sort(values.begin(), values.end());
-    const std::size_t mid = values.size() / 2;
-    return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
+using tools::median;
 
 Result<std::vector<const BenchCase*>> selectCases(const BenchArgs& args) {
     std::vector<const BenchCase*> chosen;
@@ -129,46 +122,6 @@ Result<core::Scene> growCase(const BenchCase& c, core::LoadedProject& loaded) {
         }
     }
     return core::buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes));
-}
-
-// The editor's side panel, menu and status bar over this scene, as bench_ui drives them: a
-// 1280×720 window, the pointer over the panel. Median CPU ms of build + layout + tessellation.
-struct UiCost {
-    double ms = 0.0;
-    std::size_t shapes = 0, vertices = 0;  // of the last frame, to show what was measured
-};
-
-UiCost measureUi(const ui::FontAtlas& fonts, core::LoadedProject loaded, core::Scene& scene,
-                 const render::RenderOptions& options, const render::FrameTimings& timings) {
-    editor::EditorState state;
-    state.loaded = std::move(loaded);
-    state.scene = &scene;
-    state.options = options;
-    state.status.blades = scene.totalBlades();
-    state.status.timings = timings;
-    ui::Context ctx(fonts);
-    ui::Input input;
-    input.screenRect = {{0.0f, 0.0f}, {1280.0f, 720.0f}};
-    input.hasPointer = true;
-    input.pointerPos = {160.0f, 240.0f};
-    std::vector<ui::Mesh> meshes;
-    std::vector<double> ms;
-    UiCost cost;
-    // Two frames first: the first lays out with no remembered sizes.
-    for (int frame = 0; frame < UI_FRAMES + 2; ++frame) {
-        const auto start = Clock::now();
-        ctx.beginFrame(input);
-        editor::buildPanels(ctx, state);
-        const ui::Output& output = ctx.endFrame();
-        ui::tessellate(output.shapes, fonts, input.pixelsPerPoint, meshes);
-        if (frame >= 2)
-            ms.push_back(msSince(start));
-        cost.shapes = output.shapes.size();
-    }
-    cost.ms = median(ms);
-    for (const ui::Mesh& mesh : meshes)
-        cost.vertices += mesh.vertices.size();
-    return cost;
 }
 
 // A timer of a pass the frame did not run can read a stale value (docs/rendering.md: an empty
@@ -278,10 +231,10 @@ Result<BenchCaseResult> measureCase(const BenchCase& c, const CaseContext& ctx) 
         result.bladeStepsPerS =
             ms > 0.0 ? static_cast<double>(scene->totalBlades()) * steps / (ms / 1000.0) : 0.0;
     }
-    const UiCost ui = measureUi(ctx.fonts, *loaded, *scene, options, last);
+    const tools::UiCost ui = tools::measureUi(ctx.fonts, *loaded, *scene, options, last);
     result.uiMs = ui.ms;
     std::fprintf(stderr, "%s: editor panels, %d frames of %zu shapes, %zu vertices\n",
-                 ctx.progress.c_str(), UI_FRAMES, ui.shapes, ui.vertices);
+                 ctx.progress.c_str(), tools::UI_FRAMES, ui.shapes, ui.vertices);
     return result;
 }
 

@@ -1,4 +1,4 @@
-#include "bench_report.h"
+#include "cli/bench_report.h"
 
 #include <algorithm>
 #include <array>

@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <string>
 
-#include "commands.h"
+#include "cli/commands.h"
 
 namespace grass::cli {
 

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <string>
 
-#include "commands.h"
+#include "cli/commands.h"
 #include "export/export.h"
-#include "preset_option.h"
+#include "cli/preset_option.h"
 #include "project/project.h"
 #include "scene/scene.h"
 #include "util/arg_parser.h"

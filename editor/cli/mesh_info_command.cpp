@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "commands.h"
+#include "cli/commands.h"
 #include "mesh/gltf_loader.h"
 #include "util/arg_parser.h"
 

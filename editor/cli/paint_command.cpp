@@ -13,14 +13,14 @@
 #include <memory>
 #include <string_view>
 
-#include "commands.h"
+#include "cli/commands.h"
 #include "edit/scene_paint.h"
 #include "maps/brush.h"
 #include "maps/map_image.h"
 #include "maps/texel_surface.h"
 #include "project/project.h"
 #include "scene/scene.h"
-#include "stroke_text.h"
+#include "cli/stroke_text.h"
 #include "util/arg_parser.h"
 
 namespace grass::cli {

@@ -1,4 +1,4 @@
-#include "preset_option.h"
+#include "cli/preset_option.h"
 
 #include "quality/quality_presets.h"
 

@@ -1,7 +1,7 @@
 // grass presets: the quality presets and the measurements they were chosen from (issue 10).
 #include <cstdio>
 
-#include "commands.h"
+#include "cli/commands.h"
 #include "quality/preset_table.h"
 #include "quality/quality_presets.h"
 #include "util/arg_parser.h"

@@ -6,14 +6,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "commands.h"
-#include "debug_output.h"
-#include "headless_context.h"
+#include "cli/commands.h"
+#include "gl/debug_output.h"
+#include "gl/headless_context.h"
 #include "physics/step_count.h"
-#include "preset_option.h"
+#include "cli/preset_option.h"
 #include "project/project_inputs.h"
 #include "scene/scene_physics.h"
-#include "simulation_runner.h"
+#include "cli/simulation_runner.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
 

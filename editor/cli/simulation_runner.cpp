@@ -1,4 +1,4 @@
-#include "simulation_runner.h"
+#include "cli/simulation_runner.h"
 
 #include <unistd.h>
 #include <chrono>
@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "physics/step_count.h"
-#include "scene_physics_gpu.h"
+#include "render/scene_physics_gpu.h"
 
 namespace grass::cli {
 

@@ -6,13 +6,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "commands.h"
-#include "debug_output.h"
-#include "headless_context.h"
+#include "cli/commands.h"
+#include "gl/debug_output.h"
+#include "gl/headless_context.h"
 #include "physics/path_loop.h"
 #include "physics/step_count.h"
 #include "project/project_inputs.h"
-#include "soak_run.h"
+#include "cli/soak_run.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
 

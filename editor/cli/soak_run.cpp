@@ -1,4 +1,4 @@
-#include "soak_run.h"
+#include "cli/soak_run.h"
 
 #include <malloc.h>
 #include <unistd.h>
@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "physics/path_loop.h"
-#include "scene_physics_gpu.h"
+#include "render/scene_physics_gpu.h"
 
 namespace grass::cli {
 

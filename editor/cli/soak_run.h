@@ -7,9 +7,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "gl_object_count.h"
+#include "gl/gl_object_count.h"
 #include "scene/scene_physics.h"
-#include "simulation_runner.h"
+#include "cli/simulation_runner.h"
 #include "util/result.h"
 
 namespace grass::cli {

@@ -1,4 +1,4 @@
-#include "stroke_text.h"
+#include "cli/stroke_text.h"
 
 #include <cctype>
 #include <cfloat>

@@ -6,12 +6,12 @@
 #include <memory>
 #include <sstream>
 
-#include "commands.h"
-#include "debug_output.h"
-#include "headless_context.h"
-#include "tradeoff_plot.h"
-#include "tradeoff_report.h"
-#include "tradeoff_sweep.h"
+#include "cli/commands.h"
+#include "gl/debug_output.h"
+#include "gl/headless_context.h"
+#include "tools/tradeoff_plot.h"
+#include "tools/tradeoff_report.h"
+#include "tools/tradeoff_sweep.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
 

@@ -1,4 +1,4 @@
-#include "debug_output.h"
+#include "gl/debug_output.h"
 
 #include <epoxy/gl.h>
 

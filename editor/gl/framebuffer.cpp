@@ -1,4 +1,4 @@
-#include "framebuffer.h"
+#include "gl/framebuffer.h"
 
 #include <algorithm>
 #include <cstring>

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "gl_handle.h"
+#include "gl/gl_handle.h"
 
 namespace grass::gl {
 

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <utility>
 
-#include "gl_object_count.h"
+#include "gl/gl_object_count.h"
 
 namespace grass::gl {
 

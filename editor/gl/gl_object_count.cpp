@@ -1,4 +1,4 @@
-#include "gl_object_count.h"
+#include "gl/gl_object_count.h"
 
 #include <atomic>
 

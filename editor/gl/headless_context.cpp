@@ -1,11 +1,11 @@
-#include "headless_context.h"
+#include "gl/headless_context.h"
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
 #include <cstring>
 
-#include "debug_output.h"
+#include "gl/debug_output.h"
 
 namespace grass::gl {
 

@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "gl_handle.h"
+#include "gl/gl_handle.h"
 #include "util/result.h"
 
 namespace grass::gl {

@@ -1,4 +1,4 @@
-#include "timer_query.h"
+#include "gl/timer_query.h"
 
 namespace grass::gl {
 

@@ -2,7 +2,7 @@
 // frame), so the frame loop never stalls on them (issue 5: statistics a frame late).
 #pragma once
 
-#include "gl_handle.h"
+#include "gl/gl_handle.h"
 
 namespace grass::gl {
 

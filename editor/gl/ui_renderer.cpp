@@ -1,11 +1,11 @@
-#include "ui_renderer.h"
+#include "gl/ui_renderer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <span>
 
-#include "scoped_capability.h"
+#include "gl/scoped_capability.h"
 
 namespace grass::gl {
 

@@ -21,10 +21,10 @@
 
 #include <glm/glm.hpp>
 
-#include "buffer.h"
-#include "framebuffer.h"
-#include "gl_handle.h"
-#include "program.h"
+#include "gl/buffer.h"
+#include "gl/framebuffer.h"
+#include "gl/gl_handle.h"
+#include "gl/program.h"
 #include "ui/font.h"
 #include "ui/mesh.h"
 

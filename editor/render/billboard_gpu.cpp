@@ -1,4 +1,4 @@
-#include "billboard_gpu.h"
+#include "render/billboard_gpu.h"
 
 #include <algorithm>
 #include <array>
@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "scoped_capability.h"
+#include "gl/scoped_capability.h"
 
 namespace grass::render {
 

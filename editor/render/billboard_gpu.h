@@ -17,9 +17,9 @@
 #include <glm/glm.hpp>
 
 #include "billboard/star_billboards.h"
-#include "buffer.h"
-#include "gl_handle.h"
-#include "program.h"
+#include "gl/buffer.h"
+#include "gl/gl_handle.h"
+#include "gl/program.h"
 #include "util/image_file.h"
 
 namespace grass::render {

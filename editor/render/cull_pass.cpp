@@ -1,4 +1,4 @@
-#include "cull_pass.h"
+#include "render/cull_pass.h"
 
 #include <array>
 

@@ -11,11 +11,11 @@
 
 #include <glm/glm.hpp>
 
-#include "buffer.h"
-#include "field_gpu.h"
-#include "framebuffer.h"
-#include "gl_handle.h"
-#include "program.h"
+#include "gl/buffer.h"
+#include "render/field_gpu.h"
+#include "gl/framebuffer.h"
+#include "gl/gl_handle.h"
+#include "gl/program.h"
 
 namespace grass::render {
 

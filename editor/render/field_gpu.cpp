@@ -1,4 +1,4 @@
-#include "field_gpu.h"
+#include "render/field_gpu.h"
 
 #include <algorithm>
 

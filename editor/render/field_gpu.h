@@ -9,9 +9,9 @@
 #include <span>
 #include <vector>
 
-#include "buffer.h"
-#include "gl_handle.h"
-#include "program.h"
+#include "gl/buffer.h"
+#include "gl/gl_handle.h"
+#include "gl/program.h"
 #include "scene/scene.h"
 
 namespace grass::render {

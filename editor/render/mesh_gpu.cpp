@@ -1,4 +1,4 @@
-#include "mesh_gpu.h"
+#include "render/mesh_gpu.h"
 
 #include <cstddef>
 

@@ -1,8 +1,8 @@
 // MeshGpu: a SurfaceMesh uploaded for drawing: interleaved position/normal/uv, 32-bit indices.
 #pragma once
 
-#include "buffer.h"
-#include "gl_handle.h"
+#include "gl/buffer.h"
+#include "gl/gl_handle.h"
 #include "mesh/surface_mesh.h"
 
 namespace grass::render {

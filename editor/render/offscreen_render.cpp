@@ -1,4 +1,4 @@
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 
 #include <chrono>
 

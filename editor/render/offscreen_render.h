@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "framebuffer.h"
-#include "scene_renderer.h"
+#include "gl/framebuffer.h"
+#include "render/scene_renderer.h"
 
 namespace grass::render {
 

@@ -1,4 +1,4 @@
-#include "physics_gpu.h"
+#include "render/physics_gpu.h"
 
 #include <algorithm>
 #include <cstring>

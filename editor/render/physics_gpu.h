@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "buffer.h"
+#include "gl/buffer.h"
 #include "physics/physics.h"
-#include "program.h"
+#include "gl/program.h"
 #include "util/result.h"
 
 namespace grass::render {

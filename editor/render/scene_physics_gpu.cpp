@@ -1,4 +1,4 @@
-#include "scene_physics_gpu.h"
+#include "render/scene_physics_gpu.h"
 
 #include "util/assert.h"
 

@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "buffer.h"
-#include "physics_gpu.h"
+#include "gl/buffer.h"
+#include "render/physics_gpu.h"
 #include "scene/scene_physics.h"
 
 namespace grass::render {

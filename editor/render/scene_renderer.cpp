@@ -1,4 +1,4 @@
-#include "scene_renderer.h"
+#include "render/scene_renderer.h"
 
 #include <algorithm>
 #include <utility>

@@ -9,17 +9,17 @@
 #include <string>
 #include <vector>
 
-#include "billboard_gpu.h"
-#include "cull_pass.h"
-#include "snow_pass.h"
-#include "field_gpu.h"
-#include "mesh_gpu.h"
-#include "program.h"
-#include "stem_set_gpu.h"
+#include "render/billboard_gpu.h"
+#include "render/cull_pass.h"
+#include "render/snow_pass.h"
+#include "render/field_gpu.h"
+#include "render/mesh_gpu.h"
+#include "gl/program.h"
+#include "render/stem_set_gpu.h"
 #include "project/project.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
-#include "timer_query.h"
+#include "gl/timer_query.h"
 
 namespace grass::render {
 

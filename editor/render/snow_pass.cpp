@@ -1,4 +1,4 @@
-#include "snow_pass.h"
+#include "render/snow_pass.h"
 
 #include <algorithm>
 

@@ -5,9 +5,9 @@
 
 #include <functional>
 
-#include "framebuffer.h"
-#include "gl_handle.h"
-#include "program.h"
+#include "gl/framebuffer.h"
+#include "gl/gl_handle.h"
+#include "gl/program.h"
 #include "snow/snow.h"
 #include "util/result.h"
 

@@ -1,10 +1,10 @@
-#include "stem_set_gpu.h"
+#include "render/stem_set_gpu.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 
-#include "scoped_capability.h"
+#include "gl/scoped_capability.h"
 
 namespace grass::render {
 

@@ -23,10 +23,10 @@
 
 #include <glm/glm.hpp>
 
-#include "buffer.h"
-#include "gl_handle.h"
+#include "gl/buffer.h"
+#include "gl/gl_handle.h"
 #include "growth/growth_stems.h"
-#include "program.h"
+#include "gl/program.h"
 #include "util/result.h"
 
 namespace grass::render {

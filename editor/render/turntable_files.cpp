@@ -1,11 +1,11 @@
-#include "turntable_files.h"
+#include "render/turntable_files.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 
 #include "scene/turntable.h"
-#include "turntable_render.h"
+#include "render/turntable_render.h"
 #include "util/contact_sheet.h"
 #include "util/image_file.h"
 

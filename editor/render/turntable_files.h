@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 
 namespace grass::render {
 

@@ -1,4 +1,4 @@
-#include "turntable_render.h"
+#include "render/turntable_render.h"
 
 #include <chrono>
 

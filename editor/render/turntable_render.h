@@ -7,7 +7,7 @@
 
 #include <functional>
 
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 
 namespace grass::render {
 

@@ -20,11 +20,11 @@
 #include <vector>
 
 #include "blade/blade.h"
-#include "buffer.h"
-#include "headless_context.h"
+#include "gl/buffer.h"
+#include "gl/headless_context.h"
 #include "physics/physics.h"
-#include "physics_gpu.h"
-#include "timer_query.h"
+#include "render/physics_gpu.h"
+#include "gl/timer_query.h"
 #include "util/rng.h"
 
 namespace {

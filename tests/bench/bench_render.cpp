@@ -40,14 +40,14 @@
 #include <vector>
 
 #include "support/image_compare.h"
-#include "framebuffer.h"
-#include "headless_context.h"
+#include "gl/framebuffer.h"
+#include "gl/headless_context.h"
 #include "mesh/procedural.h"
 #include "mesh/surface_mesh.h"
 #include "project/project.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
-#include "scene_renderer.h"
+#include "render/scene_renderer.h"
 #include "util/image_file.h"
 
 namespace {

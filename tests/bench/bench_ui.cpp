@@ -12,7 +12,7 @@
 #include <string>
 #include <variant>
 
-#include "panels.h"
+#include "app/panels.h"
 #include "scene/scene.h"
 #include "ui/font.h"
 #include "ui/tessellator.h"

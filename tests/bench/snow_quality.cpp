@@ -24,12 +24,12 @@
 #include <string>
 #include <vector>
 
-#include "gl_handle.h"
-#include "headless_context.h"
-#include "offscreen_render.h"
+#include "gl/gl_handle.h"
+#include "gl/headless_context.h"
+#include "render/offscreen_render.h"
 #include "project/project.h"
 #include "scene/scene.h"
-#include "scene_renderer.h"
+#include "render/scene_renderer.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
 #include "util/image_file.h"

@@ -3,7 +3,7 @@
 // editor library; no GL context is used.)
 #include <gtest/gtest.h>
 
-#include "autosave.h"
+#include "app/autosave.h"
 
 namespace grass::test {
 namespace {

@@ -1,7 +1,7 @@
 // Star billboard grass objects (SPEC §8) on the GPU: they draw grass-coloured tufts, the three
 // wind modes agree without wind, wind moves the tops and not the roots, the distance fade hides
 // them, the per-cluster mode draws once per cluster, and the shader's wind formula is the CPU's.
-#include "billboard_gpu.h"
+#include "render/billboard_gpu.h"
 
 #include <gtest/gtest.h>
 
@@ -12,11 +12,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "billboard/grass_texture.h"
-#include "framebuffer.h"
+#include "gl/framebuffer.h"
 #include "gl_context_fixture.h"
 #include "mesh/procedural.h"
-#include "mesh_gpu.h"
-#include "program.h"
+#include "render/mesh_gpu.h"
+#include "gl/program.h"
 #include "support/test_paths.h"
 #include "util/image_file.h"
 

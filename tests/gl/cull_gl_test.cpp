@@ -8,7 +8,7 @@
 
 #include "blade/blade.h"
 #include "gl_context_fixture.h"
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 #include "scatter/patches.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"

@@ -2,7 +2,7 @@
 // GlTest::TearDown asserts on (issue 11: GL debug output reports no errors during the GL tests).
 #include <epoxy/gl.h>
 
-#include "debug_output.h"
+#include "gl/debug_output.h"
 #include "gl_context_fixture.h"
 
 namespace grass::test {

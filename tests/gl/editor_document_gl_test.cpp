@@ -2,12 +2,12 @@
 // settings have one source, the project, which T/L, the combo boxes and undo all change.
 #include <gtest/gtest.h>
 
-#include "document.h"
-#include "edit_actions.h"
+#include "app/document.h"
+#include "app/edit_actions.h"
 #include "gl_context_fixture.h"
-#include "panels.h"
+#include "app/panels.h"
 #include "support/test_paths.h"
-#include "viewport_tools.h"
+#include "app/viewport_tools.h"
 
 namespace grass::test {
 namespace {

@@ -9,11 +9,11 @@
 #include <string>
 #include <variant>
 
-#include "autosave.h"
-#include "edit_actions.h"
+#include "app/autosave.h"
+#include "app/edit_actions.h"
 #include "maps/map_image.h"
 #include "physics/wind.h"
-#include "panels.h"
+#include "app/panels.h"
 #include "support/scratch_folder.h"
 #include "support/test_fonts.h"
 #include "support/test_paths.h"
@@ -162,6 +162,21 @@ TEST(EditorPanels, QuitWithUnsavedChangesAsksFirst) {
     editor.click("Quit");
     editor.click("Quit without saving");
     EXPECT_TRUE(editor.state.quitRequested);
+}
+
+// Issue 22: an export reads what already lies in its folder; whatever happens there, the
+// unsaved work is in the autosave before the export starts.
+TEST(EditorPanels, UnsavedWorkIsAutosavedBeforeAnExport) {
+    const ScratchFolder folder("editor-export-autosave");
+    EditorDriver editor(folder.path());
+    ASSERT_TRUE(editor.state.dirty);
+    ASSERT_FALSE(fs::exists(editor::autosavePath(editor.state.loaded)));
+    editor.state.exportDir = "exported";
+    editor::startExport(editor.state);
+    EXPECT_TRUE(fs::exists(editor::autosavePath(editor.state.loaded)));
+    ASSERT_TRUE(editor.state.exportJob);
+    editor.state.exportJob.reset();  // waits for the worker
+    EXPECT_TRUE(fs::exists(folder.path() / "exported" / "grass.gltf"));
 }
 
 // Issue 23: a collider on a keyed path stands where the path says; before, typing its position

@@ -11,7 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "gl_context_fixture.h"
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 #include "scene/scene_physics.h"
 #include "support/test_paths.h"
 #include "util/image_file.h"

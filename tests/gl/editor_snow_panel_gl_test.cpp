@@ -8,8 +8,8 @@
 #include <string>
 #include <variant>
 
-#include "edit_actions.h"
-#include "panels.h"
+#include "app/edit_actions.h"
+#include "app/panels.h"
 #include "support/scratch_folder.h"
 #include "support/test_fonts.h"
 #include "support/test_paths.h"

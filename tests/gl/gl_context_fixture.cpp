@@ -3,7 +3,7 @@
 #include <fstream>
 #include <string>
 
-#include "debug_output.h"
+#include "gl/debug_output.h"
 
 namespace grass::test {
 

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "headless_context.h"
+#include "gl/headless_context.h"
 
 namespace grass::test {
 

@@ -2,15 +2,15 @@
 // do not count twice, and a whole GPU physics run gives back all it made (what grass soak checks).
 #include <gtest/gtest.h>
 
-#include "buffer.h"
-#include "framebuffer.h"
+#include "gl/buffer.h"
+#include "gl/framebuffer.h"
 #include "gl_context_fixture.h"
-#include "gl_object_count.h"
-#include "program.h"
+#include "gl/gl_object_count.h"
+#include "gl/program.h"
 #include "scene/scene_physics.h"
-#include "scene_physics_gpu.h"
+#include "render/scene_physics_gpu.h"
 #include "support/test_paths.h"
-#include "timer_query.h"
+#include "gl/timer_query.h"
 
 namespace grass::test {
 namespace {

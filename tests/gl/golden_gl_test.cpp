@@ -22,7 +22,7 @@
 #include <string>
 
 #include "gl_context_fixture.h"
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 #include "support/image_compare.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"

@@ -16,7 +16,7 @@
 
 #include "gl_context_fixture.h"
 #include "maps/map_image.h"
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 #include "support/image_compare.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"

@@ -10,7 +10,7 @@
 
 #include "blade/blade.h"
 #include "gl_context_fixture.h"
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 #include "scatter/patches.h"
 #include "support/image_compare.h"
 #include "support/plane_project.h"

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "framebuffer.h"
+#include "gl/framebuffer.h"
 #include "gl_context_fixture.h"
-#include "physics_gpu.h"
+#include "render/physics_gpu.h"
 #include "scene/scene.h"
-#include "scene_renderer.h"
+#include "render/scene_renderer.h"
 #include "support/plane_project.h"
 
 namespace grass::test {

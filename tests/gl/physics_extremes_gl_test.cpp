@@ -12,10 +12,10 @@
 #include <optional>
 #include <string>
 
-#include "buffer.h"
+#include "gl/buffer.h"
 #include "gl_context_fixture.h"
 #include "physics/physics.h"
-#include "physics_gpu.h"
+#include "render/physics_gpu.h"
 #include "support/physics_cases.h"
 
 namespace grass::test {

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstring>
 
-#include "buffer.h"
+#include "gl/buffer.h"
 #include "gl_context_fixture.h"
 #include "mesh/procedural.h"
 #include "physics/physics.h"
-#include "physics_gpu.h"
+#include "render/physics_gpu.h"
 #include "scatter/scatter.h"
 
 namespace grass::test {

@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "gl_context_fixture.h"
-#include "program.h"
+#include "gl/program.h"
 #include "support/test_paths.h"
 
 namespace grass::test {

@@ -4,11 +4,11 @@
 // for the blades and for the stem sets.
 #include <gtest/gtest.h>
 
-#include "framebuffer.h"
+#include "gl/framebuffer.h"
 #include "gl_context_fixture.h"
 #include "maps/brush.h"
 #include "maps/texel_surface.h"
-#include "scene_renderer.h"
+#include "render/scene_renderer.h"
 #include "support/image_compare.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"

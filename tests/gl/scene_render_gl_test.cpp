@@ -6,7 +6,7 @@
 #include <cstring>
 
 #include "gl_context_fixture.h"
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 #include "support/test_paths.h"
 
 namespace grass::test {

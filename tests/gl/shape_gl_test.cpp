@@ -8,7 +8,7 @@
 #include <cstdlib>
 
 #include "gl_context_fixture.h"
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"
 

@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "gl_context_fixture.h"
-#include "mesh_gpu.h"
-#include "offscreen_render.h"
+#include "render/mesh_gpu.h"
+#include "render/offscreen_render.h"
 #include "scene/scene.h"
-#include "snow_pass.h"
+#include "render/snow_pass.h"
 #include "support/plane_project.h"
 
 namespace grass::test {

@@ -8,10 +8,10 @@
 #include <memory>
 #include <vector>
 
-#include "framebuffer.h"
+#include "gl/framebuffer.h"
 #include "gl_context_fixture.h"
 #include "scene/scene.h"
-#include "scene_renderer.h"
+#include "render/scene_renderer.h"
 #include "snow/snow.h"
 #include "support/plane_project.h"
 

@@ -25,7 +25,7 @@
 
 #include "gl_context_fixture.h"
 #include "mesh/procedural.h"
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 #include "support/golden_file.h"
 #include "support/plane_project.h"
 

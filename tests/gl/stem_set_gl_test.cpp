@@ -1,7 +1,7 @@
 // Kim & Cho stem sets drawn by instancing (SPEC §9): the vertex shader's geometry is the CPU
 // reference's (core::stemSetVertices placed by render::stemSetWorldPosition), a field of sets
 // draws grass with healthy sets greener than poor ones, and more levels draw taller sets.
-#include "stem_set_gpu.h"
+#include "render/stem_set_gpu.h"
 
 #include <gtest/gtest.h>
 
@@ -16,10 +16,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "framebuffer.h"
+#include "gl/framebuffer.h"
 #include "gl_context_fixture.h"
 #include "project/project.h"
-#include "scene_renderer.h"
+#include "render/scene_renderer.h"
 
 namespace grass::test {
 namespace {

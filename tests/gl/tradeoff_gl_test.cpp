@@ -10,9 +10,9 @@
 #include "gl_context_fixture.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"
-#include "tradeoff_plot.h"
-#include "tradeoff_report.h"
-#include "tradeoff_sweep.h"
+#include "tools/tradeoff_plot.h"
+#include "tools/tradeoff_report.h"
+#include "tools/tradeoff_sweep.h"
 
 namespace grass::test {
 namespace {

@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 
 #include "gl_context_fixture.h"
-#include "offscreen_render.h"
+#include "render/offscreen_render.h"
 #include "scene/turntable.h"
 #include "support/test_paths.h"
-#include "turntable_render.h"
+#include "render/turntable_render.h"
 
 namespace grass::test {
 namespace {

@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "framebuffer.h"
+#include "gl/framebuffer.h"
 #include "gl_context_fixture.h"
 #include "support/golden_file.h"
 #include "support/image_compare.h"
@@ -24,7 +24,7 @@
 #include "ui/tessellator.h"
 #include "ui/text_edit.h"
 #include "ui/ui.h"
-#include "ui_renderer.h"
+#include "gl/ui_renderer.h"
 #include "util/image_file.h"
 
 namespace grass::test {

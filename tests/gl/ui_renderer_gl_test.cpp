@@ -24,13 +24,13 @@
 #include <cstdlib>
 #include <string>
 
-#include "framebuffer.h"
+#include "gl/framebuffer.h"
 #include "gl_context_fixture.h"
 #include "support/image_compare.h"
 #include "support/test_fonts.h"
 #include "support/test_paths.h"
 #include "ui/tessellator.h"
-#include "ui_renderer.h"
+#include "gl/ui_renderer.h"
 #include "util/image_file.h"
 
 namespace grass::test {

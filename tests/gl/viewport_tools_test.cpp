@@ -9,10 +9,10 @@
 #include <cmath>
 #include <vector>
 
-#include "edit_actions.h"
-#include "panels.h"
+#include "app/edit_actions.h"
+#include "app/panels.h"
 #include "support/plane_project.h"
-#include "viewport_tools.h"
+#include "app/viewport_tools.h"
 
 namespace grass::test {
 namespace {

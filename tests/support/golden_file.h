@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "framebuffer.h"
+#include "gl/framebuffer.h"
 #include "support/image_compare.h"
 #include "support/test_paths.h"
 #include "util/image_file.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "tradeoff_bench.h"
+#include "tools/tradeoff_bench.h"
 
 namespace grass::render::tradeoff {
 

@@ -1,8 +1,8 @@
-#include "tradeoff_plot.h"
+#include "tools/tradeoff_plot.h"
 
 #include <cstdlib>
 
-#include "tradeoff_report.h"
+#include "tools/tradeoff_report.h"
 #include "util/atomic_file.h"
 #include "util/printable_text.h"
 

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tradeoff_sweep.h"
+#include "tools/tradeoff_sweep.h"
 
 namespace grass::render {
 

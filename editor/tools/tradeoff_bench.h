@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "framebuffer.h"
+#include "gl/framebuffer.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 #include "scene/scene_physics.h"
-#include "scene_renderer.h"
-#include "tradeoff_sweep.h"
+#include "render/scene_renderer.h"
+#include "tools/tradeoff_sweep.h"
 #include "util/result.h"
 
 namespace grass::render::tradeoff {

@@ -1,4 +1,4 @@
-#include "tradeoff_bench.h"
+#include "tools/tradeoff_bench.h"
 
 #include <algorithm>
 #include <cmath>

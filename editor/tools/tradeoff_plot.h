@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "tradeoff_sweep.h"
+#include "tools/tradeoff_sweep.h"
 #include "util/result.h"
 
 namespace grass::render {

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <tuple>
 
-#include "scene_physics_gpu.h"
-#include "timer_query.h"
-#include "tradeoff_bench.h"
+#include "render/scene_physics_gpu.h"
+#include "gl/timer_query.h"
+#include "tools/tradeoff_bench.h"
 
 namespace grass::render::tradeoff {
 

@@ -1,14 +1,14 @@
-#include "tradeoff_sweep.h"
+#include "tools/tradeoff_sweep.h"
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
-#include "headless_context.h"
-#include "offscreen_render.h"
+#include "gl/headless_context.h"
+#include "render/offscreen_render.h"
 #include "physics/step_count.h"
-#include "scene_physics_gpu.h"
-#include "tradeoff_bench.h"
+#include "render/scene_physics_gpu.h"
+#include "tools/tradeoff_bench.h"
 
 namespace grass::render {
 

@@ -1,4 +1,4 @@
-#include "tradeoff_report.h"
+#include "tools/tradeoff_report.h"
 
 #include <algorithm>
 #include <cstdio>
