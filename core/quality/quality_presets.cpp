@@ -142,7 +142,7 @@ const std::vector<MeasuredKnob>& builtInMeasurements() {
     static const std::vector<MeasuredKnob> knobs = [] {
         std::vector<MeasuredKnob> all;
         for (const MeasuredDocument& document : measuredTradeoffDocuments()) {
-            // The documents are part of the build; tests/core/quality_presets_test.cpp parses
+            // The documents are part of the build; tests/core/quality/quality_presets_test.cpp parses
             // each one, so a malformed file fails there rather than vanishing here.
             auto parsed = parseTradeoffJson(document.text, std::string(document.name));
             if (!parsed)

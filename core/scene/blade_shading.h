@@ -79,7 +79,7 @@ struct BladeShadingParams {
 // Neighbours in other cells (σ/2 wide) are summed per cluster (the cell's blades with up within
 // 15° of each other) at its centroid, which keeps 1 M blades at 2500/m² near 2 s of CPU time;
 // against the exact sums the AO errs by < 0.003 and the normal by < 1°
-// (tests/core/blade_shading_test.cpp measures both).
+// (tests/core/scene/blade_shading_test.cpp measures both).
 // water/age: age = uniform [0, 1) from Rng(seed, blade index), water = mix(waterRange.y,
 // waterRange.x, age).
 // Deterministic for a given seed and identical for any threadCount (0: hardware concurrency).
@@ -94,7 +94,7 @@ Result<std::vector<BladeShading>> bakeBladeShading(const std::vector<Blade>& bla
 // the live blades within 3σ of it; other entries are left alone. Slots inside that are padding
 // (a blade the map removed) get BladeShading{}. The grid is built from the neighbourhood only, so
 // its cells and clusters differ from a full bake's: results agree within the clustering error of
-// the header comment (tests/core/blade_shading_test.cpp compares them), not bit for bit.
+// the header comment (tests/core/scene/blade_shading_test.cpp compares them), not bit for bit.
 // Returns the number of blades re-baked.
 Result<std::size_t> rebakeBladeShading(const std::vector<Blade>& blades,
                                        const BladeShadingParams& params, std::uint64_t seed,

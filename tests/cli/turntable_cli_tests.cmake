@@ -3,7 +3,7 @@
 #
 # The tiny project (tests/data/projects/tiny) renders 64 × 48 views without MSAA: a turn of 4
 # takes well under a second on llvmpipe. Its contact sheet is one row of 4 full-size cells with
-# 2 px borders: (4·64 + 5·2) × (48 + 2·2) = 266 × 52 (tests/core/contact_sheet_test.cpp).
+# 2 px borders: (4·64 + 5·2) × (48 + 2·2) = 266 × 52 (tests/core/util/contact_sheet_test.cpp).
 
 set(TURN_TMP ${GRASS_CLI_TMP}/turntable)
 set(TURN_OUT ${TURN_TMP}/tiny.png)

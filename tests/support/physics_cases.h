@@ -1,6 +1,6 @@
 // Physics test cases shared by both executions of the one physics model (STYLE.md §1): the
 // extremes sweep of SPEC §3 / issue 4, a set of degenerate blades, and the invariants every step
-// must keep. tests/core/physics_test.cpp runs them through core::stepBlade,
+// must keep. tests/core/physics/physics_test.cpp runs them through core::stepBlade,
 // tests/gl/physics_extremes_gl_test.cpp through shaders/physics.comp. World space, metres, seconds.
 #pragma once
 
@@ -162,7 +162,7 @@ inline float relativeLengthError(const core::Blade& b, float h) {
 }
 
 // Degenerate input for the repair rule of core::repairBlade (docs/physics.md). Blades 0–4 are
-// the ones tests/core/physics_test.cpp names by index; checkBlades reports blade 2 first.
+// the ones tests/core/physics/physics_test.cpp names by index; checkBlades reports blade 2 first.
 inline std::vector<core::Blade> degenerateBlades() {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
