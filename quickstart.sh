@@ -75,12 +75,13 @@ if cmake -S tests/fuzz -B build-fuzz -G Ninja -DCMAKE_C_COMPILER=clang \
     -DCMAKE_CXX_COMPILER=clang++ >/dev/null && cmake --build build-fuzz -j "$jobs"; then
   tests/fuzz/run_fuzz.sh -j "$jobs" build-fuzz "$fuzz_seconds" || status=1
   # The same build holds the unit tests of core and ui (no GL) under these sanitizers; the whole
-  # suite, GL and command line included, runs under them in .ci/sanitize.
+  # suite, GL and command line included, runs under them in .ci/sanitize. Bounded, so that a
+  # hang fails the run in 20 minutes instead of holding CI to its limit (they take about 2).
   echo "== the unit tests under AddressSanitizer, LeakSanitizer and UBSan (build-fuzz/)"
   mkdir -p build-fuzz/test-tmp
   GRASS_TEST_TMP="$PWD/build-fuzz/test-tmp" UBSAN_OPTIONS=print_stacktrace=1 \
     LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0" \
-    build-fuzz/bin/sanitized_unit_tests --gtest_brief=1 || status=1
+    timeout -k 10 1200 build-fuzz/bin/sanitized_unit_tests --gtest_brief=1 || status=1
 else
   echo "fuzz and sanitizer build failed" >&2
   status=1
