@@ -188,7 +188,11 @@ std::string exportFileStem(const std::string& layerName) {
     return fileSafeName(layerName);
 }
 
-Result<void> refuseExportOverInputs(const LoadedProject& loaded, const ExportOptions& options) {
+namespace {
+
+// The entry points (<layer>.gltf, manifest.json) checked against the project's inputs.
+Result<void> refuseEntriesOverInputs(const LoadedProject& loaded, const ExportOptions& options,
+                                     const std::vector<ProjectInput>& inputs) {
     std::vector<std::string> layerNames;
     for (const GrassLayer& layer : loaded.project.layers)
         layerNames.push_back(layer.name);
@@ -198,7 +202,6 @@ Result<void> refuseExportOverInputs(const LoadedProject& loaded, const ExportOpt
     else
         for (const std::string& stem : layerStems(layerNames))
             entries.push_back(stem + ".gltf");
-    const std::vector<ProjectInput> inputs = projectInputFiles(loaded);
     for (const std::string& entry : entries)
         if (auto refused = refuseOverwritingInput(inputs, options.outDir / entry, "outDir");
             !refused)
@@ -206,9 +209,17 @@ Result<void> refuseExportOverInputs(const LoadedProject& loaded, const ExportOpt
     return {};
 }
 
+}  // namespace
+
+Result<void> refuseExportOverInputs(const LoadedProject& loaded, const ExportOptions& options) {
+    return refuseEntriesOverInputs(loaded, options, projectInputFiles(loaded));
+}
+
 Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& scene,
                                    const ExportOptions& options, const ExportProgress& progress) {
-    if (auto refused = refuseExportOverInputs(loaded, options); !refused)
+    // Listed once (it reads a glTF mesh's JSON): for the entry points now, for every staged file.
+    std::vector<ProjectInput> inputs = projectInputFiles(loaded);
+    if (auto refused = refuseEntriesOverInputs(loaded, options, inputs); !refused)
         return refused.error();
     if (options.lod < 0 || options.lod > MAX_EXPORT_LOD)
         return makeError("lod", "must be from 0 to " + std::to_string(MAX_EXPORT_LOD) + " (got " +
@@ -225,7 +236,7 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
     ExportReport report;
     Result<void> staging = [&]() -> Result<void> {
         StagedFiles staged(options.outDir);
-        staged.protect(projectInputFiles(loaded));
+        staged.protect(std::move(inputs));
         std::vector<std::string> layerNames;
         for (const LayerField& layer : scene.layers)
             layerNames.push_back(layer.name);
