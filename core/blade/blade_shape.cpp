@@ -5,9 +5,7 @@
 namespace grass::core {
 
 const std::array<std::string_view, BLADE_SHAPE_COUNT>& bladeShapeNames() {
-    static constexpr std::array<std::string_view, BLADE_SHAPE_COUNT> NAMES{
-        "quad", "triangle", "quadratic", "triangle-tip", "dandelion"};
-    return NAMES;
+    return BLADE_SHAPE_NAMES;
 }
 
 std::string_view bladeShapeName(BladeShape shape) {

@@ -14,8 +14,9 @@ enum class BladeShape { Quad = 0, Triangle = 1, Quadratic = 2, TriangleTip = 3, 
 
 inline constexpr std::size_t BLADE_SHAPE_COUNT = 5;
 
-// The names projects and the CLI use, in enumerator order: "quad", "triangle", "quadratic",
-// "triangle-tip", "dandelion".
+// The names projects and the CLI use, in enumerator order.
+inline constexpr std::array<std::string_view, BLADE_SHAPE_COUNT> BLADE_SHAPE_NAMES{
+    "quad", "triangle", "quadratic", "triangle-tip", "dandelion"};
 const std::array<std::string_view, BLADE_SHAPE_COUNT>& bladeShapeNames();
 std::string_view bladeShapeName(BladeShape shape);
 // Error message: `unknown blade shape "x" (valid: "quad", ...)`, no path (the caller adds it).

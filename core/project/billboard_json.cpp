@@ -1,15 +1,10 @@
-// The "billboards" part of project.json (SPEC §8) and the technique / animation names. Keys are
-// spelled here only; docs/project-format.md lists them in the order they are written.
+// The "billboards" section of project.json (SPEC §8) and the technique / animation names.
 #include "project/project_json_parts.h"
 
 namespace grass::core {
 
 namespace {
 
-constexpr std::array<std::string_view, 10> BILLBOARD_KEYS{
-    "density",        "height",         "width_to_height", "cluster_size", "texture",
-    "animation",      "wind_direction", "wind_amplitude",  "wind_frequency", "cross_fade"};
-constexpr std::string_view XYZ = "[x, y, z]";
 // Beyond 1000 objects per m² (a few mm apart) a typo would stall the scene build.
 constexpr json::NumberRule DENSITY_RULE{0.0, 1000.0};
 constexpr json::NumberRule SIZE_RULE{0.0, 1000.0, true, false};
@@ -42,52 +37,77 @@ Result<BillboardWindMode> parseBillboardAnimation(std::string_view name) {
     return parseName<BillboardWindMode>(name, json::ANIMATION_NAMES, "billboard animation");
 }
 
-namespace json {
+namespace {
 
-void readBillboards(Reader& reader, const Json& node, BillboardDesc& billboards) {
-    Object object(reader, node, "/billboards", BILLBOARD_KEYS);
-    StarBillboardParams& placement = billboards.placement;
-    object.readFloat("density", DENSITY_RULE, placement.density);
-    object.readRange("height", SIZE_RULE, placement.heightRangeM.x, placement.heightRangeM.y);
-    object.readFloat("width_to_height", NumberRule{0.0, 100.0, true, false},
-                     placement.widthToHeight);
-    object.readFloat("cluster_size", SIZE_RULE, placement.clusterSizeM);
-    object.readString("texture", true, billboards.texture);
-    if (!billboards.texture.empty())
-        checkAssetPath(reader, "/billboards/texture", billboards.texture);
-    if (const Json* animation = object.find("animation")) {
-        std::size_t index = 0;
-        if (reader.readEnum(*animation, "/billboards/animation", ANIMATION_NAMES, index))
-            billboards.animation = static_cast<BillboardWindMode>(index);
-    }
+using json::Json;
+using json::NumberRule;
+using settings::field;
+
+// The file keeps the sway direction as [x, y, z] (y ignored); the scene as an x-z vector.
+void readWindDirection(json::Reader& reader, json::Object& object, std::string_view key, BillboardDesc& billboards) {
     glm::vec3 direction(billboards.wind.directionXZ.x, 0.0f, billboards.wind.directionXZ.y);
-    object.readVec3("wind_direction", ANY_NUMBER, XYZ, direction);
+    object.readVec3(key, json::ANY_NUMBER, "[x, y, z]", direction);
     if (reader.ok() && direction.x == 0.0f && direction.z == 0.0f)
-        reader.fail("/billboards/wind_direction",
+        reader.fail(object.pointerTo(key),
                     "needs a horizontal part (x or z not 0): billboards sway horizontally");
     billboards.wind.directionXZ = {direction.x, direction.z};
-    object.readFloat("wind_amplitude", NumberRule{0.0, 100.0}, billboards.wind.amplitudeM);
-    object.readFloat("wind_frequency", NumberRule{0.0, 100.0}, billboards.wind.frequencyHz);
-    object.readRange("cross_fade", NON_NEGATIVE, billboards.crossFadeM.x,
-                     billboards.crossFadeM.y);
 }
 
-Json billboardsJson(const BillboardDesc& billboards) {
-    const StarBillboardParams& placement = billboards.placement;
-    Json out = Json::object();
-    out["density"] = jsonFloat(placement.density);
-    out["height"] = jsonRange(placement.heightRangeM.x, placement.heightRangeM.y);
-    out["width_to_height"] = jsonFloat(placement.widthToHeight);
-    out["cluster_size"] = jsonFloat(placement.clusterSizeM);
-    out["texture"] = billboards.texture;
-    out["animation"] = std::string(billboardAnimationName(billboards.animation));
-    out["wind_direction"] = jsonVec3(
+Json windDirectionJson(const BillboardDesc& billboards) {
+    return json::jsonVec3(
         glm::vec3(billboards.wind.directionXZ.x, 0.0f, billboards.wind.directionXZ.y));
-    out["wind_amplitude"] = jsonFloat(billboards.wind.amplitudeM);
-    out["wind_frequency"] = jsonFloat(billboards.wind.frequencyHz);
-    out["cross_fade"] = jsonRange(billboards.crossFadeM.x, billboards.crossFadeM.y);
-    return out;
 }
 
-}  // namespace json
+constexpr std::array BILLBOARDS{
+    field<&BillboardDesc::placement, &StarBillboardParams::density>(
+        {.key = "density", .rule = DENSITY_RULE, .unit = "/m²", .help = "objects per m²"}),
+    field<&BillboardDesc::placement, &StarBillboardParams::heightRangeM>(
+        {.key = "height", .rule = SIZE_RULE, .unit = "m"}),
+    field<&BillboardDesc::placement, &StarBillboardParams::widthToHeight>(
+        {.key = "width_to_height",
+         .rule = NumberRule{0.0, 100.0, true, false},
+         .help = "quad width / height"}),
+    field<&BillboardDesc::placement, &StarBillboardParams::clusterSizeM>(
+        {.key = "cluster_size",
+         .rule = SIZE_RULE,
+         .unit = "m",
+         .help = "edge of the grid cells that group objects (the per-cluster animation draws one "
+                 "cluster at a time)"}),
+    field<&BillboardDesc::texture>(
+        {.key = "texture",
+         .kind = settings::Kind::AssetPath,
+         .allowEmpty = true,
+         .help = "an image with an alpha channel (PNG, TIFF, …); empty: generated from the first "
+                 "layer's colours"}),
+    field<&BillboardDesc::animation>(
+        {.key = "animation",
+         .names = json::ANIMATION_NAMES,
+         .allowedText = "`\"per-cluster\"` (CPU offset per cluster, one draw each), "
+                        "`\"per-vertex\"` (by vertex position, one draw) or `\"per-object\"` (by "
+                        "object centre, one draw)"}),
+    settings::custom<BillboardDesc>(
+        {.key = "wind_direction",
+         .typeText = "[x, y, z]",
+         .allowedText = "the way the billboards sway; needs x or z not 0 (y is ignored)"},
+        readWindDirection, windDirectionJson),
+    field<&BillboardDesc::wind, &BillboardWind::amplitudeM>(
+        {.key = "wind_amplitude",
+         .rule = NumberRule{0.0, 100.0},
+         .unit = "m",
+         .help = "largest sway of the upper vertices"}),
+    field<&BillboardDesc::wind, &BillboardWind::frequencyHz>(
+        {.key = "wind_frequency", .rule = NumberRule{0.0, 100.0}, .unit = "Hz"}),
+    field<&BillboardDesc::crossFadeM>(
+        {.key = "cross_fade",
+         .rule = json::NON_NEGATIVE,
+         .unit = "m",
+         .help = "in the hybrid, blades fade out and billboards fade in between these camera "
+                 "distances; blades beyond `far` are culled",
+         .typeText = "[near, far]"}),
+};
+
+}  // namespace
+
+std::span<const settings::Setting<BillboardDesc>> settings::billboards() { return BILLBOARDS; }
+
 }  // namespace grass::core

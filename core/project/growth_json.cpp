@@ -1,52 +1,93 @@
-// The "growth" object of a layer in project.json: Kim & Cho's growth model (SPEC §9). Keys are
-// spelled here only; docs/project-format.md lists them in the order they are written.
+// A layer's "growth" object in project.json: Kim & Cho's growth model (SPEC §9).
 #include <array>
 
 #include "growth/growth_stems.h"
 #include "project/project_json_parts.h"
 
-namespace grass::core::json {
+namespace grass::core {
 
 namespace {
 
-constexpr std::array<std::string_view, 7> GROWTH_KEYS{
-    "enabled",         "soil_curve",      "width_light_curve", "height_light_curve",
-    "levels",          "poor_root_color", "poor_tip_color"};
-constexpr std::string_view RGB = "[r, g, b]";
+using json::Json;
+using settings::field;
+using settings::Kind;
+
+// The curves keep their control values as named members (growth_curves.h); the file as arrays.
+// Control values live in [0, 1] (the curves then stay in [0, 1] too).
+template <std::size_t N>
+struct CurveKey {
+    std::string_view key;
+    std::string_view what;
+    std::array<float GrowthCurves::*, N> members;
+};
+constexpr CurveKey<3> SOIL{"soil_curve",
+                           "[gy0, gy1, gy2]",
+                           {&GrowthCurves::gy0, &GrowthCurves::gy1, &GrowthCurves::gy2}};
+constexpr CurveKey<5> WIDTH{"width_light_curve",
+                            "[wy0, wy1, wy2, wy3, wy4]",
+                            {&GrowthCurves::wy0, &GrowthCurves::wy1, &GrowthCurves::wy2,
+                             &GrowthCurves::wy3, &GrowthCurves::wy4}};
+constexpr CurveKey<5> HEIGHT{"height_light_curve",
+                             "[hy0, hy1, hy2, hy3, hy4]",
+                             {&GrowthCurves::hy0, &GrowthCurves::hy1, &GrowthCurves::hy2,
+                              &GrowthCurves::hy3, &GrowthCurves::hy4}};
+
+template <const auto& Curve>
+void readCurve(json::Reader& /*reader*/, json::Object& object, std::string_view /*key*/,
+               GrowthDesc& growth) {
+    std::array<float, Curve.members.size()> values{};
+    for (std::size_t i = 0; i < values.size(); ++i)
+        values[i] = growth.curves.*Curve.members[i];
+    object.readFloats(Curve.key, json::UNIT_INTERVAL, Curve.what, values);
+    for (std::size_t i = 0; i < values.size(); ++i)
+        growth.curves.*Curve.members[i] = values[i];
+}
+
+template <const auto& Curve>
+Json curveJson(const GrowthDesc& growth) {
+    std::array<float, Curve.members.size()> values{};
+    for (std::size_t i = 0; i < values.size(); ++i)
+        values[i] = growth.curves.*Curve.members[i];
+    return json::jsonFloats(values);
+}
+
+template <const auto& Curve>
+constexpr settings::Setting<GrowthDesc> curve(std::string_view help) {
+    return settings::custom<GrowthDesc>({.key = Curve.key,
+                                         .help = help,
+                                         .typeText = Curve.what,
+                                         .allowedText = "each in [0, 1]"},
+                                        readCurve<Curve>, curveJson<Curve>);
+}
+
+constexpr std::array GROWTH{
+    field<&GrowthDesc::enabled>(
+        {.key = "enabled",
+         .help = "`true`: soil and light set each blade's height, width, lean and colour",
+         .label = "growth model (soil, light)"}),
+    curve<SOIL>("f1(g), growth against soil quality"),
+    curve<WIDTH>("f2(l), width against light"),
+    curve<HEIGHT>("f3(l), height against light"),
+    field<&GrowthDesc::levels>(
+        {.key = "levels",
+         .intMin = 1,
+         .intMax = MAX_STEM_LEVELS,
+         .help = "levels of each stem the `\"growth\"` technique draws"}),
+    field<&GrowthDesc::poorRootColor>(
+        {.key = "poor_root_color",
+         .kind = Kind::Colour,
+         .rule = json::UNIT_INTERVAL,
+         .help = "the root colour in poor conditions (b = 0); `root_color` is the healthy one "
+                 "(b = 1)"}),
+    field<&GrowthDesc::poorTipColor>(
+        {.key = "poor_tip_color",
+         .kind = Kind::Colour,
+         .rule = json::UNIT_INTERVAL,
+         .help = "the tip colour in poor conditions; `tip_color` is the healthy one"}),
+};
 
 }  // namespace
 
-void readGrowth(Reader& reader, const Json& node, const std::string& pointer, GrowthDesc& growth) {
-    Object object(reader, node, pointer, GROWTH_KEYS);
-    object.readBool("enabled", growth.enabled);
-    GrowthCurves& c = growth.curves;
-    // Control values live in [0, 1] (growth_curves.h: the curves then stay in [0, 1] too).
-    std::array<float, 3> soil{c.gy0, c.gy1, c.gy2};
-    std::array<float, 5> width{c.wy0, c.wy1, c.wy2, c.wy3, c.wy4};
-    std::array<float, 5> height{c.hy0, c.hy1, c.hy2, c.hy3, c.hy4};
-    object.readFloats("soil_curve", UNIT_INTERVAL, "[gy0, gy1, gy2]", soil);
-    object.readFloats("width_light_curve", UNIT_INTERVAL, "[wy0, wy1, wy2, wy3, wy4]", width);
-    object.readFloats("height_light_curve", UNIT_INTERVAL, "[hy0, hy1, hy2, hy3, hy4]", height);
-    c = GrowthCurves{soil[0],  soil[1],  soil[2],   width[0],  width[1],
-                     width[2], width[3], width[4],  height[0], height[1],
-                     height[2], height[3], height[4]};
-    object.readInt("levels", 1, MAX_STEM_LEVELS, growth.levels);
-    object.readVec3("poor_root_color", UNIT_INTERVAL, RGB, growth.poorRootColor);
-    object.readVec3("poor_tip_color", UNIT_INTERVAL, RGB, growth.poorTipColor);
-}
+std::span<const settings::Setting<GrowthDesc>> settings::growth() { return GROWTH; }
 
-Json growthJson(const GrowthDesc& growth) {
-    const GrowthCurves& c = growth.curves;
-    Json out = Json::object();
-    out["enabled"] = growth.enabled;
-    out["soil_curve"] = jsonFloats(std::array<float, 3>{c.gy0, c.gy1, c.gy2});
-    out["width_light_curve"] = jsonFloats(std::array<float, 5>{c.wy0, c.wy1, c.wy2, c.wy3, c.wy4});
-    out["height_light_curve"] =
-        jsonFloats(std::array<float, 5>{c.hy0, c.hy1, c.hy2, c.hy3, c.hy4});
-    out["levels"] = growth.levels;
-    out["poor_root_color"] = jsonVec3(growth.poorRootColor);
-    out["poor_tip_color"] = jsonVec3(growth.poorTipColor);
-    return out;
-}
-
-}  // namespace grass::core::json
+}  // namespace grass::core

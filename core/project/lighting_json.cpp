@@ -1,34 +1,18 @@
-// The "lighting" part of project.json: the grass lighting of SPEC §10. Keys are spelled here
-// only; docs/project-format.md lists them in the order they are written.
+// The "sun" and "lighting" sections of project.json: the grass lighting of SPEC §10.
 #include <array>
 
 #include "project/project_json_parts.h"
 #include "scene/blade_shading.h"
 
-namespace grass::core::json {
+namespace grass::core {
 
 namespace {
 
-constexpr std::array<std::string_view, 18> LIGHTING_KEYS{"model",
-                                                         "diffuse_low",
-                                                         "diffuse_mid",
-                                                         "diffuse_high",
-                                                         "terrain_normal_weight",
-                                                         "specular",
-                                                         "specular_fade",
-                                                         "transmission",
-                                                         "transmission_distortion",
-                                                         "transmission_power",
-                                                         "sss",
-                                                         "sss_intensity",
-                                                         "ao_radius",
-                                                         "ao_strength",
-                                                         "ao_floor",
-                                                         "normal_blur_radius",
-                                                         "ao_cell",
-                                                         "water"};
+using json::NumberRule;
+using settings::field;
+using settings::Kind;
+
 constexpr std::array<std::string_view, 2> MODEL_NAMES{"grass", "simple"};
-constexpr std::string_view RGB = "[r, g, b]";
 // Colours multiply the sun: above 4 a typo would wash the frame out.
 constexpr NumberRule COLOR_RULE{0.0, 4.0};
 constexpr NumberRule WEIGHT_RULE{0.0, 10.0};
@@ -36,66 +20,110 @@ constexpr NumberRule WEIGHT_RULE{0.0, 10.0};
 // every blade.
 constexpr NumberRule RADIUS_RULE{0.0, 100.0};
 
+constexpr std::array SUN{
+    field<&SunDesc::direction>(
+        {.key = "direction",
+         .help = "the way the light travels (so y < 0 shines down); not `[0, 0, 0]`; normalised "
+                 "on use"}),
+    field<&SunDesc::color>({.key = "color", .kind = Kind::Colour, .rule = json::UNIT_INTERVAL}),
+    field<&SunDesc::intensity>(
+        {.key = "intensity", .rule = json::NON_NEGATIVE, .help = "multiplies `color`"}),
+};
+
+constexpr std::array LIGHTING{
+    field<&GrassLightingDesc::model>(
+        {.key = "model",
+         .names = MODEL_NAMES,
+         .label = "lighting",
+         .allowedText = "`\"grass\"` (SPEC §10) or `\"simple\"` (wrapped Lambert, for comparison)"}),
+    field<&GrassLightingDesc::diffuseLow>(
+        {.key = "diffuse_low", .kind = Kind::Colour, .rule = COLOR_RULE,
+         .help = "the ramp at N·L = −1"}),
+    field<&GrassLightingDesc::diffuseMid>(
+        {.key = "diffuse_mid", .kind = Kind::Colour, .rule = COLOR_RULE, .help = "at N·L = 0"}),
+    field<&GrassLightingDesc::diffuseHigh>(
+        {.key = "diffuse_high", .kind = Kind::Colour, .rule = COLOR_RULE, .help = "at N·L = 1"}),
+    field<&GrassLightingDesc::terrainNormalWeight>(
+        {.key = "terrain_normal_weight",
+         .rule = json::UNIT_INTERVAL,
+         .help = "how far the diffuse normal leans from the blade normal to the terrain (SSS) "
+                 "normal"}),
+    field<&GrassLightingDesc::specular>(
+        {.key = "specular", .rule = WEIGHT_RULE, .help = "weight of the three GGX lobes"}),
+    field<&GrassLightingDesc::specularFadeM>(
+        {.key = "specular_fade",
+         .rule = json::NON_NEGATIVE,
+         .unit = "m",
+         .help = "specular grows from 0 at near to full at far (weaker near the eye)",
+         .typeText = "[near, far]"}),
+    field<&GrassLightingDesc::transmission>(
+        {.key = "transmission", .rule = WEIGHT_RULE, .help = "light through the blades (I)"}),
+    field<&GrassLightingDesc::transmissionDistortion>(
+        {.key = "transmission_distortion",
+         .rule = json::UNIT_INTERVAL,
+         .help = "k in fakeN = −normalize(mix(N, L, k))"}),
+    field<&GrassLightingDesc::transmissionPower>(
+        {.key = "transmission_power", .rule = NumberRule{0.0, 256.0, true, false}, .help = "e"}),
+    field<&GrassLightingDesc::sss>(
+        {.key = "sss", .rule = WEIGHT_RULE, .help = "weight of the subsurface term"}),
+    field<&GrassLightingDesc::sssIntensity>({.key = "sss_intensity",
+                                             .rule = json::UNIT_INTERVAL,
+                                             .help = "terrain normal → blurred terrain normal"}),
+    field<&GrassLightingDesc::aoRadiusM>(
+        {.key = "ao_radius",
+         .rule = RADIUS_RULE,
+         .unit = "m",
+         .help = "0 or from 0.0001; Gaussian σ of the neighbour-density kernel; 0 turns AO off"}),
+    field<&GrassLightingDesc::aoStrength>(
+        {.key = "ao_strength",
+         .rule = WEIGHT_RULE,
+         .unit = "m²",
+         .help = "one neighbour occludes: AO = floor + (1 − floor)·exp(−density·strength)",
+         .ui = {.decimals = 4, .speed = 0.0005f}}),
+    field<&GrassLightingDesc::aoFloor>(
+        {.key = "ao_floor", .rule = json::UNIT_INTERVAL, .help = "the darkest AO"}),
+    field<&GrassLightingDesc::normalBlurRadiusM>(
+        {.key = "normal_blur_radius",
+         .rule = RADIUS_RULE,
+         .unit = "m",
+         .help = "0 or from 0.0001; Gaussian σ of the terrain-normal blur; 0 keeps each blade's "
+                 "own normal"}),
+    field<&GrassLightingDesc::aoCellSigmas>(
+        {.key = "ao_cell",
+         .rule = NumberRule{0.0, 4.0},
+         .help = "0 or from 0.05 kernel σ: the bake sums neighbours in other cells of this side "
+                 "per cluster (faster, approximate); 0 sums every neighbour exactly (slow in "
+                 "dense fields); the `ao_kernel` knob of [tradeoff](tradeoff.md)"}),
+    field<&GrassLightingDesc::water>(
+        {.key = "water",
+         .rule = json::UNIT_INTERVAL,
+         .help = "a blade's water follows its random age; it is the mix weight of specular + "
+                 "transmission + SSS against diffuse, and the roughness of the specular lobes",
+         .typeText = "[oldest, youngest]"}),
+};
+
 }  // namespace
 
-void readLighting(Reader& reader, const Json& node, GrassLightingDesc& lighting) {
-    Object object(reader, node, "/lighting", LIGHTING_KEYS);
-    if (const Json* model = object.find("model")) {
-        std::size_t index = 0;
-        if (reader.readEnum(*model, "/lighting/model", MODEL_NAMES, index))
-            lighting.model = static_cast<LightingModel>(index);
-    }
-    object.readVec3("diffuse_low", COLOR_RULE, RGB, lighting.diffuseLow);
-    object.readVec3("diffuse_mid", COLOR_RULE, RGB, lighting.diffuseMid);
-    object.readVec3("diffuse_high", COLOR_RULE, RGB, lighting.diffuseHigh);
-    object.readFloat("terrain_normal_weight", UNIT_INTERVAL, lighting.terrainNormalWeight);
-    object.readFloat("specular", WEIGHT_RULE, lighting.specular);
-    object.readRange("specular_fade", NON_NEGATIVE, lighting.specularFadeM.x,
-                     lighting.specularFadeM.y);
-    object.readFloat("transmission", WEIGHT_RULE, lighting.transmission);
-    object.readFloat("transmission_distortion", UNIT_INTERVAL, lighting.transmissionDistortion);
-    object.readFloat("transmission_power", NumberRule{0.0, 256.0, true, false},
-                     lighting.transmissionPower);
-    object.readFloat("sss", WEIGHT_RULE, lighting.sss);
-    object.readFloat("sss_intensity", UNIT_INTERVAL, lighting.sssIntensity);
-    object.readFloat("ao_radius", RADIUS_RULE, lighting.aoRadiusM);
-    object.readFloat("ao_strength", WEIGHT_RULE, lighting.aoStrength);
-    object.readFloat("ao_floor", UNIT_INTERVAL, lighting.aoFloor);
-    object.readFloat("normal_blur_radius", RADIUS_RULE, lighting.normalBlurRadiusM);
-    object.readFloat("ao_cell", NumberRule{0.0, 4.0}, lighting.aoCellSigmas);
+std::span<const settings::Setting<SunDesc>> settings::sun() { return SUN; }
+std::span<const settings::Setting<GrassLightingDesc>> settings::lighting() { return LIGHTING; }
+
+void json::checkSun(Reader& reader, const Object& object, const SunDesc& sun) {
+    if (sun.direction == glm::vec3(0.0f))
+        reader.fail(object.pointerTo("direction"),
+                    "must not be [0, 0, 0] (it is the way the light travels)");
+}
+
+void json::checkLighting(Reader& reader, const Object& object,
+                         const GrassLightingDesc& lighting) {
     // Below a tenth of a millimetre a kernel covers no neighbour: 0 turns the term off instead.
     for (const auto& [key, radius] : {std::pair{"ao_radius", lighting.aoRadiusM},
                                       {"normal_blur_radius", lighting.normalBlurRadiusM}})
         if (radius > 0.0f && radius < MIN_KERNEL_RADIUS_M)
-            reader.fail(std::string("/lighting/") + key,
-                        "must be 0 (off) or from 0.0001 to 100 metres");
+            reader.fail(object.pointerTo(key), "must be 0 (off) or from 0.0001 to 100 metres");
     // Between 0 (exact) and the bake's smallest cells the value would be slow and mean nothing.
     if (lighting.aoCellSigmas > 0.0f && lighting.aoCellSigmas < 0.05f)
-        reader.fail("/lighting/ao_cell", "must be 0 (exact sums) or in [0.05, 4] kernel sigmas");
-    object.readRange("water", UNIT_INTERVAL, lighting.water.x, lighting.water.y);
+        reader.fail(object.pointerTo("ao_cell"),
+                    "must be 0 (exact sums) or in [0.05, 4] kernel sigmas");
 }
 
-Json lightingJson(const GrassLightingDesc& lighting) {
-    Json out = Json::object();
-    out["model"] = std::string(MODEL_NAMES[static_cast<std::size_t>(lighting.model)]);
-    out["diffuse_low"] = jsonVec3(lighting.diffuseLow);
-    out["diffuse_mid"] = jsonVec3(lighting.diffuseMid);
-    out["diffuse_high"] = jsonVec3(lighting.diffuseHigh);
-    out["terrain_normal_weight"] = jsonFloat(lighting.terrainNormalWeight);
-    out["specular"] = jsonFloat(lighting.specular);
-    out["specular_fade"] = jsonRange(lighting.specularFadeM.x, lighting.specularFadeM.y);
-    out["transmission"] = jsonFloat(lighting.transmission);
-    out["transmission_distortion"] = jsonFloat(lighting.transmissionDistortion);
-    out["transmission_power"] = jsonFloat(lighting.transmissionPower);
-    out["sss"] = jsonFloat(lighting.sss);
-    out["sss_intensity"] = jsonFloat(lighting.sssIntensity);
-    out["ao_radius"] = jsonFloat(lighting.aoRadiusM);
-    out["ao_strength"] = jsonFloat(lighting.aoStrength);
-    out["ao_floor"] = jsonFloat(lighting.aoFloor);
-    out["normal_blur_radius"] = jsonFloat(lighting.normalBlurRadiusM);
-    out["ao_cell"] = jsonFloat(lighting.aoCellSigmas);
-    out["water"] = jsonRange(lighting.water.x, lighting.water.y);
-    return out;
-}
-
-}  // namespace grass::core::json
+}  // namespace grass::core

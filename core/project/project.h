@@ -24,7 +24,9 @@
 
 namespace grass::core {
 
-inline constexpr int PROJECT_FORMAT_VERSION = 1;
+// Raised with every change to what project.json holds or accepts; older files are raised to it
+// as they are read (project_migration.h). 2: the limits of issue 22 (steps, blade sizes, lists).
+inline constexpr int PROJECT_FORMAT_VERSION = 2;
 
 // Lists a project may hold (docs/project-format.md "Limits"): every frame draws each layer and
 // every physics step visits each wind source and collider, so beyond these nothing runs at an

@@ -1,46 +1,51 @@
-// Internal to core/project/: the parts of the project.json schema that live in their own files
-// (physics_json.cpp: physics, wind, colliders), called by project_json.cpp's reader and writer.
+// Internal to core/project/: what the *_json.cpp files of project.json's sections share beyond
+// their tables (project/settings.h): the checks across the keys of a section, run once its keys
+// are read, and the keyed paths of wind sources and colliders.
 #pragma once
 
 #include <array>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "project/json_reader.h"
 #include "project/project.h"
+#include "project/setting_io.h"
+#include "project/settings.h"
 
 namespace grass::core::json {
 
-// Fails `pointer` when `path` is not a well-formed relative asset path (resolveAssetPath's rules).
-void checkAssetPath(Reader& reader, const std::string& pointer, const std::string& path);
+void checkCamera(Reader& reader, const Object& object, const CameraDesc& camera);
+void checkSun(Reader& reader, const Object& object, const SunDesc& sun);
+void checkLighting(Reader& reader, const Object& object, const GrassLightingDesc& lighting);
+void checkRender(Reader& reader, const Object& object, const RenderSettings& render);
+void checkWind(Reader& reader, const Object& object, const WindDesc& wind);
+void checkSnow(Reader& reader, const Object& object, const SnowParams& snow);
 
-void readPhysics(Reader& reader, const Json& node, PhysicsParams& physics);
-void readWind(Reader& reader, const Json& node, const std::string& pointer, WindDesc& wind);
-void readCollider(Reader& reader, const Json& node, const std::string& pointer,
-                  ColliderDesc& collider);
+// The keyed path a wind source or a collider follows (physics_json.cpp).
+void readPath(Reader& reader, const Json& node, const std::string& pointer,
+              std::vector<PathKey>& path);
+Json pathJson(const std::vector<PathKey>& path);
 
-// billboard_json.cpp: "billboards" (SPEC §8) and the names of techniques and animation modes.
+// The setting of a keyed path the member chain reaches.
+template <auto... Members>
+constexpr settings::Setting<settings::detail::Owner<Members...>> pathSetting(
+    settings::Setting<settings::detail::Owner<Members...>> row) {
+    using S = settings::detail::Owner<Members...>;
+    row.typeText = "array";
+    return settings::custom<S>(
+        row,
+        [](Reader& reader, Object& object, std::string_view key, S& value) {
+            if (const Json* node = object.find(key))
+                readPath(reader, *node, object.pointerTo(key), (value .* ... .* Members));
+        },
+        [](const S& value) -> Json { return pathJson((value .* ... .* Members)); });
+}
+
+// billboard_json.cpp: the names of techniques and billboard animation modes.
 inline constexpr std::array<std::string_view, 4> TECHNIQUE_NAMES{"blades", "billboards",
                                                                  "hybrid", "growth"};
 inline constexpr std::array<std::string_view, 3> ANIMATION_NAMES{"per-cluster", "per-vertex",
                                                                  "per-object"};
-void readBillboards(Reader& reader, const Json& node, BillboardDesc& billboards);
-Json billboardsJson(const BillboardDesc& billboards);
-
-// growth_json.cpp: a layer's "growth" (SPEC §9).
-void readGrowth(Reader& reader, const Json& node, const std::string& pointer, GrowthDesc& growth);
-Json growthJson(const GrowthDesc& growth);
-
-// lighting_json.cpp: "lighting" (SPEC §10).
-void readLighting(Reader& reader, const Json& node, GrassLightingDesc& lighting);
-Json lightingJson(const GrassLightingDesc& lighting);
-
-// snow_json.cpp: "snow" (SPEC §11).
-void readSnow(Reader& reader, const Json& node, SnowParams& snow);
-Json snowJson(const SnowParams& snow);
-
-Json physicsJson(const PhysicsParams& physics);
-Json windJson(const WindDesc& wind);
-Json colliderJson(const ColliderDesc& collider);
 
 }  // namespace grass::core::json

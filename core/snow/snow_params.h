@@ -4,6 +4,7 @@
 // and mirror the fields in this order; the `static_assert`s pin the layout.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -13,6 +14,8 @@ namespace grass::core {
 
 inline constexpr int SNOW_MAX_OCTAVES = 8;
 inline constexpr int SNOW_MAX_SAMPLES = 32;
+// The sides of the depth map a project may ask for.
+inline constexpr std::array<int, 3> SNOW_MAP_RESOLUTIONS{512, 1024, 2048};
 
 struct SnowParams {
     // Where snow falls TO (normalized on use, like the sun direction); −fallDirection is "up" as

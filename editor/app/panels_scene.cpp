@@ -6,6 +6,8 @@
 
 #include "edit/timeline.h"
 #include "app/panels.h"
+#include "app/setting_widget.h"
+#include "project/settings.h"
 #include "physics/wind.h"
 #include "ui/color_edit.h"
 #include "ui/curve_edit.h"
@@ -27,29 +29,16 @@ void regrow(EditorState& s, const ui::Response& r) {
         s.dirty = s.rebuildPending = true;
 }
 
-// [min] [max] label on one row; min stays ≤ max.
-void rangeRow(ui::Ui& ui, EditorState& s, const char* label, float& min, float& max, float speed,
-              float lo, float hi, int decimals) {
-    ui.withId(label, [&](ui::Ui& inner) {
-        inner.horizontal([&](ui::Ui& row) {
-            row.pushId("min");
-            regrow(s, row.dragValue("", min, speed, lo, max, decimals));
-            row.popId();
-            regrow(s, row.dragValue(label, max, speed, min, hi, decimals));
-        });
-    });
+// The row of `key` in `table` for `value`; a change re-grows the scene.
+template <class S>
+void regrowRow(ui::Ui& ui, EditorState& s, std::span<const core::settings::Setting<S>> table,
+               std::string_view key, S& value) {
+    regrow(s, settingWidget(ui, table, key, value));
 }
 
 void vec3Row(ui::Ui& ui, EditorState& s, const char* label, glm::vec3& v, float speed) {
-    ui.withId(label, [&](ui::Ui& inner) {
-        inner.horizontal([&](ui::Ui& row) {
-            for (int c = 0; c < 3; ++c) {
-                row.pushId(std::uint64_t(c));
-                regrow(s, row.dragValue(c == 2 ? label : "", v[c], speed, -1e4f, 1e4f, 2));
-                row.popId();
-            }
-        });
-    });
+    const core::settings::UiHint hint{.min = -1e4f, .max = 1e4f, .speed = speed};
+    regrow(s, setting_widget::vector(ui, label, v, core::json::ANY_NUMBER, hint));
 }
 
 // An object on a keyed path stands where its path says, not at `position`: the row shows and
@@ -83,35 +72,28 @@ void growthCurves(ui::Ui& ui, EditorState& s, core::GrowthCurves& c) {
 }
 
 void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
+    const auto rows = core::settings::layer();
     core::GrassLayer& layer = s.loaded.project.layers[index];
     core::LayerField* field =
         s.scene && index < s.scene->layers.size() ? &s.scene->layers[index] : nullptr;
-    int shape = int(layer.shape);
-    if (const ui::Response r = ui.comboBox("shape", shape, core::bladeShapeNames()); r.changed()) {
-        layer.shape = core::BladeShape(shape);
+    // Shape and colours reach the drawn field at once; the rest re-grows it.
+    if (const ui::Response r = settingWidget(ui, rows, "shape", layer); r.changed()) {
         if (field)
             field->shape = layer.shape;
         live(s, r);
     }
-    core::BladeRanges& b = layer.scatter.blade;
-    rangeRow(ui, s, "height m", b.heightMin, b.heightMax, 0.005f, 0.01f, 5.0f, 3);
-    rangeRow(ui, s, "width m", b.widthMin, b.widthMax, 0.0005f, 0.001f, 0.2f, 4);
-    rangeRow(ui, s, "stiffness", b.stiffnessMin, b.stiffnessMax, 0.5f, 1.0f, 1000.0f, 1);
-    regrow(s, ui::sliderWithEntry(ui, "density", layer.scatter.density, 1.0f, 5000.0f,
-                                  {.logarithmic = true, .decimals = 0}));
-    if (const ui::Response r = ui::colorEdit(ui, "root colour", layer.rootColor, true);
-        r.changed()) {
-        if (field)
-            field->rootColor = layer.rootColor;
-        live(s, r);
-    }
-    if (const ui::Response r = ui::colorEdit(ui, "tip colour", layer.tipColor, true);
-        r.changed()) {
-        if (field)
-            field->tipColor = layer.tipColor;
-        live(s, r);
-    }
-    regrow(s, ui.checkbox(layer.growth.enabled, "growth model (soil, light)"));
+    for (const std::string_view key : {"height", "width", "stiffness"})
+        regrowRow(ui, s, core::settings::blade(), key, layer.scatter.blade);
+    regrowRow(ui, s, rows, "density", layer);
+    for (const std::string_view key : {"root_color", "tip_color"})
+        if (const ui::Response r = settingWidget(ui, rows, key, layer); r.changed()) {
+            if (field) {
+                field->rootColor = layer.rootColor;
+                field->tipColor = layer.tipColor;
+            }
+            live(s, r);
+        }
+    regrowRow(ui, s, core::settings::growth(), "enabled", layer.growth);
     if (layer.growth.enabled)
         ui.collapsingHeader("growth curves", [&](ui::Ui& curves) {
             growthCurves(curves, s, layer.growth.curves);
@@ -140,26 +122,19 @@ void windSection(ui::Ui& ui, EditorState& s) {
     ui.collapsingHeader("Wind (" + std::to_string(winds.size()) + ")", [&](ui::Ui& section) {
         if (winds.empty())
             section.coloredLabel("no wind sources", section.style().textWeak);
-        static constexpr std::array<const char*, 3> KINDS{"directional", "point", "vortex"};
         for (std::size_t i = 0; i < winds.size(); ++i) {
             section.pushId(std::uint64_t(i));
             section.collapsingHeader(winds[i].name, [&](ui::Ui& body) {
-                core::WindSource& w = winds[i].source;
-                int kind = int(w.kind);
-                if (const ui::Response r = body.comboBox("kind", kind, KINDS); r.changed()) {
-                    w.kind = core::WindKind(kind);
-                    regrow(s, r);
-                }
-                regrow(s, body.dragValue("strength m/s", w.strength, 0.01f, 0.0f, 100.0f, 2));
-                regrow(s, body.dragValue("radius m (0: all)", w.radiusM, 0.05f, 0.0f, 1e4f, 2));
-                if (w.kind == core::WindKind::Directional) {
-                    vec3Row(body, s, "direction", w.direction, 0.01f);
-                    regrow(s, body.dragValue("wavelength m", w.wavelengthM, 0.05f, 0.0f, 1e3f, 2));
-                    regrow(s, body.dragValue("speed m/s", w.speedMps, 0.02f, 0.0f, 100.0f, 2));
-                    regrow(s, body.slider("gust", w.gust, 0.0f, 1.0f));
+                core::WindDesc& wind = winds[i];
+                const auto rows = core::settings::wind();
+                for (const std::string_view key : {"kind", "strength", "radius"})
+                    regrowRow(body, s, rows, key, wind);
+                if (wind.source.kind == core::WindKind::Directional) {
+                    for (const std::string_view key : {"direction", "wavelength", "speed", "gust"})
+                        regrowRow(body, s, rows, key, wind);
                 } else {
-                    positionRow(body, s, w.position, w.path);
-                    regrow(s, body.dragValue("core radius m", w.coreRadiusM, 0.02f, 0.0f, 1e3f, 2));
+                    positionRow(body, s, wind.source.position, wind.source.path);
+                    regrowRow(body, s, rows, "core_radius", wind);
                 }
             });
             section.popId();
@@ -179,10 +154,8 @@ void colliderSection(ui::Ui& ui, EditorState& s) {
                 section.label(c.name + (c.shape == core::ColliderShape::Mesh ? " (mesh)" : ""));
                 section.indent([&](ui::Ui& body) {
                     positionRow(body, s, c.position, c.path);
-                    if (c.shape == core::ColliderShape::Sphere)
-                        regrow(s, body.dragValue("radius m", c.radiusM, 0.01f, 0.01f, 100.0f, 2));
-                    else
-                        regrow(s, body.dragValue("scale", c.scale, 0.01f, 0.001f, 1000.0f, 3));
+                    regrowRow(body, s, core::settings::collider(),
+                              c.shape == core::ColliderShape::Sphere ? "radius" : "scale", c);
                 });
                 section.popId();
             }
@@ -202,18 +175,9 @@ void renderSection(ui::Ui& ui, EditorState& s) {
                 body.checkbox(view.distance, "distance");
                 body.checkbox(view.occlusion, "occlusion");
             });
-            static constexpr std::array<const char*, 4> TECHNIQUES{"blades", "billboards",
-                                                                   "hybrid", "growth"};
             core::Project& project = s.loaded.project;
-            int technique = int(project.render.technique);
-            if (const ui::Response r = section.comboBox("technique", technique, TECHNIQUES);
-                r.changed())
-                project.render.technique = core::GrassTechnique(technique);
-            static constexpr std::array<const char*, 2> LIGHTING{"grass", "simple"};
-            int lighting = int(project.lighting.model);
-            if (const ui::Response r = section.comboBox("lighting", lighting, LIGHTING);
-                r.changed())
-                project.lighting.model = core::LightingModel(lighting);
+            settingWidget(section, core::settings::render(), "technique", project.render);
+            settingWidget(section, core::settings::lighting(), "model", project.lighting);
             qualityRows(section, s);
         },
         true);
