@@ -36,10 +36,6 @@ void markTouched(const gl::Rgba8Image& image, const gl::Rgba8Image& background,
 
 }  // namespace
 
-double msSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     return values.empty() ? 0.0 : values[values.size() / 2];

@@ -3,7 +3,6 @@
 // error against a reference, and the Pareto and convergence verdicts of a knob.
 #pragma once
 
-#include <chrono>
 #include <string>
 #include <vector>
 
@@ -12,14 +11,15 @@
 #include "scene/scene.h"
 #include "scene/scene_physics.h"
 #include "render/scene_renderer.h"
+#include "tools/ms_since.h"
 #include "tools/tradeoff_sweep.h"
 #include "util/result.h"
 
 namespace grass::render::tradeoff {
 
-using Clock = std::chrono::steady_clock;
+using tools::Clock;
+using tools::msSince;
 
-double msSince(Clock::time_point start);
 double median(std::vector<double> values);
 Spread spreadOf(const std::vector<double>& values);
 std::string fraction(double seconds);  // "1/60 s"

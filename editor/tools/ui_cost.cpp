@@ -1,10 +1,10 @@
 #include "tools/ui_cost.h"
 
-#include <chrono>
 #include <vector>
 
 #include "app/panels.h"
 #include "tools/median.h"
+#include "tools/ms_since.h"
 #include "ui/tessellator.h"
 
 namespace grass::tools {
@@ -27,15 +27,13 @@ UiCost measureUi(const ui::FontAtlas& fonts, core::LoadedProject loaded, core::S
     UiCost cost;
     // Two frames first: the first lays out with no remembered sizes.
     for (int frame = 0; frame < UI_FRAMES + 2; ++frame) {
-        const auto start = std::chrono::steady_clock::now();
+        const auto start = Clock::now();
         ctx.beginFrame(input);
         editor::buildPanels(ctx, state);
         const ui::Output& output = ctx.endFrame();
         ui::tessellate(output.shapes, fonts, input.pixelsPerPoint, meshes);
         if (frame >= 2)
-            ms.push_back(
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                    .count());
+            ms.push_back(msSince(start));
         cost.shapes = output.shapes.size();
     }
     cost.ms = median(ms);
