@@ -1,6 +1,8 @@
-// How every sub-command reports an error: one line on stderr, "grass <command>: <problem>".
+// How every sub-command reports an error: one line on stderr, "grass <command>: <problem>";
+// and its notes, "note: <note>".
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "cli/commands.h"
 
@@ -34,6 +36,16 @@ static std::string printable(const std::string& text) {
 void printError(const std::string& command, const std::string& message) {
     const std::string prefix = command.empty() ? "grass: " : "grass " + command + ": ";
     std::fprintf(stderr, "%s%s\n", prefix.c_str(), printable(message).c_str());
+}
+
+int reportFailure(const std::string& command, const Error& error, int exitCode) {
+    printError(command, error.str());
+    return exitCode;
+}
+
+void printNotes(const std::vector<std::string>& notes) {
+    for (const auto& note : notes)
+        std::fprintf(stderr, "note: %s\n", note.c_str());
 }
 
 }  // namespace grass::cli

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "util/result.h"
+
 namespace grass::cli {
 
 int runRender(const std::vector<std::string>& args);
@@ -23,5 +25,11 @@ inline constexpr int EXIT_USAGE = 2;
 
 // Prints "grass <command>: <message>" on stderr.
 void printError(const std::string& command, const std::string& message);
+// Prints `error` as printError does and returns `exitCode`, so a failed step of a command ends
+// it in one line: `return reportFailure("sim", run.error(), EXIT_FAILED);`.
+int reportFailure(const std::string& command, const Error& error, int exitCode);
+// Prints each note as "note: <note>" on stderr: what a loader or builder chose for the user
+// (a default, a fallback) that is not an error.
+void printNotes(const std::vector<std::string>& notes);
 
 }  // namespace grass::cli

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/parse_arguments.h"
 #include "mesh/gltf_loader.h"
 #include "util/arg_parser.h"
 
@@ -19,24 +20,15 @@ int runMeshInfo(const std::vector<std::string>& args) {
                      "carried normals and UV0, and its bounds.");
     parser.positional("file", "a .gltf or .glb file", &file, true);
     parser.flag("--json", "print one JSON object instead of text", &json);
-    if (auto parsed = parser.parse(args); !parsed) {
-        printError("mesh-info", parsed.error().str());
-        return EXIT_USAGE;
-    }
-    if (parser.helpRequested()) {
-        std::fputs(parser.help().c_str(), stdout);
-        return 0;
-    }
+    if (const auto exitCode = parseArguments(parser, args, "mesh-info"))
+        return *exitCode;
     auto imported = core::loadGltf(file);
-    if (!imported) {
-        printError("mesh-info", imported.error().str());
-        return EXIT_FAILED;
-    }
+    if (!imported)
+        return reportFailure("mesh-info", imported.error(), EXIT_FAILED);
     const core::SurfaceMesh& mesh = imported->mesh;
     const core::Bounds bounds = core::meshBounds(mesh);
     const double area = core::surfaceArea(mesh);
-    for (const auto& note : imported->notes)
-        std::fprintf(stderr, "note: %s\n", note.c_str());
+    printNotes(imported->notes);
     if (json) {
         nlohmann::ordered_json out;
         out["vertices"] = mesh.n_vertices();

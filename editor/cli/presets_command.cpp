@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "cli/commands.h"
+#include "cli/parse_arguments.h"
 #include "quality/preset_table.h"
 #include "quality/quality_presets.h"
 #include "util/arg_parser.h"
@@ -16,14 +17,8 @@ int runPresets(const std::vector<std::string>& argv) {
         "error `grass tradeoff` measured for it, the error bounds the presets were chosen by, "
         "and the device. The measurements are built in (core/quality/measured/*.json); "
         "render, sim and export take --preset NAME, the editor's Render section a preset menu.");
-    if (auto parsed = parser.parse(argv); !parsed) {
-        printError("presets", parsed.error().str());
-        return EXIT_USAGE;
-    }
-    if (parser.helpRequested()) {
-        std::fputs(parser.help().c_str(), stdout);
-        return 0;
-    }
+    if (const auto exitCode = parseArguments(parser, argv, "presets"))
+        return *exitCode;
     std::fputs(core::presetTableMarkdown(core::builtInMeasurements()).c_str(), stdout);
     return 0;
 }
