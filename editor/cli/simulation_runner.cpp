@@ -1,9 +1,11 @@
 #include "cli/simulation_runner.h"
 
 #include <unistd.h>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <thread>
 
 #include "physics/step_count.h"
 #include "render/scene_physics_gpu.h"
@@ -58,6 +60,12 @@ private:
 };
 
 }  // namespace
+
+unsigned cpuThreads(int requested) {
+    if (requested > 0)
+        return static_cast<unsigned>(requested);
+    return std::max(1u, std::min(std::thread::hardware_concurrency(), 8u));
+}
 
 std::size_t stepsFor(double seconds, float dtS) {
     if (!(seconds > 0.0) || !(dtS > 0.0f))

@@ -18,6 +18,10 @@ struct SimRun {
     core::FieldHealth health;
 };
 
+// The CPU reference's threads for `--threads N`: N, or for 0 every core of the machine, at most 8
+// (more rarely pays on the field sizes of grass projects).
+unsigned cpuThreads(int requested);
+
 // The number of steps of dtS that simulate `seconds` (rounded to the nearest step).
 std::size_t stepsFor(double seconds, float dtS);
 
