@@ -1,5 +1,5 @@
 // The figures of one `grass bench` run (issue 10, item 4), their table, their JSON file and the
-// comparison of two runs as ratios. No GL here: bench_command.cpp measures, this file reports.
+// comparison of two runs as ratios. No GL here: bench_measure.cpp measures, this file reports.
 // Times are milliseconds; "drawn" counts blades that survived the cull pass.
 #pragma once
 

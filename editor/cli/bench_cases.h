@@ -1,0 +1,43 @@
+// The standard benchmark set of `grass bench` (issue 10, item 4): each case a project grown to
+// a blade count, and the choice of cases a run measures.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "util/result.h"
+
+namespace grass::cli {
+
+// A case: a project (relative to --root) grown to about `targetBlades` (0: as the project says).
+struct BenchCase {
+    const char* name;
+    const char* project;
+    double targetBlades;
+};
+
+// The paper scenes at 100k and 1M blades (SPEC §14: nature 398k, helicopter 900k in the paper),
+// winter for the snow pass (the paper scenes have no snow), and tiny for tests.
+inline constexpr std::array<BenchCase, 6> BENCH_CASES = {{
+    {"nature-100k", "projects/nature", 1e5},
+    {"helicopter-100k", "projects/helicopter", 1e5},
+    {"winter-100k", "projects/winter", 1e5},
+    {"nature-1m", "projects/nature", 1e6},
+    {"helicopter-1m", "projects/helicopter", 1e6},
+    {"tiny", "tests/data/projects/tiny", 0.0},
+}};
+
+// Above this many blades a case is "large": fewer frames and steps (a 1M-blade frame takes
+// seconds on llvmpipe), and --quick leaves it out.
+inline constexpr double LARGE_CASE_BLADES = 1e5;
+
+inline bool isLargeCase(const BenchCase& c) {
+    return c.targetBlades > LARGE_CASE_BLADES;
+}
+
+// The cases of the comma-separated `list` in its order, without the large ones when `quick`.
+// Errors name --cases (an unknown or repeated case) or --quick (no case left).
+Result<std::vector<const BenchCase*>> selectCases(const std::string& list, bool quick);
+
+}  // namespace grass::cli

@@ -1,0 +1,250 @@
+#include "cli/bench_measure.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string_view>
+
+#include "cli/commands.h"
+#include "gl/framebuffer.h"
+#include "gl/headless_context.h"
+#include "mesh/surface_mesh.h"
+#include "render/offscreen_render.h"
+#include "render/scene_physics_gpu.h"
+#include "scene/scene_physics.h"
+#include "tools/median.h"
+#include "tools/ms_since.h"
+#include "tools/ui_cost.h"
+#include "ui/font.h"
+
+namespace grass::cli {
+
+namespace {
+
+using tools::Clock;
+using tools::median;
+using tools::msSince;
+
+struct CaseContext {
+    const BenchArgs& args;
+    const ui::FontAtlas& fonts;
+    render::GeometryPath geometry;
+    std::string progress;  // "bench: [2/5] nature-1m"
+};
+
+// A case's project as grown for it, and the camera its frames are drawn from.
+struct GrownCase {
+    core::LoadedProject loaded;
+    core::Scene scene;
+    core::OrbitCamera camera;
+};
+
+// Scales the project to about targetBlades: every layer's uniform density is multiplied by
+// s = target / estimate and its clump spacing divided by √s (s times the clumps), where the
+// estimate is core::estimateLayerBlades summed over the layers on the mesh's area.
+Result<void> scaleToTarget(const BenchCase& c, core::LoadedProject& loaded,
+                           const core::SurfaceMesh& mesh) {
+    const double area = core::surfaceArea(mesh);
+    double estimate = 0.0;
+    for (const core::GrassLayer& layer : loaded.project.layers)
+        estimate += core::estimateLayerBlades(layer.scatter, area);
+    if (!(estimate > 0.0))
+        return makeError(loaded.file.string(), "no layer grows any blade: nothing to scale");
+    const double scale = c.targetBlades / estimate;
+    for (core::GrassLayer& layer : loaded.project.layers) {
+        layer.scatter.density = static_cast<float>(layer.scatter.density * scale);
+        if (layer.scatter.clumpSpacing > 0.0f)
+            layer.scatter.clumpSpacing =
+                static_cast<float>(layer.scatter.clumpSpacing / std::sqrt(scale));
+    }
+    return {};
+}
+
+// Loads the case's project and grows it to about targetBlades (scaleToTarget).
+Result<GrownCase> growCase(const BenchCase& c, const CaseContext& ctx) {
+    const std::filesystem::path projectPath = std::filesystem::path(ctx.args.root) / c.project;
+    std::fprintf(stderr, "%s: growing %s on %s\n", ctx.progress.c_str(),
+                 c.targetBlades > 0.0
+                     ? ("~" + std::to_string(std::lround(c.targetBlades)) + " blades").c_str()
+                     : "the project's blades",
+                 projectPath.string().c_str());
+    auto loaded = core::loadProject(projectPath);
+    if (!loaded)
+        return loaded.error();
+    std::vector<std::string> notes;
+    auto mesh = core::loadProjectMesh(*loaded, &notes);
+    if (!mesh)
+        return mesh.error();
+    if (c.targetBlades > 0.0)
+        if (auto scaled = scaleToTarget(c, *loaded, *mesh); !scaled)
+            return scaled.error();
+    auto scene = core::buildSceneFromMesh(*loaded, std::move(*mesh), std::move(notes));
+    if (!scene)
+        return scene.error();
+    printNotes(scene->notes);
+    auto camera = render::projectCamera(loaded->project, "");
+    if (!camera)
+        return makeError(projectPath.string(), camera.error().message);
+    return GrownCase{std::move(*loaded), std::move(*scene), *camera};
+}
+
+// A timer of a pass the frame did not run can read a stale value (docs/rendering.md: an empty
+// billboard timer read 31 ms), so only the passes in FrameTimings::passes count.
+bool ran(const render::FrameTimings& frame, std::string_view pass) {
+    return std::find(frame.passes.begin(), frame.passes.end(), pass) != frame.passes.end();
+}
+
+// The untimed warm-up frames; the last gives the cull counts, since statistics cost atomics the
+// timed frames should not pay.
+void warmUp(render::SceneRenderer& renderer, const GrownCase& grown, const CaseContext& ctx,
+            const gl::Framebuffer& framebuffer, render::RenderOptions& options,
+            BenchCaseResult& result) {
+    const BenchArgs& args = ctx.args;
+    options.cull.collectStats = true;
+    for (int frame = 0; frame < args.warmup; ++frame) {
+        renderer.render(grown.camera, args.width, args.height, framebuffer.id(), options);
+        glFinish();
+    }
+    const render::FrameTimings warm = renderer.lastTimings();
+    result.bladesIn = warm.cull.bladesIn;
+    result.drawn = warm.cull.drawn;
+    result.culledShare = result.bladesIn > 0 ? static_cast<double>(result.bladesIn - result.drawn) /
+                                                   static_cast<double>(result.bladesIn)
+                                             : 0.0;
+    options.cull.collectStats = false;
+}
+
+// The warm-up, then result.frames timed frames: medians of the wall time and of each stage's GPU
+// timer into `result`. Returns the last frame's timings.
+Result<render::FrameTimings> measureFrames(const GrownCase& grown, const CaseContext& ctx,
+                                           bool large, render::RenderOptions& options,
+                                           BenchCaseResult& result) {
+    const BenchArgs& args = ctx.args;
+    auto renderer = render::SceneRenderer::create(grown.scene);
+    if (!renderer)
+        return renderer.error();
+    gl::Framebuffer framebuffer(args.width, args.height, std::stoi(args.msaa));
+    std::fprintf(stderr, "%s: %zu blades, %d warm-up + %d timed frame(s) at %dx%d%s\n",
+                 ctx.progress.c_str(), grown.scene.totalBlades(), args.warmup, result.frames,
+                 args.width, args.height,
+                 large ? " (a large case: a frame can take seconds on a software rasterizer)" : "");
+    warmUp(**renderer, grown, ctx, framebuffer, options, result);
+    std::vector<double> wall, cull, opaque, grass, snow;
+    render::FrameTimings last;
+    for (int frame = 0; frame < result.frames; ++frame) {
+        const auto start = Clock::now();
+        (*renderer)->render(grown.camera, args.width, args.height, framebuffer.id(), options);
+        glFinish();
+        wall.push_back(msSince(start));
+        last = (*renderer)->lastTimings();
+        cull.push_back(last.cullMs);
+        opaque.push_back(last.meshMs);
+        grass.push_back(last.grassMs + (ran(last, "billboards") ? last.billboardMs : 0.0) +
+                        (ran(last, "stem_sets") ? last.stemSetMs : 0.0));
+        snow.push_back(ran(last, "snow_depth") ? last.snowMs : 0.0);
+    }
+    result.frameMs = median(wall);
+    result.cullMs = median(cull);
+    result.opaqueMs = median(opaque);
+    result.grassMs = median(grass);
+    result.snowMs = median(snow);
+    return last;
+}
+
+// 1 warm-up step, then `steps` timed ones of the compute shader: ms per step and blade-steps per
+// second into `result`.
+Result<void> measurePhysics(GrownCase& grown, const CaseContext& ctx, int steps,
+                            BenchCaseResult& result) {
+    std::fprintf(stderr, "%s: physics, 1 warm-up + %d timed step(s) on the compute shader\n",
+                 ctx.progress.c_str(), steps);
+    auto physics = core::buildScenePhysics(grown.loaded);
+    if (!physics)
+        return physics.error();
+    core::SceneSimulation simulation(grown.scene, std::move(*physics));
+    auto gpu = render::ScenePhysicsGpu::create(grown.scene);
+    if (!gpu)
+        return gpu.error();
+    const float dtS = simulation.physics().params.dtS;
+    gpu->step(simulation.physics(), 0.0f);
+    glFinish();
+    const auto start = Clock::now();
+    for (int step = 1; step <= steps; ++step)
+        gpu->step(simulation.physics(), static_cast<float>(step) * dtS);
+    glFinish();
+    const double ms = msSince(start);
+    result.physicsSteps = steps;
+    result.physicsMsPerStep = ms / steps;
+    result.bladeStepsPerS =
+        ms > 0.0 ? static_cast<double>(grown.scene.totalBlades()) * steps / (ms / 1000.0) : 0.0;
+    return {};
+}
+
+Result<BenchCaseResult> measureCase(const BenchCase& c, const CaseContext& ctx) {
+    const bool large = isLargeCase(c);
+    auto grown = growCase(c, ctx);
+    if (!grown)
+        return grown.error();
+    BenchCaseResult result;
+    result.name = c.name;
+    result.project = c.project;
+    result.frames = large ? ctx.args.framesLarge : ctx.args.frames;
+    render::RenderOptions options = render::renderOptionsFor(grown->loaded.project, true);
+    options.geometry = ctx.geometry;
+    auto last = measureFrames(*grown, ctx, large, options, result);
+    if (!last)
+        return last.error();
+    const int steps = large ? ctx.args.stepsLarge : ctx.args.steps;
+    if (auto physics = measurePhysics(*grown, ctx, steps, result); !physics)
+        return physics.error();
+    const tools::UiCost ui =
+        tools::measureUi(ctx.fonts, grown->loaded, grown->scene, options, *last);
+    result.uiMs = ui.ms;
+    std::fprintf(stderr, "%s: editor panels, %d frames of %zu shapes, %zu vertices\n",
+                 ctx.progress.c_str(), tools::UI_FRAMES, ui.shapes, ui.vertices);
+    return result;
+}
+
+// The run's header: the renderer, the image and the geometry path every case is drawn with.
+BenchRun startRun(const BenchArgs& args, render::GeometryPath geometry) {
+    BenchRun run;
+    run.renderer = gl::rendererDescription();
+    run.width = args.width;
+    run.height = args.height;
+    run.msaaSamples = std::stoi(args.msaa);
+    run.geometry = render::geometryPathLabel(geometry);
+    return run;
+}
+
+}  // namespace
+
+Result<BenchRun> measureRun(const BenchArgs& args, const std::vector<const BenchCase*>& cases) {
+    std::string fontError;
+    auto fonts = ui::FontAtlas::load(ui::FontAtlas::defaultFontPath(), &fontError);
+    if (!fonts)
+        return makeError(ui::FontAtlas::defaultFontPath().string(), fontError);
+    auto context = gl::HeadlessContext::create(args.glDebug);
+    if (!context)
+        return context.error();
+    const auto path = core::parseGeometryPath(args.geometry);
+    const render::GeometryPath geometry = render::resolveGeometryPath(
+        path ? *path : core::GeometryPath::Auto, gl::isSoftwareRenderer());
+    BenchRun run = startRun(args, geometry);
+    std::fprintf(stderr, "bench: %zu case(s) on %s\n", cases.size(), run.renderer.c_str());
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const auto start = Clock::now();
+        const CaseContext ctx{args, *fonts, geometry,
+                              "bench: [" + std::to_string(i + 1) + "/" +
+                                  std::to_string(cases.size()) + "] " + cases[i]->name};
+        auto result = measureCase(*cases[i], ctx);
+        if (!result)
+            return result.error();
+        std::fprintf(stderr, "%s: frame %.1f ms, %zu of %zu blades drawn; case took %.1f s\n",
+                     ctx.progress.c_str(), result->frameMs, result->drawn, result->bladesIn,
+                     msSince(start) / 1000.0);
+        run.cases.push_back(std::move(*result));
+    }
+    return run;
+}
+
+}  // namespace grass::cli
