@@ -70,6 +70,72 @@ Error fileError(const std::string& file, const std::string& message) {
     return makeError(file, message);
 }
 
+// The number at `key` of `object` into `out`; the error names the file and `where` + key.
+Result<void> readNumber(const Json& object, const char* key, const std::string& where,
+                        const std::string& file, double* out) {
+    const auto found = object.find(key);
+    if (found == object.end() || !found->is_number() || !std::isfinite(found->get<double>()) ||
+        found->get<double>() < 0.0)
+        return fileError(file, where + key + ": missing or not a number >= 0");
+    *out = found->get<double>();
+    return {};
+}
+
+// What the run was measured with: image size, samples, renderer and geometry path.
+Result<BenchRun> runSettingsFromJson(const Json& document, const std::string& file) {
+    BenchRun run;
+    double width = 0.0, height = 0.0, msaa = 0.0;
+    for (auto [key, out] : {std::pair{"width", &width}, {"height", &height}, {"msaa", &msaa}})
+        if (auto read = readNumber(document, key, "", file, out); !read)
+            return read.error();
+    run.width = static_cast<int>(width);
+    run.height = static_cast<int>(height);
+    run.msaaSamples = static_cast<int>(msaa);
+    if (const auto renderer = document.find("renderer");
+        renderer != document.end() && renderer->is_string())
+        run.renderer = renderer->get<std::string>();
+    if (const auto geometry = document.find("geometry");
+        geometry != document.end() && geometry->is_string())
+        run.geometry = geometry->get<std::string>();
+    return run;
+}
+
+// One case's entry; `where` ("cases[2].") prefixes the field errors name.
+Result<BenchCaseResult> caseFromJson(const Json& entry, const std::string& where,
+                                     const std::string& file) {
+    const auto name = entry.is_object() ? entry.find("name") : entry.end();
+    if (!entry.is_object() || name == entry.end() || !name->is_string())
+        return fileError(file, where + "name: missing or not a string");
+    BenchCaseResult result;
+    result.name = name->get<std::string>();
+    // Shown but not compared: absent or odd values read as 0.
+    if (const auto project = entry.find("project"); project != entry.end() && project->is_string())
+        result.project = project->get<std::string>();
+    result.frames =
+        entry.value("frames", Json(0)).is_number_integer() ? entry.value("frames", 0) : 0;
+    result.physicsSteps = entry.value("physics_steps", Json(0)).is_number_integer()
+                              ? entry.value("physics_steps", 0)
+                              : 0;
+    for (const Figure& figure : FIGURES) {
+        const std::string prefix = where + (*figure.group ? figure.group + std::string(".") : "");
+        const Json* object = &entry;
+        if (*figure.group) {
+            const auto group = entry.find(figure.group);
+            if (group == entry.end() || !group->is_object())
+                return fileError(file, where + figure.group + ": missing or not an object");
+            object = &*group;
+        }
+        double value = 0.0;
+        if (auto read = readNumber(*object, figure.key, prefix, file, &value); !read)
+            return read.error();
+        if (figure.count)
+            result.*figure.count = static_cast<std::size_t>(value);
+        else
+            result.*figure.real = value;
+    }
+    return result;
+}
+
 }  // namespace
 
 std::string benchRunJson(const BenchRun& run) {
@@ -117,68 +183,17 @@ Result<BenchRun> readBenchRun(const std::string& file) {
     if (document.value("version", Json()) != VERSION)
         return fileError(file, "unsupported grass bench version (this grass reads version " +
                                    std::to_string(VERSION) + ")");
-    BenchRun run;
-    const auto number = [&](const Json& object, const char* key, const std::string& where,
-                            double* out) -> Result<void> {
-        const auto found = object.find(key);
-        if (found == object.end() || !found->is_number() || !std::isfinite(found->get<double>()) ||
-            found->get<double>() < 0.0)
-            return fileError(file, where + key + ": missing or not a number >= 0");
-        *out = found->get<double>();
-        return {};
-    };
-    double width = 0.0, height = 0.0, msaa = 0.0;
-    for (auto [key, out] : {std::pair{"width", &width}, {"height", &height}, {"msaa", &msaa}})
-        if (auto read = number(document, key, "", out); !read)
-            return read.error();
-    run.width = static_cast<int>(width);
-    run.height = static_cast<int>(height);
-    run.msaaSamples = static_cast<int>(msaa);
-    if (const auto renderer = document.find("renderer");
-        renderer != document.end() && renderer->is_string())
-        run.renderer = renderer->get<std::string>();
-    if (const auto geometry = document.find("geometry");
-        geometry != document.end() && geometry->is_string())
-        run.geometry = geometry->get<std::string>();
+    auto run = runSettingsFromJson(document, file);
+    if (!run)
+        return run;
     const auto cases = document.find("cases");
     if (cases == document.end() || !cases->is_array() || cases->empty())
         return fileError(file, "cases: missing or empty");
     for (std::size_t i = 0; i < cases->size(); ++i) {
-        const Json& entry = (*cases)[i];
-        const std::string where = "cases[" + std::to_string(i) + "].";
-        const auto name = entry.is_object() ? entry.find("name") : entry.end();
-        if (!entry.is_object() || name == entry.end() || !name->is_string())
-            return fileError(file, where + "name: missing or not a string");
-        BenchCaseResult result;
-        result.name = name->get<std::string>();
-        // Shown but not compared: absent or odd values read as 0.
-        if (const auto project = entry.find("project");
-            project != entry.end() && project->is_string())
-            result.project = project->get<std::string>();
-        result.frames =
-            entry.value("frames", Json(0)).is_number_integer() ? entry.value("frames", 0) : 0;
-        result.physicsSteps = entry.value("physics_steps", Json(0)).is_number_integer()
-                                  ? entry.value("physics_steps", 0)
-                                  : 0;
-        for (const Figure& figure : FIGURES) {
-            const std::string prefix =
-                where + (*figure.group ? figure.group + std::string(".") : "");
-            const Json* object = &entry;
-            if (*figure.group) {
-                const auto group = entry.find(figure.group);
-                if (group == entry.end() || !group->is_object())
-                    return fileError(file, where + figure.group + ": missing or not an object");
-                object = &*group;
-            }
-            double value = 0.0;
-            if (auto read = number(*object, figure.key, prefix, &value); !read)
-                return read.error();
-            if (figure.count)
-                result.*figure.count = static_cast<std::size_t>(value);
-            else
-                result.*figure.real = value;
-        }
-        run.cases.push_back(std::move(result));
+        auto result = caseFromJson((*cases)[i], "cases[" + std::to_string(i) + "].", file);
+        if (!result)
+            return result.error();
+        run->cases.push_back(std::move(*result));
     }
     return run;
 }
