@@ -29,6 +29,91 @@ nlohmann::ordered_json settingJson(const SettingResult& s, const std::string& pr
     return out;
 }
 
+using Json = nlohmann::json;
+
+// The figures of the whole run; the knobs are read apart.
+TradeoffReport reportFromJson(const Json& root) {
+    TradeoffReport report;
+    report.project = root.value("project", std::string());
+    report.device = root.value("device", std::string());
+    report.geometry = root.value("geometry", std::string());
+    report.width = root.value("width", 0);
+    report.height = root.value("height", 0);
+    report.msaaSamples = root.value("msaa", 0);
+    report.frames = root.value("frames", 0);
+    report.sceneTimeS = root.value("scene_time_s", 0.0f);
+    report.physicsSeconds = root.value("physics_seconds", 0.0);
+    report.blades = root.value("blades", std::size_t(0));
+    report.wallS = root.value("wall_s", 0.0);
+    return report;
+}
+
+SettingResult settingFromJson(const Json& s) {
+    SettingResult r;
+    r.label = s.at("label").get<std::string>();
+    r.value = s.at("value").get<double>();
+    const std::string role = s.value("role", std::string("setting"));
+    r.reference = role == "reference";
+    r.check = role == "check";
+    const Json& cost = s.at("cost_ms");
+    r.costMs = {cost.at("median").get<double>(), cost.at("min").get<double>(),
+                cost.at("max").get<double>()};
+    const Json timers = s.value("gpu_timer_ms", Json::object());
+    r.meshMs = timers.value("opaque", 0.0);
+    r.cullMs = timers.value("cull", 0.0);
+    r.grassMs = timers.value("grass", 0.0);
+    r.billboardMs = timers.value("billboards", 0.0);
+    r.snowMs = timers.value("snow", 0.0);
+    r.physicsGpuMs = timers.value("physics", 0.0);
+    r.bladesDrawn = s.value("blades_drawn", std::size_t(0));
+    r.error = s.at("error").get<double>();
+    r.errorMax = s.value("error_max", 0.0);
+    r.pixels = s.value("pixels", std::size_t(0));
+    r.pareto = s.value("pareto", false);
+    return r;
+}
+
+// The knob at /knobs/<index>; an error for a name we never write.
+Result<KnobResult> knobFromJson(const Json& k, std::size_t index, const std::string& sourceName) {
+    KnobResult knob;
+    knob.name = k.at("name").get<std::string>();
+    // Knob names become file names (<knob>.gp, .dat, .png): only the names we write.
+    const std::vector<std::string> known = tradeoffKnobNames();
+    if (std::find(known.begin(), known.end(), knob.name) == known.end())
+        return makeError(
+            sourceName + ": /knobs/" + std::to_string(index) + "/name",
+            "unknown knob " +
+                nlohmann::json(knob.name).dump(-1, ' ', false, Json::error_handler_t::replace) +
+                " (a grass tradeoff.json names only " + tradeoffKnobList() + ")");
+    knob.skipped = k.value("skipped", std::string());
+    knob.description = k.value("description", std::string());
+    knob.costMetric = k.value("cost_metric", std::string());
+    knob.errorMetric = k.value("error_metric", std::string());
+    if (const auto check = k.find("reference_check"); check != k.end()) {
+        knob.checkLabel = check->at("against").get<std::string>();
+        knob.referenceCheckError = check->at("error").get<double>();
+        knob.referenceConverged = check->at("converged").get<bool>();
+        knob.convergedBelow = check->value("converged_below", 0.0);
+        knob.referenceResolvesSweep = check->value("resolves_every_setting", true);
+    }
+    for (const Json& s : k.value("settings", Json::array()))
+        knob.settings.push_back(settingFromJson(s));
+    return knob;
+}
+
+// Printed on the terminal and in tradeoff.md: shown, never obeyed.
+void makePrintable(TradeoffReport& report) {
+    for (std::string* field : {&report.project, &report.device, &report.geometry})
+        *field = printableText(*field);
+    for (KnobResult& knob : report.knobs) {
+        for (std::string* field : {&knob.skipped, &knob.description, &knob.costMetric,
+                                   &knob.errorMetric, &knob.checkLabel})
+            *field = printableText(*field);
+        for (SettingResult& setting : knob.settings)
+            setting.label = printableText(setting.label);
+    }
+}
+
 }  // namespace
 
 std::vector<std::string> presetLabels(const KnobResult& knob) {
@@ -93,7 +178,6 @@ nlohmann::ordered_json tradeoffJson(const TradeoffReport& report) {
 }
 
 Result<TradeoffReport> tradeoffFromJson(const std::string& text, const std::string& sourceName) {
-    using Json = nlohmann::json;
     const auto bad = [&](const std::string& what) {
         return makeError(sourceName, what + " (not a grass tradeoff.json?)");
     };
@@ -103,79 +187,17 @@ Result<TradeoffReport> tradeoffFromJson(const std::string& text, const std::stri
     const Json& root = *parsed;
     if (!root.is_object() || !root.contains("knobs") || !root["knobs"].is_array())
         return bad("not a JSON object with a \"knobs\" array");
+    // The readers below use nlohmann's at() and get(), which throw on a missing or mistyped
+    // field; that is caught here, the one place this file meets exceptions (STYLE.md §4).
     try {
-        TradeoffReport report;
-        report.project = root.value("project", std::string());
-        report.device = root.value("device", std::string());
-        report.geometry = root.value("geometry", std::string());
-        report.width = root.value("width", 0);
-        report.height = root.value("height", 0);
-        report.msaaSamples = root.value("msaa", 0);
-        report.frames = root.value("frames", 0);
-        report.sceneTimeS = root.value("scene_time_s", 0.0f);
-        report.physicsSeconds = root.value("physics_seconds", 0.0);
-        report.blades = root.value("blades", std::size_t(0));
-        report.wallS = root.value("wall_s", 0.0);
-        const std::vector<std::string> known = tradeoffKnobNames();
+        TradeoffReport report = reportFromJson(root);
         for (std::size_t index = 0; index < root["knobs"].size(); ++index) {
-            const Json& k = root["knobs"][index];
-            KnobResult knob;
-            knob.name = k.at("name").get<std::string>();
-            // Knob names become file names (<knob>.gp, .dat, .png): only the names we write.
-            if (std::find(known.begin(), known.end(), knob.name) == known.end())
-                return makeError(sourceName + ": /knobs/" + std::to_string(index) + "/name",
-                                 "unknown knob " +
-                                     nlohmann::json(knob.name).dump(
-                                         -1, ' ', false, Json::error_handler_t::replace) +
-                                     " (a grass tradeoff.json names only " + tradeoffKnobList() +
-                                     ")");
-            knob.skipped = k.value("skipped", std::string());
-            knob.description = k.value("description", std::string());
-            knob.costMetric = k.value("cost_metric", std::string());
-            knob.errorMetric = k.value("error_metric", std::string());
-            if (const auto check = k.find("reference_check"); check != k.end()) {
-                knob.checkLabel = check->at("against").get<std::string>();
-                knob.referenceCheckError = check->at("error").get<double>();
-                knob.referenceConverged = check->at("converged").get<bool>();
-                knob.convergedBelow = check->value("converged_below", 0.0);
-                knob.referenceResolvesSweep = check->value("resolves_every_setting", true);
-            }
-            for (const Json& s : k.value("settings", Json::array())) {
-                SettingResult r;
-                r.label = s.at("label").get<std::string>();
-                r.value = s.at("value").get<double>();
-                const std::string role = s.value("role", std::string("setting"));
-                r.reference = role == "reference";
-                r.check = role == "check";
-                const Json& cost = s.at("cost_ms");
-                r.costMs = {cost.at("median").get<double>(), cost.at("min").get<double>(),
-                            cost.at("max").get<double>()};
-                const Json timers = s.value("gpu_timer_ms", Json::object());
-                r.meshMs = timers.value("opaque", 0.0);
-                r.cullMs = timers.value("cull", 0.0);
-                r.grassMs = timers.value("grass", 0.0);
-                r.billboardMs = timers.value("billboards", 0.0);
-                r.snowMs = timers.value("snow", 0.0);
-                r.physicsGpuMs = timers.value("physics", 0.0);
-                r.bladesDrawn = s.value("blades_drawn", std::size_t(0));
-                r.error = s.at("error").get<double>();
-                r.errorMax = s.value("error_max", 0.0);
-                r.pixels = s.value("pixels", std::size_t(0));
-                r.pareto = s.value("pareto", false);
-                knob.settings.push_back(r);
-            }
-            report.knobs.push_back(std::move(knob));
+            auto knob = knobFromJson(root["knobs"][index], index, sourceName);
+            if (!knob)
+                return knob.error();
+            report.knobs.push_back(std::move(*knob));
         }
-        // Printed on the terminal and in tradeoff.md: shown, never obeyed.
-        for (std::string* field : {&report.project, &report.device, &report.geometry})
-            *field = printableText(*field);
-        for (KnobResult& knob : report.knobs) {
-            for (std::string* field : {&knob.skipped, &knob.description, &knob.costMetric,
-                                       &knob.errorMetric, &knob.checkLabel})
-                *field = printableText(*field);
-            for (SettingResult& setting : knob.settings)
-                setting.label = printableText(setting.label);
-        }
+        makePrintable(report);
         return report;
     } catch (const Json::exception& e) {
         return bad(std::string("a field is missing or of the wrong type: ") + e.what());
