@@ -113,12 +113,10 @@ Result<GrownScene> growScene(const core::LoadedProject& loaded, Clock::time_poin
 Result<core::ExportReport> exportWithProgress(const core::LoadedProject& loaded,
                                               const core::Scene& scene,
                                               const core::ExportOptions& options) {
-    return core::exportProject(
-        loaded, scene, options, [](float fraction, std::string_view stage) {
-            std::fprintf(stderr, "note: export %3.0f%%: %.*s\n",
-                         static_cast<double>(fraction) * 100.0, static_cast<int>(stage.size()),
-                         stage.data());
-        });
+    return core::exportProject(loaded, scene, options, [](float fraction, std::string_view stage) {
+        std::fprintf(stderr, "note: export %3.0f%%: %.*s\n", static_cast<double>(fraction) * 100.0,
+                     static_cast<int>(stage.size()), stage.data());
+    });
 }
 
 void printExportReport(const core::LoadedProject& loaded, const core::ExportOptions& options,
@@ -133,8 +131,8 @@ void printExportReport(const core::LoadedProject& loaded, const core::ExportOpti
     std::printf("exported %s (%s, lod %d): %zu files, %llu bytes in %.0f ms (grow %.0f ms)\n",
                 loaded.project.name.c_str(),
                 std::string(core::exportFormatName(options.format)).c_str(), options.lod,
-                report.files.size(), static_cast<unsigned long long>(report.totalBytes()),
-                exportMs, growMs);
+                report.files.size(), static_cast<unsigned long long>(report.totalBytes()), exportMs,
+                growMs);
 }
 
 }  // namespace
