@@ -13,13 +13,12 @@ in vec3 vNormal;
 in vec3 vPosition;
 in float vFade;
 
-// The blades' lighting (SPEC §10) so billboards and blades match where they cross-fade: the
-// object stands for many blades, so it takes the field's mean AO and water and the surface
-// normal for both blade and terrain normals. 0: the wrapped Lambert.
-uniform int uGrassLighting;
+// The blades' lighting (SPEC §10, uGrassLighting 1; 0: the wrapped Lambert) so billboards and
+// blades match where they cross-fade: the object stands for many blades, so it takes the field's
+// mean AO and water (uFieldWater of the lighting block) and the surface normal for both blade
+// and terrain normals.
 uniform vec3 uCameraPosition;
 uniform float uFieldAo;
-uniform float uFieldWater;
 
 out vec4 fragColor;
 

@@ -4,13 +4,9 @@
 // back metres as core::renderSnowDepthMap stores them.
 layout(location = 0) in vec3 aPosition;
 
+#include "snow_view_block.glsl"
+
 uniform mat4 uModel;
-uniform vec3 uSnowOrigin;
-uniform vec3 uSnowRight;
-uniform vec3 uSnowUpAxis;
-uniform vec3 uSnowForward;
-uniform float uSnowSizeM;
-uniform float uSnowDepthRangeM;
 
 void main() {
     vec3 d = (uModel * vec4(aPosition, 1.0)).xyz - uSnowOrigin;

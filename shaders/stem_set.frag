@@ -14,13 +14,12 @@ uniform vec3 uHealthyTip;
 uniform vec3 uPoorRoot;
 uniform vec3 uPoorTip;
 
-// SPEC §10 grass lighting, as billboard.frag feeds it: a set stands for a few blades with no
-// baked per-blade data, so it takes the field's mean AO and water and the surface normal as
-// terrain and blurred normals. 0: the wrapped Lambert.
-uniform int uGrassLighting;
+// SPEC §10 grass lighting (uGrassLighting 1; 0: the wrapped Lambert), as billboard.frag feeds
+// it: a set stands for a few blades with no baked per-blade data, so it takes the field's mean
+// AO and water (uFieldWater of the lighting block) and the surface normal as terrain and blurred
+// normals.
 uniform vec3 uCameraPosition;
 uniform float uFieldAo;
-uniform float uFieldWater;
 
 out vec4 fragColor;
 

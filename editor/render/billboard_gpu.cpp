@@ -160,13 +160,6 @@ void BillboardField::draw(const BillboardDrawParams& params) {
                                     params.fade.outEndM));
     mProgram.set("uAlphaCutoff",
                  sampleBuffers > 0 ? ALPHA_CUTOFF_MULTISAMPLED : ALPHA_CUTOFF_SINGLE_SAMPLED);
-    const glm::vec3 sun = glm::length(params.sunDirection) > 0.0f
-                              ? glm::normalize(params.sunDirection)
-                              : glm::vec3(0.0f, -1.0f, 0.0f);
-    mProgram.set("uSunDirection", sun);
-    mProgram.set("uSunColor", params.sunColor);
-    mProgram.set("uSkyColor", params.skyColor);
-    mProgram.set("uGroundColor", params.groundColor);
     glBindTextureUnit(BILLBOARD_TEXTURE_UNIT, mTexture.id());
     glBindVertexArray(mVertexArray.id());
 

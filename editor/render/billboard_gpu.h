@@ -5,10 +5,12 @@
 //
 // draw() sets and restores the state it needs: alpha-to-coverage on (with an MSAA target it
 // shapes the blades; without one a 0.5 alpha cutoff does), depth test and depth write on, face
-// culling off (two-sided). Clusters wholly outside the fade range or the view frustum are skipped
-// (bounding spheres, with the largest wind offset added); the rest are drawn
-// back to front by cluster-centre distance: one draw per cluster in the per-cluster mode (each
-// with its CPU-computed wind offset), one glMultiDrawElements otherwise.
+// culling off (two-sided). The light is the caller's: the LightingBlock it uploaded
+// (render/lighting_block.h), whose uGrassLighting picks the wrapped Lambert or SPEC §10. Clusters
+// wholly outside the fade range or the view frustum are skipped (bounding spheres, with the largest
+// wind offset added); the rest are drawn back to front by cluster-centre distance: one draw per
+// cluster in the per-cluster mode (each with its CPU-computed wind offset), one glMultiDrawElements
+// otherwise.
 #pragma once
 
 #include <string_view>
@@ -37,11 +39,6 @@ struct BillboardDrawParams {
     core::BillboardFade fade;
     // Skips clusters whose bounding sphere lies outside the view frustum of viewProj.
     bool frustumCull = true;
-    // simpleLighting's inputs (shaders/include/lighting.glsl); sunColor is colour × intensity.
-    glm::vec3 sunDirection{-0.4f, -1.0f, -0.3f};
-    glm::vec3 sunColor{1.0f, 0.96f, 0.88f};
-    glm::vec3 skyColor{0.55f, 0.70f, 0.90f};
-    glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
 };
 
 class BillboardField {
@@ -60,7 +57,7 @@ public:
     // Of the last draw(): objects in the clusters drawn, and draw calls issued.
     std::size_t drawnObjects() const { return mDrawnObjects; }
     std::size_t drawCalls() const { return mDrawCalls; }
-    // For uniforms draw() does not set (the grass lighting of the scene renderer).
+    // For uniforms draw() does not set (uCameraPosition and uFieldAo of the grass lighting).
     const gl::Program& program() const { return mProgram; }
 
 private:

@@ -101,34 +101,6 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     return renderer;
 }
 
-// The texture unit of the snow depth map in the mesh program.
-constexpr int SNOW_MAP_UNIT = 6;
-
-static void setLighting(const gl::Program& program, const RenderOptions& options) {
-    const glm::vec3 direction = glm::length(options.sun.direction) > 0.0f
-                                    ? glm::normalize(options.sun.direction)
-                                    : glm::vec3(0, -1, 0);
-    program.set("uSunDirection", direction);
-    program.set("uSunColor", options.sun.color * options.sun.intensity);
-    program.set("uSkyColor", options.skyColor);
-    program.set("uGroundColor", options.groundColor);
-}
-
-void setGrassLighting(const gl::Program& program, const core::GrassLightingDesc& lighting) {
-    program.set("uGrassLighting", lighting.model == core::LightingModel::Grass ? 1 : 0);
-    program.set("uDiffuseLow", lighting.diffuseLow);
-    program.set("uDiffuseMid", lighting.diffuseMid);
-    program.set("uDiffuseHigh", lighting.diffuseHigh);
-    program.set("uTerrainNormalWeight", lighting.terrainNormalWeight);
-    program.set("uSpecular", lighting.specular);
-    program.set("uSpecularFade", lighting.specularFadeM);
-    program.set("uTransmission", lighting.transmission);
-    program.set("uTransmissionDistortion", lighting.transmissionDistortion);
-    program.set("uTransmissionPower", lighting.transmissionPower);
-    program.set("uSss", lighting.sss);
-    program.set("uSssIntensity", lighting.sssIntensity);
-}
-
 void SceneRenderer::render(const core::OrbitCamera& camera, int width, int height,
                            GLuint framebuffer, const RenderOptions& options) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -147,6 +119,9 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
     const glm::mat4 projection = camera.projection(aspect);
     const glm::mat4 viewProj = projection * camera.view();
+    // Every program that lights a surface reads this one upload.
+    mLighting.upload(
+        lightingBlock(options.lighting, options.sun, options.skyColor, options.groundColor));
 
     // Snow: only a frame where snow lies (on, amount > 0) runs the depth pass and the snow
     // variants of the opaque and cull programs; any other frame runs exactly the snow-free ones.
@@ -158,8 +133,7 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
         renderSnowMap(options);
         mPasses.push_back("snow_depth");
         // The surfaces whiten and rise; the cull buries short blades and whitens the tips.
-        for (const gl::Program* program : {&snowMeshProgram(), &mCull->snowProgram()})
-            mSnow->bind(*program, options.snow, snowAmountM, SNOW_MAP_UNIT);
+        mSnow->bind(options.snow, snowAmountM);
         const gl::Program& snowMesh = snowMeshProgram();
         snowMesh.set("uSnowCoverageView", options.snowCoverageView ? 1 : 0);
         snowMesh.set("uViewportPixels", glm::vec2(float(width), float(height)));
@@ -172,7 +146,6 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     const gl::Program& opaque = mSnowLies ? snowMeshProgram() : mMeshProgram;
     opaque.use();
     opaque.set("uViewProj", viewProj);
-    setLighting(opaque, options);
     drawOpaque(options, true);
     mPasses.push_back(mSnowLies ? "opaque_snow" : "opaque");
     mMeshTimer.end();
@@ -202,7 +175,7 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     mStemSetTimer.begin();
     mStemSetsDrawn = 0;
     if (options.technique == core::GrassTechnique::Growth) {
-        drawStemSets(camera, viewProj, options);
+        drawStemSets(camera, viewProj);
         mPasses.push_back("stem_sets");
     }
     mStemSetTimer.end();
@@ -250,8 +223,6 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     program.set("uCameraPosition", camera.position());
     program.set("uLodDistance", std::max(options.cull.lodDistanceM, 0.0f));
     program.set("uFadeOut", hybrid ? options.billboards.crossFadeM : glm::vec2(0.0f));
-    setLighting(program, options);
-    setGrassLighting(program, options.lighting);
     program.set("uLightPerVertex", options.lightPerVertex ? 1 : 0);
     program.set("uSnowTips", mSnowLies ? 1 : 0);
     program.set("uSnowTipColor", options.snow.snowColor);
@@ -300,24 +271,15 @@ void SceneRenderer::drawBillboards(const core::OrbitCamera& camera, const glm::m
     if (options.technique == core::GrassTechnique::Hybrid)
         params.fade = {options.billboards.crossFadeM.x, options.billboards.crossFadeM.y, 1.0e30f,
                        1.0e30f};
-    params.sunDirection = glm::length(options.sun.direction) > 0.0f
-                              ? glm::normalize(options.sun.direction)
-                              : glm::vec3(0, -1, 0);
-    params.sunColor = options.sun.color * options.sun.intensity;
-    params.skyColor = options.skyColor;
-    params.groundColor = options.groundColor;
     const gl::Program& program = mBillboards->program();
-    setGrassLighting(program, options.lighting);
     program.set("uCameraPosition", camera.position());
     program.set("uFieldAo", mFieldAo);
-    program.set("uFieldWater", 0.5f * (options.lighting.water.x + options.lighting.water.y));
     mBillboards->draw(params);
     mBillboardsDrawn = mBillboards->drawnObjects();
     mBillboardDrawCalls = mBillboards->drawCalls();
 }
 
-void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj,
-                                 const RenderOptions& options) {
+void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj) {
     // Uploaded on first use: a scene drawn by another technique pays nothing for them.
     if (mStemSets.empty())
         for (const auto& layer : mScene->layers)
@@ -326,10 +288,7 @@ void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat
     program.use();
     program.set("uViewProj", viewProj);
     program.set("uCameraPosition", camera.position());
-    setLighting(program, options);
-    setGrassLighting(program, options.lighting);
     program.set("uFieldAo", mFieldAo);
-    program.set("uFieldWater", 0.5f * (options.lighting.water.x + options.lighting.water.y));
     for (std::size_t i = 0; i < mStemSets.size(); ++i) {
         const core::LayerField& layer = mScene->layers[i];
         setStemSetColours(program, StemSetColours{layer.rootColor, layer.tipColor,

@@ -13,8 +13,10 @@
 #include "render/cull_pass.h"
 #include "render/snow_pass.h"
 #include "render/field_gpu.h"
+#include "render/lighting_block.h"
 #include "render/mesh_gpu.h"
 #include "gl/program.h"
+#include "gl/uniform_block.h"
 #include "render/stem_set_gpu.h"
 #include "project/project.h"
 #include "scene/camera.h"
@@ -65,9 +67,6 @@ struct RenderOptions {
 RenderOptions renderOptionsFor(const core::Project& project, bool softwareRenderer);
 GeometryPath resolveGeometryPath(core::GeometryPath path, bool softwareRenderer);
 const char* geometryPathLabel(GeometryPath path);
-// The uniforms of shaders/include/grass_lighting.glsl (SPEC §10) and uGrassLighting, for every
-// program that lights grass with it.
-void setGrassLighting(const gl::Program& program, const core::GrassLightingDesc& lighting);
 
 struct FrameTimings {
     double meshMs = 0.0;   // GPU time of the opaque pass
@@ -120,6 +119,8 @@ public:
 private:
     SceneRenderer() = default;
     const core::Scene* mScene = nullptr;
+    // The frame's lighting, uploaded once at the start of render().
+    gl::UniformBlock<LightingBlock> mLighting{"lighting"};
     gl::Program mMeshProgram, mStripProgram, mTessProgram, mStemSetProgram;
     gl::Program mSnowMeshProgram;  // compiled on the first frame with snow
     const gl::Program& snowMeshProgram();
@@ -130,8 +131,7 @@ private:
                         const RenderOptions& options);
     // Technique growth: Kim & Cho's stem sets, uploaded on first use (a scene that never draws
     // them pays nothing).
-    void drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj,
-                      const RenderOptions& options);
+    void drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj);
     std::unique_ptr<MeshGpu> mMesh;
     std::vector<MeshGpu> mProps;
     std::vector<FieldGpu> mFields;

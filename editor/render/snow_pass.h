@@ -8,6 +8,9 @@
 #include "gl/framebuffer.h"
 #include "gl/gl_handle.h"
 #include "gl/program.h"
+#include "gl/uniform_block.h"
+#include "render/snow_block.h"
+#include "render/snow_view_block.h"
 #include "snow/snow.h"
 #include "util/result.h"
 
@@ -18,18 +21,22 @@ public:
     static Result<SnowPass> create();
 
     // Renders the depth map of `view` at `resolution`²; `draw(program)` draws every occluder
-    // with the program's uModel set. Restores the framebuffer and viewport.
+    // with the program's uModel set. Uploads the view's SnowViewBlock. Restores the framebuffer
+    // and viewport.
     void run(const core::OrthoSnowView& view, int resolution,
              const std::function<void(const gl::Program&)>& draw);
-    // The uniforms of shaders/include/snow.glsl for `program`, the map on texture `unit`.
-    void bind(const gl::Program& program, const core::SnowParams& params, float amountM,
-              int unit) const;
+    // What shaders/include/snow.glsl reads, for every program drawn after it: uploads the
+    // SnowBlock of `params` at `amountM`, binds it with the last run()'s view block, and binds
+    // the map on SNOW_MAP_UNIT.
+    void bind(const core::SnowParams& params, float amountM);
     // The depth texture (depth / depthRange), for tests.
     GLuint depthTexture() const { return mDepth.texture.id(); }
     const core::OrthoSnowView& view() const { return mView; }
 
 private:
     gl::Program mProgram;
+    gl::UniformBlock<SnowBlock> mSnowBlock{"snow"};
+    gl::UniformBlock<SnowViewBlock> mViewBlock{"snow view"};
     gl::DepthTarget mDepth;
     int mResolution = 0;
     core::OrthoSnowView mView;

@@ -62,10 +62,8 @@ struct StemSetColours {
 };
 
 // shaders/stem_set.{vert,frag}. Uniforms the caller sets: uViewProj, uCameraPosition, the
-// colours (setStemSetColours), uGrassLighting with the grass lighting of
-// shaders/include/grass_lighting.glsl plus uFieldAo and uFieldWater (as for billboards), or
-// uGrassLighting = 0 and only uSunDirection, uSunColor, uSkyColor, uGroundColor. draw() sets
-// uLevels.
+// colours (setStemSetColours) and uFieldAo (as for billboards); the light comes from the
+// LightingBlock the caller uploaded (render/lighting_block.h). draw() sets uLevels.
 Result<gl::Program> loadStemSetProgram(const std::vector<std::string>& defines = {});
 void setStemSetColours(const gl::Program& program, const StemSetColours& colours);
 

@@ -12,7 +12,6 @@ uniform vec3 uTipColor;
 // blends towards them.
 uniform vec3 uPoorRootColor;
 uniform vec3 uPoorTipColor;
-uniform int uGrassLighting;
 uniform int uLightPerVertex;
 // Snow on the tips (SPEC §11): the cull pass writes each drawn blade's tip whiteness; 0 = no snow
 // (the buffer is then not bound and not read).

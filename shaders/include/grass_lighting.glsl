@@ -10,18 +10,6 @@
 // count, not the vertex count, dominates on a software rasterizer) and keeps highlights round.
 #include "lighting.glsl"
 
-uniform vec3 uDiffuseLow;
-uniform vec3 uDiffuseMid;
-uniform vec3 uDiffuseHigh;
-uniform float uTerrainNormalWeight;
-uniform float uSpecular;
-uniform vec2 uSpecularFade;  // metres: specular 0 at x, full at y
-uniform float uTransmission;
-uniform float uTransmissionDistortion;
-uniform float uTransmissionPower;
-uniform float uSss;
-uniform float uSssIntensity;
-
 const float GRASS_PI = 3.14159265358979;
 const float GRASS_F0 = 0.04;
 

@@ -1,9 +1,6 @@
 // Simple lighting for the foundation (issue 3): wrapped Lambert from the sun plus a sky/ground
 // hemisphere ambient. The grass lighting model of SPEC §10 replaces this for blades later.
-uniform vec3 uSunDirection;   // direction the light travels, normalized
-uniform vec3 uSunColor;       // colour × intensity
-uniform vec3 uSkyColor;
-uniform vec3 uGroundColor;
+#include "lighting_block.glsl"
 
 vec3 simpleLighting(vec3 albedo, vec3 normal, float wrap) {
     vec3 toSun = -uSunDirection;

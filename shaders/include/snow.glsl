@@ -3,28 +3,13 @@
 // coverage Fp = Fe·Fi, colour and displacement. Every function keeps its C++ name and order of
 // operations, so tests can hold GPU and CPU together.
 
-uniform bool uSnowEnabled;
-uniform float uSnowAmountM;        // As at the scene's time (accumulation and melt applied)
-uniform vec3 uSnowColor;           // Cs
-uniform vec3 uSnowUp;              // −fall direction
-uniform int uSnowOctaves;
-uniform float uSnowNoiseA;
-uniform float uSnowNoiseB;
-uniform float uSnowNoiseScaleM;
-uniform float uSnowInclineNoise;
-uniform int uSnowSamples;
-uniform float uSnowRadiusTexels;
-uniform float uSnowBoundaryRadiusTexels;  // max(sample radius, boundary falloff / texel)
-uniform float uSnowBiasM;
-// The orthographic view of the depth map (core::OrthoSnowView).
-uniform vec3 uSnowOrigin;
-uniform vec3 uSnowRight;
-uniform vec3 uSnowUpAxis;
-uniform vec3 uSnowForward;
-uniform float uSnowSizeM;
-uniform float uSnowDepthRangeM;
-uniform int uSnowResolution;
-uniform sampler2D uSnowDepth;  // depth / depthRange, cleared to 1 (nothing above)
+#include "snow_block.glsl"
+#include "snow_view_block.glsl"
+
+// The depth map: depth / depthRange, cleared to 1 (nothing above). SNOW_MAP_UNIT in
+// render/snow_block.h.
+#define SNOW_MAP_UNIT 6
+layout(binding = SNOW_MAP_UNIT) uniform sampler2D uSnowDepth;
 
 const float SNOW_GOLDEN_ANGLE = 2.39996323;
 const float SNOW_MAX_SLOPE_BIAS = 4.0;
@@ -158,7 +143,7 @@ float inclineCoefficient(vec3 normal, vec3 up, float noise, float inclineNoise) 
 }
 
 bool snowLies() {
-    return uSnowEnabled && uSnowAmountM > 0.0;
+    return uSnowEnabled != 0 && uSnowAmountM > 0.0;
 }
 
 // The smooth boundary of the displacement: exposure over the falloff disc, smoothstepped.

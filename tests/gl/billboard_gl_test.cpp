@@ -13,10 +13,12 @@
 
 #include "billboard/grass_texture.h"
 #include "gl/framebuffer.h"
+#include "gl/program.h"
+#include "gl/uniform_block.h"
 #include "gl_context_fixture.h"
 #include "mesh/procedural.h"
+#include "render/lighting_block.h"
 #include "render/mesh_gpu.h"
-#include "gl/program.h"
 #include "support/test_paths.h"
 #include "util/image_file.h"
 
@@ -30,6 +32,7 @@ using render::BillboardWindMode;
 
 constexpr int SIDE = 128;
 const glm::vec3 SKY{0.55f, 0.70f, 0.90f};
+const glm::vec3 GROUND{0.30f, 0.24f, 0.16f};
 const glm::vec3 EYE{0.0f, 0.6f, 2.2f};
 const BillboardWindMode MODES[] = {BillboardWindMode::PerCluster, BillboardWindMode::PerVertex,
                                    BillboardWindMode::PerObject};
@@ -83,12 +86,23 @@ BillboardDrawParams drawParams(BillboardWindMode mode, float amplitudeM, float t
     return p;
 }
 
+// The project's default sun over SKY and GROUND with the wrapped Lambert (uGrassLighting 0):
+// the billboards and the ground are lit by it for as long as the returned block lives.
+gl::UniformBlock<render::LightingBlock> uploadLighting() {
+    core::GrassLightingDesc lighting;
+    lighting.model = core::LightingModel::Simple;
+    gl::UniformBlock<render::LightingBlock> block("billboard test lighting");
+    block.upload(render::lightingBlock(lighting, core::SunDesc{}, SKY, GROUND));
+    return block;
+}
+
 gl::Rgba8Image render(BillboardField& field, const BillboardDrawParams& params, int side = SIDE) {
     gl::Framebuffer framebuffer(side, side, 4);
     framebuffer.bind();
     glClearColor(SKY.r, SKY.g, SKY.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDepthFunc(GL_LESS);
+    const gl::UniformBlock<render::LightingBlock> lighting = uploadLighting();
     field.draw(params);
     glFinish();
     return framebuffer.readPixels();
@@ -328,6 +342,7 @@ TEST_F(BillboardRender, DrawRestoresTheStateItChanges) {
     glEnable(GL_CULL_FACE);
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glDepthMask(GL_FALSE);
+    const gl::UniformBlock<render::LightingBlock> lighting = uploadLighting();
     field.draw(drawParams(BillboardWindMode::PerCluster, 0.05f, 1.0f));
     EXPECT_GT(field.drawCalls(), 0u);
     EXPECT_TRUE(glIsEnabled(GL_CULL_FACE));
@@ -394,11 +409,8 @@ TEST_F(BillboardRender, SavesAViewOfTufts) {
     meshProgram->set("uViewProj", p.viewProj);
     // mesh.vert places props with uModel; the ground is at identity.
     meshProgram->set("uModel", glm::mat4(1.0f));
-    meshProgram->set("uAlbedo", p.groundColor);
-    meshProgram->set("uSunDirection", glm::normalize(p.sunDirection));
-    meshProgram->set("uSunColor", p.sunColor);
-    meshProgram->set("uSkyColor", p.skyColor);
-    meshProgram->set("uGroundColor", p.groundColor);
+    meshProgram->set("uAlbedo", GROUND);
+    const gl::UniformBlock<render::LightingBlock> lighting = uploadLighting();
     groundGpu.draw();
     field.draw(p);
     glFinish();

@@ -17,9 +17,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/framebuffer.h"
+#include "gl/uniform_block.h"
 #include "gl_context_fixture.h"
 #include "project/project.h"
-#include "render/scene_renderer.h"
+#include "render/lighting_block.h"
 
 namespace grass::test {
 namespace {
@@ -98,17 +99,21 @@ glm::mat4 viewProj(glm::vec3 eye, glm::vec3 target) {
            glm::lookAt(eye, target, glm::vec3(0, 1, 0));
 }
 
-// 0: the wrapped Lambert; 1: the grass lighting of SPEC §10 with the project defaults.
-void setLighting(const gl::Program& program, int grassLighting) {
-    program.set("uSunDirection", SUN_DIRECTION);
-    program.set("uSunColor", glm::vec3(1.0f, 0.96f, 0.88f));
-    program.set("uSkyColor", SKY);
-    program.set("uGroundColor", glm::vec3(0.30f, 0.24f, 0.16f));
+// 0: the wrapped Lambert; 1: the grass lighting of SPEC §10 with the project defaults and a
+// field water of 0.4. The sets are lit by it for as long as the returned block lives.
+gl::UniformBlock<render::LightingBlock> uploadLighting(int grassLighting) {
     core::GrassLightingDesc lighting;
     lighting.model = grassLighting == 1 ? core::LightingModel::Grass : core::LightingModel::Simple;
-    render::setGrassLighting(program, lighting);
+    lighting.water = {0.4f, 0.4f};
+    core::SunDesc sun;
+    sun.direction = SUN_DIRECTION;
+    gl::UniformBlock<render::LightingBlock> block("stem set test lighting");
+    block.upload(render::lightingBlock(lighting, sun, SKY, glm::vec3(0.30f, 0.24f, 0.16f)));
+    return block;
+}
+
+void setFieldUniforms(const gl::Program& program) {
     program.set("uFieldAo", 0.6f);
-    program.set("uFieldWater", 0.4f);
     render::setStemSetColours(program, render::StemSetColours{});
 }
 
@@ -122,7 +127,8 @@ gl::Rgba8Image render(const StemSetField& field, const gl::Program& program, glm
     program.use();
     program.set("uViewProj", viewProj(eye, target));
     program.set("uCameraPosition", eye);
-    setLighting(program, grassLighting);
+    const gl::UniformBlock<render::LightingBlock> lighting = uploadLighting(grassLighting);
+    setFieldUniforms(program);
     field.draw(program, levels);
     glFinish();
     return framebuffer.readPixels();
@@ -375,6 +381,7 @@ TEST_F(StemSetRender, EmptyFieldDrawsNothingAndDrawRestoresCulling) {
     glEnable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
     program->use();
+    const gl::UniformBlock<render::LightingBlock> lighting = uploadLighting(0);
     one.draw(*program, 3);
     EXPECT_TRUE(glIsEnabled(GL_CULL_FACE));
     EXPECT_FALSE(glIsEnabled(GL_DEPTH_TEST));

@@ -1,0 +1,29 @@
+#include "render/lighting_block.h"
+
+namespace grass::render {
+
+LightingBlock lightingBlock(const core::GrassLightingDesc& lighting, const core::SunDesc& sun,
+                            glm::vec3 skyColor, glm::vec3 groundColor) {
+    LightingBlock block;
+    block.sunDirection = glm::length(sun.direction) > 0.0f ? glm::normalize(sun.direction)
+                                                           : glm::vec3(0.0f, -1.0f, 0.0f);
+    block.sunColor = sun.color * sun.intensity;
+    block.skyColor = skyColor;
+    block.groundColor = groundColor;
+    block.grassLighting = lighting.model == core::LightingModel::Grass ? 1 : 0;
+    block.diffuseLow = lighting.diffuseLow;
+    block.diffuseMid = lighting.diffuseMid;
+    block.diffuseHigh = lighting.diffuseHigh;
+    block.terrainNormalWeight = lighting.terrainNormalWeight;
+    block.specular = lighting.specular;
+    block.specularFadeM = lighting.specularFadeM;
+    block.transmission = lighting.transmission;
+    block.transmissionDistortion = lighting.transmissionDistortion;
+    block.transmissionPower = lighting.transmissionPower;
+    block.sss = lighting.sss;
+    block.sssIntensity = lighting.sssIntensity;
+    block.fieldWater = 0.5f * (lighting.water.x + lighting.water.y);
+    return block;
+}
+
+}  // namespace grass::render
