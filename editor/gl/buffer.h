@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gl/gl_handle.h"
+#include "gl/gl_ref.h"
 
 namespace grass::gl {
 
@@ -23,6 +24,8 @@ public:
     }
 
     GLuint id() const { return mHandle.id(); }
+    // A view for code that uses the buffer without owning it.
+    operator BufferRef() const { return BufferRef(mHandle); }
     std::size_t size() const { return mSize; }
     void update(std::span<const std::byte> data, std::size_t offset = 0);
     std::vector<std::byte> read(std::size_t offset, std::size_t size) const;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "gl/texture.h"
+
 namespace grass::gl {
 
 namespace {
@@ -89,22 +91,13 @@ Rgba8Image readFramebuffer(GLuint framebuffer, int width, int height) {
 
 DepthTarget makeDepthTarget(int width, int height, const std::string& label) {
     DepthTarget target;
-    GLuint texture = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-    target.texture = TextureHandle(texture);
-    target.texture.setLabel(label);
-    glTextureStorage2D(texture, 1, GL_DEPTH_COMPONENT32F, width, height);
-    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    GLuint framebuffer = 0;
-    glCreateFramebuffers(1, &framebuffer);
-    target.framebuffer = FramebufferHandle(framebuffer);
+    target.texture = makeTexture2D(GL_DEPTH_COMPONENT32F, width, height, 1, label);
+    setClampedFiltering(target.texture, GL_NEAREST, GL_NEAREST);
+    glTextureParameteri(target.texture.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    target.framebuffer = makeFramebuffer();
     target.framebuffer.setLabel(label);
-    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, texture, 0);
-    glNamedFramebufferDrawBuffer(framebuffer, GL_NONE);
+    glNamedFramebufferTexture(target.framebuffer.id(), GL_DEPTH_ATTACHMENT, target.texture.id(), 0);
+    glNamedFramebufferDrawBuffer(target.framebuffer.id(), GL_NONE);
     target.width = width;
     target.height = height;
     return target;

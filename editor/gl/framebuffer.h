@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gl/gl_handle.h"
+#include "gl/gl_ref.h"
 
 namespace grass::gl {
 
@@ -31,6 +32,8 @@ class Framebuffer {
 public:
     Framebuffer(int width, int height, int samples);
     GLuint id() const { return mFramebuffer.id(); }
+    // A view for the passes that draw into it (render::SceneRenderer::render).
+    operator FramebufferRef() const { return FramebufferRef(mFramebuffer); }
     int width() const { return mWidth; }
     int height() const { return mHeight; }
     int samples() const { return mSamples; }

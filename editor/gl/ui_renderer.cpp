@@ -6,6 +6,7 @@
 #include <span>
 
 #include "gl/scoped_capability.h"
+#include "gl/texture.h"
 
 namespace grass::gl {
 
@@ -23,27 +24,10 @@ std::size_t grownCapacity(std::size_t current, std::size_t needed) {
 }
 
 TextureHandle makeTexture(GLenum format, int width, int height, std::string_view label) {
-    GLuint id = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &id);
-    TextureHandle texture(id);
-    glTextureStorage2D(id, 1, format, width, height);
+    TextureHandle texture = makeTexture2D(format, width, height, 1, label);
     // Linear: glyph quads map texels to pixels 1:1 (so this equals nearest), and images scale.
-    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    texture.setLabel(label);
+    setClampedFiltering(texture, GL_LINEAR, GL_LINEAR);
     return texture;
-}
-
-// Uploads tightly packed rows (row 0 = top of the image = t 0, matching ui uv (0, 0) at the
-// top-left).
-void uploadPixels(GLuint texture, int width, int height, GLenum format, const void* pixels) {
-    GLint alignment = 4;
-    glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(texture, 0, 0, 0, width, height, format, GL_UNSIGNED_BYTE, pixels);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
 }
 
 }  // namespace
@@ -56,28 +40,14 @@ Result<UiRenderer> UiRenderer::create() {
     UiRenderer renderer;
     renderer.mProgram = std::move(*program);
 
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    renderer.mVertexArray = VertexArrayHandle(vao);
-    renderer.mVertexArray.setLabel("ui");
-    struct Attribute {
-        GLint size;
-        GLenum type;
-        GLboolean normalised;
-        GLuint offset;
-    };
-    const Attribute attributes[] = {
-        {2, GL_FLOAT, GL_FALSE, offsetof(ui::Vertex, pos)},
-        {2, GL_FLOAT, GL_FALSE, offsetof(ui::Vertex, uv)},
+    renderer.mVertexArray = VertexArray("ui");
+    const VertexAttribute attributes[] = {
+        {2, offsetof(ui::Vertex, pos)},
+        {2, offsetof(ui::Vertex, uv)},
         // Colour bytes 0..255 arrive as 0..1.
-        {4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(ui::Vertex, color)},
+        {4, offsetof(ui::Vertex, color), GL_UNSIGNED_BYTE, true},
     };
-    for (GLuint i = 0; i < std::size(attributes); ++i) {
-        glEnableVertexArrayAttrib(vao, i);
-        glVertexArrayAttribFormat(vao, i, attributes[i].size, attributes[i].type,
-                                  attributes[i].normalised, attributes[i].offset);
-        glVertexArrayAttribBinding(vao, i, 0);
-    }
+    renderer.mVertexArray.setAttributes(attributes);
     renderer.reserve(INITIAL_BUFFER_BYTES, INITIAL_BUFFER_BYTES);
     return renderer;
 }
@@ -88,12 +58,12 @@ void UiRenderer::reserve(std::size_t vertexBytes, std::size_t indexBytes) {
     if (vertexBytes > mVertices.size() || mVertices.id() == 0) {
         const std::vector<std::byte> zeros(grownCapacity(mVertices.size(), vertexBytes));
         mVertices = Buffer(zeros, "ui vertices");
-        glVertexArrayVertexBuffer(mVertexArray.id(), 0, mVertices.id(), 0, sizeof(ui::Vertex));
+        mVertexArray.setVertexBuffer(mVertices, sizeof(ui::Vertex));
     }
     if (indexBytes > mIndices.size() || mIndices.id() == 0) {
         const std::vector<std::byte> zeros(grownCapacity(mIndices.size(), indexBytes));
         mIndices = Buffer(zeros, "ui indices");
-        glVertexArrayElementBuffer(mVertexArray.id(), mIndices.id());
+        mVertexArray.setElementBuffer(mIndices);
     }
 }
 
@@ -112,7 +82,8 @@ void UiRenderer::registerTexture(ui::TextureId id, const Rgba8Image& image) {
     }
     TextureHandle texture =
         makeTexture(GL_RGBA8, image.width, image.height, "ui texture " + std::to_string(id.value));
-    uploadPixels(texture.id(), image.width, image.height, GL_RGBA, premultiplied.data());
+    // Row 0 = top of the image = t 0, matching ui uv (0, 0) at the top-left.
+    uploadTexture2D(texture, image.width, image.height, GL_RGBA, premultiplied.data());
     mTextures[id.value] = texture.id();
     mOwnedTextures[id.value] = std::move(texture);
 }
@@ -134,7 +105,7 @@ void UiRenderer::uploadFont(const ui::FontAtlas& font) {
         glTextureParameteriv(mFontTexture.id(), GL_TEXTURE_SWIZZLE_RGBA, swizzle);
         mFontHeight = font.height();
     }
-    uploadPixels(mFontTexture.id(), font.width(), font.height(), GL_RED, font.pixels().data());
+    uploadTexture2D(mFontTexture, font.width(), font.height(), GL_RED, font.pixels().data());
     mFontVersion = font.version();
 }
 
@@ -180,7 +151,7 @@ void UiRenderer::draw(const std::vector<ui::Mesh>& meshes, const ui::FontAtlas& 
 
     mProgram.use();
     mProgram.set("uScreenSizePt", glm::vec2(framebufferSizePx) / pixelsPerPoint);
-    glBindVertexArray(mVertexArray.id());
+    mVertexArray.bind();
 
     vertexOffset = indexOffset = 0;
     for (const ui::Mesh& mesh : meshes) {

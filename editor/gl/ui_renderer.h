@@ -25,6 +25,7 @@
 #include "gl/framebuffer.h"
 #include "gl/gl_handle.h"
 #include "gl/program.h"
+#include "gl/vertex_array.h"
 #include "ui/font.h"
 #include "ui/mesh.h"
 
@@ -58,7 +59,7 @@ private:
     void reserve(std::size_t vertexBytes, std::size_t indexBytes);
 
     Program mProgram;
-    VertexArrayHandle mVertexArray;
+    VertexArray mVertexArray;
     Buffer mVertices;
     Buffer mIndices;
     TextureHandle mFontTexture;

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "gl/scoped_capability.h"
+#include "gl/texture.h"
 
 namespace grass::render {
 
@@ -40,26 +41,15 @@ bool sphereOutside(const std::array<glm::vec4, 6>& planes, glm::vec3 centre, flo
 }
 
 gl::TextureHandle uploadTexture(const Rgba8Pixels& image, std::string_view label) {
-    GLuint id = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &id);
-    gl::TextureHandle texture(id);
     const auto largest = static_cast<unsigned>(std::max({image.width, image.height, 1}));
-    const auto levels = static_cast<GLsizei>(std::bit_width(largest));
-    glTextureStorage2D(id, levels, GL_RGBA8, image.width, image.height);
-    GLint alignment = 4;
-    glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    const auto levels = static_cast<int>(std::bit_width(largest));
+    gl::TextureHandle texture =
+        gl::makeTexture2D(GL_RGBA8, image.width, image.height, levels, label);
     // Row 0 (the image's top) goes to t = 0: the star vertices' v = 0 at their tops matches.
-    glTextureSubImage2D(id, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                        image.pixels.data());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
-    glGenerateTextureMipmap(id);
-    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    // Clamp: repeating would bleed the blade tips at the top into the roots at the bottom.
-    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    texture.setLabel(label);
+    gl::uploadTexture2D(texture, image.width, image.height, GL_RGBA, image.pixels.data());
+    glGenerateTextureMipmap(texture.id());
+    // Clamped: repeating would bleed the blade tips at the top into the roots at the bottom.
+    gl::setClampedFiltering(texture, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
     return texture;
 }
 
@@ -88,27 +78,15 @@ Result<BillboardField> BillboardField::create(const std::vector<core::GrassObjec
         gl::Buffer::fromVector(core::starQuadIndices(field.mObjectCount), name + " indices", 0);
     field.mTexture = uploadTexture(texture, name + " texture");
 
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    field.mVertexArray = gl::VertexArrayHandle(vao);
-    field.mVertexArray.setLabel(name);
-    glVertexArrayVertexBuffer(vao, 0, field.mVertices.id(), 0, sizeof(core::StarVertex));
-    glVertexArrayElementBuffer(vao, field.mIndices.id());
-    struct Attribute {
-        GLint size;
-        GLuint offset;
-    };
-    const Attribute attributes[] = {
+    field.mVertexArray = gl::VertexArray(name);
+    field.mVertexArray.setVertexBuffer(field.mVertices, sizeof(core::StarVertex));
+    field.mVertexArray.setElementBuffer(field.mIndices);
+    const gl::VertexAttribute attributes[] = {
         {3, offsetof(core::StarVertex, position)}, {2, offsetof(core::StarVertex, uv)},
         {3, offsetof(core::StarVertex, normal)},   {3, offsetof(core::StarVertex, objectCentre)},
         {1, offsetof(core::StarVertex, sway)},
     };
-    for (GLuint i = 0; i < std::size(attributes); ++i) {
-        glEnableVertexArrayAttrib(vao, i);
-        glVertexArrayAttribFormat(vao, i, attributes[i].size, GL_FLOAT, GL_FALSE,
-                                  attributes[i].offset);
-        glVertexArrayAttribBinding(vao, i, 0);
-    }
+    field.mVertexArray.setAttributes(attributes);
     return field;
 }
 
@@ -161,7 +139,7 @@ void BillboardField::draw(const BillboardDrawParams& params) {
     mProgram.set("uAlphaCutoff",
                  sampleBuffers > 0 ? ALPHA_CUTOFF_MULTISAMPLED : ALPHA_CUTOFF_SINGLE_SAMPLED);
     glBindTextureUnit(BILLBOARD_TEXTURE_UNIT, mTexture.id());
-    glBindVertexArray(mVertexArray.id());
+    mVertexArray.bind();
 
     // Index ranges: 18 indices for the 12 vertices of each object.
     const auto indexCount = [](const core::StarCluster& cluster) {

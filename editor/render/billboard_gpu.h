@@ -13,6 +13,7 @@
 // otherwise.
 #pragma once
 
+#include <cstdint>
 #include <string_view>
 #include <vector>
 
@@ -22,11 +23,12 @@
 #include "gl/buffer.h"
 #include "gl/gl_handle.h"
 #include "gl/program.h"
+#include "gl/vertex_array.h"
 #include "util/image_file.h"
 
 namespace grass::render {
 
-inline constexpr GLuint BILLBOARD_TEXTURE_UNIT = 0;
+inline constexpr std::uint32_t BILLBOARD_TEXTURE_UNIT = 0;
 
 using BillboardWindMode = core::BillboardWindMode;
 
@@ -66,7 +68,7 @@ private:
     gl::Program mProgram;
     gl::Buffer mVertices;
     gl::Buffer mIndices;
-    gl::VertexArrayHandle mVertexArray;
+    gl::VertexArray mVertexArray;
     gl::TextureHandle mTexture;
     std::vector<core::StarCluster> mClusters;
     std::size_t mObjectCount = 0;

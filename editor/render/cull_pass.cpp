@@ -1,14 +1,16 @@
 #include "render/cull_pass.h"
 
 #include <array>
+#include <cstdint>
 
+#include "gl/scoped_framebuffer.h"
 #include "util/assert.h"
 
 namespace grass::render {
 
 namespace {
-constexpr GLuint COUNTER_BINDING = 7;
-constexpr GLuint WORK_GROUP_SIZE = 32;  // local_size_x of shaders/cull.comp
+constexpr std::uint32_t COUNTER_BINDING = 7;
+constexpr std::uint32_t WORK_GROUP_SIZE = 32;  // local_size_x of shaders/cull.comp
 constexpr std::size_t COUNTER_COUNT = 8;
 }  // namespace
 
@@ -18,7 +20,7 @@ Result<CullPass> CullPass::create() {
         return program.error();
     CullPass pass;
     pass.mProgram = std::move(*program);
-    const std::array<GLuint, COUNTER_COUNT> zeros{};
+    const std::array<std::uint32_t, COUNTER_COUNT> zeros{};
     pass.mCounters = gl::Buffer(std::as_bytes(std::span(zeros)), "cull counters");
     return pass;
 }
@@ -45,16 +47,15 @@ void CullPass::resizeDepth(int width, int height) {
 
 void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
                    const CullSettings& settings, const std::function<void()>& drawOpaque) {
-    GLint previousFramebuffer = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
     resizeDepth(std::max(view.width, 1), std::max(view.height, 1));
     if (settings.occlusion) {
         const float clearDepth = 1.0f;
         glClearNamedFramebufferfv(mDepth.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
-        glBindFramebuffer(GL_FRAMEBUFFER, mDepth.framebuffer.id());
-        glViewport(0, 0, mDepth.width, mDepth.height);
-        drawOpaque();
-        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
+        {
+            const gl::ScopedFramebuffer depthPass(mDepth.framebuffer, mDepth.width, mDepth.height);
+            drawOpaque();
+        }
+        // The frame goes on in the view's viewport, whatever the caller had set.
         glViewport(0, 0, view.width, view.height);
         // The compute shader samples what the pre-pass wrote.
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -63,7 +64,7 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
     const gl::Program& program = settings.snow ? snowProgram() : mProgram;
     mStatsValid = settings.collectStats;
     if (settings.collectStats) {
-        const GLuint zero = 0;
+        const std::uint32_t zero = 0;
         glClearNamedBufferData(mCounters.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     }
     program.use();
@@ -91,8 +92,8 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
         field.bindForCull();
         program.set("uBladeCount", static_cast<unsigned>(field.bladeCount()));
         program.set("uPatchSize", std::max(field.patchSize(), 1u));
-        const auto groups =
-            static_cast<GLuint>((field.bladeCount() + WORK_GROUP_SIZE - 1) / WORK_GROUP_SIZE);
+        const auto groups = static_cast<std::uint32_t>((field.bladeCount() + WORK_GROUP_SIZE - 1) /
+                                                       WORK_GROUP_SIZE);
         glDispatchCompute(groups, 1, 1);
     }
     glBindTextureUnit(0, 0);
@@ -106,7 +107,7 @@ CullStats CullPass::readStats(const std::vector<FieldGpu>& fields) const {
     CullStats stats;
     if (!mStatsValid)
         return stats;
-    std::array<GLuint, COUNTER_COUNT> counters{};
+    std::array<std::uint32_t, COUNTER_COUNT> counters{};
     glGetNamedBufferSubData(mCounters.id(), 0, sizeof counters, counters.data());
     stats.bladesIn = counters[0];
     stats.culledPatch = counters[1];

@@ -19,8 +19,8 @@ using CommandArray = std::array<DrawArraysIndirectCommand, 2 * LOD_COUNT>;
 CommandArray emptyCommands(int segments) {
     CommandArray commands{};
     for (int lod = 0; lod < LOD_COUNT; ++lod) {
-        commands[lod] = {static_cast<GLuint>(stripVertexCount(lodSegments(segments, lod))), 0, 0,
-                         0};
+        commands[lod] = {static_cast<std::uint32_t>(stripVertexCount(lodSegments(segments, lod))),
+                         0, 0, 0};
         // One patch vertex, one instance per blade (blade_tess.vert says why).
         commands[LOD_COUNT + lod] = {1, 0, 0, 0};
     }
@@ -57,13 +57,11 @@ FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
     if (bounds.empty())
         bounds.resize(2, glm::vec4(0.0f));
     mPatchBounds = gl::Buffer::fromVector(bounds, "patch bounds " + field.name);
-    const std::vector<GLuint> visible(LOD_COUNT * std::max<std::size_t>(mBladeCount, 1), 0);
+    const std::vector<std::uint32_t> visible(LOD_COUNT * std::max<std::size_t>(mBladeCount, 1), 0);
     mVisible = gl::Buffer::fromVector(visible, "visible blades " + field.name);
     const CommandArray commands = emptyCommands(1);
     mCommands = gl::Buffer(std::as_bytes(std::span(commands)), "draw commands " + field.name);
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    mEmptyVertexArray = gl::VertexArrayHandle(vao);
+    mEmptyVertexArray = gl::VertexArray("no vertices " + field.name);
 }
 
 void FieldGpu::uploadPatches(std::span<const std::uint32_t> patches, bool withShading) {
@@ -124,7 +122,7 @@ std::array<std::size_t, LOD_COUNT> FieldGpu::readDrawnCounts() const {
 }
 
 void FieldGpu::bindForDraw() const {
-    glBindVertexArray(mEmptyVertexArray.id());
+    mEmptyVertexArray.bind();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mBlades.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, VISIBLE_BINDING, mVisible.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SHADING_BINDING, mShading.id());

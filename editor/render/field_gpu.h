@@ -6,22 +6,23 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
 #include "gl/buffer.h"
-#include "gl/gl_handle.h"
 #include "gl/program.h"
+#include "gl/vertex_array.h"
 #include "scene/scene.h"
 
 namespace grass::render {
 
 // Matches GL's DrawArraysIndirectCommand.
 struct DrawArraysIndirectCommand {
-    GLuint count;
-    GLuint instanceCount;
-    GLuint first;
-    GLuint baseInstance;
+    std::uint32_t count;
+    std::uint32_t instanceCount;
+    std::uint32_t first;
+    std::uint32_t baseInstance;
 };
 static_assert(sizeof(DrawArraysIndirectCommand) == 16);
 
@@ -36,13 +37,13 @@ int lodSegments(int fullSegments, int lod);
 int stripVertexCount(int segments);
 
 // SSBO bindings shared with shaders/cull.comp and shaders/include/visible.glsl.
-inline constexpr GLuint PATCH_BOUNDS_BINDING = 1;
-inline constexpr GLuint VISIBLE_BINDING = 5;
-inline constexpr GLuint COMMAND_BINDING = 6;
+inline constexpr std::uint32_t PATCH_BOUNDS_BINDING = 1;
+inline constexpr std::uint32_t VISIBLE_BINDING = 5;
+inline constexpr std::uint32_t COMMAND_BINDING = 6;
 // shaders/include/blade_shading.glsl: the baked lighting inputs, one per blade slot.
-inline constexpr GLuint SHADING_BINDING = 9;
+inline constexpr std::uint32_t SHADING_BINDING = 9;
 // shaders/cull.comp writes, shaders/include/blade_shade.glsl reads: snow on each blade's tip.
-inline constexpr GLuint TIP_SNOW_BINDING = 10;
+inline constexpr std::uint32_t TIP_SNOW_BINDING = 10;
 
 class FieldGpu {
 public:
@@ -51,7 +52,7 @@ public:
     // Blade slots, padding included (a whole number of patches).
     std::size_t bladeCount() const { return mBladeCount; }
     std::uint32_t patchSize() const { return mField->patched.patchSize; }
-    GLuint bladeBuffer() const { return mBlades.id(); }
+    const gl::Buffer& bladeBuffer() const { return mBlades; }
 
     // Re-uploads the blades (and, when `withShading`, the shading) of these patches from the
     // layer after core::regrowLayerRegion changed them; the rest of the buffers stay.
@@ -85,7 +86,7 @@ private:
     gl::Buffer mVisible;
     gl::Buffer mCommands;
     gl::Buffer mTipSnow;
-    gl::VertexArrayHandle mEmptyVertexArray;  // core profile needs a VAO bound to draw
+    gl::VertexArray mEmptyVertexArray;  // core profile needs a VAO bound to draw
 };
 
 }  // namespace grass::render

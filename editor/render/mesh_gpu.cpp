@@ -26,33 +26,26 @@ MeshGpu::MeshGpu(const core::SurfaceMesh& mesh) {
     mVertices = gl::Buffer::fromVector(vertices, "mesh vertices");
     mIndices = gl::Buffer::fromVector(triangles, "mesh indices");
 
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    mVertexArray = gl::VertexArrayHandle(vao);
-    mVertexArray.setLabel("mesh");
-    glVertexArrayVertexBuffer(vao, 0, mVertices.id(), 0, sizeof(MeshVertex));
-    glVertexArrayElementBuffer(vao, mIndices.id());
-    const GLuint offsets[3] = {offsetof(MeshVertex, position), offsetof(MeshVertex, normal),
-                               offsetof(MeshVertex, uv)};
-    const GLint sizes[3] = {3, 3, 2};
-    for (GLuint i = 0; i < 3; ++i) {
-        glEnableVertexArrayAttrib(vao, i);
-        glVertexArrayAttribFormat(vao, i, sizes[i], GL_FLOAT, GL_FALSE, offsets[i]);
-        glVertexArrayAttribBinding(vao, i, 0);
-    }
+    mVertexArray = gl::VertexArray("mesh");
+    mVertexArray.setVertexBuffer(mVertices, sizeof(MeshVertex));
+    mVertexArray.setElementBuffer(mIndices);
+    const gl::VertexAttribute attributes[] = {{3, offsetof(MeshVertex, position)},
+                                              {3, offsetof(MeshVertex, normal)},
+                                              {2, offsetof(MeshVertex, uv)}};
+    mVertexArray.setAttributes(attributes);
 }
 
 void MeshGpu::draw() const {
     if (mIndexCount == 0)
         return;
-    glBindVertexArray(mVertexArray.id());
+    mVertexArray.bind();
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mIndexCount), GL_UNSIGNED_INT, nullptr);
 }
 
 void MeshGpu::drawPatches() const {
     if (mIndexCount == 0)
         return;
-    glBindVertexArray(mVertexArray.id());
+    mVertexArray.bind();
     glPatchParameteri(GL_PATCH_VERTICES, 3);
     glDrawElements(GL_PATCHES, static_cast<GLsizei>(mIndexCount), GL_UNSIGNED_INT, nullptr);
 }

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "gl/buffer.h"
-#include "gl/gl_handle.h"
+#include "gl/vertex_array.h"
 #include "mesh/surface_mesh.h"
 
 namespace grass::render {
@@ -18,7 +18,7 @@ public:
 private:
     gl::Buffer mVertices;
     gl::Buffer mIndices;
-    gl::VertexArrayHandle mVertexArray;
+    gl::VertexArray mVertexArray;
     std::size_t mIndexCount = 0;
 };
 

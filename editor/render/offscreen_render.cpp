@@ -13,8 +13,7 @@ Result<OffscreenResult> renderOffscreen(const core::Scene& scene, const core::Or
     OffscreenResult result;
     for (int frame = 0; frame < std::max(request.frames, 1); ++frame) {
         const auto start = std::chrono::steady_clock::now();
-        (*renderer)->render(camera, request.width, request.height, framebuffer.id(),
-                            request.options);
+        (*renderer)->render(camera, request.width, request.height, framebuffer, request.options);
         glFinish();
         const std::chrono::duration<double, std::milli> elapsed =
             std::chrono::steady_clock::now() - start;

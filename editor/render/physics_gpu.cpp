@@ -76,8 +76,8 @@ void PhysicsGpu::setGravityLoad(std::span<const float> perBlade) {
                                     : gl::Buffer(std::as_bytes(perBlade), "physics gravity load");
 }
 
-void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::PhysicsParams& params,
-                      const std::vector<core::WindSource>& wind,
+void PhysicsGpu::step(gl::BufferRef bladeBuffer, std::size_t bladeCount,
+                      const core::PhysicsParams& params, const std::vector<core::WindSource>& wind,
                       const std::vector<core::SphereCollider>& colliders, float timeS,
                       float gravityLoadScale) {
     GRASS_ASSERT(bladeCount == mBladeCount);
@@ -128,7 +128,7 @@ void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::Ph
     mProgram.set("gravityLoadScale", loaded ? gravityLoadScale : 0.0f);
     if (loaded)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, mGravityLoad.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bladeBuffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bladeBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, mParams.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, mEta.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, mRestTips.id());
@@ -144,7 +144,7 @@ void PhysicsGpu::step(GLuint bladeBuffer, std::size_t bladeCount, const core::Ph
     for (std::size_t first = 0; first < bladeCount; first += LOCAL_SIZE * MAX_GROUPS) {
         const std::size_t count = std::min(bladeCount - first, LOCAL_SIZE * MAX_GROUPS);
         mProgram.set("firstBlade", static_cast<unsigned>(first));
-        glDispatchCompute(static_cast<GLuint>((count + LOCAL_SIZE - 1) / LOCAL_SIZE), 1, 1);
+        glDispatchCompute(static_cast<std::uint32_t>((count + LOCAL_SIZE - 1) / LOCAL_SIZE), 1, 1);
     }
     // Blades feed the draws (SSBO reads) and read-backs; η feeds the next step.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

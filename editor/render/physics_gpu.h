@@ -14,8 +14,9 @@
 #include <vector>
 
 #include "gl/buffer.h"
-#include "physics/physics.h"
+#include "gl/gl_ref.h"
 #include "gl/program.h"
+#include "physics/physics.h"
 #include "util/result.h"
 
 namespace grass::render {
@@ -55,7 +56,7 @@ public:
     // One step of params.dtS from timeS for bladeCount blades of bladeBuffer (the count given to
     // reset), with |gE| of blade i raised by gravityLoadScale · perBlade[i] (setGravityLoad).
     // Ends with a barrier, so later draws and buffer reads see the new blades.
-    void step(GLuint bladeBuffer, std::size_t bladeCount, const core::PhysicsParams& params,
+    void step(gl::BufferRef bladeBuffer, std::size_t bladeCount, const core::PhysicsParams& params,
               const std::vector<core::WindSource>& wind,
               const std::vector<core::SphereCollider>& colliders, float timeS,
               float gravityLoadScale = 0.0f);

@@ -5,7 +5,7 @@
 namespace grass::render {
 
 Result<ScenePhysicsGpu> ScenePhysicsGpu::createOn(const core::Scene& scene,
-                                                  const std::vector<GLuint>& bladeBuffers) {
+                                                  const std::vector<gl::BufferRef>& bladeBuffers) {
     GRASS_ASSERT(bladeBuffers.size() == scene.layers.size());
     ScenePhysicsGpu out;
     for (std::size_t i = 0; i < scene.layers.size(); ++i) {
@@ -22,13 +22,13 @@ Result<ScenePhysicsGpu> ScenePhysicsGpu::createOn(const core::Scene& scene,
 
 Result<ScenePhysicsGpu> ScenePhysicsGpu::create(const core::Scene& scene) {
     std::vector<gl::Buffer> uploaded;
-    std::vector<GLuint> ids;
+    std::vector<gl::BufferRef> views;
     for (const core::LayerField& field : scene.layers) {
         uploaded.push_back(
             gl::Buffer::fromVector(field.patched.blades, "physics blades: " + field.name));
-        ids.push_back(uploaded.back().id());
+        views.push_back(uploaded.back());
     }
-    auto out = createOn(scene, ids);
+    auto out = createOn(scene, views);
     if (!out)
         return out.error();
     for (std::size_t i = 0; i < uploaded.size(); ++i)
@@ -69,7 +69,8 @@ void ScenePhysicsGpu::readBack(core::Scene& scene, core::SceneSimulation& simula
         if (layer.bladeCount == 0)
             continue;
         const std::size_t bytes = layer.bladeCount * sizeof(core::Blade);
-        glGetNamedBufferSubData(layer.blades, 0, static_cast<GLsizeiptr>(bytes), blades.data());
+        glGetNamedBufferSubData(layer.blades.id(), 0, static_cast<GLsizeiptr>(bytes),
+                                blades.data());
         simulation.eta(i) = layer.physics.readEta();
     }
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "gl/buffer.h"
+#include "gl/gl_ref.h"
 #include "render/physics_gpu.h"
 #include "scene/scene_physics.h"
 
@@ -18,7 +19,7 @@ public:
     // Steps blade buffers that already hold the layers' blades (the renderer's, so the viewport
     // shows the simulation without copies); one buffer per layer, owned by the caller.
     static Result<ScenePhysicsGpu> createOn(const core::Scene& scene,
-                                            const std::vector<GLuint>& bladeBuffers);
+                                            const std::vector<gl::BufferRef>& bladeBuffers);
 
     // One step of physics.params.dtS from timeS on every layer (asynchronous: no glFinish).
     void step(const core::ScenePhysics& physics, float timeS);
@@ -32,7 +33,7 @@ public:
 private:
     struct Layer {
         gl::Buffer ownBlades;  // empty when stepping the caller's buffer
-        GLuint blades = 0;
+        gl::BufferRef blades;
         std::size_t bladeCount = 0;
         PhysicsGpu physics;
         bool loadUploaded = false;  // the snow load per metre (ScenePhysics) is on the GPU

@@ -102,8 +102,8 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
 }
 
 void SceneRenderer::render(const core::OrbitCamera& camera, int width, int height,
-                           GLuint framebuffer, const RenderOptions& options) {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+                           gl::FramebufferRef framebuffer, const RenderOptions& options) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
     glViewport(0, 0, width, height);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -369,11 +369,11 @@ void SceneRenderer::drawOpaque(const RenderOptions& options, bool shaded) {
     }
 }
 
-std::vector<GLuint> SceneRenderer::bladeBuffers() const {
-    std::vector<GLuint> ids;
+std::vector<gl::BufferRef> SceneRenderer::bladeBuffers() const {
+    std::vector<gl::BufferRef> buffers;
     for (const FieldGpu& field : mFields)
-        ids.push_back(field.bladeBuffer());
-    return ids;
+        buffers.push_back(field.bladeBuffer());
+    return buffers;
 }
 
 FrameTimings SceneRenderer::lastTimings() const {

@@ -9,19 +9,20 @@
 #include <string>
 #include <vector>
 
+#include "gl/gl_ref.h"
+#include "gl/program.h"
+#include "gl/timer_query.h"
+#include "gl/uniform_block.h"
+#include "project/project.h"
 #include "render/billboard_gpu.h"
 #include "render/cull_pass.h"
-#include "render/snow_pass.h"
 #include "render/field_gpu.h"
 #include "render/lighting_block.h"
 #include "render/mesh_gpu.h"
-#include "gl/program.h"
-#include "gl/uniform_block.h"
+#include "render/snow_pass.h"
 #include "render/stem_set_gpu.h"
-#include "project/project.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
-#include "gl/timer_query.h"
 
 namespace grass::render {
 
@@ -99,13 +100,13 @@ public:
     // Compiles the programs; the error names the shader file and line.
     static Result<std::unique_ptr<SceneRenderer>> create(const core::Scene& scene);
 
-    // Draws into `framebuffer` (0 = the window's), viewport width × height.
-    void render(const core::OrbitCamera& camera, int width, int height, GLuint framebuffer,
-                const RenderOptions& options);
+    // Draws into `framebuffer` (a gl::Framebuffer, or 0 = the window's), viewport width × height.
+    void render(const core::OrbitCamera& camera, int width, int height,
+                gl::FramebufferRef framebuffer, const RenderOptions& options);
     // Waits for the timer queries of the last render().
     FrameTimings lastTimings() const;
     // The blade buffer of each layer (SSBO layout of core::Blade), for physics to step in place.
-    std::vector<GLuint> bladeBuffers() const;
+    std::vector<gl::BufferRef> bladeBuffers() const;
     // After core::regrowLayerRegion changed layer `layer` of the scene: re-uploads the regrown
     // patches' blades and stem sets and the re-baked shading; nothing else moves.
     void uploadRegrown(std::size_t layer, const core::RegrowReport& report);

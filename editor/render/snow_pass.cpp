@@ -1,5 +1,7 @@
 #include "render/snow_pass.h"
 
+#include "gl/scoped_framebuffer.h"
+
 namespace grass::render {
 
 Result<SnowPass> SnowPass::create() {
@@ -18,14 +20,9 @@ void SnowPass::run(const core::OrthoSnowView& view, int resolution,
         mResolution = resolution;
     }
     mView = view;
-    GLint previousFramebuffer = 0;
-    GLint previousViewport[4] = {0, 0, 0, 0};
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
-    glGetIntegerv(GL_VIEWPORT, previousViewport);
     const float clearDepth = 1.0f;  // nothing above: every point is exposed
     glClearNamedFramebufferfv(mDepth.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
-    glBindFramebuffer(GL_FRAMEBUFFER, mDepth.framebuffer.id());
-    glViewport(0, 0, resolution, resolution);
+    const gl::ScopedFramebuffer depthPass(mDepth.framebuffer, resolution, resolution);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     // Texel-centre sampling, like core::renderSnowDepthMap: no multisampling.
@@ -34,8 +31,6 @@ void SnowPass::run(const core::OrthoSnowView& view, int resolution,
     mProgram.use();
     draw(mProgram);
     glEnable(GL_MULTISAMPLE);
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previousFramebuffer));
-    glViewport(previousViewport[0], previousViewport[1], previousViewport[2], previousViewport[3]);
 }
 
 void SnowPass::bind(const core::SnowParams& params, float amountM) {

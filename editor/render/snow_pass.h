@@ -6,7 +6,7 @@
 #include <functional>
 
 #include "gl/framebuffer.h"
-#include "gl/gl_handle.h"
+#include "gl/gl_ref.h"
 #include "gl/program.h"
 #include "gl/uniform_block.h"
 #include "render/snow_block.h"
@@ -30,7 +30,7 @@ public:
     // the map on SNOW_MAP_UNIT.
     void bind(const core::SnowParams& params, float amountM);
     // The depth texture (depth / depthRange), for tests.
-    GLuint depthTexture() const { return mDepth.texture.id(); }
+    gl::TextureRef depthTexture() const { return mDepth.texture; }
     const core::OrthoSnowView& view() const { return mView; }
 
 private:

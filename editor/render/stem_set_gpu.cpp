@@ -108,11 +108,8 @@ StemSetField::StemSetField(const std::vector<core::StemSetInstance>& instances,
         indices.insert(indices.end(), list.begin(), list.end());
     }
     mIndices = gl::Buffer::fromVector(indices, label + " indices", 0);
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    mVertexArray = gl::VertexArrayHandle(vao);
-    mVertexArray.setLabel(label);
-    glVertexArrayElementBuffer(vao, mIndices.id());
+    mVertexArray = gl::VertexArray(label);
+    mVertexArray.setElementBuffer(mIndices);
 }
 
 void StemSetField::update(std::size_t first, std::span<const core::StemSetInstance> instances) {
@@ -129,7 +126,7 @@ void StemSetField::draw(const gl::Program& program, int levels) const {
     program.set("uLevels", drawnLevels);
     const ScopedCapability depthTest(GL_DEPTH_TEST, true);
     const ScopedCapability cullFace(GL_CULL_FACE, false);
-    glBindVertexArray(mVertexArray.id());
+    mVertexArray.bind();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, STEM_SET_BINDING, mInstances.id());
     glDrawElementsInstanced(GL_TRIANGLES, stemSetIndexCount(drawnLevels), GL_UNSIGNED_INT,
                             reinterpret_cast<const void*>(indexOffsetBytes(drawnLevels)),

@@ -17,6 +17,7 @@
 // (stemSetFrame(up, yaw) · p). shaders/include/stem_set.glsl holds the same formulas.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -24,19 +25,19 @@
 #include <glm/glm.hpp>
 
 #include "gl/buffer.h"
-#include "gl/gl_handle.h"
-#include "growth/growth_stems.h"
 #include "gl/program.h"
+#include "gl/vertex_array.h"
+#include "growth/growth_stems.h"
 #include "util/result.h"
 
 namespace grass::render {
 
 // SSBO of the instances (shaders/stem_set.vert). 0–9 are taken by the blade passes.
-inline constexpr GLuint STEM_SET_BINDING = 10;
+inline constexpr std::uint32_t STEM_SET_BINDING = 10;
 // Only in programs built with the define STEM_SET_CAPTURE (tests): for vertex v of instance i,
 // the vertex shader writes the world position (w = 1) and the unit world normal (w = 0, not
 // turned to any viewer) to vec4 2·(i · vertices per set + v) and the one after it.
-inline constexpr GLuint STEM_SET_CAPTURE_BINDING = 11;
+inline constexpr std::uint32_t STEM_SET_CAPTURE_BINDING = 11;
 
 // Vertices of one set's template mesh at `levels` (clamped to 1..4): 6 · 2 · 5 · levels.
 int stemSetVertexCount(int levels);
@@ -86,7 +87,7 @@ private:
     gl::Buffer mInstances;
     // The index lists of levels 1, 2, 3, 4, one after another.
     gl::Buffer mIndices;
-    gl::VertexArrayHandle mVertexArray;  // no attributes: holds the index buffer
+    gl::VertexArray mVertexArray;  // no attributes: holds the index buffer
 };
 
 }  // namespace grass::render

@@ -16,7 +16,7 @@ Result<void> renderTurntable(const core::Scene& scene, const core::OrbitCamera& 
     for (int frame = 0; frame < frameCount; ++frame) {
         const auto begin = std::chrono::steady_clock::now();
         (*renderer)->render(core::turntableCamera(start, frame, frameCount), request.width,
-                            request.height, framebuffer.id(), request.options);
+                            request.height, framebuffer, request.options);
         glFinish();
         const std::chrono::duration<double, std::milli> elapsed =
             std::chrono::steady_clock::now() - begin;

@@ -133,14 +133,14 @@ void runGpu(benchmark::State& state, Scenario scenario) {
     gl::GpuTimer timer;
     float timeS = 0.0f;
     // One untimed step: the driver compiles the shader on first use.
-    physics->step(blades.id(), count, forces.params, forces.wind, forces.colliders, timeS);
+    physics->step(blades, count, forces.params, forces.wind, forces.colliders, timeS);
     glFinish();
     double queryMs = 0.0;
     for (auto _ : state) {
         timeS += forces.params.dtS;
         const auto start = std::chrono::steady_clock::now();
         timer.begin();
-        physics->step(blades.id(), count, forces.params, forces.wind, forces.colliders, timeS);
+        physics->step(blades, count, forces.params, forces.wind, forces.colliders, timeS);
         timer.end();
         glFinish();
         state.SetIterationTime(

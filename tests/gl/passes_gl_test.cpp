@@ -44,7 +44,7 @@ public:
         const core::OrbitCamera camera =
             core::OrbitCamera::lookAt({0.0f, 2.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, 0.8f);
         gl::Framebuffer framebuffer(64, 64, 0);
-        mRenderer->render(camera, 64, 64, framebuffer.id(), options);
+        mRenderer->render(camera, 64, 64, framebuffer, options);
         const render::FrameTimings timings = mRenderer->lastTimings();
         return {timings.passes, timings.allocated};
     }
@@ -107,15 +107,15 @@ TEST_F(PassesGlTest, PhysicsHoldsNoWindOrColliderBuffersWithoutThem) {
     physics->reset(blades);
     gl::Buffer buffer = gl::Buffer::fromVector(blades, "passes test blades");
     const core::PhysicsParams params;
-    physics->step(buffer.id(), blades.size(), params, {}, {}, 0.0f);
+    physics->step(buffer, blades.size(), params, {}, {}, 0.0f);
     EXPECT_TRUE(physics->allocated().empty());
 
     core::WindSource wind;
     wind.strength = 2.0f;
-    physics->step(buffer.id(), blades.size(), params, {wind}, {}, 0.1f);
+    physics->step(buffer, blades.size(), params, {wind}, {}, 0.1f);
     EXPECT_EQ(physics->allocated(), (Names{"wind"}));
     core::SphereCollider ball{{0.0f, 0.2f, 0.0f}, 0.3f, {}};
-    physics->step(buffer.id(), blades.size(), params, {wind}, {ball}, 0.2f);
+    physics->step(buffer, blades.size(), params, {wind}, {ball}, 0.2f);
     EXPECT_EQ(physics->allocated(), (Names{"wind", "colliders"}));
 }
 

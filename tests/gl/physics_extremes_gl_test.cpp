@@ -85,7 +85,7 @@ void runExtremesOnGpu(std::optional<core::QualityPreset> preset, float tipTolera
         for (int step = 0; step < EXTREME_STEP_COUNT; ++step) {
             const float timeS = extremeStepTimeS(first, step);
             const std::vector<core::Blade> before = gpu;
-            physics->step(buffer.id(), gpu.size(), params, wind, colliders, timeS);
+            physics->step(buffer, gpu.size(), params, wind, colliders, timeS);
             core::stepPhysics(cpu, cpuEta, tips, params, wind, colliders, timeS, 1);
             gpu = readBlades(buffer, gpu.size());
             const std::vector<float> eta = physics->readEta();
@@ -168,7 +168,7 @@ TEST_F(PhysicsExtremesGpuTest, RepairsDegenerateBladesLikeTheCpu) {
     for (int step = 0; step < 30; ++step) {
         const float timeS = 0.1f * static_cast<float>(step);
         core::stepPhysics(cpu, cpuEta, tips, params, {wind}, {}, timeS, 1);
-        physics->step(buffer.id(), cpu.size(), params, {wind}, {}, timeS);
+        physics->step(buffer, cpu.size(), params, {wind}, {}, timeS);
         const std::vector<core::Blade> gpu = readBlades(buffer, cpu.size());
         const std::vector<float> gpuEta = physics->readEta();
         for (std::size_t i = 0; i < cpu.size(); ++i) {

@@ -106,7 +106,7 @@ TEST_F(PhysicsGpuTest, MatchesCpuReferenceOverThousandSteps) {
     for (int step = 0; step < STEP_COUNT; ++step) {
         const float timeS = static_cast<float>(step) * params.dtS;
         core::stepPhysics(cpu, eta, tips, params, wind, colliders, timeS, 1);
-        physics->step(gpuBlades.id(), cpu.size(), params, wind, colliders, timeS);
+        physics->step(gpuBlades, cpu.size(), params, wind, colliders, timeS);
         for (float e : eta)
             maxEtaCpu = std::max(maxEtaCpu, e);
         if ((step + 1) % CHECK_EVERY != 0)
@@ -170,7 +170,7 @@ TEST_F(PhysicsGpuTest, SnowLoadMatchesCpuReference) {
         const float timeS = static_cast<float>(step) * params.dtS;
         const float snowM = 0.05f + 0.1f * timeS;  // accumulating
         core::stepPhysics(cpu, eta, tips, params, {}, {}, timeS, 1, {perMetre, snowM});
-        physics->step(gpuBlades.id(), cpu.size(), params, {}, {}, timeS, snowM);
+        physics->step(gpuBlades, cpu.size(), params, {}, {}, timeS, snowM);
     }
     const std::vector<core::Blade> gpu = readBlades(gpuBlades, cpu.size());
     for (std::size_t i = 0; i < cpu.size(); ++i) {

@@ -35,7 +35,7 @@ std::vector<std::uint8_t> draw(render::SceneRenderer& renderer, core::GrassTechn
     render::RenderOptions options;
     options.geometry = render::GeometryPath::Strips;
     options.technique = technique;
-    renderer.render(topCamera(), SIDE, SIDE, framebuffer.id(), options);
+    renderer.render(topCamera(), SIDE, SIDE, framebuffer, options);
     return framebuffer.readPixels().pixels;
 }
 

@@ -117,7 +117,7 @@ TEST_F(SceneRenderTest, BladeBufferHoldsFourVec4PerBlade) {
     render::FieldGpu field(layer);
     ASSERT_EQ(field.bladeCount(), layer.patched.blades.size());
     std::vector<core::Blade> readBack(layer.patched.blades.size());
-    glGetNamedBufferSubData(field.bladeBuffer(), 0,
+    glGetNamedBufferSubData(field.bladeBuffer().id(), 0,
                             static_cast<GLsizeiptr>(readBack.size() * sizeof(core::Blade)),
                             readBack.data());
     EXPECT_EQ(std::memcmp(readBack.data(), layer.patched.blades.data(),

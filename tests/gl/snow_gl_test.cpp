@@ -62,7 +62,7 @@ TEST_F(SnowGlTest, TheDepthMapMatchesTheCpuRasteriser) {
         sphere.draw();
     });
     std::vector<float> gpu(std::size_t(RES) * RES);
-    glGetTextureImage(pass->depthTexture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+    glGetTextureImage(pass->depthTexture().id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                       GLsizei(gpu.size() * sizeof(float)), gpu.data());
     // Both sample texel centres; only texels an edge passes exactly through may differ in
     // coverage (GL's tie rule against the CPU's inclusive edges): under 1 % of them. Where both

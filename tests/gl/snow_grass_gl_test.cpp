@@ -64,7 +64,7 @@ Frame renderFrame(render::SceneRenderer& renderer, const render::RenderOptions& 
     const core::OrbitCamera camera =
         core::OrbitCamera::lookAt({0.0f, 5.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, 0.9f);
     gl::Framebuffer framebuffer(SIZE, SIZE, 0);
-    renderer.render(camera, SIZE, SIZE, framebuffer.id(), options);
+    renderer.render(camera, SIZE, SIZE, framebuffer, options);
     glFinish();
     return {renderer.lastTimings().cull, renderer.readTipSnow(0)};
 }
@@ -76,7 +76,7 @@ core::SnowDepthMap readDepthMap(const render::SnowPass& pass, int resolution) {
     map.view = pass.view();
     map.resolution = resolution;
     map.depthM.resize(std::size_t(resolution) * std::size_t(resolution));
-    glGetTextureImage(pass.depthTexture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+    glGetTextureImage(pass.depthTexture().id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                       GLsizei(map.depthM.size() * sizeof(float)), map.depthM.data());
     for (float& depth : map.depthM)
         depth = depth < 1.0f ? depth * map.view.depthRangeM : core::SNOW_MAP_EMPTY;

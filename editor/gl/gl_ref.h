@@ -1,0 +1,42 @@
+// GlRef: a typed view of a GL object that another object owns (a GlHandle, a gl::Buffer, a
+// gl::Framebuffer), for code that uses an object without taking it: physics steps the blade
+// buffers the scene renderer owns, a test reads the snow pass's depth texture. A view never
+// deletes, so its owner must outlive every use. The type keeps a texture from going where a
+// buffer is wanted, which a bare GLuint cannot (STYLE.md §7, as bgfx's typed handles).
+#pragma once
+
+#include "gl/gl_handle.h"
+
+namespace grass::gl {
+
+template <class Traits>
+class GlRef {
+public:
+    GlRef() = default;  // no object
+    // Implicit, as std::string_view from std::string: a view of what the owner holds.
+    GlRef(const GlHandle<Traits>& owner) : mId(owner.id()) {}
+    // A name no wrapper owns; prefer passing the owner.
+    explicit GlRef(GLuint id) : mId(id) {}
+
+    GLuint id() const { return mId; }
+    explicit operator bool() const { return mId != 0; }
+    bool operator==(const GlRef&) const = default;
+
+private:
+    GLuint mId = 0;
+};
+
+using BufferRef = GlRef<BufferTraits>;
+using TextureRef = GlRef<TextureTraits>;
+
+// The framebuffer a pass draws into. Id 0, the window's default framebuffer, belongs to no
+// wrapper (the window toolkit made it), so a raw id converts implicitly here: the editor names
+// the window's framebuffer, and its callers outside the render layers still pass
+// gl::Framebuffer::id(); code that holds a gl::Framebuffer passes the framebuffer itself.
+class FramebufferRef : public GlRef<FramebufferTraits> {
+public:
+    using GlRef::GlRef;
+    FramebufferRef(GLuint id) : GlRef(id) {}
+};
+
+}  // namespace grass::gl
