@@ -40,6 +40,17 @@ bool sphereOutside(const std::array<glm::vec4, 6>& planes, glm::vec3 centre, flo
     return false;
 }
 
+// A cluster's range in the index buffer: 18 indices for the 12 vertices of each object.
+GLsizei clusterIndexCount(const core::StarCluster& cluster) {
+    return static_cast<GLsizei>(cluster.vertexCount / core::STAR_VERTICES_PER_OBJECT *
+                                core::STAR_INDICES_PER_OBJECT);
+}
+const void* clusterIndexOffset(const core::StarCluster& cluster) {
+    const std::size_t first =
+        cluster.firstVertex / core::STAR_VERTICES_PER_OBJECT * core::STAR_INDICES_PER_OBJECT;
+    return reinterpret_cast<const void*>(first * sizeof(std::uint32_t));
+}
+
 gl::TextureHandle uploadTexture(const Rgba8Pixels& image, std::string_view label) {
     const auto largest = static_cast<unsigned>(std::max({image.width, image.height, 1}));
     const auto levels = static_cast<int>(std::bit_width(largest));
@@ -90,15 +101,15 @@ Result<BillboardField> BillboardField::create(const std::vector<core::GrassObjec
     return field;
 }
 
-void BillboardField::draw(const BillboardDrawParams& params) {
-    mDrawnObjects = 0;
-    mDrawCalls = 0;
-    // Clusters that may hold a visible object, back to front. Every object centre lies within
-    // the cluster's radius of its centre, and the fade is 0 outside [in start, out end].
-    // Wind moves upper vertices by at most the amplitude (core::billboardWindOffset).
+// Clusters that may hold a visible object, back to front (ties by index, so the order is
+// deterministic). Every object centre lies within the cluster's radius of its centre, and the
+// fade is 0 outside [in start, out end]. Wind moves upper vertices by at most the amplitude
+// (core::billboardWindOffset).
+std::vector<std::uint32_t> BillboardField::visibleClusters(
+    const BillboardDrawParams& params) const {
     const std::array<glm::vec4, 6> planes = frustumPlanes(params.viewProj);
     const float sway = std::abs(params.wind.amplitudeM);
-    std::vector<std::pair<float, std::uint32_t>> order;
+    std::vector<std::pair<float, std::uint32_t>> byDistance;
     for (std::uint32_t c = 0; c < mClusters.size(); ++c) {
         const core::StarCluster& cluster = mClusters[c];
         if (cluster.vertexCount == 0)
@@ -108,23 +119,20 @@ void BillboardField::draw(const BillboardDrawParams& params) {
             continue;
         if (params.frustumCull && sphereOutside(planes, cluster.centre, cluster.radius + sway))
             continue;
-        order.emplace_back(d, c);
+        byDistance.emplace_back(d, c);
     }
-    if (order.empty())
-        return;
-    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+    std::sort(byDistance.begin(), byDistance.end(), [](const auto& a, const auto& b) {
         return a.first != b.first ? a.first > b.first : a.second < b.second;
     });
+    std::vector<std::uint32_t> order;
+    order.reserve(byDistance.size());
+    for (const auto& entry : byDistance)
+        order.push_back(entry.second);
+    return order;
+}
 
-    GLint sampleBuffers = 0;
-    glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
-    const ScopedCapability alphaToCoverage(GL_SAMPLE_ALPHA_TO_COVERAGE, true);
-    const ScopedCapability depthTest(GL_DEPTH_TEST, true);
-    const ScopedCapability cullFace(GL_CULL_FACE, false);
-    GLboolean depthMask = GL_TRUE;
-    glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
-    glDepthMask(GL_TRUE);
-
+// Binds the program with the uniforms of `params`, the texture and the vertex array.
+void BillboardField::bindForDraw(const BillboardDrawParams& params, bool multisampled) const {
     mProgram.use();
     mProgram.set("uViewProj", params.viewProj);
     mProgram.set("uCameraPos", params.cameraPosWorld);
@@ -137,44 +145,62 @@ void BillboardField::draw(const BillboardDrawParams& params) {
     mProgram.set("uFade", glm::vec4(params.fade.inStartM, params.fade.inEndM, params.fade.outStartM,
                                     params.fade.outEndM));
     mProgram.set("uAlphaCutoff",
-                 sampleBuffers > 0 ? ALPHA_CUTOFF_MULTISAMPLED : ALPHA_CUTOFF_SINGLE_SAMPLED);
+                 multisampled ? ALPHA_CUTOFF_MULTISAMPLED : ALPHA_CUTOFF_SINGLE_SAMPLED);
     glBindTextureUnit(BILLBOARD_TEXTURE_UNIT, mTexture.id());
     mVertexArray.bind();
+}
 
-    // Index ranges: 18 indices for the 12 vertices of each object.
-    const auto indexCount = [](const core::StarCluster& cluster) {
-        return static_cast<GLsizei>(cluster.vertexCount / core::STAR_VERTICES_PER_OBJECT *
-                                    core::STAR_INDICES_PER_OBJECT);
-    };
-    const auto indexOffset = [](const core::StarCluster& cluster) {
-        const std::size_t first =
-            cluster.firstVertex / core::STAR_VERTICES_PER_OBJECT * core::STAR_INDICES_PER_OBJECT;
-        return reinterpret_cast<const void*>(first * sizeof(std::uint32_t));
-    };
-    for (const auto& entry : order)
-        mDrawnObjects += mClusters[entry.second].vertexCount / core::STAR_VERTICES_PER_OBJECT;
-    if (params.mode == BillboardWindMode::PerCluster) {
-        for (const auto& entry : order) {
-            const core::StarCluster& cluster = mClusters[entry.second];
-            mProgram.set("uClusterOffset",
-                         core::billboardWindOffset(cluster.centre, params.timeS, params.wind));
-            glDrawElements(GL_TRIANGLES, indexCount(cluster), GL_UNSIGNED_INT,
-                           indexOffset(cluster));
-            ++mDrawCalls;
-        }
-    } else {
-        std::vector<GLsizei> counts;
-        std::vector<const void*> offsets;
-        counts.reserve(order.size());
-        offsets.reserve(order.size());
-        for (const auto& entry : order) {
-            counts.push_back(indexCount(mClusters[entry.second]));
-            offsets.push_back(indexOffset(mClusters[entry.second]));
-        }
-        glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(),
-                            static_cast<GLsizei>(counts.size()));
+// Per-cluster wind: one draw per cluster, each with the offset the CPU computed for it.
+void BillboardField::drawEachCluster(const std::vector<std::uint32_t>& order,
+                                     const BillboardDrawParams& params) {
+    for (const std::uint32_t c : order) {
+        const core::StarCluster& cluster = mClusters[c];
+        mProgram.set("uClusterOffset",
+                     core::billboardWindOffset(cluster.centre, params.timeS, params.wind));
+        glDrawElements(GL_TRIANGLES, clusterIndexCount(cluster), GL_UNSIGNED_INT,
+                       clusterIndexOffset(cluster));
         ++mDrawCalls;
     }
+}
+
+// Wind in the vertex shader: every cluster in one glMultiDrawElements, in `order`.
+void BillboardField::drawClustersAtOnce(const std::vector<std::uint32_t>& order) {
+    std::vector<GLsizei> counts;
+    std::vector<const void*> offsets;
+    counts.reserve(order.size());
+    offsets.reserve(order.size());
+    for (const std::uint32_t c : order) {
+        counts.push_back(clusterIndexCount(mClusters[c]));
+        offsets.push_back(clusterIndexOffset(mClusters[c]));
+    }
+    glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(),
+                        static_cast<GLsizei>(counts.size()));
+    ++mDrawCalls;
+}
+
+void BillboardField::draw(const BillboardDrawParams& params) {
+    mDrawnObjects = 0;
+    mDrawCalls = 0;
+    const std::vector<std::uint32_t> order = visibleClusters(params);
+    if (order.empty())
+        return;
+
+    GLint sampleBuffers = 0;
+    glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+    const ScopedCapability alphaToCoverage(GL_SAMPLE_ALPHA_TO_COVERAGE, true);
+    const ScopedCapability depthTest(GL_DEPTH_TEST, true);
+    const ScopedCapability cullFace(GL_CULL_FACE, false);
+    GLboolean depthMask = GL_TRUE;
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
+    glDepthMask(GL_TRUE);
+
+    bindForDraw(params, sampleBuffers > 0);
+    for (const std::uint32_t c : order)
+        mDrawnObjects += mClusters[c].vertexCount / core::STAR_VERTICES_PER_OBJECT;
+    if (params.mode == BillboardWindMode::PerCluster)
+        drawEachCluster(order, params);
+    else
+        drawClustersAtOnce(order);
     glBindVertexArray(0);
     glDepthMask(depthMask);
 }

@@ -64,6 +64,12 @@ public:
 
 private:
     BillboardField() = default;
+    // The steps of draw().
+    std::vector<std::uint32_t> visibleClusters(const BillboardDrawParams& params) const;
+    void bindForDraw(const BillboardDrawParams& params, bool multisampled) const;
+    void drawEachCluster(const std::vector<std::uint32_t>& order,
+                         const BillboardDrawParams& params);
+    void drawClustersAtOnce(const std::vector<std::uint32_t>& order);
 
     gl::Program mProgram;
     gl::Buffer mVertices;

@@ -1,11 +1,11 @@
 // SceneRenderer: draws a Scene (opaque mesh first, the cull pass, then every grass layer by the
 // chosen geometry path through the visible lists) into a framebuffer, timing each pass with GL
-// timer queries. The headless CLI
-// and the editor's viewport both draw through it.
+// timer queries. The headless CLI and the editor's viewport both draw through it. The frame
+// lives in scene_renderer.cpp, its opaque and snow passes in scene_renderer_opaque.cpp, its
+// grass passes in scene_renderer_grass.cpp.
 #pragma once
 
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,87 +13,19 @@
 #include "gl/program.h"
 #include "gl/timer_query.h"
 #include "gl/uniform_block.h"
-#include "project/project.h"
 #include "render/billboard_gpu.h"
 #include "render/cull_pass.h"
 #include "render/field_gpu.h"
+#include "render/frame_timings.h"
 #include "render/lighting_block.h"
 #include "render/mesh_gpu.h"
+#include "render/render_options.h"
 #include "render/snow_pass.h"
 #include "render/stem_set_gpu.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
 namespace grass::render {
-
-struct RenderOptions {
-    GeometryPath geometry = GeometryPath::Strips;
-    int tessLevel = 8;
-    int stripSegments = 8;
-    core::SunDesc sun;
-    // Grass lighting (SPEC §10); model Simple draws the foundation's wrapped Lambert.
-    core::GrassLightingDesc lighting;
-    // Light the blades per vertex (the article's choice) instead of per pixel (docs/rendering.md
-    // compares cost and look).
-    bool lightPerVertex = false;
-    glm::vec3 skyColor{0.55f, 0.70f, 0.90f};
-    glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
-    // Per-blade culling (SPEC §6); all tests off draws every blade.
-    CullSettings cull;
-    // Draws every layer with this shape instead of its own (`grass render --shape`).
-    std::optional<core::BladeShape> shape;
-    // Blades, star billboards alone, or blades cross-faded into billboards by distance; the
-    // billboards' animation mode, wind and cross-fade distances.
-    core::GrassTechnique technique = core::GrassTechnique::Blades;
-    core::BillboardDesc billboards;
-    // Scene time in seconds: where the props (colliders) stand on their paths.
-    float timeS = 0.0f;
-    // Snow (SPEC §11); off by default. Its depth pass runs, and its map exists, only when on.
-    core::SnowParams snow;
-    // Draw the opaque surfaces as (Fp, Fe, Fi) in (R, G, B), unlit, to measure the snow mask.
-    bool snowCoverageView = false;
-    // The snow surface is tessellated so that its edges span about snowTessPixels on screen,
-    // cut at most snowTessMax times (shaders/mesh_snow.tesc); renderOptionsFor doubles it on
-    // software rasterizers.
-    float snowTessPixels = 8.0f;
-    int snowTessMax = 16;
-    // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for
-    // tests that measure a shape alone.
-    bool widthCorrection = true;
-};
-
-// Project settings → options; Auto picks strips on software rasterizers (SPEC §7 figures).
-// Culling: every test on (thinning only with a thinning distance), the project's LOD and
-// thinning distances, statistics off.
-RenderOptions renderOptionsFor(const core::Project& project, bool softwareRenderer);
-GeometryPath resolveGeometryPath(core::GeometryPath path, bool softwareRenderer);
-const char* geometryPathLabel(GeometryPath path);
-
-struct FrameTimings {
-    double meshMs = 0.0;   // GPU time of the opaque pass
-    double grassMs = 0.0;  // GPU time of all blade draws
-    double cullMs = 0.0;   // GPU time of the occlusion depth pre-pass and the cull dispatches
-    double billboardMs = 0.0;  // GPU time of the billboard draws (techniques billboards, hybrid)
-    std::size_t billboardsDrawn = 0;  // objects in the clusters drawn
-    std::size_t billboardDrawCalls = 0;
-    // Technique growth: stem sets drawn (one instanced draw per layer, no culling) and GPU time.
-    std::size_t stemSetsDrawn = 0;
-    double stemSetMs = 0.0;
-    // Snow: GPU time of the depth pass along the snowfall (0 with snow off; the snow shading
-    // itself is part of the opaque pass).
-    double snowMs = 0.0;
-    // Live blades handed to the cull pass; what survived it is cull.drawn.
-    std::size_t bladesDrawn = 0;
-    // Per-test counts, filled only when the frame ran with RenderOptions::cull.collectStats.
-    CullStats cull;
-    // The passes the frame ran, in order (issue 10: a pass a scene does not use does not run):
-    // snow_depth, opaque (or opaque_snow: tessellated under snow), occlusion_prepass, cull (or
-    // cull_snow), blades, billboards, stem_sets.
-    std::vector<std::string> passes;
-    // What the renderer holds on the GPU beyond the terrain, props and blades, allocated on
-    // first use: snow_map, snow_programs, tip_snow, billboards, stem_sets.
-    std::vector<std::string> allocated;
-};
 
 class SceneRenderer {
 public:
@@ -125,6 +57,11 @@ private:
     gl::Program mMeshProgram, mStripProgram, mTessProgram, mStemSetProgram;
     gl::Program mSnowMeshProgram;  // compiled on the first frame with snow
     const gl::Program& snowMeshProgram();
+    // The passes of render(), in order (scene_renderer_opaque.cpp, scene_renderer_grass.cpp).
+    void runSnowPass(const RenderOptions& options, int width, int height);
+    void drawOpaquePass(const glm::mat4& viewProj, const RenderOptions& options);
+    void drawGrass(const core::OrbitCamera& camera, const glm::mat4& projection, int width,
+                   int height, const RenderOptions& options);
     void drawOpaque(const RenderOptions& options, bool shaded);
     void drawBlades(const core::OrbitCamera& camera, const glm::mat4& projection, int width,
                     int height, const RenderOptions& options);

@@ -1,0 +1,59 @@
+// RenderOptions: how SceneRenderer draws a frame (geometry path, lighting, culling, technique,
+// snow), and how a project's settings turn into them. World space, metres, seconds; colours
+// linear RGB.
+#pragma once
+
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "project/project.h"
+#include "render/cull_pass.h"
+#include "render/field_gpu.h"
+
+namespace grass::render {
+
+struct RenderOptions {
+    GeometryPath geometry = GeometryPath::Strips;
+    int tessLevel = 8;
+    int stripSegments = 8;
+    core::SunDesc sun;
+    // Grass lighting (SPEC §10); model Simple draws the foundation's wrapped Lambert.
+    core::GrassLightingDesc lighting;
+    // Light the blades per vertex (the article's choice) instead of per pixel (docs/rendering.md
+    // compares cost and look).
+    bool lightPerVertex = false;
+    glm::vec3 skyColor{0.55f, 0.70f, 0.90f};
+    glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
+    // Per-blade culling (SPEC §6); all tests off draws every blade.
+    CullSettings cull;
+    // Draws every layer with this shape instead of its own (`grass render --shape`).
+    std::optional<core::BladeShape> shape;
+    // Blades, star billboards alone, or blades cross-faded into billboards by distance; the
+    // billboards' animation mode, wind and cross-fade distances.
+    core::GrassTechnique technique = core::GrassTechnique::Blades;
+    core::BillboardDesc billboards;
+    // Scene time in seconds: where the props (colliders) stand on their paths.
+    float timeS = 0.0f;
+    // Snow (SPEC §11); off by default. Its depth pass runs, and its map exists, only when on.
+    core::SnowParams snow;
+    // Draw the opaque surfaces as (Fp, Fe, Fi) in (R, G, B), unlit, to measure the snow mask.
+    bool snowCoverageView = false;
+    // The snow surface is tessellated so that its edges span about snowTessPixels on screen,
+    // cut at most snowTessMax times (shaders/mesh_snow.tesc); renderOptionsFor doubles it on
+    // software rasterizers.
+    float snowTessPixels = 8.0f;
+    int snowTessMax = 16;
+    // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for
+    // tests that measure a shape alone.
+    bool widthCorrection = true;
+};
+
+// Project settings → options; Auto picks strips on software rasterizers (SPEC §7 figures).
+// Culling: every test on (thinning only with a thinning distance), the project's LOD and
+// thinning distances, statistics off.
+RenderOptions renderOptionsFor(const core::Project& project, bool softwareRenderer);
+GeometryPath resolveGeometryPath(core::GeometryPath path, bool softwareRenderer);
+const char* geometryPathLabel(GeometryPath path);
+
+}  // namespace grass::render

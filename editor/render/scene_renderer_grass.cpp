@@ -1,0 +1,165 @@
+// SceneRenderer's grass passes, by technique: the cull and the blades, the billboards, the stem
+// sets.
+#include "render/scene_renderer.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "util/assert.h"
+
+namespace grass::render {
+
+// The grass of the frame's technique. Timers run every frame, empty where a technique skips a
+// pass, so readings are never stale.
+void SceneRenderer::drawGrass(const core::OrbitCamera& camera, const glm::mat4& projection,
+                              int width, int height, const RenderOptions& options) {
+    const glm::mat4 viewProj = projection * camera.view();
+    const bool blades = options.technique == core::GrassTechnique::Blades ||
+                        options.technique == core::GrassTechnique::Hybrid;
+    const bool billboards = options.technique == core::GrassTechnique::Billboards ||
+                            options.technique == core::GrassTechnique::Hybrid;
+    if (blades) {
+        drawBlades(camera, projection, width, height, options);
+    } else {
+        mCullTimer.begin();
+        mCullTimer.end();
+        mGrassTimer.begin();
+        mGrassTimer.end();
+        mStatsFrame = false;
+        mBladesDrawn = 0;
+    }
+    mBillboardTimer.begin();
+    if (billboards && billboardField() != nullptr) {
+        drawBillboards(camera, viewProj, options);
+        mPasses.push_back("billboards");
+    } else
+        mBillboardsDrawn = mBillboardDrawCalls = 0;
+    mBillboardTimer.end();
+    mStemSetTimer.begin();
+    mStemSetsDrawn = 0;
+    if (options.technique == core::GrassTechnique::Growth) {
+        drawStemSets(camera, viewProj);
+        mPasses.push_back("stem_sets");
+    }
+    mStemSetTimer.end();
+}
+
+// The cull pass, then every layer through its visible lists. In the hybrid, blades end at the
+// far edge of the cross-fade (culled there, so the far field costs nothing) and fade out over
+// it by alpha-to-coverage, dissolving sample by sample as the billboards fade in.
+void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4& projection,
+                               int width, int height, const RenderOptions& options) {
+    const bool hybrid = options.technique == core::GrassTechnique::Hybrid;
+    const glm::mat4 viewProj = projection * camera.view();
+    const int segments = std::max(options.stripSegments, 1);
+    CullSettings cull = options.cull;
+    if (hybrid)
+        cull.cutoffDistanceM = options.billboards.crossFadeM.y;
+    mCullTimer.begin();
+    const CullView cullView{camera.view(), projection, camera.position(), width, height, segments};
+    if (mSnowLies)
+        for (FieldGpu& field : mFields)
+            field.enableTipSnow();
+    cull.snow = mSnowLies;
+    mCull->run(mFields, cullView, cull, [this, &options] {
+        (mSnowLies ? snowMeshProgram() : mMeshProgram).use();
+        drawOpaque(options, false);
+    });
+    mCullTimer.end();
+    if (cull.occlusion)
+        mPasses.push_back("occlusion_prepass");
+    mPasses.push_back(mSnowLies ? "cull_snow" : "cull");
+    mStatsFrame = options.cull.collectStats;
+
+    mGrassTimer.begin();
+    const bool tessellate = options.geometry == GeometryPath::Tessellation;
+    const gl::Program& program = tessellate ? mTessProgram : mStripProgram;
+    program.use();
+    program.set("uViewProj", viewProj);
+    // Pixels that a length of 1 at view depth 1 covers, for the width correction (SPEC §7).
+    program.set("uPixelScale", options.widthCorrection
+                                   ? projection[1][1] * 0.5f * static_cast<float>(height)
+                                   : 0.0f);
+    program.set("uTessLevel", static_cast<float>(std::max(options.tessLevel, 1)));
+    program.set("uCameraPosition", camera.position());
+    program.set("uLodDistance", std::max(options.cull.lodDistanceM, 0.0f));
+    program.set("uFadeOut", hybrid ? options.billboards.crossFadeM : glm::vec2(0.0f));
+    program.set("uLightPerVertex", options.lightPerVertex ? 1 : 0);
+    program.set("uSnowTips", mSnowLies ? 1 : 0);
+    program.set("uSnowTipColor", options.snow.snowColor);
+    if (hybrid)
+        glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    mBladesDrawn = 0;
+    for (auto& field : mFields) {
+        program.set("uRootColor", field.field().rootColor);
+        program.set("uTipColor", field.field().tipColor);
+        program.set("uPoorRootColor", field.field().poorRootColor);
+        program.set("uPoorTipColor", field.field().poorTipColor);
+        const core::BladeShape shape = options.shape.value_or(field.field().shape);
+        program.set("uShape", static_cast<int>(shape));
+        program.set("uTipStart", field.field().tipStart);
+        if (tessellate)
+            field.drawTessellated(program);
+        else
+            field.drawStrips(program, segments);
+        mBladesDrawn += field.field().liveBlades;
+    }
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    mPasses.push_back("blades");
+    mGrassTimer.end();
+}
+
+// The billboard clusters, uploaded on the first frame that draws them: a scene drawn by blades
+// alone allocates none. Null when the scene has no billboards (scenes assembled by hand).
+BillboardField* SceneRenderer::billboardField() {
+    if (!mBillboards && !mScene->billboards.objects.empty()) {
+        auto billboards =
+            BillboardField::create(mScene->billboards.objects, mScene->billboards.texture);
+        GRASS_ASSERT(billboards.ok());  // the shaders ship with the program; a failure is a bug
+        mBillboards = std::make_unique<BillboardField>(std::move(*billboards));
+    }
+    return mBillboards.get();
+}
+
+void SceneRenderer::drawBillboards(const core::OrbitCamera& camera, const glm::mat4& viewProj,
+                                   const RenderOptions& options) {
+    BillboardDrawParams params;
+    params.viewProj = viewProj;
+    params.cameraPosWorld = camera.position();
+    params.timeS = options.timeS;
+    params.mode = options.billboards.animation;
+    params.wind = options.billboards.wind;
+    if (options.technique == core::GrassTechnique::Hybrid)
+        params.fade = {options.billboards.crossFadeM.x, options.billboards.crossFadeM.y, 1.0e30f,
+                       1.0e30f};
+    const gl::Program& program = mBillboards->program();
+    program.set("uCameraPosition", camera.position());
+    program.set("uFieldAo", mFieldAo);
+    mBillboards->draw(params);
+    mBillboardsDrawn = mBillboards->drawnObjects();
+    mBillboardDrawCalls = mBillboards->drawCalls();
+}
+
+void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj) {
+    // Uploaded on first use: a scene drawn by another technique pays nothing for them.
+    if (mStemSets.empty())
+        for (const auto& layer : mScene->layers)
+            mStemSets.emplace_back(layer.stemSets, "stem sets " + layer.name);
+    const gl::Program& program = mStemSetProgram;
+    program.use();
+    program.set("uViewProj", viewProj);
+    program.set("uCameraPosition", camera.position());
+    program.set("uFieldAo", mFieldAo);
+    for (std::size_t i = 0; i < mStemSets.size(); ++i) {
+        const core::LayerField& layer = mScene->layers[i];
+        setStemSetColours(program, StemSetColours{layer.rootColor, layer.tipColor,
+                                                  layer.poorRootColor, layer.poorTipColor});
+        mStemSets[i].draw(program, layer.source.stemLevels);
+        // Null sets (slots without a blade) are instanced too but collapse in the vertex shader.
+        mStemSetsDrawn += static_cast<std::size_t>(std::count_if(
+            layer.stemSets.begin(), layer.stemSets.end(),
+            [](const core::StemSetInstance& set) { return set.rootMetresPerUnit.w > 0.0f; }));
+    }
+}
+
+}  // namespace grass::render

@@ -1,0 +1,96 @@
+// SceneRenderer's opaque pass: the terrain and the props, plain or as the snow surface, and the
+// snow depth map they cast (SPEC §11).
+#include "render/scene_renderer.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "scene/scene_snow.h"
+#include "util/assert.h"
+
+namespace grass::render {
+
+// Snow: only a frame where snow lies (on, amount > 0) runs the depth pass and the snow
+// variants of the opaque and cull programs; any other frame runs exactly the snow-free ones.
+void SceneRenderer::runSnowPass(const RenderOptions& options, int width, int height) {
+    mSnowTimer.begin();
+    const float snowAmountM = core::snowAmountAt(options.snow, options.timeS);
+    mSnowLies = options.snow.enabled != 0u && snowAmountM > 0.0f;
+    if (mSnowLies) {
+        renderSnowMap(options);
+        mPasses.push_back("snow_depth");
+        // The surfaces whiten and rise; the cull buries short blades and whitens the tips.
+        mSnow->bind(options.snow, snowAmountM);
+        const gl::Program& snowMesh = snowMeshProgram();
+        snowMesh.set("uSnowCoverageView", options.snowCoverageView ? 1 : 0);
+        snowMesh.set("uViewportPixels", glm::vec2(float(width), float(height)));
+        snowMesh.set("uSnowTessPixels", std::max(options.snowTessPixels, 1.0f));
+        snowMesh.set("uSnowTessMax", float(std::clamp(options.snowTessMax, 1, 64)));
+    }
+    mSnowTimer.end();
+}
+
+void SceneRenderer::drawOpaquePass(const glm::mat4& viewProj, const RenderOptions& options) {
+    mMeshTimer.begin();
+    const gl::Program& opaque = mSnowLies ? snowMeshProgram() : mMeshProgram;
+    opaque.use();
+    opaque.set("uViewProj", viewProj);
+    drawOpaque(options, true);
+    mPasses.push_back(mSnowLies ? "opaque_snow" : "opaque");
+    mMeshTimer.end();
+}
+
+// The depth map along the snowfall over the terrain and the props where they stand now: the
+// view covers both, so a ball above the ground shelters what lies under it.
+void SceneRenderer::renderSnowMap(const RenderOptions& options) {
+    if (!mSnow) {
+        auto pass = SnowPass::create();
+        GRASS_ASSERT(pass.ok());  // the shader ships with the program; a load failure is a bug
+        mSnow = std::make_unique<SnowPass>(std::move(*pass));
+    }
+    const core::OrthoSnowView view = core::sceneSnowView(*mScene, options.snow, options.timeS);
+    mSnow->run(view, options.snow.mapResolution, [&](const gl::Program& program) {
+        program.set("uModel", glm::mat4(1.0f));
+        mMesh->draw();
+        for (std::size_t i = 0; i < mProps.size(); ++i) {
+            program.set("uModel", mScene->props[i].modelAt(options.timeS));
+            mProps[i].draw();
+        }
+    });
+}
+
+// The program of the snow surface (tessellated, displaced, whitened), compiled on the first
+// frame with snow.
+const gl::Program& SceneRenderer::snowMeshProgram() {
+    if (mSnowMeshProgram.id() == 0) {
+        auto program = gl::Program::load({{GL_VERTEX_SHADER, "mesh_snow.vert"},
+                                          {GL_TESS_CONTROL_SHADER, "mesh_snow.tesc"},
+                                          {GL_TESS_EVALUATION_SHADER, "mesh_snow.tese"},
+                                          {GL_FRAGMENT_SHADER, "mesh.frag"}},
+                                         "mesh under snow", {"GRASS_SNOW"});
+        GRASS_ASSERT(program.ok());  // the shaders ship with the program; a failure is a bug
+        mSnowMeshProgram = std::move(*program);
+    }
+    return mSnowMeshProgram;
+}
+
+// The terrain, then each prop where its path puts it at options.timeS, with the opaque program
+// of this frame (bound by the caller). `shaded` sets the albedo (the cull's depth pre-pass
+// needs none).
+void SceneRenderer::drawOpaque(const RenderOptions& options, bool shaded) {
+    const gl::Program& program = mSnowLies ? snowMeshProgram() : mMeshProgram;
+    const auto draw = [this](const MeshGpu& mesh) { mSnowLies ? mesh.drawPatches() : mesh.draw(); };
+    program.set("uModel", glm::mat4(1.0f));
+    if (shaded)
+        program.set("uAlbedo", options.groundColor);
+    draw(*mMesh);
+    for (std::size_t i = 0; i < mProps.size(); ++i) {
+        const core::SceneProp& prop = mScene->props[i];
+        program.set("uModel", prop.modelAt(options.timeS));
+        if (shaded)
+            program.set("uAlbedo", prop.albedo);
+        draw(mProps[i]);
+    }
+}
+
+}  // namespace grass::render
