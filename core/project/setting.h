@@ -109,6 +109,17 @@ struct Setting {
 
 namespace detail {
 
+// `row` with `access`, built whole: clang cannot switch a variant's alternative by assignment in
+// a constant expression, so the member is initialised, never assigned.
+template <class S>
+constexpr Setting<S> withAccess(const Setting<S>& row, Kind kind, Access<S> access) {
+    return Setting<S>{row.key,       kind,           row.rule,        row.intMin,
+                      row.intMax,    row.names,      row.allowEmpty,  row.unit,
+                      row.help,      row.label,      row.typeText,    row.allowedText,
+                      row.defaultText, row.applies,  row.onlyText,    row.ui,
+                      access};
+}
+
 template <class M>
 struct MemberTraits;
 template <class C, class T>
@@ -162,33 +173,31 @@ template <auto... Members>
 constexpr Setting<detail::Owner<Members...>> field(Setting<detail::Owner<Members...>> row) {
     using S = detail::Owner<Members...>;
     using T = detail::Value<Members...>;
-    if (row.kind == Kind::Auto)
-        row.kind = detail::kindOf<T>();
+    const Kind kind = row.kind == Kind::Auto ? detail::kindOf<T>() : row.kind;
     if constexpr (std::is_enum_v<T>) {
-        row.access = ChoiceRef<S>{
-            [](const S& s) { return static_cast<std::size_t>((s .* ... .* Members)); },
-            [](S& s, std::size_t index) { (s .* ... .* Members) = static_cast<T>(index); }};
+        return detail::withAccess<S>(
+            row, kind,
+            ChoiceRef<S>{
+                [](const S& s) { return static_cast<std::size_t>((s .* ... .* Members)); },
+                [](S& s, std::size_t index) { (s .* ... .* Members) = static_cast<T>(index); }});
     } else {
-        row.access = detail::ref<Members...>();
+        return detail::withAccess<S>(row, kind, detail::ref<Members...>());
     }
-    return row;
 }
 
 // A [min, max] setting stored as two float members of the same object.
 template <auto Min, auto Max>
 constexpr Setting<detail::Owner<Min>> rangeOf(Setting<detail::Owner<Min>> row) {
-    row.kind = Kind::Range;
-    row.access = RangePair<detail::Owner<Min>>{detail::ref<Min>(), detail::ref<Max>()};
-    return row;
+    return detail::withAccess<detail::Owner<Min>>(
+        row, Kind::Range,
+        RangePair<detail::Owner<Min>>{detail::ref<Min>(), detail::ref<Max>()});
 }
 
 template <class S>
 constexpr Setting<S> custom(Setting<S> row,
                             void (*read)(json::Reader&, json::Object&, std::string_view, S&),
                             json::Json (*write)(const S&)) {
-    row.kind = Kind::Custom;
-    row.access = CustomIo<S>{read, write};
-    return row;
+    return detail::withAccess<S>(row, Kind::Custom, CustomIo<S>{read, write});
 }
 
 // The keys of a table in order, for json::Object's key check.
