@@ -90,6 +90,12 @@ MapImage& layerMap(LayerMaps& maps, LayerMap which) {
     return maps.density;
 }
 
+std::string& layerMapFile(GrassLayer& layer, LayerMap which) {
+    return which == LayerMap::Density ? layer.densityMap
+           : which == LayerMap::Soil  ? layer.soilMap
+                                      : layer.lightMap;
+}
+
 const MapImage& layerMap(const LayerMaps& maps, LayerMap which) {
     return layerMap(const_cast<LayerMaps&>(maps), which);
 }

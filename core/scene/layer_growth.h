@@ -9,7 +9,9 @@
 // the renderer re-uploads only those slots.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <string>
 #include <span>
 #include <vector>
 
@@ -33,6 +35,15 @@ struct LayerMaps {
 enum class LayerMap { Density, Soil, Light };
 MapImage& layerMap(LayerMaps& maps, LayerMap which);
 const MapImage& layerMap(const LayerMaps& maps, LayerMap which);
+// Every map, and its name as the CLI, the panels and default file names spell it.
+inline constexpr std::array<LayerMap, 3> ALL_LAYER_MAPS{LayerMap::Density, LayerMap::Soil,
+                                                        LayerMap::Light};
+inline constexpr std::array<const char*, 3> LAYER_MAP_NAMES{"density", "soil", "light"};
+constexpr const char* layerMapName(LayerMap which) {
+    return LAYER_MAP_NAMES[static_cast<std::size_t>(which)];
+}
+// The project's file name of a layer's map (empty: none painted yet).
+std::string& layerMapFile(GrassLayer& layer, LayerMap which);
 
 // What a layer's field is grown from, kept next to it so repaints can re-grow parts of it.
 struct LayerSource {

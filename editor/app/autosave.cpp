@@ -14,21 +14,6 @@ namespace fs = std::filesystem;
 
 constexpr std::string_view AUTOSAVE_TAG = ".autosave";
 
-std::string& mapField(core::GrassLayer& layer, core::LayerMap map) {
-    return map == core::LayerMap::Density ? layer.densityMap
-           : map == core::LayerMap::Soil  ? layer.soilMap
-                                          : layer.lightMap;
-}
-
-std::string_view mapKey(core::LayerMap map) {
-    return map == core::LayerMap::Density ? "density"
-           : map == core::LayerMap::Soil  ? "soil"
-                                          : "light";
-}
-
-constexpr core::LayerMap ALL_MAPS[] = {core::LayerMap::Density, core::LayerMap::Soil,
-                                       core::LayerMap::Light};
-
 }  // namespace
 
 fs::path autosavePath(const core::LoadedProject& loaded) {
@@ -56,18 +41,18 @@ std::optional<std::string> mapNameOfAutosave(const std::string& relative) {
 }
 
 Result<void> writeAutosave(const EditorState& s) {
-    const fs::path file = autosavePath(s.loaded);
+    const fs::path file = autosavePath(s.doc.loaded);
     if (file.empty() || !s.scene)
         return {};
-    core::Project project = s.loaded.project;
-    for (const auto& [index, map] : s.paintedMaps) {
+    core::Project project = s.doc.loaded.project;
+    for (const auto& [index, map] : s.doc.paintedMaps) {
         if (index >= project.layers.size() || index >= s.scene->layers.size())
             continue;
         core::GrassLayer& layer = project.layers[index];
-        std::string& field = mapField(layer, map);
+        std::string& field = core::layerMapFile(layer, map);
         const std::string side =
-            autosaveMapName(field.empty() ? core::defaultMapFile(layer.name, mapKey(map)) : field);
-        auto target = core::resolveAssetPath(s.loaded.folder, side, "autosave");
+            autosaveMapName(field.empty() ? core::defaultMapFile(layer.name, core::layerMapName(map)) : field);
+        auto target = core::resolveAssetPath(s.doc.loaded.folder, side, "autosave");
         if (!target)
             return target.error();
         std::error_code ec;
@@ -83,9 +68,9 @@ Result<void> writeAutosave(const EditorState& s) {
 
 void autosaveNow(EditorState& state) {
     if (auto written = writeAutosave(state); !written)
-        state.message = "autosave failed: " + written.error().str();
-    else if (!state.loaded.file.empty() && !state.messageIsSaveError)
-        state.message = "autosaved to " + autosavePath(state.loaded).string();
+        state.transient.message = "autosave failed: " + written.error().str();
+    else if (!state.doc.loaded.file.empty() && !state.transient.messageIsSaveError)
+        state.transient.message = "autosaved to " + autosavePath(state.doc.loaded).string();
 }
 
 void removeAutosave(const core::LoadedProject& loaded) {
@@ -95,8 +80,8 @@ void removeAutosave(const core::LoadedProject& loaded) {
     std::error_code ec;
     if (auto side = core::loadProject(file)) {
         for (core::GrassLayer& layer : side->project.layers)
-            for (const core::LayerMap map : ALL_MAPS)
-                if (const std::string& field = mapField(layer, map);
+            for (const core::LayerMap map : core::ALL_LAYER_MAPS)
+                if (const std::string& field = core::layerMapFile(layer, map);
                     mapNameOfAutosave(field))
                     if (auto path = core::resolveAssetPath(loaded.folder, field, "autosave"))
                         fs::remove(*path, ec);
@@ -119,21 +104,21 @@ std::optional<core::LoadedProject> findAutosave(const core::LoadedProject& loade
 }
 
 void markRecoveredMaps(EditorState& s) {
-    for (std::size_t i = 0; i < s.loaded.project.layers.size(); ++i)
-        for (const core::LayerMap map : ALL_MAPS) {
-            std::string& field = mapField(s.loaded.project.layers[i], map);
+    for (std::size_t i = 0; i < s.doc.loaded.project.layers.size(); ++i)
+        for (const core::LayerMap map : core::ALL_LAYER_MAPS) {
+            std::string& field = core::layerMapFile(s.doc.loaded.project.layers[i], map);
             if (const auto real = mapNameOfAutosave(field)) {
                 // A map new in the lost session had no name: the default one is what Save picks.
-                field = *real == core::defaultMapFile(s.loaded.project.layers[i].name, mapKey(map)) &&
-                                !fs::exists(s.loaded.folder / *real)
+                field = *real == core::defaultMapFile(s.doc.loaded.project.layers[i].name, core::layerMapName(map)) &&
+                                !fs::exists(s.doc.loaded.folder / *real)
                             ? std::string()
                             : *real;
-                s.paintedMaps.insert({i, map});
+                s.doc.paintedMaps.insert({i, map});
             }
         }
-    s.committed = s.loaded.project;
-    s.dirty = true;
-    s.message = "recovered the autosaved work: save to keep it";
+    s.doc.committed = s.doc.loaded.project;
+    s.doc.dirty = true;
+    s.transient.message = "recovered the autosaved work: save to keep it";
 }
 
 void recoveryWindow(ui::Context& ctx, EditorState& s) {
@@ -150,7 +135,7 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
                 if (row.button("Recover").clicked())
                     s.recoverRequested = true;
                 if (row.button("Discard").clicked()) {
-                    removeAutosave(s.loaded);
+                    removeAutosave(s.doc.loaded);
                     s.recoveryOffer.reset();
                 }
             });

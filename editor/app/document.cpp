@@ -10,17 +10,16 @@ bool replaceDocument(EditorState& state, Live& live, core::LoadedProject next, b
                      std::string_view what) {
     auto built = buildLive(next, withPhysics);
     if (!built) {
-        state.message = std::string(what) + ": " + built.error().str();
+        state.transient.message = std::string(what) + ": " + built.error().str();
         return false;
     }
     const std::size_t steps = live.physics ? live.physics->steps : 0;
     live = std::move(*built);
     if (live.physics)
         live.physics->steps = steps;  // the field starts from rest, the clock goes on
-    state.loaded = std::move(next);
+    state.doc.loaded = std::move(next);
     state.scene = live.scene.get();
     state.tools = live.tools.get();
-    state.regrown.clear();
     resetHistory(state);
     return true;
 }

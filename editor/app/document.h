@@ -12,7 +12,7 @@
 
 namespace grass::editor {
 
-// Grows `next` into a live field and, on success, makes it the document: state.loaded, the
+// Grows `next` into a live field and, on success, makes it the document: state.doc.loaded, the
 // scene and tools pointers, a fresh history. `what` names the action in the message on failure
 // ("cannot open"). True when replaced.
 bool replaceDocument(EditorState& state, Live& live, core::LoadedProject next, bool withPhysics,

@@ -1,24 +1,15 @@
-// Undo, redo and the painted maps' life cycle (issue 8): what the Edit menu, Ctrl+Z and
-// Ctrl+Shift+Z do, how panel edits become history steps, and how painted maps survive a re-grow
-// of the scene and reach the disk on save.
+// The history's and the painted maps' life cycle (issue 8): a fresh history for a new document,
+// painted maps surviving a re-grow of the scene and reaching the disk on save. Undo, redo and
+// how edits become history steps are commands (app/commands.h).
 #pragma once
 
 #include <filesystem>
 
+#include "app/commands.h"
 #include "app/panels.h"
 #include "util/result.h"
 
 namespace grass::editor {
-
-// Records the project's change since the last step as one step, once no widget (`widgetActive`)
-// and no tool drag is active; does nothing while one is, or when nothing changed.
-void recordProjectEdit(EditorState& state, bool widgetActive);
-
-// Reverts / re-applies the newest step: a project step replaces the project (the scene re-grows),
-// a paint step writes its texels back and re-grows the patches they reach. False when there is
-// nothing to undo / redo (or a tool drag is under way).
-bool undo(EditorState& state);
-bool redo(EditorState& state);
 
 // Starts the history afresh (a project was opened or created).
 void resetHistory(EditorState& state);

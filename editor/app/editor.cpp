@@ -45,8 +45,8 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     if (!loaded)
         return loaded.error();
     EditorState& state = e.mState;
-    state.loaded = std::move(*loaded);
-    const core::Project& project = state.loaded.project;
+    state.doc.loaded = std::move(*loaded);
+    const core::Project& project = state.doc.loaded.project;
     auto window = Window::create(project.render.width, project.render.height,
                                  "grass — " + project.name, e.mSettings.glDebug);
     if (!window)
@@ -56,21 +56,27 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     if (!camera)
         return camera.error();
     e.mCamera = *camera;
-    auto built = buildLive(state.loaded, !e.mSettings.noPhysics);
+    auto built = buildLive(state.doc.loaded, !e.mSettings.noPhysics);
     if (!built)
         return built.error();
     e.mLive = std::move(*built);
     state.scene = e.mLive.scene.get();
     state.tools = e.mLive.tools.get();
-    state.softwareRenderer = gl::isSoftwareRenderer();
-    state.options = viewRenderOptions(state);
+    // Patches the brush or an undo re-grew: only those go up to the GPU, at once.
+    state.regrown = [&e](std::size_t layer, const core::RegrowReport& report) {
+        e.mLive.renderer->uploadRegrown(layer, report);
+        if (e.mLive.physics)
+            e.mLive.physics->gpu.uploadRegrown(layer, *e.mLive.scene, report.patches);
+    };
+    state.view.softwareRenderer = gl::isSoftwareRenderer();
+    state.view.options = viewRenderOptions(state);
     resetHistory(state);
-    state.recoveryOffer = findAutosave(state.loaded);
+    state.recoveryOffer = findAutosave(state.doc.loaded);
     state.recoverRequested = e.mSettings.recover && state.recoveryOffer.has_value();
     e.resetTimeline();
     std::fprintf(stderr, "grass-editor: %s, %zu blades, geometry %s\n",
                  gl::rendererDescription().c_str(), e.mLive.scene->totalBlades(),
-                 render::geometryPathLabel(state.options.geometry));
+                 render::geometryPathLabel(state.view.options.geometry));
     if (!e.mSettings.noUi) {
         auto created = EditorUi::create();
         if (!created)
@@ -99,20 +105,20 @@ Result<bool> Editor::frame() {
     if (applyRequests())
         return false;
     autosaveWhenDue();
-    const std::string title = "grass — " + mState.loaded.project.name + (mState.dirty ? " *" : "");
+    const std::string title = "grass — " + mState.doc.loaded.project.name + (mState.doc.dirty ? " *" : "");
     if (title != mShownTitle) {
         mWindow->setTitle(title);
         mShownTitle = title;
     }
     const Clock::time_point start = Clock::now();
     // This frame's picture follows the project as it is now, with the view's overrides.
-    mState.options = viewRenderOptions(mState);
+    mState.view.options = viewRenderOptions(mState);
     advanceTime(start);
     // Statistics cost atomics and a wait when read: only the frame before a status update
     // collects them, and they are read once, after it.
     const bool statusDue =
         mFrame == 0 || Clock::now() - mLastStatus > std::chrono::milliseconds(500);
-    mState.options.cull.collectStats = statusDue;
+    mState.view.options.cull.collectStats = statusDue;
     render(width, height);
     auto more = writeOutputs(width, height);
     if (!more || !*more)
@@ -123,10 +129,10 @@ Result<bool> Editor::frame() {
 }
 
 bool Editor::closeRequested() {
-    if (!mUi || !mState.dirty || mReplay) {
+    if (!mUi || !mState.doc.dirty || mReplay) {
         // A clean close leaves nothing to recover (an autosave still on offer stays).
-        if (!mState.dirty && !mState.recoveryOffer)
-            removeAutosave(mState.loaded);
+        if (!mState.doc.dirty && !mState.recoveryOffer)
+            removeAutosave(mState.doc.loaded);
         return true;
     }
     mWindow->cancelClose();  // ask first
@@ -139,7 +145,7 @@ bool Editor::applyRequests() {
     // Quitting (after saving, or choosing to drop the changes) leaves nothing to recover.
     if (state.quitRequested) {
         if (!state.recoveryOffer)
-            removeAutosave(state.loaded);
+            removeAutosave(state.doc.loaded);
         return true;
     }
     // An export reads the scene on its worker: replacing or re-growing it waits.
@@ -147,18 +153,18 @@ bool Editor::applyRequests() {
         state.newRequested = false;
         if (adoptDocument(core::LoadedProject{core::Project{}, std::filesystem::current_path(), {}},
                           "cannot start a new project")) {
-            state.dirty = true;  // exists only in memory until saved
-            state.message = "new project (not saved)";
+            state.doc.dirty = true;  // exists only in memory until saved
+            state.transient.message = "new project (not saved)";
         }
     }
     if (!state.openRequested.empty() && !state.busy()) {
         auto opened = core::loadProject(state.openRequested);
         state.openRequested.clear();
         if (!opened) {
-            state.message = "cannot open: " + opened.error().str();
+            state.transient.message = "cannot open: " + opened.error().str();
         } else if (adoptDocument(std::move(*opened), "cannot open")) {
-            state.dirty = false;
-            state.message = "opened " + state.loaded.file.string();
+            state.doc.dirty = false;
+            state.transient.message = "opened " + state.doc.loaded.file.string();
         }
     }
     if (state.recoverRequested && !state.busy()) {
@@ -169,36 +175,28 @@ bool Editor::applyRequests() {
             markRecoveredMaps(state);
     }
     // Re-grow once the edit has ended, not on every frame of a drag.
-    if (state.rebuildPending && !state.toolDragActive && !state.busy() &&
+    if (state.rebuildPending && !state.view.toolDragActive && !state.busy() &&
         (!mUi || mUi->context().activeId().value == 0)) {
         state.rebuildPending = false;
         regrowLive();
     }
-    // Patches the brush or an undo re-grew: only those go up to the GPU.
-    for (const auto& [layer, report] : state.regrown) {
-        mLive.renderer->uploadRegrown(layer, report);
-        if (mLive.physics)
-            mLive.physics->gpu.uploadRegrown(layer, *mLive.scene, report.patches);
-    }
-    state.regrown.clear();
     return false;
 }
 
 // Re-grows the live field from the open project (after an edit that needs it), keeping the maps
 // painted since the last save; on failure the old field stays.
 void Editor::regrowLive() {
-    auto next = buildLive(mState.loaded, !mSettings.noPhysics, [&](core::Scene& grown) {
+    auto next = buildLive(mState.doc.loaded, !mSettings.noPhysics, [&](core::Scene& grown) {
         return carryPaintedMaps(mState, *mLive.scene, grown);
     });
     if (!next) {
-        mState.message = "cannot grow the field: " + next.error().str();
+        mState.transient.message = "cannot grow the field: " + next.error().str();
         return;
     }
     const std::size_t steps = mLive.physics ? mLive.physics->steps : 0;
     mLive = std::move(*next);
     mState.scene = mLive.scene.get();
     mState.tools = mLive.tools.get();
-    mState.regrown.clear();
     if (mLive.physics)
         mLive.physics->steps = steps;  // the field restarts from rest, the clock goes on
 }
@@ -207,15 +205,15 @@ void Editor::regrowLive() {
 bool Editor::adoptDocument(core::LoadedProject next, std::string_view what) {
     if (!replaceDocument(mState, mLive, std::move(next), !mSettings.noPhysics, what))
         return false;
-    if (auto camera = render::projectCamera(mState.loaded.project, ""))
+    if (auto camera = render::projectCamera(mState.doc.loaded.project, ""))
         mCamera = *camera;
     resetTimeline();
     return true;
 }
 
 void Editor::resetTimeline() {
-    core::Timeline& timeline = mState.timeline;
-    timeline = core::timelineFor(mState.loaded.project);
+    core::Timeline& timeline = mState.view.timeline;
+    timeline = core::timelineFor(mState.doc.loaded.project);
     // A minute at least, so an unkeyed scene does not restart its sway every few seconds.
     timeline.setRange(timeline.startS(), std::max(timeline.endS(), timeline.startS() + 60.0));
     timeline.setLoop(true);
@@ -224,10 +222,10 @@ void Editor::resetTimeline() {
 
 void Editor::autosaveWhenDue() {
     // On the simulation's clock when replaying, so scripts see it at a fixed frame.
-    mAutosaveDueS -= mReplay ? mState.timeline.stepS()
+    mAutosaveDueS -= mReplay ? mState.view.timeline.stepS()
                              : std::chrono::duration<double>(Clock::now() - mLastFrameEnd).count();
-    if (mSettings.autosaveS > 0.0 && mAutosaveDueS <= 0.0 && mState.dirty && !mState.busy() &&
-        !mState.toolDragActive) {
+    if (mSettings.autosaveS > 0.0 && mAutosaveDueS <= 0.0 && mState.doc.dirty && !mState.busy() &&
+        !mState.view.toolDragActive) {
         mAutosaveDueS = mSettings.autosaveS;
         autosaveNow(mState);
     }
@@ -237,31 +235,31 @@ void Editor::advanceTime(Clock::time_point start) {
     EditorState& state = mState;
     // Screenshots advance exactly one step per frame, so they do not depend on machine speed.
     const double elapsedS = !mReplay ? std::chrono::duration<double>(start - mLastFrameEnd).count()
-                                     : state.timeline.stepS();
-    const core::TimeUpdate moved = state.timeline.advance(elapsedS);
-    const bool jumped = state.timeJump.needsReset() || moved.needsReset() ||
-                        state.timeJump.change == core::TimeChange::JumpForward;
-    state.timeJump = {};
+                                     : state.view.timeline.stepS();
+    const core::TimeUpdate moved = state.view.timeline.advance(elapsedS);
+    const bool jumped = state.view.timeJump.needsReset() || moved.needsReset() ||
+                        state.view.timeJump.change == core::TimeChange::JumpForward;
+    state.view.timeJump = {};
     if (mLive.physics) {
         LivePhysics& physics = *mLive.physics;
         if (jumped) {
             // The field restarts from rest at the new time (re-simulating from the start would
             // stall the scrub).
             if (auto reset = resetPhysics(mLive); !reset)
-                state.message = "cannot reset the simulation: " + reset.error().str();
+                state.transient.message = "cannot reset the simulation: " + reset.error().str();
             physics.steps = static_cast<std::size_t>(
-                std::floor(state.timeline.timeS() / physics.scene.params.dtS));
+                std::floor(state.view.timeline.timeS() / physics.scene.params.dtS));
         }
-        physics.advanceTo(state.timeline.timeS());
+        physics.advanceTo(state.view.timeline.timeS());
     }
-    state.options.timeS = static_cast<float>(state.timeline.timeS());
+    state.view.options.timeS = static_cast<float>(state.view.timeline.timeS());
 }
 
 void Editor::render(int width, int height) {
     if (!mTarget || mTarget->width() != mView.w || mTarget->height() != mView.h)
         mTarget = std::make_unique<gl::Framebuffer>(mView.w, mView.h,
-                                                    mState.loaded.project.render.msaaSamples);
-    mLive.renderer->render(mCamera, mView.w, mView.h, mTarget->id(), mState.options);
+                                                    mState.doc.loaded.project.render.msaaSamples);
+    mLive.renderer->render(mCamera, mView.w, mView.h, mTarget->id(), mState.view.options);
     if (!mUi) {
         mTarget->blitTo(0, width, height);
         return;
@@ -285,7 +283,7 @@ Result<bool> Editor::writeOutputs(int width, int height) {
     };
     if (!state.screenshotRequested.empty()) {
         const auto written = shownImage(state.screenshotRequested);
-        state.message = written ? "saved " + state.screenshotRequested
+        state.transient.message = written ? "saved " + state.screenshotRequested
                                 : "screenshot not saved: " + written.error().str();
         state.screenshotRequested.clear();
     }
@@ -295,10 +293,10 @@ Result<bool> Editor::writeOutputs(int width, int height) {
         request.width = mView.w;
         request.height = mView.h;
         request.frames = 1;
-        request.options = state.options;
+        request.options = state.view.options;
         auto turned = render::writeTurntable(*mLive.scene, mCamera, request, TURNTABLE_VIEWS,
                                              state.turntableRequested);
-        state.message = turned ? "saved a turntable of " + std::to_string(turned->framesWritten) +
+        state.transient.message = turned ? "saved a turntable of " + std::to_string(turned->framesWritten) +
                                      " views: " + turned->sheet.string()
                                : "turntable not saved: " + turned.error().str();
         state.turntableRequested.clear();
@@ -328,10 +326,10 @@ void Editor::updateStatus(bool statusDue) {
     // Smoothed, so the number stays readable.
     if (frameS > 0.0)
         mFps = mFps == 0.0 ? 1.0 / frameS : 0.9 * mFps + 0.1 / frameS;
-    mState.status.blades = mLive.scene->totalBlades();  // live: a re-grow shows at once
+    mState.transient.status.blades = mLive.scene->totalBlades();  // live: a re-grow shows at once
     if (statusDue) {
-        mState.status.timings = mLive.renderer->lastTimings();
-        mState.status.fps = mFps;
+        mState.transient.status.timings = mLive.renderer->lastTimings();
+        mState.transient.status.fps = mFps;
         mLastStatus = now;
     }
 }

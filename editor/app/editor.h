@@ -4,12 +4,12 @@
 //   input (the window's, or the replayed script's)
 //   → UI (panels first: they decide who gets the pointer and the keys)
 //   → viewport tools and camera → keys (render keys, tool keys, undo, save)
-//   → history (a changed project becomes one undo step, editor/app/edit_actions.h)
+//   → settle (an edit that has just ended becomes one undo step, editor/app/commands.h)
 //   → requests (New, Open, Recover replace the document whole, editor/app/document.h;
 //     a pending re-grow; re-grown patches up to the GPU)
 //   → autosave → time and physics → render → outputs (screenshots, turntable) → status.
-// Edits of the document happen in the panels, the tools and the keys; they all meet in the
-// project in EditorState, and the render settings are derived from it (viewRenderOptions).
+// Edits of the document come from the panels, the tools and the keys as commands, applied in one
+// place (commands.h); the render settings are derived from the document (viewRenderOptions).
 #pragma once
 
 #include <chrono>

@@ -4,40 +4,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/edit_actions.h"
+#include "app/editor_keys.h"
 #include "app/editor.h"
 #include "app/viewport_tools.h"
 
 namespace grass::editor {
 
 namespace {
-
-// Keys that change how the field is drawn (window.h); returns what changed, for the console.
-// 1-4 switch a cull test of the view; T and L change the project's technique and lighting (a
-// project edit like the Render panel's combo boxes: saved, undoable, marking it unsaved).
-std::string applyRenderKeys(const InputState& input, EditorState& state) {
-    ViewOverrides& view = state.view;
-    bool* tests[] = {&view.orientation, &view.frustum, &view.distance, &view.occlusion};
-    const char* names[] = {"orientation", "frustum", "distance", "occlusion"};
-    if (input.toggledCullTest >= 1 && input.toggledCullTest <= 4) {
-        bool& test = *tests[input.toggledCullTest - 1];
-        test = !test;
-        return std::string(names[input.toggledCullTest - 1]) + " culling " + (test ? "on" : "off");
-    }
-    core::Project& project = state.loaded.project;
-    if (input.nextTechnique) {
-        project.render.technique =
-            static_cast<core::GrassTechnique>((static_cast<int>(project.render.technique) + 1) % 4);
-        return "technique " + std::string(core::grassTechniqueName(project.render.technique));
-    }
-    if (input.toggleLighting) {
-        core::LightingModel& model = project.lighting.model;
-        model = model == core::LightingModel::Grass ? core::LightingModel::Simple
-                                                    : core::LightingModel::Grass;
-        return model == core::LightingModel::Grass ? "grass lighting" : "simple lighting";
-    }
-    return {};
-}
 
 void moveCamera(InputState input, bool drag, bool wheel, int viewportHeight,
                 const core::Scene& scene, core::OrbitCamera& camera) {
@@ -92,7 +65,7 @@ void Editor::runInput(InputState input, int width, int height) {
         uiPointer = out.wantsPointer;
         uiKeyboard = out.wantsKeyboard;
         mView = toPixels(central, out.pixelsPerPoint, height);
-        mState.status.uiMs =
+        mState.transient.status.uiMs =
             std::chrono::duration<double, std::milli>(Clock::now() - uiStart).count();
     }
     // The viewport's tools: a press on the mesh (brush) or on an object (gizmo) makes the drag
@@ -111,9 +84,9 @@ void Editor::runInput(InputState input, int width, int height) {
             mToolDrag = true;
         if (!input.leftDown)
             mToolDrag = false;
-        if (mToolDrag || mState.toolDragActive)
+        if (mToolDrag || mState.view.toolDragActive)
             input.leftDown = false;
-        if (mState.tool != ViewportTool::Camera && input.rightDown)
+        if (mState.view.tool != ViewportTool::Camera && input.rightDown)
             input.leftDown = true;
     }
     const bool anyDown = input.leftDown || input.middleDown || input.rightDown;
@@ -127,23 +100,8 @@ void Editor::runInput(InputState input, int width, int height) {
 }
 
 void Editor::applyKeys(const InputState& input) {
-    if (const std::string changed = applyRenderKeys(input, mState); !changed.empty())
+    if (const std::string changed = applyEditorKeys(mState, input, mUi != nullptr); !changed.empty())
         std::fprintf(stderr, "grass-editor: %s\n", changed.c_str());
-    applyToolKeys(mState, input.typed);
-    for (const ui::KeyEvent& key : input.keys) {
-        if (!key.modifiers.ctrl)
-            continue;
-        if (key.key == ui::Key::Z)
-            key.modifiers.shift ? redo(mState) : undo(mState);
-        else if (key.key == ui::Key::Y)
-            redo(mState);
-        else if (key.key == ui::Key::S && mUi) {
-            if (mState.loaded.file.empty())
-                mState.fileDialog = FileDialog::SaveAs;
-            else
-                saveTo(mState, mState.loaded.file.string());
-        }
-    }
     // With the UI, Escape belongs to it (closing popups and text edits): one press must not
     // also quit. File → Quit and the window's close button remain.
     if (input.escapePressed && !mUi)

@@ -1,5 +1,5 @@
 // Recorded input for the editor (issue 8: `grass-editor --script FILE`): a text file of pointer,
-// key and wait commands turned into one InputState per frame, which main.cpp uses instead of
+// key and wait commands turned into one InputState per frame, which the Editor uses instead of
 // GLFW's, so tests and bug reports replay a session exactly. One command per line, '#' starts a
 // comment; coordinates are window coordinates (GLFW's screen coordinates, y down):
 //

@@ -32,7 +32,7 @@ std::filesystem::path projectFileFor(const std::string& path) {
 // do not exist yet, so repeated shots never overwrite each other.
 std::string freshPath(const EditorState& s, const std::string& stem, const std::string& extension) {
     namespace fs = std::filesystem;
-    const fs::path folder = s.loaded.folder.empty() ? fs::current_path() : s.loaded.folder;
+    const fs::path folder = s.doc.loaded.folder.empty() ? fs::current_path() : s.doc.loaded.folder;
     for (int n = 1;; ++n) {
         const std::string name = stem + "-" + std::to_string(n);
         if (!fs::exists(folder / (name + extension)) &&
@@ -46,26 +46,26 @@ void fileMenu(ui::Ui& bar, EditorState& s) {
         if (ui::menuItem(m, "New"))
             askLeave(s, LeaveAction::New);
         if (ui::menuItem(m, "Open…")) {
-            s.fileDialog = FileDialog::Open;
-            s.pathText = s.loaded.folder.string();
+            s.transient.fileDialog = FileDialog::Open;
+            s.transient.pathText = s.doc.loaded.folder.string();
         }
         if (ui::menuItem(m, "Save")) {
-            if (s.loaded.file.empty()) {
-                s.fileDialog = FileDialog::SaveAs;
-                s.pathText.clear();
+            if (s.doc.loaded.file.empty()) {
+                s.transient.fileDialog = FileDialog::SaveAs;
+                s.transient.pathText.clear();
             } else {
-                saveTo(s, s.loaded.file.string());
+                saveTo(s, s.doc.loaded.file.string());
             }
         }
         if (ui::menuItem(m, "Save As…")) {
-            s.fileDialog = FileDialog::SaveAs;
-            s.pathText = s.loaded.file.string();
+            s.transient.fileDialog = FileDialog::SaveAs;
+            s.transient.pathText = s.doc.loaded.file.string();
         }
         m.separator();
         if (ui::menuItem(m, "Export…")) {
-            s.exportDialog = true;
-            if (s.exportDir.empty())
-                s.exportDir = (s.loaded.folder / "export").string();
+            s.transient.exportDialog = true;
+            if (s.transient.exportDir.empty())
+                s.transient.exportDir = (s.doc.loaded.folder / "export").string();
         }
         if (ui::menuItem(m, "Save screenshot"))
             s.screenshotRequested = freshPath(s, "screenshot", ".png");
@@ -79,11 +79,11 @@ void fileMenu(ui::Ui& bar, EditorState& s) {
 
 void editMenu(ui::Ui& bar, EditorState& s) {
     ui::menu(bar, "Edit", [&](ui::Ui& m) {
-        const core::Edit* next = s.history.nextUndo();
+        const core::Edit* next = s.doc.history.nextUndo();
         if (ui::menuItem(m, next ? "Undo " + next->label + "   Ctrl+Z" : std::string("Undo")) &&
             next)
             undo(s);
-        const core::Edit* again = s.history.nextRedo();
+        const core::Edit* again = s.doc.history.nextRedo();
         if (ui::menuItem(
                 m, again ? "Redo " + again->label + "   Ctrl+Shift+Z" : std::string("Redo")) &&
             again)
@@ -93,9 +93,9 @@ void editMenu(ui::Ui& bar, EditorState& s) {
 
 // The path entry window of Open… and Save As… (there is no native file dialog).
 void fileDialogWindow(ui::Context& ctx, EditorState& s) {
-    if (s.fileDialog == FileDialog::None)
+    if (s.transient.fileDialog == FileDialog::None)
         return;
-    const bool opening = s.fileDialog == FileDialog::Open;
+    const bool opening = s.transient.fileDialog == FileDialog::Open;
     bool open = true;
     const ui::Rect screen = ctx.screenRect();
     const ui::Rect defaultRect = ui::Rect::fromMinSize(
@@ -108,30 +108,30 @@ void fileDialogWindow(ui::Context& ctx, EditorState& s) {
             // e.g. a click on Cancel) confirms the dialog.
             const bool enter = ctx.keyPressed(ui::Key::Enter);
             bool committed = false;
-            ui::textEdit(ui, "##path", s.pathText, ui.availableWidth() - 8.0f, &committed);
+            ui::textEdit(ui, "##path", s.transient.pathText, ui.availableWidth() - 8.0f, &committed);
             ui.horizontal([&](ui::Ui& row) {
                 const bool go =
                     row.button(opening ? "Open" : "Save").clicked() || (committed && enter);
-                if (go && !s.pathText.empty()) {
+                if (go && !s.transient.pathText.empty()) {
                     if (opening)
-                        askLeave(s, LeaveAction::Open, s.pathText);
+                        askLeave(s, LeaveAction::Open, s.transient.pathText);
                     else
-                        saveTo(s, projectFileFor(s.pathText).string());
-                    s.fileDialog = FileDialog::None;
+                        saveTo(s, projectFileFor(s.transient.pathText).string());
+                    s.transient.fileDialog = FileDialog::None;
                 }
                 if (row.button("Cancel").clicked())
-                    s.fileDialog = FileDialog::None;
+                    s.transient.fileDialog = FileDialog::None;
             });
         },
         defaultRect);
     if (!open)
-        s.fileDialog = FileDialog::None;
+        s.transient.fileDialog = FileDialog::None;
 }
 
-// Carries out the confirmed (or harmless) leave action for main.cpp.
+// Carries out the confirmed (or harmless) leave action for the Editor.
 void leave(EditorState& s) {
-    s.quitDialog = false;
-    switch (s.leaveAction) {
+    s.transient.quitDialog = false;
+    switch (s.transient.leaveAction) {
         case LeaveAction::Quit:
             s.quitRequested = true;
             break;
@@ -139,27 +139,27 @@ void leave(EditorState& s) {
             s.newRequested = true;
             break;
         case LeaveAction::Open:
-            s.openRequested = s.leaveOpenPath;
+            s.openRequested = s.transient.leaveOpenPath;
             break;
     }
 }
 
 void quitDialogWindow(ui::Context& ctx, EditorState& s) {
-    if (!s.quitDialog)
+    if (!s.transient.quitDialog)
         return;
     const ui::Rect screen = ctx.screenRect();
     ui::window(
-        ctx, "Unsaved changes", &s.quitDialog,
+        ctx, "Unsaved changes", &s.transient.quitDialog,
         [&](ui::Ui& ui) {
             ui.label("The project has unsaved changes.");
-            const bool quitting = s.leaveAction == LeaveAction::Quit;
+            const bool quitting = s.transient.leaveAction == LeaveAction::Quit;
             ui.horizontal([&](ui::Ui& row) {
                 if (row.button(quitting ? "Save and quit" : "Save first").clicked()) {
-                    if (s.loaded.file.empty()) {
-                        s.fileDialog = FileDialog::SaveAs;  // no file yet: ask where first
-                        s.quitDialog = false;
-                    } else if (saveTo(s, s.loaded.file.string())) {
-                        askLeave(s, s.leaveAction, s.leaveOpenPath);
+                    if (s.doc.loaded.file.empty()) {
+                        s.transient.fileDialog = FileDialog::SaveAs;  // no file yet: ask where first
+                        s.transient.quitDialog = false;
+                    } else if (saveTo(s, s.doc.loaded.file.string())) {
+                        askLeave(s, s.transient.leaveAction, s.transient.leaveOpenPath);
                     }
                 }
                 // The project stays dirty: if opening the other one fails, the edits are
@@ -167,7 +167,7 @@ void quitDialogWindow(ui::Context& ctx, EditorState& s) {
                 if (row.button(quitting ? "Quit without saving" : "Discard changes").clicked())
                     leave(s);
                 if (row.button("Cancel").clicked())
-                    s.quitDialog = false;
+                    s.transient.quitDialog = false;
             });
         },
         ui::Rect::fromMinSize({screen.centre().x - 200.0f, screen.centre().y - 50.0f},
@@ -181,8 +181,8 @@ void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
     bg.line({rect.min.x, rect.min.y + 0.5f}, {rect.max.x, rect.min.y + 0.5f},
             {1.0f, style.separator});
     ctx.registerArea(rect);
-    const render::FrameTimings& t = s.status.timings;
-    const bool stems = s.loaded.project.render.technique == core::GrassTechnique::Growth;
+    const render::FrameTimings& t = s.transient.status.timings;
+    const bool stems = s.doc.loaded.project.render.technique == core::GrassTechnique::Growth;
     // The snow map's time shows only while snow lies (its pass runs only then).
     char snow[32] = "";
     if (t.snowMs > 0.0)
@@ -191,15 +191,15 @@ void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
     std::snprintf(text, sizeof text,
                   "%zu blades · %zu drawn   cull %.2f · opaque %.2f · grass %.2f · %s %.2f%s ms"
                   "   UI %.2f ms   %.0f fps",
-                  s.status.blades, stems ? t.stemSetsDrawn : t.cull.drawn, t.cullMs, t.meshMs,
+                  s.transient.status.blades, stems ? t.stemSetsDrawn : t.cull.drawn, t.cullMs, t.meshMs,
                   t.grassMs, stems ? "stem sets" : "billboards",
-                  stems ? t.stemSetMs : t.billboardMs, snow, s.status.uiMs, s.status.fps);
+                  stems ? t.stemSetMs : t.billboardMs, snow, s.transient.status.uiMs, s.transient.status.fps);
     ui::Ui ui(ctx, {rect.min + ui::Vec2(8.0f, 2.0f), rect.max}, ui::Layer::Panels);
     ui.horizontal([&](ui::Ui& row) {
         row.label(text);
         // A failed save in warning orange, so that it reads as something to act on.
-        if (!s.message.empty())
-            row.coloredLabel("   " + s.message, s.messageIsSaveError
+        if (!s.transient.message.empty())
+            row.coloredLabel("   " + s.transient.message, s.transient.messageIsSaveError
                                                     ? ui::Color32::rgb(255, 150, 60)
                                                     : style.textWeak);
     });
@@ -208,12 +208,12 @@ void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
 }  // namespace
 
 render::RenderOptions viewRenderOptions(const EditorState& s) {
-    render::RenderOptions options = render::renderOptionsFor(s.loaded.project, s.softwareRenderer);
+    render::RenderOptions options = render::renderOptionsFor(s.doc.loaded.project, s.view.softwareRenderer);
     render::CullSettings& cull = options.cull;
-    cull.orientation = cull.orientation && s.view.orientation;
-    cull.frustum = cull.frustum && s.view.frustum;
-    cull.distance = cull.distance && s.view.distance;
-    cull.occlusion = cull.occlusion && s.view.occlusion;
+    cull.orientation = cull.orientation && s.view.overrides.orientation;
+    cull.frustum = cull.frustum && s.view.overrides.frustum;
+    cull.distance = cull.distance && s.view.overrides.distance;
+    cull.occlusion = cull.occlusion && s.view.overrides.occlusion;
     return options;
 }
 
@@ -227,45 +227,45 @@ bool saveTo(EditorState& s, const std::string& file) {
     // its files along (mesh, maps, textures), or it would name files that are not there.
     // Files already at the destination are kept; the copy happens before project.json is
     // written, so a failure leaves the old project as it was and no new one naming missing files.
-    if (!s.loaded.folder.empty() && !fs::equivalent(s.loaded.folder, folder, ec)) {
-        for (const std::string& asset : core::projectAssetPaths(s.loaded.project)) {
-            const fs::path from = s.loaded.folder / asset, to = folder / asset;
+    if (!s.doc.loaded.folder.empty() && !fs::equivalent(s.doc.loaded.folder, folder, ec)) {
+        for (const std::string& asset : core::projectAssetPaths(s.doc.loaded.project)) {
+            const fs::path from = s.doc.loaded.folder / asset, to = folder / asset;
             if (!fs::exists(from) || fs::exists(to))
                 continue;
             fs::create_directories(to.parent_path(), ec);
             if (!fs::copy_file(from, to, ec)) {
-                s.message = "not saved: " + to.string() + ": cannot copy " + from.string() + " (" +
+                s.transient.message = "not saved: " + to.string() + ": cannot copy " + from.string() + " (" +
                             ec.message() + ")";
-                s.messageIsSaveError = true;
+                s.transient.messageIsSaveError = true;
                 return false;
             }
         }
     }
     if (auto maps = savePaintedMaps(s, folder); !maps) {
-        s.message = "not saved: " + maps.error().str();
-        s.messageIsSaveError = true;
+        s.transient.message = "not saved: " + maps.error().str();
+        s.transient.messageIsSaveError = true;
         return false;
     }
-    if (auto saved = core::saveProject(s.loaded.project, path); !saved) {
-        s.message = "not saved: " + saved.error().str();
-        s.messageIsSaveError = true;
+    if (auto saved = core::saveProject(s.doc.loaded.project, path); !saved) {
+        s.transient.message = "not saved: " + saved.error().str();
+        s.transient.messageIsSaveError = true;
         return false;
     }
     // Saved: the autosave side files (of where the project was) have nothing left to recover.
-    removeAutosave(s.loaded);
-    s.loaded.file = path;
-    s.loaded.folder = folder;
-    s.dirty = false;
-    s.message = "saved " + path.string();
-    s.messageIsSaveError = false;
+    removeAutosave(s.doc.loaded);
+    s.doc.loaded.file = path;
+    s.doc.loaded.folder = folder;
+    s.doc.dirty = false;
+    s.transient.message = "saved " + path.string();
+    s.transient.messageIsSaveError = false;
     return true;
 }
 
 void askLeave(EditorState& s, LeaveAction action, const std::string& openPath) {
-    s.leaveAction = action;
-    s.leaveOpenPath = openPath;
-    s.quitDialog = s.dirty;
-    if (!s.dirty)
+    s.transient.leaveAction = action;
+    s.transient.leaveOpenPath = openPath;
+    s.transient.quitDialog = s.doc.dirty;
+    if (!s.doc.dirty)
         leave(s);
 }
 
@@ -279,22 +279,21 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
             fileMenu(bar, s);
             editMenu(bar, s);
             const std::string title =
-                s.loaded.project.name + (s.dirty ? " *" : "") +
-                (s.loaded.file.empty() ? "  (not saved)" : "  — " + s.loaded.file.string());
+                s.doc.loaded.project.name + (s.doc.dirty ? " *" : "") +
+                (s.doc.loaded.file.empty() ? "  (not saved)" : "  — " + s.doc.loaded.file.string());
             bar.coloredLabel(title, ctx.style().textWeak);
         });
     });
+    // The side panel's widgets edit a working copy of the project; what they changed becomes one
+    // command (the menus above and the windows below act on the document itself).
+    s.transient.draft = {s.doc.project(), false};
     ui::sidePanel(ctx, "side", ui::Side::Left, SIDE_PANEL_WIDTH, [&](ui::Ui& panel) {
         // Layers with open headers are taller than any screen: the whole panel scrolls.
         panel.scrollArea("scroll", panel.availableRect().height(), [&](ui::Ui& ui) {
             ui.horizontal([&](ui::Ui& row) {
                 bool committed = false;
-                std::string name = s.loaded.project.name;
-                ui::textEdit(row, "project##name", name, 200.0f, &committed);
-                if (name != s.loaded.project.name) {
-                    s.loaded.project.name = name;
-                    s.dirty = true;
-                }
+                ui::textEdit(row, "project##name", s.transient.draft.project.name, 200.0f,
+                             &committed);
             });
             ui.separator();
             toolSection(ui, s);
@@ -306,6 +305,10 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
             snowSection(ui, s);
         });
     });
+    if (PanelDraft& draft = s.transient.draft; draft.project != s.doc.project())
+        apply(s, EditProject{.after = std::move(draft.project),
+                             .effect = draft.regrow ? EditEffect::Regrow : EditEffect::Live,
+                             .ongoing = ctx.activeId().value != 0});
     ui::Rect central = ui::centralRect(ctx);
     const ui::Rect bar{{central.min.x, central.max.y - STATUS_BAR_HEIGHT}, central.max};
     statusBar(ctx, bar, s);

@@ -13,30 +13,30 @@ void startExport(EditorState& s) {
     if (!s.scene || s.busy())
         return;
     core::ExportOptions options;
-    options.format = core::ExportFormat(s.exportFormat);
-    options.lod = options.format == core::ExportFormat::Gltf ? s.exportLod : 0;
-    std::filesystem::path dir(s.exportDir);
-    if (dir.is_relative() && !s.loaded.folder.empty())
-        dir = s.loaded.folder / dir;
+    options.format = core::ExportFormat(s.transient.exportFormat);
+    options.lod = options.format == core::ExportFormat::Gltf ? s.transient.exportLod : 0;
+    std::filesystem::path dir(s.transient.exportDir);
+    if (dir.is_relative() && !s.doc.loaded.folder.empty())
+        dir = s.doc.loaded.folder / dir;
     options.outDir = dir;
     // An export reads what already lies in its folder (the clean-up of files no longer named):
     // whatever happens there, unsaved work is in the autosave first.
-    if (s.dirty)
+    if (s.doc.dirty)
         if (auto kept = writeAutosave(s); !kept) {
-            s.message = "not exported: the unsaved work could not be autosaved first: " +
+            s.transient.message = "not exported: the unsaved work could not be autosaved first: " +
                         kept.error().str();
             return;
         }
-    s.exportJob = std::make_shared<ExportJob>(s.loaded, *s.scene, options);
-    s.message = "exporting to " + dir.string();
+    s.exportJob = std::make_shared<ExportJob>(s.doc.loaded, *s.scene, options);
+    s.transient.message = "exporting to " + dir.string();
 }
 
 void exportWindow(ui::Context& ctx, EditorState& s) {
-    if (s.exportJob && s.exportJob->done() && !s.exportDialog) {
-        s.message = s.exportJob->summary();
+    if (s.exportJob && s.exportJob->done() && !s.transient.exportDialog) {
+        s.transient.message = s.exportJob->summary();
         s.exportJob.reset();
     }
-    if (!s.exportDialog)
+    if (!s.transient.exportDialog)
         return;
     const ui::Rect screen = ctx.screenRect();
     bool open = true;
@@ -47,31 +47,31 @@ void exportWindow(ui::Context& ctx, EditorState& s) {
                 ui.label(s.exportJob->done() ? s.exportJob->summary() : s.exportJob->stage());
                 ui.progressBar(s.exportJob->fraction());
                 if (s.exportJob->done() && ui.button("Close").clicked()) {
-                    s.message = s.exportJob->summary();
+                    s.transient.message = s.exportJob->summary();
                     s.exportJob.reset();
-                    s.exportDialog = false;
+                    s.transient.exportDialog = false;
                 }
                 return;
             }
             ui.label("Folder (a relative path is inside the project folder):");
-            ui::textEdit(ui, "##exportdir", s.exportDir, ui.availableWidth() - 8.0f);
+            ui::textEdit(ui, "##exportdir", s.transient.exportDir, ui.availableWidth() - 8.0f);
             static constexpr std::array<const char*, 2> FORMATS{"glTF (EXT_mesh_gpu_instancing)",
                                                                 "raw GPU buffers"};
-            ui.comboBox("format", s.exportFormat, FORMATS);
-            if (s.exportFormat == int(core::ExportFormat::Gltf))
-                ui.slider("LOD (keep 1 in 2^N)", s.exportLod, 0, core::MAX_EXPORT_LOD);
+            ui.comboBox("format", s.transient.exportFormat, FORMATS);
+            if (s.transient.exportFormat == int(core::ExportFormat::Gltf))
+                ui.slider("LOD (keep 1 in 2^N)", s.transient.exportLod, 0, core::MAX_EXPORT_LOD);
             ui.horizontal([&](ui::Ui& row) {
-                if (row.button("Export").clicked() && !s.exportDir.empty())
+                if (row.button("Export").clicked() && !s.transient.exportDir.empty())
                     startExport(s);
                 if (row.button("Cancel").clicked())
-                    s.exportDialog = false;
+                    s.transient.exportDialog = false;
             });
         },
         ui::Rect::fromMinSize({screen.centre().x - 230.0f, screen.centre().y - 80.0f},
                               {460.0f, 160.0f}));
     // Closing the window while a job runs only hides it; the status bar reports the end.
     if (!open)
-        s.exportDialog = false;
+        s.transient.exportDialog = false;
 }
 
 }  // namespace grass::editor

@@ -46,17 +46,16 @@ std::string estimateText(const core::KnobEstimate& e) {
 }  // namespace
 
 void qualityRows(ui::Ui& ui, EditorState& s) {
-    core::Project& project = s.loaded.project;
+    core::Project& project = s.transient.draft.project;
     const std::optional<core::QualityPreset> current = core::matchingPreset(project);
     int selected = current ? static_cast<int>(*current) + 1 : 0;
     if (const ui::Response r = ui.comboBox("quality", selected, PRESET_ITEMS);
         r.changed() && selected > 0) {
         const core::PhysicsParams physicsBefore = project.physics;
         core::applyQuality(core::qualitySettings(core::QualityPreset(selected - 1)), project);
-        s.dirty = true;
         // The live simulation was built with the old substeps: re-grow it.
         if (project.physics != physicsBefore)
-            s.rebuildPending = true;
+            s.transient.draft.regrow = true;
     }
     // Only the knobs this scene uses: a blades-only field pays nothing for billboards.
     std::vector<core::KnobEstimate> estimates;

@@ -18,15 +18,10 @@ namespace grass::editor {
 
 namespace {
 
-// A value the renderer reads every frame changed: only the project needs saving.
-void live(EditorState& s, const ui::Response& r) {
-    if (r.changed())
-        s.dirty = true;
-}
 // A value the scene is grown from changed: re-grow once the edit ends.
 void regrow(EditorState& s, const ui::Response& r) {
     if (r.changed())
-        s.dirty = s.rebuildPending = true;
+        s.transient.draft.regrow = true;
 }
 
 // The row of `key` in `table` for `value`; a change re-grows the scene.
@@ -49,12 +44,12 @@ void positionRow(ui::Ui& ui, EditorState& s, glm::vec3& position, std::vector<co
         vec3Row(ui, s, "position", position, 0.02f);
         return;
     }
-    const float timeS = float(s.timeline.timeS());
+    const float timeS = float(s.view.timeline.timeS());
     const glm::vec3 before = core::samplePath(path, timeS, position);
     glm::vec3 at = before;
     vec3Row(ui, s, "position (key at now)", at, 0.02f);
     if (at != before)
-        core::setKey(path, timeS, at, 0.5f * float(s.timeline.stepS()));
+        core::setKey(path, timeS, at, 0.5f * float(s.view.timeline.stepS()));
 }
 
 void growthCurves(ui::Ui& ui, EditorState& s, core::GrowthCurves& c) {
@@ -73,25 +68,19 @@ void growthCurves(ui::Ui& ui, EditorState& s, core::GrowthCurves& c) {
 
 void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
     const auto rows = core::settings::layer();
-    core::GrassLayer& layer = s.loaded.project.layers[index];
+    core::GrassLayer& layer = s.transient.draft.project.layers[index];
     core::LayerField* field =
         s.scene && index < s.scene->layers.size() ? &s.scene->layers[index] : nullptr;
     // Shape and colours reach the drawn field at once; the rest re-grows it.
-    if (const ui::Response r = settingWidget(ui, rows, "shape", layer); r.changed()) {
-        if (field)
-            field->shape = layer.shape;
-        live(s, r);
-    }
+    if (settingWidget(ui, rows, "shape", layer).changed() && field)
+        field->shape = layer.shape;
     for (const std::string_view key : {"height", "width", "stiffness"})
         regrowRow(ui, s, core::settings::blade(), key, layer.scatter.blade);
     regrowRow(ui, s, rows, "density", layer);
     for (const std::string_view key : {"root_color", "tip_color"})
-        if (const ui::Response r = settingWidget(ui, rows, key, layer); r.changed()) {
-            if (field) {
-                field->rootColor = layer.rootColor;
-                field->tipColor = layer.tipColor;
-            }
-            live(s, r);
+        if (settingWidget(ui, rows, key, layer).changed() && field) {
+            field->rootColor = layer.rootColor;
+            field->tipColor = layer.tipColor;
         }
     regrowRow(ui, s, core::settings::growth(), "enabled", layer.growth);
     if (layer.growth.enabled)
@@ -103,7 +92,7 @@ void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
 }  // namespace
 
 void layerSection(ui::Ui& ui, EditorState& s) {
-    auto& layers = s.loaded.project.layers;
+    auto& layers = s.transient.draft.project.layers;
     ui.collapsingHeader(
         "Layers (" + std::to_string(layers.size()) + ")",
         [&](ui::Ui& section) {
@@ -118,7 +107,7 @@ void layerSection(ui::Ui& ui, EditorState& s) {
 }
 
 void windSection(ui::Ui& ui, EditorState& s) {
-    auto& winds = s.loaded.project.wind;
+    auto& winds = s.transient.draft.project.wind;
     ui.collapsingHeader("Wind (" + std::to_string(winds.size()) + ")", [&](ui::Ui& section) {
         if (winds.empty())
             section.coloredLabel("no wind sources", section.style().textWeak);
@@ -143,7 +132,7 @@ void windSection(ui::Ui& ui, EditorState& s) {
 }
 
 void colliderSection(ui::Ui& ui, EditorState& s) {
-    auto& colliders = s.loaded.project.colliders;
+    auto& colliders = s.transient.draft.project.colliders;
     ui.collapsingHeader(
         "Colliders (" + std::to_string(colliders.size()) + ")", [&](ui::Ui& section) {
             if (colliders.empty())
@@ -167,7 +156,7 @@ void renderSection(ui::Ui& ui, EditorState& s) {
         "Render",
         [&](ui::Ui& section) {
             // The cull tests are the view's (a look at what each removes), not the project's.
-            ViewOverrides& view = s.view;
+            ViewOverrides& view = s.view.overrides;
             section.label("Culling (view only)");
             section.indent([&](ui::Ui& body) {
                 body.checkbox(view.orientation, "orientation");
@@ -175,7 +164,7 @@ void renderSection(ui::Ui& ui, EditorState& s) {
                 body.checkbox(view.distance, "distance");
                 body.checkbox(view.occlusion, "occlusion");
             });
-            core::Project& project = s.loaded.project;
+            core::Project& project = s.transient.draft.project;
             settingWidget(section, core::settings::render(), "technique", project.render);
             settingWidget(section, core::settings::lighting(), "model", project.lighting);
             qualityRows(section, s);

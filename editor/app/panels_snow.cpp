@@ -18,84 +18,77 @@ namespace grass::editor {
 
 namespace {
 
-// The renderer reads the snow every frame: only the project needs saving.
-void live(EditorState& s, const ui::Response& r) {
-    if (r.changed())
-        s.dirty = true;
-}
 
-void rows(ui::Ui& ui, EditorState& s, core::SnowParams& snow,
+void rows(ui::Ui& ui, core::SnowParams& snow,
           std::initializer_list<std::string_view> keys) {
     for (const std::string_view key : keys)
-        live(s, settingWidget(ui, core::settings::snow(), key, snow));
+        settingWidget(ui, core::settings::snow(), key, snow);
 }
 
 // amount ≤ max amount (the loader refuses more): each bounds the other.
-void amountRows(ui::Ui& ui, EditorState& s, core::SnowParams& snow) {
+void amountRows(ui::Ui& ui, core::SnowParams& snow) {
     const auto table = core::settings::snow();
     const auto& amountRow = *core::settings::findSetting(table, "amount");
     const auto& maxRow = *core::settings::findSetting(table, "max_amount");
     core::settings::UiHint amount = amountRow.ui;
     amount.min = float(amountRow.rule.min);
     amount.max = snow.maxAmountM;
-    live(s, settingWidget(ui, amountRow, snow, &amount));
+    settingWidget(ui, amountRow, snow, &amount);
     core::settings::UiHint maxAmount = maxRow.ui;
     maxAmount.min = snow.amountM;
     maxAmount.max = float(maxRow.rule.max);
-    live(s, settingWidget(ui, maxRow, snow, &maxAmount));
+    settingWidget(ui, maxRow, snow, &maxAmount);
 }
 
 // The loader refuses a fall direction of length < 1e-3; a direction is a direction at any
 // length, so the row stays within the unit cube and keeps its old value rather than vanish.
-void fallDirectionRow(ui::Ui& ui, EditorState& s, core::SnowParams& snow) {
+void fallDirectionRow(ui::Ui& ui, core::SnowParams& snow) {
     constexpr float MIN_DIRECTION_LENGTH = 1e-2f;
     const glm::vec3 before = snow.fallDirection;
-    live(s, settingWidget(ui, core::settings::snow(), "fall_direction", snow));
+    settingWidget(ui, core::settings::snow(), "fall_direction", snow);
     if (glm::length(snow.fallDirection) < MIN_DIRECTION_LENGTH)
         snow.fallDirection = before;
 }
 
 // One of the three sizes the loader accepts.
-void mapResolutionCombo(ui::Ui& ui, EditorState& s, core::SnowParams& snow) {
+void mapResolutionCombo(ui::Ui& ui, core::SnowParams& snow) {
     const auto& sizes = core::SNOW_MAP_RESOLUTIONS;
     std::array<std::string, sizes.size()> names;
     for (std::size_t i = 0; i < sizes.size(); ++i)
         names[i] = std::to_string(sizes[i]);
     const auto* found = std::find(sizes.begin(), sizes.end(), snow.mapResolution);
     int index = found == sizes.end() ? 1 : int(found - sizes.begin());
-    if (const ui::Response r = ui.comboBox("depth map texels", index, names); r.changed()) {
+    if (ui.comboBox("depth map texels", index, names).changed())
         snow.mapResolution = sizes[std::size_t(index)];
-        live(s, r);
-    }
 }
 
-void snowBody(ui::Ui& ui, EditorState& s, core::SnowParams& snow) {
-    rows(ui, s, snow, {"enabled"});
-    amountRows(ui, s, snow);
-    fallDirectionRow(ui, s, snow);
-    rows(ui, s, snow, {"color"});
+void snowBody(ui::Ui& ui, core::SnowParams& snow) {
+    rows(ui, snow, {"enabled"});
+    amountRows(ui, snow);
+    fallDirectionRow(ui, snow);
+    rows(ui, snow, {"color"});
     // Fractal noise of the snow surface (paper eq. 4) and of the incline (Fi = cos φ + n).
     ui.collapsingHeader("noise", [&](ui::Ui& body) {
-        rows(body, s, snow,
+        rows(body, snow,
              {"noise_octaves", "noise_amplitude", "noise_frequency", "noise_scale",
               "incline_noise"});
     });
     // The exposure test against the depth map along the fall (Fe).
     ui.collapsingHeader("exposure", [&](ui::Ui& body) {
-        mapResolutionCombo(body, s, snow);
-        rows(body, s, snow, {"samples", "sample_radius", "depth_bias", "boundary_falloff"});
+        mapResolutionCombo(body, snow);
+        rows(body, snow, {"samples", "sample_radius", "depth_bias", "boundary_falloff"});
     });
     // Accumulation and melt over --time, and the snow's load on the blades.
     ui.collapsingHeader("accumulation, melt, load", [&](ui::Ui& body) {
-        rows(body, s, snow, {"accumulation_rate", "melt_rate", "load_gravity"});
+        rows(body, snow, {"accumulation_rate", "melt_rate", "load_gravity"});
     });
 }
 
 }  // namespace
 
 void snowSection(ui::Ui& ui, EditorState& s) {
-    core::SnowParams& snow = s.loaded.project.snow;
-    ui.collapsingHeader("Snow", [&](ui::Ui& section) { snowBody(section, s, snow); });
+    core::SnowParams& snow = s.transient.draft.project.snow;
+    ui.collapsingHeader("Snow", [&](ui::Ui& section) { snowBody(section, snow); });
 }
 
 }  // namespace grass::editor

@@ -14,18 +14,17 @@ namespace grass::editor {
 namespace {
 
 void brushSettings(ui::Ui& ui, EditorState& s) {
-    core::Project& project = s.loaded.project;
+    core::Project& project = s.transient.draft.project;
     std::vector<std::string> layers;
     for (const core::GrassLayer& layer : project.layers)
         layers.push_back(layer.name);
-    int layer = int(s.paint.layer);
+    int layer = int(s.view.paint.layer);
     if (!layers.empty() && ui.comboBox("layer", layer, layers).changed())
-        s.paint.layer = std::size_t(layer);
-    static constexpr std::array<const char*, 3> MAPS{"density", "soil", "light"};
-    int map = int(s.paint.map);
-    if (ui.comboBox("map", map, MAPS).changed())
-        s.paint.map = core::LayerMap(map);
-    core::BrushSettings& b = s.paint.brush;
+        s.view.paint.layer = std::size_t(layer);
+    int map = int(s.view.paint.map);
+    if (ui.comboBox("map", map, core::LAYER_MAP_NAMES).changed())
+        s.view.paint.map = core::LayerMap(map);
+    core::BrushSettings& b = s.view.paint.brush;
     ui.horizontal([&](ui::Ui& row) {
         row.radioValue(b.mode, core::BrushMode::Add, "add");
         row.radioValue(b.mode, core::BrushMode::Subtract, "subtract");
@@ -35,7 +34,7 @@ void brushSettings(ui::Ui& ui, EditorState& s) {
     if (ui::sliderWithEntry(ui, "radius  [ ]", b.radiusM, 0.01f, 100.0f,
                             {.logarithmic = true, .decimals = 2})
             .changed())
-        s.paint.radiusChosen = true;
+        s.view.paint.radiusChosen = true;
     ui::sliderWithEntry(ui, "strength", b.strength, 0.0f, 1.0f, {.decimals = 2});
     static constexpr std::array<const char*, 3> FALLOFFS{"smooth", "linear", "constant"};
     int falloff = int(b.falloff);
@@ -52,16 +51,16 @@ glm::vec3 newObjectPosition(const EditorState& s) {
 }
 
 void placeSettings(ui::Ui& ui, EditorState& s) {
-    core::Project& project = s.loaded.project;
+    core::Project& project = s.transient.draft.project;
     ui.horizontal([&](ui::Ui& row) {
-        row.radioValue(s.place.mode, core::GizmoMode::Translate, "move (w)");
-        row.radioValue(s.place.mode, core::GizmoMode::Rotate, "rotate (e)");
-        row.radioValue(s.place.mode, core::GizmoMode::Scale, "scale (r)");
+        row.radioValue(s.view.place.mode, core::GizmoMode::Translate, "move (w)");
+        row.radioValue(s.view.place.mode, core::GizmoMode::Rotate, "rotate (e)");
+        row.radioValue(s.view.place.mode, core::GizmoMode::Scale, "scale (r)");
     });
-    ui.checkbox(s.place.snap.enabled, "snap (or hold Ctrl)");
-    if (s.place.snap.enabled) {
-        ui.dragValue("step m", s.place.snap.translateStepM, 0.01f, 0.001f, 100.0f, 2);
-        ui.dragValue("step °", s.place.snap.rotateStepDeg, 0.5f, 0.5f, 90.0f, 1);
+    ui.checkbox(s.view.place.snap.enabled, "snap (or hold Ctrl)");
+    if (s.view.place.snap.enabled) {
+        ui.dragValue("step m", s.view.place.snap.translateStepM, 0.01f, 0.001f, 100.0f, 2);
+        ui.dragValue("step °", s.view.place.snap.rotateStepDeg, 0.5f, 0.5f, 90.0f, 1);
     }
     ui.horizontal([&](ui::Ui& row) {
         if (row.button("add wind").clicked()) {
@@ -71,8 +70,8 @@ void placeSettings(ui::Ui& ui, EditorState& s) {
             wind.source.position = newObjectPosition(s);
             wind.source.radiusM = s.scene ? 0.25f * glm::length(s.scene->bounds.size()) : 5.0f;
             project.wind.push_back(wind);
-            s.place.selected = PlacedObject{PlacedKind::Wind, project.wind.size() - 1};
-            s.dirty = s.rebuildPending = true;
+            s.view.place.selected = PlacedObject{PlacedKind::Wind, project.wind.size() - 1};
+            s.transient.draft.regrow = true;
         }
         if (row.button("add ball").clicked()) {
             core::ColliderDesc ball;
@@ -80,40 +79,40 @@ void placeSettings(ui::Ui& ui, EditorState& s) {
             ball.position = newObjectPosition(s);
             ball.radiusM = s.scene ? 0.05f * glm::length(s.scene->bounds.size()) : 0.5f;
             project.colliders.push_back(ball);
-            s.place.selected = PlacedObject{PlacedKind::Collider, project.colliders.size() - 1};
-            s.dirty = s.rebuildPending = true;
+            s.view.place.selected = PlacedObject{PlacedKind::Collider, project.colliders.size() - 1};
+            s.transient.draft.regrow = true;
         }
     });
-    if (!s.place.selected) {
+    if (!s.view.place.selected) {
         ui.coloredLabel("click a marker to select it", ui.style().textWeak);
         return;
     }
-    const PlacedObject o = *s.place.selected;
+    const PlacedObject o = *s.view.place.selected;
     const bool isWind = o.kind == PlacedKind::Wind;
     if (o.index >= (isWind ? project.wind.size() : project.colliders.size())) {
-        s.place.selected.reset();  // removed (an undo, a delete): nothing is selected any more
+        s.view.place.selected.reset();  // removed (an undo, a delete): nothing is selected any more
         return;
     }
     std::vector<core::PathKey>& path =
         isWind ? project.wind[o.index].source.path : project.colliders[o.index].path;
     const std::string& name = isWind ? project.wind[o.index].name : project.colliders[o.index].name;
     ui.label("selected: " + name + " (" + std::to_string(path.size()) + " keys)");
-    const float timeS = float(s.timeline.timeS());
-    const float tolerance = 0.5f * float(s.timeline.stepS());
+    const float timeS = float(s.view.timeline.timeS());
+    const float tolerance = 0.5f * float(s.view.timeline.stepS());
     ui.horizontal([&](ui::Ui& row) {
         if (row.button("key here").clicked()) {
             core::setKey(path, timeS, placedPosition(project, o, timeS), tolerance);
-            s.dirty = s.rebuildPending = true;
+            s.transient.draft.regrow = true;
         }
         if (row.button("remove key").clicked() && core::removeKey(path, timeS, tolerance))
-            s.dirty = s.rebuildPending = true;
+            s.transient.draft.regrow = true;
         if (row.button("delete").clicked()) {
             if (isWind)
                 project.wind.erase(project.wind.begin() + std::ptrdiff_t(o.index));
             else
                 project.colliders.erase(project.colliders.begin() + std::ptrdiff_t(o.index));
-            s.place.selected.reset();
-            s.dirty = s.rebuildPending = true;
+            s.view.place.selected.reset();
+            s.transient.draft.regrow = true;
         }
     });
 }
@@ -125,30 +124,30 @@ void toolSection(ui::Ui& ui, EditorState& s) {
         "Tools",
         [&](ui::Ui& section) {
             section.horizontal([&](ui::Ui& row) {
-                row.radioValue(s.tool, ViewportTool::Camera, "camera (c)");
-                row.radioValue(s.tool, ViewportTool::Paint, "brush (b)");
-                row.radioValue(s.tool, ViewportTool::Place, "gizmo (g)");
+                row.radioValue(s.view.tool, ViewportTool::Camera, "camera (c)");
+                row.radioValue(s.view.tool, ViewportTool::Paint, "brush (b)");
+                row.radioValue(s.view.tool, ViewportTool::Place, "gizmo (g)");
             });
-            if (s.tool == ViewportTool::Paint)
+            if (s.view.tool == ViewportTool::Paint)
                 brushSettings(section, s);
-            else if (s.tool == ViewportTool::Place)
+            else if (s.view.tool == ViewportTool::Place)
                 placeSettings(section, s);
         },
         true);
 }
 
 void timelineSection(ui::Ui& ui, EditorState& s) {
-    core::Timeline& t = s.timeline;
+    core::Timeline& t = s.view.timeline;
     ui.collapsingHeader("Timeline", [&](ui::Ui& section) {
         section.horizontal([&](ui::Ui& row) {
             if (row.button("|<").clicked())
-                s.timeJump = t.scrub(t.startS());
+                s.view.timeJump = t.scrub(t.startS());
             if (row.button("<").clicked())
-                s.timeJump = t.stepBack();
+                s.view.timeJump = t.stepBack();
             if (row.button(t.playing() ? "pause" : "play").clicked())
-                s.timeJump = t.toggle();
+                s.view.timeJump = t.toggle();
             if (row.button(">").clicked())
-                s.timeJump = t.stepForward();
+                s.view.timeJump = t.stepForward();
             bool loop = t.looping();
             if (row.checkbox(loop, "loop").changed())
                 t.setLoop(loop);
@@ -156,7 +155,7 @@ void timelineSection(ui::Ui& ui, EditorState& s) {
         float timeS = float(t.timeS());
         if (section.slider("time s", timeS, float(t.startS()), float(t.endS()), {.decimals = 2})
                 .changed())
-            s.timeJump = t.scrub(timeS);
+            s.view.timeJump = t.scrub(timeS);
         float speed = float(t.speed());
         if (section.slider("speed", speed, float(core::TIMELINE_MIN_SPEED),
                            float(core::TIMELINE_MAX_SPEED), {.logarithmic = true, .decimals = 2})

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "mesh/surface_ring.h"
+#include "app/commands.h"
 #include "app/panels.h"
 #include "ui/painter.h"
 
@@ -19,15 +20,6 @@ constexpr float DEFAULT_RADIUS_SHARE = 0.05f;
 // A click this close to an object's marker (pixels) selects it.
 constexpr float SELECT_PIXELS = 14.0f;
 constexpr int RING_POINTS = 48;
-
-const char* mapName(core::LayerMap map) {
-    switch (map) {
-    case core::LayerMap::Density: return "density";
-    case core::LayerMap::Soil: return "soil";
-    case core::LayerMap::Light: return "light";
-    }
-    return "map";
-}
 
 // Ctrl paints the opposite: add ↔ subtract, set toward 1 − value; smooth stays smooth.
 core::BrushSettings effectiveBrush(const core::BrushSettings& brush, bool invert) {
@@ -45,20 +37,15 @@ core::BrushSettings effectiveBrush(const core::BrushSettings& brush, bool invert
 
 void queue(EditorState& s, std::size_t layer, const Result<core::RegrowReport>& report) {
     if (!report)
-        s.message = "re-grow failed: " + report.error().str();
-    else if (!report->patches.empty() || !report->shadedPatches.empty())
-        s.regrown.emplace_back(layer, *report);
+        s.transient.message = "re-grow failed: " + report.error().str();
+    else if ((!report->patches.empty() || !report->shadedPatches.empty()) && s.regrown)
+        s.regrown(layer, *report);
 }
 
 void endStroke(EditorState& s) {
-    s.toolDragActive = false;
-    auto edit = s.tools->painter.end();
-    if (!edit)
-        return;
-    s.paintedMaps.insert({edit->layer, edit->map});
-    s.dirty = true;
-    const std::string label = std::string("paint ") + mapName(edit->map);
-    s.history.push(core::Edit{label, std::move(*edit)});
+    s.view.toolDragActive = false;
+    if (auto edit = s.tools->painter.end())
+        apply(s, RecordStroke{std::move(*edit)});
 }
 
 bool runPaint(EditorState& s, const core::OrbitCamera& camera, const ViewportPointer& p) {
@@ -78,18 +65,18 @@ bool runPaint(EditorState& s, const core::OrbitCamera& camera, const ViewportPoi
         return true;
     }
     if (!stroking) {
-        if (s.paint.layer >= s.scene->layers.size())
+        if (s.view.paint.layer >= s.scene->layers.size())
             return true;
-        if (!s.paint.radiusChosen) {
-            s.paint.brush.radiusM = DEFAULT_RADIUS_SHARE * glm::length(s.scene->bounds.size());
-            s.paint.radiusChosen = true;
+        if (!s.view.paint.radiusChosen) {
+            s.view.paint.brush.radiusM = DEFAULT_RADIUS_SHARE * glm::length(s.scene->bounds.size());
+            s.view.paint.radiusChosen = true;
         }
-        const core::GrassLayer& layer = s.loaded.project.layers[s.paint.layer];
-        painter.begin(s.paint.layer, s.paint.map, layer.mapResolution,
-                      effectiveBrush(s.paint.brush, p.ctrl));
-        s.toolDragActive = true;
+        const core::GrassLayer& layer = s.doc.loaded.project.layers[s.view.paint.layer];
+        painter.begin(s.view.paint.layer, s.view.paint.map, layer.mapResolution,
+                      effectiveBrush(s.view.paint.brush, p.ctrl));
+        s.view.toolDragActive = true;
     }
-    queue(s, s.paint.layer, painter.paintTo(hit->posWorld, p.pressure));
+    queue(s, s.view.paint.layer, painter.paintTo(hit->posWorld, p.pressure));
     return true;
 }
 
@@ -97,10 +84,11 @@ core::GizmoView gizmoView(const core::OrbitCamera& camera, const ViewportPointer
     return core::GizmoView{camera, p.viewportSize};
 }
 
-// Applies a drag's delta to the object as it was when the drag began.
-void applyGizmo(EditorState& s, PlacedObject object, const core::GizmoDelta& d, float timeS) {
-    core::Project& project = s.loaded.project;
-    const core::Project& start = s.gizmoStart;
+// The project with a drag's delta applied to the object as it was when the drag began.
+core::Project movedByGizmo(const EditorState& s, PlacedObject object, const core::GizmoDelta& d,
+                           float timeS) {
+    core::Project project = s.doc.project();
+    const core::Project& start = s.view.gizmoStart;
     const auto moved = [&](glm::vec3 position, std::vector<core::PathKey>& path,
                            const std::vector<core::PathKey>& startPath) -> glm::vec3 {
         if (startPath.empty())
@@ -108,7 +96,7 @@ void applyGizmo(EditorState& s, PlacedObject object, const core::GizmoDelta& d, 
         // A keyed object: the drag moves its key at the current time (made if missing).
         path = startPath;
         const glm::vec3 at = core::samplePath(startPath, timeS, position);
-        core::setKey(path, timeS, at + d.translationWorld, 0.5f * float(s.timeline.stepS()));
+        core::setKey(path, timeS, at + d.translationWorld, 0.5f * float(s.view.timeline.stepS()));
         return position;
     };
     const glm::mat3 rotation =
@@ -133,6 +121,7 @@ void applyGizmo(EditorState& s, PlacedObject object, const core::GizmoDelta& d, 
         c.radiusM = c0.radiusM * uniform;
         c.scale = c0.scale * uniform;
     }
+    return project;
 }
 
 std::optional<PlacedObject> objectUnder(const EditorState& s, const core::OrbitCamera& camera,
@@ -141,7 +130,7 @@ std::optional<PlacedObject> objectUnder(const EditorState& s, const core::OrbitC
     float bestDistance = SELECT_PIXELS;
     const auto consider = [&](PlacedObject object) {
         const auto at = core::projectToPixel(
-            camera, placedPosition(s.loaded.project, object, float(s.timeline.timeS())),
+            camera, placedPosition(s.doc.loaded.project, object, float(s.view.timeline.timeS())),
             p.viewportSize);
         if (!at)
             return;
@@ -151,56 +140,59 @@ std::optional<PlacedObject> objectUnder(const EditorState& s, const core::OrbitC
             best = object;
         }
     };
-    for (std::size_t i = 0; i < s.loaded.project.wind.size(); ++i)
+    for (std::size_t i = 0; i < s.doc.loaded.project.wind.size(); ++i)
         consider({PlacedKind::Wind, i});
-    for (std::size_t i = 0; i < s.loaded.project.colliders.size(); ++i)
+    for (std::size_t i = 0; i < s.doc.loaded.project.colliders.size(); ++i)
         consider({PlacedKind::Collider, i});
     return best;
 }
 
 bool validSelection(const EditorState& s) {
-    if (!s.place.selected)
+    if (!s.view.place.selected)
         return false;
-    const PlacedObject o = *s.place.selected;
-    return o.kind == PlacedKind::Wind ? o.index < s.loaded.project.wind.size()
-                                      : o.index < s.loaded.project.colliders.size();
+    const PlacedObject o = *s.view.place.selected;
+    return o.kind == PlacedKind::Wind ? o.index < s.doc.loaded.project.wind.size()
+                                      : o.index < s.doc.loaded.project.colliders.size();
 }
 
 bool runPlace(EditorState& s, const core::OrbitCamera& camera, const ViewportPointer& p) {
-    const float timeS = float(s.timeline.timeS());
-    if (s.gizmoDrag) {
+    const float timeS = float(s.view.timeline.timeS());
+    if (s.view.gizmoDrag) {
         if (!p.down || p.released) {
-            s.gizmoDrag.reset();
-            s.toolDragActive = false;
-            // The renderer's props and the GPU physics are built from the project: re-grow.
-            if (s.loaded.project != s.gizmoStart)
-                s.rebuildPending = true;
+            s.view.gizmoDrag.reset();
+            s.view.toolDragActive = false;
+            // The drag ends as one step; the renderer's props and the GPU physics are built
+            // from the project: re-grow.
+            const bool moved = s.doc.project() != s.view.gizmoStart;
+            apply(s, EditProject{.after = s.doc.project(),
+                                 .effect = moved ? EditEffect::Regrow : EditEffect::Live});
             return true;
         }
-        core::GizmoSnap snap = s.place.snap;
+        core::GizmoSnap snap = s.view.place.snap;
         snap.enabled = snap.enabled || p.ctrl;
         if (validSelection(s))
-            applyGizmo(s, *s.place.selected, s.gizmoDrag->update(p.pixel), timeS);
-        s.dirty = true;
+            apply(s, EditProject{.after = movedByGizmo(s, *s.view.place.selected,
+                                                       s.view.gizmoDrag->update(p.pixel), timeS),
+                                 .ongoing = true});
         return true;
     }
     if (!(p.pressed && p.inside))
         return false;
     if (validSelection(s)) {
-        const glm::vec3 pivot = placedPosition(s.loaded.project, *s.place.selected, timeS);
+        const glm::vec3 pivot = placedPosition(s.doc.loaded.project, *s.view.place.selected, timeS);
         const core::GizmoHandle handle =
-            core::pickGizmoHandle(s.place.mode, gizmoView(camera, p), pivot, p.pixel);
+            core::pickGizmoHandle(s.view.place.mode, gizmoView(camera, p), pivot, p.pixel);
         if (handle != core::GizmoHandle::None) {
-            core::GizmoSnap snap = s.place.snap;
+            core::GizmoSnap snap = s.view.place.snap;
             snap.enabled = snap.enabled || p.ctrl;
-            s.gizmoDrag.emplace(s.place.mode, handle, pivot, gizmoView(camera, p), p.pixel, snap);
-            s.gizmoStart = s.loaded.project;
-            s.toolDragActive = true;
+            s.view.gizmoDrag.emplace(s.view.place.mode, handle, pivot, gizmoView(camera, p), p.pixel, snap);
+            s.view.gizmoStart = s.doc.loaded.project;
+            s.view.toolDragActive = true;
             return true;
         }
     }
     const auto under = objectUnder(s, camera, p);
-    s.place.selected = under;
+    s.view.place.selected = under;
     // A click on empty ground keeps the camera's drag; a click on an object selects it.
     return under.has_value();
 }
@@ -208,8 +200,8 @@ bool runPlace(EditorState& s, const core::OrbitCamera& camera, const ViewportPoi
 // Wind sources and colliders as the overlay shows them: marker, radius, direction.
 void drawObjects(ui::Painter& painter, ui::Rect view, float ppp, const EditorState& s,
                  const core::OrbitCamera& camera, glm::vec2 size) {
-    const core::Project& project = s.loaded.project;
-    const float timeS = float(s.timeline.timeS());
+    const core::Project& project = s.doc.loaded.project;
+    const float timeS = float(s.view.timeline.timeS());
     const auto toPoints = [&](glm::vec2 px) {
         return ui::Vec2(view.min.x + px.x / ppp, view.min.y + px.y / ppp);
     };
@@ -246,7 +238,7 @@ void drawObjects(ui::Painter& painter, ui::Rect view, float ppp, const EditorSta
             painter.circle(point, 3.0f, color);
     };
     const auto isSelected = [&](PlacedKind kind, std::size_t i) {
-        return s.place.selected && *s.place.selected == PlacedObject{kind, i};
+        return s.view.place.selected && *s.view.place.selected == PlacedObject{kind, i};
     };
     const ui::Color32 windColor = ui::Color32::rgb(120, 190, 255);
     for (std::size_t i = 0; i < project.wind.size(); ++i) {
@@ -314,9 +306,9 @@ bool runViewportTool(EditorState& state, const core::OrbitCamera& camera,
     if (!state.tools || !state.scene || state.busy())
         return false;
     // A stroke ends when the tool changes under it.
-    if (state.tool != ViewportTool::Paint && state.tools->painter.active())
+    if (state.view.tool != ViewportTool::Paint && state.tools->painter.active())
         endStroke(state);
-    switch (state.tool) {
+    switch (state.view.tool) {
     case ViewportTool::Paint: return runPaint(state, camera, pointer);
     case ViewportTool::Place: return runPlace(state, camera, pointer);
     case ViewportTool::Camera: return false;
@@ -326,16 +318,16 @@ bool runViewportTool(EditorState& state, const core::OrbitCamera& camera,
 
 void applyToolKeys(EditorState& state, std::string_view typed) {
     for (const char c : typed) {
-        core::BrushSettings& brush = state.paint.brush;
+        core::BrushSettings& brush = state.view.paint.brush;
         switch (c) {
-        case '[': brush.radiusM = std::max(brush.radiusM / 1.25f, 1e-4f); state.paint.radiusChosen = true; break;
-        case ']': brush.radiusM = std::min(brush.radiusM * 1.25f, 1e4f); state.paint.radiusChosen = true; break;
-        case 'b': state.tool = ViewportTool::Paint; break;
-        case 'g': state.tool = ViewportTool::Place; break;
-        case 'c': state.tool = ViewportTool::Camera; break;
-        case 'w': state.place.mode = core::GizmoMode::Translate; break;
-        case 'e': state.place.mode = core::GizmoMode::Rotate; break;
-        case 'r': state.place.mode = core::GizmoMode::Scale; break;
+        case '[': brush.radiusM = std::max(brush.radiusM / 1.25f, 1e-4f); state.view.paint.radiusChosen = true; break;
+        case ']': brush.radiusM = std::min(brush.radiusM * 1.25f, 1e4f); state.view.paint.radiusChosen = true; break;
+        case 'b': state.view.tool = ViewportTool::Paint; break;
+        case 'g': state.view.tool = ViewportTool::Place; break;
+        case 'c': state.view.tool = ViewportTool::Camera; break;
+        case 'w': state.view.place.mode = core::GizmoMode::Translate; break;
+        case 'e': state.view.place.mode = core::GizmoMode::Rotate; break;
+        case 'r': state.view.place.mode = core::GizmoMode::Scale; break;
         default: break;
         }
     }
@@ -347,10 +339,10 @@ void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const Edito
     const auto toPoints = [&](glm::vec2 px) {
         return ui::Vec2(view.min.x + px.x / ppp, view.min.y + px.y / ppp);
     };
-    if (s.tool == ViewportTool::Paint && s.tools && (pointer.inside || s.tools->painter.active())) {
+    if (s.view.tool == ViewportTool::Paint && s.tools && (pointer.inside || s.tools->painter.active())) {
         if (const auto hit = pickSurface(*s.tools, camera, pointer)) {
-            const float radius = s.paint.radiusChosen
-                                     ? s.paint.brush.radiusM
+            const float radius = s.view.paint.radiusChosen
+                                     ? s.view.paint.brush.radiusM
                                      : DEFAULT_RADIUS_SHARE * glm::length(s.scene->bounds.size());
             std::vector<ui::Vec2> points;
             for (const glm::vec3 p :
@@ -367,17 +359,17 @@ void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const Edito
             }
         }
     }
-    if (s.tool != ViewportTool::Camera)
+    if (s.view.tool != ViewportTool::Camera)
         drawObjects(painter, view, ppp, s, camera, pointer.viewportSize);
-    if (s.tool == ViewportTool::Place && validSelection(s)) {
+    if (s.view.tool == ViewportTool::Place && validSelection(s)) {
         const glm::vec3 pivot =
-            placedPosition(s.loaded.project, *s.place.selected, float(s.timeline.timeS()));
+            placedPosition(s.doc.loaded.project, *s.view.place.selected, float(s.view.timeline.timeS()));
         const core::GizmoView gv = gizmoView(camera, pointer);
         const core::GizmoHandle hot =
-            s.gizmoDrag ? s.gizmoDrag->handle()
-                        : (pointer.inside ? core::pickGizmoHandle(s.place.mode, gv, pivot, pointer.pixel)
+            s.view.gizmoDrag ? s.view.gizmoDrag->handle()
+                        : (pointer.inside ? core::pickGizmoHandle(s.view.place.mode, gv, pivot, pointer.pixel)
                                           : core::GizmoHandle::None);
-        for (const core::GizmoPolyline& line : core::gizmoPolylines(s.place.mode, gv, pivot)) {
+        for (const core::GizmoPolyline& line : core::gizmoPolylines(s.view.place.mode, gv, pivot)) {
             std::vector<ui::Vec2> points;
             for (const glm::vec2 px : line.pointsPixels)
                 points.push_back(toPoints(px));

@@ -1,7 +1,7 @@
 // The viewport's tools (issue 8): the brush that paints a layer's density, soil or light map on
 // the mesh under the mouse, and the gizmo that places wind sources and colliders. They read the
 // pointer over the 3D view in its pixels and work on EditorState; no window code, so tests drive
-// them with simulated pointer events exactly as main.cpp does with GLFW's.
+// them with simulated pointer events exactly as the Editor does with GLFW's.
 #pragma once
 
 #include <cstddef>

@@ -28,12 +28,9 @@ void describeBrushOptions(ArgParser& parser, PaintArgs& args) {
 }
 
 Result<core::LayerMap> parseMapName(const std::string& map) {
-    if (map == "density")
-        return core::LayerMap::Density;
-    if (map == "soil")
-        return core::LayerMap::Soil;
-    if (map == "light")
-        return core::LayerMap::Light;
+    for (const core::LayerMap which : core::ALL_LAYER_MAPS)
+        if (map == core::layerMapName(which))
+            return which;
     return makeError("--map", map.empty() ? "missing: give --map density, soil or light"
                                           : "expected density, soil or light, got '" + map + "'");
 }

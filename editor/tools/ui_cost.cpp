@@ -12,11 +12,11 @@ namespace grass::tools {
 UiCost measureUi(const ui::FontAtlas& fonts, core::LoadedProject loaded, core::Scene& scene,
                  const render::RenderOptions& options, const render::FrameTimings& timings) {
     editor::EditorState state;
-    state.loaded = std::move(loaded);
+    state.doc.loaded = std::move(loaded);
     state.scene = &scene;
-    state.options = options;
-    state.status.blades = scene.totalBlades();
-    state.status.timings = timings;
+    state.view.options = options;
+    state.transient.status.blades = scene.totalBlades();
+    state.transient.status.timings = timings;
     ui::Context ctx(fonts);
     ui::Input input;
     input.screenRect = {{0.0f, 0.0f}, {1280.0f, 720.0f}};

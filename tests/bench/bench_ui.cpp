@@ -43,9 +43,9 @@ Editor& editorOnMeadow() {
             std::exit(1);
         }
         auto* out = new Editor{std::move(*fonts), std::move(*scene), {}};
-        out->state.loaded = std::move(*loaded);
+        out->state.doc.loaded = std::move(*loaded);
         out->state.scene = &out->scene;
-        out->state.options = render::renderOptionsFor(out->state.loaded.project, true);
+        out->state.view.options = render::renderOptionsFor(out->state.doc.loaded.project, true);
         return out;
     }();
     return *editor;

@@ -38,9 +38,9 @@ struct EditorDriver {
         auto built = core::buildScene(*loaded);
         EXPECT_TRUE(built.ok()) << built.error().str();
         scene = std::move(*built);
-        state.loaded = std::move(*loaded);
+        state.doc.loaded = std::move(*loaded);
         state.scene = &scene;
-        state.dirty = true;  // the soil map was just added
+        state.doc.dirty = true;  // the soil map was just added
         input.screenRect = {{0.0f, 0.0f}, {1280.0f, 720.0f}};
         input.hasPointer = true;
         input.pointerPos = {1000.0f, 700.0f};
@@ -83,9 +83,9 @@ TEST(EditorPanels, SaveAsTypedPathWritesTheProjectAndItsFilesThere) {
     EditorDriver editor(from.path());
     editor.click("File");
     editor.click("Save As…");
-    ASSERT_EQ(editor.state.fileDialog, editor::FileDialog::SaveAs);
+    ASSERT_EQ(editor.state.transient.fileDialog, editor::FileDialog::SaveAs);
     // The path field shows the current file: click into it, select all, type the new folder.
-    editor.click(editor.state.pathText);
+    editor.click(editor.state.transient.pathText);
     editor.input.keys.push_back({ui::Key::A, {false, true, false}});
     editor.frame();
     editor.input.text = (to.path() / "copy").string();
@@ -94,15 +94,15 @@ TEST(EditorPanels, SaveAsTypedPathWritesTheProjectAndItsFilesThere) {
     editor.frame();
 
     const fs::path saved = to.path() / "copy" / "project.json";
-    ASSERT_TRUE(fs::exists(saved)) << editor.state.message;
-    EXPECT_FALSE(editor.state.dirty);
-    EXPECT_EQ(editor.state.fileDialog, editor::FileDialog::None);
-    EXPECT_EQ(editor.state.loaded.file, saved);
+    ASSERT_TRUE(fs::exists(saved)) << editor.state.transient.message;
+    EXPECT_FALSE(editor.state.doc.dirty);
+    EXPECT_EQ(editor.state.transient.fileDialog, editor::FileDialog::None);
+    EXPECT_EQ(editor.state.doc.loaded.file, saved);
     // The copy loads and grows on its own: its map came along.
     EXPECT_TRUE(fs::exists(to.path() / "copy/maps/soil.png"));
     auto reloaded = core::loadProject(saved);
     ASSERT_TRUE(reloaded.ok()) << reloaded.error().str();
-    EXPECT_EQ(reloaded->project, editor.state.loaded.project);
+    EXPECT_EQ(reloaded->project, editor.state.doc.loaded.project);
     auto grown = core::buildScene(*reloaded);
     EXPECT_TRUE(grown.ok()) << grown.error().str();
 }
@@ -114,17 +114,17 @@ TEST(EditorPanels, AFailedSaveStaysInTheStatusBarUntilASaveSucceeds) {
     EditorDriver editor(folder.path());
     fs::create_directories(folder.path() / "blocked" / "project.json");  // a folder in the way
     EXPECT_FALSE(editor::saveTo(editor.state, (folder.path() / "blocked/project.json").string()));
-    const std::string failed = editor.state.message;
+    const std::string failed = editor.state.transient.message;
     ASSERT_EQ(failed.rfind("not saved: ", 0), 0u) << failed;
-    EXPECT_TRUE(editor.state.messageIsSaveError);
+    EXPECT_TRUE(editor.state.transient.messageIsSaveError);
     editor::autosaveNow(editor.state);
-    EXPECT_EQ(editor.state.message, failed);
-    EXPECT_TRUE(fs::exists(editor::autosavePath(editor.state.loaded)));  // the work is kept
+    EXPECT_EQ(editor.state.transient.message, failed);
+    EXPECT_TRUE(fs::exists(editor::autosavePath(editor.state.doc.loaded)));  // the work is kept
     ASSERT_TRUE(editor::saveTo(editor.state, (folder.path() / "project.json").string()));
-    EXPECT_FALSE(editor.state.messageIsSaveError);
-    editor.state.dirty = true;
+    EXPECT_FALSE(editor.state.transient.messageIsSaveError);
+    editor.state.doc.dirty = true;
     editor::autosaveNow(editor.state);
-    EXPECT_EQ(editor.state.message.rfind("autosaved to ", 0), 0u) << editor.state.message;
+    EXPECT_EQ(editor.state.transient.message.rfind("autosaved to ", 0), 0u) << editor.state.transient.message;
 }
 
 TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
@@ -132,20 +132,20 @@ TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
     EditorDriver editor(folder.path());
     editor.click("File");
     editor.click("Open…");
-    ASSERT_EQ(editor.state.fileDialog, editor::FileDialog::Open);
-    editor.click(editor.state.pathText);
+    ASSERT_EQ(editor.state.transient.fileDialog, editor::FileDialog::Open);
+    editor.click(editor.state.transient.pathText);
     editor.input.keys.push_back({ui::Key::A, {false, true, false}});
     editor.frame();
     editor.input.text = "projects/meadow";
     editor.frame();
     editor.click("Open");
-    EXPECT_EQ(editor.state.fileDialog, editor::FileDialog::None);
+    EXPECT_EQ(editor.state.transient.fileDialog, editor::FileDialog::None);
     // The project has unsaved changes: nothing is replaced before the user says so.
     EXPECT_TRUE(editor.state.openRequested.empty());
-    ASSERT_TRUE(editor.state.quitDialog);
+    ASSERT_TRUE(editor.state.transient.quitDialog);
     editor.click("Discard changes");
     EXPECT_EQ(editor.state.openRequested, "projects/meadow");
-    EXPECT_TRUE(editor.state.dirty) << "if the open fails, the edits still count as unsaved";
+    EXPECT_TRUE(editor.state.doc.dirty) << "if the open fails, the edits still count as unsaved";
 }
 
 TEST(EditorPanels, QuitWithUnsavedChangesAsksFirst) {
@@ -154,9 +154,9 @@ TEST(EditorPanels, QuitWithUnsavedChangesAsksFirst) {
     editor.click("File");
     editor.click("Quit");
     EXPECT_FALSE(editor.state.quitRequested) << "unsaved changes must not be dropped silently";
-    ASSERT_TRUE(editor.state.quitDialog);
+    ASSERT_TRUE(editor.state.transient.quitDialog);
     editor.click("Cancel");
-    EXPECT_FALSE(editor.state.quitDialog);
+    EXPECT_FALSE(editor.state.transient.quitDialog);
     EXPECT_FALSE(editor.state.quitRequested);
     editor.click("File");
     editor.click("Quit");
@@ -169,11 +169,11 @@ TEST(EditorPanels, QuitWithUnsavedChangesAsksFirst) {
 TEST(EditorPanels, UnsavedWorkIsAutosavedBeforeAnExport) {
     const ScratchFolder folder("editor-export-autosave");
     EditorDriver editor(folder.path());
-    ASSERT_TRUE(editor.state.dirty);
-    ASSERT_FALSE(fs::exists(editor::autosavePath(editor.state.loaded)));
-    editor.state.exportDir = "exported";
+    ASSERT_TRUE(editor.state.doc.dirty);
+    ASSERT_FALSE(fs::exists(editor::autosavePath(editor.state.doc.loaded)));
+    editor.state.transient.exportDir = "exported";
     editor::startExport(editor.state);
-    EXPECT_TRUE(fs::exists(editor::autosavePath(editor.state.loaded)));
+    EXPECT_TRUE(fs::exists(editor::autosavePath(editor.state.doc.loaded)));
     ASSERT_TRUE(editor.state.exportJob);
     editor.state.exportJob.reset();  // waits for the worker
     EXPECT_TRUE(fs::exists(folder.path() / "exported" / "grass.gltf"));
@@ -188,9 +188,9 @@ TEST(EditorPanels, ATypedPositionMovesAKeyedCollider) {
     core::ColliderDesc ball;
     ball.name = "ball";
     ball.path = {{0.0f, {-1.0f, 0.2f, 0.0f}}, {2.0f, {1.0f, 0.2f, 0.0f}}};
-    editor.state.loaded.project.colliders.push_back(ball);
+    editor.state.doc.loaded.project.colliders.push_back(ball);
     editor::resetHistory(editor.state);
-    editor.state.timeline = core::timelineFor(editor.state.loaded.project);
+    editor.state.view.timeline = core::timelineFor(editor.state.doc.loaded.project);
     const glm::vec3 before = core::samplePath(ball.path, 0.0f, ball.position);
 
     editor.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 3000.0f}};  // no scrolling
@@ -214,15 +214,15 @@ TEST(EditorPanels, ATypedPositionMovesAKeyedCollider) {
     editor.frame();
     editor::recordProjectEdit(editor.state, false);
 
-    const core::ColliderDesc& edited = editor.state.loaded.project.colliders.back();
+    const core::ColliderDesc& edited = editor.state.doc.loaded.project.colliders.back();
     const glm::vec3 after = core::samplePath(edited.path, 0.0f, edited.position);
     EXPECT_GT(after.z, before.z + 0.05f) << "the collider must move where the field says";
     EXPECT_EQ(after.x, before.x);
     EXPECT_EQ(edited.path.size(), 2u) << "the key at the timeline's time was edited in place";
-    EXPECT_TRUE(editor.state.dirty);
+    EXPECT_TRUE(editor.state.doc.dirty);
     EXPECT_TRUE(editor.state.rebuildPending);
     ASSERT_TRUE(editor::undo(editor.state));
-    EXPECT_EQ(editor.state.loaded.project.colliders.back().path, ball.path);
+    EXPECT_EQ(editor.state.doc.loaded.project.colliders.back().path, ball.path);
 }
 
 }  // namespace

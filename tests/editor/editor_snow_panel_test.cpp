@@ -24,8 +24,8 @@ struct SnowPanelDriver {
     SnowPanelDriver() : ctx(testFonts()) {
         auto loaded = core::loadProject(sourceDir() / "tests/data/projects/growth_tiny");
         EXPECT_TRUE(loaded.ok()) << loaded.error().str();
-        state.loaded = std::move(*loaded);
-        state.options = editor::viewRenderOptions(state);
+        state.doc.loaded = std::move(*loaded);
+        state.view.options = editor::viewRenderOptions(state);
         editor::resetHistory(state);
         input.screenRect = {{0.0f, 0.0f}, {1280.0f, 3000.0f}};
         input.hasPointer = true;
@@ -38,7 +38,7 @@ struct SnowPanelDriver {
         const ui::Output& out = ctx.endFrame();
         editor::recordProjectEdit(state, ctx.activeId().value != 0);
         // What the viewport draws next, derived from the project as main.cpp does each frame.
-        state.options = editor::viewRenderOptions(state);
+        state.view.options = editor::viewRenderOptions(state);
         input.keys.clear();
         input.text.clear();
         input.timeS += 1.0 / 60.0;
@@ -87,36 +87,36 @@ struct SnowPanelDriver {
 
 TEST(EditorSnowPanel, CheckboxAndAmountEditProjectAndViewportAndUndo) {
     SnowPanelDriver editor;
-    const core::SnowParams before = editor.state.loaded.project.snow;
+    const core::SnowParams before = editor.state.doc.loaded.project.snow;
     ASSERT_EQ(before.enabled, 0u) << "the test project must start without snow";
     editor.click("Snow");
     editor.click("snow");
-    EXPECT_EQ(editor.state.loaded.project.snow.enabled, 1u);
-    EXPECT_EQ(editor.state.options.snow.enabled, 1u) << "the viewport must draw the snow";
-    EXPECT_TRUE(editor.state.dirty);
-    EXPECT_EQ(editor.state.history.undoSteps(), 1u);
+    EXPECT_EQ(editor.state.doc.loaded.project.snow.enabled, 1u);
+    EXPECT_EQ(editor.state.view.options.snow.enabled, 1u) << "the viewport must draw the snow";
+    EXPECT_TRUE(editor.state.doc.dirty);
+    EXPECT_EQ(editor.state.doc.history.undoSteps(), 1u);
 
     // The amount's value box ("0.150"): dragged right, the snow deepens; one step for the drag.
     editor.drag("0.150", 40.0f);
-    const float amount = editor.state.loaded.project.snow.amountM;
+    const float amount = editor.state.doc.loaded.project.snow.amountM;
     EXPECT_GT(amount, before.amountM + 0.05f);
     EXPECT_LE(amount, before.maxAmountM);
-    EXPECT_EQ(editor.state.options.snow, editor.state.loaded.project.snow);
-    EXPECT_EQ(editor.state.history.undoSteps(), 2u) << "a drag is one undo step";
+    EXPECT_EQ(editor.state.view.options.snow, editor.state.doc.loaded.project.snow);
+    EXPECT_EQ(editor.state.doc.history.undoSteps(), 2u) << "a drag is one undo step";
 
     ASSERT_TRUE(editor::undo(editor.state));
     editor.frame();
-    EXPECT_EQ(editor.state.loaded.project.snow.amountM, before.amountM);
-    EXPECT_EQ(editor.state.loaded.project.snow.enabled, 1u);
-    EXPECT_EQ(editor.state.options.snow.amountM, before.amountM)
+    EXPECT_EQ(editor.state.doc.loaded.project.snow.amountM, before.amountM);
+    EXPECT_EQ(editor.state.doc.loaded.project.snow.enabled, 1u);
+    EXPECT_EQ(editor.state.view.options.snow.amountM, before.amountM)
         << "after an undo the viewport must draw the project's snow";
     ASSERT_TRUE(editor::undo(editor.state));
     editor.frame();
-    EXPECT_EQ(editor.state.loaded.project.snow, before);
-    EXPECT_EQ(editor.state.options.snow, before);
+    EXPECT_EQ(editor.state.doc.loaded.project.snow, before);
+    EXPECT_EQ(editor.state.view.options.snow, before);
     ASSERT_TRUE(editor::redo(editor.state));
     editor.frame();
-    EXPECT_EQ(editor.state.options.snow.enabled, 1u);
+    EXPECT_EQ(editor.state.view.options.snow.enabled, 1u);
 }
 
 TEST(EditorSnowPanel, DraggedPastTheEndsTheProjectStillLoads) {
@@ -126,20 +126,20 @@ TEST(EditorSnowPanel, DraggedPastTheEndsTheProjectStillLoads) {
     editor.click("snow");
     // Far past the track's end: the amount stops at max amount, which stops at the amount.
     editor.drag("0.150", 2000.0f);
-    EXPECT_EQ(editor.state.loaded.project.snow.amountM,
-              editor.state.loaded.project.snow.maxAmountM);
+    EXPECT_EQ(editor.state.doc.loaded.project.snow.amountM,
+              editor.state.doc.loaded.project.snow.maxAmountM);
     editor.drag("1.00", -2000.0f);
-    EXPECT_EQ(editor.state.loaded.project.snow.maxAmountM,
-              editor.state.loaded.project.snow.amountM);
+    EXPECT_EQ(editor.state.doc.loaded.project.snow.maxAmountM,
+              editor.state.doc.loaded.project.snow.amountM);
     // The fall direction's y (-1.00, x and z 0) dragged by +1 would reach zero: it stops short.
     editor.drag("-1.00", 100.0f);
-    EXPECT_GT(glm::length(editor.state.loaded.project.snow.fallDirection), 1e-3f);
-    EXPECT_LT(editor.state.loaded.project.snow.fallDirection.y, 0.0f);
+    EXPECT_GT(glm::length(editor.state.doc.loaded.project.snow.fallDirection), 1e-3f);
+    EXPECT_LT(editor.state.doc.loaded.project.snow.fallDirection.y, 0.0f);
 
-    ASSERT_TRUE(core::saveProject(editor.state.loaded.project, folder / "project.json").ok());
+    ASSERT_TRUE(core::saveProject(editor.state.doc.loaded.project, folder / "project.json").ok());
     auto reloaded = core::loadProject(folder / "project.json");
     ASSERT_TRUE(reloaded.ok()) << reloaded.error().str();
-    EXPECT_EQ(reloaded->project.snow, editor.state.loaded.project.snow);
+    EXPECT_EQ(reloaded->project.snow, editor.state.doc.loaded.project.snow);
 }
 
 }  // namespace

@@ -26,15 +26,19 @@ struct ToolDriver {
         field.sizeM = 4.0f;
         field.resolution = 4;
         field.density = 150.0f;
-        state.loaded = planeFieldProject(field);
-        state.loaded.project.layers.front().mapResolution = {64, 64};
-        auto built = core::buildScene(state.loaded);
+        state.doc.loaded = planeFieldProject(field);
+        state.doc.loaded.project.layers.front().mapResolution = {64, 64};
+        auto built = core::buildScene(state.doc.loaded);
         EXPECT_TRUE(built.ok()) << built.error().str();
         scene = std::move(*built);
         original = scene.layers[0].patched.blades;
-        tools.emplace(scene, state.loaded.project.lighting);
+        tools.emplace(scene, state.doc.loaded.project.lighting);
         state.scene = &scene;
         state.tools = &*tools;
+        // What the Editor uploads to the renderer, collected.
+        state.regrown = [this](std::size_t layer, const core::RegrowReport& report) {
+            regrown.emplace_back(layer, report);
+        };
         editor::resetHistory(state);
         camera = core::OrbitCamera::lookAt({0.0f, 3.5f, 3.5f}, {0.0f, 0.0f, 0.0f}, 0.8f);
     }
@@ -67,6 +71,7 @@ struct ToolDriver {
     }
 
     editor::EditorState state;
+    std::vector<std::pair<std::size_t, core::RegrowReport>> regrown;
     core::Scene scene;
     std::optional<editor::SceneTools> tools;
     std::vector<core::Blade> original;
@@ -82,13 +87,13 @@ float distanceToSegment(glm::vec3 p, glm::vec3 a, glm::vec3 b) {
 
 TEST(ViewportTools, AStrokeOfPointerEventsErasesTheTexelsUnderItAndUndoRestoresThem) {
     ToolDriver d;
-    d.state.tool = editor::ViewportTool::Paint;
-    d.state.paint.map = core::LayerMap::Density;
-    d.state.paint.brush.mode = core::BrushMode::Add;  // Ctrl below inverts it to subtract
-    d.state.paint.brush.falloff = core::BrushFalloff::Constant;
-    d.state.paint.brush.strength = 1.0f;
-    d.state.paint.brush.radiusM = 0.4f;
-    d.state.paint.radiusChosen = true;
+    d.state.view.tool = editor::ViewportTool::Paint;
+    d.state.view.paint.map = core::LayerMap::Density;
+    d.state.view.paint.brush.mode = core::BrushMode::Add;  // Ctrl below inverts it to subtract
+    d.state.view.paint.brush.falloff = core::BrushFalloff::Constant;
+    d.state.view.paint.brush.strength = 1.0f;
+    d.state.view.paint.brush.radiusM = 0.4f;
+    d.state.view.paint.radiusChosen = true;
     const std::size_t liveBefore = d.scene.layers[0].liveBlades;
     const glm::vec3 a{-1.2f, 0.0f, 0.3f}, b{1.2f, 0.0f, -0.2f};
     d.drag(a, b, 16, true);
@@ -116,10 +121,10 @@ TEST(ViewportTools, AStrokeOfPointerEventsErasesTheTexelsUnderItAndUndoRestoresT
     EXPECT_GT(erased, 300u);
     EXPECT_GT(kept, 2000u);
     EXPECT_LT(d.scene.layers[0].liveBlades, liveBefore);
-    EXPECT_FALSE(d.state.regrown.empty());  // the renderer uploads the re-grown patches
-    EXPECT_TRUE(d.state.dirty);
-    ASSERT_EQ(d.state.history.undoSteps(), 1u);
-    EXPECT_EQ(d.state.history.nextUndo()->label, "paint density");
+    EXPECT_FALSE(d.regrown.empty());  // the renderer uploads the re-grown patches
+    EXPECT_TRUE(d.state.doc.dirty);
+    ASSERT_EQ(d.state.doc.history.undoSteps(), 1u);
+    EXPECT_EQ(d.state.doc.history.nextUndo()->label, "paint density");
     const std::vector<float> painted = map.texels;
     const std::vector<core::Blade> paintedBlades = d.scene.layers[0].patched.blades;
 
@@ -136,28 +141,28 @@ TEST(ViewportTools, AStrokeOfPointerEventsErasesTheTexelsUnderItAndUndoRestoresT
 
 TEST(ViewportTools, APressOffTheMeshPaintsNothing) {
     ToolDriver d;
-    d.state.tool = editor::ViewportTool::Paint;
+    d.state.view.tool = editor::ViewportTool::Paint;
     // The sky above the horizon: the ray misses the plane.
     EXPECT_TRUE(d.frame({320.0f, 2.0f}, true, true));
     EXPECT_FALSE(d.frame({330.0f, 2.0f}, true, false));
     EXPECT_FALSE(d.frame({330.0f, 2.0f}, false, false));
-    EXPECT_EQ(d.state.history.undoSteps(), 0u);
+    EXPECT_EQ(d.state.doc.history.undoSteps(), 0u);
     EXPECT_TRUE(d.scene.layers[0].source.maps.density.texels.empty() ||
                 d.scene.layers[0].source.maps.density.maxValue() == 1.0f);
 }
 
 TEST(ViewportTools, BracketKeysResizeTheBrush) {
     ToolDriver d;
-    d.state.paint.brush.radiusM = 1.0f;
+    d.state.view.paint.brush.radiusM = 1.0f;
     editor::applyToolKeys(d.state, "]]");
-    EXPECT_FLOAT_EQ(d.state.paint.brush.radiusM, 1.5625f);
+    EXPECT_FLOAT_EQ(d.state.view.paint.brush.radiusM, 1.5625f);
     editor::applyToolKeys(d.state, "[");
-    EXPECT_FLOAT_EQ(d.state.paint.brush.radiusM, 1.25f);
+    EXPECT_FLOAT_EQ(d.state.view.paint.brush.radiusM, 1.25f);
     editor::applyToolKeys(d.state, "b");
-    EXPECT_EQ(d.state.tool, editor::ViewportTool::Paint);
+    EXPECT_EQ(d.state.view.tool, editor::ViewportTool::Paint);
     editor::applyToolKeys(d.state, "gr");
-    EXPECT_EQ(d.state.tool, editor::ViewportTool::Place);
-    EXPECT_EQ(d.state.place.mode, core::GizmoMode::Scale);
+    EXPECT_EQ(d.state.view.tool, editor::ViewportTool::Place);
+    EXPECT_EQ(d.state.view.place.mode, core::GizmoMode::Scale);
 }
 
 TEST(ViewportTools, AGizmoDragMovesTheSelectedWindSourceAsOneUndoStep) {
@@ -167,16 +172,16 @@ TEST(ViewportTools, AGizmoDragMovesTheSelectedWindSourceAsOneUndoStep) {
         core::WindDesc wind;
         wind.source.kind = core::WindKind::Point;
         wind.source.position = {0.0f, 0.5f, 0.0f};
-        d.state.loaded.project.wind.push_back(wind);
-        d.state.committed = d.state.loaded.project;
-        d.state.tool = editor::ViewportTool::Place;
-        d.state.place.mode = core::GizmoMode::Translate;
+        d.state.doc.loaded.project.wind.push_back(wind);
+        d.state.doc.committed = d.state.doc.loaded.project;
+        d.state.view.tool = editor::ViewportTool::Place;
+        d.state.view.place.mode = core::GizmoMode::Translate;
 
         // A click on the marker selects the source.
         const glm::vec3 pivot = wind.source.position;
         EXPECT_TRUE(d.frame(d.pixelOf(pivot), true, true));
         d.frame(d.pixelOf(pivot), false, false);
-        ASSERT_TRUE(d.state.place.selected.has_value());
+        ASSERT_TRUE(d.state.view.place.selected.has_value());
 
         // Drag the X arrow by 0.6 m along X.
         const float arm = core::worldLengthForPixels({d.camera, VIEWPORT}, pivot,
@@ -187,40 +192,40 @@ TEST(ViewportTools, AGizmoDragMovesTheSelectedWindSourceAsOneUndoStep) {
                   core::GizmoHandle::X)
             << "yaw " << yawDeg;
         d.drag(grab, grab + glm::vec3(0.6f, 0.0f, 0.0f), 8);
-        const glm::vec3 moved = d.state.loaded.project.wind[0].source.position;
+        const glm::vec3 moved = d.state.doc.loaded.project.wind[0].source.position;
         EXPECT_NEAR(moved.x, 0.6f, 1e-3f) << "yaw " << yawDeg;
         EXPECT_NEAR(moved.y, 0.5f, 1e-4f);
         EXPECT_NEAR(moved.z, 0.0f, 1e-4f);
-        ASSERT_EQ(d.state.history.undoSteps(), 1u);
-        EXPECT_EQ(d.state.history.nextUndo()->label, "wind");
+        ASSERT_EQ(d.state.doc.history.undoSteps(), 1u);
+        EXPECT_EQ(d.state.doc.history.nextUndo()->label, "wind");
         EXPECT_TRUE(d.state.rebuildPending);  // the renderer and physics follow the move
-        EXPECT_TRUE(d.state.dirty);
+        EXPECT_TRUE(d.state.doc.dirty);
 
         ASSERT_TRUE(editor::undo(d.state));
-        EXPECT_EQ(d.state.loaded.project.wind[0].source.position, pivot);
+        EXPECT_EQ(d.state.doc.loaded.project.wind[0].source.position, pivot);
         ASSERT_TRUE(editor::redo(d.state));
-        EXPECT_NEAR(d.state.loaded.project.wind[0].source.position.x, 0.6f, 1e-3f);
+        EXPECT_NEAR(d.state.doc.loaded.project.wind[0].source.position.x, 0.6f, 1e-3f);
     }
 }
 
 TEST(ViewportTools, APanelDragBecomesOneStepWhenItEnds) {
     ToolDriver d;
-    core::Project& project = d.state.loaded.project;
+    core::Project& project = d.state.doc.loaded.project;
     for (int frame = 1; frame <= 5; ++frame) {
         project.layers[0].scatter.density = 150.0f + 10.0f * float(frame);
         editor::recordProjectEdit(d.state, true);  // the slider is still held
     }
-    EXPECT_EQ(d.state.history.undoSteps(), 0u);
+    EXPECT_EQ(d.state.doc.history.undoSteps(), 0u);
     editor::recordProjectEdit(d.state, false);
-    ASSERT_EQ(d.state.history.undoSteps(), 1u);
-    EXPECT_EQ(d.state.history.nextUndo()->label, "layers");
+    ASSERT_EQ(d.state.doc.history.undoSteps(), 1u);
+    EXPECT_EQ(d.state.doc.history.nextUndo()->label, "layers");
     ASSERT_TRUE(editor::undo(d.state));
     EXPECT_FLOAT_EQ(project.layers[0].scatter.density, 150.0f);
     EXPECT_TRUE(d.state.rebuildPending);
     // Undoing is not itself a new step.
     editor::recordProjectEdit(d.state, false);
-    EXPECT_EQ(d.state.history.undoSteps(), 0u);
-    EXPECT_EQ(d.state.history.redoSteps(), 1u);
+    EXPECT_EQ(d.state.doc.history.undoSteps(), 0u);
+    EXPECT_EQ(d.state.doc.history.redoSteps(), 1u);
 }
 
 }  // namespace

@@ -1,0 +1,114 @@
+#include "app/commands.h"
+
+#include "quality/quality_presets.h"
+
+namespace grass::editor {
+
+namespace {
+
+// A short name for a project step: the part of the project that changed.
+std::string projectEditLabel(const core::Project& before, const core::Project& after) {
+    if (const auto preset = core::matchingPreset(after); preset && preset != core::matchingPreset(before))
+        return "quality " + std::string(core::qualityPresetName(*preset));
+    if (before.wind != after.wind)
+        return "wind";
+    if (before.colliders != after.colliders)
+        return "colliders";
+    if (before.layers != after.layers)
+        return "layers";
+    if (before.render != after.render || before.lighting != after.lighting)
+        return "render settings";
+    if (before.snow != after.snow)
+        return "snow";
+    if (before.name != after.name)
+        return "project name";
+    return "project";
+}
+
+struct Applier {
+    EditorState& s;
+
+    bool operator()(EditProject& c) {
+        Document& doc = s.doc;
+        const bool changed = c.after != doc.project();
+        if (changed) {
+            doc.loaded.project = std::move(c.after);
+            doc.dirty = true;
+        }
+        const bool stepDue = !c.ongoing && !s.view.toolDragActive && doc.project() != doc.committed;
+        if (c.effect == EditEffect::Regrow && (changed || stepDue))
+            s.rebuildPending = true;
+        if (!stepDue)
+            return changed;
+        core::ProjectEdit step{doc.committed, doc.project()};
+        std::string label = c.label.empty() ? projectEditLabel(step.before, step.after) : c.label;
+        doc.committed = doc.project();
+        doc.history.push(core::Edit{std::move(label), std::move(step)});
+        doc.dirty = true;
+        return true;
+    }
+
+    bool operator()(RecordStroke& c) {
+        s.doc.paintedMaps.insert({c.edit.layer, c.edit.map});
+        s.doc.dirty = true;
+        std::string label = std::string("paint ") + std::string(core::layerMapName(c.edit.map));
+        s.doc.history.push(core::Edit{std::move(label), std::move(c.edit)});
+        return true;
+    }
+
+    bool operator()(Undo) { return step(true); }
+    bool operator()(Redo) { return step(false); }
+
+    bool step(bool undoing) {
+        if (s.view.toolDragActive || s.busy())
+            return false;
+        const core::Edit* edit = undoing ? s.doc.history.undo() : s.doc.history.redo();
+        if (!edit)
+            return false;
+        s.transient.message = std::string(undoing ? "undid " : "redid ") + edit->label;
+        if (const auto* project = std::get_if<core::ProjectEdit>(&edit->change)) {
+            s.doc.loaded.project = undoing ? project->before : project->after;
+            s.doc.committed = s.doc.project();
+            s.doc.dirty = s.rebuildPending = true;
+            return true;
+        }
+        return replayPaint(std::get<core::PaintEdit>(edit->change), undoing);
+    }
+
+    // Writes a stroke's texels back (or again) and re-grows the patches they reach.
+    bool replayPaint(const core::PaintEdit& edit, bool undoing) {
+        if (!s.tools)
+            return false;
+        auto report = s.tools->painter.apply(edit, undoing);
+        if (!report) {
+            s.transient.message = "cannot " + std::string(undoing ? "undo" : "redo") + ": " +
+                                  report.error().message;
+            return false;
+        }
+        if (s.regrown)
+            s.regrown(edit.layer, *report);
+        s.doc.paintedMaps.insert({edit.layer, edit.map});
+        s.doc.dirty = true;
+        return true;
+    }
+};
+
+}  // namespace
+
+bool apply(EditorState& state, Command command) {
+    return std::visit(Applier{state}, command);
+}
+
+void recordProjectEdit(EditorState& state, bool widgetActive) {
+    apply(state, EditProject{.after = state.doc.project(), .ongoing = widgetActive});
+}
+
+bool undo(EditorState& state) {
+    return apply(state, Undo{});
+}
+
+bool redo(EditorState& state) {
+    return apply(state, Redo{});
+}
+
+}  // namespace grass::editor

@@ -1,0 +1,63 @@
+#include "app/editor_keys.h"
+
+#include "app/commands.h"
+#include "app/panels.h"
+#include "app/viewport_tools.h"
+
+namespace grass::editor {
+
+namespace {
+
+// Keys that change how the field is drawn (window.h); returns what changed, for the console.
+// 1-4 switch a cull test of the view; T and L change the project's technique and lighting (a
+// command like the Render panel's combo boxes: saved, undoable, marking it unsaved).
+std::string applyRenderKeys(const InputState& input, EditorState& state) {
+    ViewOverrides& view = state.view.overrides;
+    bool* tests[] = {&view.orientation, &view.frustum, &view.distance, &view.occlusion};
+    const char* names[] = {"orientation", "frustum", "distance", "occlusion"};
+    if (input.toggledCullTest >= 1 && input.toggledCullTest <= 4) {
+        bool& test = *tests[input.toggledCullTest - 1];
+        test = !test;
+        return std::string(names[input.toggledCullTest - 1]) + " culling " + (test ? "on" : "off");
+    }
+    core::Project project = state.doc.project();
+    std::string changed;
+    if (input.nextTechnique) {
+        project.render.technique =
+            static_cast<core::GrassTechnique>((static_cast<int>(project.render.technique) + 1) % 4);
+        changed = "technique " + std::string(core::grassTechniqueName(project.render.technique));
+    } else if (input.toggleLighting) {
+        core::LightingModel& model = project.lighting.model;
+        model = model == core::LightingModel::Grass ? core::LightingModel::Simple
+                                                    : core::LightingModel::Grass;
+        changed = model == core::LightingModel::Grass ? "grass lighting" : "simple lighting";
+    } else {
+        return {};
+    }
+    apply(state, EditProject{.after = std::move(project), .label = changed});
+    return changed;
+}
+
+}  // namespace
+
+std::string applyEditorKeys(EditorState& state, const InputState& input, bool withUi) {
+    std::string changed = applyRenderKeys(input, state);
+    applyToolKeys(state, input.typed);
+    for (const ui::KeyEvent& key : input.keys) {
+        if (!key.modifiers.ctrl)
+            continue;
+        if (key.key == ui::Key::Z)
+            key.modifiers.shift ? redo(state) : undo(state);
+        else if (key.key == ui::Key::Y)
+            redo(state);
+        else if (key.key == ui::Key::S && withUi) {
+            if (state.doc.loaded.file.empty())
+                state.transient.fileDialog = FileDialog::SaveAs;
+            else
+                saveTo(state, state.doc.loaded.file.string());
+        }
+    }
+    return changed;
+}
+
+}  // namespace grass::editor

@@ -1,0 +1,145 @@
+// What the editor knows, in three parts with different lives (issue 23):
+//   Document  — the project, its painted maps, its undo history, whether it is saved and where.
+//               Saved, undone, autosaved; changed only by commands (app/commands.h).
+//   ViewState — how the user looks at it and works on it: cull-test overrides, the active tool
+//               and its settings, the timeline. Never saved, never undone.
+//   Transient — the UI's own: dialogs, the status bar's message and figures.
+// EditorState holds the three, plus the links to the live field it is drawn from and the
+// requests the Editor (editor.h) carries out because it owns the window and the scene.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "app/export_job.h"
+#include "app/viewport_tools.h"
+#include "edit/gizmo_drag.h"
+#include "edit/history.h"
+#include "edit/timeline.h"
+#include "project/project.h"
+#include "render/scene_renderer.h"
+#include "scene/scene.h"
+
+namespace grass::editor {
+
+struct Document {
+    core::LoadedProject loaded;  // file empty: a new project not saved yet
+    // Set by every command that changes the document; cleared by a save or a load.
+    bool dirty = false;
+    core::EditHistory history;
+    // The project as of the last history step: an edit under way (a drag, a text entry) differs
+    // from it until the edit ends and becomes one step.
+    core::Project committed;
+    // Maps painted since the last save, by layer; saving writes them (edit_actions.h).
+    std::set<std::pair<std::size_t, core::LayerMap>> paintedMaps;
+
+    const core::Project& project() const { return loaded.project; }
+};
+
+// What the viewport draws differently from the project, to look at the field: the per-blade
+// cull tests switched off (keys 1-4, the Render panel's checkboxes). Never saved, not undone.
+struct ViewOverrides {
+    bool orientation = true;
+    bool frustum = true;
+    bool distance = true;  // the project's thinning still decides whether the test exists
+    bool occlusion = true;
+};
+
+struct ViewState {
+    ViewOverrides overrides;
+    bool softwareRenderer = false;  // picks the geometry path of the project's "auto"
+    // What the renderer draws this frame: viewRenderOptions(state) plus the scene time, set by
+    // the Editor each frame. Derived, never edited: a setting lives in the project alone.
+    render::RenderOptions options;
+    // The viewport's tools.
+    ViewportTool tool = ViewportTool::Camera;
+    PaintToolSettings paint;
+    PlaceToolSettings place;
+    // A stroke or a gizmo drag is under way (its command is one undo step when it ends).
+    bool toolDragActive = false;
+    std::optional<core::GizmoDrag> gizmoDrag;
+    core::Project gizmoStart;  // the project when the drag began
+    // The animation time of wind and colliders: play, pause, step, loop, speed.
+    core::Timeline timeline;
+    // The last scrub, step or play of the timeline panel (a jump back re-runs the simulation
+    // from rest).
+    core::TimeUpdate timeJump;
+};
+
+// What the status bar shows, measured by the Editor.
+struct FrameStatus {
+    std::size_t blades = 0;  // live blades in the scene
+    render::FrameTimings timings;
+    double fps = 0.0;
+    double uiMs = 0.0;  // CPU time of building and tessellating the UI
+};
+
+enum class FileDialog { None, Open, SaveAs };
+
+// What replaces the open project, and so asks first when it has unsaved changes.
+enum class LeaveAction { Quit, New, Open };
+
+// The side panel's working copy of the project this frame (buildPanels): its widgets edit it in
+// place, and its difference from the document becomes one EditProject command.
+struct PanelDraft {
+    core::Project project;
+    bool regrow = false;  // a value the scene is grown from changed
+};
+
+struct Transient {
+    FrameStatus status;
+    PanelDraft draft;
+    FileDialog fileDialog = FileDialog::None;
+    std::string pathText;
+    // The "Unsaved changes" window, and what it is about (with the path for Open).
+    bool quitDialog = false;
+    LeaveAction leaveAction = LeaveAction::Quit;
+    std::string leaveOpenPath;
+    std::string message;  // last file operation's result, shown in the status bar
+    // A failed save stays on screen: routine messages (autosaved) do not replace it until a
+    // save succeeds.
+    bool messageIsSaveError = false;
+    // File → Export…: the dialog's choices.
+    bool exportDialog = false;
+    std::string exportDir;
+    int exportFormat = 0;  // core::ExportFormat
+    int exportLod = 0;
+};
+
+struct EditorState {
+    Document doc;
+    ViewState view;
+    Transient transient;
+
+    // The live field the document is drawn from (the Editor points these at its own).
+    core::Scene* scene = nullptr;  // colours and shapes are read from it every frame
+    SceneTools* tools = nullptr;
+    // Patches re-grown by painting or undo go straight to whoever draws the field (the Editor
+    // uploads them to the renderer and the GPU physics); unset, they are dropped.
+    std::function<void(std::size_t layer, const core::RegrowReport&)> regrown;
+    // The scene must be re-grown from the document once no widget is being dragged.
+    bool rebuildPending = false;
+
+    // The running (or last) export. While it runs the scene must stay as it is: tools, undo and
+    // re-grows wait (busy()).
+    std::shared_ptr<ExportJob> exportJob;
+    bool busy() const { return exportJob && !exportJob->done(); }
+    // An autosave left by a session that did not close cleanly, offered back at start; the
+    // Editor adopts it when the user picks Recover.
+    std::optional<core::LoadedProject> recoveryOffer;
+
+    // Requests for the Editor, which owns the scene and the window.
+    bool recoverRequested = false;
+    std::string screenshotRequested;  // File → Save screenshot: the next frame's window
+    std::string turntableRequested;   // File → Save turntable: the first view's path
+    bool newRequested = false;
+    std::string openRequested;  // a path to load
+    bool quitRequested = false;  // the user confirmed (or nothing was unsaved)
+};
+
+}  // namespace grass::editor

@@ -1,0 +1,124 @@
+// Every change to the document is a command applied in one place (app/commands.h): the keys,
+// the panels' working copy, the gizmo and the brush all end there, and there alone the project
+// changes, the undo step is made, the document is marked unsaved and the re-grow is asked for.
+#include "app/commands.h"
+
+#include <gtest/gtest.h>
+
+#include "app/edit_actions.h"
+#include "app/editor_keys.h"
+#include "support/plane_project.h"
+
+namespace grass::test {
+namespace {
+
+struct CommandDriver {
+    CommandDriver() {
+        PlaneField field;
+        field.sizeM = 2.0f;
+        field.resolution = 2;
+        state.doc.loaded = planeFieldProject(field);
+        editor::resetHistory(state);
+    }
+    editor::EditorState state;
+};
+
+TEST(Commands, AnOngoingEditFollowsAtOnceAndBecomesOneStepWhenItEnds) {
+    CommandDriver d;
+    const glm::vec3 original = d.state.doc.project().layers[0].rootColor;
+    core::Project edited = d.state.doc.project();
+    for (int frame = 1; frame <= 3; ++frame) {
+        edited.layers[0].rootColor.x = 0.01f + 0.3f * float(frame);
+        EXPECT_TRUE(editor::apply(d.state, editor::EditProject{.after = edited, .ongoing = true}));
+        EXPECT_EQ(d.state.doc.project().layers[0].rootColor.x, 0.01f + 0.3f * float(frame));
+    }
+    EXPECT_TRUE(d.state.doc.dirty) << "the picture and the title follow the drag";
+    EXPECT_EQ(d.state.doc.history.undoSteps(), 0u);
+    EXPECT_FALSE(d.state.rebuildPending) << "a colour is read by the renderer every frame";
+
+    editor::recordProjectEdit(d.state, false);  // the drag ended
+    ASSERT_EQ(d.state.doc.history.undoSteps(), 1u);
+    EXPECT_EQ(d.state.doc.history.nextUndo()->label, "layers");
+    ASSERT_TRUE(editor::undo(d.state));
+    EXPECT_EQ(d.state.doc.project().layers[0].rootColor, original) << "one step undoes the drag";
+}
+
+TEST(Commands, AnEditTheSceneIsGrownFromAsksForARegrowAndKeepsItsLabel) {
+    CommandDriver d;
+    core::Project edited = d.state.doc.project();
+    edited.layers[0].scatter.density *= 0.5f;
+    d.state.doc.dirty = false;
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = edited,
+                                                           .effect = editor::EditEffect::Regrow,
+                                                           .label = "thin out"}));
+    EXPECT_TRUE(d.state.rebuildPending);
+    EXPECT_TRUE(d.state.doc.dirty);
+    ASSERT_EQ(d.state.doc.history.undoSteps(), 1u);
+    EXPECT_EQ(d.state.doc.history.nextUndo()->label, "thin out");
+    // The same project again changes nothing and makes no step.
+    d.state.rebuildPending = false;
+    EXPECT_FALSE(editor::apply(d.state, editor::EditProject{.after = edited}));
+    EXPECT_EQ(d.state.doc.history.undoSteps(), 1u);
+    EXPECT_FALSE(d.state.rebuildPending);
+}
+
+TEST(Commands, UndoWaitsForAToolDragToEnd) {
+    CommandDriver d;
+    core::Project edited = d.state.doc.project();
+    edited.name = "renamed";
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = edited}));
+    d.state.view.toolDragActive = true;
+    EXPECT_FALSE(editor::undo(d.state));
+    EXPECT_EQ(d.state.doc.project().name, "renamed");
+    d.state.view.toolDragActive = false;
+    EXPECT_TRUE(editor::undo(d.state));
+    EXPECT_NE(d.state.doc.project().name, "renamed");
+    EXPECT_TRUE(editor::redo(d.state));
+    EXPECT_EQ(d.state.doc.project().name, "renamed");
+}
+
+// Before: T and L changed the picture only; now they are commands like the Render panel's combo
+// boxes (saved, undoable, marking the project unsaved).
+TEST(Commands, TheTechniqueAndLightingKeysAreUndoableProjectEdits) {
+    CommandDriver d;
+    d.state.doc.dirty = false;
+    const core::Project before = d.state.doc.project();
+    editor::InputState input;
+    input.nextTechnique = true;
+    const std::string said = editor::applyEditorKeys(d.state, input, true);
+    EXPECT_NE(d.state.doc.project().render.technique, before.render.technique);
+    EXPECT_EQ(said, "technique " + std::string(core::grassTechniqueName(
+                                       d.state.doc.project().render.technique)));
+    EXPECT_TRUE(d.state.doc.dirty);
+    ASSERT_EQ(d.state.doc.history.undoSteps(), 1u);
+    EXPECT_EQ(d.state.doc.history.nextUndo()->label, said);
+
+    input = {};
+    input.toggleLighting = true;
+    editor::applyEditorKeys(d.state, input, true);
+    EXPECT_NE(d.state.doc.project().lighting.model, before.lighting.model);
+    EXPECT_EQ(d.state.doc.history.undoSteps(), 2u);
+
+    // Ctrl+Z twice: the project is as it was.
+    input = {};
+    input.keys = {ui::KeyEvent{ui::Key::Z, ui::Modifiers{.ctrl = true}},
+                  ui::KeyEvent{ui::Key::Z, ui::Modifiers{.ctrl = true}}};
+    editor::applyEditorKeys(d.state, input, true);
+    EXPECT_EQ(d.state.doc.project(), before);
+    EXPECT_EQ(d.state.doc.history.redoSteps(), 2u);
+}
+
+// A cull-test key is the view's: the picture changes, the document does not.
+TEST(Commands, ACullTestKeyIsNotADocumentChange) {
+    CommandDriver d;
+    d.state.doc.dirty = false;
+    editor::InputState input;
+    input.toggledCullTest = 4;
+    EXPECT_EQ(editor::applyEditorKeys(d.state, input, true), "occlusion culling off");
+    EXPECT_FALSE(d.state.view.overrides.occlusion);
+    EXPECT_FALSE(d.state.doc.dirty);
+    EXPECT_EQ(d.state.doc.history.undoSteps(), 0u);
+}
+
+}  // namespace
+}  // namespace grass::test
