@@ -259,7 +259,7 @@ void Editor::render(int width, int height) {
     if (!mTarget || mTarget->width() != mView.w || mTarget->height() != mView.h)
         mTarget = std::make_unique<gl::Framebuffer>(mView.w, mView.h,
                                                     mState.doc.loaded.project.render.msaaSamples);
-    mLive.renderer->render(mCamera, mView.w, mView.h, mTarget->id(), mState.view.options);
+    mLive.renderer->render(mCamera, mView.w, mView.h, *mTarget, mState.view.options);
     if (!mUi) {
         mTarget->blitTo(0, width, height);
         return;

@@ -103,7 +103,7 @@ void warmUp(render::SceneRenderer& renderer, const GrownCase& grown, const CaseC
     const BenchArgs& args = ctx.args;
     options.cull.collectStats = true;
     for (int frame = 0; frame < args.warmup; ++frame) {
-        renderer.render(grown.camera, args.width, args.height, framebuffer.id(), options);
+        renderer.render(grown.camera, args.width, args.height, framebuffer, options);
         glFinish();
     }
     const render::FrameTimings warm = renderer.lastTimings();
@@ -134,7 +134,7 @@ Result<render::FrameTimings> measureFrames(const GrownCase& grown, const CaseCon
     render::FrameTimings last;
     for (int frame = 0; frame < result.frames; ++frame) {
         const auto start = Clock::now();
-        (*renderer)->render(grown.camera, args.width, args.height, framebuffer.id(), options);
+        (*renderer)->render(grown.camera, args.width, args.height, framebuffer, options);
         glFinish();
         wall.push_back(msSince(start));
         last = (*renderer)->lastTimings();

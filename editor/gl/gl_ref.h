@@ -29,14 +29,12 @@ private:
 using BufferRef = GlRef<BufferTraits>;
 using TextureRef = GlRef<TextureTraits>;
 
-// The framebuffer a pass draws into. Id 0, the window's default framebuffer, belongs to no
-// wrapper (the window toolkit made it), so a raw id converts implicitly here: the editor names
-// the window's framebuffer, and its callers outside the render layers still pass
-// gl::Framebuffer::id(); code that holds a gl::Framebuffer passes the framebuffer itself.
+// The framebuffer a pass draws into: a gl::Framebuffer converts to it, and the window's default
+// framebuffer, which no wrapper owns (the window toolkit made it), is FramebufferRef::window().
 class FramebufferRef : public GlRef<FramebufferTraits> {
 public:
     using GlRef::GlRef;
-    FramebufferRef(GLuint id) : GlRef(id) {}
+    static FramebufferRef window() { return FramebufferRef(GLuint{0}); }
 };
 
 }  // namespace grass::gl

@@ -69,7 +69,7 @@ Frame ImageBench::draw(SceneRenderer& target, const RenderOptions& render,
             options.progress(what + ": frame " + std::to_string(i) + "/" +
                              std::to_string(options.frames));
         const auto start = Clock::now();
-        target.render(camera, options.width, options.height, framebuffer.id(), render);
+        target.render(camera, options.width, options.height, framebuffer, render);
         glFinish();
         const double ms = msSince(start);
         // Frame 0 pays for shader compiles and first allocations (a new snow map size).

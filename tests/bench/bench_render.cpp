@@ -176,7 +176,7 @@ std::optional<FrameResult> runFrames(benchmark::State& state, const BenchScene& 
 
     FrameResult result;
     options.cull.collectStats = true;
-    (*renderer)->render(camera, WIDTH, HEIGHT, framebuffer.id(), options);
+    (*renderer)->render(camera, WIDTH, HEIGHT, framebuffer, options);
     glFinish();
     const render::FrameTimings warm = (*renderer)->lastTimings();
     result.stats = warm.cull;
@@ -189,7 +189,7 @@ std::optional<FrameResult> runFrames(benchmark::State& state, const BenchScene& 
     double minMs = 0.0;
     for (auto _ : state) {
         const auto start = std::chrono::steady_clock::now();
-        (*renderer)->render(camera, WIDTH, HEIGHT, framebuffer.id(), options);
+        (*renderer)->render(camera, WIDTH, HEIGHT, framebuffer, options);
         glFinish();
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -327,7 +327,7 @@ const std::vector<std::uint8_t>* referenceImage(BenchState& benchState, const Be
     render::RenderOptions options = baseOptions(bench);
     options.stripSegments = REFERENCE_SEGMENTS;
     options.cull.lodDistanceM = 0.0f;
-    (*renderer)->render(camera, WIDTH, HEIGHT, framebuffer.id(), options);
+    (*renderer)->render(camera, WIDTH, HEIGHT, framebuffer, options);
     glFinish();
     benchState.reference = framebuffer.readPixels().pixels;
     if (const char* folder = std::getenv("GRASS_BENCH_IMAGES"))

@@ -159,7 +159,7 @@ struct Bench {
         std::vector<double> wall, gpu, snowMs, meshMs;
         for (int frame = 0; frame <= frames; ++frame) {
             const auto start = std::chrono::steady_clock::now();
-            renderer.render(camera, WIDTH, HEIGHT, target.framebuffer.id(), options);
+            renderer.render(camera, WIDTH, HEIGHT, target.framebuffer, options);
             glFinish();
             const std::chrono::duration<double, std::milli> elapsed =
                 std::chrono::steady_clock::now() - start;
@@ -180,7 +180,7 @@ struct Bench {
         options.snow = snow;
         options.snowCoverageView = true;
         options.skyColor = {SENTINEL_SKY[0], SENTINEL_SKY[1], SENTINEL_SKY[2]};
-        renderer.render(camera, WIDTH, HEIGHT, target.framebuffer.id(), options);
+        renderer.render(camera, WIDTH, HEIGHT, target.framebuffer, options);
         const std::vector<float> pixels = readFloats(target);
         Coverage result;
         result.Fp.resize(pixels.size() / 4);
@@ -197,7 +197,7 @@ struct Bench {
             return;
         render::RenderOptions options = shaded;
         options.snow = snow;
-        renderer.render(camera, WIDTH, HEIGHT, target.framebuffer.id(), options);
+        renderer.render(camera, WIDTH, HEIGHT, target.framebuffer, options);
         (void)writeImage(std::filesystem::path(imageFolder) / (name + ".png"), readFloats(target));
     }
 };
