@@ -15,11 +15,12 @@ case "$mode" in
 esac
 
 # Debian 12 packages: toolchain, the libraries of the design card, Mesa for headless GL, Xvfb
-# for the editor's window test, gnuplot for the plots of `grass tradeoff`.
+# and xdotool for the editor's window tests (real X input), gnuplot for the plots of
+# `grass tradeoff`.
 packages=(g++ cmake ninja-build pkg-config ccache
   libglfw3-dev libglm-dev libtinygltf-dev libopenmesh-dev libopenimageio-dev libepoxy-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri nlohmann-json3-dev libgtest-dev libbenchmark-dev
-  libstb-dev fonts-dejavu-core xvfb xauth gnuplot-nox)
+  libstb-dev fonts-dejavu-core xvfb xauth xdotool gnuplot-nox)
 # The export tests validate glTF files with the Khronos glTF-Validator, an npm package. Node
 # from elsewhere (nodesource's nodejs bundles npm) will do, so look for the commands first.
 if [ "$mode" = test ] && ! { command -v node && command -v npm; } >/dev/null; then

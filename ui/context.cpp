@@ -245,10 +245,14 @@ Response Context::interact(Rect rect, Rect clip, Layer layer, Id id, Sense sense
         }
     }
     if (r.mClicked) {
+        // Judged by the clicks' times and places (the app may feed one pass per button event,
+        // so these are the events', not the frames').
         r.mDoubleClicked =
-            mLastClickId == id && mInput.timeS - mLastClickTimeS <= double(mStyle.doubleClickTimeS);
+            mLastClickId == id && mInput.timeS - mLastClickTimeS <= double(mStyle.doubleClickTimeS) &&
+            glm::length(p - mLastClickPos) <= mStyle.clickMaxDistance;
         mLastClickId = r.mDoubleClicked ? Id{} : id;
         mLastClickTimeS = mInput.timeS;
+        mLastClickPos = p;
     }
     if (mFocusId == id) {
         mFocusSeen = true;

@@ -230,6 +230,7 @@ private:
     std::vector<Id> mFocusable;
     Id mLastClickId;
     double mLastClickTimeS = -1.0;
+    Vec2 mLastClickPos{0.0f};
     Id mOpenPopup;
     std::unordered_set<std::uint64_t> mSeenIds;
     int mDuplicateIds = 0;

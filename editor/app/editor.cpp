@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <thread>
 
 #include <epoxy/gl.h>
 
@@ -37,7 +38,8 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
         e.mScript = std::move(*parsed);
     }
     // Screenshots and scripts step the simulation once per frame, whatever the machine's speed.
-    e.mReplay = !settings.screenshot.empty() || !settings.scriptFile.empty();
+    // (--wall-clock: a script runs on real time instead, for tests of time.)
+    e.mReplay = !settings.screenshot.empty() || (!settings.scriptFile.empty() && !settings.wallClock);
     e.mAutosaveDueS = settings.autosaveS;
     e.mSettings = std::move(settings);
 
@@ -83,18 +85,27 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
             return created.error();
         e.mUi = std::move(*created);
     }
-    e.mStartTime = e.mLastStatus = e.mLastFrameEnd = Clock::now();
+    e.mStartTime = e.mLastStatus = e.mLastFrameEnd = e.mLastTick = Clock::now();
+    e.mTimelineStartS = state.view.timeline.timeS();
     return editor;
 }
 
 Result<bool> Editor::frame() {
     if (mWindow->shouldClose() && closeRequested())
         return false;
+    // The wall time this frame stands for: everything since the last one, rendering included
+    // (time, physics and autosave run on it, however slow the frame).
+    const Clock::time_point tick = Clock::now(), previousTick = mLastTick;
+    mFrameS = std::chrono::duration<double>(tick - previousTick).count();
+    mLastTick = tick;
     InputState input = mWindow->pollInput();
+    mScriptShot.clear();
     if (!mSettings.scriptFile.empty()) {
-        if (static_cast<std::size_t>(mFrame) >= mScript.size())
-            return false;
-        input = mScript[static_cast<std::size_t>(mFrame)].input;
+        auto step = nextScriptStep(tick);
+        if (!step)
+            return finishScript(previousTick);
+        input = step->input;
+        mScriptShot = step->screenshot;
     }
     int width = 0, height = 0;
     mWindow->framebufferSize(&width, &height);
@@ -110,10 +121,9 @@ Result<bool> Editor::frame() {
         mWindow->setTitle(title);
         mShownTitle = title;
     }
-    const Clock::time_point start = Clock::now();
     // This frame's picture follows the project as it is now, with the view's overrides.
     mState.view.options = viewRenderOptions(mState);
-    advanceTime(start);
+    advanceTime();
     // Statistics cost atomics and a wait when read: only the frame before a status update
     // collects them, and they are read once, after it.
     const bool statusDue =
@@ -123,9 +133,37 @@ Result<bool> Editor::frame() {
     auto more = writeOutputs(width, height);
     if (!more || !*more)
         return more;
+    if (mSettings.frameDelayMs > 0)
+        std::this_thread::sleep_for(std::chrono::milliseconds(mSettings.frameDelayMs));
     mWindow->swapBuffers();
     updateStatus(statusDue);
     return true;
+}
+
+std::optional<ScriptFrame> Editor::nextScriptStep(Clock::time_point now) {
+    if (mScriptStep >= mScript.size())
+        return std::nullopt;
+    const ScriptFrame& step = mScript[mScriptStep];
+    if (step.holdS > 0.0) {
+        if (!mHoldStart)
+            mHoldStart = now;
+        if (std::chrono::duration<double>(now - *mHoldStart).count() < step.holdS)
+            return step;  // held: the same idle input again
+        mHoldStart.reset();
+    }
+    ++mScriptStep;
+    return step;
+}
+
+bool Editor::finishScript(Clock::time_point lastFrame) {
+    if (!mReplay) {
+        // From the editor's start to the last frame that moved time.
+        const double wallS = std::chrono::duration<double>(lastFrame - mStartTime).count();
+        std::printf("wall clock %.2f s, %d frames, timeline moved %.2f s, physics skipped %.2f s\n",
+                    wallS, mFrame, mState.view.timeline.timeS() - mTimelineStartS,
+                    mLive.physics ? mLive.physics->droppedS : 0.0);
+    }
+    return false;
 }
 
 bool Editor::closeRequested() {
@@ -222,8 +260,7 @@ void Editor::resetTimeline() {
 
 void Editor::autosaveWhenDue() {
     // On the simulation's clock when replaying, so scripts see it at a fixed frame.
-    mAutosaveDueS -= mReplay ? mState.view.timeline.stepS()
-                             : std::chrono::duration<double>(Clock::now() - mLastFrameEnd).count();
+    mAutosaveDueS -= mReplay ? mState.view.timeline.stepS() : mFrameS;
     if (mSettings.autosaveS > 0.0 && mAutosaveDueS <= 0.0 && mState.doc.dirty && !mState.busy() &&
         !mState.view.toolDragActive) {
         mAutosaveDueS = mSettings.autosaveS;
@@ -231,11 +268,11 @@ void Editor::autosaveWhenDue() {
     }
 }
 
-void Editor::advanceTime(Clock::time_point start) {
+void Editor::advanceTime() {
     EditorState& state = mState;
-    // Screenshots advance exactly one step per frame, so they do not depend on machine speed.
-    const double elapsedS = !mReplay ? std::chrono::duration<double>(start - mLastFrameEnd).count()
-                                     : state.view.timeline.stepS();
+    // Screenshots advance exactly one step per frame, so they do not depend on machine speed;
+    // otherwise the timeline plays at wall-clock time × its speed.
+    const double elapsedS = !mReplay ? mFrameS : state.view.timeline.stepS();
     const core::TimeUpdate moved = state.view.timeline.advance(elapsedS);
     const bool jumped = state.view.timeJump.needsReset() || moved.needsReset() ||
                         state.view.timeJump.change == core::TimeChange::JumpForward;
@@ -250,7 +287,13 @@ void Editor::advanceTime(Clock::time_point start) {
             physics.steps = static_cast<std::size_t>(
                 std::floor(state.view.timeline.timeS() / physics.scene.params.dtS));
         }
-        physics.advanceTo(state.view.timeline.timeS());
+        // What the machine could not step, per second of wall time, for the status bar.
+        mDropped.simS += physics.advanceTo(state.view.timeline.timeS());
+        mDropped.wallS += elapsedS;
+        if (mDropped.wallS >= 1.0) {
+            state.transient.status.physicsDroppedS = mDropped.simS / mDropped.wallS;
+            mDropped = {};
+        }
     }
     state.view.options.timeS = static_cast<float>(state.view.timeline.timeS());
 }
@@ -301,9 +344,8 @@ Result<bool> Editor::writeOutputs(int width, int height) {
                                : "turntable not saved: " + turned.error().str();
         state.turntableRequested.clear();
     }
-    if (!mSettings.scriptFile.empty() &&
-        !mScript[static_cast<std::size_t>(mFrame)].screenshot.empty()) {
-        const std::string& shot = mScript[static_cast<std::size_t>(mFrame)].screenshot;
+    if (!mScriptShot.empty()) {
+        const std::string& shot = mScriptShot;
         if (auto written = shownImage(shot); !written)
             return written.error();
         std::printf("wrote %s (%dx%d) at frame %d\n", shot.c_str(), width, height, mFrame + 1);

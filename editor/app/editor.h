@@ -14,6 +14,7 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,10 @@ struct EditorSettings {
     bool glDebug = false;
     bool noPhysics = false;
     bool noUi = false;
+    // Tests of time: a script on wall-clock time (not one physics step per frame), and a
+    // delay added to every frame to stand for a slow machine.
+    bool wallClock = false;
+    int frameDelayMs = 0;
 };
 
 // The viewport rect (points, y down) in GL pixels (y up), at least one pixel.
@@ -69,7 +74,13 @@ private:
     bool adoptDocument(core::LoadedProject next, std::string_view what);
     void resetTimeline();
     void autosaveWhenDue();
-    void advanceTime(Clock::time_point start);
+    void advanceTime();
+    // The script's input for this frame (a `wait-s` step holds until its time has passed);
+    // none once the script is over.
+    std::optional<ScriptFrame> nextScriptStep(Clock::time_point now);
+    // The end of a script: on wall-clock time, says how far the timeline moved by the start of
+    // the last frame.
+    bool finishScript(Clock::time_point lastFrame);
     void render(int width, int height);
     // Screenshots and the turntable; false when the --screenshot was written (the end).
     Result<bool> writeOutputs(int width, int height);
@@ -86,11 +97,19 @@ private:
     std::unique_ptr<gl::Framebuffer> mTarget;
     PixelRect mView;
     int mFrame = 0;
+    std::size_t mScriptStep = 0;
+    std::optional<Clock::time_point> mHoldStart;  // when the current `wait-s` step began
+    std::string mScriptShot;  // this frame's script screenshot (empty: none)
+    double mFrameS = 0.0;     // wall time since the previous frame
+    double mTimelineStartS = 0.0;
+    struct {
+        double simS = 0.0, wallS = 0.0;
+    } mDropped;  // physics time skipped over the current second
     bool mCameraDrag = false;  // a drag that began in the viewport stays the camera's
     bool mToolDrag = false;    // a drag that began on a tool (brush, gizmo) stays the tool's
     std::string mShownTitle;
     double mAutosaveDueS = 0.0;
-    Clock::time_point mStartTime, mLastStatus, mLastFrameEnd;
+    Clock::time_point mStartTime, mLastStatus, mLastFrameEnd, mLastTick;
     double mFps = 0.0;
 };
 

@@ -50,10 +50,19 @@ void Editor::runInput(InputState input, int width, int height) {
     const Clock::time_point uiStart = Clock::now();
     mView = PixelRect{0, 0, width, height};
     bool uiPointer = false, uiKeyboard = false;
+    bool pressOnUi = false;  // a press this frame that a panel took (not the viewport's)
     ViewportPointer pointer;
     if (mUi) {
-        mUi->beginFrame(*mWindow, input,
-                        std::chrono::duration<double>(uiStart - mStartTime).count());
+        // One UI pass per button event (input_passes.h), the last one drawn.
+        std::vector<ui::Input> passes = mUi->passes(*mWindow, input, mWindow->nowS());
+        for (std::size_t i = 0; i + 1 < passes.size(); ++i) {
+            const bool press = passes[i].buttonDown[0] && !mUi->context().buttonDown();
+            mUi->beginFrame(std::move(passes[i]));
+            buildPanels(mUi->context(), mState);
+            const bool uiWantsPointer = mUi->context().endFrame().wantsPointer;
+            pressOnUi = pressOnUi || (press && uiWantsPointer);
+        }
+        mUi->beginFrame(std::move(passes.back()));
         const ui::Rect central = buildPanels(mUi->context(), mState);
         const float ppp = mUi->pixelsPerPoint();
         const ui::Vec2 at = mUi->context().pointerPos();
@@ -74,7 +83,7 @@ void Editor::runInput(InputState input, int width, int height) {
     if (mUi) {
         pointer.inside = pointer.inside && !uiPointer && !mCameraDrag;
         pointer.down = input.leftDown;
-        pointer.pressed = input.leftPressed;
+        pointer.pressed = input.leftPressed && !pressOnUi;
         pointer.released = !input.leftDown;
         pointer.ctrl = input.modifiers.ctrl;
         pointer.shift = input.modifiers.shift;
@@ -94,6 +103,9 @@ void Editor::runInput(InputState input, int width, int height) {
         mCameraDrag = anyDown && !toolUsed;
     else if (!mCameraDrag && !uiPointer && !mToolDrag && mUi->context().activeId().value == 0)
         mCameraDrag = true;
+    // A focused field owns the keyboard: an F typed into it is text, not "frame the scene".
+    if (uiKeyboard)
+        input.frameRequested = false;
     moveCamera(input, mCameraDrag, !uiPointer, mView.h, *mLive.scene, mCamera);
     if (!uiKeyboard)
         applyKeys(input);

@@ -77,6 +77,8 @@ struct FrameStatus {
     render::FrameTimings timings;
     double fps = 0.0;
     double uiMs = 0.0;  // CPU time of building and tessellating the UI
+    // Simulated time the live physics could not step in the last second (0: it keeps up).
+    double physicsDroppedS = 0.0;
 };
 
 enum class FileDialog { None, Open, SaveAs };

@@ -73,17 +73,13 @@ Result<std::unique_ptr<EditorUi>> EditorUi::create() {
     return self;
 }
 
-void EditorUi::beginFrame(Window& window, const InputState& input, double timeS) {
+std::vector<ui::Input> EditorUi::passes(Window& window, const InputState& input, double timeS) {
     int fbW = 0, fbH = 0, winW = 0, winH = 0;
     window.framebufferSize(&fbW, &fbH);
     window.windowSize(&winW, &winH);
     // Points = pixels / content scale; cursor positions come in screen coordinates, which are
     // pixels on X11 and points on macOS/Wayland, hence the framebuffer/window ratio.
     const float ppp = window.contentScale();
-    if (ppp != mPixelsPerPoint || mContext->frameNumber() == 0) {
-        mFonts->setPixelsPerPoint(ppp);  // re-rasterises the glyphs sharp at the new scale
-        mPixelsPerPoint = ppp;
-    }
     const float toPixels = winW > 0 ? float(fbW) / float(winW) : 1.0f;
     ui::Input in;
     in.pixelsPerPoint = ppp;
@@ -92,8 +88,6 @@ void EditorUi::beginFrame(Window& window, const InputState& input, double timeS)
     in.hasPointer = input.cursorInside;
     in.pointerPos = ui::Vec2(float(input.cursorX), float(input.cursorY)) * toPixels / ppp;
     in.buttonDown = {input.leftDown, input.rightDown, input.middleDown};
-    // A click shorter than a frame: report the press so the UI still sees it.
-    in.buttonPressed[0] = input.leftPressed;
     // One wheel step scrolls about three lines of 14 pt text, as most toolkits do.
     in.scrollDelta = ui::Vec2(float(input.scrollX), float(input.scrollSteps)) * 50.0f;
     in.text = input.typed;
@@ -102,7 +96,21 @@ void EditorUi::beginFrame(Window& window, const InputState& input, double timeS)
     for (const ui::KeyEvent& key : input.keys)
         if (key.key == ui::Key::V && key.modifiers.ctrl)
             in.clipboardText = window.clipboard();
-    mContext->beginFrame(std::move(in));
+    std::vector<ButtonEvent> events = input.buttonEvents;
+    for (ButtonEvent& e : events) {
+        e.pos = e.pos * toPixels / ppp;
+        if (e.timeS < 0.0)
+            e.timeS = timeS;  // a script's event: it happens now
+    }
+    return uiPasses(in, events);
+}
+
+void EditorUi::beginFrame(ui::Input pass) {
+    if (pass.pixelsPerPoint != mPixelsPerPoint || mContext->frameNumber() == 0) {
+        mFonts->setPixelsPerPoint(pass.pixelsPerPoint);  // re-rasterises the glyphs sharp
+        mPixelsPerPoint = pass.pixelsPerPoint;
+    }
+    mContext->beginFrame(std::move(pass));
 }
 
 const ui::Output& EditorUi::endFrame(Window& window) {

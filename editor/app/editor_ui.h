@@ -36,9 +36,12 @@ public:
     ui::Context& context() { return *mContext; }
     // Pixels per point of the frame begun last (the window's content scale).
     float pixelsPerPoint() const { return mPixelsPerPoint; }
-    // Feeds this frame's input to the context. The clipboard is read from the OS only when a
+    // This frame's input as UI passes (input_passes.h): one per button event, then the frame's
+    // final state with its keys, text and wheel. The clipboard is read from the OS only when a
     // paste key arrives (reading it is an X round trip).
-    void beginFrame(Window& window, const InputState& input, double timeS);
+    std::vector<ui::Input> passes(Window& window, const InputState& input, double timeS);
+    // Feeds one pass to the context (the fonts follow its pixels per point).
+    void beginFrame(ui::Input pass);
     // Ends the frame, hands copied text to the OS clipboard and tessellates the shapes.
     const ui::Output& endFrame(Window& window);
     // Draws the last frame's meshes over whatever the bound (default) framebuffer holds.

@@ -22,6 +22,7 @@ struct Player {
         now.leftPressed = now.escapePressed = now.frameRequested = false;
         now.typed.clear();
         now.keys.clear();
+        now.buttonEvents.clear();
         now.toggledCullTest = 0;
         now.nextTechnique = now.toggleLighting = false;
     }
@@ -128,6 +129,12 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
                 return fail("wait: expected a frame count 1…" + std::to_string(MAX_WAIT_FRAMES));
             for (int i = 0; i < frames; ++i)
                 p.emit();
+        } else if (command == "wait-s") {
+            double seconds = 0.0;
+            if (!(in >> seconds) || !(seconds > 0.0 && seconds <= 86400.0))
+                return fail("wait-s: expected seconds, more than 0 and at most 86400");
+            p.emit();
+            p.frames.back().holdS = seconds;
         } else if (command == "move") {
             double x = 0, y = 0;
             if (!(in >> x >> y) || !finite({x, y}))
@@ -143,6 +150,19 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
             *button = command == "press";
             if (command == "press" && button == &p.now.leftDown)
                 p.now.leftPressed = true;
+            p.emit();
+        } else if (command == "click" || command == "doubleclick") {
+            // Press and release inside one frame, as a quick click arrives at a low frame rate.
+            double x = 0, y = 0;
+            if (!(in >> x >> y) || !finite({x, y}))
+                return fail(command + ": expected X Y");
+            p.moveTo(x, y);
+            const ui::Vec2 at{float(x), float(y)};
+            for (int i = 0; i < (command == "click" ? 1 : 2); ++i) {
+                p.now.buttonEvents.push_back({0, true, at, -1.0});
+                p.now.buttonEvents.push_back({0, false, at, -1.0});
+            }
+            p.now.leftPressed = true;
             p.emit();
         } else if (command == "drag") {
             double x0 = 0, y0 = 0, x1 = 0, y1 = 0;

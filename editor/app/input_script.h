@@ -4,9 +4,11 @@
 // comment; coordinates are window coordinates (GLFW's screen coordinates, y down):
 //
 //   wait N                   N frames with no new input (buttons stay as they are)
+//   wait-s S                 no new input for S seconds of wall time (with --wall-clock)
 //   move X Y                 the pointer moves to (X, Y): one frame
 //   press [left|right|middle]   / release [...]   one frame each (default left)
 //   drag X0 Y0 X1 Y1 N       press at (X0, Y0), move to (X1, Y1) over N frames, release
+//   click X Y / doubleclick X Y   one or two left clicks inside one frame (as at a low frame rate)
 //   hold ctrl|shift|none     modifiers held from now on (hold ctrl+shift for both)
 //   key [ctrl+][shift+]NAME  one key press: a letter, digit, [ ], enter, escape, tab, f
 //   type TEXT                typed text (the rest of the line)
@@ -27,6 +29,7 @@ namespace grass::editor {
 struct ScriptFrame {
     InputState input;
     std::string screenshot;  // empty: none after this frame
+    double holdS = 0.0;  // > 0: the frame repeats until this much wall time has passed
 };
 
 // Errors name the file and line: "script.txt:4: drag: expected X0 Y0 X1 Y1 N".

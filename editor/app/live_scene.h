@@ -2,6 +2,7 @@
 // renderer and the GPU physics stepping the renderer's blades, built and rebuilt together.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -17,23 +18,33 @@
 namespace grass::editor {
 
 // Physics stepping the renderer's blade buffers on the GPU in fixed steps of the project's
-// step_s, following the timeline's time but never more than MAX_STEPS_PER_FRAME per frame (a
-// slow device runs the simulation slower than real time instead of falling further behind).
+// step_s, following the timeline's time with at most MAX_STEPS_PER_FRAME steps a frame. What a
+// slow device cannot step is dropped (the field jumps to the timeline's time) rather than
+// piled up, so the field keeps moving with the wind and colliders it sees; droppedS says how
+// much, for the status bar.
 struct LivePhysics {
     static constexpr int MAX_STEPS_PER_FRAME = 4;
     core::ScenePhysics scene;
     render::ScenePhysicsGpu gpu;
     std::size_t steps = 0;
+    double droppedS = 0.0;  // simulated time skipped since the field was built
 
     double timeS() const { return static_cast<double>(steps) * scene.params.dtS; }
-    // Steps towards `targetS`; returns the time reached.
+    // Steps towards `targetS`; returns the time dropped this frame (0 when it kept up).
     double advanceTo(double targetS) {
         const double dtS = scene.params.dtS;
         for (int i = 0; i < MAX_STEPS_PER_FRAME && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++i) {
             gpu.step(scene, static_cast<float>(timeS()));
             ++steps;
         }
-        return timeS();
+        const double behindS = targetS - timeS();
+        if (behindS < dtS)
+            return 0.0;
+        const auto skipped = static_cast<std::size_t>(std::floor(behindS / dtS));
+        steps += skipped;
+        const double dropped = static_cast<double>(skipped) * dtS;
+        droppedS += dropped;
+        return dropped;
     }
 };
 

@@ -48,6 +48,13 @@ int main(int argc, char** argv) {
                 "replay recorded input (pointer, keys, waits, screenshots; see "
                 "editor/app/input_script.h), one step of physics per frame, then exit",
                 &settings.scriptFile);
+    parser.flag("--wall-clock",
+                "with --script: time, physics and autosave follow the wall clock, as in a "
+                "session, instead of one physics step per frame (for tests of time)",
+                &settings.wallClock);
+    parser.integer("--frame-delay-ms", "add N ms to every frame, as a slower machine would "
+                   "(for tests of time)",
+                   &settings.frameDelayMs, 0, 10000);
     parser.number("--autosave-s", "S",
                   "seconds between autosaves of unsaved changes to <project>.autosave.json (0: "
                   "never)",
@@ -61,7 +68,7 @@ int main(int argc, char** argv) {
     parser.flag("--no-physics",
                 "show the field at rest (by default gravity, wind and colliders run live on the "
                 "GPU, one physics step of the project's step_s per elapsed step, at most 4 per "
-                "frame)",
+                "frame; time beyond that is skipped, and the status bar says so)",
                 &settings.noPhysics);
     parser.flag("--no-ui",
                 "show the viewport alone over the whole window (what `grass render` draws; "

@@ -197,6 +197,13 @@ void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
     ui::Ui ui(ctx, {rect.min + ui::Vec2(8.0f, 2.0f), rect.max}, ui::Layer::Panels);
     ui.horizontal([&](ui::Ui& row) {
         row.label(text);
+        // The machine cannot step the physics as fast as time passes: say so, in orange.
+        if (const double dropped = s.transient.status.physicsDroppedS; dropped > 0.0) {
+            char behind[96];
+            std::snprintf(behind, sizeof behind, "   physics behind: skipping %.1f s per s",
+                          dropped);
+            row.coloredLabel(behind, ui::Color32::rgb(255, 150, 60));
+        }
         // A failed save in warning orange, so that it reads as something to act on.
         if (!s.transient.message.empty())
             row.coloredLabel("   " + s.transient.message, s.transient.messageIsSaveError

@@ -34,6 +34,14 @@ struct WindowCallbacks {
             input.middleDown = down;
         if (button == GLFW_MOUSE_BUTTON_RIGHT)
             input.rightDown = down;
+        const int uiButton = button == GLFW_MOUSE_BUTTON_LEFT    ? 0
+                             : button == GLFW_MOUSE_BUTTON_RIGHT ? 1
+                             : button == GLFW_MOUSE_BUTTON_MIDDLE ? 2
+                                                                  : -1;
+        if (uiButton >= 0)
+            input.buttonEvents.push_back({uiButton, down,
+                                          ui::Vec2(float(input.cursorX), float(input.cursorY)),
+                                          self(w)->nowS()});
         input.shiftDown = (mods & GLFW_MOD_SHIFT) != 0;
         input.modifiers = uiModifiers(mods);
     }
@@ -92,6 +100,7 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
     }
     std::unique_ptr<Window> window(new Window());
     window->mWindow = handle;
+    window->mOpenedS = glfwGetTime();
     glfwSetWindowUserPointer(handle, window.get());
     glfwSetCursorPosCallback(handle, WindowCallbacks::cursor);
     glfwSetMouseButtonCallback(handle, WindowCallbacks::button);
@@ -127,6 +136,9 @@ void Window::setTitle(const std::string& title) {
 void Window::swapBuffers() {
     glfwSwapBuffers(mWindow);
 }
+double Window::nowS() const {
+    return glfwGetTime() - mOpenedS;
+}
 void Window::framebufferSize(int* width, int* height) const {
     glfwGetFramebufferSize(mWindow, width, height);
 }
@@ -150,6 +162,7 @@ InputState Window::pollInput() {
     mInput.dragDx = mInput.dragDy = mInput.scrollSteps = mInput.scrollX = 0.0;
     mInput.leftPressed = mInput.escapePressed = false;
     mInput.typed.clear();
+    mInput.buttonEvents.clear();
     mInput.keys.clear();
     mInput.frameRequested = false;
     mInput.toggledCullTest = 0;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/input_passes.h"
 #include "ui/context.h"
 #include "util/result.h"
 
@@ -27,6 +28,9 @@ struct InputState {
     bool cursorInside = true;
     // A button went down this frame (the UI must see a press even if it was released again).
     bool leftPressed = false;
+    // Every button change this frame, in order, at the window's screen coordinates and on
+    // Window::nowS's clock (EditorUi turns them into UI passes, input_passes.h).
+    std::vector<ButtonEvent> buttonEvents;
     bool frameRequested = false;  // F key: frame the whole scene
     // Keys 1–4: toggle the orientation, frustum, distance, occlusion cull tests; T: next grass
     // technique (blades, billboards, hybrid); L: grass lighting on/off.
@@ -58,6 +62,8 @@ public:
     void swapBuffers();
     // Polls events; the returned input holds this frame's drags and scrolls.
     InputState pollInput();
+    // Seconds since the window opened: the clock of input events and the UI.
+    double nowS() const;
     void framebufferSize(int* width, int* height) const;
     // Window size in screen coordinates (what cursor positions are in).
     void windowSize(int* width, int* height) const;
@@ -70,6 +76,7 @@ private:
     Window() = default;
     GLFWwindow* mWindow = nullptr;
     InputState mInput;
+    double mOpenedS = 0.0;  // glfwGetTime() when the window opened
     friend struct WindowCallbacks;
 };
 

@@ -23,6 +23,15 @@ if(TARGET grass-editor)
     set_tests_properties(cli.kill_during_autosave PROPERTIES LABELS "cli;gl" TIMEOUT 400
         PASS_REGULAR_EXPRESSION "autosave: 10 sessions killed"
         ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
+    # Real X input (xdotool) at about one frame a second (issue 24): quick clicks, a
+    # double-click and typing all reach the project; about 30 s.
+    add_test(NAME cli.editor_real_input
+             COMMAND ${GRASS_XVFB_RUN} -a -s "-screen 0 1024x768x24"
+                     ${GRASS_BASH} ${GRASS_CLI_DIR}/editor_real_input_test.sh
+                     $<TARGET_FILE:grass-editor> ${GRASS_CLI_TMP}/editor-real-input)
+    set_tests_properties(cli.editor_real_input PROPERTIES LABELS "cli;gl" TIMEOUT 120
+        PASS_REGULAR_EXPRESSION "real input: name typed, quick click, double-click"
+        ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
 endif()
 
 # Hostile files and careless paths (issue 22): one test per class of defect, each a list of

@@ -1,0 +1,32 @@
+// One frame's input as the UI sees it (issue 24): the window queues every button event with where
+// and when it happened, and the UI runs one pass per event, so a press and its release inside one
+// frame are a click and two quick clicks a double-click, judged by the events' times and places,
+// however long the frame took (1 fps on a software renderer, a touchpad tap at any rate). The
+// last pass also carries the keys, the typed text and the wheel, and is the one drawn.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "ui/context.h"
+
+namespace grass::editor {
+
+// A mouse button going down or up: which (ui::PointerButton's order), where (points) and when
+// (seconds on the clock of the frame's timeS; negative: at the frame's time, as scripts say).
+struct ButtonEvent {
+    int button = 0;
+    bool down = false;
+    ui::Vec2 pos{0.0f};
+    double timeS = 0.0;
+};
+
+// More events than this in one frame (a stuck button, a flood) are folded into the last pass.
+inline constexpr std::size_t MAX_UI_PASSES = 16;
+
+// The UI passes for a frame whose final input is `last` (buttons as they are now, the pointer
+// where it is now, keys, text, wheel) and whose button events are `events`, in order. With no
+// events (or only events that change nothing), one pass: `last`.
+std::vector<ui::Input> uiPasses(const ui::Input& last, const std::vector<ButtonEvent>& events);
+
+}  // namespace grass::editor
