@@ -9,17 +9,31 @@ GpuTimer::GpuTimer() {
 }
 
 void GpuTimer::begin() {
+    mLastSynchronous = mSynchronous;
+    if (mSynchronous) {
+        glFinish();
+        mStart = std::chrono::steady_clock::now();
+        return;
+    }
     glBeginQuery(GL_TIME_ELAPSED, mQuery.id());
 }
 
 void GpuTimer::end() {
-    glEndQuery(GL_TIME_ELAPSED);
     mUsed = true;
+    if (mLastSynchronous) {
+        glFinish();
+        mWallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mStart)
+                      .count();
+        return;
+    }
+    glEndQuery(GL_TIME_ELAPSED);
 }
 
 double GpuTimer::milliseconds() const {
     if (!mUsed)
         return 0.0;
+    if (mLastSynchronous)
+        return mWallMs;
     GLuint64 ns = 0;
     glGetQueryObjectui64v(mQuery.id(), GL_QUERY_RESULT, &ns);
     return static_cast<double>(ns) * 1e-6;

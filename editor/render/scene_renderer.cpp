@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "gl/headless_context.h"
+
 namespace grass::render {
 
 // The billboards and stem sets stand for the blades: they take the blades' mean AO.
@@ -21,6 +23,7 @@ static float meanFieldAo(const core::Scene& scene) {
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene) {
     std::unique_ptr<SceneRenderer> renderer(new SceneRenderer());
     renderer->mScene = &scene;
+    renderer->mSoftwareGl = gl::isSoftwareRenderer();
     auto mesh = gl::Program::load(
         {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}}, "mesh");
     if (!mesh)
@@ -84,6 +87,11 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     mLighting.upload(
         lightingBlock(options.lighting, options.sun, options.skyColor, options.groundColor));
     mPasses.clear();
+    // Figures a frame's caller reads are timed exactly on software GL (gl/timer_query.h).
+    const bool synchronous = mSoftwareGl && options.cull.collectStats;
+    for (gl::GpuTimer* timer : {&mMeshTimer, &mGrassTimer, &mCullTimer, &mBillboardTimer,
+                                &mStemSetTimer, &mSnowTimer})
+        timer->setSynchronous(synchronous);
     runSnowPass(options, width, height);
     drawOpaquePass(projection * camera.view(), options);
     drawGrass(camera, projection, width, height, options);

@@ -83,6 +83,7 @@ private:
     std::vector<StemSetField> mStemSets;
     std::size_t mStemSetsDrawn = 0;
     gl::GpuTimer mMeshTimer, mGrassTimer, mCullTimer, mBillboardTimer, mStemSetTimer, mSnowTimer;
+    bool mSoftwareGl = false;  // timers are synchronous there (set by create)
     std::size_t mBladesDrawn = 0;
     std::size_t mBillboardsDrawn = 0;
     float mFieldAo = 1.0f;
