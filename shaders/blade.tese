@@ -7,6 +7,7 @@ layout(quads, equal_spacing, ccw) in;
 
 in int tcBladeIndex[];
 
+uniform float uWidthScale;  // 1; wider in the editor's thinned picture while the user interacts
 uniform mat4 uViewProj;
 uniform int uShape;
 uniform float uTipStart;
@@ -21,6 +22,7 @@ flat out uint vBladeIndex;
 
 void main() {
     Blade blade = blades[tcBladeIndex[0]];
+    blade.v2W.w *= uWidthScale;
     // The level along v (outer 0) places the vertices at v = i/level, as the strips' segments do.
     BladeShapeParams shape =
         BladeShapeParams(uShape, uTipStart, gl_TessLevelOuter[0], uViewProj, uPixelScale);

@@ -13,6 +13,7 @@ uniform int uSegments;
 uniform int uShape;
 uniform float uTipStart;
 uniform float uPixelScale;  // projection[1][1] · viewport height / 2; 0: no width correction
+uniform float uWidthScale;  // 1; wider in the editor's thinned picture while the user interacts
 
 out vec3 vPosition;
 out vec3 vNormal;
@@ -24,6 +25,7 @@ flat out uint vBladeIndex;
 void main() {
     uint bladeIndex = visibleBlade(gl_InstanceID);
     Blade blade = blades[bladeIndex];
+    blade.v2W.w *= uWidthScale;
     int halfVertices = 2 * (uSegments + 1);
     int row;
     float u;

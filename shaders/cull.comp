@@ -1,7 +1,8 @@
 #version 450 core
 // Per-blade culling (SPEC §6, Jahrmann §6). One invocation per blade slot; patches hold a
 // multiple of 32 blades and the buffer is patch-major, so a work-group lies in one patch.
-// Stage 1: the patch's box against the view frustum. Stage 2, per blade: orientation, frustum,
+// Stage 1: the patch's box against the view frustum. Stage 2, per blade: uniform thinning (the
+// editor's reduced picture while the user interacts, off otherwise), orientation, frustum,
 // distance, occlusion, burial under snow, in that order; a blade is counted by the first test that removes it.
 // Survivors append their index to the visible list of their level of detail (lod.glsl) and bump
 // that LOD's strip and tessellation instance counts (reset to 0 before the dispatch).
@@ -55,6 +56,7 @@ uniform int uDistanceClasses;
 uniform float uMaxDistance;
 uniform float uLodDistance;
 uniform float uCutoffDistance;  // > 0: blades beyond it are culled as distance (hybrid far field)
+uniform int uKeepEvery;  // > 1: only every n-th blade is drawn (the editor's reduced picture)
 uniform int uCollectStats;
 
 // Clip-space slack of the frustum test: blades have width and bend between the three tested
@@ -119,6 +121,8 @@ uint classify(uint index) {
     Blade blade = blades[index];
     if (blade.v1H.w <= 0.0)
         return RESULT_SKIPPED;
+    if (uKeepEvery > 1 && index % uint(uKeepEvery) != 0u)
+        return RESULT_DISTANCE;
     vec3 v0 = blade.v0Theta.xyz;
     vec3 v1 = blade.v1H.xyz;
     vec3 v2 = blade.v2W.xyz;

@@ -71,6 +71,10 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
             e.mLive.physics->gpu.uploadRegrown(layer, *e.mLive.scene, report.patches);
     };
     state.view.softwareRenderer = gl::isSoftwareRenderer();
+    // Screenshots and scripts draw every frame at full quality: their pictures must not depend
+    // on the machine's speed.
+    state.view.quality.setSettings({.enabled = e.mSettings.adaptive && !e.mReplay,
+                                    .budgetMs = e.mSettings.frameBudgetMs});
     state.view.options = viewRenderOptions(state);
     resetHistory(state);
     state.recoveryOffer = findAutosave(state.doc.loaded);
@@ -98,6 +102,8 @@ Result<bool> Editor::frame() {
     const Clock::time_point tick = Clock::now(), previousTick = mLastTick;
     mFrameS = std::chrono::duration<double>(tick - previousTick).count();
     mLastTick = tick;
+    if (mFrame > 0)
+        mFrameMs.emplace_back(mPhase, mFrameS * 1000.0);  // the frame just ended
     InputState input = mWindow->pollInput();
     mScriptShot.clear();
     if (!mSettings.scriptFile.empty()) {
@@ -106,6 +112,7 @@ Result<bool> Editor::frame() {
             return finishScript(previousTick);
         input = step->input;
         mScriptShot = step->screenshot;
+        mPhase = step->phase;
     }
     int width = 0, height = 0;
     mWindow->framebufferSize(&width, &height);
@@ -121,7 +128,9 @@ Result<bool> Editor::frame() {
         mWindow->setTitle(title);
         mShownTitle = title;
     }
-    // This frame's picture follows the project as it is now, with the view's overrides.
+    // This frame's picture follows the project as it is now, with the view's overrides and the
+    // adaptive quality's rung.
+    chooseQuality();
     mState.view.options = viewRenderOptions(mState);
     advanceTime();
     // Statistics cost atomics and a wait when read: only the frame before a status update
@@ -162,6 +171,24 @@ bool Editor::finishScript(Clock::time_point lastFrame) {
         std::printf("wall clock %.2f s, %d frames, timeline moved %.2f s, physics skipped %.2f s\n",
                     wallS, mFrame, mState.view.timeline.timeS() - mTimelineStartS,
                     mLive.physics ? mLive.physics->droppedS : 0.0);
+        // Per script phase, in the order they began.
+        std::vector<std::string> phases;
+        for (const auto& [phase, ms] : mFrameMs)
+            if (std::find(phases.begin(), phases.end(), phase) == phases.end())
+                phases.push_back(phase);
+        for (const std::string& phase : phases) {
+            std::vector<double> sorted;
+            for (const auto& [p, ms] : mFrameMs)
+                if (p == phase)
+                    sorted.push_back(ms);
+            std::sort(sorted.begin(), sorted.end());
+            const auto at = [&](double q) {
+                return sorted[std::min(sorted.size() - 1, std::size_t(q * double(sorted.size())))];
+            };
+            std::printf("frames%s%s: %zu, median %.1f ms, 95th percentile %.1f ms, slowest %.1f ms\n",
+                        phase.empty() ? "" : " ", phase.c_str(), sorted.size(), at(0.5), at(0.95),
+                        sorted.back());
+        }
     }
     return false;
 }
@@ -298,11 +325,24 @@ void Editor::advanceTime() {
     state.view.options.timeS = static_cast<float>(state.view.timeline.timeS());
 }
 
+void Editor::chooseQuality() {
+    ViewState& view = mState.view;
+    // Playing counts as interacting only when something moves (live physics).
+    const bool playing = view.timeline.playing() && mLive.physics;
+    const double nowS = std::chrono::duration<double>(Clock::now() - mStartTime).count();
+    view.quality.update(mFrameS * 1000.0, mInteracting || playing, nowS);
+    mState.transient.status.reduced = view.quality.level() > 0 ? view.quality.reduction().label : "";
+}
+
 void Editor::render(int width, int height) {
-    if (!mTarget || mTarget->width() != mView.w || mTarget->height() != mView.h)
-        mTarget = std::make_unique<gl::Framebuffer>(mView.w, mView.h,
-                                                    mState.doc.loaded.project.render.msaaSamples);
-    mLive.renderer->render(mCamera, mView.w, mView.h, *mTarget, mState.view.options);
+    const core::Reduction& r = mState.view.quality.reduction();
+    const int samples = r.msaaOff ? 0 : mState.doc.project().render.msaaSamples;
+    // The ladder lowers the resolution only with MSAA off: a scaled blit needs one sample.
+    const int w = std::max(1, int(float(mView.w) * r.resolutionScale));
+    const int h = std::max(1, int(float(mView.h) * r.resolutionScale));
+    if (!mTarget || mTarget->width() != w || mTarget->height() != h || mTarget->samples() != samples)
+        mTarget = std::make_unique<gl::Framebuffer>(w, h, samples);
+    mLive.renderer->render(mCamera, w, h, *mTarget, mState.view.options);
     if (!mUi) {
         mTarget->blitTo(0, width, height);
         return;
@@ -312,9 +352,11 @@ void Editor::render(int width, int height) {
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0.106f, 0.106f, 0.106f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    // A multisampled blit may move the rectangle but not scale it: sizes match here.
-    glBlitNamedFramebuffer(mTarget->id(), 0, 0, 0, mView.w, mView.h, mView.x, mView.y,
-                           mView.x + mView.w, mView.y + mView.h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    // A multisampled blit may move the rectangle but not scale it: sizes match then. A reduced
+    // picture (one sample) is scaled up.
+    glBlitNamedFramebuffer(mTarget->id(), 0, 0, 0, w, h, mView.x, mView.y, mView.x + mView.w,
+                           mView.y + mView.h, GL_COLOR_BUFFER_BIT,
+                           w == mView.w && h == mView.h ? GL_NEAREST : GL_LINEAR);
     mUi->draw(width, height);
 }
 

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,9 @@ struct EditorSettings {
     // delay added to every frame to stand for a slow machine.
     bool wallClock = false;
     int frameDelayMs = 0;
+    // The viewport's adaptive quality (core/quality/interaction_quality.h).
+    bool adaptive = true;
+    double frameBudgetMs = 80.0;
 };
 
 // The viewport rect (points, y down) in GL pixels (y up), at least one pixel.
@@ -81,6 +85,8 @@ private:
     // The end of a script: on wall-clock time, says how far the timeline moved by the start of
     // the last frame.
     bool finishScript(Clock::time_point lastFrame);
+    // The adaptive quality's rung for this frame (viewRenderOptions applies it).
+    void chooseQuality();
     void render(int width, int height);
     // Screenshots and the turntable; false when the --screenshot was written (the end).
     Result<bool> writeOutputs(int width, int height);
@@ -101,12 +107,16 @@ private:
     std::optional<Clock::time_point> mHoldStart;  // when the current `wait-s` step began
     std::string mScriptShot;  // this frame's script screenshot (empty: none)
     double mFrameS = 0.0;     // wall time since the previous frame
+    // Every frame's wall time and its script phase (the --wall-clock summary).
+    std::vector<std::pair<std::string, double>> mFrameMs;
+    std::string mPhase;
     double mTimelineStartS = 0.0;
     struct {
         double simS = 0.0, wallS = 0.0;
     } mDropped;  // physics time skipped over the current second
     bool mCameraDrag = false;  // a drag that began in the viewport stays the camera's
     bool mToolDrag = false;    // a drag that began on a tool (brush, gizmo) stays the tool's
+    bool mInteracting = false;  // orbiting, zooming, painting, dragging, playing: this frame
     std::string mShownTitle;
     double mAutosaveDueS = 0.0;
     Clock::time_point mStartTime, mLastStatus, mLastFrameEnd, mLastTick;

@@ -107,6 +107,10 @@ void Editor::runInput(InputState input, int width, int height) {
     if (uiKeyboard)
         input.frameRequested = false;
     moveCamera(input, mCameraDrag, !uiPointer, mView.h, *mLive.scene, mCamera);
+    // What keeps the viewport's picture reduced (adaptive quality, Editor::chooseQuality).
+    mInteracting = (mCameraDrag && anyDown) || (input.scrollSteps != 0.0 && !uiPointer) ||
+                   mToolDrag || mState.view.toolDragActive ||
+                   (mUi && mUi->context().activeId().value != 0);
     if (!uiKeyboard)
         applyKeys(input);
 }

@@ -22,6 +22,7 @@
 #include "edit/history.h"
 #include "edit/timeline.h"
 #include "project/project.h"
+#include "quality/interaction_quality.h"
 #include "render/scene_renderer.h"
 #include "scene/scene.h"
 
@@ -69,6 +70,8 @@ struct ViewState {
     // The last scrub, step or play of the timeline panel (a jump back re-runs the simulation
     // from rest).
     core::TimeUpdate timeJump;
+    // A reduced picture while the user interacts (Render panel: "adapt while moving").
+    core::InteractionQuality quality;
 };
 
 // What the status bar shows, measured by the Editor.
@@ -79,6 +82,8 @@ struct FrameStatus {
     double uiMs = 0.0;  // CPU time of building and tessellating the UI
     // Simulated time the live physics could not step in the last second (0: it keeps up).
     double physicsDroppedS = 0.0;
+    // What the viewport lowered this frame to keep its budget (empty: full quality).
+    std::string reduced;
 };
 
 enum class FileDialog { None, Open, SaveAs };

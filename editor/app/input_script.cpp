@@ -14,10 +14,11 @@ constexpr int MAX_WAIT_FRAMES = 100000;
 struct Player {
     InputState now;
     std::vector<ScriptFrame> frames;
+    std::string phase;
 
     // One frame with `input`; per-frame fields start cleared again.
     void emit(const std::string& screenshot = {}) {
-        frames.push_back(ScriptFrame{now, screenshot});
+        frames.push_back(ScriptFrame{now, screenshot, 0.0, phase});
         now.dragDx = now.dragDy = now.scrollSteps = 0.0;
         now.leftPressed = now.escapePressed = now.frameRequested = false;
         now.typed.clear();
@@ -135,6 +136,9 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
                 return fail("wait-s: expected seconds, more than 0 and at most 86400");
             p.emit();
             p.frames.back().holdS = seconds;
+        } else if (command == "phase") {
+            if (!(in >> p.phase))
+                return fail("phase: expected a name");
         } else if (command == "move") {
             double x = 0, y = 0;
             if (!(in >> x >> y) || !finite({x, y}))

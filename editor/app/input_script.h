@@ -5,6 +5,7 @@
 //
 //   wait N                   N frames with no new input (buttons stay as they are)
 //   wait-s S                 no new input for S seconds of wall time (with --wall-clock)
+//   phase NAME               frame times from here on are summed up under NAME (--wall-clock)
 //   move X Y                 the pointer moves to (X, Y): one frame
 //   press [left|right|middle]   / release [...]   one frame each (default left)
 //   drag X0 Y0 X1 Y1 N       press at (X0, Y0), move to (X1, Y1) over N frames, release
@@ -30,6 +31,7 @@ struct ScriptFrame {
     InputState input;
     std::string screenshot;  // empty: none after this frame
     double holdS = 0.0;  // > 0: the frame repeats until this much wall time has passed
+    std::string phase;   // the frame times from this frame on are reported under this name
 };
 
 // Errors name the file and line: "script.txt:4: drag: expected X0 Y0 X1 Y1 N".

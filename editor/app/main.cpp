@@ -27,6 +27,7 @@ int fail(const std::string& message, int code = 1) {
 
 int main(int argc, char** argv) {
     editor::EditorSettings settings;
+    bool noAdaptive = false;
     settings.projectPath = std::string(GRASS_SOURCE_DIR) + "/projects/meadow";
     settings.glDebug = gl::GL_DEBUG_BY_DEFAULT;
     ArgParser parser("grass-editor [project-dir|project.json] [--screenshot F.png --frames N]",
@@ -55,6 +56,14 @@ int main(int argc, char** argv) {
     parser.integer("--frame-delay-ms", "add N ms to every frame, as a slower machine would "
                    "(for tests of time)",
                    &settings.frameDelayMs, 0, 10000);
+    parser.flag("--no-adaptive",
+                "draw every frame at full quality (by default the viewport lowers MSAA, blade "
+                "count, segments and resolution while you orbit, paint, drag or play, to keep "
+                "--frame-budget-ms, and draws the full picture 0.3 s after input stops)",
+                &noAdaptive);
+    parser.number("--frame-budget-ms", "MS",
+                  "the frame time the viewport keeps while you interact", &settings.frameBudgetMs,
+                  5.0, 10000.0, "80");
     parser.number("--autosave-s", "S",
                   "seconds between autosaves of unsaved changes to <project>.autosave.json (0: "
                   "never)",
@@ -80,6 +89,7 @@ int main(int argc, char** argv) {
         std::fputs(parser.help().c_str(), stdout);
         return 0;
     }
+    settings.adaptive = !noAdaptive;
     if (!settings.screenshot.empty() && settings.frames == 0)
         settings.frames = 3;
     if (!settings.screenshot.empty())

@@ -3,6 +3,8 @@
 #include "app/autosave.h"
 #include "app/edit_actions.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -196,6 +198,10 @@ void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
                   stems ? t.stemSetMs : t.billboardMs, snow, s.transient.status.uiMs, s.transient.status.fps);
     ui::Ui ui(ctx, {rect.min + ui::Vec2(8.0f, 2.0f), rect.max}, ui::Layer::Panels);
     ui.horizontal([&](ui::Ui& row) {
+        // The viewport draws less while the user interacts (adaptive quality): say what, first.
+        if (!s.transient.status.reduced.empty())
+            row.coloredLabel("moving: " + s.transient.status.reduced + "   ",
+                             ui::Color32::rgb(120, 190, 255));
         row.label(text);
         // The machine cannot step the physics as fast as time passes: say so, in orange.
         if (const double dropped = s.transient.status.physicsDroppedS; dropped > 0.0) {
@@ -221,6 +227,15 @@ render::RenderOptions viewRenderOptions(const EditorState& s) {
     cull.frustum = cull.frustum && s.view.overrides.frustum;
     cull.distance = cull.distance && s.view.overrides.distance;
     cull.occlusion = cull.occlusion && s.view.overrides.occlusion;
+    // While the user interacts, the adaptive quality's rung (MSAA and resolution are the
+    // viewport's target, chosen by the Editor from the same rung).
+    const core::Reduction& r = s.view.quality.reduction();
+    cull.keepEvery = r.keepEvery;
+    // Fewer blades, each wider: √N keeps much of the coverage without turning blades to ribbons.
+    options.widthScale = std::sqrt(float(r.keepEvery));
+    // 0 would mean "full detail everywhere": the fewest segments are a lodDistance near 0.
+    if (r.lodDistanceScale < 1.0f && cull.lodDistanceM > 0.0f)
+        cull.lodDistanceM = std::max(cull.lodDistanceM * r.lodDistanceScale, 1e-3f);
     return options;
 }
 

@@ -58,7 +58,9 @@ void qualityRows(ui::Ui& ui, EditorState& state);
 void snowSection(ui::Ui& ui, EditorState& state);
 
 // The render options of the viewport: the project's (render::renderOptionsFor) with the view's
-// overrides. One function, so the panels, the keys and undo can never disagree with the picture.
+// overrides and, while the user interacts, the adaptive quality's reductions (thinning, wider
+// blades, fewer segments). One function, so the panels, the keys and undo can never disagree
+// with the picture.
 render::RenderOptions viewRenderOptions(const EditorState& state);
 
 }  // namespace grass::editor

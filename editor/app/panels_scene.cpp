@@ -164,6 +164,19 @@ void renderSection(ui::Ui& ui, EditorState& s) {
                 body.checkbox(view.distance, "distance");
                 body.checkbox(view.occlusion, "occlusion");
             });
+            // Adaptive quality: a reduced picture while moving (core/quality/interaction_quality.h).
+            core::InteractionQualitySettings adapt = s.view.quality.settings();
+            const bool before = adapt.enabled;
+            const float budgetBefore = float(adapt.budgetMs);
+            float budget = budgetBefore;
+            section.horizontal([&](ui::Ui& row) {
+                row.checkbox(adapt.enabled, "adapt while moving, budget");
+                row.dragValue("ms##budget", budget, 1.0f, 5.0f, 1000.0f, 0);
+            });
+            if (adapt.enabled != before || budget != budgetBefore) {
+                adapt.budgetMs = budget;
+                s.view.quality.setSettings(adapt);
+            }
             core::Project& project = s.transient.draft.project;
             settingWidget(section, core::settings::render(), "technique", project.render);
             settingWidget(section, core::settings::lighting(), "model", project.lighting);

@@ -80,6 +80,7 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
     program.set("uDistanceClasses", std::max(settings.distanceClasses, 1));
     program.set("uMaxDistance", std::max(settings.maxDistanceM, 1e-3f));
     program.set("uCutoffDistance", std::max(settings.cutoffDistanceM, 0.0f));
+    program.set("uKeepEvery", std::max(settings.keepEvery, 1));
     program.set("uLodDistance", std::max(settings.lodDistanceM, 0.0f));
     program.set("uCollectStats", settings.collectStats ? 1 : 0);
     program.set("uSceneDepth", 0);

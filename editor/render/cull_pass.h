@@ -38,6 +38,10 @@ struct CullSettings {
     // Blades farther than this (measured like the thinning) are culled outright, counted as
     // distance; 0 = none. The hybrid technique sets it to the end of its cross-fade.
     float cutoffDistanceM = 0.0f;
+    // Uniform thinning: only blade i with i mod keepEvery = 0 is drawn (the rest counted as
+    // distance); 1 draws every blade. The editor's reduced picture while the user interacts
+    // (core/quality/interaction_quality.h), never the project's own.
+    int keepEvery = 1;
     // Count blades per test (statistics); costs a few atomics per work-group.
     bool collectStats = false;
     // Snow lies (SPEC §11): run the snow variant of the cull, which buries blades and writes the

@@ -47,6 +47,9 @@ struct RenderOptions {
     // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for
     // tests that measure a shape alone.
     bool widthCorrection = true;
+    // Blade widths × this: 1, except in the editor's thinned picture while the user interacts,
+    // where fewer, wider blades keep the field's coverage (core/quality/interaction_quality.h).
+    float widthScale = 1.0f;
 };
 
 // Project settings → options; Auto picks strips on software rasterizers (SPEC §7 figures).

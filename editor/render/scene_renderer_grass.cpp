@@ -81,6 +81,7 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
                                    ? projection[1][1] * 0.5f * static_cast<float>(height)
                                    : 0.0f);
     program.set("uTessLevel", static_cast<float>(std::max(options.tessLevel, 1)));
+    program.set("uWidthScale", options.widthScale);
     program.set("uCameraPosition", camera.position());
     program.set("uLodDistance", std::max(options.cull.lodDistanceM, 0.0f));
     program.set("uFadeOut", hybrid ? options.billboards.crossFadeM : glm::vec2(0.0f));
