@@ -50,6 +50,7 @@ public:
     int update(double lastFrameMs, bool interacting, double nowS);
 
     int level() const { return mLevel; }
+    double lastInteractionS() const { return mLastInteractionS; }
     const Reduction& reduction() const { return REDUCTION_LADDER[std::size_t(mLevel)]; }
     const InteractionQualitySettings& settings() const { return mSettings; }
     void setSettings(const InteractionQualitySettings& settings) { mSettings = settings; }

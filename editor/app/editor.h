@@ -24,6 +24,7 @@
 #include "app/input_script.h"
 #include "app/live_scene.h"
 #include "app/panels.h"
+#include "app/session_stats.h"
 #include "scene/camera.h"
 #include "util/result.h"
 #include "app/window.h"
@@ -107,9 +108,11 @@ private:
     std::optional<Clock::time_point> mHoldStart;  // when the current `wait-s` step began
     std::string mScriptShot;  // this frame's script screenshot (empty: none)
     double mFrameS = 0.0;     // wall time since the previous frame
-    // Every frame's wall time and its script phase (the --wall-clock summary).
-    std::vector<std::pair<std::string, double>> mFrameMs;
+    // The --wall-clock summary: frame times by script phase, physics skipped, refinement.
+    SessionStats mStats;
     std::string mPhase;
+    double mSkippedS = 0.0;                // physics time skipped in this frame
+    std::optional<double> mFullSinceS;     // a full frame drawn after the input of this time
     double mTimelineStartS = 0.0;
     struct {
         double simS = 0.0, wallS = 0.0;

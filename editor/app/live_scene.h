@@ -30,10 +30,11 @@ struct LivePhysics {
     double droppedS = 0.0;  // simulated time skipped since the field was built
 
     double timeS() const { return static_cast<double>(steps) * scene.params.dtS; }
-    // Steps towards `targetS`; returns the time dropped this frame (0 when it kept up).
-    double advanceTo(double targetS) {
+    // Steps towards `targetS`, at most `maxSteps`; returns the time dropped this frame (0 when
+    // it kept up).
+    double advanceTo(double targetS, int maxSteps = MAX_STEPS_PER_FRAME) {
         const double dtS = scene.params.dtS;
-        for (int i = 0; i < MAX_STEPS_PER_FRAME && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++i) {
+        for (int i = 0; i < maxSteps && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++i) {
             gpu.step(scene, static_cast<float>(timeS()));
             ++steps;
         }

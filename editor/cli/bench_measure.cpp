@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "cli/bench_editor.h"
 #include "cli/commands.h"
 #include "gl/framebuffer.h"
 #include "gl/headless_context.h"
@@ -180,7 +181,25 @@ Result<void> measurePhysics(GrownCase& grown, const CaseContext& ctx, int steps,
     return {};
 }
 
+// The editor case: the real editor in its own process (cli/bench_editor.h); the headless
+// figures stay 0, the frame column shows the orbit's median.
+Result<BenchCaseResult> measureEditorCase(const BenchCase& c, const CaseContext& ctx) {
+    std::fprintf(stderr, "%s: the editor window, about 30 s\n", ctx.progress.c_str());
+    auto figures = measureEditor(std::filesystem::path(ctx.args.root) / c.project, ctx.args.glDebug);
+    if (!figures)
+        return figures.error();
+    BenchCaseResult result;
+    result.name = c.name;
+    result.project = c.project;
+    result.frames = figures->orbit.frames;
+    result.frameMs = figures->orbit.medianMs;
+    result.editor = *figures;
+    return result;
+}
+
 Result<BenchCaseResult> measureCase(const BenchCase& c, const CaseContext& ctx) {
+    if (c.editor)
+        return measureEditorCase(c, ctx);
     const bool large = isLargeCase(c);
     auto grown = growCase(c, ctx);
     if (!grown)

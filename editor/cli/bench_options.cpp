@@ -10,8 +10,9 @@ namespace {
 void describeOptions(ArgParser& parser, BenchArgs& args) {
     parser.text("--cases", "LIST",
                 "comma-separated cases: nature-100k, helicopter-100k, winter-100k (snow on), "
-                "nature-1m, helicopter-1m, tiny (tests/data/projects/tiny, for tests); default "
-                "all but tiny",
+                "nature-1m, helicopter-1m, editor-meadow (the editor window orbiting, painting "
+                "and playing the meadow at wall-clock time; needs a display or xvfb-run), tiny "
+                "(tests/data/projects/tiny, for tests); default all but tiny",
                 &args.cases);
     parser.flag("--quick", "only the cases of 100k blades or fewer", &args.quick);
     parser.integer("--frames", "timed frames per case, after the warm-up", &args.frames, 1, 1000);

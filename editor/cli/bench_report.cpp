@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -100,6 +101,47 @@ Result<BenchRun> runSettingsFromJson(const Json& document, const std::string& fi
     return run;
 }
 
+// The editor case's figures: cases[].editor.{orbit,paint,play}.{frames,median_ms,p95_ms},
+// .full_quality_s and .realtime_factor.
+constexpr std::array<std::pair<const char*, EditorPhaseFigures EditorFigures::*>, 3> EDITOR_PHASES{
+    {{"orbit", &EditorFigures::orbit}, {"paint", &EditorFigures::paint}, {"play", &EditorFigures::play}}};
+
+Json editorJson(const EditorFigures& figures) {
+    Json editor;
+    for (const auto& [name, phase] : EDITOR_PHASES) {
+        const EditorPhaseFigures& f = figures.*phase;
+        editor[name] = {{"frames", f.frames}, {"median_ms", f.medianMs}, {"p95_ms", f.p95Ms}};
+    }
+    editor["full_quality_s"] = figures.fullQualityS;
+    editor["realtime_factor"] = figures.realtimeFactor;
+    return editor;
+}
+
+Result<EditorFigures> editorFromJson(const Json& editor, const std::string& where,
+                                     const std::string& file) {
+    if (!editor.is_object())
+        return fileError(file, where + "editor: not an object");
+    EditorFigures figures;
+    for (const auto& [name, phase] : EDITOR_PHASES) {
+        const auto found = editor.find(name);
+        if (found == editor.end() || !found->is_object())
+            return fileError(file, where + "editor." + name + ": missing or not an object");
+        EditorPhaseFigures& f = figures.*phase;
+        const std::string prefix = where + "editor." + name + ".";
+        double frames = 0.0;
+        for (auto [key, out] : {std::pair{"frames", &frames}, {"median_ms", &f.medianMs},
+                                {"p95_ms", &f.p95Ms}})
+            if (auto read = readNumber(*found, key, prefix, file, out); !read)
+                return read.error();
+        f.frames = static_cast<int>(frames);
+    }
+    for (auto [key, out] : {std::pair{"full_quality_s", &figures.fullQualityS},
+                            {"realtime_factor", &figures.realtimeFactor}})
+        if (auto read = readNumber(editor, key, where + "editor.", file, out); !read)
+            return read.error();
+    return figures;
+}
+
 // One case's entry; `where` ("cases[2].") prefixes the field errors name.
 Result<BenchCaseResult> caseFromJson(const Json& entry, const std::string& where,
                                      const std::string& file) {
@@ -133,6 +175,12 @@ Result<BenchCaseResult> caseFromJson(const Json& entry, const std::string& where
         else
             result.*figure.real = value;
     }
+    if (const auto editor = entry.find("editor"); editor != entry.end()) {
+        auto figures = editorFromJson(*editor, where, file);
+        if (!figures)
+            return figures.error();
+        result.editor = *figures;
+    }
     return result;
 }
 
@@ -161,6 +209,8 @@ std::string benchRunJson(const BenchRun& run) {
             else
                 target[figure.key] = result.*figure.real;
         }
+        if (result.editor)
+            entry["editor"] = editorJson(*result.editor);
         cases.push_back(std::move(entry));
     }
     out["cases"] = std::move(cases);
@@ -211,6 +261,18 @@ void printBenchTable(const BenchRun& run) {
             std::printf("  %*.*f", columnWidth(figure), figure.precision,
                         valueOf(figure, result) * figure.scale);
         std::printf("\n");
+    }
+    // The editor case: frame times while interacting, at wall-clock time.
+    for (const BenchCaseResult& result : run.cases) {
+        if (!result.editor)
+            continue;
+        const EditorFigures& e = *result.editor;
+        std::printf("%s (the editor window, wall clock): ", result.name.c_str());
+        for (const auto& [name, phase] : EDITOR_PHASES)
+            std::printf("%s median %.1f ms, p95 %.1f ms (%d frames); ", name, (e.*phase).medianMs,
+                        (e.*phase).p95Ms, (e.*phase).frames);
+        std::printf("full picture %.2f s after input stops; physics at %.2f of real time\n",
+                    e.fullQualityS, e.realtimeFactor);
     }
 }
 

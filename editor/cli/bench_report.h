@@ -4,12 +4,25 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "util/result.h"
 
 namespace grass::cli {
+
+// The editor case (issue 24): the real editor loop at wall-clock time, by interaction.
+struct EditorPhaseFigures {
+    int frames = 0;
+    double medianMs = 0.0;
+    double p95Ms = 0.0;
+};
+struct EditorFigures {
+    EditorPhaseFigures orbit, paint, play;
+    double fullQualityS = 0.0;    // input stops → the full picture is on screen
+    double realtimeFactor = 0.0;  // simulated / wall time while playing (1: real time)
+};
 
 struct BenchCaseResult {
     std::string name;     // "nature-100k"
@@ -29,6 +42,7 @@ struct BenchCaseResult {
     double physicsMsPerStep = 0.0;
     double bladeStepsPerS = 0.0;
     double uiMs = 0.0;  // median CPU time to build and tessellate the editor's panels
+    std::optional<EditorFigures> editor;  // the editor case only
 };
 
 struct BenchRun {

@@ -16,6 +16,19 @@ add_test(NAME cli.bench_tiny_out_compare
 set_tests_properties(cli.bench_tiny_out_compare PROPERTIES LABELS "cli;gl" TIMEOUT 150
     ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
 
+# The editor case (issue 24): the real editor window (under xvfb-run when there is no display)
+# orbits, paints and plays the meadow at wall-clock time, and the run reports every figure of
+# cases[].editor. Behaviour only: the figures are printed, not judged. About 40 s.
+if(TARGET grass-editor)
+    grass_cli_test(bench_editor_case GL OK
+        --stdout "^editor-meadow \\(the editor window, wall clock\\): orbit median [0-9.]+ ms, p95 [0-9.]+ ms \\([1-9][0-9]* frames\\); paint median"
+        --stdout "full picture [0-9.]+ s after input stops; physics at [0-9.]+ of real time"
+        --file ${GRASS_CLI_TMP}/bench-editor.json "\"realtime_factor\": [0-9.]+"
+        --file ${GRASS_CLI_TMP}/bench-editor.json "\"p95_ms\": [0-9.]+"
+        -- ${GRASS_BIN} bench --cases editor-meadow --out ${GRASS_CLI_TMP}/bench-editor.json)
+    set_tests_properties(cli.bench_editor_case PROPERTIES TIMEOUT 300)
+endif()
+
 # --compare files that are not a bench run: named in one line, exit non-zero, nothing measured.
 grass_cli_test(bench_compare_missing ERROR "no-such-run.json"
     -- ${GRASS_BIN} bench --cases tiny --compare ${GRASS_CLI_TMP}/no-such-run.json)
