@@ -39,7 +39,26 @@ Result<RegrowReport> ScenePainter::paintTo(glm::vec3 hitWorld, float pressure) {
     GRASS_ASSERT(active());
     mStroke->setPressure(pressure);
     addHits(std::span<const glm::vec3>(&hitWorld, 1));
-    return regrowChanged();
+    const auto changed = mStroke->takeChangedRegion();
+    if (!changed)
+        return RegrowReport{};
+    auto report = regrowLayerRegion(mScene->layers[mLayer], changed->bounds, changed->texelMarginM,
+                                    mLighting, ShadingUpdate::RegrownOnly);
+    if (report && report->shadingPending) {
+        const Bounds& b = report->pendingShadeRegion;
+        mPendingShade = mPendingShade ? Bounds{glm::min(mPendingShade->min, b.min),
+                                               glm::max(mPendingShade->max, b.max)}
+                                      : b;
+    }
+    return report;
+}
+
+Result<RegrowReport> ScenePainter::settleShading() {
+    if (!mPendingShade)
+        return RegrowReport{};
+    const Bounds region = *mPendingShade;
+    mPendingShade.reset();
+    return rebakeLayerShading(mScene->layers[mLayer], region, mLighting);
 }
 
 void ScenePainter::addHits(std::span<const glm::vec3> hits) {
@@ -57,6 +76,9 @@ Result<RegrowReport> ScenePainter::regrowChanged() {
 
 std::optional<PaintEdit> ScenePainter::end() {
     GRASS_ASSERT(active());
+    // A caller that did not settle: the field is made exact all the same.
+    if (mPendingShade)
+        (void)settleShading();
     PaintEdit edit{mLayer, mMap, mStroke->record()};
     mStroke.reset();
     if (edit.record.empty())

@@ -30,9 +30,17 @@ public:
     // Preconditions (GRASS_ASSERT): layer in range, resolution >= 1, no stroke active.
     void begin(std::size_t layer, LayerMap map, glm::ivec2 resolution, const BrushSettings& brush);
     bool active() const { return mStroke != nullptr; }
+    std::size_t layer() const { return mLayer; }  // the stroke's (or the last stroke's) layer
     // Paints from the last hit (or dabs, on the first) to `hitWorld` with the pen's pressure and
-    // re-grows what changed. Preconditions: active().
+    // re-grows what changed. A dab that adds or removes blades re-bakes only their own shading
+    // (ShadingUpdate::RegrownOnly): the neighbours' AO and blurred normals wait for
+    // settleShading(), so a density dab costs what its patches cost (issue 24).
+    // Preconditions: active().
     Result<RegrowReport> paintTo(glm::vec3 hitWorld, float pressure = 1.0f);
+    // The exact re-bake of every neighbourhood the stroke's dabs left pending (nothing when none
+    // did); the report names the patches to re-upload. Call it when the stroke ends, before
+    // end() (which settles what is still pending itself, without a report).
+    Result<RegrowReport> settleShading();
     // A scripted stroke (`grass paint`): paints along many hits without re-growing; then
     // regrowChanged() re-grows once what they changed (an empty report when nothing did).
     // Preconditions: active().
@@ -58,6 +66,7 @@ private:
     GrassLightingDesc mLighting;
     std::map<std::pair<int, int>, std::unique_ptr<TexelSurface>> mSurfaces;
     std::unique_ptr<PaintStroke> mStroke;
+    std::optional<Bounds> mPendingShade;  // union of the dabs' pendingShadeRegion
     std::size_t mLayer = 0;
     LayerMap mMap = LayerMap::Density;
 };

@@ -41,7 +41,8 @@ struct InteractionQualitySettings {
 
 class InteractionQuality {
 public:
-    explicit InteractionQuality(InteractionQualitySettings settings = {}) : mSettings(settings) {}
+    InteractionQuality() = default;
+    explicit InteractionQuality(InteractionQualitySettings settings) : mSettings(settings) {}
 
     // Once a frame, before drawing it: the last frame's wall time (at the level it was drawn
     // at), whether the user is interacting now, and the time (seconds, any steady clock).

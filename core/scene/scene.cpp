@@ -235,8 +235,66 @@ BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting) {
     return params;
 }
 
+namespace {
+
+// Copies the wilt (waterAge.z, which regrown slots change and a re-bake resets) into the shading
+// of `patches`.
+void restoreWilt(LayerField& layer, const std::vector<std::uint32_t>& patches) {
+    if (layer.shading.size() != layer.wilt.size())
+        return;
+    const std::size_t size = layer.patched.patchSize;
+    for (std::uint32_t p : patches)
+        for (std::size_t slot = p * size; slot < (p + 1) * size; ++slot)
+            layer.shading[slot].waterAge.z = layer.wilt[slot];
+}
+
+// Re-bakes the blades with a root in `region`; the patches holding them go into the report.
+Result<void> rebakeRegion(LayerField& layer, const Bounds& region, const BladeShadingParams& params,
+                          RegrowReport& report) {
+    report.shadedRegion = region;
+    auto rebaked = rebakeBladeShading(layer.patched.blades, params, layer.seed, region, layer.shading);
+    if (!rebaked)
+        return Error{"lighting", rebaked.error().str()};
+    report.rebakedBlades = *rebaked;
+    report.shadedPatches = patchesWithRootsIn(layer.source, layer, region);
+    return {};
+}
+
+// The estimate a dab gets until the stroke's exact re-bake (ShadingUpdate::RegrownOnly): the
+// AO of the regrown blades alone, whose kernel (3σ = 0.45 m by default) reaches few neighbours;
+// their blurred normals, a 2.25 m average of the terrain that a density change barely moves,
+// keep their values (a slot that was padding takes its own blade's up meanwhile).
+Result<void> rebakeAoOnly(LayerField& layer, const Bounds& region, BladeShadingParams params,
+                          RegrowReport& report) {
+    const std::size_t size = layer.patched.patchSize;
+    const std::vector<std::uint32_t> patches = patchesWithRootsIn(layer.source, layer, region);
+    std::vector<glm::vec4> kept;
+    kept.reserve(patches.size() * size);
+    for (std::uint32_t p : patches)
+        for (std::size_t slot = p * size; slot < (p + 1) * size; ++slot)
+            kept.push_back(layer.shading[slot].blurredNormalAo);
+    params.normalBlurRadiusM = 0.0f;
+    if (auto rebaked = rebakeRegion(layer, region, params, report); !rebaked)
+        return rebaked;
+    const glm::vec4 padding = BladeShading{}.blurredNormalAo;
+    std::size_t k = 0;
+    for (std::uint32_t p : patches)
+        for (std::size_t slot = p * size; slot < (p + 1) * size; ++slot, ++k) {
+            BladeShading& s = layer.shading[slot];
+            if (kept[k] != padding && s.blurredNormalAo != padding)
+                s.blurredNormalAo = glm::vec4(glm::vec3(kept[k]), s.ao());
+        }
+    return {};
+}
+
+glm::vec3 shadingReach(const BladeShadingParams& params) {
+    return glm::vec3(3.0f * std::max(params.aoRadiusM, params.normalBlurRadiusM));
+}
+
+}  // namespace
+
 Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted, float texelMarginM,
-                                       const GrassLightingDesc& lighting) {
+                                       const GrassLightingDesc& lighting, ShadingUpdate update) {
     const glm::vec3 margin(std::max(texelMarginM, 0.0f));
     RegrowReport report;
     report.patches =
@@ -246,30 +304,40 @@ Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted,
     if (report.bladesAddedOrRemoved > 0) {
         // The bake counts the blades around each one (AO) and averages their surface normals
         // (blurred normal); growth changes neither, so only a blade gained or lost changes
-        // them: then every blade whose kernels (3σ) reach a regrown patch is re-baked.
+        // them: then every blade whose kernels (3σ) reach a regrown patch is re-baked — or,
+        // RegrownOnly, the regrown patches' own blades now and their neighbours later.
         const BladeShadingParams params = bladeShadingParams(lighting);
         Bounds grown = layer.patched.patches[report.patches.front()].bounds;
         for (std::uint32_t p : report.patches) {
             grown.min = glm::min(grown.min, layer.patched.patches[p].bounds.min);
             grown.max = glm::max(grown.max, layer.patched.patches[p].bounds.max);
         }
-        const glm::vec3 reach(3.0f * std::max(params.aoRadiusM, params.normalBlurRadiusM));
-        report.shadedRegion = {grown.min - reach, grown.max + reach};
-        auto rebaked = rebakeBladeShading(layer.patched.blades, params, layer.seed,
-                                          report.shadedRegion, layer.shading);
-        if (!rebaked)
-            return Error{"lighting", rebaked.error().str()};
-        report.rebakedBlades = *rebaked;
-        report.shadedPatches = patchesWithRootsIn(layer.source, layer, report.shadedRegion);
+        const glm::vec3 reach = shadingReach(params);
+        const Bounds neighbourhood{grown.min - reach, grown.max + reach};
+        if (update == ShadingUpdate::Exact) {
+            if (auto rebaked = rebakeRegion(layer, neighbourhood, params, report); !rebaked)
+                return rebaked.error();
+        } else if (auto rebaked = rebakeAoOnly(layer, grown, params, report); !rebaked) {
+            return rebaked.error();
+        }
+        if (update == ShadingUpdate::RegrownOnly) {
+            report.shadingPending = true;
+            report.pendingShadeRegion = grown;
+        }
     }
-    // The wilt lives in the shading (waterAge.z): regrown slots changed it, and a re-bake
-    // reset it.
-    if (layer.shading.size() == layer.wilt.size()) {
-        const std::size_t size = layer.patched.patchSize;
-        for (std::uint32_t p : report.shadedPatches)
-            for (std::size_t slot = p * size; slot < (p + 1) * size; ++slot)
-                layer.shading[slot].waterAge.z = layer.wilt[slot];
-    }
+    restoreWilt(layer, report.shadedPatches);
+    return report;
+}
+
+Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
+                                        const GrassLightingDesc& lighting) {
+    const BladeShadingParams params = bladeShadingParams(lighting);
+    const glm::vec3 reach = shadingReach(params);
+    RegrowReport report;
+    if (auto rebaked = rebakeRegion(layer, {region.min - reach, region.max + reach}, params, report);
+        !rebaked)
+        return rebaked.error();
+    restoreWilt(layer, report.shadedPatches);
     return report;
 }
 

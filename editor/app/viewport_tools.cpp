@@ -44,6 +44,9 @@ void queue(EditorState& s, std::size_t layer, const Result<core::RegrowReport>& 
 
 void endStroke(EditorState& s) {
     s.view.toolDragActive = false;
+    // The dabs re-baked only their own blades' shading; now their neighbours' (one pause at the
+    // end of a density stroke instead of one per dab).
+    queue(s, s.tools->painter.layer(), s.tools->painter.settleShading());
     if (auto edit = s.tools->painter.end())
         apply(s, RecordStroke{std::move(*edit)});
 }
