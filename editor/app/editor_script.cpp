@@ -1,0 +1,36 @@
+// The editor replaying a --script: its steps (a `wait-s` step holds on the wall clock) and, on
+// wall-clock time, the session's summary at the end (editor/app/session_stats.h).
+#include <cstdio>
+
+#include "app/editor.h"
+
+namespace grass::editor {
+
+std::optional<ScriptFrame> Editor::nextScriptStep(Clock::time_point now) {
+    if (mScriptStep >= mScript.size())
+        return std::nullopt;
+    const ScriptFrame& step = mScript[mScriptStep];
+    if (step.holdS > 0.0) {
+        if (!mHoldStart)
+            mHoldStart = now;
+        if (std::chrono::duration<double>(now - *mHoldStart).count() < step.holdS)
+            return step;  // held: the same idle input again
+        mHoldStart.reset();
+    }
+    ++mScriptStep;
+    return step;
+}
+
+bool Editor::finishScript(Clock::time_point lastFrame) {
+    if (!mReplay) {
+        // From the editor's start to the last frame that moved time.
+        const double wallS = std::chrono::duration<double>(lastFrame - mStartTime).count();
+        std::printf("wall clock %.2f s, %d frames, timeline moved %.2f s, physics skipped %.2f s\n",
+                    wallS, mFrame, mState.view.timeline.timeS() - mTimelineStartS,
+                    mLive.physics ? mLive.physics->droppedS : 0.0);
+        std::fputs(mStats.summary().c_str(), stdout);
+    }
+    return false;
+}
+
+}  // namespace grass::editor
