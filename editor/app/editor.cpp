@@ -102,7 +102,10 @@ Result<bool> Editor::frame() {
     const Clock::time_point tick = Clock::now(), previousTick = mLastTick;
     mFrameS = std::chrono::duration<double>(tick - previousTick).count();
     mLastTick = tick;
-    if (mFrame > 0) {  // the frame just ended
+    // Only a --wall-clock script reports its frames: a session of hours would otherwise keep
+    // every frame's figures.
+    const bool measured = !mSettings.scriptFile.empty() && !mReplay;
+    if (measured && mFrame > 0) {  // the frame just ended
         mStats.frameEnded(mPhase, mFrameS * 1000.0, mSkippedS);
         if (mFullSinceS) {
             mStats.fullQualityAfter(std::chrono::duration<double>(tick - mStartTime).count() -
