@@ -25,6 +25,15 @@ struct Bounds {
     glm::vec3 max{0.0f};
     glm::vec3 centre() const { return 0.5f * (min + max); }
     glm::vec3 size() const { return max - min; }
+    // Closed boxes: touching counts.
+    bool overlaps(const Bounds& o) const {
+        return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y &&
+               min.z <= o.max.z && o.min.z <= max.z;
+    }
+    bool contains(glm::vec3 p) const {
+        return p.x >= min.x && p.y >= min.y && p.z >= min.z && p.x <= max.x && p.y <= max.y &&
+               p.z <= max.z;
+    }
     bool operator==(const Bounds&) const = default;
 };
 

@@ -384,11 +384,12 @@ KernelSums sumEntries(const Entries& e, glm::vec3 p, glm::vec3 n, float inv2s2,
     return s;
 }
 
-// Calls write(bladeIndex, unit up, sums) for every live blade, cells split over threads by an
-// atomic chunk counter; each blade's sums depend on its cell alone, so any split gives the same
-// bits.
-template <class Write>
-void forEachBladeSums(const ClusterGrid& g, unsigned threads, Write&& write) {
+// Calls write(bladeIndex, unit up, sums) for every live blade that wanted(bladeIndex) accepts,
+// cells split over threads by an atomic chunk counter; each blade's sums depend on its cell
+// alone, so any split gives the same bits. A cell with no wanted blade is skipped whole: a
+// re-bake sums only its targets, not the neighbours the grid holds for them.
+template <class Wanted, class Write>
+void forEachBladeSums(const ClusterGrid& g, unsigned threads, Wanted&& wanted, Write&& write) {
     const float inv2s2 = 1.0f / (2.0f * g.sigma * g.sigma);
     const std::size_t cellCount = g.cells.size();
     const std::size_t chunk =
@@ -404,10 +405,17 @@ void forEachBladeSums(const ClusterGrid& g, unsigned threads, Write&& write) {
             const std::size_t end = std::min(cellCount, begin + chunk);
             for (std::size_t c = begin; c < end; ++c) {
                 const Cell& cell = g.cells[c];
+                const std::uint32_t cellEnd = cell.first + cell.count;
+                bool any = false;
+                for (std::uint32_t k = cell.first; k < cellEnd && !any; ++k)
+                    any = wanted(g.order[k]);
+                if (!any)
+                    continue;
                 gatherEntries(g, cell, entries);
-                for (std::uint32_t k = cell.first; k < cell.first + cell.count; ++k)
-                    write(g.order[k], g.up[k],
-                          sumEntries(entries, g.pos[k], g.up[k], inv2s2, g.exponentLimit));
+                for (std::uint32_t k = cell.first; k < cellEnd; ++k)
+                    if (wanted(g.order[k]))
+                        write(g.order[k], g.up[k],
+                              sumEntries(entries, g.pos[k], g.up[k], inv2s2, g.exponentLimit));
             }
         }
     };
@@ -426,10 +434,6 @@ void forEachBladeSums(const ClusterGrid& g, unsigned threads, Write&& write) {
 }  // namespace
 
 namespace {
-
-bool insideBox(glm::vec3 p, glm::vec3 lo, glm::vec3 hi) {
-    return p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x <= hi.x && p.y <= hi.y && p.z <= hi.z;
-}
 
 // The bake of the blades marked in `target` (all live ones when null), summing over `live`
 // neighbours; entries not targeted are left as they are.
@@ -461,9 +465,7 @@ void bakeInto(const std::vector<Blade>& blades, const std::vector<std::uint32_t>
         const double norm = 2.0 * std::numbers::pi * double(params.aoRadiusM) *
                             double(params.aoRadiusM) * KERNEL_MASS;
         const float perWeight = static_cast<float>(1.0 / norm);
-        forEachBladeSums(grid, threads, [&](std::uint32_t i, glm::vec3, const KernelSums& s) {
-            if (!targeted(i))
-                return;
+        forEachBladeSums(grid, threads, targeted, [&](std::uint32_t i, glm::vec3, const KernelSums& s) {
             const float density = s.weight * perWeight;
             // Clamped because floor + (1 - floor)·1 can round a hair above 1.
             const float ao =
@@ -474,9 +476,7 @@ void bakeInto(const std::vector<Blade>& blades, const std::vector<std::uint32_t>
     if (params.normalBlurRadiusM > 0.0f) {
         const ClusterGrid grid =
             buildGrid(blades, live, params.normalBlurRadiusM, params.cellSigmas);
-        forEachBladeSums(grid, threads, [&](std::uint32_t i, glm::vec3 up, const KernelSums& s) {
-            if (!targeted(i))
-                return;
+        forEachBladeSums(grid, threads, targeted, [&](std::uint32_t i, glm::vec3 up, const KernelSums& s) {
             const float len = glm::length(s.up);
             // Neighbours within 90° count fully and those beyond 120° not at all, so the sum
             // only vanishes or turns away from the blade's own up on folds sharper than a right
@@ -511,33 +511,97 @@ Result<std::size_t> rebakeBladeShading(const std::vector<Blade>& blades,
                                        const BladeShadingParams& params, std::uint64_t seed,
                                        const Bounds& region, std::vector<BladeShading>& shading,
                                        unsigned threadCount) {
+    GRASS_ASSERT(blades.size() < std::numeric_limits<std::uint32_t>::max());
+    return rebakeBladeShading(blades, params, seed, region,
+                              {SlotRange{0, static_cast<std::uint32_t>(blades.size())}}, shading,
+                              threadCount);
+}
+
+namespace {
+
+// The re-bake of the live blades in `slots` whose root is in `region` and whose slot lies in
+// `targetSlots` (all of `slots` when null), summing over the live blades of `slots` within 3σ
+// of the region.
+Result<std::size_t> rebakeSlots(const std::vector<Blade>& blades, const BladeShadingParams& params,
+                                std::uint64_t seed, const Bounds& region,
+                                const std::vector<SlotRange>& slots,
+                                const std::vector<SlotRange>* targetSlots,
+                                std::vector<BladeShading>& shading, unsigned threadCount) {
     if (Result<void> valid = validate(params); !valid)
         return valid.error();
     GRASS_ASSERT(blades.size() < std::numeric_limits<std::uint32_t>::max());
     if (shading.size() != blades.size())
         return makeError("shading", "has " + std::to_string(shading.size()) + " entries for " +
                                         std::to_string(blades.size()) + " blades");
+    std::vector<bool> eligible;
+    if (targetSlots != nullptr) {
+        eligible.assign(blades.size(), false);
+        for (const SlotRange& range : *targetSlots) {
+            GRASS_ASSERT(range.first <= range.end && range.end <= blades.size());
+            std::fill(eligible.begin() + range.first, eligible.begin() + range.end, true);
+        }
+    }
     // Every neighbour a targeted blade's kernels reach lies within 3σ of it.
     const float reach = CUTOFF_SIGMAS * std::max(params.aoRadiusM, params.normalBlurRadiusM);
-    const glm::vec3 nearLo = region.min - glm::vec3(reach), nearHi = region.max + glm::vec3(reach);
-    std::vector<std::uint32_t> near;
+    const Bounds near{region.min - glm::vec3(reach), region.max + glm::vec3(reach)};
+    std::vector<std::uint32_t> nearBlades;
     std::vector<bool> target(blades.size(), false);
     std::size_t targets = 0;
-    for (std::size_t i = 0; i < blades.size(); ++i) {
-        const bool live = isLive(blades[i]);
-        if (insideBox(blades[i].v0(), region.min, region.max)) {
-            // A slot that is padding now gets the padding's entry, as the full bake gives it.
-            if (!live)
-                shading[i] = BladeShading{};
-            target[i] = live;
-            targets += live ? 1 : 0;
+    for (const SlotRange& range : slots) {
+        GRASS_ASSERT(range.first <= range.end && range.end <= blades.size());
+        for (std::uint32_t i = range.first; i < range.end; ++i) {
+            const bool live = isLive(blades[i]);
+            if ((eligible.empty() || eligible[i]) && region.contains(blades[i].v0())) {
+                // A slot that is padding now gets the padding's entry, as the full bake gives it.
+                if (!live)
+                    shading[i] = BladeShading{};
+                target[i] = live;
+                targets += live ? 1 : 0;
+            }
+            if (live && near.contains(blades[i].v0()))
+                nearBlades.push_back(i);
         }
-        if (live && insideBox(blades[i].v0(), nearLo, nearHi))
-            near.push_back(static_cast<std::uint32_t>(i));
     }
     if (targets > 0)
-        bakeInto(blades, near, &target, params, seed, threadCount, shading);
+        bakeInto(blades, nearBlades, &target, params, seed, threadCount, shading);
     return targets;
+}
+
+}  // namespace
+
+Result<std::size_t> rebakeBladeShading(const std::vector<Blade>& blades,
+                                       const BladeShadingParams& params, std::uint64_t seed,
+                                       const Bounds& region, const std::vector<SlotRange>& slots,
+                                       std::vector<BladeShading>& shading, unsigned threadCount) {
+    return rebakeSlots(blades, params, seed, region, slots, nullptr, shading, threadCount);
+}
+
+Result<std::size_t> rebakeBladeShading(const std::vector<Blade>& blades,
+                                       const BladeShadingParams& params, std::uint64_t seed,
+                                       const std::vector<SlotRange>& targets,
+                                       const std::vector<SlotRange>& slots,
+                                       std::vector<BladeShading>& shading, unsigned threadCount) {
+    // The targets' roots bound the region; a target slot that is padding keeps its entry
+    // reset below, as the region-based re-bake resets padding inside its region.
+    Bounds region{glm::vec3(std::numeric_limits<float>::max()),
+                  glm::vec3(-std::numeric_limits<float>::max())};
+    bool any = false;
+    for (const SlotRange& range : targets) {
+        GRASS_ASSERT(range.first <= range.end && range.end <= blades.size());
+        for (std::uint32_t i = range.first; i < range.end; ++i) {
+            if (!isLive(blades[i])) {
+                if (i < shading.size())
+                    shading[i] = BladeShading{};
+                continue;
+            }
+            region.min = glm::min(region.min, blades[i].v0());
+            region.max = glm::max(region.max, blades[i].v0());
+            any = true;
+        }
+    }
+    if (!any)
+        return std::size_t{0};
+    return rebakeSlots(blades, params, seed, region, slots, &targets, shading, threadCount);
 }
 
 }  // namespace grass::core

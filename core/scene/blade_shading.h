@@ -101,4 +101,30 @@ Result<std::size_t> rebakeBladeShading(const std::vector<Blade>& blades,
                                        const Bounds& region, std::vector<BladeShading>& shading,
                                        unsigned threadCount = 0);
 
+// Blade slots [first, end).
+struct SlotRange {
+    std::uint32_t first = 0;
+    std::uint32_t end = 0;
+};
+
+// The same re-bake, looking only at the blades in `slots`: the caller knows where the blades
+// near `region` lie (a patched field's patches near it) and so spares the scan of every blade,
+// which on a 1M-blade layer costs more than the dab's own re-bake. Every live blade within 3σ of
+// `region` must lie in `slots`; blades outside them are neither re-baked nor summed. Ranges may
+// not overlap.
+Result<std::size_t> rebakeBladeShading(const std::vector<Blade>& blades,
+                                       const BladeShadingParams& params, std::uint64_t seed,
+                                       const Bounds& region, const std::vector<SlotRange>& slots,
+                                       std::vector<BladeShading>& shading, unsigned threadCount = 0);
+
+// The re-bake of every live blade in the `targets` slots (padding among them gets
+// BladeShading{}), summing over the live blades of `slots`, which must hold every live blade
+// within 3σ of a target (and the targets themselves). For a dab's own patches: the box around
+// them also holds blades of patches the dab did not touch, which need no re-bake.
+Result<std::size_t> rebakeBladeShading(const std::vector<Blade>& blades,
+                                       const BladeShadingParams& params, std::uint64_t seed,
+                                       const std::vector<SlotRange>& targets,
+                                       const std::vector<SlotRange>& slots,
+                                       std::vector<BladeShading>& shading, unsigned threadCount = 0);
+
 }  // namespace grass::core

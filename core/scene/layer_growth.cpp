@@ -23,16 +23,6 @@ GrowthParams candidateGrowth(const LayerSource& source, std::size_t candidate) {
                         sampleOrOne(source.maps.light, uv));
 }
 
-bool boxesOverlap(const Bounds& a, const Bounds& b) {
-    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y &&
-           b.min.y <= a.max.y && a.min.z <= b.max.z && b.min.z <= a.max.z;
-}
-
-bool inside(glm::vec3 p, const Bounds& box) {
-    return p.x >= box.min.x && p.y >= box.min.y && p.z >= box.min.z && p.x <= box.max.x &&
-           p.y <= box.max.y && p.z <= box.max.z;
-}
-
 // The stem set grown at a slot's candidate: the set stands on the surface (up is the surface
 // normal, not a leaned blade's), turned by the blade's theta, and sized so that β = 1 grows it
 // to the candidate's height over any number of levels; its width follows α like the blade's.
@@ -159,13 +149,13 @@ std::vector<std::uint32_t> patchesWithRootsIn(const LayerSource& source, const G
     const std::uint32_t size = field.patched.patchSize;
     for (std::uint32_t p = 0; p < field.patched.patches.size(); ++p) {
         // The box covers every candidate's reach, so it is a safe first test.
-        if (!boxesOverlap(field.patched.patches[p].bounds, region))
+        if (!field.patched.patches[p].bounds.overlaps(region))
             continue;
         const std::size_t first = static_cast<std::size_t>(p) * size;
         for (std::size_t slot = first; slot < first + size; ++slot) {
             const std::uint32_t candidate = field.patched.sourceIndex[slot];
             if (candidate != UINT32_MAX &&
-                inside(source.candidates.blades[candidate].v0(), region)) {
+                region.contains(source.candidates.blades[candidate].v0())) {
                 found.push_back(p);
                 break;
             }

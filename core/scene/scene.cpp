@@ -248,11 +248,35 @@ void restoreWilt(LayerField& layer, const std::vector<std::uint32_t>& patches) {
             layer.shading[slot].waterAge.z = layer.wilt[slot];
 }
 
+glm::vec3 shadingReach(const BladeShadingParams& params) {
+    return glm::vec3(3.0f * std::max(params.aoRadiusM, params.normalBlurRadiusM));
+}
+
+// The slots of the patches whose bounds (every blade's reach) overlap `box`, neighbouring
+// patches joined into one range: where a re-bake near `box` finds its blades, without a scan
+// of the whole layer.
+std::vector<SlotRange> slotsOfPatchesNear(const LayerField& layer, const Bounds& box) {
+    const auto size = static_cast<std::uint32_t>(layer.patched.patchSize);
+    std::vector<SlotRange> slots;
+    for (std::uint32_t p = 0; p < layer.patched.patches.size(); ++p) {
+        if (!layer.patched.patches[p].bounds.overlaps(box))
+            continue;
+        if (!slots.empty() && slots.back().end == p * size)
+            slots.back().end += size;
+        else
+            slots.push_back({p * size, (p + 1) * size});
+    }
+    return slots;
+}
+
 // Re-bakes the blades with a root in `region`; the patches holding them go into the report.
 Result<void> rebakeRegion(LayerField& layer, const Bounds& region, const BladeShadingParams& params,
                           RegrowReport& report) {
     report.shadedRegion = region;
-    auto rebaked = rebakeBladeShading(layer.patched.blades, params, layer.seed, region, layer.shading);
+    const glm::vec3 reach = shadingReach(params);
+    auto rebaked = rebakeBladeShading(layer.patched.blades, params, layer.seed, region,
+                                      slotsOfPatchesNear(layer, {region.min - reach, region.max + reach}),
+                                      layer.shading);
     if (!rebaked)
         return Error{"lighting", rebaked.error().str()};
     report.rebakedBlades = *rebaked;
@@ -261,21 +285,31 @@ Result<void> rebakeRegion(LayerField& layer, const Bounds& region, const BladeSh
 }
 
 // The estimate a dab gets until the stroke's exact re-bake (ShadingUpdate::RegrownOnly): the
-// AO of the regrown blades alone, whose kernel (3σ = 0.45 m by default) reaches few neighbours;
-// their blurred normals, a 2.25 m average of the terrain that a density change barely moves,
-// keep their values (a slot that was padding takes its own blade's up meanwhile).
-Result<void> rebakeAoOnly(LayerField& layer, const Bounds& region, BladeShadingParams params,
-                          RegrowReport& report) {
-    const std::size_t size = layer.patched.patchSize;
-    const std::vector<std::uint32_t> patches = patchesWithRootsIn(layer.source, layer, region);
+// AO of the regrown patches' blades alone (`grown` bounds them), whose kernel (3σ = 0.45 m by
+// default) reaches few neighbours; their blurred normals, a 2.25 m average of the terrain that a
+// density change barely moves, keep their values (a slot that was padding takes its own blade's
+// up meanwhile).
+Result<void> rebakeAoOnly(LayerField& layer, const std::vector<std::uint32_t>& patches,
+                          const Bounds& grown, BladeShadingParams params, RegrowReport& report) {
+    const auto size = static_cast<std::uint32_t>(layer.patched.patchSize);
     std::vector<glm::vec4> kept;
     kept.reserve(patches.size() * size);
-    for (std::uint32_t p : patches)
+    std::vector<SlotRange> targets;
+    for (std::uint32_t p : patches) {
+        targets.push_back({p * size, (p + 1) * size});
         for (std::size_t slot = p * size; slot < (p + 1) * size; ++slot)
             kept.push_back(layer.shading[slot].blurredNormalAo);
+    }
     params.normalBlurRadiusM = 0.0f;
-    if (auto rebaked = rebakeRegion(layer, region, params, report); !rebaked)
-        return rebaked;
+    const glm::vec3 reach = shadingReach(params);
+    auto rebaked = rebakeBladeShading(layer.patched.blades, params, layer.seed, targets,
+                                      slotsOfPatchesNear(layer, {grown.min - reach, grown.max + reach}),
+                                      layer.shading);
+    if (!rebaked)
+        return Error{"lighting", rebaked.error().str()};
+    report.rebakedBlades = *rebaked;
+    report.shadedRegion = grown;
+    report.shadedPatches = patches;
     const glm::vec4 padding = BladeShading{}.blurredNormalAo;
     std::size_t k = 0;
     for (std::uint32_t p : patches)
@@ -285,10 +319,6 @@ Result<void> rebakeAoOnly(LayerField& layer, const Bounds& region, BladeShadingP
                 s.blurredNormalAo = glm::vec4(glm::vec3(kept[k]), s.ao());
         }
     return {};
-}
-
-glm::vec3 shadingReach(const BladeShadingParams& params) {
-    return glm::vec3(3.0f * std::max(params.aoRadiusM, params.normalBlurRadiusM));
 }
 
 }  // namespace
@@ -317,7 +347,7 @@ Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted,
         if (update == ShadingUpdate::Exact) {
             if (auto rebaked = rebakeRegion(layer, neighbourhood, params, report); !rebaked)
                 return rebaked.error();
-        } else if (auto rebaked = rebakeAoOnly(layer, grown, params, report); !rebaked) {
+        } else if (auto rebaked = rebakeAoOnly(layer, report.patches, grown, params, report); !rebaked) {
             return rebaked.error();
         }
         if (update == ShadingUpdate::RegrownOnly) {
