@@ -17,8 +17,17 @@ layout(std430, binding = 11) writeonly buffer StemSetCaptureBuffer {
 };
 #endif
 
+// STEM_SET_VISIBLE_BINDING: the culled sets' indices (core::cullStemSets), one list per LOD,
+// one draw per list; uVisibleFirst is where this draw's list starts.
+layout(std430, binding = 12) readonly buffer StemSetVisibleBuffer {
+    uint visibleSets[];
+};
+
 uniform mat4 uViewProj;
 uniform int uLevels;  // 1..4
+uniform int uSamplesPerLevel;  // core::STEM_SET_LOD_SAMPLES: 5 (full detail), 3 or 2
+uniform int uUseVisible;       // 0: instance i is set i (no cull)
+uniform uint uVisibleFirst;
 
 out vec3 vPosition;
 out vec3 vNormal;
@@ -28,11 +37,14 @@ flat out float vB;
 
 void main() {
     int levels = clamp(uLevels, 1, MAX_STEM_LEVELS);
-    int verticesPerStem = 2 * STEM_SAMPLES_PER_LEVEL * levels;
+    int samplesPerLevel = clamp(uSamplesPerLevel, 2, STEM_SAMPLES_PER_LEVEL);
+    int verticesPerStem = 2 * samplesPerLevel * levels;
     int stem = gl_VertexID / verticesPerStem;
     int sampleIndex = (gl_VertexID % verticesPerStem) / 2;
     int side = gl_VertexID % 2;
-    StemSetInstance stemSet = stemSets[gl_InstanceID];
+    int setIndex = uUseVisible != 0 ? int(visibleSets[uVisibleFirst + uint(gl_InstanceID)])
+                                    : gl_InstanceID;
+    StemSetInstance stemSet = stemSets[setIndex];
 #ifndef STEM_SET_CAPTURE
     // A null set (its slot holds no blade: the density map removed it) collapses outside the
     // clip volume at once, so its triangles are dropped without evaluating the spline.
@@ -45,7 +57,7 @@ void main() {
     }
 #endif
 
-    StemVertex v = stemRibbonVertex(stemSet, levels, stem, sampleIndex, side);
+    StemVertex v = stemRibbonVertex(stemSet, levels, samplesPerLevel, stem, sampleIndex, side);
     mat3 frame = stemSetFrame(stemSet.upYaw.xyz, stemSet.upYaw.w);
     vec3 position = stemSetWorldPosition(stemSet, frame, v.position);
     // The frame is a rotation and the scale uniform: it carries normals as it carries points.

@@ -147,7 +147,10 @@ Result<bool> Editor::frame() {
     // collects them, and they are read once, after it.
     const bool statusDue =
         mFrame == 0 || Clock::now() - mLastStatus > std::chrono::milliseconds(500);
-    mState.view.options.cull.collectStats = statusDue;
+    // Exact pass timings wait for each pass on software GL (gl/timer_query.h): a reduced frame,
+    // which keeps a budget, goes without them and the status bar keeps the last full frame's.
+    const bool timingsDue = statusDue && mState.view.quality.level() == 0;
+    mState.view.options.cull.collectStats = timingsDue;
     render(width, height);
     auto more = writeOutputs(width, height);
     if (!more || !*more)
@@ -155,7 +158,7 @@ Result<bool> Editor::frame() {
     if (mSettings.frameDelayMs > 0)
         std::this_thread::sleep_for(std::chrono::milliseconds(mSettings.frameDelayMs));
     mWindow->swapBuffers();
-    updateStatus(statusDue);
+    updateStatus(statusDue, timingsDue);
     return true;
 }
 
@@ -299,12 +302,13 @@ void Editor::advanceTime() {
 
 void Editor::chooseQuality() {
     ViewState& view = mState.view;
-    // Playback alone does not reduce the picture: the timeline plays from the start, and the
-    // live physics' cost (bounded, skipped beyond 4 steps) is not what the rungs lower, so a
-    // reduced picture would stay for good without meeting the budget. Input does.
+    // Playback counts as interaction (issue 24): the field moves, so a reduced picture keeps it
+    // fluid; the physics runs one step a frame meanwhile (advanceTime) and drops the rest, said
+    // in the status bar. Pausing refines to the full picture.
+    const bool playing = view.timeline.playing() && !mReplay;
     const double nowS = std::chrono::duration<double>(Clock::now() - mStartTime).count();
     const bool wasReduced = view.quality.level() > 0;
-    view.quality.update(mFrameS * 1000.0, mInteracting, nowS);
+    view.quality.update(mFrameS * 1000.0, mInteracting || playing, nowS);
     // The first full frame after a reduced one: how long after the last input it is done.
     if (wasReduced && view.quality.level() == 0)
         mFullSinceS = view.quality.lastInteractionS();
@@ -380,7 +384,7 @@ Result<bool> Editor::writeOutputs(int width, int height) {
     return true;
 }
 
-void Editor::updateStatus(bool statusDue) {
+void Editor::updateStatus(bool statusDue, bool timingsDue) {
     const Clock::time_point now = Clock::now();
     const double frameS = std::chrono::duration<double>(now - mLastFrameEnd).count();
     mLastFrameEnd = now;
@@ -388,8 +392,9 @@ void Editor::updateStatus(bool statusDue) {
     if (frameS > 0.0)
         mFps = mFps == 0.0 ? 1.0 / frameS : 0.9 * mFps + 0.1 / frameS;
     mState.transient.status.blades = mLive.scene->totalBlades();  // live: a re-grow shows at once
-    if (statusDue) {
+    if (timingsDue)
         mState.transient.status.timings = mLive.renderer->lastTimings();
+    if (statusDue) {
         mState.transient.status.fps = mFps;
         mLastStatus = now;
     }

@@ -91,7 +91,7 @@ private:
     void render(int width, int height);
     // Screenshots and the turntable; false when the --screenshot was written (the end).
     Result<bool> writeOutputs(int width, int height);
-    void updateStatus(bool statusDue);
+    void updateStatus(bool statusDue, bool timingsDue);
 
     EditorSettings mSettings;
     bool mReplay = false;  // screenshots and scripts: one physics step per frame

@@ -43,6 +43,11 @@ std::string applyRenderKeys(const InputState& input, EditorState& state) {
 std::string applyEditorKeys(EditorState& state, const InputState& input, bool withUi) {
     std::string changed = applyRenderKeys(input, state);
     applyToolKeys(state, input.typed);
+    // Space plays and pauses the timeline, as in Blender and most players.
+    if (input.typed.find(' ') != std::string::npos) {
+        state.view.timeJump = state.view.timeline.toggle();
+        changed = state.view.timeline.playing() ? "playing" : "paused";
+    }
     for (const ui::KeyEvent& key : input.keys) {
         if (!key.modifiers.ctrl)
             continue;

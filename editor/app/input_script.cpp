@@ -75,6 +75,8 @@ bool pressKey(Player& p, std::string spec) {
             break;
         }
     }
+    if (spec == "space")
+        spec = " ";
     const auto key = keyNamed(spec);
     if (key)
         p.now.keys.push_back(ui::KeyEvent{*key, mods});

@@ -339,6 +339,16 @@ void applyToolKeys(EditorState& state, std::string_view typed) {
 void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const EditorState& s,
                          const core::OrbitCamera& camera, const ViewportPointer& pointer) {
     ui::Painter painter = ctx.painter(ui::Layer::Background, view);
+    // Adaptive quality's indicator, in a corner away from the work: the picture is reduced
+    // while the user moves or plays (the status bar says by how much).
+    if (!s.transient.status.reduced.empty()) {
+        const ui::Vec2 at = view.min + ui::Vec2(8.0f, 6.0f);
+        const std::size_t backdrop = painter.addPlaceholder();
+        const ui::Rect label = painter.text(at + ui::Vec2(6.0f, 3.0f), "reduced while moving", 12.0f,
+                                            ui::Color32::rgb(200, 225, 255));
+        painter.set(backdrop, ui::RectShape{{at, label.max + ui::Vec2(6.0f, 3.0f)}, 3.0f,
+                                            ui::Color32{20, 40, 70, 170}, {}});
+    }
     const auto toPoints = [&](glm::vec2 px) {
         return ui::Vec2(view.min.x + px.x / ppp, view.min.y + px.y / ppp);
     };

@@ -10,6 +10,7 @@
 
 #include "gl/scoped_capability.h"
 #include "gl/texture.h"
+#include "scene/frustum.h"
 
 namespace grass::render {
 
@@ -21,24 +22,6 @@ using gl::ScopedCapability;
 // alone decides, so it cuts at half coverage instead of discarding only the empty texels.
 constexpr float ALPHA_CUTOFF_MULTISAMPLED = 0.02f;
 constexpr float ALPHA_CUTOFF_SINGLE_SAMPLED = 0.5f;
-
-// The six frustum planes of a view-projection matrix (Gribb & Hartmann), normalised so that
-// dot(plane.xyz, p) + plane.w is the signed distance of p, positive inside.
-std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj) {
-    const glm::mat4 m = glm::transpose(viewProj);
-    std::array<glm::vec4, 6> planes = {m[3] + m[0], m[3] - m[0], m[3] + m[1],
-                                       m[3] - m[1], m[3] + m[2], m[3] - m[2]};
-    for (glm::vec4& plane : planes)
-        plane /= glm::length(glm::vec3(plane));
-    return planes;
-}
-
-bool sphereOutside(const std::array<glm::vec4, 6>& planes, glm::vec3 centre, float radius) {
-    for (const glm::vec4& plane : planes)
-        if (glm::dot(glm::vec3(plane), centre) + plane.w < -radius)
-            return true;
-    return false;
-}
 
 // A cluster's range in the index buffer: 18 indices for the 12 vertices of each object.
 GLsizei clusterIndexCount(const core::StarCluster& cluster) {
@@ -107,7 +90,7 @@ Result<BillboardField> BillboardField::create(const std::vector<core::GrassObjec
 // (core::billboardWindOffset).
 std::vector<std::uint32_t> BillboardField::visibleClusters(
     const BillboardDrawParams& params) const {
-    const std::array<glm::vec4, 6> planes = frustumPlanes(params.viewProj);
+    const core::FrustumPlanes planes = core::frustumPlanes(params.viewProj);
     const float sway = std::abs(params.wind.amplitudeM);
     std::vector<std::pair<float, std::uint32_t>> byDistance;
     for (std::uint32_t c = 0; c < mClusters.size(); ++c) {
@@ -117,7 +100,7 @@ std::vector<std::uint32_t> BillboardField::visibleClusters(
         const float d = glm::distance(params.cameraPosWorld, cluster.centre);
         if (d - cluster.radius > params.fade.outEndM || d + cluster.radius < params.fade.inStartM)
             continue;
-        if (params.frustumCull && sphereOutside(planes, cluster.centre, cluster.radius + sway))
+        if (params.frustumCull && core::sphereOutside(planes, cluster.centre, cluster.radius + sway))
             continue;
         byDistance.emplace_back(d, c);
     }

@@ -69,7 +69,8 @@ private:
                         const RenderOptions& options);
     // Technique growth: Kim & Cho's stem sets, uploaded on first use (a scene that never draws
     // them pays nothing).
-    void drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj);
+    void drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj,
+                      const CullSettings& cull);
     std::unique_ptr<MeshGpu> mMesh;
     std::vector<MeshGpu> mProps;
     std::vector<FieldGpu> mFields;
@@ -81,6 +82,7 @@ private:
     std::unique_ptr<BillboardField> mBillboards;
     BillboardField* billboardField();
     std::vector<StemSetField> mStemSets;
+    core::StemSetCullResult mStemSetCull;  // reused frame to frame
     std::size_t mStemSetsDrawn = 0;
     gl::GpuTimer mMeshTimer, mGrassTimer, mCullTimer, mBillboardTimer, mStemSetTimer, mSnowTimer;
     bool mSoftwareGl = false;  // timers are synchronous there (set by create)

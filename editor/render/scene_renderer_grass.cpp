@@ -38,7 +38,7 @@ void SceneRenderer::drawGrass(const core::OrbitCamera& camera, const glm::mat4& 
     mStemSetTimer.begin();
     mStemSetsDrawn = 0;
     if (options.technique == core::GrassTechnique::Growth) {
-        drawStemSets(camera, viewProj);
+        drawStemSets(camera, viewProj, options.cull);
         mPasses.push_back("stem_sets");
     }
     mStemSetTimer.end();
@@ -141,11 +141,20 @@ void SceneRenderer::drawBillboards(const core::OrbitCamera& camera, const glm::m
     mBillboardDrawCalls = mBillboards->drawCalls();
 }
 
-void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj) {
+void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj,
+                                 const CullSettings& cull) {
     // Uploaded on first use: a scene drawn by another technique pays nothing for them.
     if (mStemSets.empty())
         for (const auto& layer : mScene->layers)
             mStemSets.emplace_back(layer.stemSets, "stem sets " + layer.name);
+    // Culled and thinned as the blades are, by the same switches (core/growth/stem_set_cull.h).
+    core::StemSetCullSettings settings;
+    settings.frustum = cull.frustum;
+    settings.distance = cull.distance;
+    settings.distanceClasses = cull.distanceClasses;
+    settings.maxDistanceM = cull.maxDistanceM;
+    settings.lodDistanceM = cull.lodDistanceM;
+    settings.keepEvery = cull.keepEvery;
     const gl::Program& program = mStemSetProgram;
     program.use();
     program.set("uViewProj", viewProj);
@@ -153,13 +162,12 @@ void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat
     program.set("uFieldAo", mFieldAo);
     for (std::size_t i = 0; i < mStemSets.size(); ++i) {
         const core::LayerField& layer = mScene->layers[i];
+        core::cullStemSets(layer.stemSets, layer.source.stemLevels, viewProj, camera.position(),
+                           settings, mStemSetCull);
         setStemSetColours(program, StemSetColours{layer.rootColor, layer.tipColor,
                                                   layer.poorRootColor, layer.poorTipColor});
-        mStemSets[i].draw(program, layer.source.stemLevels);
-        // Null sets (slots without a blade) are instanced too but collapse in the vertex shader.
-        mStemSetsDrawn += static_cast<std::size_t>(std::count_if(
-            layer.stemSets.begin(), layer.stemSets.end(),
-            [](const core::StemSetInstance& set) { return set.rootMetresPerUnit.w > 0.0f; }));
+        mStemSets[i].draw(program, layer.source.stemLevels, mStemSetCull);
+        mStemSetsDrawn += mStemSetCull.drawn();
     }
 }
 

@@ -28,6 +28,7 @@
 #include "gl/program.h"
 #include "gl/vertex_array.h"
 #include "growth/growth_stems.h"
+#include "growth/stem_set_cull.h"
 #include "util/result.h"
 
 namespace grass::render {
@@ -38,11 +39,14 @@ inline constexpr std::uint32_t STEM_SET_BINDING = 10;
 // the vertex shader writes the world position (w = 1) and the unit world normal (w = 0, not
 // turned to any viewer) to vec4 2·(i · vertices per set + v) and the one after it.
 inline constexpr std::uint32_t STEM_SET_CAPTURE_BINDING = 11;
+// SSBO of the culled sets' indices (core::cullStemSets' lists, one after another).
+inline constexpr std::uint32_t STEM_SET_VISIBLE_BINDING = 12;
 
-// Vertices of one set's template mesh at `levels` (clamped to 1..4): 6 · 2 · 5 · levels.
-int stemSetVertexCount(int levels);
+// Vertices of one set's template mesh at `levels` (clamped to 1..4) and `samplesPerLevel`
+// (clamped to 2..5; 5 is full detail): 6 · 2 · samplesPerLevel · levels.
+int stemSetVertexCount(int levels, int samplesPerLevel = core::STEM_SAMPLES_PER_LEVEL);
 // Triangle indices of one set's template mesh: 6 stems · (samples − 1) quads · 6.
-int stemSetIndexCount(int levels);
+int stemSetIndexCount(int levels, int samplesPerLevel = core::STEM_SAMPLES_PER_LEVEL);
 
 // Columns: where model x, y, z go in world space (orthonormal, right-handed). A zero `up`
 // counts as +y.
@@ -77,15 +81,24 @@ public:
     // Replaces instances [first, first + instances.size()) after a re-grow (core::regrowPatches).
     void update(std::size_t first, std::span<const core::StemSetInstance> instances);
 
-    // One instanced draw of every set at `levels` (clamped to 1..4). The caller has bound
-    // `program` (loadStemSetProgram) and set its other uniforms. Opaque and two-sided: depth
-    // test on and face culling off for the draw, both restored after it.
+    // One instanced draw of every set at `levels` (clamped to 1..4), full detail. The caller
+    // has bound `program` (loadStemSetProgram) and set its other uniforms. Opaque and two-sided:
+    // depth test on and face culling off for the draw, both restored after it.
     void draw(const gl::Program& program, int levels) const;
+    // The sets of `culled` only (core::cullStemSets over these instances), one instanced draw
+    // per level of detail at its samples per level; otherwise as draw().
+    void draw(const gl::Program& program, int levels, const core::StemSetCullResult& culled);
 
 private:
+    void drawList(const gl::Program& program, int levels, int samplesPerLevel, bool useVisible,
+                  std::uint32_t first, std::size_t count) const;
+
     std::size_t mInstanceCount = 0;
     gl::Buffer mInstances;
-    // The index lists of levels 1, 2, 3, 4, one after another.
+    // The culled sets' indices, room for every set (STEM_SET_VISIBLE_BINDING).
+    gl::Buffer mVisible;
+    std::vector<std::uint32_t> mVisibleUpload;
+    // The index lists of levels 1..4 at each LOD's samples per level, one after another.
     gl::Buffer mIndices;
     gl::VertexArray mVertexArray;  // no attributes: holds the index buffer
 };

@@ -102,14 +102,16 @@ struct StemVertex {
     float u;
 };
 
-StemVertex stemRibbonVertex(StemSetInstance stemSet, int levels, int stem, int sampleIndex,
-                            int side) {
+// samplesPerLevel: STEM_SAMPLES_PER_LEVEL at full detail, fewer at a distance
+// (core::STEM_SET_LOD_SAMPLES); the samples stay evenly spaced along the whole stem.
+StemVertex stemRibbonVertex(StemSetInstance stemSet, int levels, int samplesPerLevel, int stem,
+                            int sampleIndex, int side) {
     vec3 controls[MAX_STEM_POINTS];
     vec4 growth = stemSet.alphaBetaThetaB;
     vec4 shape = stemSet.halfWidthSpread;
     int n = stemLevelPoints(growth.x, growth.y, growth.z, levels, shape.y, shape.z, stem,
                             controls);
-    int samples = STEM_SAMPLES_PER_LEVEL * levels;
+    int samples = samplesPerLevel * levels;
     StemVertex v;
     v.u = float(sampleIndex) / float(samples - 1);
     vec3 tangent;

@@ -19,6 +19,7 @@
 #include "gl/framebuffer.h"
 #include "gl/uniform_block.h"
 #include "gl_context_fixture.h"
+#include "growth/stem_set_cull.h"
 #include "project/project.h"
 #include "render/lighting_block.h"
 
@@ -117,8 +118,11 @@ void setFieldUniforms(const gl::Program& program) {
     render::setStemSetColours(program, render::StemSetColours{});
 }
 
-gl::Rgba8Image render(const StemSetField& field, const gl::Program& program, glm::vec3 eye,
-                      glm::vec3 target, int levels, int grassLighting = 0) {
+// With `culled`, the sets of core::cullStemSets' lists at their LODs; otherwise every set at
+// full detail.
+gl::Rgba8Image render(StemSetField& field, const gl::Program& program, glm::vec3 eye,
+                      glm::vec3 target, int levels, int grassLighting = 0,
+                      const core::StemSetCullResult* culled = nullptr) {
     gl::Framebuffer framebuffer(SIDE, SIDE, 4);
     framebuffer.bind();
     glClearColor(SKY.r, SKY.g, SKY.b, 1.0f);
@@ -129,7 +133,10 @@ gl::Rgba8Image render(const StemSetField& field, const gl::Program& program, glm
     program.set("uCameraPosition", eye);
     const gl::UniformBlock<render::LightingBlock> lighting = uploadLighting(grassLighting);
     setFieldUniforms(program);
-    field.draw(program, levels);
+    if (culled)
+        field.draw(program, levels, *culled);
+    else
+        field.draw(program, levels);
     glFinish();
     return framebuffer.readPixels();
 }
@@ -209,7 +216,7 @@ TEST_F(StemSetGpu, VerticesMatchTheCpuReference) {
     auto program = makeProgram({"STEM_SET_CAPTURE"});
     ASSERT_TRUE(program);
     const std::vector<StemSetInstance> instances = variedInstances();
-    const StemSetField field(instances);
+    StemSetField field(instances);
     ASSERT_EQ(field.instanceCount(), instances.size());
     // Draws need a complete framebuffer even with rasterization off.
     gl::Framebuffer framebuffer(8, 8, 1);
@@ -297,7 +304,7 @@ TEST_F(StemSetRender, FieldCoversTheViewAndHealthyIsGreener) {
             instances.push_back(instance(root, 0.2f, {0, 1, 0}, yaw, {alpha, beta, theta, b},
                                          {0.1f, 0.08f, 0.08f, 0.0f}));
         }
-    const StemSetField field(instances);
+    StemSetField field(instances);
     const glm::vec3 eye(0.0f, 1.6f, 1.8f);
     for (const int grassLighting : {0, 1}) {
         const gl::Rgba8Image image = render(field, *program, eye, {0, 0, 0}, 4, grassLighting);
@@ -334,7 +341,7 @@ TEST_F(StemSetRender, MoreLevelsDrawTallerSets) {
         instances.push_back(instance({-0.6f + 0.15f * static_cast<float>(i), 0.0f, 0.0f}, 0.2f,
                                      {0, 1, 0}, 0.4f + 0.7f * static_cast<float>(i),
                                      {0.15f, 0.7f, 0.0f, 1.0f}, {0.15f, 0.05f, 0.05f, 0.0f}));
-    const StemSetField field(instances);
+    StemSetField field(instances);
     const glm::vec3 eye(0.0f, 0.2f, 1.5f), target(0.0f, 0.2f, 0.0f);
     const glm::mat4 vp = viewProj(eye, target);
     // The image row of the highest CPU vertex of any set; row 0 is the top of the image.
@@ -366,10 +373,49 @@ TEST_F(StemSetRender, MoreLevelsDrawTallerSets) {
     EXPECT_EQ(render(field, *program, eye, target, 0).pixels, low.pixels);
 }
 
+// The growth technique's cull (issue 24, core/growth/stem_set_cull.h): drawn through the
+// visible lists at full detail, the picture is the full draw's, pixel for pixel (the lists keep
+// the sets' order, and the culled sets lie outside the view); at the farthest LOD (2 samples per
+// level) it stays close to it.
+TEST_F(StemSetRender, CulledDrawMatchesTheFullDrawAndLodStaysClose) {
+    auto program = makeProgram();
+    ASSERT_TRUE(program);
+    std::vector<StemSetInstance> instances;
+    for (int i = 0; i < 24; ++i)
+        for (int j = 0; j < 24; ++j)
+            instances.push_back(instance({-3.0f + 0.25f * float(i), 0.0f, -3.0f + 0.25f * float(j)},
+                                         0.2f, {0, 1, 0}, 0.7f * float(i + j),
+                                         {0.15f, 0.7f, 0.3f, 1.0f}, {0.08f, 0.05f, 0.05f, 0.0f}));
+    StemSetField field(instances);
+    const glm::vec3 eye(0.0f, 0.8f, 1.2f), target(0.0f, 0.0f, -0.5f);
+    core::StemSetCullSettings settings;
+    settings.distance = false;
+    settings.lodDistanceM = 0.0f;
+    core::StemSetCullResult culled;
+    core::cullStemSets(instances, 4, viewProj(eye, target), eye, settings, culled);
+    RecordProperty("drawn", std::to_string(culled.drawn()));
+    // The view sees the near part of the field only: the cull must have removed some sets.
+    EXPECT_GT(culled.culledFrustum, instances.size() / 4);
+    const gl::Rgba8Image full = render(field, *program, eye, target, 4);
+    const gl::Rgba8Image viaLists = render(field, *program, eye, target, 4, 0, &culled);
+    EXPECT_EQ(viaLists.pixels, full.pixels);
+
+    settings.lodDistanceM = 1e-3f;  // everything at LOD 2
+    core::cullStemSets(instances, 4, viewProj(eye, target), eye, settings, culled);
+    ASSERT_EQ(culled.visible[2].size(), culled.drawn());
+    const gl::Rgba8Image far = render(field, *program, eye, target, 4, 0, &culled);
+    const double fullCover = double(coveredCount(full)), farCover = double(coveredCount(far));
+    RecordProperty("coverage_full_lod2", std::to_string(fullCover) + " " + std::to_string(farCover));
+    // 2 samples a level instead of 5 cut the curve's corners: a few per cent of the cover, not
+    // a different picture (the LOD is meant for sets a few pixels tall).
+    EXPECT_NEAR(farCover / fullCover, 1.0, 0.1);
+    EXPECT_NE(far.pixels, full.pixels);
+}
+
 TEST_F(StemSetRender, EmptyFieldDrawsNothingAndDrawRestoresCulling) {
     auto program = makeProgram();
     ASSERT_TRUE(program);
-    const StemSetField empty(std::vector<StemSetInstance>{});
+    StemSetField empty(std::vector<StemSetInstance>{});
     const glm::vec3 eye(0.0f, 1.0f, 2.0f);
     const gl::Rgba8Image image = render(empty, *program, eye, {0, 0, 0}, 4);
     EXPECT_EQ(coveredCount(image), 0u);
