@@ -120,5 +120,20 @@ TEST(Commands, ACullTestKeyIsNotADocumentChange) {
     EXPECT_EQ(d.state.doc.history.undoSteps(), 0u);
 }
 
+// Space plays and pauses the timeline: the view's time, not a document change.
+TEST(Commands, SpacePlaysAndPausesTheTimeline) {
+    CommandDriver d;
+    d.state.doc.dirty = false;
+    ASSERT_FALSE(d.state.view.timeline.playing());
+    editor::InputState input;
+    input.typed = " ";
+    EXPECT_EQ(editor::applyEditorKeys(d.state, input, true), "playing");
+    EXPECT_TRUE(d.state.view.timeline.playing());
+    EXPECT_EQ(editor::applyEditorKeys(d.state, input, true), "paused");
+    EXPECT_FALSE(d.state.view.timeline.playing());
+    EXPECT_FALSE(d.state.doc.dirty);
+    EXPECT_EQ(d.state.doc.history.undoSteps(), 0u);
+}
+
 }  // namespace
 }  // namespace grass::test

@@ -57,5 +57,39 @@ TEST(EditorTime, TenSecondsOfSlowFramesMoveTheTimelineTenSecondsAndAutosave) {
         << "the unsaved edit was not autosaved by the clock";
 }
 
+// Runs the editor on `dir` with `script` and `flags` under Xvfb; returns its output.
+std::string runEditor(const std::filesystem::path& dir, const std::string& script,
+                      const std::string& flags) {
+    std::ofstream(dir / "script.txt") << script;
+    const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' " +
+                                std::string(GRASS_EDITOR_EXE) + " " + dir.string() + " --script " +
+                                (dir / "script.txt").string() + " --wall-clock " + flags + " > " +
+                                (dir / "log.txt").string() + " 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command << " (see " << dir / "log.txt" << ")";
+    std::ifstream log(dir / "log.txt");
+    std::stringstream text;
+    text << log.rdbuf();
+    return text.str();
+}
+
+// Playback counts as interaction: with a budget no frame meets (5 ms, the least allowed), a playing editor
+// draws the reduced picture for as long as it plays (it opens playing), and Space (pause)
+// brings back the full one once the settle time has passed — the summary's "full quality after
+// input stops" counts those returns.
+TEST(EditorTime, PlaybackKeepsTheReducedPictureUntilPaused) {
+    const auto dir = scratchDir("editor_playback_quality");
+    std::ofstream(dir / "project.json") << PROJECT;
+    const std::string returned = "full quality after input stops:";
+    const std::string playing = runEditor(dir, "wait-s 3\n", "--frame-budget-ms 5");
+    EXPECT_EQ(playing.find(returned), std::string::npos)
+        << "the picture refined while the timeline played:\n" << playing;
+    const std::string paused = runEditor(dir, "wait-s 3\nkey space\nwait-s 2\n", "--frame-budget-ms 5");
+    EXPECT_NE(paused.find(returned), std::string::npos)
+        << "pausing did not bring back the full picture:\n" << paused;
+    // Without adaptive quality nothing is ever reduced, so nothing returns.
+    const std::string off = runEditor(dir, "wait-s 3\n", "--no-adaptive");
+    EXPECT_EQ(off.find(returned), std::string::npos) << off;
+}
+
 }  // namespace
 }  // namespace grass::test
