@@ -89,7 +89,7 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
             return created.error();
         e.mUi = std::move(*created);
     }
-    e.mStartTime = e.mLastStatus = e.mLastFrameEnd = e.mLastTick = Clock::now();
+    e.mStartTime = e.mLastStatus = e.mLastTick = Clock::now();
     e.mTimelineStartS = state.view.timeline.timeS();
     return editor;
 }
@@ -386,16 +386,18 @@ Result<bool> Editor::writeOutputs(int width, int height) {
 
 void Editor::updateStatus(bool statusDue, bool timingsDue) {
     const Clock::time_point now = Clock::now();
-    const double frameS = std::chrono::duration<double>(now - mLastFrameEnd).count();
-    mLastFrameEnd = now;
-    // Smoothed, so the number stays readable.
-    if (frameS > 0.0)
-        mFps = mFps == 0.0 ? 1.0 / frameS : 0.9 * mFps + 0.1 / frameS;
+    ++mFramesSinceStatus;
     mState.transient.status.blades = mLive.scene->totalBlades();  // live: a re-grow shows at once
     if (timingsDue)
         mState.transient.status.timings = mLive.renderer->lastTimings();
     if (statusDue) {
-        mState.transient.status.fps = mFps;
+        // Frames over the time since the last update (≥ 0.5 s): the rate now, readable, and
+        // right at once when the frame time jumps (reduced ↔ full picture), which a per-frame
+        // moving average at 1–10 fps is not.
+        const double sinceS = std::chrono::duration<double>(now - mLastStatus).count();
+        if (sinceS > 0.0)
+            mState.transient.status.fps = double(mFramesSinceStatus) / sinceS;
+        mFramesSinceStatus = 0;
         mLastStatus = now;
     }
 }

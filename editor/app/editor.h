@@ -122,8 +122,8 @@ private:
     bool mInteracting = false;  // orbiting, zooming, painting, dragging, playing: this frame
     std::string mShownTitle;
     double mAutosaveDueS = 0.0;
-    Clock::time_point mStartTime, mLastStatus, mLastFrameEnd, mLastTick;
-    double mFps = 0.0;
+    Clock::time_point mStartTime, mLastStatus, mLastTick;
+    int mFramesSinceStatus = 0;  // for the status bar's frame rate
 };
 
 }  // namespace grass::editor
