@@ -1,5 +1,8 @@
 #include "export/blade_instances.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "util/assert.h"
 
 namespace grass::core {
@@ -15,6 +18,23 @@ glm::quat bladeRotation(glm::vec3 up, float theta) {
     const glm::vec3 z = glm::cross(x, y);
     // glm matrices are column-major: the columns are the images of +X, +Y, +Z.
     return glm::normalize(glm::quat_cast(glm::mat3(x, y, z)));
+}
+
+float bladeLeanRad(const Blade& blade) {
+    const glm::vec3 up = glm::normalize(blade.up());
+    const glm::vec3 front = glm::normalize(glm::cross(up, widthDirection(up, blade.theta())));
+    const glm::vec3 chord = blade.v2() - blade.v0();
+    const float lean = std::atan2(glm::dot(chord, front), glm::dot(chord, up));
+    return std::clamp(lean, 0.0f, float(LEAN_BIN_COUNT - 1) * LEAN_BIN_STEP_RAD);
+}
+
+int leanBinOf(float leanRad) {
+    const int bin = static_cast<int>(std::lround(leanRad / LEAN_BIN_STEP_RAD));
+    return std::clamp(bin, 0, LEAN_BIN_COUNT - 1);
+}
+
+float leanBinRad(int bin) {
+    return float(std::clamp(bin, 0, LEAN_BIN_COUNT - 1)) * LEAN_BIN_STEP_RAD;
 }
 
 std::vector<BladeInstance> bladeInstances(const LayerField& layer, int lod) {
@@ -35,11 +55,13 @@ std::vector<BladeInstance> bladeInstances(const LayerField& layer, int lod) {
         BladeInstance instance;
         instance.translation = blade.v0();
         instance.rotation = bladeRotation(blade.up(), blade.theta());
-        instance.scale = glm::vec3(blade.w() * widthScale, blade.h(), blade.w() * widthScale);
+        instance.scale = glm::vec3(blade.w() * widthScale, blade.h(), blade.h());
         instance.stiffness = blade.s();
         instance.rootColor = glm::mix(layer.rootColor, layer.poorRootColor, wilt);
         instance.tipColor = glm::mix(layer.tipColor, layer.poorTipColor, wilt);
         instance.tipOffset = blade.v2() - blade.v0();
+        instance.leanRad = bladeLeanRad(blade);
+        instance.leanBin = leanBinOf(instance.leanRad);
         instances.push_back(instance);
     }
     return instances;

@@ -4,8 +4,13 @@
 //   TRANSLATION = v0 (the root, metres),
 //   ROTATION    = the unit quaternion taking +X to the blade's width direction
 //                 (widthDirection(up, θ), blade.h) and +Y to its up,
-//   SCALE       = (w, h, w): the renderer puts the edges at c ± w·t1 (shaders/include/
-//                 blade_geometry.glsl), so a blade is 2w wide and h tall at rest.
+//   SCALE       = (w, h, h): the renderer puts the edges at c ± w·t1 (shaders/include/
+//                 blade_geometry.glsl), so a blade is 2w wide and h tall at rest; z scales the
+//                 bend of a leaning blade's mesh, which lies in the blade's y–z plane.
+// A blade leans towards its front (up × t1 = −Z of that frame; the growth model's rest lean,
+// layer_growth.cpp), so its resting curve is one of a one-parameter family: the export draws it
+// with the mesh of the nearest of LEAN_BIN_COUNT pre-bent unit blades (issue 25), which stock
+// glTF loaders can draw, and keeps the exact v2 in _TIP_OFFSET for runtimes that bend blades.
 // LOD N > 0 thins the field for distant or lightweight use: of the live blades in patch order
 // (patches are compact and Morton-sorted inside, patches.h, so every k-th blade is spread
 // evenly over the surface) it keeps every 2^N-th, and widens each kept blade 2^N times so the
@@ -24,6 +29,11 @@
 
 namespace grass::core {
 
+// Lean bins: 0°, 5°, …, 60° (the growth model's rest lean is at most π/3, growth_curves.h).
+// A 5° step puts a blade's tip within h·2·sin(1.25°) ≈ 0.044·h of its own.
+inline constexpr int LEAN_BIN_COUNT = 13;
+inline constexpr float LEAN_BIN_STEP_RAD = 0.0872664626f;  // 5°
+
 struct BladeInstance {
     glm::vec3 translation{0.0f};
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
@@ -35,7 +45,18 @@ struct BladeInstance {
     // v2 − v0 in metres: where the tip hangs (rest lean of the growth model), for runtimes that
     // bend the blade instead of drawing it straight.
     glm::vec3 tipOffset{0.0f};
+    // The lean of the resting blade towards its front (bladeLeanRad) and its bin.
+    float leanRad = 0.0f;
+    int leanBin = 0;
 };
+
+// The angle between up and the resting blade's chord v2 − v0, measured towards the blade's
+// front (up × t1) in the plane of up and front: 0 for a straight blade; a sideways component,
+// which the growth model never makes, is left out. Clamped to the bins' range.
+float bladeLeanRad(const Blade& blade);
+// The nearest bin of `leanRad` (clamped to 0..LEAN_BIN_COUNT − 1), and a bin's angle.
+int leanBinOf(float leanRad);
+float leanBinRad(int bin);
 
 // Padding and thinned slots hold null blades (h = w = 0, layer_growth.h).
 bool isLiveBlade(const Blade& blade);

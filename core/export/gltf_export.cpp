@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <numbers>
 
 #include "export/blade_instances.h"
 #include "export/content_names.h"
 #include "export/gltf_builder.h"
+#include "physics/physics.h"
 #include "util/assert.h"
 
 namespace grass::core {
@@ -77,10 +80,13 @@ json terrainMesh(GltfBuilder& builder, const SurfaceMesh& mesh, int material) {
             {"primitives", {meshPrimitive(attributes, builder.addIndices(indices), material)}}};
 }
 
-// The per-instance attributes of EXT_mesh_gpu_instancing, one accessor each.
-json instanceAttributes(GltfBuilder& builder, const std::vector<BladeInstance>& instances) {
+// The per-instance attributes of EXT_mesh_gpu_instancing, one accessor each, for the instances
+// `which` of `instances`.
+json instanceAttributes(GltfBuilder& builder, const std::vector<BladeInstance>& instances,
+                        const std::vector<std::uint32_t>& which) {
     std::vector<float> translation, rotation, scale, stiffness, tipColor, rootColor, tipOffset;
-    for (const BladeInstance& b : instances) {
+    for (const std::uint32_t i : which) {
+        const BladeInstance& b = instances[i];
         push(translation, {b.translation.x, b.translation.y, b.translation.z});
         // glTF quaternions are (x, y, z, w).
         push(rotation, {b.rotation.x, b.rotation.y, b.rotation.z, b.rotation.w});
@@ -93,36 +99,115 @@ json instanceAttributes(GltfBuilder& builder, const std::vector<BladeInstance>& 
     const auto add = [&](const std::vector<float>& values, int components) {
         return builder.addFloats(values, components, GltfTarget::None);
     };
+    const int tip = add(tipColor, 3);
+    // _COLOR_0 is the convention stock loaders read per-instance colour from (three.js'
+    // GLTFLoader, for one); _COLOR, the same accessor, stays for runtimes that read it.
     return {{"TRANSLATION", add(translation, 3)},
             {"ROTATION", add(rotation, 4)},
             {"SCALE", add(scale, 3)},
             {"_STIFFNESS", add(stiffness, 1)},
-            {"_COLOR", add(tipColor, 3)},
+            {"_COLOR", tip},
+            {"_COLOR_0", tip},
             {"_ROOT_COLOR", add(rootColor, 3)},
             {"_TIP_OFFSET", add(tipOffset, 3)}};
 }
 
+// The root-to-tip shading of the blade meshes' COLOR_0, which loaders multiply with the
+// instance colour (_COLOR_0, the tip colour): the root's share of the tip colour per channel,
+// at the layer's mean wilt (one mesh serves every blade, so a blade's own wilt moves only its
+// tip colour; the root follows by this ratio).
+glm::vec3 rootShare(const LayerField& layer, const std::vector<BladeInstance>& instances) {
+    double wilt = 0.0;
+    for (const BladeInstance& b : instances) {
+        const glm::vec3 span = layer.poorTipColor - layer.tipColor;
+        const float along = glm::dot(span, span) > 0.0f
+                                ? glm::dot(b.tipColor - layer.tipColor, span) / glm::dot(span, span)
+                                : 0.0f;
+        wilt += std::clamp(along, 0.0f, 1.0f);
+    }
+    const float w = instances.empty() ? 0.0f : float(wilt / double(instances.size()));
+    const glm::vec3 root = glm::mix(layer.rootColor, layer.poorRootColor, w);
+    const glm::vec3 tip = glm::mix(layer.tipColor, layer.poorTipColor, w);
+    glm::vec3 share(1.0f);
+    for (int c = 0; c < 3; ++c)
+        if (tip[c] > 0.0f)
+            share[c] = std::clamp(root[c] / tip[c], 0.0f, 1.0f);
+    return share;
+}
+
+// Instances are split into cells of a grid of CELLS_PER_AXIS³ over their roots' box, one node
+// per cell and lean bin, so an engine can cull them (issue 25); the cells are cubes, so a flat
+// field gets CELLS_PER_AXIS² of them over its longer side.
+constexpr int CELLS_PER_AXIS = 4;
+
+struct InstanceGroup {
+    int cell = 0;
+    int bin = 0;
+    std::vector<std::uint32_t> members;
+};
+
+std::vector<InstanceGroup> groupInstances(const std::vector<BladeInstance>& instances) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const BladeInstance& b : instances) {
+        lo = glm::min(lo, b.translation);
+        hi = glm::max(hi, b.translation);
+    }
+    const glm::vec3 extent = hi - lo;
+    const float edge = std::max(std::max(extent.x, std::max(extent.y, extent.z)) /
+                                    float(CELLS_PER_AXIS),
+                                1e-3f);
+    std::map<std::pair<int, int>, std::vector<std::uint32_t>> groups;
+    for (std::uint32_t i = 0; i < instances.size(); ++i) {
+        const glm::ivec3 c = glm::clamp(glm::ivec3(glm::floor((instances[i].translation - lo) / edge)),
+                                        glm::ivec3(0), glm::ivec3(CELLS_PER_AXIS - 1));
+        const int cell = (c.z * CELLS_PER_AXIS + c.y) * CELLS_PER_AXIS + c.x;
+        groups[{cell, instances[i].leanBin}].push_back(i);
+    }
+    std::vector<InstanceGroup> out;
+    for (auto& [key, members] : groups)
+        out.push_back({key.first, key.second, std::move(members)});
+    return out;
+}
+
 }  // namespace
 
-UnitBladeMesh unitBladeMesh(BladeShape shape, float tipStart, int segments) {
+UnitBladeMesh unitBladeMesh(BladeShape shape, float tipStart, int segments, float leanRad) {
     GRASS_ASSERT(segments >= 1);
+    // The resting blade of height 1 in the instance frame (x = t1, y = up), leaned by leanRad
+    // towards its front −Z and validated as the growth model does (layer_growth.cpp): the
+    // same curve the renderer bends, v0 at the origin.
+    Blade rest = makeRestBlade(glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, 1.0f, 1.0f,
+                               widthAngle(glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(1.0f, 0.0f, 0.0f)));
+    if (leanRad > 0.0f) {
+        rest.v2W = glm::vec4(0.0f, std::cos(leanRad), -std::sin(leanRad), 1.0f);
+        validateBlade(rest);
+    }
+    const glm::vec3 v1 = rest.v1(), v2 = rest.v2();
     UnitBladeMesh mesh;
     const auto level = static_cast<float>(segments);
     std::uint32_t previousLeft = 0, previousRight = 0;
     for (int i = 0; i <= segments; ++i) {
         const float v = static_cast<float>(i) / level;
-        const float y = 2.0f * v - v * v;
+        // Quadratic Bézier from v0 = 0 (for a straight blade, y = 2v − v²).
+        const glm::vec3 c = 2.0f * (1.0f - v) * v * v1 + v * v * v2;
+        glm::vec3 tangent = 2.0f * (1.0f - 2.0f * v) * v1 + 2.0f * v * v2;
+        // At a straight blade's tip (v1 = v2) the derivative vanishes: the chord has its direction.
+        if (glm::dot(tangent, tangent) < 1e-12f)
+            tangent = v2;
+        // The renderer's front normal is tangent × t1 (+Y × +X = −Z when straight, shaders/
+        // include/blade_geometry.glsl); triangles wind counter-clockwise seen from there.
+        const glm::vec3 n = glm::normalize(glm::cross(tangent, glm::vec3(1.0f, 0.0f, 0.0f)));
         const float left = 2.0f * shapeT(shape, 0.0f, v, tipStart, level) - 1.0f;
         const float right = 2.0f * shapeT(shape, 1.0f, v, tipStart, level) - 1.0f;
         const auto first = static_cast<std::uint32_t>(mesh.positions.size() / 3);
-        // The renderer's front normal is up × t1 = +Y × +X = −Z (shaders/include/
-        // blade_geometry.glsl); triangles wind counter-clockwise seen from there.
         const bool pointed = i > 0 && std::abs(right - left) < MIN_ROW_WIDTH;
-        push(mesh.positions, {pointed ? 0.5f * (left + right) : left, y, 0.0f});
-        push(mesh.normals, {0.0f, 0.0f, -1.0f});
+        push(mesh.positions, {pointed ? 0.5f * (left + right) : left, c.y, c.z});
+        push(mesh.normals, {n.x, n.y, n.z});
+        mesh.heights.push_back(v);
         if (!pointed) {
-            push(mesh.positions, {right, y, 0.0f});
-            push(mesh.normals, {0.0f, 0.0f, -1.0f});
+            push(mesh.positions, {right, c.y, c.z});
+            push(mesh.normals, {n.x, n.y, n.z});
+            mesh.heights.push_back(v);
         }
         if (i > 0) {
             mesh.indices.insert(mesh.indices.end(), {previousLeft, first, previousRight});
@@ -168,31 +253,62 @@ GltfLayerDocument buildLayerGltf(const GltfLayerInput& input) {
     }
 
     const std::vector<BladeInstance> instances = bladeInstances(layer, input.lod);
+    std::vector<int> topNodes;
+    for (std::size_t n = 0; n < doc["nodes"].size(); ++n)
+        topNodes.push_back(int(n));
     if (!instances.empty()) {
-        const UnitBladeMesh blade = unitBladeMesh(layer.shape, layer.tipStart, input.segments);
+        // White: the colour comes from the vertices (root to tip) times the instance (_COLOR_0).
         doc["materials"].push_back({{"name", layer.name + " blade"},
                                     {"doubleSided", true},
                                     {"pbrMetallicRoughness",
-                                     {{"baseColorFactor", colorFactor(layer.tipColor)},
+                                     {{"baseColorFactor", colorFactor(glm::vec3(1.0f))},
                                       {"metallicFactor", 0.0},
                                       {"roughnessFactor", 0.7}}}});
-        const json attributes = {
-            {"POSITION", builder.addFloats(blade.positions, 3, GltfTarget::ArrayBuffer)},
-            {"NORMAL", builder.addFloats(blade.normals, 3, GltfTarget::ArrayBuffer)}};
-        const int indices = builder.addIndices(blade.indices);
-        doc["meshes"].push_back({{"name", layer.name + " unit blade"},
-                                 {"primitives",
-                                  {meshPrimitive(attributes, indices,
-                                                 static_cast<int>(doc["materials"].size()) - 1)}}});
-        doc["nodes"].push_back({{"name", layer.name + " blades"},
-                                {"mesh", doc["meshes"].size() - 1},
-                                {"extensions",
-                                 {{"EXT_mesh_gpu_instancing",
-                                   {{"attributes", instanceAttributes(builder, instances)}}}}}});
+        const int material = static_cast<int>(doc["materials"].size()) - 1;
+        const glm::vec3 share = rootShare(layer, instances);
+        // One pre-bent unit blade per lean bin in use (blade_instances.h).
+        std::map<int, int> meshOfBin;
+        for (const BladeInstance& b : instances)
+            meshOfBin.emplace(b.leanBin, -1);
+        for (auto& [bin, meshIndex] : meshOfBin) {
+            const UnitBladeMesh blade =
+                unitBladeMesh(layer.shape, layer.tipStart, input.segments, leanBinRad(bin));
+            std::vector<float> colors;
+            for (const float v : blade.heights) {
+                const glm::vec3 c = glm::mix(share, glm::vec3(1.0f), v);
+                push(colors, {c.r, c.g, c.b});
+            }
+            const json attributes = {
+                {"POSITION", builder.addFloats(blade.positions, 3, GltfTarget::ArrayBuffer)},
+                {"NORMAL", builder.addFloats(blade.normals, 3, GltfTarget::ArrayBuffer)},
+                {"COLOR_0", builder.addFloats(colors, 3, GltfTarget::ArrayBuffer)}};
+            const int indices = builder.addIndices(blade.indices);
+            doc["meshes"].push_back(
+                {{"name", layer.name + " unit blade, lean " +
+                              std::to_string(int(std::lround(leanBinRad(bin) * 180.0f /
+                                                             std::numbers::pi_v<float>))) +
+                              " deg"},
+                 {"primitives", {meshPrimitive(attributes, indices, material)}}});
+            meshIndex = static_cast<int>(doc["meshes"].size()) - 1;
+        }
+        // "<layer> blades" holds one child per cell and lean bin.
+        json children = json::array();
+        for (const InstanceGroup& group : groupInstances(instances)) {
+            doc["nodes"].push_back(
+                {{"name", layer.name + " blades cell " + std::to_string(group.cell) + " lean " +
+                              std::to_string(group.bin)},
+                 {"mesh", meshOfBin.at(group.bin)},
+                 {"extensions",
+                  {{"EXT_mesh_gpu_instancing",
+                    {{"attributes", instanceAttributes(builder, instances, group.members)}}}}}});
+            children.push_back(doc["nodes"].size() - 1);
+        }
+        doc["nodes"].push_back({{"name", layer.name + " blades"}, {"children", children}});
+        topNodes.push_back(static_cast<int>(doc["nodes"].size()) - 1);
         doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
     }
     json sceneNodes = json::array();
-    for (std::size_t n = 0; n < doc["nodes"].size(); ++n)
+    for (const int n : topNodes)
         sceneNodes.push_back(n);
     json sceneJson = {{"name", layer.name}};
     if (!sceneNodes.empty())

@@ -46,14 +46,17 @@ struct GltfLayerInput {
 
 GltfLayerDocument buildLayerGltf(const GltfLayerInput& input);
 
-// The unit blade of `shape` (SPEC §7) as triangles: positions (x, y, 0), normals −Z, rows at the
-// Bézier parameter v = i/segments where a straight blade's curve is at height 2v − v² (v1 = v2
-// at rest, blade.h), edges at x = 2·t(u, v) − 1 for u = 0, 1 (shaders/include/shapes.glsl).
+// The unit blade of `shape` (SPEC §7) as triangles: rows at the Bézier parameter v = i/segments
+// of the resting blade of height 1 leaned by `leanRad` towards −Z (blade_instances.h; a
+// straight blade's row is at height 2v − v², v1 = v2 at rest, blade.h), edges at
+// x = 2·t(u, v) − 1 for u = 0, 1 (shaders/include/shapes.glsl), normals tangent × +X (−Z when
+// straight).
 struct UnitBladeMesh {
     std::vector<float> positions;  // xyz per vertex
     std::vector<float> normals;
+    std::vector<float> heights;    // v per vertex: 0 at the root, 1 at the tip
     std::vector<std::uint32_t> indices;
 };
-UnitBladeMesh unitBladeMesh(BladeShape shape, float tipStart, int segments);
+UnitBladeMesh unitBladeMesh(BladeShape shape, float tipStart, int segments, float leanRad = 0.0f);
 
 }  // namespace grass::core
