@@ -61,3 +61,11 @@ grass_export_validate_test(tiny ${GRASS_CLI_PROJECTS}/tiny)
 grass_export_validate_test(growth_tiny_lod2 ${GRASS_CLI_PROJECTS}/growth_tiny --lod 2)
 grass_export_validate_test(rock ${GRASS_CLI_PROJECTS}/rock)
 grass_export_validate_test(meadow ${GRASS_SOURCE_DIR}/projects/meadow)
+
+# A stock third-party loader (three.js' GLTFLoader) draws the meadow's export as the field at
+# rest: every blade an instance, tips and colours as the raw export's exact blades (issue 25).
+add_test(NAME cli.export_stock_loader_meadow
+    COMMAND ${GRASS_BASH} ${CMAKE_CURRENT_SOURCE_DIR}/export/export_stock_loader.sh
+        ${GRASS_BIN} ${GRASS_VALIDATOR_DIR} ${GRASS_EXPORT_TMP}/stock-meadow
+        ${GRASS_SOURCE_DIR}/projects/meadow)
+set_tests_properties(cli.export_stock_loader_meadow PROPERTIES LABELS "cli;export" TIMEOUT 300)
