@@ -57,6 +57,11 @@ std::vector<std::string> layerStems(const std::vector<std::string>& layerNames) 
     return stems;
 }
 
+// The .glb's name: the project's, file-safe ("scene" for a project without one).
+std::string glbFileName(const Project& project) {
+    return (project.name.empty() ? std::string("scene") : fileSafeName(project.name)) + ".glb";
+}
+
 json colorJson(glm::vec3 color) {
     return json::array({color.r, color.g, color.b});
 }
@@ -81,7 +86,7 @@ Result<void> stageGltfLayer(StagedFiles& staged, const LoadedProject& loaded, co
             contentAddressedName(stem + "-" + map.name, mapHash(*map.map), ".png");
         if (auto written = staged.addPng(uri, *map.map); !written)
             return written.error();
-        input.maps.push_back({map.name, uri});
+        input.maps.push_back({map.name, uri, {}});
     }
     step(0.3f, "terrain and blade instances");
     const GltfLayerDocument doc = buildLayerGltf(input);
@@ -141,6 +146,57 @@ Result<json> stageRawLayer(StagedFiles& staged, const LayerField& layer, const s
     return entry;
 }
 
+// The PNG file's bytes of a map, as staged files write it (16-bit greyscale), for a .glb that
+// embeds it: written to a temporary file next to the export and read back.
+Result<std::string> pngBytes(const MapImage& map, const fs::path& folder, const std::string& name) {
+    // A staged file's temporary name (kept extension: the writer picks the format by it), so
+    // an export killed here leaves what the next one clears (removeStaleTemporaries).
+    const fs::path temporary = temporaryPathFor(folder / ("embedded-" + name + ".png"));
+    if (auto saved = saveMapImage(map, temporary, MapSampleFormat::UInt16); !saved)
+        return makeError(temporary.string(), saved.error().message);
+    auto bytes = readFile(temporary);
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    if (!bytes)
+        return bytes.error();
+    return std::move(*bytes);
+}
+
+// Every layer in one .glb (buildSceneGlb).
+Result<void> stageGlb(StagedFiles& staged, const LoadedProject& loaded, const Scene& scene,
+                      const ExportOptions& options, const ExportProgress& progress,
+                      std::vector<ExportedLayer>& layers) {
+    GltfSceneInput input;
+    input.scene = &scene;
+    input.name = loaded.project.name;
+    input.lod = options.lod;
+    input.segments = loaded.project.render.stripSegments;
+    input.groundColor = loaded.project.render.groundColor;
+    for (std::size_t i = 0; i < scene.layers.size(); ++i) {
+        if (progress)
+            progress(0.3f * float(i) / float(scene.layers.size()),
+                     "layer \"" + scene.layers[i].name + "\": maps");
+        std::vector<GltfMapImage> maps;
+        for (const NamedMap& map : paintedMaps(scene.layers[i])) {
+            auto png = pngBytes(*map.map, options.outDir, std::to_string(i) + "-" + map.name);
+            if (!png)
+                return png.error();
+            maps.push_back({map.name, "", std::move(*png)});
+        }
+        input.layerMaps.push_back(std::move(maps));
+    }
+    if (progress)
+        progress(0.3f, "terrain and blade instances of every layer");
+    const GltfSceneDocument doc = buildSceneGlb(input);
+    if (progress)
+        progress(0.7f, "writing");
+    if (auto written = staged.add(glbFileName(loaded.project), doc.glb); !written)
+        return written.error();
+    for (std::size_t i = 0; i < scene.layers.size(); ++i)
+        layers.push_back({scene.layers[i].name, scene.layers[i].liveBlades, doc.instances[i]});
+    return {};
+}
+
 // The out folder: made if missing (with its parents); anything else in its place is an error
 // before any work. `created` says whether it was made here, so a failure can take it back.
 Result<void> prepareOutDir(const fs::path& outDir, bool& created) {
@@ -166,15 +222,19 @@ Result<void> prepareOutDir(const fs::path& outDir, bool& created) {
 }  // namespace
 
 std::string_view exportFormatName(ExportFormat format) {
-    return format == ExportFormat::Raw ? "raw" : "gltf";
+    switch (format) {
+        case ExportFormat::Raw: return "raw";
+        case ExportFormat::Glb: return "glb";
+        case ExportFormat::Gltf: break;
+    }
+    return "gltf";
 }
 
 Result<ExportFormat> parseExportFormat(std::string_view name) {
-    if (name == "gltf")
-        return ExportFormat::Gltf;
-    if (name == "raw")
-        return ExportFormat::Raw;
-    return makeError("", "unknown format \"" + std::string(name) + "\" (gltf, raw)");
+    for (const ExportFormat format : {ExportFormat::Gltf, ExportFormat::Raw, ExportFormat::Glb})
+        if (name == exportFormatName(format))
+            return format;
+    return makeError("", "unknown format \"" + std::string(name) + "\" (gltf, raw, glb)");
 }
 
 std::uint64_t ExportReport::totalBytes() const {
@@ -199,6 +259,8 @@ Result<void> refuseEntriesOverInputs(const LoadedProject& loaded, const ExportOp
     std::vector<std::string> entries;
     if (options.format == ExportFormat::Raw)
         entries.push_back("manifest.json");
+    else if (options.format == ExportFormat::Glb)
+        entries.push_back(glbFileName(loaded.project));
     else
         for (const std::string& stem : layerStems(layerNames))
             entries.push_back(stem + ".gltf");
@@ -242,8 +304,14 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
             layerNames.push_back(layer.name);
         const std::vector<std::string> stems = layerStems(layerNames);
         json layers = json::array();
+        if (options.format == ExportFormat::Glb) {
+            if (auto written = stageGlb(staged, loaded, scene, options, progress, report.layers);
+                !written)
+                return written.error();
+        }
         const auto layerCount = static_cast<float>(std::max<std::size_t>(scene.layers.size(), 1));
-        for (std::size_t i = 0; i < scene.layers.size(); ++i) {
+        for (std::size_t i = 0; i < scene.layers.size() && options.format != ExportFormat::Glb;
+             ++i) {
             const LayerField& layer = scene.layers[i];
             const auto step = [&](float within, const char* stage) {
                 if (progress)

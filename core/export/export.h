@@ -1,6 +1,6 @@
 // Exporting a grown grass field for other runtimes and tools (issue 8): one glTF 2.0 file per
 // layer (blades as EXT_mesh_gpu_instancing instances of a unit blade mesh, the terrain, the
-// painted maps as PNG), or the raw GPU buffers (the 64-byte blades of SPEC §1, the patch table,
+// painted maps as PNG), every layer in one .glb with one terrain (issue 25), or the raw GPU buffers (the 64-byte blades of SPEC §1, the patch table,
 // the maps as float32) with a manifest.json describing them. Units are metres, +Y is up in a
 // right-handed frame, angles are radians. Layout details and how to consume them: docs/export.md.
 // Pure C++ (no GL), so the CLI and the editor's File menu share it.
@@ -19,7 +19,7 @@
 
 namespace grass::core {
 
-enum class ExportFormat { Gltf, Raw };
+enum class ExportFormat { Gltf, Raw, Glb };
 
 // LOD N keeps every 2^N-th live blade (blade_instances.h); 8 keeps one blade in 256, already
 // far below anything a runtime would draw as a field.
@@ -27,14 +27,14 @@ inline constexpr int MAX_EXPORT_LOD = 8;
 
 struct ExportOptions {
     ExportFormat format = ExportFormat::Gltf;
-    int lod = 0;  // glTF only: raw is the exact blade buffer, so it must be 0
+    int lod = 0;  // glTF and glb only: raw is the exact blade buffer, so it must be 0
     std::filesystem::path outDir;
     bool operator==(const ExportOptions&) const = default;
 };
 
-// "gltf" | "raw"
+// "gltf" | "raw" | "glb"
 std::string_view exportFormatName(ExportFormat format);
-// Error (no path; the caller names the option): `unknown format "fbx" (gltf, raw)`.
+// Error (no path; the caller names the option): `unknown format "fbx" (gltf, raw, glb)`.
 Result<ExportFormat> parseExportFormat(std::string_view name);
 
 struct ExportedFile {

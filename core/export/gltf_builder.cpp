@@ -30,6 +30,17 @@ const char* accessorType(int components) {
     }
 }
 
+void appendU32(std::string& out, std::uint32_t value) {
+    for (int i = 0; i < 4; ++i)
+        out.push_back(static_cast<char>((value >> (8 * i)) & 0xffu));
+}
+
+// Empty top-level arrays are forbidden (spec): a field with nothing in some of them.
+void eraseEmptyArrays(nlohmann::json& document) {
+    for (auto it = document.begin(); it != document.end();)
+        it = it->is_array() && it->empty() ? document.erase(it) : std::next(it);
+}
+
 }  // namespace
 
 GltfBuilder::GltfBuilder() {
@@ -88,6 +99,11 @@ int GltfBuilder::addIndices(std::span<const std::uint32_t> indices) {
     return static_cast<int>(mDocument["accessors"].size()) - 1;
 }
 
+int GltfBuilder::addBytes(std::string_view bytes) {
+    GRASS_ASSERT(!bytes.empty());
+    return addView(bytes.data(), bytes.size(), GltfTarget::None);
+}
+
 const std::string& GltfBuilder::finishBinary() {
     mBinary.resize((mBinary.size() + 3) / 4 * 4, '\0');
     return mBinary;
@@ -98,9 +114,34 @@ std::string GltfBuilder::finishJson(const std::string& binUri) {
     if (!mBinary.empty())
         mDocument["buffers"] = {{{"uri", binUri}, {"byteLength", mBinary.size()}}};
     // The spec forbids empty top-level arrays (a layer with no blades on an empty mesh).
-    for (auto it = mDocument.begin(); it != mDocument.end();)
-        it = it->is_array() && it->empty() ? mDocument.erase(it) : std::next(it);
+    eraseEmptyArrays(mDocument);
     return mDocument.dump(1) + "\n";
+}
+
+std::string GltfBuilder::finishGlb() {
+    finishBinary();
+    if (!mBinary.empty())
+        mDocument["buffers"] = {{{"byteLength", mBinary.size()}}};
+    eraseEmptyArrays(mDocument);
+    std::string json = mDocument.dump();
+    json.resize((json.size() + 3) / 4 * 4, ' ');
+    const std::size_t total =
+        12 + 8 + json.size() + (mBinary.empty() ? 0 : 8 + mBinary.size());
+    GRASS_ASSERT(total <= std::numeric_limits<std::uint32_t>::max());
+    std::string glb;
+    glb.reserve(total);
+    appendU32(glb, 0x46546C67u);  // "glTF"
+    appendU32(glb, 2u);
+    appendU32(glb, static_cast<std::uint32_t>(total));
+    appendU32(glb, static_cast<std::uint32_t>(json.size()));
+    appendU32(glb, 0x4E4F534Au);  // "JSON"
+    glb += json;
+    if (!mBinary.empty()) {
+        appendU32(glb, static_cast<std::uint32_t>(mBinary.size()));
+        appendU32(glb, 0x004E4942u);  // "BIN\0"
+        glb += mBinary;
+    }
+    return glb;
 }
 
 }  // namespace grass::core

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -25,12 +26,17 @@ public:
     // Returns the accessor index.
     int addFloats(std::span<const float> values, int components, GltfTarget target);
     int addIndices(std::span<const std::uint32_t> indices);
+    // Raw bytes in a view of their own (an embedded image); returns the bufferView index.
+    int addBytes(std::string_view bytes);
 
     nlohmann::json& document() { return mDocument; }
     // Pads the buffer to its final length (a multiple of 4) and returns it: what the .bin holds.
     const std::string& finishBinary();
     // Adds the buffer (uri = the .bin file next to the .gltf) and returns the finished JSON.
     std::string finishJson(const std::string& binUri);
+    // The document and its buffer as one binary glTF (.glb, spec §4.4): a 12-byte header, the
+    // JSON chunk padded with spaces and the BIN chunk padded with zeros to 4 bytes.
+    std::string finishGlb();
     const std::string& binary() const { return mBinary; }
 
 private:

@@ -222,105 +222,157 @@ UnitBladeMesh unitBladeMesh(BladeShape shape, float tipStart, int segments, floa
     return mesh;
 }
 
+namespace {
+
+// A document under construction: the builder, and the top-level nodes of its one scene.
+struct DocumentParts {
+    GltfBuilder builder;
+    std::vector<int> topNodes;
+
+    DocumentParts() {
+        json& doc = builder.document();
+        doc["asset"] = {{"version", "2.0"}, {"generator", "grass export"}};
+        doc["materials"] = json::array();
+        doc["meshes"] = json::array();
+        doc["nodes"] = json::array();
+    }
+    json& doc() { return builder.document(); }
+    int addNode(json node) {
+        doc()["nodes"].push_back(std::move(node));
+        return static_cast<int>(doc()["nodes"].size()) - 1;
+    }
+    int addMaterial(json material) {
+        doc()["materials"].push_back(std::move(material));
+        return static_cast<int>(doc()["materials"].size()) - 1;
+    }
+    int addMesh(json mesh) {
+        doc()["meshes"].push_back(std::move(mesh));
+        return static_cast<int>(doc()["meshes"].size()) - 1;
+    }
+    void finishScene(const std::string& name) {
+        json sceneJson = {{"name", name}};
+        if (!topNodes.empty())
+            sceneJson["nodes"] = topNodes;
+        doc()["scenes"] = json::array({sceneJson});
+        doc()["scene"] = 0;
+    }
+};
+
+// The terrain node, with the project's ground colour.
+void addTerrain(DocumentParts& parts, const SurfaceMesh& mesh, glm::vec3 groundColor) {
+    const int material = parts.addMaterial({{"name", "terrain"},
+                                            {"pbrMetallicRoughness",
+                                             {{"baseColorFactor", colorFactor(groundColor)},
+                                              {"metallicFactor", 0.0},
+                                              {"roughnessFactor", 1.0}}}});
+    if (mesh.n_faces() == 0)
+        return;
+    const int meshIndex = parts.addMesh(terrainMesh(parts.builder, mesh, material));
+    parts.topNodes.push_back(parts.addNode({{"name", "terrain"}, {"mesh", meshIndex}}));
+}
+
+// The maps as images and textures named `prefix` + the map: by file name, or embedded.
+void addMaps(DocumentParts& parts, const std::vector<GltfMapImage>& maps, const std::string& prefix) {
+    if (maps.empty())
+        return;
+    json& doc = parts.doc();
+    if (!doc.contains("images")) {
+        doc["images"] = json::array();
+        doc["textures"] = json::array();
+    }
+    for (const GltfMapImage& map : maps) {
+        json image = {{"name", prefix + map.map}};
+        if (map.png.empty())
+            image["uri"] = map.uri;
+        else
+            image.update({{"bufferView", parts.builder.addBytes(map.png)}, {"mimeType", "image/png"}});
+        doc["images"].push_back(image);
+        doc["textures"].push_back({{"name", prefix + map.map}, {"source", doc["images"].size() - 1}});
+    }
+}
+
+// The layer's blades (header comment): a group node "<layer> blades" with one instancing child
+// per cell and lean bin. Returns the instances written.
+std::size_t addLayerBlades(DocumentParts& parts, const LayerField& layer, int lod, int segments) {
+    const std::vector<BladeInstance> instances = bladeInstances(layer, lod);
+    if (instances.empty())
+        return 0;
+    GltfBuilder& builder = parts.builder;
+    // White: the colour comes from the vertices (root to tip) times the instance (_COLOR_0).
+    const int material = parts.addMaterial({{"name", layer.name + " blade"},
+                                            {"doubleSided", true},
+                                            {"pbrMetallicRoughness",
+                                             {{"baseColorFactor", colorFactor(glm::vec3(1.0f))},
+                                              {"metallicFactor", 0.0},
+                                              {"roughnessFactor", 0.7}}}});
+    const glm::vec3 share = rootShare(layer, instances);
+    // One pre-bent unit blade per lean bin in use (blade_instances.h).
+    std::map<int, int> meshOfBin;
+    for (const BladeInstance& b : instances)
+        meshOfBin.emplace(b.leanBin, -1);
+    for (auto& [bin, meshIndex] : meshOfBin) {
+        const UnitBladeMesh blade = unitBladeMesh(layer.shape, layer.tipStart, segments, leanBinRad(bin));
+        std::vector<float> colors;
+        for (const float v : blade.heights) {
+            const glm::vec3 c = glm::mix(share, glm::vec3(1.0f), v);
+            push(colors, {c.r, c.g, c.b});
+        }
+        const json attributes = {
+            {"POSITION", builder.addFloats(blade.positions, 3, GltfTarget::ArrayBuffer)},
+            {"NORMAL", builder.addFloats(blade.normals, 3, GltfTarget::ArrayBuffer)},
+            {"COLOR_0", builder.addFloats(colors, 3, GltfTarget::ArrayBuffer)}};
+        const int indices = builder.addIndices(blade.indices);
+        const int degrees =
+            static_cast<int>(std::lround(leanBinRad(bin) * 180.0f / std::numbers::pi_v<float>));
+        meshIndex = parts.addMesh(
+            {{"name", layer.name + " unit blade, lean " + std::to_string(degrees) + " deg"},
+             {"primitives", {meshPrimitive(attributes, indices, material)}}});
+    }
+    json children = json::array();
+    for (const InstanceGroup& group : groupInstances(instances))
+        children.push_back(parts.addNode(
+            {{"name", layer.name + " blades cell " + std::to_string(group.cell) + " lean " +
+                          std::to_string(group.bin)},
+             {"mesh", meshOfBin.at(group.bin)},
+             {"extensions",
+              {{"EXT_mesh_gpu_instancing",
+                {{"attributes", instanceAttributes(builder, instances, group.members)}}}}}}));
+    parts.topNodes.push_back(parts.addNode({{"name", layer.name + " blades"}, {"children", children}}));
+    parts.doc()["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+    return instances.size();
+}
+
+}  // namespace
+
 GltfLayerDocument buildLayerGltf(const GltfLayerInput& input) {
     GRASS_ASSERT(input.scene && input.layer < input.scene->layers.size());
     const Scene& scene = *input.scene;
     const LayerField& layer = scene.layers[input.layer];
-    GltfBuilder builder;
-    json& doc = builder.document();
-    doc["asset"] = {{"version", "2.0"}, {"generator", "grass export"}};
-    doc["materials"] = json::array();
-    doc["meshes"] = json::array();
-    doc["nodes"] = json::array();
-
-    json terrainMaterial = {{"name", "terrain"},
-                            {"pbrMetallicRoughness",
-                             {{"baseColorFactor", colorFactor(input.groundColor)},
-                              {"metallicFactor", 0.0},
-                              {"roughnessFactor", 1.0}}}};
-    if (!input.maps.empty()) {
-        doc["images"] = json::array();
-        doc["textures"] = json::array();
-        for (const GltfMapImage& map : input.maps) {
-            doc["images"].push_back({{"name", map.map}, {"uri", map.uri}});
-            doc["textures"].push_back({{"name", map.map}, {"source", doc["images"].size() - 1}});
-        }
-    }
-    doc["materials"].push_back(terrainMaterial);
-    if (scene.mesh.n_faces() > 0) {
-        doc["meshes"].push_back(terrainMesh(builder, scene.mesh, 0));
-        doc["nodes"].push_back({{"name", "terrain"}, {"mesh", doc["meshes"].size() - 1}});
-    }
-
-    const std::vector<BladeInstance> instances = bladeInstances(layer, input.lod);
-    std::vector<int> topNodes;
-    for (std::size_t n = 0; n < doc["nodes"].size(); ++n)
-        topNodes.push_back(int(n));
-    if (!instances.empty()) {
-        // White: the colour comes from the vertices (root to tip) times the instance (_COLOR_0).
-        doc["materials"].push_back({{"name", layer.name + " blade"},
-                                    {"doubleSided", true},
-                                    {"pbrMetallicRoughness",
-                                     {{"baseColorFactor", colorFactor(glm::vec3(1.0f))},
-                                      {"metallicFactor", 0.0},
-                                      {"roughnessFactor", 0.7}}}});
-        const int material = static_cast<int>(doc["materials"].size()) - 1;
-        const glm::vec3 share = rootShare(layer, instances);
-        // One pre-bent unit blade per lean bin in use (blade_instances.h).
-        std::map<int, int> meshOfBin;
-        for (const BladeInstance& b : instances)
-            meshOfBin.emplace(b.leanBin, -1);
-        for (auto& [bin, meshIndex] : meshOfBin) {
-            const UnitBladeMesh blade =
-                unitBladeMesh(layer.shape, layer.tipStart, input.segments, leanBinRad(bin));
-            std::vector<float> colors;
-            for (const float v : blade.heights) {
-                const glm::vec3 c = glm::mix(share, glm::vec3(1.0f), v);
-                push(colors, {c.r, c.g, c.b});
-            }
-            const json attributes = {
-                {"POSITION", builder.addFloats(blade.positions, 3, GltfTarget::ArrayBuffer)},
-                {"NORMAL", builder.addFloats(blade.normals, 3, GltfTarget::ArrayBuffer)},
-                {"COLOR_0", builder.addFloats(colors, 3, GltfTarget::ArrayBuffer)}};
-            const int indices = builder.addIndices(blade.indices);
-            doc["meshes"].push_back(
-                {{"name", layer.name + " unit blade, lean " +
-                              std::to_string(int(std::lround(leanBinRad(bin) * 180.0f /
-                                                             std::numbers::pi_v<float>))) +
-                              " deg"},
-                 {"primitives", {meshPrimitive(attributes, indices, material)}}});
-            meshIndex = static_cast<int>(doc["meshes"].size()) - 1;
-        }
-        // "<layer> blades" holds one child per cell and lean bin.
-        json children = json::array();
-        for (const InstanceGroup& group : groupInstances(instances)) {
-            doc["nodes"].push_back(
-                {{"name", layer.name + " blades cell " + std::to_string(group.cell) + " lean " +
-                              std::to_string(group.bin)},
-                 {"mesh", meshOfBin.at(group.bin)},
-                 {"extensions",
-                  {{"EXT_mesh_gpu_instancing",
-                    {{"attributes", instanceAttributes(builder, instances, group.members)}}}}}});
-            children.push_back(doc["nodes"].size() - 1);
-        }
-        doc["nodes"].push_back({{"name", layer.name + " blades"}, {"children", children}});
-        topNodes.push_back(static_cast<int>(doc["nodes"].size()) - 1);
-        doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
-    }
-    json sceneNodes = json::array();
-    for (const int n : topNodes)
-        sceneNodes.push_back(n);
-    json sceneJson = {{"name", layer.name}};
-    if (!sceneNodes.empty())
-        sceneJson["nodes"] = sceneNodes;
-    doc["scenes"] = json::array({sceneJson});
-    doc["scene"] = 0;
-
+    DocumentParts parts;
+    addMaps(parts, input.maps, "");
+    addTerrain(parts, scene.mesh, input.groundColor);
     GltfLayerDocument out;
-    out.instances = instances.size();
-    out.binary = builder.finishBinary();
+    out.instances = addLayerBlades(parts, layer, input.lod, input.segments);
+    parts.finishScene(layer.name);
+    out.binary = parts.builder.finishBinary();
     out.binUri = contentAddressedName(input.binStem, contentHash(out.binary), ".bin");
-    out.json = builder.finishJson(out.binUri);
+    out.json = parts.builder.finishJson(out.binUri);
+    return out;
+}
+
+GltfSceneDocument buildSceneGlb(const GltfSceneInput& input) {
+    GRASS_ASSERT(input.scene && input.layerMaps.size() == input.scene->layers.size());
+    const Scene& scene = *input.scene;
+    DocumentParts parts;
+    addTerrain(parts, scene.mesh, input.groundColor);
+    GltfSceneDocument out;
+    for (std::size_t i = 0; i < scene.layers.size(); ++i) {
+        // Map names carry the layer's: every layer's maps live in the one file.
+        addMaps(parts, input.layerMaps[i], scene.layers[i].name + " ");
+        out.instances.push_back(addLayerBlades(parts, scene.layers[i], input.lod, input.segments));
+    }
+    parts.finishScene(input.name);
+    out.glb = parts.builder.finishGlb();
     return out;
 }
 

@@ -23,6 +23,7 @@ namespace grass::core {
 struct GltfMapImage {
     std::string map;
     std::string uri;
+    std::string png;  // the PNG's bytes, embedded instead of the uri when not empty (.glb)
 };
 
 struct GltfLayerDocument {
@@ -45,6 +46,25 @@ struct GltfLayerInput {
 };
 
 GltfLayerDocument buildLayerGltf(const GltfLayerInput& input);
+
+// Every layer in one binary glTF (`--format glb`, issue 25): one terrain shared by the layers,
+// each layer's "<layer> blades" group as above, the maps embedded as PNG images named
+// "<layer> density" etc.
+struct GltfSceneInput {
+    const Scene* scene = nullptr;
+    std::string name;  // the glTF scene's name: the project's
+    int lod = 0;
+    int segments = 8;
+    glm::vec3 groundColor{0.3f, 0.24f, 0.16f};
+    std::vector<std::vector<GltfMapImage>> layerMaps;  // per layer, with their PNG bytes
+};
+
+struct GltfSceneDocument {
+    std::string glb;
+    std::vector<std::size_t> instances;  // per layer
+};
+
+GltfSceneDocument buildSceneGlb(const GltfSceneInput& input);
 
 // The unit blade of `shape` (SPEC §7) as triangles: rows at the Bézier parameter v = i/segments
 // of the resting blade of height 1 leaned by `leanRad` towards −Z (blade_instances.h; a

@@ -14,7 +14,7 @@ void startExport(EditorState& s) {
         return;
     core::ExportOptions options;
     options.format = core::ExportFormat(s.transient.exportFormat);
-    options.lod = options.format == core::ExportFormat::Gltf ? s.transient.exportLod : 0;
+    options.lod = options.format != core::ExportFormat::Raw ? s.transient.exportLod : 0;
     std::filesystem::path dir(s.transient.exportDir);
     if (dir.is_relative() && !s.doc.loaded.folder.empty())
         dir = s.doc.loaded.folder / dir;
@@ -55,10 +55,12 @@ void exportWindow(ui::Context& ctx, EditorState& s) {
             }
             ui.label("Folder (a relative path is inside the project folder):");
             ui::textEdit(ui, "##exportdir", s.transient.exportDir, ui.availableWidth() - 8.0f);
-            static constexpr std::array<const char*, 2> FORMATS{"glTF (EXT_mesh_gpu_instancing)",
-                                                                "raw GPU buffers"};
+            // In core::ExportFormat's order.
+            static constexpr std::array<const char*, 3> FORMATS{
+                "glTF per layer (EXT_mesh_gpu_instancing)", "raw GPU buffers",
+                "one .glb, every layer"};
             ui.comboBox("format", s.transient.exportFormat, FORMATS);
-            if (s.transient.exportFormat == int(core::ExportFormat::Gltf))
+            if (s.transient.exportFormat != int(core::ExportFormat::Raw))
                 ui.slider("LOD (keep 1 in 2^N)", s.transient.exportLod, 0, core::MAX_EXPORT_LOD);
             ui.horizontal([&](ui::Ui& row) {
                 if (row.button("Export").clicked() && !s.transient.exportDir.empty())

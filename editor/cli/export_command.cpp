@@ -35,17 +35,19 @@ struct GrownScene {
 
 std::optional<int> parseExportArgs(const std::vector<std::string>& argv, ExportArgs& args) {
     ArgParser parser(
-        "grass export <project-dir|project.json> --out DIR [--format gltf|raw] [--lod N]",
+        "grass export <project-dir|project.json> --out DIR [--format gltf|raw|glb] [--lod N]",
         "Grows the project's grass and writes it for other runtimes into DIR (created if "
         "missing; files are written under temporary names and renamed into place only when "
         "all are done). gltf: per layer <layer>.gltf + .bin (+ map PNGs): the terrain and every "
-        "blade as an EXT_mesh_gpu_instancing instance of a unit blade. raw: per layer the exact "
+        "blade as an EXT_mesh_gpu_instancing instance of a pre-bent unit blade, split into cells. "
+        "glb: every layer in one <project>.glb with one shared terrain and the maps embedded. "
+        "raw: per layer the exact "
         "64-byte blade records the renderer uploads, the patch table, the maps as float32, and "
         "manifest.json. Progress goes to stderr. See docs/export.md.");
     addProjectArgument(parser, &args.project, true);
     parser.text("--out", "DIR", "the folder to write into (required)", &args.out);
-    parser.text("--format", "gltf|raw", "what to write (default gltf)", &args.format);
-    parser.integer("--lod", "gltf only: keep every 2^N-th blade, each 2^N times wider; 0 keeps all",
+    parser.text("--format", "gltf|raw|glb", "what to write (default gltf)", &args.format);
+    parser.integer("--lod", "gltf and glb only: keep every 2^N-th blade, each 2^N times wider; 0 keeps all",
                    &args.lod, 0, core::MAX_EXPORT_LOD);
     addPresetOption(parser, &args.preset);
     return parseArguments(parser, argv, "export");
@@ -63,7 +65,7 @@ Result<core::ExportFormat> checkArgs(const ExportArgs& args) {
                              std::string(core::exportFormatName(*format)));
     if (*format == core::ExportFormat::Raw && args.lod != 0)
         return makeError("--lod",
-                         "applies to --format gltf only (raw holds every blade "
+                         "applies to --format gltf and glb only (raw holds every blade "
                          "exactly); leave --lod out");
     return *format;
 }
@@ -124,7 +126,7 @@ void printExportReport(const core::LoadedProject& loaded, const core::ExportOpti
     for (const auto& layer : report.layers)
         std::printf("layer \"%s\": %zu live blades, %zu %s\n", layer.name.c_str(), layer.liveBlades,
                     layer.instances,
-                    options.format == core::ExportFormat::Gltf ? "instances" : "blade slots");
+                    options.format != core::ExportFormat::Raw ? "instances" : "blade slots");
     for (const auto& file : report.files)
         std::printf("wrote %s (%llu bytes)\n", file.path.c_str(),
                     static_cast<unsigned long long>(file.bytes));

@@ -25,7 +25,7 @@ grass_cli_test(export_tiny_raw OK
        --format raw)
 
 # Bad command lines: one line naming the option, nothing written.
-grass_cli_test(export_unknown_format ERROR "--format: unknown format \"fbx\" (gltf, raw)"
+grass_cli_test(export_unknown_format ERROR "--format: unknown format \"fbx\" (gltf, raw, glb)"
     --absent ${GRASS_EXPORT_TMP}/fbx
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/fbx --format fbx)
 grass_cli_test(export_lod_out_of_range ERROR "--lod" --also "99"
@@ -33,7 +33,7 @@ grass_cli_test(export_lod_out_of_range ERROR "--lod" --also "99"
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/lod99 --lod 99)
 grass_cli_test(export_lod_not_a_number ERROR "--lod" --also "'x'"
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/lodx --lod x)
-grass_cli_test(export_lod_with_raw ERROR "--lod: applies to --format gltf only"
+grass_cli_test(export_lod_with_raw ERROR "--lod: applies to --format gltf and glb only"
     --absent ${GRASS_EXPORT_TMP}/raw-lod
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/raw-lod
        --format raw --lod 2)
@@ -61,6 +61,7 @@ grass_export_validate_test(tiny ${GRASS_CLI_PROJECTS}/tiny)
 grass_export_validate_test(growth_tiny_lod2 ${GRASS_CLI_PROJECTS}/growth_tiny --lod 2)
 grass_export_validate_test(rock ${GRASS_CLI_PROJECTS}/rock)
 grass_export_validate_test(meadow ${GRASS_SOURCE_DIR}/projects/meadow)
+grass_export_validate_test(meadow_glb ${GRASS_SOURCE_DIR}/projects/meadow --format glb)
 
 # A stock third-party loader (three.js' GLTFLoader) draws the meadow's export as the field at
 # rest: every blade an instance, tips and colours as the raw export's exact blades (issue 25).
@@ -69,3 +70,8 @@ add_test(NAME cli.export_stock_loader_meadow
         ${GRASS_BIN} ${GRASS_VALIDATOR_DIR} ${GRASS_EXPORT_TMP}/stock-meadow
         ${GRASS_SOURCE_DIR}/projects/meadow)
 set_tests_properties(cli.export_stock_loader_meadow PROPERTIES LABELS "cli;export" TIMEOUT 300)
+add_test(NAME cli.export_stock_loader_meadow_glb
+    COMMAND ${GRASS_BASH} ${CMAKE_CURRENT_SOURCE_DIR}/export/export_stock_loader.sh
+        ${GRASS_BIN} ${GRASS_VALIDATOR_DIR} ${GRASS_EXPORT_TMP}/stock-meadow-glb
+        ${GRASS_SOURCE_DIR}/projects/meadow glb)
+set_tests_properties(cli.export_stock_loader_meadow_glb PROPERTIES LABELS "cli;export" TIMEOUT 300)

@@ -25,9 +25,9 @@ end=$(date +%s%N)
 echo "export took $(((end - start) / 1000000)) ms"
 
 shopt -s nullglob
-files=("$outDir"/*.gltf)
+files=("$outDir"/*.gltf "$outDir"/*.glb)
 if [ ${#files[@]} -eq 0 ]; then
-    echo "FAIL: no .gltf file in $outDir"
+    echo "FAIL: no .gltf or .glb file in $outDir"
     exit 1
 fi
 status=0

@@ -2,7 +2,7 @@
 // installed by install_validator.sh), which honours EXT_mesh_gpu_instancing's TRANSLATION,
 // ROTATION, SCALE and _COLOR_0 — and checks what it would draw against the exact blades of the
 // same project's raw export (issue 25):
-//   node stock_loader_three.mjs LAYER.gltf RAW_DIR
+//   node stock_loader_three.mjs LAYER.gltf|PROJECT.glb RAW_DIR   (the first layer is checked)
 // For every live blade: an instance at its root, the instance's mesh tip (world space, through
 // the node hierarchy) within 10 % of the blade's height of the blade's tip in the median and
 // 5 % at worst, its colour at the tip (instance colour × vertex colour) the blade's tip colour
@@ -34,15 +34,21 @@ if (!modules || !fs.existsSync(path.join(modules, 'three/package.json'))) {
 const THREE = await import(path.join(modules, 'three/build/three.module.js'));
 const { GLTFLoader } = await import(path.join(modules, 'three/examples/jsm/loaders/GLTFLoader.js'));
 
-// The loader fetches the buffer; Node's fetch reads data: URLs but not files, so the buffer goes
-// in as one (the document is otherwise as exported).
-const json = JSON.parse(fs.readFileSync(gltfFile, 'utf8'));
-for (const buffer of json.buffers) {
-    const bytes = fs.readFileSync(path.join(path.dirname(gltfFile), buffer.uri));
-    buffer.uri = 'data:application/octet-stream;base64,' + bytes.toString('base64');
+// A .glb goes in as it is. A .gltf's loader fetches the buffer; Node's fetch reads data: URLs
+// but not files, so the buffer goes in as one (the document is otherwise as exported).
+let input;
+if (gltfFile.endsWith('.glb')) {
+    const bytes = fs.readFileSync(gltfFile);
+    input = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
+} else {
+    const json = JSON.parse(fs.readFileSync(gltfFile, 'utf8'));
+    for (const buffer of json.buffers) {
+        const bytes = fs.readFileSync(path.join(path.dirname(gltfFile), buffer.uri));
+        buffer.uri = 'data:application/octet-stream;base64,' + bytes.toString('base64');
+    }
+    input = JSON.stringify(json);
 }
-const gltf = await new Promise((resolve, reject) =>
-    new GLTFLoader().parse(JSON.stringify(json), '', resolve, reject));
+const gltf = await new Promise((resolve, reject) => new GLTFLoader().parse(input, '', resolve, reject));
 gltf.scene.updateMatrixWorld(true);
 
 // The exact blades: 64-byte records (v0, θ) (v1, h) (v2, w) (up, s), and the wilt per slot.

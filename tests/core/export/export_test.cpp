@@ -19,6 +19,7 @@
 #include "export/blade_instances.h"
 #include "export/gltf_export.h"
 #include "export/raw_export.h"
+#include "maps/map_image.h"
 #include "support/test_paths.h"
 #include "util/atomic_file.h"
 #include "util/rng.h"
@@ -274,6 +275,58 @@ TEST(Export, StockLoadersDrawTheLeanAndTheColours) {
     EXPECT_LE(worstRootColour, 0.08f);
     // Culling-friendly: more than one instancing node.
     EXPECT_GT(gltf.instancingNodes, 1u);
+}
+
+// --format glb (issue 25): one file, one terrain shared by every layer, each layer's blades
+// under its own group, the maps embedded as PNG images named after their layer.
+TEST(Export, GlbHoldsEveryLayerOverOneTerrain) {
+    const fs::path dir = test::scratchDir("export_glb");
+    std::ofstream(dir / "project.json") << R"({"format": "grass-project", "version": 1,
+        "name": "two layers", "mesh": {"procedural": "plane", "size": 2.0, "resolution": 4},
+        "layers": [{"name": "grass", "density": 40.0, "map_resolution": [16, 16],
+                    "density_map": "maps/d.png", "growth": {"enabled": true}},
+                   {"name": "flowers", "density": 10.0, "shape": "dandelion"}]})";
+    fs::create_directories(dir / "maps");
+    MapImage map;
+    map.width = map.height = 16;
+    map.texels.assign(256, 0.7f);
+    ASSERT_TRUE(saveMapImage(map, dir / "maps/d.png", MapSampleFormat::UInt16).ok());
+    const Built built = buildProjectAt(dir / "project.json");
+    ASSERT_EQ(built.scene.layers.size(), 2u);
+    auto report = exportProject(built.loaded, built.scene, options(ExportFormat::Glb, 0, dir / "out"), {});
+    ASSERT_TRUE(report.ok()) << report.error().str();
+    ASSERT_EQ(report->files.size(), 1u);
+    EXPECT_EQ(report->files[0].path.filename(), "two_layers.glb");
+
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skipImage, nullptr);
+    std::string error, warning;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, (dir / "out/two_layers.glb").string()))
+        << error;
+    EXPECT_EQ(std::count_if(model.meshes.begin(), model.meshes.end(),
+                            [](const tinygltf::Mesh& m) { return m.name == "terrain"; }),
+              1);
+    std::map<std::string, std::size_t> instancesByLayer;
+    for (const tinygltf::Node& node : model.nodes)
+        for (const std::string layer : {"grass", "flowers"})
+            if (node.name == layer + " blades")
+                for (const int child : node.children) {
+                    const tinygltf::Node& cell = model.nodes.at(std::size_t(child));
+                    const int k = cell.extensions.at("EXT_mesh_gpu_instancing")
+                                      .Get("attributes").Get("TRANSLATION").GetNumberAsInt();
+                    instancesByLayer[layer] += model.accessors.at(std::size_t(k)).count;
+                }
+    EXPECT_EQ(instancesByLayer["grass"], built.scene.layers[0].liveBlades);
+    EXPECT_EQ(instancesByLayer["flowers"], built.scene.layers[1].liveBlades);
+    ASSERT_EQ(report->layers.size(), 2u);
+    EXPECT_EQ(report->layers[1].instances, built.scene.layers[1].liveBlades);
+    // The grass layer's density map, embedded (no file next to the .glb).
+    ASSERT_EQ(model.images.size(), 1u);
+    EXPECT_EQ(model.images[0].name, "grass density");
+    EXPECT_EQ(model.images[0].mimeType, "image/png");
+    EXPECT_GE(model.images[0].bufferView, 0);
+    EXPECT_TRUE(model.images[0].uri.empty());
 }
 
 TEST(Export, LodKeepsEveryPowerOfTwoBladeWidened) {
