@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 
 #include "util/assert.h"
 
@@ -65,6 +67,29 @@ std::vector<BladeInstance> bladeInstances(const LayerField& layer, int lod) {
         instances.push_back(instance);
     }
     return instances;
+}
+
+std::vector<InstanceGroup> groupInstances(const std::vector<BladeInstance>& instances) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const BladeInstance& b : instances) {
+        lo = glm::min(lo, b.translation);
+        hi = glm::max(hi, b.translation);
+    }
+    const glm::vec3 extent = hi - lo;
+    const float edge = std::max(std::max(extent.x, std::max(extent.y, extent.z)) /
+                                    float(CELLS_PER_AXIS),
+                                1e-3f);
+    std::map<std::pair<int, int>, std::vector<std::uint32_t>> groups;
+    for (std::uint32_t i = 0; i < instances.size(); ++i) {
+        const glm::ivec3 c = glm::clamp(glm::ivec3(glm::floor((instances[i].translation - lo) / edge)),
+                                        glm::ivec3(0), glm::ivec3(CELLS_PER_AXIS - 1));
+        const int cell = (c.z * CELLS_PER_AXIS + c.y) * CELLS_PER_AXIS + c.x;
+        groups[{cell, instances[i].leanBin}].push_back(i);
+    }
+    std::vector<InstanceGroup> out;
+    for (auto& [key, members] : groups)
+        out.push_back({key.first, key.second, std::move(members)});
+    return out;
 }
 
 }  // namespace grass::core

@@ -67,4 +67,18 @@ glm::quat bladeRotation(glm::vec3 up, float theta);
 // The instances of `layer` at `lod` (0..MAX_EXPORT_LOD), in patch order.
 std::vector<BladeInstance> bladeInstances(const LayerField& layer, int lod);
 
+// Instances are split into the cells of a grid of CELLS_PER_AXIS³ over their roots' box, one
+// node per cell (and lean bin) in an export, so an engine can cull them (issue 25); the cells
+// are cubes, so a flat field gets CELLS_PER_AXIS² of them over its longer side.
+inline constexpr int CELLS_PER_AXIS = 4;
+
+struct InstanceGroup {
+    int cell = 0;  // (z · CELLS_PER_AXIS + y) · CELLS_PER_AXIS + x
+    int bin = 0;   // lean bin
+    std::vector<std::uint32_t> members;  // indices into the instances, ascending
+};
+
+// The non-empty (cell, lean bin) groups of `instances`, ordered by cell then bin.
+std::vector<InstanceGroup> groupInstances(const std::vector<BladeInstance>& instances);
+
 }  // namespace grass::core

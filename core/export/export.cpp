@@ -6,6 +6,7 @@
 
 #include "export/content_names.h"
 #include "export/gltf_export.h"
+#include "export/merged_blades.h"
 #include "export/raw_export.h"
 #include "export/staged_files.h"
 #include "project/project_inputs.h"
@@ -57,9 +58,11 @@ std::vector<std::string> layerStems(const std::vector<std::string>& layerNames) 
     return stems;
 }
 
-// The .glb's name: the project's, file-safe ("scene" for a project without one).
-std::string glbFileName(const Project& project) {
-    return (project.name.empty() ? std::string("scene") : fileSafeName(project.name)) + ".glb";
+// The .glb's name: the project's, file-safe ("scene" for a project without one);
+// "<name>-merged.glb" for --format mesh.
+std::string glbFileName(const Project& project, ExportFormat format) {
+    return (project.name.empty() ? std::string("scene") : fileSafeName(project.name)) +
+           (format == ExportFormat::Mesh ? "-merged.glb" : ".glb");
 }
 
 json colorJson(glm::vec3 color) {
@@ -172,6 +175,27 @@ Result<void> stageGlb(StagedFiles& staged, const LoadedProject& loaded, const Sc
     input.lod = options.lod;
     input.segments = loaded.project.render.stripSegments;
     input.groundColor = loaded.project.render.groundColor;
+    input.merged = options.format == ExportFormat::Mesh;
+    if (input.merged) {
+        // Refused before any work: a merged field over the budget, with the LOD that fits.
+        const auto triangles = [&](int lod) {
+            std::size_t sum = 0;
+            for (const LayerField& layer : scene.layers)
+                sum += mergedBladeTriangles(layer, lod, input.segments);
+            return sum;
+        };
+        const std::size_t budget = options.maxMergedTriangles;
+        if (const std::size_t count = triangles(options.lod); count > budget) {
+            int fits = options.lod;
+            while (fits < MAX_EXPORT_LOD && triangles(fits) > budget)
+                ++fits;
+            return makeError("lod", "the merged blades would be " + std::to_string(count) +
+                                        " triangles, over the " +
+                                        std::to_string(budget) +
+                                        " a viewer is sure to draw: give --lod " +
+                                        std::to_string(fits) + " or more");
+        }
+    }
     for (std::size_t i = 0; i < scene.layers.size(); ++i) {
         if (progress)
             progress(0.3f * float(i) / float(scene.layers.size()),
@@ -190,7 +214,7 @@ Result<void> stageGlb(StagedFiles& staged, const LoadedProject& loaded, const Sc
     const GltfSceneDocument doc = buildSceneGlb(input);
     if (progress)
         progress(0.7f, "writing");
-    if (auto written = staged.add(glbFileName(loaded.project), doc.glb); !written)
+    if (auto written = staged.add(glbFileName(loaded.project, options.format), doc.glb); !written)
         return written.error();
     for (std::size_t i = 0; i < scene.layers.size(); ++i)
         layers.push_back({scene.layers[i].name, scene.layers[i].liveBlades, doc.instances[i]});
@@ -225,16 +249,18 @@ std::string_view exportFormatName(ExportFormat format) {
     switch (format) {
         case ExportFormat::Raw: return "raw";
         case ExportFormat::Glb: return "glb";
+        case ExportFormat::Mesh: return "mesh";
         case ExportFormat::Gltf: break;
     }
     return "gltf";
 }
 
 Result<ExportFormat> parseExportFormat(std::string_view name) {
-    for (const ExportFormat format : {ExportFormat::Gltf, ExportFormat::Raw, ExportFormat::Glb})
+    for (const ExportFormat format :
+         {ExportFormat::Gltf, ExportFormat::Raw, ExportFormat::Glb, ExportFormat::Mesh})
         if (name == exportFormatName(format))
             return format;
-    return makeError("", "unknown format \"" + std::string(name) + "\" (gltf, raw, glb)");
+    return makeError("", "unknown format \"" + std::string(name) + "\" (gltf, raw, glb, mesh)");
 }
 
 std::uint64_t ExportReport::totalBytes() const {
@@ -259,8 +285,8 @@ Result<void> refuseEntriesOverInputs(const LoadedProject& loaded, const ExportOp
     std::vector<std::string> entries;
     if (options.format == ExportFormat::Raw)
         entries.push_back("manifest.json");
-    else if (options.format == ExportFormat::Glb)
-        entries.push_back(glbFileName(loaded.project));
+    else if (options.format == ExportFormat::Glb || options.format == ExportFormat::Mesh)
+        entries.push_back(glbFileName(loaded.project, options.format));
     else
         for (const std::string& stem : layerStems(layerNames))
             entries.push_back(stem + ".gltf");
@@ -304,14 +330,14 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
             layerNames.push_back(layer.name);
         const std::vector<std::string> stems = layerStems(layerNames);
         json layers = json::array();
-        if (options.format == ExportFormat::Glb) {
+        if (options.format == ExportFormat::Glb || options.format == ExportFormat::Mesh) {
             if (auto written = stageGlb(staged, loaded, scene, options, progress, report.layers);
                 !written)
                 return written.error();
         }
         const auto layerCount = static_cast<float>(std::max<std::size_t>(scene.layers.size(), 1));
-        for (std::size_t i = 0; i < scene.layers.size() && options.format != ExportFormat::Glb;
-             ++i) {
+        const bool oneFile = options.format == ExportFormat::Glb || options.format == ExportFormat::Mesh;
+        for (std::size_t i = 0; i < scene.layers.size() && !oneFile; ++i) {
             const LayerField& layer = scene.layers[i];
             const auto step = [&](float within, const char* stage) {
                 if (progress)

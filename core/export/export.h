@@ -19,7 +19,7 @@
 
 namespace grass::core {
 
-enum class ExportFormat { Gltf, Raw, Glb };
+enum class ExportFormat { Gltf, Raw, Glb, Mesh };
 
 // LOD N keeps every 2^N-th live blade (blade_instances.h); 8 keeps one blade in 256, already
 // far below anything a runtime would draw as a field.
@@ -27,14 +27,16 @@ inline constexpr int MAX_EXPORT_LOD = 8;
 
 struct ExportOptions {
     ExportFormat format = ExportFormat::Gltf;
-    int lod = 0;  // glTF and glb only: raw is the exact blade buffer, so it must be 0
+    int lod = 0;  // not raw: raw is the exact blade buffer, so it must be 0
     std::filesystem::path outDir;
+    // --format mesh refuses more triangles than this (merged_blades.h).
+    std::size_t maxMergedTriangles = 4'000'000;
     bool operator==(const ExportOptions&) const = default;
 };
 
-// "gltf" | "raw" | "glb"
+// "gltf" | "raw" | "glb" | "mesh"
 std::string_view exportFormatName(ExportFormat format);
-// Error (no path; the caller names the option): `unknown format "fbx" (gltf, raw, glb)`.
+// Error (no path; the caller names the option): `unknown format "fbx" (gltf, raw, glb, mesh)`.
 Result<ExportFormat> parseExportFormat(std::string_view name);
 
 struct ExportedFile {

@@ -9,6 +9,7 @@
 #include "export/blade_instances.h"
 #include "export/content_names.h"
 #include "export/gltf_builder.h"
+#include "export/merged_blades.h"
 #include "physics/physics.h"
 #include "util/assert.h"
 
@@ -135,40 +136,6 @@ glm::vec3 rootShare(const LayerField& layer, const std::vector<BladeInstance>& i
     return share;
 }
 
-// Instances are split into cells of a grid of CELLS_PER_AXIS³ over their roots' box, one node
-// per cell and lean bin, so an engine can cull them (issue 25); the cells are cubes, so a flat
-// field gets CELLS_PER_AXIS² of them over its longer side.
-constexpr int CELLS_PER_AXIS = 4;
-
-struct InstanceGroup {
-    int cell = 0;
-    int bin = 0;
-    std::vector<std::uint32_t> members;
-};
-
-std::vector<InstanceGroup> groupInstances(const std::vector<BladeInstance>& instances) {
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (const BladeInstance& b : instances) {
-        lo = glm::min(lo, b.translation);
-        hi = glm::max(hi, b.translation);
-    }
-    const glm::vec3 extent = hi - lo;
-    const float edge = std::max(std::max(extent.x, std::max(extent.y, extent.z)) /
-                                    float(CELLS_PER_AXIS),
-                                1e-3f);
-    std::map<std::pair<int, int>, std::vector<std::uint32_t>> groups;
-    for (std::uint32_t i = 0; i < instances.size(); ++i) {
-        const glm::ivec3 c = glm::clamp(glm::ivec3(glm::floor((instances[i].translation - lo) / edge)),
-                                        glm::ivec3(0), glm::ivec3(CELLS_PER_AXIS - 1));
-        const int cell = (c.z * CELLS_PER_AXIS + c.y) * CELLS_PER_AXIS + c.x;
-        groups[{cell, instances[i].leanBin}].push_back(i);
-    }
-    std::vector<InstanceGroup> out;
-    for (auto& [key, members] : groups)
-        out.push_back({key.first, key.second, std::move(members)});
-    return out;
-}
-
 }  // namespace
 
 UnitBladeMesh unitBladeMesh(BladeShape shape, float tipStart, int segments, float leanRad) {
@@ -291,6 +258,17 @@ void addMaps(DocumentParts& parts, const std::vector<GltfMapImage>& maps, const 
     }
 }
 
+// The blades' material: double-sided and white, the colour coming from the vertices (and, when
+// instanced, times the instance's _COLOR_0).
+int addBladeMaterial(DocumentParts& parts, const LayerField& layer) {
+    return parts.addMaterial({{"name", layer.name + " blade"},
+                              {"doubleSided", true},
+                              {"pbrMetallicRoughness",
+                               {{"baseColorFactor", colorFactor(glm::vec3(1.0f))},
+                                {"metallicFactor", 0.0},
+                                {"roughnessFactor", 0.7}}}});
+}
+
 // The layer's blades (header comment): a group node "<layer> blades" with one instancing child
 // per cell and lean bin. Returns the instances written.
 std::size_t addLayerBlades(DocumentParts& parts, const LayerField& layer, int lod, int segments) {
@@ -298,13 +276,7 @@ std::size_t addLayerBlades(DocumentParts& parts, const LayerField& layer, int lo
     if (instances.empty())
         return 0;
     GltfBuilder& builder = parts.builder;
-    // White: the colour comes from the vertices (root to tip) times the instance (_COLOR_0).
-    const int material = parts.addMaterial({{"name", layer.name + " blade"},
-                                            {"doubleSided", true},
-                                            {"pbrMetallicRoughness",
-                                             {{"baseColorFactor", colorFactor(glm::vec3(1.0f))},
-                                              {"metallicFactor", 0.0},
-                                              {"roughnessFactor", 0.7}}}});
+    const int material = addBladeMaterial(parts, layer);
     const glm::vec3 share = rootShare(layer, instances);
     // One pre-bent unit blade per lean bin in use (blade_instances.h).
     std::map<int, int> meshOfBin;
@@ -342,6 +314,31 @@ std::size_t addLayerBlades(DocumentParts& parts, const LayerField& layer, int lo
     return instances.size();
 }
 
+// The layer's blades baked into plain meshes (merged_blades.h): a group node "<layer> blades"
+// with one mesh node per cell, coloured by vertex. Returns the blades written.
+std::size_t addLayerMergedBlades(DocumentParts& parts, const LayerField& layer, int lod,
+                                 int segments) {
+    const std::vector<MergedBladeMesh> meshes = mergedBlades(layer, lod, segments);
+    if (meshes.empty())
+        return 0;
+    GltfBuilder& builder = parts.builder;
+    const int material = addBladeMaterial(parts, layer);
+    json children = json::array();
+    for (const MergedBladeMesh& cell : meshes) {
+        const json attributes = {
+            {"POSITION", builder.addFloats(cell.positions, 3, GltfTarget::ArrayBuffer)},
+            {"NORMAL", builder.addFloats(cell.normals, 3, GltfTarget::ArrayBuffer)},
+            {"COLOR_0", builder.addFloats(cell.colors, 3, GltfTarget::ArrayBuffer)}};
+        const int indices = builder.addIndices(cell.indices);
+        const std::string name = layer.name + " blades cell " + std::to_string(cell.cell);
+        const int mesh = parts.addMesh(
+            {{"name", name}, {"primitives", {meshPrimitive(attributes, indices, material)}}});
+        children.push_back(parts.addNode({{"name", name}, {"mesh", mesh}}));
+    }
+    parts.topNodes.push_back(parts.addNode({{"name", layer.name + " blades"}, {"children", children}}));
+    return bladeInstances(layer, lod).size();
+}
+
 }  // namespace
 
 GltfLayerDocument buildLayerGltf(const GltfLayerInput& input) {
@@ -369,7 +366,9 @@ GltfSceneDocument buildSceneGlb(const GltfSceneInput& input) {
     for (std::size_t i = 0; i < scene.layers.size(); ++i) {
         // Map names carry the layer's: every layer's maps live in the one file.
         addMaps(parts, input.layerMaps[i], scene.layers[i].name + " ");
-        out.instances.push_back(addLayerBlades(parts, scene.layers[i], input.lod, input.segments));
+        out.instances.push_back(
+            input.merged ? addLayerMergedBlades(parts, scene.layers[i], input.lod, input.segments)
+                         : addLayerBlades(parts, scene.layers[i], input.lod, input.segments));
     }
     parts.finishScene(input.name);
     out.glb = parts.builder.finishGlb();

@@ -57,6 +57,9 @@ struct GltfSceneInput {
     int segments = 8;
     glm::vec3 groundColor{0.3f, 0.24f, 0.16f};
     std::vector<std::vector<GltfMapImage>> layerMaps;  // per layer, with their PNG bytes
+    // The blades baked into plain meshes per cell (merged_blades.h, --format mesh) instead of
+    // instances.
+    bool merged = false;
 };
 
 struct GltfSceneDocument {

@@ -56,9 +56,9 @@ void exportWindow(ui::Context& ctx, EditorState& s) {
             ui.label("Folder (a relative path is inside the project folder):");
             ui::textEdit(ui, "##exportdir", s.transient.exportDir, ui.availableWidth() - 8.0f);
             // In core::ExportFormat's order.
-            static constexpr std::array<const char*, 3> FORMATS{
+            static constexpr std::array<const char*, 4> FORMATS{
                 "glTF per layer (EXT_mesh_gpu_instancing)", "raw GPU buffers",
-                "one .glb, every layer"};
+                "one .glb, every layer", "one .glb, blades merged (any viewer)"};
             ui.comboBox("format", s.transient.exportFormat, FORMATS);
             if (s.transient.exportFormat != int(core::ExportFormat::Raw))
                 ui.slider("LOD (keep 1 in 2^N)", s.transient.exportLod, 0, core::MAX_EXPORT_LOD);

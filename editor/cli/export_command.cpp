@@ -35,19 +35,21 @@ struct GrownScene {
 
 std::optional<int> parseExportArgs(const std::vector<std::string>& argv, ExportArgs& args) {
     ArgParser parser(
-        "grass export <project-dir|project.json> --out DIR [--format gltf|raw|glb] [--lod N]",
+        "grass export <project-dir|project.json> --out DIR [--format gltf|raw|glb|mesh] [--lod N]",
         "Grows the project's grass and writes it for other runtimes into DIR (created if "
         "missing; files are written under temporary names and renamed into place only when "
         "all are done). gltf: per layer <layer>.gltf + .bin (+ map PNGs): the terrain and every "
         "blade as an EXT_mesh_gpu_instancing instance of a pre-bent unit blade, split into cells. "
         "glb: every layer in one <project>.glb with one shared terrain and the maps embedded. "
+        "mesh: like glb, the blades baked into plain meshes (<project>-merged.glb) for viewers "
+        "without EXT_mesh_gpu_instancing. "
         "raw: per layer the exact "
         "64-byte blade records the renderer uploads, the patch table, the maps as float32, and "
         "manifest.json. Progress goes to stderr. See docs/export.md.");
     addProjectArgument(parser, &args.project, true);
     parser.text("--out", "DIR", "the folder to write into (required)", &args.out);
-    parser.text("--format", "gltf|raw|glb", "what to write (default gltf)", &args.format);
-    parser.integer("--lod", "gltf and glb only: keep every 2^N-th blade, each 2^N times wider; 0 keeps all",
+    parser.text("--format", "gltf|raw|glb|mesh", "what to write (default gltf)", &args.format);
+    parser.integer("--lod", "not raw: keep every 2^N-th blade, each 2^N times wider; 0 keeps all",
                    &args.lod, 0, core::MAX_EXPORT_LOD);
     addPresetOption(parser, &args.preset);
     return parseArguments(parser, argv, "export");
@@ -65,7 +67,7 @@ Result<core::ExportFormat> checkArgs(const ExportArgs& args) {
                              std::string(core::exportFormatName(*format)));
     if (*format == core::ExportFormat::Raw && args.lod != 0)
         return makeError("--lod",
-                         "applies to --format gltf and glb only (raw holds every blade "
+                         "applies to --format gltf, glb and mesh only (raw holds every blade "
                          "exactly); leave --lod out");
     return *format;
 }

@@ -25,7 +25,7 @@ grass_cli_test(export_tiny_raw OK
        --format raw)
 
 # Bad command lines: one line naming the option, nothing written.
-grass_cli_test(export_unknown_format ERROR "--format: unknown format \"fbx\" (gltf, raw, glb)"
+grass_cli_test(export_unknown_format ERROR "--format: unknown format \"fbx\" (gltf, raw, glb, mesh)"
     --absent ${GRASS_EXPORT_TMP}/fbx
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/fbx --format fbx)
 grass_cli_test(export_lod_out_of_range ERROR "--lod" --also "99"
@@ -33,7 +33,7 @@ grass_cli_test(export_lod_out_of_range ERROR "--lod" --also "99"
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/lod99 --lod 99)
 grass_cli_test(export_lod_not_a_number ERROR "--lod" --also "'x'"
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/lodx --lod x)
-grass_cli_test(export_lod_with_raw ERROR "--lod: applies to --format gltf and glb only"
+grass_cli_test(export_lod_with_raw ERROR "--lod: applies to --format gltf, glb and mesh only"
     --absent ${GRASS_EXPORT_TMP}/raw-lod
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/raw-lod
        --format raw --lod 2)
@@ -62,6 +62,7 @@ grass_export_validate_test(growth_tiny_lod2 ${GRASS_CLI_PROJECTS}/growth_tiny --
 grass_export_validate_test(rock ${GRASS_CLI_PROJECTS}/rock)
 grass_export_validate_test(meadow ${GRASS_SOURCE_DIR}/projects/meadow)
 grass_export_validate_test(meadow_glb ${GRASS_SOURCE_DIR}/projects/meadow --format glb)
+grass_export_validate_test(meadow_mesh ${GRASS_SOURCE_DIR}/projects/meadow --format mesh)
 
 # A stock third-party loader (three.js' GLTFLoader) draws the meadow's export as the field at
 # rest: every blade an instance, tips and colours as the raw export's exact blades (issue 25).

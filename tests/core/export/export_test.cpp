@@ -18,6 +18,7 @@
 
 #include "export/blade_instances.h"
 #include "export/gltf_export.h"
+#include "export/merged_blades.h"
 #include "export/raw_export.h"
 #include "maps/map_image.h"
 #include "support/test_paths.h"
@@ -327,6 +328,56 @@ TEST(Export, GlbHoldsEveryLayerOverOneTerrain) {
     EXPECT_EQ(model.images[0].mimeType, "image/png");
     EXPECT_GE(model.images[0].bufferView, 0);
     EXPECT_TRUE(model.images[0].uri.empty());
+}
+
+// --format mesh (issue 25): every blade baked into plain triangles, one mesh per cell, for viewers
+// without the instancing extension; each blade keeps its lean (its lean bin's unit blade, placed)
+// and its own root-to-tip colour. Over the triangle budget it is refused, naming the LOD that fits.
+TEST(Export, MergedMeshBakesEveryBladeAndRespectsTheBudget) {
+    const Built built = buildProject("growth_tiny");
+    const LayerField& layer = built.scene.layers[0];
+    const std::vector<MergedBladeMesh> meshes = mergedBlades(layer, 0, 8);
+    ASSERT_GT(meshes.size(), 1u) << "one mesh per cell";
+    std::size_t triangles = 0, vertices = 0;
+    for (const MergedBladeMesh& m : meshes) {
+        triangles += m.triangles();
+        vertices += m.positions.size() / 3;
+        ASSERT_EQ(m.colors.size(), m.positions.size());
+        for (const std::uint32_t index : m.indices)
+            ASSERT_LT(index, m.positions.size() / 3);
+    }
+    EXPECT_EQ(triangles, mergedBladeTriangles(layer, 0, 8));
+    // Every blade's tip vertex (the top of its unit blade, placed) is in the mesh, where the
+    // blade's tip is within the lean bins' bound, in its tip colour.
+    const std::vector<BladeInstance> instances = bladeInstances(layer, 0);
+    const UnitBladeMesh unit = unitBladeMesh(layer.shape, layer.tipStart, 8, leanBinRad(instances[0].leanBin));
+    const std::size_t perBlade = unit.heights.size();
+    EXPECT_EQ(vertices, instances.size() * perBlade);
+    std::size_t tipsFound = 0;
+    for (const MergedBladeMesh& m : meshes)
+        for (std::size_t v = perBlade - 1; v < m.positions.size() / 3; v += perBlade) {
+            const glm::vec3 tip(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
+            const glm::vec3 colour(m.colors[3 * v], m.colors[3 * v + 1], m.colors[3 * v + 2]);
+            for (const BladeInstance& b : instances)
+                if (glm::length(tip - (b.translation + b.tipOffset)) <= 0.05f * b.scale.y &&
+                    glm::length(colour - b.tipColor) < 1e-5f) {
+                    ++tipsFound;
+                    break;
+                }
+        }
+    EXPECT_EQ(tipsFound, instances.size());
+
+    const fs::path dir = test::scratchDir("export_mesh");
+    ExportOptions o = options(ExportFormat::Mesh, 0, dir / "out");
+    o.maxMergedTriangles = triangles / 3;  // LOD 2 keeps a quarter of the blades: it fits
+    auto refused = exportProject(built.loaded, built.scene, o, {});
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().str().find("--lod 2"), std::string::npos) << refused.error().str();
+    EXPECT_FALSE(fs::exists(dir / "out")) << "a refused export leaves nothing";
+    o.lod = 2;
+    auto written = exportProject(built.loaded, built.scene, o, {});
+    ASSERT_TRUE(written.ok()) << written.error().str();
+    EXPECT_EQ(written->files.at(0).path.filename(), "growth_tiny-merged.glb");
 }
 
 TEST(Export, LodKeepsEveryPowerOfTwoBladeWidened) {
