@@ -8,6 +8,7 @@
 #include "export/gltf_export.h"
 #include "export/merged_blades.h"
 #include "export/raw_export.h"
+#include "export/source_material.h"
 #include "export/staged_files.h"
 #include "project/project_inputs.h"
 #include "util/atomic_file.h"
@@ -65,6 +66,12 @@ std::string glbFileName(const Project& project, ExportFormat format) {
            (format == ExportFormat::Mesh ? "-merged.glb" : ".glb");
 }
 
+// A glTF surface keeps its own material in the export (source_material.h).
+json terrainMaterialOf(const LoadedProject& loaded) {
+    const MeshSource& mesh = loaded.project.mesh;
+    return mesh.isFile ? sourceMeshMaterial(loaded.folder / mesh.file) : json(nullptr);
+}
+
 json colorJson(glm::vec3 color) {
     return json::array({color.r, color.g, color.b});
 }
@@ -82,6 +89,7 @@ Result<void> stageGltfLayer(StagedFiles& staged, const LoadedProject& loaded, co
     input.lod = lod;
     input.segments = loaded.project.render.stripSegments;
     input.groundColor = loaded.project.render.groundColor;
+    input.terrainMaterial = terrainMaterialOf(loaded);
     input.binStem = stem;
     step(0.0f, "maps");
     for (const NamedMap& map : paintedMaps(layer)) {
@@ -175,6 +183,7 @@ Result<void> stageGlb(StagedFiles& staged, const LoadedProject& loaded, const Sc
     input.lod = options.lod;
     input.segments = loaded.project.render.stripSegments;
     input.groundColor = loaded.project.render.groundColor;
+    input.terrainMaterial = terrainMaterialOf(loaded);
     input.merged = options.format == ExportFormat::Mesh;
     if (input.merged) {
         // Refused before any work: a merged field over the budget, with the LOD that fits.

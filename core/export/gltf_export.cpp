@@ -225,13 +225,18 @@ struct DocumentParts {
     }
 };
 
-// The terrain node, with the project's ground colour.
-void addTerrain(DocumentParts& parts, const SurfaceMesh& mesh, glm::vec3 groundColor) {
-    const int material = parts.addMaterial({{"name", "terrain"},
-                                            {"pbrMetallicRoughness",
-                                             {{"baseColorFactor", colorFactor(groundColor)},
-                                              {"metallicFactor", 0.0},
-                                              {"roughnessFactor", 1.0}}}});
+// The terrain node, with the project's ground colour or the source mesh's material.
+// `sourceMaterial`, when not null, is the source mesh's (source_material.h).
+void addTerrain(DocumentParts& parts, const SurfaceMesh& mesh, glm::vec3 groundColor,
+                const json& sourceMaterial) {
+    const int material =
+        sourceMaterial.is_object()
+            ? parts.addMaterial(sourceMaterial)
+            : parts.addMaterial({{"name", "terrain"},
+                                 {"pbrMetallicRoughness",
+                                  {{"baseColorFactor", colorFactor(groundColor)},
+                                   {"metallicFactor", 0.0},
+                                   {"roughnessFactor", 1.0}}}});
     if (mesh.n_faces() == 0)
         return;
     const int meshIndex = parts.addMesh(terrainMesh(parts.builder, mesh, material));
@@ -347,7 +352,7 @@ GltfLayerDocument buildLayerGltf(const GltfLayerInput& input) {
     const LayerField& layer = scene.layers[input.layer];
     DocumentParts parts;
     addMaps(parts, input.maps, "");
-    addTerrain(parts, scene.mesh, input.groundColor);
+    addTerrain(parts, scene.mesh, input.groundColor, input.terrainMaterial);
     GltfLayerDocument out;
     out.instances = addLayerBlades(parts, layer, input.lod, input.segments);
     parts.finishScene(layer.name);
@@ -361,7 +366,7 @@ GltfSceneDocument buildSceneGlb(const GltfSceneInput& input) {
     GRASS_ASSERT(input.scene && input.layerMaps.size() == input.scene->layers.size());
     const Scene& scene = *input.scene;
     DocumentParts parts;
-    addTerrain(parts, scene.mesh, input.groundColor);
+    addTerrain(parts, scene.mesh, input.groundColor, input.terrainMaterial);
     GltfSceneDocument out;
     for (std::size_t i = 0; i < scene.layers.size(); ++i) {
         // Map names carry the layer's: every layer's maps live in the one file.

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "scene/scene.h"
 
 namespace grass::core {
@@ -40,6 +42,8 @@ struct GltfLayerInput {
     // Segments along the unit blade (the project's strip segments, 1..32).
     int segments = 8;
     glm::vec3 groundColor{0.3f, 0.24f, 0.16f};
+    // The source mesh's material (source_material.h); null: the ground colour.
+    nlohmann::json terrainMaterial;
     // The buffer's file is named "<binStem>-<hash of its bytes>.bin" (content_names.h).
     std::string binStem;
     std::vector<GltfMapImage> maps;
@@ -56,6 +60,7 @@ struct GltfSceneInput {
     int lod = 0;
     int segments = 8;
     glm::vec3 groundColor{0.3f, 0.24f, 0.16f};
+    nlohmann::json terrainMaterial;  // as GltfLayerInput's
     std::vector<std::vector<GltfMapImage>> layerMaps;  // per layer, with their PNG bytes
     // The blades baked into plain meshes per cell (merged_blades.h, --format mesh) instead of
     // instances.

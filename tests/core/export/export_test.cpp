@@ -380,6 +380,48 @@ TEST(Export, MergedMeshBakesEveryBladeAndRespectsTheBudget) {
     EXPECT_EQ(written->files.at(0).path.filename(), "growth_tiny-merged.glb");
 }
 
+// The artist's own mesh keeps its material in the export (issue 25): the terrain node of a
+// project whose surface is a glTF file carries that file's material factors; a broken factor in
+// the source is left out rather than copied into an invalid export.
+TEST(Export, TerrainKeepsTheSourceMeshsMaterial) {
+    const fs::path dir = test::scratchDir("export_material");
+    nlohmann::json quad;
+    std::ifstream(test::sourceDir() / "tests/data/gltf/quad.gltf") >> quad;
+    quad["materials"] = {{{"name", "mossy stone"},
+                          {"pbrMetallicRoughness",
+                           {{"baseColorFactor", {0.2, 0.4, 0.6, 1.0}}, {"roughnessFactor", 0.3},
+                            {"metallicFactor", 7.0}}},
+                          {"doubleSided", true}}};
+    quad["meshes"][0]["primitives"][0]["material"] = 0;
+    std::ofstream(dir / "quad.gltf") << quad.dump();
+    std::ofstream(dir / "project.json") << R"({"format": "grass-project", "version": 1,
+        "name": "stone", "mesh": {"file": "quad.gltf"},
+        "layers": [{"name": "grass", "density": 20.0}]})";
+    const Built built = buildProjectAt(dir / "project.json");
+    for (const ExportFormat format : {ExportFormat::Gltf, ExportFormat::Glb}) {
+        auto report = exportProject(built.loaded, built.scene, options(format, 0, dir / "out"), {});
+        ASSERT_TRUE(report.ok()) << report.error().str();
+        tinygltf::Model model;
+        tinygltf::TinyGLTF loader;
+        loader.SetImageLoader(skipImage, nullptr);
+        std::string error, warning;
+        ASSERT_TRUE(format == ExportFormat::Glb
+                        ? loader.LoadBinaryFromFile(&model, &error, &warning, (dir / "out/stone.glb").string())
+                        : loader.LoadASCIIFromFile(&model, &error, &warning, (dir / "out/grass.gltf").string()))
+            << error;
+        const auto terrain = std::find_if(model.meshes.begin(), model.meshes.end(),
+                                          [](const tinygltf::Mesh& m) { return m.name == "terrain"; });
+        ASSERT_NE(terrain, model.meshes.end());
+        const tinygltf::Material& material =
+            model.materials.at(std::size_t(terrain->primitives.at(0).material));
+        EXPECT_EQ(material.name, "terrain: mossy stone");
+        EXPECT_EQ(material.pbrMetallicRoughness.baseColorFactor, (std::vector<double>{0.2, 0.4, 0.6, 1.0}));
+        EXPECT_DOUBLE_EQ(material.pbrMetallicRoughness.roughnessFactor, 0.3);
+        EXPECT_DOUBLE_EQ(material.pbrMetallicRoughness.metallicFactor, 1.0) << "7 is not a factor: the default";
+        EXPECT_TRUE(material.doubleSided);
+    }
+}
+
 TEST(Export, LodKeepsEveryPowerOfTwoBladeWidened) {
     const Built built = buildProject("growth_tiny");
     const std::vector<Blade> blades = liveBlades(built.scene.layers[0]);
