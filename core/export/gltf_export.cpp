@@ -329,7 +329,9 @@ std::size_t addLayerMergedBlades(DocumentParts& parts, const LayerField& layer, 
     GltfBuilder& builder = parts.builder;
     const int material = addBladeMaterial(parts, layer);
     json children = json::array();
+    std::size_t blades = 0;
     for (const MergedBladeMesh& cell : meshes) {
+        blades += cell.blades;
         const json attributes = {
             {"POSITION", builder.addFloats(cell.positions, 3, GltfTarget::ArrayBuffer)},
             {"NORMAL", builder.addFloats(cell.normals, 3, GltfTarget::ArrayBuffer)},
@@ -341,7 +343,7 @@ std::size_t addLayerMergedBlades(DocumentParts& parts, const LayerField& layer, 
         children.push_back(parts.addNode({{"name", name}, {"mesh", mesh}}));
     }
     parts.topNodes.push_back(parts.addNode({{"name", layer.name + " blades"}, {"children", children}}));
-    return bladeInstances(layer, lod).size();
+    return blades;
 }
 
 }  // namespace

@@ -45,9 +45,10 @@ std::vector<MergedBladeMesh> mergedBlades(const LayerField& layer, int lod, int 
     std::vector<MergedBladeMesh> meshes;
     for (const InstanceGroup& group : groupInstances(instances)) {
         if (meshes.empty() || meshes.back().cell != group.cell)
-            meshes.push_back(MergedBladeMesh{group.cell, {}, {}, {}, {}});
+            meshes.push_back(MergedBladeMesh{group.cell, {}, {}, {}, {}, 0});
         MergedBladeMesh& out = meshes.back();
         const UnitBladeMesh& blade = unit.of(group.bin);
+        out.blades += group.members.size();
         for (const std::uint32_t i : group.members) {
             const BladeInstance& b = instances[i];
             const auto first = static_cast<std::uint32_t>(out.positions.size() / 3);

@@ -21,6 +21,7 @@ struct MergedBladeMesh {
     std::vector<float> normals;    // xyz, unit
     std::vector<float> colors;     // rgb, linear: mix(root, tip, v) of the blade, after its wilt
     std::vector<std::uint32_t> indices;
+    std::size_t blades = 0;
     std::size_t triangles() const { return indices.size() / 3; }
 };
 
