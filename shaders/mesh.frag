@@ -15,6 +15,8 @@ in vec2 vUv;
 in vec3 vPosWorld;
 
 uniform vec3 uAlbedo;
+// The unlit colour (RenderOptions::albedoView).
+uniform bool uAlbedoView;
 
 out vec4 fragColor;
 
@@ -30,5 +32,5 @@ void main() {
     // Snow settles on the side that faces the sky, whichever side the camera sees.
     albedo = snowShade(vPosWorld, vNormal, albedo);
 #endif
-    fragColor = vec4(simpleLighting(albedo, normal, 0.2), 1.0);
+    fragColor = vec4(uAlbedoView ? albedo : simpleLighting(albedo, normal, 0.2), 1.0);
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <tuple>
 
 #include "util/assert.h"
 
@@ -39,6 +40,15 @@ float leanBinRad(int bin) {
     return float(std::clamp(bin, 0, LEAN_BIN_COUNT - 1)) * LEAN_BIN_STEP_RAD;
 }
 
+int wiltBinOf(float wilt) {
+    const int bin = static_cast<int>(std::lround(wilt * float(WILT_BIN_COUNT - 1)));
+    return std::clamp(bin, 0, WILT_BIN_COUNT - 1);
+}
+
+float wiltBinValue(int bin) {
+    return float(std::clamp(bin, 0, WILT_BIN_COUNT - 1)) / float(WILT_BIN_COUNT - 1);
+}
+
 std::vector<BladeInstance> bladeInstances(const LayerField& layer, int lod) {
     GRASS_ASSERT(lod >= 0 && lod <= 30);
     const std::size_t stride = std::size_t{1} << lod;
@@ -64,6 +74,8 @@ std::vector<BladeInstance> bladeInstances(const LayerField& layer, int lod) {
         instance.tipOffset = blade.v2() - blade.v0();
         instance.leanRad = bladeLeanRad(blade);
         instance.leanBin = leanBinOf(instance.leanRad);
+        instance.wilt = wilt;
+        instance.wiltBin = wiltBinOf(wilt);
         instances.push_back(instance);
     }
     return instances;
@@ -79,16 +91,16 @@ std::vector<InstanceGroup> groupInstances(const std::vector<BladeInstance>& inst
     const float edge = std::max(std::max(extent.x, std::max(extent.y, extent.z)) /
                                     float(CELLS_PER_AXIS),
                                 1e-3f);
-    std::map<std::pair<int, int>, std::vector<std::uint32_t>> groups;
+    std::map<std::tuple<int, int, int>, std::vector<std::uint32_t>> groups;
     for (std::uint32_t i = 0; i < instances.size(); ++i) {
         const glm::ivec3 c = glm::clamp(glm::ivec3(glm::floor((instances[i].translation - lo) / edge)),
                                         glm::ivec3(0), glm::ivec3(CELLS_PER_AXIS - 1));
         const int cell = (c.z * CELLS_PER_AXIS + c.y) * CELLS_PER_AXIS + c.x;
-        groups[{cell, instances[i].leanBin}].push_back(i);
+        groups[{cell, instances[i].leanBin, instances[i].wiltBin}].push_back(i);
     }
     std::vector<InstanceGroup> out;
     for (auto& [key, members] : groups)
-        out.push_back({key.first, key.second, std::move(members)});
+        out.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), std::move(members)});
     return out;
 }
 

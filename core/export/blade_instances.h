@@ -34,6 +34,11 @@ namespace grass::core {
 inline constexpr int LEAN_BIN_COUNT = 13;
 inline constexpr float LEAN_BIN_STEP_RAD = 0.0872664626f;  // 5°
 
+// Wilt bins: 0, ¼, ½, ¾, 1. The blade meshes' root-to-tip COLOR_0 is the root's share of the tip
+// colour, which depends on the wilt (the growth model blends both ends towards their poor
+// colours); one mesh per wilt bin puts every blade's root within a ⅛ step of wilt of its own.
+inline constexpr int WILT_BIN_COUNT = 5;
+
 struct BladeInstance {
     glm::vec3 translation{0.0f};
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
@@ -48,6 +53,9 @@ struct BladeInstance {
     // The lean of the resting blade towards its front (bladeLeanRad) and its bin.
     float leanRad = 0.0f;
     int leanBin = 0;
+    // The growth model's wilt (0 healthy … 1 poor; 0 without growth) and its bin.
+    float wilt = 0.0f;
+    int wiltBin = 0;
 };
 
 // The angle between up and the resting blade's chord v2 − v0, measured towards the blade's
@@ -57,6 +65,9 @@ float bladeLeanRad(const Blade& blade);
 // The nearest bin of `leanRad` (clamped to 0..LEAN_BIN_COUNT − 1), and a bin's angle.
 int leanBinOf(float leanRad);
 float leanBinRad(int bin);
+// The same for wilt.
+int wiltBinOf(float wilt);
+float wiltBinValue(int bin);
 
 // Padding and thinned slots hold null blades (h = w = 0, layer_growth.h).
 bool isLiveBlade(const Blade& blade);
@@ -68,17 +79,19 @@ glm::quat bladeRotation(glm::vec3 up, float theta);
 std::vector<BladeInstance> bladeInstances(const LayerField& layer, int lod);
 
 // Instances are split into the cells of a grid of CELLS_PER_AXIS³ over their roots' box, one
-// node per cell (and lean bin) in an export, so an engine can cull them (issue 25); the cells
+// node per cell (and lean and wilt bin) in an export, so an engine can cull them (issue 25); the cells
 // are cubes, so a flat field gets CELLS_PER_AXIS² of them over its longer side.
 inline constexpr int CELLS_PER_AXIS = 4;
 
 struct InstanceGroup {
     int cell = 0;  // (z · CELLS_PER_AXIS + y) · CELLS_PER_AXIS + x
     int bin = 0;   // lean bin
+    int wiltBin = 0;
     std::vector<std::uint32_t> members;  // indices into the instances, ascending
 };
 
-// The non-empty (cell, lean bin) groups of `instances`, ordered by cell then bin.
+// The non-empty (cell, lean bin, wilt bin) groups of `instances`, ordered by cell, then lean,
+// then wilt.
 std::vector<InstanceGroup> groupInstances(const std::vector<BladeInstance>& instances);
 
 }  // namespace grass::core

@@ -114,21 +114,11 @@ json instanceAttributes(GltfBuilder& builder, const std::vector<BladeInstance>& 
 }
 
 // The root-to-tip shading of the blade meshes' COLOR_0, which loaders multiply with the
-// instance colour (_COLOR_0, the tip colour): the root's share of the tip colour per channel,
-// at the layer's mean wilt (one mesh serves every blade, so a blade's own wilt moves only its
-// tip colour; the root follows by this ratio).
-glm::vec3 rootShare(const LayerField& layer, const std::vector<BladeInstance>& instances) {
-    double wilt = 0.0;
-    for (const BladeInstance& b : instances) {
-        const glm::vec3 span = layer.poorTipColor - layer.tipColor;
-        const float along = glm::dot(span, span) > 0.0f
-                                ? glm::dot(b.tipColor - layer.tipColor, span) / glm::dot(span, span)
-                                : 0.0f;
-        wilt += std::clamp(along, 0.0f, 1.0f);
-    }
-    const float w = instances.empty() ? 0.0f : float(wilt / double(instances.size()));
-    const glm::vec3 root = glm::mix(layer.rootColor, layer.poorRootColor, w);
-    const glm::vec3 tip = glm::mix(layer.tipColor, layer.poorTipColor, w);
+// instance colour (_COLOR_0, the tip colour): the root's share of the tip colour per channel at
+// `wilt` (a wilt bin's value: each bin has its own mesh).
+glm::vec3 rootShareAt(const LayerField& layer, float wilt) {
+    const glm::vec3 root = glm::mix(layer.rootColor, layer.poorRootColor, wilt);
+    const glm::vec3 tip = glm::mix(layer.tipColor, layer.poorTipColor, wilt);
     glm::vec3 share(1.0f);
     for (int c = 0; c < 3; ++c)
         if (tip[c] > 0.0f)
@@ -275,20 +265,21 @@ int addBladeMaterial(DocumentParts& parts, const LayerField& layer) {
 }
 
 // The layer's blades (header comment): a group node "<layer> blades" with one instancing child
-// per cell and lean bin. Returns the instances written.
+// per cell, lean bin and wilt bin. Returns the instances written.
 std::size_t addLayerBlades(DocumentParts& parts, const LayerField& layer, int lod, int segments) {
     const std::vector<BladeInstance> instances = bladeInstances(layer, lod);
     if (instances.empty())
         return 0;
     GltfBuilder& builder = parts.builder;
     const int material = addBladeMaterial(parts, layer);
-    const glm::vec3 share = rootShare(layer, instances);
-    // One pre-bent unit blade per lean bin in use (blade_instances.h).
-    std::map<int, int> meshOfBin;
+    // One pre-bent unit blade per lean bin and wilt bin in use (blade_instances.h).
+    std::map<std::pair<int, int>, int> meshOfBin;
     for (const BladeInstance& b : instances)
-        meshOfBin.emplace(b.leanBin, -1);
-    for (auto& [bin, meshIndex] : meshOfBin) {
+        meshOfBin.emplace(std::pair{b.leanBin, b.wiltBin}, -1);
+    for (auto& [bins, meshIndex] : meshOfBin) {
+        const auto [bin, wiltBin] = bins;
         const UnitBladeMesh blade = unitBladeMesh(layer.shape, layer.tipStart, segments, leanBinRad(bin));
+        const glm::vec3 share = rootShareAt(layer, wiltBinValue(wiltBin));
         std::vector<float> colors;
         for (const float v : blade.heights) {
             const glm::vec3 c = glm::mix(share, glm::vec3(1.0f), v);
@@ -302,15 +293,16 @@ std::size_t addLayerBlades(DocumentParts& parts, const LayerField& layer, int lo
         const int degrees =
             static_cast<int>(std::lround(leanBinRad(bin) * 180.0f / std::numbers::pi_v<float>));
         meshIndex = parts.addMesh(
-            {{"name", layer.name + " unit blade, lean " + std::to_string(degrees) + " deg"},
+            {{"name", layer.name + " unit blade, lean " + std::to_string(degrees) + " deg, wilt " +
+                          std::to_string(wiltBin) + "/" + std::to_string(WILT_BIN_COUNT - 1)},
              {"primitives", {meshPrimitive(attributes, indices, material)}}});
     }
     json children = json::array();
     for (const InstanceGroup& group : groupInstances(instances))
         children.push_back(parts.addNode(
             {{"name", layer.name + " blades cell " + std::to_string(group.cell) + " lean " +
-                          std::to_string(group.bin)},
-             {"mesh", meshOfBin.at(group.bin)},
+                          std::to_string(group.bin) + " wilt " + std::to_string(group.wiltBin)},
+             {"mesh", meshOfBin.at({group.bin, group.wiltBin})},
              {"extensions",
               {{"EXT_mesh_gpu_instancing",
                 {{"attributes", instanceAttributes(builder, instances, group.members)}}}}}}));

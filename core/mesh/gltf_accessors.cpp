@@ -12,7 +12,7 @@ namespace grass::core::gltf {
 namespace {
 
 // What a primitive reads, and so which accessor types it accepts.
-enum class Semantic { Position, Normal, TexCoord, Indices, Translation, Rotation, Scale };
+enum class Semantic { Position, Normal, TexCoord, Indices, Translation, Rotation, Scale, Color };
 
 // An accessor without a bufferView is all zeros; its count is not bounded by any data, so a
 // corrupt count must not turn into a multi-gigabyte allocation.
@@ -36,6 +36,8 @@ const char* semanticName(Semantic semantic) {
             return "ROTATION";
         case Semantic::Scale:
             return "SCALE";
+        case Semantic::Color:
+            return "COLOR_0";
     }
     return "?";
 }
@@ -46,6 +48,7 @@ int semanticComponents(Semantic semantic) {
         case Semantic::Normal:
         case Semantic::Translation:
         case Semantic::Scale:
+        case Semantic::Color:  // or 4 (readAccessor)
             return 3;
         case Semantic::TexCoord:
             return 2;
@@ -58,7 +61,8 @@ int semanticComponents(Semantic semantic) {
 }
 
 // glTF 2.0 §3.7.2.1 (core), KHR_mesh_quantization's integer POSITION, NORMAL, TEXCOORD_0, and
-// EXT_mesh_gpu_instancing's TRANSLATION, ROTATION, SCALE.
+// EXT_mesh_gpu_instancing's TRANSLATION, ROTATION, SCALE; COLOR_0 (and the per-instance _COLOR_0
+// of the same convention).
 bool acceptsComponent(Semantic semantic, int componentType) {
     const bool isFloat = componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
     const bool isSigned = componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
@@ -77,6 +81,8 @@ bool acceptsComponent(Semantic semantic, int componentType) {
             return isFloat;
         case Semantic::Indices:
             return isUnsigned || componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+        case Semantic::Color:
+            return isFloat || isUnsigned;
     }
     return false;
 }
@@ -98,6 +104,8 @@ const char* expectedTypes(Semantic semantic) {
             return "VEC3 of FLOAT";
         case Semantic::Rotation:
             return "VEC4 of FLOAT, or of normalized BYTE/SHORT";
+        case Semantic::Color:
+            return "VEC3 or VEC4 of FLOAT, or of normalized UNSIGNED_BYTE/UNSIGNED_SHORT";
     }
     return "?";
 }
@@ -265,7 +273,8 @@ std::string accessorLabel(int index, Semantic semantic, const std::string& where
 // Overwrites the elements a sparse accessor names (spec §3.6.2.3).
 template <class T>
 Result<void> applySparse(const tinygltf::Model& model, const tinygltf::Accessor& accessor,
-                         const std::string& label, int components, std::vector<T>& out) {
+                         const std::string& label, int components, bool normalized,
+                         std::vector<T>& out) {
     const auto& sparse = accessor.sparse;
     if (sparse.count < 1 || static_cast<std::uint64_t>(sparse.count) > accessor.count)
         return makeError("", label + " has a sparse count of " + std::to_string(sparse.count) +
@@ -294,7 +303,7 @@ Result<void> applySparse(const tinygltf::Model& model, const tinygltf::Accessor&
     std::vector<std::uint32_t> indices(count);
     decode(indexType, *indexData, indexSize, count, 1, false, indices.data());
     std::vector<T> values(count * static_cast<std::uint64_t>(components));
-    decode(accessor.componentType, *valueData, elementSize, count, components, accessor.normalized,
+    decode(accessor.componentType, *valueData, elementSize, count, components, normalized,
            values.data());
     const auto n = static_cast<std::size_t>(components);
     for (std::size_t k = 0; k < indices.size(); ++k) {
@@ -319,7 +328,10 @@ Result<std::vector<T>> readAccessor(const tinygltf::Model& model, int index, Sem
                                  std::to_string(model.accessors.size()) + " accessors");
     const auto& accessor = model.accessors[static_cast<std::size_t>(index)];
     const std::string label = accessorLabel(index, semantic, where);
-    const int components = semanticComponents(semantic);
+    // Colours come as RGB or RGBA (spec §3.7.2.1).
+    const int components = semantic == Semantic::Color && typeComponents(accessor.type) == 4
+                               ? 4
+                               : semanticComponents(semantic);
     if (typeComponents(accessor.type) != components ||
         !acceptsComponent(semantic, accessor.componentType))
         return makeError("", label + " is " + typeName(accessor.type) + " of " +
@@ -356,15 +368,32 @@ Result<std::vector<T>> readAccessor(const tinygltf::Model& model, int index, Sem
     }
     std::vector<T> out(count * static_cast<std::uint64_t>(components), T{});
     // Without a bufferView the accessor starts as zeros (spec §3.6.2.3).
+    // Integer colours are normalized by the spec; a file that forgot the flag still means it.
+    const bool normalized = accessor.normalized || semantic == Semantic::Color;
     if (base)
-        decode(accessor.componentType, base, stride, count, components, accessor.normalized,
-               out.data());
+        decode(accessor.componentType, base, stride, count, components, normalized, out.data());
     if (accessor.sparse.isSparse) {
-        const auto sparse = applySparse(model, accessor, label, components, out);
+        const auto sparse = applySparse(model, accessor, label, components, normalized, out);
         if (!sparse)
             return sparse.error();
     }
     return out;
+}
+
+// An RGB or RGBA colour accessor as RGBA (alpha 1 for RGB).
+Result<std::vector<glm::vec4>> readColors(const tinygltf::Model& model, int index,
+                                          const std::string& where) {
+    auto values = readAccessor<float>(model, index, Semantic::Color, where);
+    if (!values)
+        return values.error();
+    const bool rgba = typeComponents(model.accessors[static_cast<std::size_t>(index)].type) == 4;
+    const std::size_t n = rgba ? 4 : 3;
+    std::vector<glm::vec4> colors(values->size() / n);
+    for (std::size_t i = 0; i < colors.size(); ++i) {
+        const float* c = values->data() + n * i;
+        colors[i] = {c[0], c[1], c[2], rgba ? c[3] : 1.0f};
+    }
+    return colors;
 }
 
 int attributeAccessor(const tinygltf::Primitive& primitive, const char* name) {
@@ -391,7 +420,7 @@ std::string describeMesh(const tinygltf::Model& model, std::size_t meshIndex) {
 
 Result<PrimitiveData> readTrianglePrimitive(const tinygltf::Model& model,
                                             const tinygltf::Primitive& primitive,
-                                            const std::string& where) {
+                                            const std::string& where, bool withColors) {
     PrimitiveData data;
     const int positionIndex = attributeAccessor(primitive, "POSITION");
     auto positions = readAccessor<float>(model, positionIndex, Semantic::Position, where);
@@ -437,6 +466,16 @@ Result<PrimitiveData> readTrianglePrimitive(const tinygltf::Model& model,
         for (std::size_t i = 0; i < vertexCount; ++i)
             data.uvs[i] = {(*uvs)[2 * i], (*uvs)[2 * i + 1]};
     }
+
+    if (const int index = attributeAccessor(primitive, "COLOR_0"); withColors && index >= 0) {
+        auto colors = readColors(model, index, where);
+        if (!colors)
+            return colors.error();
+        if (auto same = sameCount(colors->size(), index, Semantic::Color); !same)
+            return same.error();
+        data.colors = std::move(*colors);
+    }
+    data.material = primitive.material;
 
     const bool indexed = primitive.indices >= 0;
     std::vector<std::uint32_t> indices;
@@ -522,6 +561,18 @@ Result<std::vector<glm::dmat4>> readInstanceTransforms(const tinygltf::Model& mo
                                              std::to_string(i) + " has a non-finite transform");
     }
     return transforms;
+}
+
+Result<std::vector<glm::vec4>> readInstanceColors(const tinygltf::Model& model,
+                                                  const tinygltf::Value& extension,
+                                                  const std::string& where) {
+    const tinygltf::Value& attributes = extension.Get("attributes");
+    if (!attributes.Has("_COLOR_0"))
+        return std::vector<glm::vec4>{};
+    const tinygltf::Value& index = attributes.Get("_COLOR_0");
+    if (!index.IsNumber())
+        return makeError("", where + ": EXT_mesh_gpu_instancing _COLOR_0 is not an accessor index");
+    return readColors(model, index.GetNumberAsInt(), where + " _COLOR_0");
 }
 
 }  // namespace grass::core::gltf

@@ -5,218 +5,16 @@
 #include <optional>
 
 #include "mesh/gltf_accessors.h"
+#include "mesh/gltf_scene_walk.h"
 #include "mesh/gltf_source.h"
 
 namespace grass::core {
 namespace {
 
+using gltf::MeshInstance;
 using gltf::PrimitiveData;
 
-// A mesh placed in the world by one node (or by the file itself when it has no scenes).
-struct MeshInstance {
-    std::size_t mesh = 0;
-    glm::dmat4 world{1.0};
-};
-
-// Nodes with several parents (invalid, but they load) are walked once per parent; this bounds
-// the walk when such nodes are stacked into an exponential lattice.
-constexpr std::size_t MAX_NODE_VISITS = 1'000'000;
 constexpr std::uint32_t UNSET = std::numeric_limits<std::uint32_t>::max();
-
-std::string describeNode(const tinygltf::Model& model, std::size_t index) {
-    const std::string& name = model.nodes[index].name;
-    return "node " + std::to_string(index) + (name.empty() ? "" : " \"" + name + "\"");
-}
-
-bool isFinite(const glm::dmat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r]))
-                return false;
-    return true;
-}
-
-// The node's local transform: `matrix` (column-major) or T * R * S (spec §3.5.3).
-Result<glm::dmat4> localTransform(const tinygltf::Model& model, std::size_t index) {
-    const tinygltf::Node& node = model.nodes[index];
-    const auto bad = [&](const std::string& why) {
-        return makeError("", describeNode(model, index) + " has " + why);
-    };
-    glm::dmat4 local(1.0);
-    if (!node.matrix.empty()) {
-        if (node.matrix.size() != 16)
-            return bad("a matrix without 16 numbers");
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r)
-                local[c][r] = node.matrix[static_cast<std::size_t>(c * 4 + r)];
-    } else {
-        const auto& t = node.translation;
-        const auto& r = node.rotation;
-        const auto& s = node.scale;
-        if ((!t.empty() && t.size() != 3) || (!r.empty() && r.size() != 4) ||
-            (!s.empty() && s.size() != 3))
-            return bad("a translation, rotation or scale with the wrong number of values");
-        local = gltf::composeTrs(
-            t.empty() ? glm::dvec3(0.0) : glm::dvec3(t[0], t[1], t[2]),
-            r.empty() ? glm::dvec4(0, 0, 0, 1) : glm::dvec4(r[0], r[1], r[2], r[3]),
-            s.empty() ? glm::dvec3(1.0) : glm::dvec3(s[0], s[1], s[2]));
-    }
-    if (!isFinite(local))
-        return bad("a non-finite transform");
-    return local;
-}
-
-// Every mesh the chosen scene places, with its world transform.
-Result<std::vector<MeshInstance>> collectInstances(const tinygltf::Model& model,
-                                                   std::vector<std::string>& notes) {
-    std::vector<MeshInstance> instances;
-    if (model.scenes.empty()) {
-        notes.push_back("the file has no scenes: each of its " +
-                        std::to_string(model.meshes.size()) + " meshes placed once, untransformed");
-        for (std::size_t m = 0; m < model.meshes.size(); ++m)
-            instances.push_back({m});
-        return instances;
-    }
-    const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
-    if (static_cast<std::size_t>(sceneIndex) >= model.scenes.size())
-        return makeError("", "the default scene " + std::to_string(sceneIndex) +
-                                 " does not exist (the file has " +
-                                 std::to_string(model.scenes.size()) + " scenes)");
-    struct Frame {
-        int node;
-        int parent;  // -1 for the scene's roots
-        glm::dmat4 parentWorld;
-        bool leaving;
-    };
-    std::vector<Frame> stack;
-    const auto& roots = model.scenes[static_cast<std::size_t>(sceneIndex)].nodes;
-    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
-        stack.push_back({*it, -1, glm::dmat4(1.0), false});
-    std::vector<char> onPath(model.nodes.size(), 0);
-    std::vector<std::size_t> visits(model.nodes.size(), 0);
-    std::vector<char> skinNoted(model.meshes.size(), 0);
-    std::size_t totalVisits = 0;
-    bool sharedNoted = false;
-    while (!stack.empty()) {
-        const Frame frame = stack.back();
-        stack.pop_back();
-        const auto index = static_cast<std::size_t>(frame.node);
-        if (frame.leaving) {
-            onPath[index] = 0;
-            continue;
-        }
-        if (frame.node < 0 || index >= model.nodes.size())
-            return makeError(
-                "",
-                (frame.parent < 0 ? "scene " + std::to_string(sceneIndex)
-                                  : describeNode(model, static_cast<std::size_t>(frame.parent))) +
-                    " refers to node " + std::to_string(frame.node) + ", but the file has " +
-                    std::to_string(model.nodes.size()) + " nodes");
-        if (onPath[index])
-            return makeError("", describeNode(model, index) +
-                                     " is its own ancestor: the node hierarchy has a cycle");
-        if (++visits[index] == 2 && !sharedNoted) {
-            notes.push_back(describeNode(model, index) +
-                            " has more than one parent: placed once per parent");
-            sharedNoted = true;
-        }
-        if (++totalVisits > MAX_NODE_VISITS)
-            return makeError("", "the node hierarchy expands to more than " +
-                                     std::to_string(MAX_NODE_VISITS) + " node instances");
-        const auto local = localTransform(model, index);
-        if (!local)
-            return local.error();
-        const glm::dmat4 world = frame.parentWorld * *local;
-        const tinygltf::Node& node = model.nodes[index];
-        if (node.mesh >= 0) {
-            const auto mesh = static_cast<std::size_t>(node.mesh);
-            if (mesh >= model.meshes.size())
-                return makeError("", describeNode(model, index) + " refers to mesh " +
-                                         std::to_string(node.mesh) + ", but the file has " +
-                                         std::to_string(model.meshes.size()) + " meshes");
-            // Spec §3.7.3: a skinned mesh ignores its node's transform; without the joints,
-            // its bind pose is the mesh as stored.
-            if (node.skin >= 0 && !skinNoted[mesh]) {
-                notes.push_back(gltf::describeMesh(model, mesh) +
-                                " is skinned: placed in its bind pose");
-                skinNoted[mesh] = 1;
-            }
-            const glm::dmat4 meshWorld = node.skin >= 0 ? glm::dmat4(1.0) : world;
-            const auto gpuInstancing = node.extensions.find("EXT_mesh_gpu_instancing");
-            if (gpuInstancing == node.extensions.end()) {
-                instances.push_back({mesh, meshWorld});
-            } else {
-                // Instances replace the plain mesh; each goes node world * instance (T R S).
-                const auto transforms = gltf::readInstanceTransforms(model, gpuInstancing->second,
-                                                                     describeNode(model, index));
-                if (!transforms)
-                    return transforms.error();
-                for (const glm::dmat4& instance : *transforms)
-                    instances.push_back({mesh, meshWorld * instance});
-            }
-        }
-        onPath[index] = 1;
-        stack.push_back({frame.node, frame.parent, world, true});
-        for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
-            stack.push_back({*it, frame.node, world, false});
-    }
-    return instances;
-}
-
-// Decodes the triangle primitives of one mesh; other primitives are skipped with a note.
-Result<std::vector<PrimitiveData>> decodeMesh(const tinygltf::Model& model, std::size_t meshIndex,
-                                              std::vector<std::string>& notes) {
-    std::vector<PrimitiveData> primitives;
-    const auto& mesh = model.meshes[meshIndex];
-    const std::string meshName = gltf::describeMesh(model, meshIndex);
-    bool morphNoted = false;
-    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
-        const auto& primitive = mesh.primitives[p];
-        const std::string where = meshName + " primitive " + std::to_string(p);
-        switch (primitive.mode) {
-            case TINYGLTF_MODE_POINTS:
-                notes.push_back(where + ": points ignored");
-                continue;
-            case TINYGLTF_MODE_LINE:
-            case TINYGLTF_MODE_LINE_LOOP:
-            case TINYGLTF_MODE_LINE_STRIP:
-                notes.push_back(where + ": lines ignored");
-                continue;
-            case TINYGLTF_MODE_TRIANGLES:
-            case TINYGLTF_MODE_TRIANGLE_STRIP:
-            case TINYGLTF_MODE_TRIANGLE_FAN:
-                break;
-            default:
-                notes.push_back(where + ": unknown mode " + std::to_string(primitive.mode) +
-                                " ignored");
-                continue;
-        }
-        const auto position = primitive.attributes.find("POSITION");
-        if (position == primitive.attributes.end()) {
-            // Spec §3.7.2.1: without positions a primitive SHOULD be skipped.
-            notes.push_back(where + ": no POSITION, skipped");
-            continue;
-        }
-        // A Draco primitive whose uncompressed fallback is absent has POSITION without data.
-        if (primitive.extensions.count("KHR_draco_mesh_compression") && position->second >= 0 &&
-            static_cast<std::size_t>(position->second) < model.accessors.size()) {
-            const auto& accessor = model.accessors[static_cast<std::size_t>(position->second)];
-            if (accessor.bufferView < 0 && !accessor.sparse.isSparse)
-                return makeError("", where +
-                                         " is Draco-compressed (KHR_draco_mesh_compression), "
-                                         "which grass cannot decode");
-        }
-        if (!primitive.targets.empty() && !morphNoted) {
-            notes.push_back(meshName + ": morph targets ignored (base shape used)");
-            morphNoted = true;
-        }
-        auto data = gltf::readTrianglePrimitive(model, primitive, where);
-        if (!data)
-            return data.error();
-        primitives.push_back(std::move(*data));
-    }
-    return primitives;
-}
 
 struct MergeStats {
     std::size_t primitives = 0;
@@ -229,14 +27,8 @@ struct MergeStats {
 // and those without UV0 a NaN UV: both are filled in once the whole mesh exists.
 Result<void> addPrimitive(SurfaceMeshBuilder& builder, const PrimitiveData& data,
                           const glm::dmat4& world, const std::string& meshName, MergeStats& stats) {
-    const glm::dmat3 linear(world);
-    // Normals go by the inverse-transpose, whose columns are the cross products of the
-    // matrix's columns over its determinant; only the direction matters, so divide by the
-    // determinant's sign. A mirroring transform reverses winding (spec §3.7.4).
-    const glm::dmat3 cofactor(glm::cross(linear[1], linear[2]), glm::cross(linear[2], linear[0]),
-                              glm::cross(linear[0], linear[1]));
-    const double det = glm::determinant(linear);
-    const glm::dmat3 normalMatrix = det < 0.0 ? -cofactor : cofactor;
+    const glm::dmat3 normalMatrix = gltf::normalMatrix(world);
+    const double det = glm::determinant(glm::dmat3(world));
     const bool hasNormals = !data.normals.empty();
     const bool hasUv = !data.uvs.empty();
     const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -340,7 +132,7 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file) {
     result.notes = std::move(source->notes);
     const auto withPath = [&](const Error& error) { return makeError(display, error.message); };
 
-    const auto instances = collectInstances(model, result.notes);
+    const auto instances = gltf::collectInstances(model, result.notes);
     if (!instances)
         return withPath(instances.error());
     // Decoded once per mesh, shared by every node that places it.
@@ -350,7 +142,7 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file) {
     for (const MeshInstance& instance : *instances) {
         auto& primitives = decoded[instance.mesh];
         if (!primitives) {
-            auto read = decodeMesh(model, instance.mesh, result.notes);
+            auto read = gltf::decodeMesh(model, instance.mesh, result.notes);
             if (!read)
                 return withPath(read.error());
             primitives = std::move(*read);

@@ -210,6 +210,27 @@ const Json* member(const Json& object, const char* key) {
     return it == object.end() ? nullptr : &*it;
 }
 
+// glTF 2.0 §5.22: baseColorFactor is four numbers in 0..1, white by default.
+std::vector<glm::vec4> baseColorFactors(const Json& doc) {
+    std::vector<glm::vec4> colors;
+    const Json* materials = member(doc, "materials");
+    if (!materials || !materials->is_array())
+        return colors;
+    for (const Json& material : *materials) {
+        glm::vec4 color(1.0f);
+        const Json* pbr = material.is_object() ? member(material, "pbrMetallicRoughness") : nullptr;
+        const Json* factor = pbr && pbr->is_object() ? member(*pbr, "baseColorFactor") : nullptr;
+        if (factor && factor->is_array() && factor->size() == 4 &&
+            std::all_of(factor->begin(), factor->end(), [](const Json& v) {
+                return v.is_number() && v.get<double>() >= 0.0 && v.get<double>() <= 1.0;
+            }))
+            for (int c = 0; c < 4; ++c)
+                color[c] = (*factor)[static_cast<std::size_t>(c)].get<float>();
+        colors.push_back(color);
+    }
+    return colors;
+}
+
 // Required extensions: we refuse those that change the geometry and that we cannot decode
 // (glTF 2.0 §3.12: a loader MUST fail on a required extension it does not support), and
 // ignore those that only concern appearance.
@@ -423,6 +444,7 @@ Result<GltfSource> parseGltfFile(const fs::path& file) {
                 return prepared.error();
         }
     }
+    source.baseColors = baseColorFactors(doc);
     // Geometry needs none of these; left in, a broken texture or animation could fail the load.
     for (const char* key :
          {"images", "textures", "samplers", "materials", "animations", "skins", "cameras"})

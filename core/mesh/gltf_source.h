@@ -7,6 +7,7 @@
 
 #include <tiny_gltf.h>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ namespace grass::core::gltf {
 struct GltfSource {
     tinygltf::Model model;  // images, textures, materials, animations, skins, cameras left out
     std::vector<std::string> notes;  // things ignored, one line each
+    // Each material's pbrMetallicRoughness.baseColorFactor (linear RGBA; white where absent or
+    // outside the spec's 0..1), by material index: the one material fact the geometry keeps.
+    std::vector<glm::vec4> baseColors;
 };
 
 // Errors name `file` as given and say what is wrong in one line.

@@ -39,6 +39,10 @@ struct RenderOptions {
     core::SnowParams snow;
     // Draw the opaque surfaces as (Fp, Fe, Fi) in (R, G, B), unlit, to measure the snow mask.
     bool snowCoverageView = false;
+    // Draw the blades and the opaque surfaces in their unlit colour (albedo): how an export's
+    // geometry and colours are compared with a stock viewer's (tests/gl/export_stock_gl_test.cpp)
+    // without the two lighting models in the way.
+    bool albedoView = false;
     // The snow surface is tessellated so that its edges span about snowTessPixels on screen,
     // cut at most snowTessMax times (shaders/mesh_snow.tesc); renderOptionsFor doubles it on
     // software rasterizers.

@@ -86,6 +86,7 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     program.set("uLodDistance", std::max(options.cull.lodDistanceM, 0.0f));
     program.set("uFadeOut", hybrid ? options.billboards.crossFadeM : glm::vec2(0.0f));
     program.set("uLightPerVertex", options.lightPerVertex ? 1 : 0);
+    program.set("uAlbedoView", options.albedoView ? 1 : 0);
     program.set("uSnowTips", mSnowLies ? 1 : 0);
     program.set("uSnowTipColor", options.snow.snowColor);
     if (hybrid)

@@ -35,6 +35,7 @@ void SceneRenderer::drawOpaquePass(const glm::mat4& viewProj, const RenderOption
     const gl::Program& opaque = mSnowLies ? snowMeshProgram() : mMeshProgram;
     opaque.use();
     opaque.set("uViewProj", viewProj);
+    opaque.set("uAlbedoView", options.albedoView ? 1 : 0);
     drawOpaque(options, true);
     mPasses.push_back(mSnowLies ? "opaque_snow" : "opaque");
     mMeshTimer.end();

@@ -13,6 +13,8 @@ uniform vec3 uTipColor;
 uniform vec3 uPoorRootColor;
 uniform vec3 uPoorTipColor;
 uniform int uLightPerVertex;
+// 1: the unlit colour (RenderOptions::albedoView), to compare geometry and colour alone.
+uniform int uAlbedoView;
 // Snow on the tips (SPEC §11): the cull pass writes each drawn blade's tip whiteness; 0 = no snow
 // (the buffer is then not bound and not read).
 uniform int uSnowTips;
@@ -41,6 +43,7 @@ vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeInd
         float white = bladeSnowWhiteness(tipSnow[bladeIndex], height);
         albedo = white * uSnowTipColor + (1.0 - white) * albedo;
     }
+    if (uAlbedoView != 0) return albedo;
     if (uGrassLighting == 0) {
         // A thin blade's normal is nearly horizontal, so a high sun would leave the field
         // black; leaning it towards the surface normal lights it the way a field scatters.

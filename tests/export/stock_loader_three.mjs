@@ -6,7 +6,7 @@
 // For every live blade: an instance at its root, the instance's mesh tip (world space, through
 // the node hierarchy) within 10 % of the blade's height of the blade's tip in the median and
 // 5 % at worst, its colour at the tip (instance colour × vertex colour) the blade's tip colour
-// within 1e-4, and one InstancedMesh per cell and lean bin (more than one). Prints the figures;
+// within 1e-4, and one InstancedMesh per cell, lean bin and wilt bin (more than one). Prints the figures;
 // exits 1 on a failed check.
 import fs from 'node:fs';
 import path from 'node:path';

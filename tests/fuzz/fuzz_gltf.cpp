@@ -1,5 +1,5 @@
 // Fuzz target: glTF and GLB through loadGltf, as a project's mesh, a collider mesh and
-// `grass mesh-info` are read. Built twice: GRASS_FUZZ_GLTF_EXTENSION ".glb" writes the input as
+// `grass mesh-info` are read, and through loadGltfView (colours and instance colours too). Built twice: GRASS_FUZZ_GLTF_EXTENSION ".glb" writes the input as
 // scene.glb; ".gltf" writes the input up to its first NUL byte as scene.gltf and the rest, when
 // there is a NUL, as scene.bin, so that the buffer a .gltf references is fuzzed with it (JSON
 // text holds no raw NUL; seeds with data: URIs carry their buffers inline).
@@ -9,6 +9,7 @@
 
 #include "fuzz_scratch.h"
 #include "mesh/gltf_loader.h"
+#include "mesh/gltf_view.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace grass;
@@ -36,6 +37,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                     if (!std::isfinite(mesh.normal(vh)[axis]))
                         fuzz::fail("a loaded glTF has a non-finite normal at vertex " +
                                    std::to_string(vh.idx()));
+    }
+    // The view reads what the import skips (COLOR_0, _COLOR_0); a bounded vertex count keeps
+    // an instancing bomb from exhausting memory.
+    const auto view = core::loadGltfView(file, 1u << 20);
+    if (!view) {
+        fuzz::checkError(view.error());
+    } else {
+        if (view->colors.size() != view->positions.size() || view->normals.size() != view->positions.size())
+            fuzz::fail("a glTF view's attributes differ in count");
+        for (const std::uint32_t index : view->indices)
+            if (index >= view->positions.size())
+                fuzz::fail("a glTF view's index is out of range");
     }
     fuzz::clearScratch();
     return 0;
