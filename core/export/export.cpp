@@ -67,9 +67,9 @@ std::string glbFileName(const Project& project, ExportFormat format) {
 }
 
 // A glTF surface keeps its own material in the export (source_material.h).
-json terrainMaterialOf(const LoadedProject& loaded) {
+SourceMaterial terrainMaterialOf(const LoadedProject& loaded) {
     const MeshSource& mesh = loaded.project.mesh;
-    return mesh.isFile ? sourceMeshMaterial(loaded.folder / mesh.file) : json(nullptr);
+    return mesh.isFile ? sourceMeshMaterial(loaded.folder / mesh.file) : SourceMaterial{};
 }
 
 json colorJson(glm::vec3 color) {
@@ -331,6 +331,9 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
         return lock.error();
 
     ExportReport report;
+    if (options.format != ExportFormat::Raw)
+        for (const std::string& note : terrainMaterialOf(loaded).notes)
+            report.notes.push_back("terrain material: " + note);
     Result<void> staging = [&]() -> Result<void> {
         StagedFiles staged(options.outDir);
         staged.protect(std::move(inputs));

@@ -53,6 +53,8 @@ struct ExportedLayer {
 struct ExportReport {
     std::vector<ExportedFile> files;  // in the order written
     std::vector<ExportedLayer> layers;
+    // What did not travel (a source texture on another UV set, ...), one line each.
+    std::vector<std::string> notes;
     std::uint64_t totalBytes() const;
 };
 

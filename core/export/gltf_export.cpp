@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "export/blade_instances.h"
+#include "export/vertex_tangents.h"
 #include "export/content_names.h"
 #include "export/gltf_builder.h"
 #include "export/merged_blades.h"
@@ -59,8 +60,9 @@ json colorFactor(glm::vec3 color) {
     return json::array({color.r, color.g, color.b, 1.0f});
 }
 
-// The terrain: every vertex of the surface mesh with its normal and UV0, and its triangles.
-json terrainMesh(GltfBuilder& builder, const SurfaceMesh& mesh, int material) {
+// The terrain: every vertex of the surface mesh with its normal and UV0, and its triangles;
+// `withTangents` (a normal-mapped material) adds TANGENT (vertex_tangents.h).
+json terrainMesh(GltfBuilder& builder, const SurfaceMesh& mesh, int material, bool withTangents) {
     std::vector<float> positions, normals, uvs;
     positions.reserve(mesh.n_vertices() * 3);
     for (const auto vertex : mesh.vertices()) {
@@ -74,9 +76,24 @@ json terrainMesh(GltfBuilder& builder, const SurfaceMesh& mesh, int material) {
     std::vector<std::uint32_t> indices;
     for (const auto& triangle : triangleIndices(mesh))
         indices.insert(indices.end(), triangle.begin(), triangle.end());
-    const json attributes = {{"POSITION", builder.addFloats(positions, 3, GltfTarget::ArrayBuffer)},
-                             {"NORMAL", builder.addFloats(normals, 3, GltfTarget::ArrayBuffer)},
-                             {"TEXCOORD_0", builder.addFloats(uvs, 2, GltfTarget::ArrayBuffer)}};
+    json attributes = {{"POSITION", builder.addFloats(positions, 3, GltfTarget::ArrayBuffer)},
+                       {"NORMAL", builder.addFloats(normals, 3, GltfTarget::ArrayBuffer)},
+                       {"TEXCOORD_0", builder.addFloats(uvs, 2, GltfTarget::ArrayBuffer)}};
+    if (withTangents) {
+        const auto vec3s = [](const std::vector<float>& v) {
+            std::vector<glm::vec3> out(v.size() / 3);
+            for (std::size_t i = 0; i < out.size(); ++i)
+                out[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+            return out;
+        };
+        std::vector<glm::vec2> uv2(uvs.size() / 2);
+        for (std::size_t i = 0; i < uv2.size(); ++i)
+            uv2[i] = {uvs[2 * i], uvs[2 * i + 1]};
+        std::vector<float> tangents;
+        for (const glm::vec4& t : vertexTangents(vec3s(positions), vec3s(normals), uv2, triangleIndices(mesh)))
+            push(tangents, {t.x, t.y, t.z, t.w});
+        attributes["TANGENT"] = builder.addFloats(tangents, 4, GltfTarget::ArrayBuffer);
+    }
     return {{"name", "terrain"},
             {"primitives", {meshPrimitive(attributes, builder.addIndices(indices), material)}}};
 }
@@ -215,13 +232,53 @@ struct DocumentParts {
     }
 };
 
-// The terrain node, with the project's ground colour or the source mesh's material.
-// `sourceMaterial`, when not null, is the source mesh's (source_material.h).
+// The source material's textures embedded in the buffer (PNG or JPEG as the source held them),
+// its slots' indices moved to the document's textures.
+json withEmbeddedTextures(DocumentParts& parts, const SourceMaterial& source) {
+    json material = source.material;
+    if (source.textures.empty())
+        return material;
+    json& doc = parts.doc();
+    for (const char* array : {"images", "textures"})
+        if (!doc.contains(array))
+            doc[array] = json::array();
+    const std::size_t first = doc["textures"].size();
+    for (std::size_t i = 0; i < source.textures.size(); ++i) {
+        const SourceTexture& texture = source.textures[i];
+        const std::string name = "terrain texture " + std::to_string(i);
+        doc["images"].push_back({{"name", name},
+                                 {"bufferView", parts.builder.addBytes(texture.bytes)},
+                                 {"mimeType", texture.mimeType}});
+        json entry = {{"name", name}, {"source", doc["images"].size() - 1}};
+        if (texture.sampler.is_object()) {
+            if (!doc.contains("samplers"))
+                doc["samplers"] = json::array();
+            doc["samplers"].push_back(texture.sampler);
+            entry["sampler"] = doc["samplers"].size() - 1;
+        }
+        doc["textures"].push_back(entry);
+    }
+    const auto move = [&](json& slot) {
+        if (slot.is_object() && slot.contains("index"))
+            slot["index"] = first + slot["index"].get<std::size_t>();
+    };
+    if (material.contains("pbrMetallicRoughness"))
+        for (const char* key : {"baseColorTexture", "metallicRoughnessTexture"})
+            if (material["pbrMetallicRoughness"].contains(key))
+                move(material["pbrMetallicRoughness"][key]);
+    for (const char* key : {"normalTexture", "occlusionTexture", "emissiveTexture"})
+        if (material.contains(key))
+            move(material[key]);
+    return material;
+}
+
+// The terrain node, with the project's ground colour or the source mesh's material
+// (source_material.h) when it has one.
 void addTerrain(DocumentParts& parts, const SurfaceMesh& mesh, glm::vec3 groundColor,
-                const json& sourceMaterial) {
+                const SourceMaterial& sourceMaterial) {
     const int material =
-        sourceMaterial.is_object()
-            ? parts.addMaterial(sourceMaterial)
+        sourceMaterial.material.is_object()
+            ? parts.addMaterial(withEmbeddedTextures(parts, sourceMaterial))
             : parts.addMaterial({{"name", "terrain"},
                                  {"pbrMetallicRoughness",
                                   {{"baseColorFactor", colorFactor(groundColor)},
@@ -229,7 +286,9 @@ void addTerrain(DocumentParts& parts, const SurfaceMesh& mesh, glm::vec3 groundC
                                    {"roughnessFactor", 1.0}}}});
     if (mesh.n_faces() == 0)
         return;
-    const int meshIndex = parts.addMesh(terrainMesh(parts.builder, mesh, material));
+    const bool normalMapped = sourceMaterial.material.is_object() &&
+                              sourceMaterial.material.contains("normalTexture");
+    const int meshIndex = parts.addMesh(terrainMesh(parts.builder, mesh, material, normalMapped));
     parts.topNodes.push_back(parts.addNode({{"name", "terrain"}, {"mesh", meshIndex}}));
 }
 

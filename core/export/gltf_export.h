@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "export/source_material.h"
 #include "scene/scene.h"
 
 namespace grass::core {
@@ -42,8 +43,9 @@ struct GltfLayerInput {
     // Segments along the unit blade (the project's strip segments, 1..32).
     int segments = 8;
     glm::vec3 groundColor{0.3f, 0.24f, 0.16f};
-    // The source mesh's material (source_material.h); null: the ground colour.
-    nlohmann::json terrainMaterial;
+    // The source mesh's material and textures (source_material.h); a null material: the
+    // ground colour.
+    SourceMaterial terrainMaterial;
     // The buffer's file is named "<binStem>-<hash of its bytes>.bin" (content_names.h).
     std::string binStem;
     std::vector<GltfMapImage> maps;
@@ -60,7 +62,7 @@ struct GltfSceneInput {
     int lod = 0;
     int segments = 8;
     glm::vec3 groundColor{0.3f, 0.24f, 0.16f};
-    nlohmann::json terrainMaterial;  // as GltfLayerInput's
+    SourceMaterial terrainMaterial;  // as GltfLayerInput's
     std::vector<std::vector<GltfMapImage>> layerMaps;  // per layer, with their PNG bytes
     // The blades baked into plain meshes per cell (merged_blades.h, --format mesh) instead of
     // instances.

@@ -339,6 +339,28 @@ Result<void> prepareBuffer(Json& buffer, std::size_t index, const GlbChunks* glb
     return {};
 }
 
+}  // namespace
+
+Result<fs::path> fileNextToGltf(const fs::path& gltfFile, const std::string& uri,
+                                const std::string& what) {
+    const std::string display = gltfFile.string();
+    const auto relative = resolveFileUri(uri, what, display);
+    if (!relative)
+        return relative.error();
+    const fs::path folder = fs::absolute(gltfFile).parent_path().lexically_normal();
+    const fs::path file = folder / *relative;
+    std::error_code ec;
+    if (!isInsideFolder(file, folder))
+        return makeError(display, what + " file \"" + relative->generic_string() +
+                                      "\" is a symbolic link leading outside the glTF file's folder");
+    if (!fs::is_regular_file(file, ec))
+        return makeError(display, what + " file \"" + relative->generic_string() +
+                                      "\" not found next to the glTF file");
+    return file;
+}
+
+namespace {
+
 // tinygltf's multi-line messages as one line.
 std::string oneLine(const std::string& text) {
     std::string out;

@@ -26,4 +26,10 @@ struct GltfSource {
 // Errors name `file` as given and say what is wrong in one line.
 Result<GltfSource> parseGltfFile(const std::filesystem::path& file);
 
+// The file a relative URI of `gltfFile` names (percent-decoded), refused unless it is a regular
+// file inside the glTF file's folder (no absolute paths, "..", schemes or links out). `what`
+// names the referrer in the message ("image 2").
+Result<std::filesystem::path> fileNextToGltf(const std::filesystem::path& gltfFile,
+                                             const std::string& uri, const std::string& what);
+
 }  // namespace grass::core::gltf

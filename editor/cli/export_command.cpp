@@ -125,6 +125,7 @@ Result<core::ExportReport> exportWithProgress(const core::LoadedProject& loaded,
 
 void printExportReport(const core::LoadedProject& loaded, const core::ExportOptions& options,
                        const core::ExportReport& report, double exportMs, double growMs) {
+    printNotes(report.notes);
     for (const auto& layer : report.layers)
         std::printf("layer \"%s\": %zu live blades, %zu %s\n", layer.name.c_str(), layer.liveBlades,
                     layer.instances,

@@ -49,7 +49,7 @@ grass_cli_test(export_out_is_a_file ERROR "--out" --also "is not a folder"
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_PROJECTS}/tiny/project.json)
 
 # The Khronos validator on exported glTF: a procedural plane, a glTF mesh with a cube (rock),
-# a LOD, and projects/meadow (58,942 blades, the three painted maps as PNG images).
+# a textured glTF surface, a LOD, and projects/meadow (58,942 blades, the three painted maps as PNG images).
 function(grass_export_validate_test name project)
     add_test(NAME cli.export_validate_${name}
         COMMAND ${GRASS_BASH} ${CMAKE_CURRENT_SOURCE_DIR}/export/export_and_validate.sh
@@ -63,6 +63,9 @@ grass_export_validate_test(rock ${GRASS_CLI_PROJECTS}/rock)
 grass_export_validate_test(meadow ${GRASS_SOURCE_DIR}/projects/meadow)
 grass_export_validate_test(meadow_glb ${GRASS_SOURCE_DIR}/projects/meadow --format glb)
 grass_export_validate_test(meadow_mesh ${GRASS_SOURCE_DIR}/projects/meadow --format mesh)
+# A glTF surface with a base-colour and a normal texture: both travel embedded, with tangents.
+grass_export_validate_test(textured_stone ${GRASS_CLI_PROJECTS}/textured_stone)
+grass_export_validate_test(textured_stone_glb ${GRASS_CLI_PROJECTS}/textured_stone --format glb)
 
 # A stock third-party loader (three.js' GLTFLoader) draws the meadow's export as the field at
 # rest: every blade an instance, tips and colours as the raw export's exact blades (issue 25).

@@ -164,6 +164,12 @@ TEST_F(ExportStockTest, AStockViewerDrawsTheMeadowAsGrassRenderDoes) {
     };
     Pictures exact = picturesWith(false);
     Pictures asRendered = picturesWith(true);
+    // The lit pictures, for a look (docs/export-stock-viewer.png): each viewer's own lighting.
+    request.options.albedoView = false;
+    const Pictures lit = picturesWith(true);
+    save(lit.ours, dir / "grass_render_lit.png");
+    save(lit.stock, dir / "stock_viewer_lit.png");
+    request.options.albedoView = true;
     makeUprightOneColourExport(file, scene->layers[0], loaded->project.render.stripSegments);
     exact.before = drawAsStockViewer(file, *camera, request.options);
     asRendered.before = exact.before;

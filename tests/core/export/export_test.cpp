@@ -20,7 +20,9 @@
 #include "export/gltf_export.h"
 #include "export/merged_blades.h"
 #include "export/raw_export.h"
+#include "export/source_material.h"
 #include "maps/map_image.h"
+#include "support/gltf_writer.h"
 #include "support/test_paths.h"
 #include "util/atomic_file.h"
 #include "util/rng.h"
@@ -419,6 +421,87 @@ TEST(Export, TerrainKeepsTheSourceMeshsMaterial) {
         EXPECT_DOUBLE_EQ(material.pbrMetallicRoughness.roughnessFactor, 0.3);
         EXPECT_DOUBLE_EQ(material.pbrMetallicRoughness.metallicFactor, 1.0) << "7 is not a factor: the default";
         EXPECT_TRUE(material.doubleSided);
+    }
+}
+
+// The source material's PNG and JPEG textures travel embedded (issue 25 item 2): from a file next
+// to the .gltf and from a .glb's own buffer; a texture on another UV set or in another format
+// stays behind with a note.
+TEST(Export, TerrainCarriesTheSourceMeshsTextures) {
+    const fs::path dir = test::scratchDir("export_textures");
+    MapImage stone;
+    stone.width = stone.height = 4;
+    stone.texels.assign(16, 0.5f);
+    ASSERT_TRUE(saveMapImage(stone, dir / "stone.png", MapSampleFormat::UInt8).ok());
+    const std::string png = *readFile(dir / "stone.png");
+    for (const bool glb : {false, true}) {
+        test::GltfDocument doc = test::buildGltf(test::singleMeshAsset(test::gridPrimitive(2, 2, 2)));
+        nlohmann::json image = {{"uri", "stone.png"}};
+        if (glb) {
+            while (doc.bin.size() % 4 != 0)
+                doc.bin.push_back(0);
+            doc.json["bufferViews"].push_back(
+                {{"buffer", 0}, {"byteOffset", doc.bin.size()}, {"byteLength", png.size()}});
+            doc.bin.insert(doc.bin.end(), png.begin(), png.end());
+            doc.json["buffers"][0]["byteLength"] = doc.bin.size();
+            image = {{"bufferView", doc.json["bufferViews"].size() - 1}, {"mimeType", "image/png"}};
+        }
+        std::ofstream(dir / "fake.gif") << "GIF89a";
+        doc.json["images"] = {image, {{"uri", "fake.gif"}}};
+        doc.json["samplers"] = {{{"magFilter", 9728}, {"wrapS", 33071}, {"wrapT", 7}}};
+        doc.json["textures"] = {{{"source", 0}, {"sampler", 0}}, {{"source", 1}}};
+        doc.json["materials"] = {{{"name", "stone"},
+                                  {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}},
+                                  {"normalTexture", {{"index", 0}, {"scale", 0.5}}},
+                                  {"occlusionTexture", {{"index", 0}, {"texCoord", 1}}},
+                                  {"emissiveTexture", {{"index", 1}}}}};
+        doc.json["meshes"][0]["primitives"][0]["material"] = 0;
+        const std::string source = glb ? "stone.glb" : "stone.gltf";
+        test::writeGltf(dir / source, doc, glb ? test::BufferStorage::Glb : test::BufferStorage::ExternalFile);
+
+        const SourceMaterial material = sourceMeshMaterial(dir / source);
+        ASSERT_EQ(material.textures.size(), 1u) << source;
+        EXPECT_EQ(material.textures[0].bytes, png);
+        ASSERT_EQ(material.notes.size(), 2u) << "TEXCOORD_1 and the GIF are left behind";
+        EXPECT_NE(material.notes[0].find("TEXCOORD_1"), std::string::npos) << material.notes[0];
+        EXPECT_NE(material.notes[1].find("neither PNG nor JPEG"), std::string::npos) << material.notes[1];
+
+        std::ofstream(dir / "project.json") << R"({"format": "grass-project", "version": 1,
+            "name": "stone", "mesh": {"file": ")" + source + R"("},
+            "layers": [{"name": "grass", "density": 20.0}]})";
+        const Built built = buildProjectAt(dir / "project.json");
+        auto report = exportProject(built.loaded, built.scene, options(ExportFormat::Glb, 0, dir / "out"), {});
+        ASSERT_TRUE(report.ok()) << report.error().str();
+        tinygltf::Model model;
+        tinygltf::TinyGLTF loader;
+        loader.SetImageLoader(skipImage, nullptr);
+        std::string error, warning;
+        ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, (dir / "out/stone.glb").string())) << error;
+        const tinygltf::Material& out = model.materials.at(0);
+        EXPECT_EQ(out.name, "terrain: stone");
+        const int base = out.pbrMetallicRoughness.baseColorTexture.index;
+        ASSERT_GE(base, 0);
+        EXPECT_EQ(out.normalTexture.index, base);
+        EXPECT_DOUBLE_EQ(out.normalTexture.scale, 0.5);
+        EXPECT_EQ(out.occlusionTexture.index, -1);
+        EXPECT_EQ(out.emissiveTexture.index, -1);
+        const tinygltf::Texture& texture = model.textures.at(std::size_t(base));
+        const tinygltf::Sampler& sampler = model.samplers.at(std::size_t(texture.sampler));
+        EXPECT_EQ(sampler.magFilter, 9728);
+        EXPECT_EQ(sampler.wrapS, 33071);
+        EXPECT_EQ(sampler.wrapT, 10497) << "7 is no wrap mode: the default";
+        const tinygltf::Image& embedded = model.images.at(std::size_t(texture.source));
+        EXPECT_EQ(embedded.mimeType, "image/png");
+        const tinygltf::BufferView& view = model.bufferViews.at(std::size_t(embedded.bufferView));
+        const auto& bytes = model.buffers.at(std::size_t(view.buffer)).data;
+        EXPECT_EQ(std::string(bytes.begin() + std::ptrdiff_t(view.byteOffset),
+                              bytes.begin() + std::ptrdiff_t(view.byteOffset + view.byteLength)),
+                  png);
+        // The terrain keeps the source's UVs, which the texture reads, and has tangents for its
+        // normal map.
+        const auto& attributes = model.meshes.at(0).primitives.at(0).attributes;
+        EXPECT_TRUE(attributes.count("TEXCOORD_0"));
+        EXPECT_TRUE(attributes.count("TANGENT"));
     }
 }
 
