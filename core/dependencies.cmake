@@ -12,7 +12,11 @@ find_package(OpenMesh REQUIRED)
 find_package(TinyGLTF REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(Threads REQUIRED)
+# Compressed glTF geometry (issue 26): KHR_draco_mesh_compression and EXT_meshopt_compression.
+find_package(draco REQUIRED)
+find_package(meshoptimizer REQUIRED)
 # Debian's OpenImageIO CMake config demands the command-line tools package; pkg-config does not.
 #   (find_package(OpenImageIO) fails on a machine without openimageio-tools.)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+

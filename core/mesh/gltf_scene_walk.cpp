@@ -1,5 +1,7 @@
 #include "mesh/gltf_scene_walk.h"
 
+#include "mesh/gltf_draco.h"
+
 #include <cmath>
 
 namespace grass::core::gltf {
@@ -206,20 +208,16 @@ Result<std::vector<PrimitiveData>> decodeMesh(const tinygltf::Model& model, std:
             notes.push_back(where + ": no POSITION, skipped");
             continue;
         }
-        // A Draco primitive whose uncompressed fallback is absent has POSITION without data.
-        if (primitive.extensions.count("KHR_draco_mesh_compression") && position->second >= 0 &&
-            static_cast<std::size_t>(position->second) < model.accessors.size()) {
-            const auto& accessor = model.accessors[static_cast<std::size_t>(position->second)];
-            if (accessor.bufferView < 0 && !accessor.sparse.isSparse)
-                return makeError("", where +
-                                         " is Draco-compressed (KHR_draco_mesh_compression), "
-                                         "which grass cannot decode");
-        }
         if (!primitive.targets.empty() && !morphNoted) {
             notes.push_back(meshName + ": morph targets ignored (base shape used)");
             morphNoted = true;
         }
-        auto data = gltf::readTrianglePrimitive(model, primitive, where, withColors);
+        // Draco data wins over any uncompressed copy the file also carries (the extension's
+        // advice to loaders that decode it).
+        const auto draco = primitive.extensions.find("KHR_draco_mesh_compression");
+        auto data = draco != primitive.extensions.end()
+                        ? readDracoPrimitive(model, primitive, draco->second, where, withColors)
+                        : readTrianglePrimitive(model, primitive, where, withColors);
         if (!data)
             return data.error();
         primitives.push_back(std::move(*data));

@@ -10,7 +10,9 @@
 #include <nlohmann/json.hpp>
 #include <string_view>
 
+#include "mesh/gltf_draco.h"
 #include "mesh/gltf_loader.h"
+#include "mesh/gltf_meshopt.h"
 #include "util/atomic_file.h"
 #include "util/json_text.h"
 #include "util/path_inside.h"
@@ -32,10 +34,22 @@ constexpr std::size_t CHUNK_HEADER_BYTES = 8;
 // checked. Everything else (its "." fallback folder, any other path) does not exist for it.
 struct FsContext {
     std::map<std::string, fs::path> files;
+    // EXT_meshopt_compression fallback buffers without data: this many zero bytes each, which
+    // the decoded bufferViews then fill (gltf_meshopt.h).
+    std::map<std::string, std::uint64_t> zeros;
+    // What fallback buffers may still claim in all: a compressed file cannot decode to more
+    // than a bounded multiple of its size, so neither may its fallbacks.
+    std::uint64_t fallbackBudget = 0;
 };
 
+// The bytes fallback buffers may claim: 64 times the file, and at least 64 MiB.
+std::uint64_t fallbackBudgetFor(std::uint64_t fileBytes) {
+    return std::max<std::uint64_t>(std::uint64_t{64} << 20, fileBytes * 64);
+}
+
 bool fileExists(const std::string& path, void* user) {
-    return static_cast<const FsContext*>(user)->files.count(path) != 0;
+    const auto* context = static_cast<const FsContext*>(user);
+    return context->files.count(path) != 0 || context->zeros.count(path) != 0;
 }
 
 std::string expandFilePath(const std::string& path, void*) {
@@ -44,7 +58,12 @@ std::string expandFilePath(const std::string& path, void*) {
 
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                    void* user) {
-    const auto& files = static_cast<const FsContext*>(user)->files;
+    const auto* context = static_cast<const FsContext*>(user);
+    if (const auto zeros = context->zeros.find(path); zeros != context->zeros.end()) {
+        out->assign(static_cast<std::size_t>(zeros->second), 0);
+        return true;
+    }
+    const auto& files = context->files;
     const auto it = files.find(path);
     if (it == files.end()) {
         if (err)
@@ -231,6 +250,28 @@ std::vector<glm::vec4> baseColorFactors(const Json& doc) {
     return colors;
 }
 
+// A Draco primitive's indices accessor has no bufferView (the indices are in the Draco stream),
+// which tinygltf 2.7 refuses; the accessor moves into the extension object as DRACO_INDICES_KEY,
+// where gltf_draco.cpp finds it to check the decoded count.
+void moveDracoIndices(Json& doc) {
+    Json* meshes = doc.is_object() && doc.contains("meshes") ? &doc["meshes"] : nullptr;
+    if (!meshes || !meshes->is_array())
+        return;
+    for (Json& mesh : *meshes) {
+        if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array())
+            continue;
+        for (Json& primitive : mesh["primitives"]) {
+            if (!primitive.is_object() || !primitive.contains("indices") || !primitive.contains("extensions") ||
+                !primitive["extensions"].is_object() ||
+                !primitive["extensions"].contains("KHR_draco_mesh_compression") ||
+                !primitive["extensions"]["KHR_draco_mesh_compression"].is_object())
+                continue;
+            primitive["extensions"]["KHR_draco_mesh_compression"][DRACO_INDICES_KEY] = primitive["indices"];
+            primitive.erase("indices");
+        }
+    }
+}
+
 // Required extensions: we refuse those that change the geometry and that we cannot decode
 // (glTF 2.0 §3.12: a loader MUST fail on a required extension it does not support), and
 // ignore those that only concern appearance.
@@ -247,16 +288,12 @@ Result<void> checkRequiredExtensions(const Json& doc, const std::string& display
         if (!entry.is_string())
             continue;
         const std::string name = entry.get<std::string>();
-        if (name == "KHR_mesh_quantization" || name == "EXT_mesh_gpu_instancing")
+        // Decoded: quantized attributes, GPU instances, Draco (gltf_draco.h) and meshoptimizer
+        // (gltf_meshopt.h) compression.
+        if (name == "KHR_mesh_quantization" || name == "EXT_mesh_gpu_instancing" ||
+            name == "KHR_draco_mesh_compression" || name == "EXT_meshopt_compression" ||
+            name == "KHR_meshopt_compression")
             continue;
-        std::string what;
-        if (name == "KHR_draco_mesh_compression")
-            what = " (Draco-compressed geometry)";
-        if (name == "EXT_meshopt_compression" || name == "KHR_meshopt_compression")
-            what = " (meshoptimizer-compressed buffers)";
-        if (!what.empty())
-            return makeError(display, "requires extension " + name + what +
-                                          ", which grass cannot decode; re-export without it");
         const bool appearance =
             std::any_of(std::begin(APPEARANCE_PREFIXES), std::end(APPEARANCE_PREFIXES),
                         [&](std::string_view prefix) { return name.starts_with(prefix); });
@@ -286,6 +323,24 @@ Result<void> prepareBuffer(Json& buffer, std::size_t index, const GlbChunks* glb
                                       ": the file is truncated or corrupt");
     };
     const Json* uriJson = member(buffer, "uri");
+    const Json* extensions = member(buffer, "extensions");
+    const bool fallback = extensions && extensions->is_object() &&
+                          std::any_of(extensions->begin(), extensions->end(), [](const Json& e) {
+                              const Json* flag = member(e, "fallback");
+                              return flag && flag->is_boolean() && flag->get<bool>();
+                          });
+    if ((!uriJson || !uriJson->is_string()) && fallback && !(glb && index == 0)) {
+        // Its bytes come from decoding the compressed bufferViews that point into it.
+        if (declared > context.fallbackBudget)
+            return makeError(display, what + " is an EXT_meshopt_compression fallback of " +
+                                          std::to_string(declared) +
+                                          " bytes, more than a file of this size decodes to");
+        context.fallbackBudget -= declared;
+        const std::string name = "grass-fallback-" + std::to_string(index) + ".bin";
+        buffer["uri"] = name;
+        context.zeros[base.empty() || base.back() == '/' ? base + name : base + "/" + name] = declared;
+        return {};
+    }
     if (!uriJson || !uriJson->is_string()) {
         if (!glb)
             return makeError(display, what +
@@ -457,6 +512,7 @@ Result<GltfSource> parseGltfFile(const fs::path& file) {
     const fs::path folder = fs::absolute(file).parent_path().lexically_normal();
     const std::string base = folder.string();
     FsContext context;
+    context.fallbackBudget = fallbackBudgetFor(bytes->size());
     if (Json* buffers = doc.is_object() && doc.contains("buffers") ? &doc["buffers"] : nullptr;
         buffers && buffers->is_array()) {
         for (std::size_t i = 0; i < buffers->size(); ++i) {
@@ -467,6 +523,7 @@ Result<GltfSource> parseGltfFile(const fs::path& file) {
         }
     }
     source.baseColors = baseColorFactors(doc);
+    moveDracoIndices(doc);
     // Geometry needs none of these; left in, a broken texture or animation could fail the load.
     for (const char* key :
          {"images", "textures", "samplers", "materials", "animations", "skins", "cameras"})
@@ -498,6 +555,8 @@ Result<GltfSource> parseGltfFile(const fs::path& file) {
                                                                   : oneLine(err)));
     if (const std::string warnings = oneLine(warn + err); !warnings.empty())
         source.notes.push_back("tinygltf: " + warnings);
+    if (auto decoded = decodeMeshoptBufferViews(source.model); !decoded)
+        return makeError(display, decoded.error().message);
     return source;
 }
 

@@ -93,6 +93,17 @@ grass_cli_test(mesh_info_gltf_text OK --no-stderr
     --stdout "^  area +36$" --stdout "^  normals +from file$" --stdout "^  uv0 +from file$"
     --stdout "^  bounds +\\[-2 0 -3\\] \\.\\. \\[4 0 3\\]$"
     -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/quad.gltf)
+# box_draco.glb and box_meshopt.glb: the same 4 x 2 x 3 m box (24 vertices, a normal and UVs
+# per face, area 52) compressed with KHR_draco_mesh_compression (positions at 14 bits) and
+# EXT_meshopt_compression (lossless), written by tests/support/compressed_gltf.cpp.
+grass_cli_test(mesh_info_draco OK --no-stderr
+    --stdout "^  vertices +24$" --stdout "^  triangles +12$" --stdout "^  area +52(\\.00[0-9]*)?$"
+    --stdout "^  normals +from file$" --stdout "^  uv0 +from file$"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/box_draco.glb)
+grass_cli_test(mesh_info_meshopt OK --no-stderr
+    --stdout "^  vertices +24$" --stdout "^  triangles +12$" --stdout "^  area +52$"
+    --stdout "^  bounds +\\[1 -0\\.5 2\\] \\.\\. \\[5 1\\.5 5\\]$"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/box_meshopt.glb)
 # cube.glb: a 2x2x2 cube around the origin (8 shared corners, 12 triangles, no normals, no UVs)
 # placed by a node matrix (uniform scale 0.5, translation [0, 1, 0]): a unit cube, area 6,
 # bounds [-0.5, 0.5, -0.5] .. [0.5, 1.5, 0.5].

@@ -83,7 +83,11 @@ write("gltf/accessor_past_buffer.gltf", dump(quad_doc(position_count=40)))
 # The buffer lives outside the glTF file's folder.
 write("gltf/outside_uri.gltf", dump(quad_doc(uri="../outside.bin")))
 write("outside.bin", floats(QUAD_POS) + floats(QUAD_NRM) + floats(QUAD_UV) + u16(QUAD_IDX))
+# Requires Draco and names a Draco stream that is not one (the quad's own positions): grass
+# decodes Draco, so the message must be the decoder's refusal, naming the extension.
 draco = quad_doc()
+draco["meshes"][0]["primitives"][0]["extensions"] = {
+    "KHR_draco_mesh_compression": {"bufferView": 0, "attributes": {"POSITION": 0}}}
 draco["extensionsUsed"] = ["KHR_draco_mesh_compression"]
 draco["extensionsRequired"] = ["KHR_draco_mesh_compression"]
 write("gltf/draco_required.gltf", dump(draco))

@@ -687,13 +687,7 @@ TEST(GltfLoader, RefusesAbsoluteBufferUri) {
     EXPECT_TRUE(contains(message, "absolute"));
 }
 
-TEST(GltfLoader, RefusesRequiredDracoCompression) {
-    const fs::path file = test::scratchDir("gltf_draco") / "draco.gltf";
-    GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(1, 1, 1));
-    asset.extensionsUsed = asset.extensionsRequired = {"KHR_draco_mesh_compression"};
-    test::writeGltf(file, asset);
-    EXPECT_TRUE(contains(loadError(file), "KHR_draco_mesh_compression"));
-}
+// Draco and meshopt: gltf_compressed_test.cpp.
 
 TEST(GltfLoader, ReportsFilesThatAreNotGltf) {
     const fs::path dir = test::scratchDir("gltf_not_gltf");
