@@ -16,6 +16,60 @@ constexpr std::string_view NOT_WITH_FILE =
     "not allowed with \"file\" (it is a parameter of procedural meshes)";
 
 bool isProcedural(const MeshSource& mesh) { return !mesh.isFile; }
+bool isFileMesh(const MeshSource& mesh) { return mesh.isFile; }
+
+constexpr std::string_view ONLY_WITH_FILE =
+    "only allowed with \"file\" (procedural meshes are made in metres, +Y up)";
+
+// "unit": a name or the metres one unit of the file measures.
+void readUnit(json::Reader& reader, json::Object& object, std::string_view key, MeshSource& mesh) {
+    const Json* value = object.find(key);
+    if (!value)
+        return;
+    Result<float> parsed = makeError("", "must be a unit name (\"mm\", \"cm\", \"m\", \"in\", "
+                                         "\"ft\") or a number of metres per unit");
+    if (value->is_string())
+        parsed = parseMeshUnit(value->get<std::string>());
+    else if (value->is_number())
+        parsed = parseMeshUnit(meshUnitText(value->get<float>()));
+    if (parsed)
+        mesh.metresPerUnit = *parsed;
+    else
+        reader.fail(object.pointerTo(key), parsed.error().message);
+}
+
+Json unitJson(const MeshSource& mesh) {
+    if (!mesh.isFile || mesh.metresPerUnit == 1.0f)
+        return Json();
+    const std::string text = meshUnitText(mesh.metresPerUnit);
+    for (const MeshUnit& unit : MESH_UNITS)
+        if (text == unit.name)
+            return Json(text);
+    return Json(mesh.metresPerUnit);
+}
+
+void readUp(json::Reader& reader, json::Object& object, std::string_view key, MeshSource& mesh) {
+    const Json* value = object.find(key);
+    if (!value)
+        return;
+    const auto parsed = value->is_string() ? parseUpAxis(value->get<std::string>())
+                                           : Result<UpAxis>(makeError("", "must be \"+Y\" or \"+Z\""));
+    if (parsed)
+        mesh.up = *parsed;
+    else
+        reader.fail(object.pointerTo(key), parsed.error().message);
+}
+
+Json upJson(const MeshSource& mesh) {
+    return mesh.isFile && mesh.up != UpAxis::Y ? Json(std::string(upAxisText(mesh.up))) : Json();
+}
+
+// A setting of a file's frame: refused with a procedural mesh.
+constexpr settings::Setting<MeshSource> fileOnly(settings::Setting<MeshSource> row) {
+    row.applies = isFileMesh;
+    row.onlyText = ONLY_WITH_FILE;
+    return row;
+}
 
 void readMeshFile(json::Reader& reader, json::Object& object, std::string_view key, MeshSource& mesh) {
     if (!object.find(key))
@@ -60,10 +114,25 @@ constexpr std::array MESH{
     settings::custom<MeshSource>(
         {.key = "file",
          .typeText = "string",
-         .allowedText = "a relative asset path ending in `.gltf` or `.glb`; when present, no "
-                        "other key is allowed",
+         .allowedText = "a relative asset path ending in `.gltf` or `.glb`; when present, only "
+                        "`unit` and `up` may join it",
          .defaultText = "absent"},
         readMeshFile, meshFileJson),
+    fileOnly(settings::custom<MeshSource>(
+        {.key = "unit",
+         .help = "what one unit of the file measures: the mesh is scaled to metres on load",
+         .typeText = "string or number",
+         .allowedText = "`\"mm\"`, `\"cm\"`, `\"m\"`, `\"in\"`, `\"ft\"`, or metres per unit in "
+                        "[1e-6, 1e6]",
+         .defaultText = "`\"m\"`"},
+        readUnit, unitJson)),
+    fileOnly(settings::custom<MeshSource>(
+        {.key = "up",
+         .help = "the file's up axis: +Z up is turned to grass's +Y up on load",
+         .typeText = "string",
+         .allowedText = "`\"+Y\"`, `\"+Z\"`",
+         .defaultText = "`\"+Y\"`"},
+        readUp, upJson)),
     procedural(settings::custom<MeshSource>(
         {.key = "procedural",
          .typeText = "string",

@@ -16,6 +16,7 @@
 #include "billboard/star_billboards.h"
 #include "blade/blade_shape.h"
 #include "growth/growth_curves.h"
+#include "mesh/mesh_frame.h"
 #include "mesh/procedural.h"
 #include "physics/physics.h"
 #include "scatter/scatter.h"
@@ -41,6 +42,9 @@ struct MeshSource {
     bool isFile = false;
     std::string file;                 // relative to the project folder (when isFile)
     ProceduralMeshParams procedural;  // (when !isFile)
+    // The file's units and up axis (when isFile; mesh_frame.h): "unit", "up".
+    float metresPerUnit = 1.0f;
+    UpAxis up = UpAxis::Y;
     bool operator==(const MeshSource&) const = default;
 };
 

@@ -49,12 +49,12 @@ OrbitCamera OrbitCamera::lookAt(glm::vec3 eye, glm::vec3 target, float fovYRad) 
     OrbitCamera camera;
     camera.target = target;
     const glm::vec3 offset = eye - target;
-    camera.distance = std::max(glm::length(offset), 1e-3f);
+    camera.distance = std::max(glm::length(offset), 1e-6f);
     camera.yawRad = std::atan2(offset.x, offset.z);
     camera.pitchRad = std::clamp(std::asin(std::clamp(offset.y / camera.distance, -1.0f, 1.0f)),
                                  -MAX_PITCH, MAX_PITCH);
     camera.fovYRad = fovYRad;
-    camera.nearPlane = std::max(camera.distance * 1e-3f, 1e-4f);
+    camera.nearPlane = std::max(camera.distance * 1e-3f, 1e-7f);
     camera.farPlane = camera.distance * 20.0f + 100.0f;
     return camera;
 }
@@ -105,6 +105,33 @@ OrbitCamera frameBounds(const Bounds& bounds, float fovYRad, glm::vec3 fromDirec
     return camera;
 }
 
+OrbitCamera fitBoundsInView(OrbitCamera camera, const Bounds& bounds, float aspect, float fill) {
+    const auto fits = [&](float distance) {
+        OrbitCamera c = camera;
+        c.distance = distance;
+        const glm::mat4 viewProjection = c.projection(aspect) * c.view();
+        for (int i = 0; i < 8; ++i) {
+            const glm::vec3 corner((i & 1) ? bounds.max.x : bounds.min.x,
+                                   (i & 2) ? bounds.max.y : bounds.min.y,
+                                   (i & 4) ? bounds.max.z : bounds.min.z);
+            const glm::vec4 clip = viewProjection * glm::vec4(corner, 1.0f);
+            if (!(clip.w > c.nearPlane) || std::abs(clip.x) > fill * clip.w ||
+                std::abs(clip.y) > fill * clip.w)
+                return false;
+        }
+        return true;
+    };
+    float far = camera.distance, near = camera.distance * 1e-3f;
+    if (!fits(far))
+        return camera;
+    for (int step = 0; step < 40; ++step) {
+        const float middle = 0.5f * (near + far);
+        (fits(middle) ? far : near) = middle;
+    }
+    camera.distance = far;
+    return camera;
+}
+
 glm::vec3 preferredViewDirection(const SurfaceMesh& mesh) {
     const OrbitCamera standard;
     const glm::vec3 threeQuarter = glm::normalize(standard.position() - standard.target);
@@ -130,7 +157,8 @@ glm::vec3 preferredViewDirection(const SurfaceMesh& mesh) {
 OrbitCamera frameBounds(const Bounds& bounds, float fovYRad) {
     OrbitCamera camera;
     camera.target = bounds.centre();
-    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
+    // Down to micrometre objects (a millimetre CAD part, issue 26).
+    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-6f);
     camera.fovYRad = fovYRad;
     // Distance at which the bounding sphere fits the vertical field of view, with a margin.
     camera.distance = 1.1f * radius / std::sin(0.5f * fovYRad);

@@ -53,6 +53,12 @@ OrbitCamera frameBounds(const Bounds& bounds, float fovYRad);
 // The same, looking from `fromDirection` (towards the camera, need not be normalized).
 OrbitCamera frameBounds(const Bounds& bounds, float fovYRad, glm::vec3 fromDirection);
 
+// `camera` moved along its view direction (target, angles and field of view kept) to the
+// nearest distance at which every corner of `bounds` lies in front of it and inside `fill` of
+// the view's half-width and half-height at `aspect`: a flat field seen from above fills the
+// picture instead of its bounding sphere. Never farther than it was.
+OrbitCamera fitBoundsInView(OrbitCamera camera, const Bounds& bounds, float aspect, float fill);
+
 // Where to look at a mesh from: the default 3/4 view above, turned towards the side most of
 // the surface faces (an open surface standing upright, like a wall or a glTF quad in the XY
 // plane, is seen from its grassy front instead of edge-on from above).

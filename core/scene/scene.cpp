@@ -7,6 +7,7 @@
 #include "maps/map_image.h"
 #include "mesh/gltf_loader.h"
 #include "mesh/procedural.h"
+#include "mesh/surface_bulk.h"
 #include "scene/camera.h"
 #include "util/byte_size.h"
 #include "util/rng.h"
@@ -115,6 +116,7 @@ Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std
     if (notes)
         for (auto& note : imported->notes)
             notes->push_back(path->string() + ": " + note);
+    applyMeshFrame(imported->mesh, source.metresPerUnit, source.up);
     return std::move(imported->mesh);
 }
 
@@ -412,11 +414,20 @@ Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, cons
     // Billboards follow the field's size too: the default density per m² on a large mesh (a
     // model in millimetres) asked for millions of them, refused in terms of a setting the user
     // of --mesh never gave. One billboard per 16 blades at most.
+    // Distances follow it as well: at the default 100 m a kilometre-wide terrain seen whole
+    // would thin to nothing, and its blades would all draw at the lowest detail.
+    project.render.thinningDistanceM = std::max(project.render.thinningDistanceM, 4.0f * diagonal);
+    project.render.lodDistanceM = std::max(project.render.lodDistanceM, 0.5f * diagonal);
     StarBillboardParams& billboards = project.billboards.placement;
     billboards.density = std::min(
         billboards.density, static_cast<float>(static_cast<double>(targetBlades) / 16.0 / area));
 
-    const OrbitCamera framed = frameBounds(bounds, 0.785f, preferredViewDirection(mesh));
+    // The bulk of the surface, not every stray part of the file (surface_bulk.h), filling most
+    // of the picture at the project's aspect.
+    const Bounds bulk = surfaceBulkBounds(mesh);
+    const float aspect = float(project.render.width) / float(std::max(project.render.height, 1));
+    const OrbitCamera framed =
+        fitBoundsInView(frameBounds(bulk, 0.785f, preferredViewDirection(mesh)), bulk, aspect, 0.9f);
     CameraDesc& camera = project.cameras.front();
     camera.name = "framed";
     camera.position = framed.position();

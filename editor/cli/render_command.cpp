@@ -60,10 +60,16 @@ Result<core::LoadedProject> loadMeshInput(const RenderArgs& args, core::Scene* s
     auto imported = core::loadGltf(args.mesh);
     if (!imported)
         return imported.error();
+    // Checked by checkRenderArgs.
+    const float metresPerUnit = core::parseMeshUnit(args.unit).value();
+    const core::UpAxis up = core::parseUpAxis(args.up).value();
+    core::applyMeshFrame(imported->mesh, metresPerUnit, up);
     auto loaded =
         core::projectForMesh(args.mesh, imported->mesh, static_cast<std::size_t>(args.blades));
     if (!loaded)
         return loaded.error();
+    loaded->project.mesh.metresPerUnit = metresPerUnit;
+    loaded->project.mesh.up = up;
     applyPresetOption(args.preset, loaded->project);
     if (auto fits = checkFramebuffer(args, loaded->project.render); !fits)
         return fits.error();

@@ -127,6 +127,14 @@ Result<void> checkInput(const RenderArgs& args) {
     if (args.project.empty() == args.mesh.empty())
         return makeError("", args.mesh.empty() ? "give a project folder or --mesh FILE (see --help)"
                                                : "give either a project or --mesh, not both");
+    if ((args.unit != "m" || args.up != "+Y") && args.mesh.empty())
+        return makeError(args.unit != "m" ? "--unit" : "--up",
+                         "applies to --mesh only (a project says its mesh's unit and up axis in "
+                         "project.json: /mesh/unit, /mesh/up)");
+    if (const auto unit = core::parseMeshUnit(args.unit); !unit)
+        return makeError("--unit", unit.error().message);
+    if (const auto up = core::parseUpAxis(args.up); !up)
+        return makeError("--up", up.error().message);
     if (!args.project.empty()) {
         const std::string extension = std::filesystem::path(args.project).extension().string();
         if (extension == ".gltf" || extension == ".glb")
@@ -184,6 +192,11 @@ std::optional<int> parseRenderArgs(const std::vector<std::string>& argv, RenderA
     addProjectArgument(parser, &args.project, false);
     parser.text("--mesh", "FILE", "render a default field on this glTF file instead of a project",
                 &args.mesh);
+    parser.text("--unit", "UNIT",
+                "with --mesh: what one unit of the file measures: mm, cm, m, in, ft, or metres per "
+                "unit (0.001 = mm)",
+                &args.unit);
+    parser.text("--up", "AXIS", "with --mesh: the file's up axis, +Y or +Z (turned to +Y)", &args.up);
     describeImageOptions(parser, args);
     describeRunOptions(parser, args);
     // Parsed before the defaults that depend on it are shown, so 0 reads as "the project's".

@@ -16,6 +16,8 @@ namespace grass::cli {
 
 struct RenderArgs {
     std::string project, mesh, out, camera, geometry = "project", msaa = "project";
+    // With --mesh: the file's unit and up axis (core/mesh/mesh_frame.h).
+    std::string unit = "m", up = "+Y";
     std::string backend = "gpu", shape = "project";
     std::string cull = "all", stats, lighting = "project", technique = "project",
                 animation = "project", preset = "project";

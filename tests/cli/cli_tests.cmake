@@ -122,6 +122,11 @@ grass_cli_test(render_mesh GL OK --png ${GRASS_CLI_TMP}/quad.png 128 128
     --stdout "^wrote .*quad\\.png \\(128x128\\)$" --stdout "^  scene +2 triangles, [1-9][0-9]* blades"
     -- ${GRASS_BIN} render --mesh ${GRASS_CLI_GLTF}/quad.gltf --out ${GRASS_CLI_TMP}/quad.png
        --width 128 --height 128 --frames 1 --blades 2000)
+# A model in millimetres with +Z up: scaled and turned, a field still grows and renders.
+grass_cli_test(render_mesh_mm_zup GL OK --png ${GRASS_CLI_TMP}/quad-mm.png 96 64
+    --stdout "^  scene +2 triangles, [1-9][0-9]* blades"
+    -- ${GRASS_BIN} render --mesh ${GRASS_CLI_GLTF}/quad.gltf --unit mm --up +Z
+       --out ${GRASS_CLI_TMP}/quad-mm.png --width 96 --height 64 --frames 1 --blades 2000)
 grass_cli_test(render_project_camera GL OK --png ${GRASS_CLI_TMP}/tiny-top.png 64 48
     --stdout "^wrote .*tiny-top\\.png \\(64x48\\)$"
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_TMP}/tiny-top.png
@@ -204,6 +209,13 @@ set(TINY ${GRASS_CLI_PROJECTS}/tiny)
 set(OUT ${GRASS_CLI_TMP}/never.png)
 grass_cli_test(render_width_zero ERROR "--width" --absent ${OUT}
     -- ${GRASS_BIN} render ${TINY} --out ${OUT} --width 0)
+# --unit and --up (issue 26): checked before any file is read, and only with --mesh.
+grass_cli_test(render_unit_unknown ERROR "--unit" --also "mm, cm, m, in, ft" --absent ${OUT}
+    -- ${GRASS_BIN} render --mesh ${GRASS_CLI_GLTF}/quad.gltf --out ${OUT} --unit parsec)
+grass_cli_test(render_up_unknown ERROR "--up" --also "+Y or +Z" --absent ${OUT}
+    -- ${GRASS_BIN} render --mesh ${GRASS_CLI_GLTF}/quad.gltf --out ${OUT} --up -x)
+grass_cli_test(render_unit_without_mesh ERROR "--unit" --also "/mesh/unit" --absent ${OUT}
+    -- ${GRASS_BIN} render ${TINY} --out ${OUT} --unit mm)
 grass_cli_test(render_width_not_a_number ERROR "--width" --absent ${OUT}
     -- ${GRASS_BIN} render ${TINY} --out ${OUT} --width abc)
 grass_cli_test(render_width_missing_value ERROR "--width" --absent ${OUT}

@@ -135,6 +135,39 @@ TEST(Project, FileMeshRoundTrips) {
     EXPECT_EQ(*parsed, project);
 }
 
+// Issue 26: a file mesh's unit and up axis travel; defaults stay out of the file.
+TEST(Project, FileMeshUnitAndUpRoundTrip) {
+    for (const auto& [unit, up] : {std::pair{0.001f, UpAxis::Z}, {0.0254f, UpAxis::Y}, {0.5f, UpAxis::Z}}) {
+        Project project;
+        project.mesh.isFile = true;
+        project.mesh.file = "engine.glb";
+        project.mesh.metresPerUnit = unit;
+        project.mesh.up = up;
+        const std::string text = serializeProject(project);
+        const auto parsed = parseProject(text, SOURCE);
+        ASSERT_TRUE(parsed) << parsed.error().str();
+        EXPECT_EQ(*parsed, project) << text;
+    }
+    const auto named = parseProject(document(R"("mesh": {"file": "e.glb", "unit": "mm", "up": "+Z"})"), SOURCE);
+    ASSERT_TRUE(named) << named.error().str();
+    EXPECT_EQ(named->mesh.metresPerUnit, 0.001f);
+    EXPECT_EQ(named->mesh.up, UpAxis::Z);
+    EXPECT_NE(serializeProject(*named).find(R"("unit": "mm")"), std::string::npos);
+    Project plain;
+    plain.mesh.isFile = true;
+    plain.mesh.file = "t.glb";
+    EXPECT_EQ(serializeProject(plain).find("\"unit\""), std::string::npos) << "metres are the default";
+}
+
+TEST(Project, FileMeshUnitAndUpAreCheckedAndOnlyForFiles) {
+    expectError(document(R"("mesh": {"file": "t.glb", "unit": "parsec"})"), "/mesh/unit", "unknown unit");
+    expectError(document(R"("mesh": {"file": "t.glb", "unit": 0})"), "/mesh/unit", "outside 1e-06 to 1e+06");
+    expectError(document(R"("mesh": {"file": "t.glb", "unit": true})"), "/mesh/unit", "unit name");
+    expectError(document(R"("mesh": {"file": "t.glb", "up": "-Y"})"), "/mesh/up", "+Y or +Z");
+    expectError(document(R"("mesh": {"procedural": "plane", "unit": "mm"})"), "/mesh/unit",
+                "only allowed with \"file\"");
+}
+
 TEST(Project, UnknownFormatIsRejected) {
     expectError(R"({"format": "grass-scene", "version": 1})", "/format", "grass-project");
 }

@@ -1,0 +1,51 @@
+#include "mesh/surface_bulk.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace grass::core {
+
+Bounds surfaceBulkBounds(const SurfaceMesh& mesh, double outside) {
+    const Bounds whole = meshBounds(mesh);
+    std::vector<std::pair<glm::dvec3, double>> faces;  // centroid, area
+    faces.reserve(mesh.n_faces());
+    double total = 0.0, edges = 0.0;
+    for (const auto fh : mesh.faces()) {
+        glm::dvec3 p[3];
+        int k = 0;
+        for (const auto vh : mesh.fv_range(fh)) {
+            const auto& point = mesh.point(vh);
+            p[k++] = glm::dvec3(point[0], point[1], point[2]);
+        }
+        const double area = 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+        if (!(area > 0.0) || !std::isfinite(area))
+            continue;
+        faces.emplace_back((p[0] + p[1] + p[2]) / 3.0, area);
+        total += area;
+        edges += std::sqrt(area);
+    }
+    if (faces.empty())
+        return whole;
+    const double margin = edges / double(faces.size());
+    Bounds bulk;
+    for (int axis = 0; axis < 3; ++axis) {
+        std::sort(faces.begin(), faces.end(),
+                  [axis](const auto& a, const auto& b) { return a.first[axis] < b.first[axis]; });
+        const auto quantile = [&](double share) {
+            double sum = 0.0;
+            for (const auto& [centroid, area] : faces) {
+                sum += area;
+                if (sum >= share * total)
+                    return centroid[axis];
+            }
+            return faces.back().first[axis];
+        };
+        bulk.min[axis] = float(std::max(double(whole.min[axis]), quantile(0.5 * outside) - margin));
+        bulk.max[axis] = float(std::min(double(whole.max[axis]), quantile(1.0 - 0.5 * outside) + margin));
+    }
+    return bulk;
+}
+
+}  // namespace grass::core

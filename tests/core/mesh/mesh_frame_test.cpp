@@ -1,0 +1,78 @@
+// A file mesh's unit and up axis (core/mesh/mesh_frame.h) and the bulk of a surface
+// (core/mesh/surface_bulk.h), which the first camera frames.
+#include "mesh/mesh_frame.h"
+
+#include <gtest/gtest.h>
+
+#include "mesh/procedural.h"
+#include "mesh/surface_bulk.h"
+
+namespace grass::core {
+namespace {
+
+TEST(MeshFrame, UnitsParseByNameOrNumberAndRefuseTheRest) {
+    EXPECT_EQ(parseMeshUnit("mm").value(), 0.001f);
+    EXPECT_EQ(parseMeshUnit("in").value(), 0.0254f);
+    EXPECT_EQ(parseMeshUnit("0.5").value(), 0.5f);
+    EXPECT_EQ(meshUnitText(0.01f), "cm");
+    EXPECT_EQ(meshUnitText(0.5f), "0.5");
+    for (const char* bad : {"parsec", "", "-1", "0", "1e9", "nan", "2m"}) {
+        const auto parsed = parseMeshUnit(bad);
+        ASSERT_FALSE(parsed.ok()) << bad;
+        EXPECT_NE(parsed.error().message.find("mm, cm, m, in, ft"), std::string::npos) << parsed.error().message;
+    }
+    EXPECT_EQ(parseUpAxis("+Z").value(), UpAxis::Z);
+    EXPECT_EQ(parseUpAxis("y").value(), UpAxis::Y);
+    EXPECT_FALSE(parseUpAxis("-Z").ok());
+}
+
+TEST(MeshFrame, MillimetresWithZUpBecomeMetresWithYUp) {
+    ProceduralMeshParams params;
+    params.shape = ProceduralShape::Plane;
+    params.size = 2000.0f;  // 2000 mm, lying in the file's XZ plane: standing up once Z is up
+    params.resolution = 2;
+    SurfaceMesh mesh = makeProceduralMesh(params);
+    applyMeshFrame(mesh, 0.001f, UpAxis::Z);
+    const Bounds bounds = meshBounds(mesh);
+    EXPECT_NEAR(bounds.size().x, 2.0f, 1e-5f);
+    EXPECT_NEAR(bounds.size().y, 2.0f, 1e-5f) << "the file's Z (its depth) is now height";
+    EXPECT_NEAR(bounds.size().z, 0.0f, 1e-6f);
+    for (const auto vh : mesh.vertices()) {
+        // The plane's +Y normal (the file's up is Z, so +Y was "towards the viewer") is −Z now.
+        const auto n = mesh.normal(vh);
+        EXPECT_NEAR(n[2], -1.0f, 1e-6f);
+    }
+    // A rotation keeps each face's winding consistent with its normals.
+    for (const auto fh : mesh.faces()) {
+        OpenMesh::Vec3f p[3];
+        int k = 0;
+        for (const auto vh : mesh.fv_range(fh))
+            p[k++] = mesh.point(vh);
+        EXPECT_LT(OpenMesh::cross(p[1] - p[0], p[2] - p[0])[2], 0.0f);
+    }
+}
+
+TEST(SurfaceBulk, LeavesOutSmallFarPartsButKeepsTheField) {
+    ProceduralMeshParams ground;
+    ground.shape = ProceduralShape::Plane;
+    ground.size = 30.0f;
+    ground.resolution = 30;
+    SurfaceMesh mesh = makeProceduralMesh(ground);
+    // A 1 m "cloud" 400 m up and 300 m off to the side: 0.1 % of the area.
+    const auto a = mesh.add_vertex({300.0f, 400.0f, 0.0f}), b = mesh.add_vertex({301.0f, 400.0f, 0.0f}),
+               c = mesh.add_vertex({300.0f, 400.0f, 1.0f});
+    mesh.add_face(a, c, b);
+    const Bounds whole = meshBounds(mesh);
+    const Bounds bulk = surfaceBulkBounds(mesh);
+    EXPECT_GT(whole.max.y, 399.0f);
+    EXPECT_LT(bulk.max.y, 2.0f) << "the cloud is left out";
+    EXPECT_LT(bulk.max.x, 16.0f);
+    // The field itself stays almost whole: the outer 2 % of its area on each side, at most.
+    EXPECT_LT(bulk.min.x, -14.0f);
+    EXPECT_GT(bulk.max.x, 14.0f);
+    EXPECT_LT(bulk.min.z, -14.0f);
+    EXPECT_GT(bulk.max.z, 14.0f);
+}
+
+}  // namespace
+}  // namespace grass::core
