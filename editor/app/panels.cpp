@@ -323,6 +323,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
             layerSection(ui, s);
             windSection(ui, s);
             colliderSection(ui, s);
+            lightSection(ui, s);
             renderSection(ui, s);
             snowSection(ui, s);
         });

@@ -225,5 +225,41 @@ TEST(EditorPanels, ATypedPositionMovesAKeyedCollider) {
     EXPECT_EQ(editor.state.doc.loaded.project.colliders.back().path, ball.path);
 }
 
+// Issue 26 item 5: the sun and the sky are edited in the side panel, undoably, and saved.
+TEST(EditorPanels, TheLightSectionEditsTheSunAndTheSky) {
+    const ScratchFolder folder("editor-light");
+    EditorDriver editor(folder.path());
+    editor::resetHistory(editor.state);
+    const core::SunDesc before = editor.state.doc.loaded.project.sun;
+    editor.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 3000.0f}};  // no scrolling
+    editor.click("Light");
+    std::optional<ui::Vec2> label;
+    bool sky = false;
+    for (const ui::ClippedShape& shape : editor.frame().shapes)
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape)) {
+            if (t->text == "intensity")
+                label = t->pos;
+            sky = sky || t->text == "sky color";
+        }
+    ASSERT_TRUE(label.has_value()) << "the Light section shows the sun's intensity";
+    EXPECT_TRUE(sky) << "and the sky's colour";
+    // Drag the intensity's box (left of its label) to the right.
+    editor.input.pointerPos = *label + ui::Vec2(-20.0f, 6.0f);
+    editor.frame();
+    editor.input.buttonDown[0] = true;
+    editor.frame();
+    for (int i = 0; i < 4; ++i) {
+        editor.input.pointerPos.x += 10.0f;
+        editor.frame();
+    }
+    editor.input.buttonDown[0] = false;
+    editor.frame();
+    editor::recordProjectEdit(editor.state, false);
+    EXPECT_GT(editor.state.doc.loaded.project.sun.intensity, before.intensity);
+    EXPECT_FALSE(editor.state.rebuildPending) << "light is live: nothing re-grows";
+    ASSERT_TRUE(editor::undo(editor.state));
+    EXPECT_EQ(editor.state.doc.loaded.project.sun, before);
+}
+
 }  // namespace
 }  // namespace grass::test
