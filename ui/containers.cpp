@@ -73,7 +73,11 @@ void Ui::scrollArea(std::string_view idSalt, float maxHeight, const UiFn& fn) {
 }
 
 Response Ui::collapsingHeader(std::string_view label, const UiFn& fn, bool defaultOpen) {
-    const Id id = makeId(label);
+    // "Text##key" shows Text and is keyed by "##key" alone: a header that counts its items
+    // ("Cameras (2)##cameras") stays open when the count changes.
+    const std::size_t keyAt = label.find("##");
+    const Id id = makeId(keyAt == std::string_view::npos ? label : label.substr(keyAt));
+    const std::string_view shown = label.substr(0, keyAt);
     bool& open = mCtx->state<bool>(id, defaultOpen);
     const Style& s = style();
     const Rect rect = allocate({std::max(availableWidth(), s.iconSize), s.interactHeight});
@@ -96,7 +100,7 @@ Response Ui::collapsingHeader(std::string_view label, const UiFn& fn, bool defau
              : std::vector<Vec2>{
                    {c.x - 0.6f * h, c.y - h}, {c.x + 0.7f * h, c.y}, {c.x - 0.6f * h, c.y + h}};
     mPainter.path(std::move(tri), true, v.text, {});
-    mPainter.text({rect.min.x + s.iconSize + s.iconSpacing, rect.centre().y}, label, s.textSizePt,
+    mPainter.text({rect.min.x + s.iconSize + s.iconSpacing, rect.centre().y}, shown, s.textSizePt,
                   v.text, {0.0f, 0.5f});
     if (open) {
         mCtx->pushId(id);

@@ -91,6 +91,7 @@ public:
     // Content taller than maxHeight scrolls (wheel, draggable bar); the offset is remembered.
     void scrollArea(std::string_view idSalt, float maxHeight, const UiFn& fn);
     // A clickable header that shows `fn`'s content, indented, while open (remembered).
+    // "Text##key": shows Text, keyed by the "##key" part (stays open while Text changes).
     Response collapsingHeader(std::string_view label, const UiFn& fn, bool defaultOpen = false);
     // If popup `popupId` is open (Context::openPopup), shows `fn` in a frame below `anchor` in
     // the foreground layer, and closes it on Escape, a press outside both, or (closeOnClick) a

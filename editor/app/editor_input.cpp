@@ -52,6 +52,7 @@ void Editor::runInput(InputState input, int width, int height) {
     bool uiPointer = false, uiKeyboard = false;
     bool pressOnUi = false;  // a press this frame that a panel took (not the viewport's)
     ViewportPointer pointer;
+    mState.view.camera = mCamera;
     if (mUi) {
         // One UI pass per button event (input_passes.h), the last one drawn.
         std::vector<ui::Input> passes = mUi->passes(*mWindow, input, mWindow->nowS());
@@ -74,6 +75,11 @@ void Editor::runInput(InputState input, int width, int height) {
         uiPointer = out.wantsPointer;
         uiKeyboard = out.wantsKeyboard;
         mView = toPixels(central, out.pixelsPerPoint, height);
+        // A camera bookmark chosen in the panel: the view goes there.
+        if (mState.view.cameraRequest) {
+            mCamera = *mState.view.cameraRequest;
+            mState.view.cameraRequest.reset();
+        }
         mState.transient.status.uiMs =
             std::chrono::duration<double, std::milli>(Clock::now() - uiStart).count();
     }

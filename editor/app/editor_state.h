@@ -25,6 +25,7 @@
 #include "quality/interaction_quality.h"
 #include "render/scene_renderer.h"
 #include "scene/scene.h"
+#include "scene/camera.h"
 
 namespace grass::editor {
 
@@ -57,6 +58,10 @@ struct ViewState {
     // What the renderer draws this frame: viewRenderOptions(state) plus the scene time, set by
     // the Editor each frame. Derived, never edited: a setting lives in the project alone.
     render::RenderOptions options;
+    // The viewport's camera as the frame began (the Editor's, copied for the panels), and a view
+    // a panel asks for (a camera bookmark), which the Editor takes after the panels.
+    core::OrbitCamera camera;
+    std::optional<core::OrbitCamera> cameraRequest;
     // The viewport's tools.
     ViewportTool tool = ViewportTool::Camera;
     PaintToolSettings paint;

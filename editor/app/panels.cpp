@@ -324,6 +324,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
             windSection(ui, s);
             colliderSection(ui, s);
             lightSection(ui, s);
+            cameraSection(ui, s);
             renderSection(ui, s);
             snowSection(ui, s);
         });

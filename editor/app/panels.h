@@ -52,6 +52,7 @@ void windSection(ui::Ui& ui, EditorState& state);
 void colliderSection(ui::Ui& ui, EditorState& state);
 void renderSection(ui::Ui& ui, EditorState& state);
 void lightSection(ui::Ui& ui, EditorState& state);
+void cameraSection(ui::Ui& ui, EditorState& state);
 // The Render section's quality preset menu and measured cost/error readout
 // (panels_quality.cpp).
 void qualityRows(ui::Ui& ui, EditorState& state);

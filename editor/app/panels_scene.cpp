@@ -2,6 +2,7 @@
 // edits apply next frame and which re-grow the scene).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "edit/timeline.h"
@@ -94,7 +95,7 @@ void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
 void layerSection(ui::Ui& ui, EditorState& s) {
     auto& layers = s.transient.draft.project.layers;
     ui.collapsingHeader(
-        "Layers (" + std::to_string(layers.size()) + ")",
+        "Layers (" + std::to_string(layers.size()) + ")##layers",
         [&](ui::Ui& section) {
             for (std::size_t i = 0; i < layers.size(); ++i) {
                 section.pushId(std::uint64_t(i));
@@ -108,7 +109,7 @@ void layerSection(ui::Ui& ui, EditorState& s) {
 
 void windSection(ui::Ui& ui, EditorState& s) {
     auto& winds = s.transient.draft.project.wind;
-    ui.collapsingHeader("Wind (" + std::to_string(winds.size()) + ")", [&](ui::Ui& section) {
+    ui.collapsingHeader("Wind (" + std::to_string(winds.size()) + ")##wind", [&](ui::Ui& section) {
         if (winds.empty())
             section.coloredLabel("no wind sources", section.style().textWeak);
         for (std::size_t i = 0; i < winds.size(); ++i) {
@@ -134,7 +135,7 @@ void windSection(ui::Ui& ui, EditorState& s) {
 void colliderSection(ui::Ui& ui, EditorState& s) {
     auto& colliders = s.transient.draft.project.colliders;
     ui.collapsingHeader(
-        "Colliders (" + std::to_string(colliders.size()) + ")", [&](ui::Ui& section) {
+        "Colliders (" + std::to_string(colliders.size()) + ")##colliders", [&](ui::Ui& section) {
             if (colliders.empty())
                 section.coloredLabel("no colliders", section.style().textWeak);
             for (std::size_t i = 0; i < colliders.size(); ++i) {
@@ -149,6 +150,41 @@ void colliderSection(ui::Ui& ui, EditorState& s) {
                 section.popId();
             }
         });
+}
+
+// Named camera bookmarks (issue 26 item 5), the project's cameras: go to one, keep the view as a
+// new one, rename or delete one; saved with the project, `grass render --camera NAME` renders it.
+void cameraSection(ui::Ui& ui, EditorState& s) {
+    auto& cameras = s.transient.draft.project.cameras;
+    ui.collapsingHeader("Cameras (" + std::to_string(cameras.size()) + ")##cameras", [&](ui::Ui& section) {
+        std::optional<std::size_t> removed;
+        for (std::size_t i = 0; i < cameras.size(); ++i) {
+            section.pushId(std::uint64_t(i));
+            core::CameraDesc& camera = cameras[i];
+            section.horizontal([&](ui::Ui& row) {
+                if (row.button("go").clicked())
+                    s.view.cameraRequest = core::OrbitCamera::lookAt(
+                        camera.position, camera.target, glm::radians(camera.fovYDeg));
+                bool committed = false;
+                ui::textEdit(row, "##name", camera.name, 150.0f, &committed);
+                // The first camera is what grass render draws by default: it stays.
+                if (cameras.size() > 1 && row.button("delete").clicked())
+                    removed = i;
+            });
+            section.popId();
+        }
+        if (removed)
+            cameras.erase(cameras.begin() + std::ptrdiff_t(*removed));
+        if (cameras.size() < core::MAX_CAMERAS && section.button("keep this view").clicked()) {
+            const core::OrbitCamera& view = s.view.camera;
+            core::CameraDesc bookmark;
+            bookmark.name = "view " + std::to_string(cameras.size() + 1);
+            bookmark.position = view.position();
+            bookmark.target = view.target;
+            bookmark.fovYDeg = glm::degrees(view.fovYRad);
+            cameras.push_back(bookmark);
+        }
+    });
 }
 
 // The sun and the sky (issue 26 item 5): live edits, saved in the project (/sun, /render).

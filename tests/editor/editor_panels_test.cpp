@@ -261,5 +261,34 @@ TEST(EditorPanels, TheLightSectionEditsTheSunAndTheSky) {
     EXPECT_EQ(editor.state.doc.loaded.project.sun, before);
 }
 
+// Issue 26 item 5: camera bookmarks are the project's cameras: keep the view as one, go to one.
+TEST(EditorPanels, CameraBookmarksKeepTheViewAndGoBack) {
+    const ScratchFolder folder("editor-cameras");
+    EditorDriver editor(folder.path());
+    editor::resetHistory(editor.state);
+    const std::size_t before = editor.state.doc.loaded.project.cameras.size();
+    ASSERT_GE(before, 1u);
+    editor.state.view.camera = core::OrbitCamera::lookAt({3.0f, 2.0f, 1.0f}, {0.5f, 0.0f, 0.0f}, 0.6f);
+    editor.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 3000.0f}};  // no scrolling
+    editor.click("Cameras (" + std::to_string(before) + ")");
+    editor.click("keep this view");
+    editor::recordProjectEdit(editor.state, false);
+    const auto& cameras = editor.state.doc.loaded.project.cameras;
+    ASSERT_EQ(cameras.size(), before + 1);
+    EXPECT_LT(glm::distance(cameras.back().position, glm::vec3(3.0f, 2.0f, 1.0f)), 1e-4f);
+    EXPECT_LT(glm::distance(cameras.back().target, glm::vec3(0.5f, 0.0f, 0.0f)), 1e-5f);
+    EXPECT_NEAR(cameras.back().fovYDeg, glm::degrees(0.6f), 1e-3f);
+    EXPECT_TRUE(editor.state.doc.dirty);
+    // "go" (the driver clicks the last one drawn: the kept view's) asks the viewport for it, from
+    // wherever the view is now.
+    editor.state.view.camera = core::OrbitCamera::lookAt({-5.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 0.8f);
+    editor.click("go");
+    ASSERT_TRUE(editor.state.view.cameraRequest.has_value());
+    EXPECT_LT(glm::distance(editor.state.view.cameraRequest->position(), glm::vec3(3.0f, 2.0f, 1.0f)), 1e-3f);
+    EXPECT_NEAR(editor.state.view.cameraRequest->fovYRad, 0.6f, 1e-5f);
+    ASSERT_TRUE(editor::undo(editor.state));
+    EXPECT_EQ(editor.state.doc.loaded.project.cameras.size(), before);
+}
+
 }  // namespace
 }  // namespace grass::test
