@@ -12,8 +12,10 @@ namespace grass::editor {
 
 namespace {
 
+// F frames `selection` when there is one, else the whole scene.
 void moveCamera(InputState input, bool drag, bool wheel, int viewportHeight,
-                const core::Scene& scene, core::OrbitCamera& camera) {
+                const core::Scene& scene, const std::optional<core::Bounds>& selection,
+                core::OrbitCamera& camera) {
     if (!drag)
         input.leftDown = input.middleDown = false;
     if (!wheel)
@@ -27,7 +29,7 @@ void moveCamera(InputState input, bool drag, bool wheel, int viewportHeight,
     if (input.scrollSteps != 0.0)
         camera.zoom(static_cast<float>(input.scrollSteps));
     if (input.frameRequested)
-        camera = core::frameBounds(scene.bounds, camera.fovYRad);
+        camera = core::frameBounds(selection ? *selection : scene.bounds, camera.fovYRad);
     // Keep the depth range proportional to the distance so zooming never clips the field.
     camera.nearPlane = std::max(camera.distance * 1e-3f, 1e-4f);
     camera.farPlane = camera.distance * 20.0f + 100.0f;
@@ -112,7 +114,8 @@ void Editor::runInput(InputState input, int width, int height) {
     // A focused field owns the keyboard: an F typed into it is text, not "frame the scene".
     if (uiKeyboard)
         input.frameRequested = false;
-    moveCamera(input, mCameraDrag, !uiPointer, mView.h, *mLive.scene, mCamera);
+    moveCamera(input, mCameraDrag, !uiPointer, mView.h, *mLive.scene,
+               selectionBounds(mState, float(mState.view.timeline.timeS())), mCamera);
     // What keeps the viewport's picture reduced (adaptive quality, Editor::chooseQuality).
     mInteracting = (mCameraDrag && anyDown) || (input.scrollSteps != 0.0 && !uiPointer) ||
                    mToolDrag || mState.view.toolDragActive ||

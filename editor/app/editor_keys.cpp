@@ -49,6 +49,11 @@ std::string applyEditorKeys(EditorState& state, const InputState& input, bool wi
         changed = state.view.timeline.playing() ? "playing" : "paused";
     }
     for (const ui::KeyEvent& key : input.keys) {
+        // Delete removes the selected wind source or collider (the keyboard is the viewport's
+        // here: a focused text field keeps its Delete).
+        if (key.key == ui::Key::Delete && !key.modifiers.ctrl)
+            if (const auto removed = deleteSelection(state))
+                changed = "deleted " + *removed;
         if (!key.modifiers.ctrl)
             continue;
         if (key.key == ui::Key::Z)

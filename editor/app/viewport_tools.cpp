@@ -295,6 +295,42 @@ std::optional<core::RayHit> pickSurface(const SceneTools& tools, const core::Orb
     return tools.bvh.intersect(core::cameraRay(camera, pointer.pixel, pointer.viewportSize));
 }
 
+std::optional<core::Bounds> selectionBounds(const EditorState& state, float timeS) {
+    if (!validSelection(state))
+        return std::nullopt;
+    const core::Project& project = state.doc.project();
+    const PlacedObject object = *state.view.place.selected;
+    float reach = 1.0f;
+    if (object.kind == PlacedKind::Wind) {
+        const core::WindSource& w = project.wind[object.index].source;
+        reach = std::max({reach, w.radiusM, w.coreRadiusM});
+    } else {
+        const core::ColliderDesc& c = project.colliders[object.index];
+        reach = std::max({reach, c.shape == core::ColliderShape::Sphere ? c.radiusM : c.scale});
+    }
+    const glm::vec3 at = placedPosition(project, object, timeS);
+    return core::Bounds{at - glm::vec3(reach), at + glm::vec3(reach)};
+}
+
+std::optional<std::string> deleteSelection(EditorState& state) {
+    if (!validSelection(state) || state.busy())
+        return std::nullopt;
+    core::Project project = state.doc.project();
+    const PlacedObject object = *state.view.place.selected;
+    std::string name;
+    if (object.kind == PlacedKind::Wind) {
+        name = project.wind[object.index].name;
+        project.wind.erase(project.wind.begin() + std::ptrdiff_t(object.index));
+    } else {
+        name = project.colliders[object.index].name;
+        project.colliders.erase(project.colliders.begin() + std::ptrdiff_t(object.index));
+    }
+    state.view.place.selected.reset();
+    apply(state, EditProject{.after = std::move(project), .effect = EditEffect::Regrow,
+                             .label = "delete " + name});
+    return name;
+}
+
 glm::vec3 placedPosition(const core::Project& project, PlacedObject object, float timeS) {
     if (object.kind == PlacedKind::Wind) {
         const core::WindSource& w = project.wind[object.index].source;

@@ -88,4 +88,11 @@ void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float pixelsPerPoint,
 // The position an object is drawn and dragged at (its path's position at `timeS` if keyed).
 glm::vec3 placedPosition(const core::Project& project, PlacedObject object, float timeS);
 
+// The box F frames when an object is selected: around where it stands at `timeS`, as large as
+// its reach (a collider's radius or scale, a wind source's radius or core), at least 1 m.
+std::optional<core::Bounds> selectionBounds(const EditorState& state, float timeS);
+// Delete: removes the selected wind source or collider (one undo step, the field re-grows).
+// Returns its name, or nothing when nothing is selected.
+std::optional<std::string> deleteSelection(EditorState& state);
+
 }  // namespace grass::editor

@@ -31,7 +31,7 @@ struct InputState {
     // Every button change this frame, in order, at the window's screen coordinates and on
     // Window::nowS's clock (EditorUi turns them into UI passes, input_passes.h).
     std::vector<ButtonEvent> buttonEvents;
-    bool frameRequested = false;  // F key: frame the whole scene
+    bool frameRequested = false;  // F key: frame the selected object, else the whole scene
     // Keys 1–4: toggle the orientation, frustum, distance, occlusion cull tests; T: next grass
     // technique (blades, billboards, hybrid); L: grass lighting on/off.
     int toggledCullTest = 0;  // 1..4, 0 = none this frame

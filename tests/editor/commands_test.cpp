@@ -7,6 +7,7 @@
 
 #include "app/edit_actions.h"
 #include "app/editor_keys.h"
+#include "app/viewport_tools.h"
 #include "support/plane_project.h"
 
 namespace grass::test {
@@ -106,6 +107,38 @@ TEST(Commands, TheTechniqueAndLightingKeysAreUndoableProjectEdits) {
     editor::applyEditorKeys(d.state, input, true);
     EXPECT_EQ(d.state.doc.project(), before);
     EXPECT_EQ(d.state.doc.history.redoSteps(), 2u);
+}
+
+// Issue 26 item 4: Delete removes the selected object as one undoable step; F frames it.
+TEST(Commands, DeleteRemovesTheSelectedObjectAndFFramesIt) {
+    CommandDriver d;
+    core::Project project = d.state.doc.project();
+    core::ColliderDesc ball;
+    ball.name = "ball";
+    ball.position = {3.0f, 0.5f, -1.0f};
+    ball.radiusM = 2.0f;
+    project.colliders = {ball};
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = project}));
+    const core::Project before = d.state.doc.project();
+
+    editor::InputState input;
+    input.keys = {ui::KeyEvent{ui::Key::Delete, ui::Modifiers{}}};
+    EXPECT_EQ(editor::applyEditorKeys(d.state, input, true), "") << "nothing selected, nothing deleted";
+    EXPECT_EQ(d.state.doc.project().colliders.size(), 1u);
+
+    d.state.view.place.selected = editor::PlacedObject{editor::PlacedKind::Collider, 0};
+    const auto framed = editor::selectionBounds(d.state, 0.0f);
+    ASSERT_TRUE(framed.has_value());
+    EXPECT_EQ(framed->centre(), ball.position);
+    EXPECT_EQ(framed->size(), glm::vec3(4.0f)) << "as large as the ball's reach";
+
+    EXPECT_EQ(editor::applyEditorKeys(d.state, input, true), "deleted ball");
+    EXPECT_TRUE(d.state.doc.project().colliders.empty());
+    EXPECT_FALSE(d.state.view.place.selected.has_value());
+    EXPECT_FALSE(editor::selectionBounds(d.state, 0.0f).has_value()) << "F frames the scene again";
+    EXPECT_EQ(d.state.doc.history.nextUndo()->label, "delete ball");
+    ASSERT_TRUE(editor::undo(d.state));
+    EXPECT_EQ(d.state.doc.project(), before);
 }
 
 // A cull-test key is the view's: the picture changes, the document does not.
