@@ -118,6 +118,7 @@ struct Transient {
     bool messageIsSaveError = false;
     // File → Export…: the dialog's choices.
     bool exportDialog = false;
+    bool shortcutsWindow = false;  // Help › Keyboard shortcuts
     std::string exportDir;
     int exportFormat = 0;  // core::ExportFormat
     int exportLod = 0;

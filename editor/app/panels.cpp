@@ -300,6 +300,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
         ui::menuBar(top, [&](ui::Ui& bar) {
             fileMenu(bar, s);
             editMenu(bar, s);
+            helpMenu(bar, s);
             const std::string title =
                 s.doc.loaded.project.name + (s.doc.dirty ? " *" : "") +
                 (s.doc.loaded.file.empty() ? "  (not saved)" : "  — " + s.doc.loaded.file.string());
@@ -340,6 +341,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
     fileDialogWindow(ctx, s);
     quitDialogWindow(ctx, s);
     exportWindow(ctx, s);
+    shortcutsWindow(ctx, s);
     recoveryWindow(ctx, s);
     return central;
 }

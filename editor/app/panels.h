@@ -14,7 +14,9 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -39,6 +41,15 @@ void askQuit(EditorState& state);
 
 // File → Export… (panels_export.cpp): the dialog, and the progress window while the job runs.
 void exportWindow(ui::Context& ctx, EditorState& state);
+
+// Help › Keyboard shortcuts (panels_help.cpp): the editor's keys, one table.
+struct Shortcut {
+    std::string_view keys;
+    std::string_view what;
+};
+std::span<const Shortcut> keyboardShortcuts();
+void helpMenu(ui::Ui& bar, EditorState& state);
+void shortcutsWindow(ui::Context& ctx, EditorState& state);
 // Starts exporting the live scene with the dialog's choices.
 void startExport(EditorState& state);
 

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <variant>
 
@@ -288,6 +289,25 @@ TEST(EditorPanels, CameraBookmarksKeepTheViewAndGoBack) {
     EXPECT_NEAR(editor.state.view.cameraRequest->fovYRad, 0.6f, 1e-5f);
     ASSERT_TRUE(editor::undo(editor.state));
     EXPECT_EQ(editor.state.doc.loaded.project.cameras.size(), before);
+}
+
+// Issue 26 item 4: Help › Keyboard shortcuts shows every key of the editor's table.
+TEST(EditorPanels, HelpListsEveryKeyboardShortcut) {
+    const ScratchFolder folder("editor-help");
+    EditorDriver editor(folder.path());
+    editor.click("Help");
+    editor.click("Keyboard shortcuts");
+    std::set<std::string> shown;
+    for (const ui::ClippedShape& shape : editor.frame().shapes)
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape))
+            shown.insert(t->text);
+    ASSERT_GE(editor::keyboardShortcuts().size(), 15u);
+    for (const editor::Shortcut& shortcut : editor::keyboardShortcuts()) {
+        EXPECT_TRUE(shown.count(std::string(shortcut.keys))) << shortcut.keys;
+        EXPECT_TRUE(shown.count(std::string(shortcut.what))) << shortcut.what;
+    }
+    for (const char* key : {"Delete", "F", "Space", "Ctrl+Z", "Ctrl+S"})
+        EXPECT_TRUE(shown.count(key)) << key;
 }
 
 }  // namespace
