@@ -1,5 +1,6 @@
 // The side panel's sections: layers, wind, colliders, render settings (panels.h says which
 // edits apply next frame and which re-grow the scene).
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -178,7 +179,13 @@ void cameraSection(ui::Ui& ui, EditorState& s) {
         if (cameras.size() < core::MAX_CAMERAS && section.button("keep this view").clicked()) {
             const core::OrbitCamera& view = s.view.camera;
             core::CameraDesc bookmark;
-            bookmark.name = "view " + std::to_string(cameras.size() + 1);
+            // Names are unique among cameras (the format refuses twins): the first free "view N".
+            for (std::size_t n = cameras.size() + 1;; ++n) {
+                bookmark.name = "view " + std::to_string(n);
+                if (std::none_of(cameras.begin(), cameras.end(),
+                                 [&](const core::CameraDesc& c) { return c.name == bookmark.name; }))
+                    break;
+            }
             bookmark.position = view.position();
             bookmark.target = view.target;
             bookmark.fovYDeg = glm::degrees(view.fovYRad);

@@ -287,6 +287,14 @@ TEST(EditorPanels, CameraBookmarksKeepTheViewAndGoBack) {
     ASSERT_TRUE(editor.state.view.cameraRequest.has_value());
     EXPECT_LT(glm::distance(editor.state.view.cameraRequest->position(), glm::vec3(3.0f, 2.0f, 1.0f)), 1e-3f);
     EXPECT_NEAR(editor.state.view.cameraRequest->fovYRad, 0.6f, 1e-5f);
+    // Kept again under a name no camera has, though one is called "view 3" already: the format
+    // wants names unique.
+    editor.state.doc.loaded.project.cameras.back().name = "view 3";
+    editor.click("keep this view");
+    editor::recordProjectEdit(editor.state, false);
+    ASSERT_EQ(cameras.size(), before + 2);
+    EXPECT_EQ(cameras.back().name, "view 4");
+    ASSERT_TRUE(editor::undo(editor.state));
     ASSERT_TRUE(editor::undo(editor.state));
     EXPECT_EQ(editor.state.doc.loaded.project.cameras.size(), before);
 }
