@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "project/setting.h"
+#include "project/setting_text.h"
 #include "util/assert.h"
 #include "ui/ui.h"
 
@@ -51,7 +52,7 @@ ui::Response settingWidget(ui::Ui& ui, const core::settings::Setting<S>& row, S&
     namespace s = core::settings;
     const std::string label = w::labelFor(row.key, row.label, row.unit);
     const s::UiHint& uiHint = hint ? *hint : row.ui;
-    return std::visit(
+    ui::Response response = std::visit(
         [&](const auto& access) -> ui::Response {
             using A = std::remove_cvref_t<decltype(access)>;
             if constexpr (std::is_same_v<A, s::Ref<S, float>>) {
@@ -94,6 +95,10 @@ ui::Response settingWidget(ui::Ui& ui, const core::settings::Setting<S>& row, S&
             }
         },
         row.access);
+    // What it is, its unit and range, where it is saved (issue 26 item 4): the row's own words,
+    // as docs/project-format.md has them.
+    response.onHoverText(s::settingTooltip(row));
+    return response;
 }
 
 // The widget of the row named `key` (a key the table lacks is a programming error).

@@ -318,5 +318,25 @@ TEST(EditorPanels, HelpListsEveryKeyboardShortcut) {
         EXPECT_TRUE(shown.count(key)) << key;
 }
 
+// Issue 26 item 4: a setting's widget says what it is, what it accepts and where it is saved.
+TEST(EditorPanels, ASettingShowsItsTooltipWhenHovered) {
+    const ScratchFolder folder("editor-tooltip");
+    EditorDriver editor(folder.path());
+    editor.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 3000.0f}};  // no scrolling
+    editor.click("Light");
+    std::optional<ui::Vec2> label;
+    for (const ui::ClippedShape& shape : editor.frame().shapes)
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && t->text == "intensity")
+            label = t->pos;
+    ASSERT_TRUE(label.has_value());
+    editor.input.pointerPos = *label + ui::Vec2(-20.0f, 6.0f);
+    editor.frame();
+    std::string tooltip;
+    for (const ui::ClippedShape& shape : editor.frame().shapes)
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && t->text.find("multiplies") == 0)
+            tooltip = t->text;
+    EXPECT_EQ(tooltip, "multiplies color · allowed: >= 0 · project.json \"intensity\"");
+}
+
 }  // namespace
 }  // namespace grass::test
