@@ -80,8 +80,9 @@ json colorJson(glm::vec3 color) {
 using LayerProgress = std::function<void(float within, const char* stage)>;
 
 Result<void> stageGltfLayer(StagedFiles& staged, const LoadedProject& loaded, const Scene& scene,
-                            std::size_t index, const std::string& stem, int lod,
-                            const LayerProgress& step, ExportedLayer& report) {
+                            const SourceMaterial& terrainMaterial, std::size_t index,
+                            const std::string& stem, int lod, const LayerProgress& step,
+                            ExportedLayer& report) {
     const LayerField& layer = scene.layers[index];
     GltfLayerInput input;
     input.scene = &scene;
@@ -89,7 +90,7 @@ Result<void> stageGltfLayer(StagedFiles& staged, const LoadedProject& loaded, co
     input.lod = lod;
     input.segments = loaded.project.render.stripSegments;
     input.groundColor = loaded.project.render.groundColor;
-    input.terrainMaterial = terrainMaterialOf(loaded);
+    input.terrainMaterial = terrainMaterial;
     input.binStem = stem;
     step(0.0f, "maps");
     for (const NamedMap& map : paintedMaps(layer)) {
@@ -175,15 +176,15 @@ Result<std::string> pngBytes(const MapImage& map, const fs::path& folder, const 
 
 // Every layer in one .glb (buildSceneGlb).
 Result<void> stageGlb(StagedFiles& staged, const LoadedProject& loaded, const Scene& scene,
-                      const ExportOptions& options, const ExportProgress& progress,
-                      std::vector<ExportedLayer>& layers) {
+                      const SourceMaterial& terrainMaterial, const ExportOptions& options,
+                      const ExportProgress& progress, std::vector<ExportedLayer>& layers) {
     GltfSceneInput input;
     input.scene = &scene;
     input.name = loaded.project.name;
     input.lod = options.lod;
     input.segments = loaded.project.render.stripSegments;
     input.groundColor = loaded.project.render.groundColor;
-    input.terrainMaterial = terrainMaterialOf(loaded);
+    input.terrainMaterial = terrainMaterial;
     input.merged = options.format == ExportFormat::Mesh;
     if (input.merged) {
         // Refused before any work: a merged field over the budget, with the LOD that fits.
@@ -331,9 +332,11 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
         return lock.error();
 
     ExportReport report;
-    if (options.format != ExportFormat::Raw)
-        for (const std::string& note : terrainMaterialOf(loaded).notes)
-            report.notes.push_back("terrain material: " + note);
+    // Read once (the source file and its textures), shared by every layer's file.
+    const SourceMaterial terrainMaterial =
+        options.format != ExportFormat::Raw ? terrainMaterialOf(loaded) : SourceMaterial{};
+    for (const std::string& note : terrainMaterial.notes)
+        report.notes.push_back("terrain material: " + note);
     Result<void> staging = [&]() -> Result<void> {
         StagedFiles staged(options.outDir);
         staged.protect(std::move(inputs));
@@ -343,7 +346,8 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
         const std::vector<std::string> stems = layerStems(layerNames);
         json layers = json::array();
         if (options.format == ExportFormat::Glb || options.format == ExportFormat::Mesh) {
-            if (auto written = stageGlb(staged, loaded, scene, options, progress, report.layers);
+            if (auto written = stageGlb(staged, loaded, scene, terrainMaterial, options, progress,
+                                          report.layers);
                 !written)
                 return written.error();
         }
@@ -358,8 +362,8 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
             };
             ExportedLayer exported{layer.name, layer.liveBlades, 0};
             if (options.format == ExportFormat::Gltf) {
-                if (auto written = stageGltfLayer(staged, loaded, scene, i, stems[i], options.lod,
-                                                  step, exported);
+                if (auto written = stageGltfLayer(staged, loaded, scene, terrainMaterial, i, stems[i],
+                                                  options.lod, step, exported);
                     !written)
                     return written.error();
             } else {

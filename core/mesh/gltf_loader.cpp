@@ -135,20 +135,15 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file) {
     const auto instances = gltf::collectInstances(model, result.notes);
     if (!instances)
         return withPath(instances.error());
-    // Decoded once per mesh, shared by every node that places it.
-    std::vector<std::optional<std::vector<PrimitiveData>>> decoded(model.meshes.size());
+    gltf::DecodedMeshes decoded(model, result.notes, false);
     SurfaceMeshBuilder builder;
     MergeStats stats;
     for (const MeshInstance& instance : *instances) {
-        auto& primitives = decoded[instance.mesh];
-        if (!primitives) {
-            auto read = gltf::decodeMesh(model, instance.mesh, result.notes);
-            if (!read)
-                return withPath(read.error());
-            primitives = std::move(*read);
-        }
+        const auto primitives = decoded.primitives(instance.mesh);
+        if (!primitives)
+            return withPath(primitives.error());
         const std::string meshName = gltf::describeMesh(model, instance.mesh);
-        for (const PrimitiveData& data : *primitives) {
+        for (const PrimitiveData& data : **primitives) {
             const auto added = addPrimitive(builder, data, instance.world, meshName, stats);
             if (!added)
                 return withPath(added.error());

@@ -7,6 +7,7 @@
 #include <tiny_gltf.h>
 #include <cstddef>
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,5 +43,29 @@ Result<std::vector<MeshInstance>> collectInstances(const tinygltf::Model& model,
 Result<std::vector<PrimitiveData>> decodeMesh(const tinygltf::Model& model, std::size_t meshIndex,
                                               std::vector<std::string>& notes,
                                               bool withColors = false);
+
+// Each mesh decoded once (decodeMesh), shared by every node and GPU instance that places it.
+class DecodedMeshes {
+public:
+    DecodedMeshes(const tinygltf::Model& model, std::vector<std::string>& notes, bool withColors)
+        : mModel(model), mNotes(notes), mWithColors(withColors), mDecoded(model.meshes.size()) {}
+    // `mesh` < model.meshes.size() (collectInstances checks it).
+    Result<const std::vector<PrimitiveData>*> primitives(std::size_t mesh) {
+        auto& decoded = mDecoded[mesh];
+        if (!decoded) {
+            auto read = decodeMesh(mModel, mesh, mNotes, mWithColors);
+            if (!read)
+                return read.error();
+            decoded = std::move(*read);
+        }
+        return &*decoded;
+    }
+
+private:
+    const tinygltf::Model& mModel;
+    std::vector<std::string>& mNotes;
+    bool mWithColors;
+    std::vector<std::optional<std::vector<PrimitiveData>>> mDecoded;
+};
 
 }  // namespace grass::core::gltf

@@ -2,7 +2,6 @@
 
 #include <array>
 #include <cmath>
-#include <optional>
 
 #include "mesh/gltf_scene_walk.h"
 #include "mesh/gltf_source.h"
@@ -51,16 +50,12 @@ Result<GltfView> loadGltfView(const std::filesystem::path& file, std::size_t max
     const auto instances = gltf::collectInstances(model, view.notes, true);
     if (!instances)
         return makeError(display, instances.error().message);
-    std::vector<std::optional<std::vector<gltf::PrimitiveData>>> decoded(model.meshes.size());
+    gltf::DecodedMeshes decoded(model, view.notes, true);
     for (const gltf::MeshInstance& instance : *instances) {
-        auto& primitives = decoded[instance.mesh];
-        if (!primitives) {
-            auto read = gltf::decodeMesh(model, instance.mesh, view.notes, true);
-            if (!read)
-                return makeError(display, read.error().message);
-            primitives = std::move(*read);
-        }
-        for (const gltf::PrimitiveData& data : *primitives) {
+        const auto primitives = decoded.primitives(instance.mesh);
+        if (!primitives)
+            return makeError(display, primitives.error().message);
+        for (const gltf::PrimitiveData& data : **primitives) {
             if (view.positions.size() + data.positions.size() > maxVertices)
                 return makeError(display, "places more than " + std::to_string(maxVertices) +
                                               " vertices, more than this view draws");

@@ -73,6 +73,21 @@ struct EditorDriver {
         frame();
     }
 
+    // Drags the value box of the row whose label starts at `label` (the box sits left of it) 40
+    // points to the right, a frame per 10 points.
+    void dragRightOfLabel(ui::Vec2 label) {
+        input.pointerPos = label + ui::Vec2(-20.0f, 6.0f);
+        frame();
+        input.buttonDown[0] = true;
+        frame();
+        for (int i = 0; i < 4; ++i) {
+            input.pointerPos.x += 10.0f;
+            frame();
+        }
+        input.buttonDown[0] = false;
+        frame();
+    }
+
     ui::Context ctx;
     ui::Input input;
     core::Scene scene;
@@ -203,16 +218,7 @@ TEST(EditorPanels, ATypedPositionMovesAKeyedCollider) {
             t && t->text == "position (key at now)")
             label = t->pos;
     ASSERT_TRUE(label.has_value()) << "a keyed collider's position row names the key";
-    editor.input.pointerPos = *label + ui::Vec2(-20.0f, 6.0f);
-    editor.frame();
-    editor.input.buttonDown[0] = true;
-    editor.frame();
-    for (int i = 0; i < 4; ++i) {
-        editor.input.pointerPos.x += 10.0f;
-        editor.frame();
-    }
-    editor.input.buttonDown[0] = false;
-    editor.frame();
+    editor.dragRightOfLabel(*label);
     editor::recordProjectEdit(editor.state, false);
 
     const core::ColliderDesc& edited = editor.state.doc.loaded.project.colliders.back();
@@ -245,16 +251,7 @@ TEST(EditorPanels, TheLightSectionEditsTheSunAndTheSky) {
     ASSERT_TRUE(label.has_value()) << "the Light section shows the sun's intensity";
     EXPECT_TRUE(sky) << "and the sky's colour";
     // Drag the intensity's box (left of its label) to the right.
-    editor.input.pointerPos = *label + ui::Vec2(-20.0f, 6.0f);
-    editor.frame();
-    editor.input.buttonDown[0] = true;
-    editor.frame();
-    for (int i = 0; i < 4; ++i) {
-        editor.input.pointerPos.x += 10.0f;
-        editor.frame();
-    }
-    editor.input.buttonDown[0] = false;
-    editor.frame();
+    editor.dragRightOfLabel(*label);
     editor::recordProjectEdit(editor.state, false);
     EXPECT_GT(editor.state.doc.loaded.project.sun.intensity, before.intensity);
     EXPECT_FALSE(editor.state.rebuildPending) << "light is live: nothing re-grows";
