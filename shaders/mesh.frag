@@ -15,6 +15,10 @@ in vec2 vUv;
 in vec3 vPosWorld;
 
 uniform vec3 uAlbedo;
+// A glTF surface's own base-colour texture (core/scene/surface_look.h), sRGB decoded by the
+// texture format; multiplies uAlbedo (its base colour factor), as glTF defines.
+layout(binding = 5) uniform sampler2D uBaseTexture;
+uniform bool uHasBaseTexture;
 // The unlit colour (RenderOptions::albedoView).
 uniform bool uAlbedoView;
 
@@ -24,6 +28,8 @@ void main() {
     // Two-sided: glTF meshes may be open shells seen from behind (a Möbius strip always is).
     vec3 normal = normalize(gl_FrontFacing ? vNormal : -vNormal);
     vec3 albedo = uAlbedo;
+    if (uHasBaseTexture)
+        albedo *= texture(uBaseTexture, vUv).rgb;
 #ifdef GRASS_SNOW
     if (uSnowCoverageView) {
         fragColor = vec4(snowCoverageTerms(vPosWorld, vNormal), 1.0);

@@ -24,7 +24,8 @@
 
 namespace grass::ui {
 
-// Keys widgets react to; letters only for shortcuts (select all, copy, paste, cut, undo, redo).
+// Keys widgets react to; letters only for shortcuts (select all, copy, paste, cut, undo, redo, save,
+// new, open).
 enum class Key {
     Left,
     Right,
@@ -43,7 +44,9 @@ enum class Key {
     X,
     Z,
     Y,
-    S
+    S,
+    N,
+    O
 };
 
 struct Modifiers {

@@ -1,6 +1,8 @@
 // Menu bar, menus and menu items (menu.h).
 #include "ui/menu.h"
 
+#include <algorithm>
+
 namespace grass::ui {
 
 namespace {
@@ -77,7 +79,9 @@ bool menuItem(Ui& ui, std::string_view label, std::string_view shortcutText) {
     Context& ctx = ui.context();
     const Style& s = ui.style();
     const FontAtlas& fonts = ctx.fonts();
-    const float labelWidth = fonts.textSize(label, s.textSizePt).x;
+    // "Text##key" shows Text and is keyed by the whole (two recent projects of one name).
+    const std::string_view shown = label.substr(0, std::min(label.find("##"), label.size()));
+    const float labelWidth = fonts.textSize(shown, s.textSizePt).x;
     const float shortcutWidth = fonts.textSize(shortcutText, s.textSizePt).x;
     // A gap of several spaces between label and shortcut keeps the columns readable.
     const float gap = shortcutText.empty() ? 0.0f : 3.0f * s.itemSpacing.x;
@@ -89,7 +93,7 @@ bool menuItem(Ui& ui, std::string_view label, std::string_view shortcutText) {
         p.rect(rect, s.rounding, s.selectionFill);
     }
     const Color32 text = r.hovered() ? s.textStrong : s.text;
-    p.text({rect.min.x + s.buttonPadding.x, rect.centre().y}, label, s.textSizePt, text,
+    p.text({rect.min.x + s.buttonPadding.x, rect.centre().y}, shown, s.textSizePt, text,
            {0.0f, 0.5f});
     if (!shortcutText.empty()) {
         p.text({rect.max.x - s.buttonPadding.x, rect.centre().y}, shortcutText, s.textSizePt,

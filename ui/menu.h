@@ -20,6 +20,7 @@ bool menu(Ui& ui, std::string_view label, const UiFn& fn);
 
 // A full-width row: label left, `shortcutText` (shown, not handled) right. True once, on the
 // frame it is clicked; the click also closes the menu.
+// "Text##key" shows Text (the whole label is the id).
 bool menuItem(Ui& ui, std::string_view label, std::string_view shortcutText = {});
 
 }  // namespace grass::ui

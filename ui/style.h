@@ -58,6 +58,8 @@ struct Style {
     // Selected items, slider fill, progress bar, checked boxes' marks.
     Color32 selectionFill = Color32::rgb(0, 92, 128);
     Color32 accent = Color32::rgb(90, 170, 255);
+    // A refused entry: its box's outline and the reason under it.
+    Color32 refused = Color32::rgb(255, 110, 80);
     Color32 scrollBarTrack = Color32::rgb(40, 40, 40);
 
     WidgetVisuals nonInteractive{

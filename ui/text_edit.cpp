@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace grass::ui {
@@ -287,8 +289,97 @@ int rangeDecimals(float min, float max) {
 
 struct EntryState {
     bool editing = false;
+    bool hadFocus = false;
     std::string buffer;
+    std::string refused;  // why the typed text was not taken (empty: nothing refused)
 };
+
+// The typed number, or why it is none: the whole text (spaces around allowed) must be one
+// finite number.
+std::optional<double> parseTyped(const std::string& text) {
+    char* end = nullptr;
+    const double typed = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || !std::isfinite(typed))
+        return std::nullopt;
+    while (*end == ' ' || *end == '\t')
+        ++end;
+    if (*end != '\0')
+        return std::nullopt;
+    return typed;
+}
+
+// The box a drag value turns into for typing, shared by the float and integer entries. A
+// double-click or Ctrl+click opens it with the value selected; Enter takes the typed value
+// when `take` accepts it (returns an empty reason) and otherwise keeps the box open, outlined,
+// with the reason under it, focused again for the correction. Clicking elsewhere leaves a
+// refused entry showing (never a silent revert); Escape in the box cancels.
+Response numberEntry(Ui& ui, std::string_view label, const std::function<Response()>& dragBox,
+                     const std::function<std::string()>& current,
+                     const std::function<std::string(double)>& take) {
+    Context& ctx = ui.context();
+    const Style& s = ui.style();
+    EntryState& st = ctx.state<EntryState>(ui.makeId(label).with("entry"));
+    // The text box gets its own id, but shows the same label.
+    const std::string editId = std::string(label) + "##entry";
+    if (!st.editing) {
+        Response r = dragBox();
+        if (r.doubleClicked() || (r.clicked() && ctx.input().modifiers.ctrl)) {
+            st.editing = true;
+            st.hadFocus = false;
+            st.refused.clear();
+            st.buffer = current();
+            const Id textId = ui.makeId(editId);
+            ctx.requestFocus(textId);
+            // Context drops focus held by a widget it did not see this frame; this zero-size
+            // interaction keeps the requested focus alive until the box appears next frame.
+            ui.interact(Rect{}, textId, Sense::hover());
+        }
+        return r;
+    }
+    const float width =
+        std::max(s.dragValueMinWidth,
+                 ctx.fonts().textSize(st.buffer, s.textSizePt).x + 2.0f * s.buttonPadding.x);
+    // The text edit consumes Enter: look before it, so a refusal by Enter keeps the focus.
+    const bool enter = ctx.keyPressed(Key::Enter);
+    bool committed = false;
+    bool edited = false;
+    Response r = textEditImpl(ui, editId, st.buffer, width, &committed, &edited);
+    if (committed) {
+        const std::optional<double> typed = parseTyped(st.buffer);
+        st.refused = !typed ? "\"" + st.buffer + "\" is not a number" : take(*typed);
+        if (st.refused.empty()) {
+            st.editing = false;
+            r.markChanged();
+        } else if (enter) {
+            ctx.requestFocus(r.id());
+        }
+    } else if (st.hadFocus && !r.hasFocus()) {
+        // Escape: back to dragging, value untouched.
+        st.editing = false;
+        st.refused.clear();
+    }
+    st.hadFocus = r.hasFocus();
+    if (st.editing && !st.refused.empty()) {
+        const Rect box = Rect::fromMinSize(r.rect().min, {width, r.rect().height()});
+        Painter over = ctx.painter(Layer::Foreground, ctx.screenRect());
+        over.rect(box, s.rounding, Color32::transparent(), {1.5f, s.refused});
+        const Vec2 size = ctx.fonts().textSize(st.refused, s.textSizePt);
+        const Rect bubble = Rect::fromMinSize({box.min.x, box.max.y + 2.0f},
+                                              size + 2.0f * s.buttonPadding);
+        over.rect(bubble, s.rounding, s.popupFill, {1.0f, s.refused});
+        over.text(bubble.min + s.buttonPadding, st.refused, s.textSizePt, s.refused);
+    }
+    return r;
+}
+
+std::string boundsText(double min, double max, int decimals) {
+    const auto end = [&](double v) { return formatNumber(float(v), decimals); };
+    if (std::isfinite(min) && std::isfinite(max))
+        return "must be in [" + end(min) + ", " + end(max) + "]";
+    if (std::isfinite(min))
+        return "must be at least " + end(min);
+    return "must be at most " + end(max);
+}
 
 }  // namespace
 
@@ -325,50 +416,43 @@ Response textEdit(Ui& ui, std::string_view idLabel, std::string& text, float wid
 }
 
 Response dragValueWithEntry(Ui& ui, std::string_view label, float& value, float speed, float min,
-                            float max, int decimals) {
-    Context& ctx = ui.context();
-    const Style& s = ui.style();
-    EntryState& st = ctx.state<EntryState>(ui.makeId(label).with("entry"));
-    // The text box gets its own id, but shows the same label.
-    const std::string editId = std::string(label) + "##entry";
-    if (!st.editing) {
-        Response r = ui.dragValue(label, value, speed, min, max, decimals);
-        if (r.doubleClicked()) {
-            st.editing = true;
-            st.buffer = formatNumber(value, decimals);
-            const Id textId = ui.makeId(editId);
-            ctx.requestFocus(textId);
-            // Context drops focus held by a widget it did not see this frame; this zero-size
-            // interaction keeps the requested focus alive until the box appears next frame.
-            ui.interact(Rect{}, textId, Sense::hover());
-        }
-        return r;
-    }
-    const float width =
-        std::max(s.dragValueMinWidth,
-                 ctx.fonts().textSize(st.buffer, s.textSizePt).x + 2.0f * s.buttonPadding.x);
-    bool committed = false;
-    bool edited = false;
-    Response r = textEditImpl(ui, editId, st.buffer, width, &committed, &edited);
-    if (committed) {
-        st.editing = false;
-        char* end = nullptr;
-        const double typed = std::strtod(st.buffer.c_str(), &end);
-        const bool parsed = end != st.buffer.c_str() && std::isfinite(typed);
-        const float v = std::clamp(float(typed), min, max);
-        if (parsed && v != value) {
-            value = v;
-            r.markChanged();
-        }
-    } else if (!r.hasFocus()) {
-        // Escape: back to dragging, value untouched.
-        st.editing = false;
-    }
-    return r;
+                            float max, int decimals, const NumberCheck& check) {
+    return numberEntry(
+        ui, label, [&] { return ui.dragValue(label, value, speed, min, max, decimals); },
+        [&] { return formatNumber(value, decimals); },
+        [&](double typed) -> std::string {
+            if (check) {
+                if (std::string reason = check(typed); !reason.empty())
+                    return reason;
+            } else if (typed < double(min) || typed > double(max)) {
+                return boundsText(min, max, decimals);
+            }
+            value = float(typed);
+            return {};
+        });
+}
+
+Response dragValueWithEntry(Ui& ui, std::string_view label, int& value, float speed, int min,
+                            int max, const NumberCheck& check) {
+    return numberEntry(
+        ui, label, [&] { return ui.dragValue(label, value, speed, min, max); },
+        [&] { return std::to_string(value); },
+        [&](double typed) -> std::string {
+            if (typed != std::floor(typed))
+                return "must be a whole number";
+            if (check) {
+                if (std::string reason = check(typed); !reason.empty())
+                    return reason;
+            } else if (typed < double(min) || typed > double(max)) {
+                return boundsText(min, max, 0);
+            }
+            value = int(typed);
+            return {};
+        });
 }
 
 Response sliderWithEntry(Ui& ui, std::string_view label, float& value, float min, float max,
-                         const SliderOptions& options) {
+                         const SliderOptions& options, const NumberCheck& check) {
     Response result;
     ui.horizontal([&](Ui& row) {
         row.pushId(label);
@@ -382,7 +466,7 @@ Response sliderWithEntry(Ui& ui, std::string_view label, float& value, float min
         const float speed = (max - min) / std::max(row.style().sliderWidth, 1.0f);
         const int decimals = options.decimals >= 0 ? options.decimals : rangeDecimals(min, max);
         const Response box = dragValueWithEntry(row, "", value, speed, std::min(min, max),
-                                                std::max(min, max), decimals);
+                                                std::max(min, max), decimals, check);
         row.popId();
         if (!label.empty()) {
             row.label(label);

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -26,16 +27,25 @@ namespace grass::ui {
 Response textEdit(Ui& ui, std::string_view idLabel, std::string& text, float width,
                   bool* committed = nullptr);
 
-// A drag value (Ui::dragValue) that a double click turns into a text box for typing the number;
-// Enter or focus loss parses and clamps it, Escape or unparsable text keeps the old value.
+// Why a typed number is refused ("must be in (0, 5000] m"); empty: it is taken.
+using NumberCheck = std::function<std::string(double)>;
+
+// A drag value (Ui::dragValue) that a double-click or Ctrl+click turns into a text box for
+// typing the number. Enter takes it when it is a number that `check` accepts (without a check:
+// one in [min, max]; an integer must be whole); otherwise the box stays open, outlined, with the
+// reason under it: a refused value is never clamped or reverted silently. Clicking elsewhere
+// leaves it showing; Escape in the box cancels, the value untouched.
 Response dragValueWithEntry(Ui& ui, std::string_view label, float& value, float speed,
                             float min = -std::numeric_limits<float>::infinity(),
-                            float max = std::numeric_limits<float>::infinity(), int decimals = 3);
+                            float max = std::numeric_limits<float>::infinity(), int decimals = 3,
+                            const NumberCheck& check = {});
+Response dragValueWithEntry(Ui& ui, std::string_view label, int& value, float speed, int min,
+                            int max, const NumberCheck& check = {});
 
 // A slider track followed by a dragValueWithEntry box and the label, as egui's slider: drag the
-// track, drag the box, or double-click the box to type a value (clamped to [min, max]).
+// track, drag the box, or double-click (Ctrl+click) the box to type a value.
 Response sliderWithEntry(Ui& ui, std::string_view label, float& value, float min, float max,
-                         const SliderOptions& options = {});
+                         const SliderOptions& options = {}, const NumberCheck& check = {});
 
 // Cursor editing helpers on UTF-8 byte offsets, exposed for tests.
 std::size_t nextCodePoint(std::string_view text, std::size_t pos);

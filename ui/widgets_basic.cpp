@@ -6,8 +6,9 @@
 namespace grass::ui {
 
 Response& Response::onHoverText(std::string_view text) {
-    // Hidden while anything is dragged: the tooltip would cover what is being edited.
-    if (mCtx == nullptr || !mHovered || mCtx->activeId().value != 0) {
+    // Hidden while anything is dragged, and while the widget is typed into: the tooltip would
+    // cover what is being edited (and a refused entry's reason under it).
+    if (mCtx == nullptr || !mHovered || mHasFocus || mCtx->activeId().value != 0) {
         return *this;
     }
     const Style& s = mCtx->style();

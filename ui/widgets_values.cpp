@@ -45,6 +45,8 @@ struct SliderMapping {
 // it changed. `integer` rounds to whole numbers.
 Response sliderImpl(Ui& ui, std::string_view label, double& value, double min, double max,
                     const SliderOptions& options, bool integer) {
+    // "Text##key": Text is shown, the whole label is the id.
+    const std::string_view shown = label.substr(0, std::min(label.find("##"), label.size()));
     const Style& s = ui.style();
     const FontAtlas& fonts = ui.context().fonts();
     const SliderMapping map{min, max, options.logarithmic && min > 0.0 && max > min};
@@ -52,11 +54,11 @@ Response sliderImpl(Ui& ui, std::string_view label, double& value, double min, d
         integer ? 0 : (options.decimals >= 0 ? options.decimals : autoDecimals(min, max));
     const std::string valueText = options.showValue ? formatValue(value, decimals) : std::string();
     const Vec2 valueSize = fonts.textSize(valueText, s.textSizePt);
-    const Vec2 labelSize = fonts.textSize(label, s.textSizePt);
+    const Vec2 labelSize = fonts.textSize(shown, s.textSizePt);
     const float height = std::max(s.interactHeight, valueSize.y);
     const float valueWidth = options.showValue ? s.itemSpacing.x + valueSize.x : 0.0f;
     const float width =
-        s.sliderWidth + valueWidth + (label.empty() ? 0.0f : s.itemSpacing.x + labelSize.x);
+        s.sliderWidth + valueWidth + (shown.empty() ? 0.0f : s.itemSpacing.x + labelSize.x);
     const Rect total = ui.allocate({width, height});
     const Rect track = Rect::fromMinSize(total.min, {s.sliderWidth, height});
     Response r = ui.interact(track, ui.makeId(label), Sense::clickAndDrag());
@@ -96,21 +98,22 @@ Response sliderImpl(Ui& ui, std::string_view label, double& value, double min, d
     if (options.showValue) {
         p.text({textX, cy}, valueText, s.textSizePt, s.text, {0.0f, 0.5f});
     }
-    p.text({track.max.x + valueWidth + s.itemSpacing.x, cy}, label, s.textSizePt, s.text,
+    p.text({track.max.x + valueWidth + s.itemSpacing.x, cy}, shown, s.textSizePt, s.text,
            {0.0f, 0.5f});
     return r;
 }
 
 // The value box of a drag value; returns the response of the box.
 Response dragBox(Ui& ui, std::string_view label, const std::string& text) {
+    const std::string_view shown = label.substr(0, std::min(label.find("##"), label.size()));
     const Style& s = ui.style();
     const FontAtlas& fonts = ui.context().fonts();
     const Vec2 textSize = fonts.textSize(text, s.textSizePt);
-    const Vec2 labelSize = fonts.textSize(label, s.textSizePt);
+    const Vec2 labelSize = fonts.textSize(shown, s.textSizePt);
     const Vec2 box{std::max(s.dragValueMinWidth, textSize.x + 2.0f * s.buttonPadding.x),
                    std::max(s.interactHeight, textSize.y + 2.0f * s.buttonPadding.y)};
     const Rect total =
-        ui.allocate({box.x + (label.empty() ? 0.0f : s.itemSpacing.x + labelSize.x), box.y});
+        ui.allocate({box.x + (shown.empty() ? 0.0f : s.itemSpacing.x + labelSize.x), box.y});
     const Rect rect = Rect::fromMinSize(total.min, box);
     const Response r = ui.interact(rect, ui.makeId(label), Sense::clickAndDrag());
     if (r.hovered() || r.dragged()) {
@@ -120,7 +123,7 @@ Response dragBox(Ui& ui, std::string_view label, const std::string& text) {
     Painter& p = ui.painter();
     p.rect(rect, s.rounding, v.bgFill, v.bgStroke);
     p.text(rect.centre(), text, s.textSizePt, v.text, {0.5f, 0.5f});
-    p.text({rect.max.x + s.itemSpacing.x, rect.centre().y}, label, s.textSizePt, s.text,
+    p.text({rect.max.x + s.itemSpacing.x, rect.centre().y}, shown, s.textSizePt, s.text,
            {0.0f, 0.5f});
     return r;
 }

@@ -106,6 +106,37 @@ Result<RegrowReport> ScenePainter::apply(const PaintEdit& edit, bool undo) {
     return regrow(edit.layer, edit.record.touchedBounds, marginM);
 }
 
+Result<std::pair<std::optional<PaintEdit>, RegrowReport>> ScenePainter::replaceMap(
+    std::size_t layer, LayerMap which, const MapImage& image) {
+    GRASS_ASSERT(layer < mScene->layers.size());
+    GRASS_ASSERT(!active());
+    MapImage& map = layerMap(mScene->layers[layer].source.maps, which);
+    if (map.texels.empty())
+        map = makeConstantMap(image.width, image.height, 1.0f);  // what the grass saw so far
+    if (image.width != map.width || image.height != map.height)
+        return Error{"import", "the picture is " + std::to_string(image.width) + "×" +
+                                   std::to_string(image.height) + ", the map " +
+                                   std::to_string(map.width) + "×" + std::to_string(map.height)};
+    PaintEdit edit{layer, which, {}};
+    PaintRecord& record = edit.record;
+    for (std::size_t i = 0; i < map.texels.size(); ++i)
+        if (map.texels[i] != image.texels[i]) {
+            record.texelIndex.push_back(static_cast<std::uint32_t>(i));
+            record.before.push_back(map.texels[i]);
+            record.after.push_back(image.texels[i]);
+        }
+    if (record.empty())
+        return std::pair<std::optional<PaintEdit>, RegrowReport>{};
+    // The whole surface, padded as a stroke's bounds are (brush.h).
+    const Bounds& bounds = mScene->bounds;
+    const glm::vec3 pad(1e-3f * glm::length(bounds.size()));
+    record.touchedBounds = {bounds.min - pad, bounds.max + pad};
+    auto report = apply(edit, false);
+    if (!report)
+        return report.error();
+    return std::pair<std::optional<PaintEdit>, RegrowReport>{std::move(edit), std::move(*report)};
+}
+
 Result<RegrowReport> ScenePainter::regrow(std::size_t layer, const Bounds& region,
                                           float texelMarginM) {
     return regrowLayerRegion(mScene->layers[layer], region, texelMarginM, mLighting);

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 
 #include "edit/history.h"
 #include "maps/brush.h"
@@ -49,6 +50,14 @@ public:
     std::size_t dabCount() const { return mStroke ? mStroke->dabCount() : 0; }
     // Ends the stroke: the edit to record, or nullopt when no texel changed.
     std::optional<PaintEdit> end();
+
+    // Replaces a whole map with `image` (an imported picture, already at the map's size, or at
+    // the layer's resolution when the layer has no map yet) as one edit, like a stroke over
+    // every texel that differs, and re-grows the layer. nullopt in the edit: nothing differed.
+    // Preconditions: no stroke active, layer in range.
+    Result<std::pair<std::optional<PaintEdit>, RegrowReport>> replaceMap(std::size_t layer,
+                                                                         LayerMap map,
+                                                                         const MapImage& image);
 
     // Writes an edit's `before` (undo) or `after` (redo) values back and re-grows what they touch.
     // An error (nothing changed) when the layer or the map no longer matches the edit.

@@ -113,15 +113,33 @@ Timeline timelineFor(const Project& project) {
 
 std::vector<float> keyTimes(const Project& project) {
     std::vector<float> times;
-    for (const WindDesc& wind : project.wind)
-        for (const PathKey& key : wind.source.path)
-            times.push_back(key.timeS);
-    for (const ColliderDesc& collider : project.colliders)
-        for (const PathKey& key : collider.path)
-            times.push_back(key.timeS);
-    std::sort(times.begin(), times.end());
+    for (const OwnedKey& key : ownedKeys(project))
+        times.push_back(key.timeS);
     times.erase(std::unique(times.begin(), times.end()), times.end());
     return times;
+}
+
+std::vector<OwnedKey> ownedKeys(const Project& project) {
+    std::vector<OwnedKey> keys;
+    for (std::size_t i = 0; i < project.wind.size(); ++i)
+        for (const PathKey& key : project.wind[i].source.path)
+            keys.push_back({key.timeS, true, i});
+    for (std::size_t i = 0; i < project.colliders.size(); ++i)
+        for (const PathKey& key : project.colliders[i].path)
+            keys.push_back({key.timeS, false, i});
+    std::stable_sort(keys.begin(), keys.end(),
+                     [](const OwnedKey& a, const OwnedKey& b) { return a.timeS < b.timeS; });
+    return keys;
+}
+
+std::optional<OwnedKey> nearestOwnedKey(const std::vector<OwnedKey>& keys, float timeS,
+                                        float toleranceS) {
+    std::optional<OwnedKey> best;
+    for (const OwnedKey& key : keys)
+        if (const float d = std::abs(key.timeS - timeS);
+            d <= toleranceS && (!best || d < std::abs(best->timeS - timeS)))
+            best = key;
+    return best;
 }
 
 std::size_t setKey(std::vector<PathKey>& path, float timeS, glm::vec3 posWorld, float toleranceS) {

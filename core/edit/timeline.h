@@ -96,6 +96,20 @@ Timeline timelineFor(const Project& project);
 // Every key time of every wind and collider path, sorted, each once: the timeline's ticks.
 std::vector<float> keyTimes(const Project& project);
 
+// One key of a path with the object it moves: what the timeline strip draws as a tick and
+// selects on a click.
+struct OwnedKey {
+    float timeS = 0.0f;
+    bool wind = true;        // a wind source's path, else a collider's
+    std::size_t index = 0;   // into project.wind or project.colliders
+    bool operator==(const OwnedKey&) const = default;
+};
+// Every key of every path, by time (wind sources before colliders at equal times).
+std::vector<OwnedKey> ownedKeys(const Project& project);
+// The key whose tick is nearest `timeS`, within `toleranceS` (the first of equals).
+std::optional<OwnedKey> nearestOwnedKey(const std::vector<OwnedKey>& keys, float timeS,
+                                        float toleranceS);
+
 // --- Key edits. Paths stay sorted by time (samplePath's precondition). ----------------------
 
 // Keys posWorld at timeS: the nearest key within toleranceS (the editor passes half a physics

@@ -5,6 +5,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "mesh/surface_bulk.h"
+
 namespace grass::core {
 
 namespace {
@@ -152,6 +154,12 @@ glm::vec3 preferredViewDirection(const SurfaceMesh& mesh) {
     if (glm::length(mean) < 0.35f)
         return threeQuarter;
     return glm::normalize(threeQuarter + 2.0f * mean);
+}
+
+OrbitCamera frameSurface(const SurfaceMesh& mesh, float aspect) {
+    const Bounds bulk = surfaceBulkBounds(mesh);
+    return fitBoundsInView(frameBounds(bulk, 0.785f, preferredViewDirection(mesh)), bulk, aspect,
+                           0.9f);
 }
 
 OrbitCamera frameBounds(const Bounds& bounds, float fovYRad) {

@@ -64,4 +64,9 @@ OrbitCamera fitBoundsInView(OrbitCamera camera, const Bounds& bounds, float aspe
 // plane, is seen from its grassy front instead of edge-on from above).
 glm::vec3 preferredViewDirection(const SurfaceMesh& mesh);
 
+// The first view of a surface: the bulk of it (surface_bulk.h: a far cloud or a stray part of
+// the file left out) from its preferred side, filling 90 % of a picture of `aspect` (a 45° field
+// of view). What a project made from a mesh and an imported mesh start with.
+OrbitCamera frameSurface(const SurfaceMesh& mesh, float aspect);
+
 }  // namespace grass::core

@@ -7,7 +7,6 @@
 #include "maps/map_image.h"
 #include "mesh/gltf_loader.h"
 #include "mesh/procedural.h"
-#include "mesh/surface_bulk.h"
 #include "scene/camera.h"
 #include "util/byte_size.h"
 #include "util/rng.h"
@@ -103,7 +102,8 @@ static Result<void> refuseHugeScene(const LoadedProject& loaded, double area) {
     return {};
 }
 
-Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes) {
+Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes,
+                                    SurfaceLook* look) {
     const MeshSource& source = loaded.project.mesh;
     if (!source.isFile)
         return makeProceduralMesh(source.procedural);
@@ -117,6 +117,11 @@ Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std
         for (auto& note : imported->notes)
             notes->push_back(path->string() + ": " + note);
     applyMeshFrame(imported->mesh, source.metresPerUnit, source.up);
+    if (look) {
+        *look = surfaceLookOf(*path, imported->hasUv);
+        if (notes)
+            notes->insert(notes->end(), look->notes.begin(), look->notes.end());
+    }
     return std::move(imported->mesh);
 }
 
@@ -379,10 +384,14 @@ Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
 
 Result<Scene> buildScene(const LoadedProject& loaded) {
     std::vector<std::string> notes;
-    auto mesh = loadProjectMesh(loaded, &notes);
+    SurfaceLook look;
+    auto mesh = loadProjectMesh(loaded, &notes, &look);
     if (!mesh)
         return mesh.error();
-    return buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes));
+    auto scene = buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes));
+    if (scene)
+        scene->look = std::move(look);
+    return scene;
 }
 
 Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, const SurfaceMesh& mesh,
@@ -422,12 +431,9 @@ Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, cons
     billboards.density = std::min(
         billboards.density, static_cast<float>(static_cast<double>(targetBlades) / 16.0 / area));
 
-    // The bulk of the surface, not every stray part of the file (surface_bulk.h), filling most
-    // of the picture at the project's aspect.
-    const Bounds bulk = surfaceBulkBounds(mesh);
+    // The bulk of the surface, filling most of the picture at the project's aspect.
     const float aspect = float(project.render.width) / float(std::max(project.render.height, 1));
-    const OrbitCamera framed =
-        fitBoundsInView(frameBounds(bulk, 0.785f, preferredViewDirection(mesh)), bulk, aspect, 0.9f);
+    const OrbitCamera framed = frameSurface(mesh, aspect);
     CameraDesc& camera = project.cameras.front();
     camera.name = "framed";
     camera.position = framed.position();

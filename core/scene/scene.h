@@ -13,6 +13,7 @@
 #include "scene/blade_shading.h"
 #include "scene/layer_growth.h"
 #include "scene/scene_props.h"
+#include "scene/surface_look.h"
 #include "project/project.h"
 #include "scatter/patches.h"
 
@@ -52,6 +53,7 @@ struct Scene {
     std::vector<SceneProp> props;    // the colliders, drawn as opaque objects
     BillboardLayer billboards;
     std::vector<std::string> notes;  // warnings from loading (mesh notes, map conversions)
+    SurfaceLook look;                // the surface's own material (a glTF file's)
     std::size_t totalBlades() const;
 };
 
@@ -123,8 +125,10 @@ Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted,
 Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
                                         const GrassLightingDesc& lighting);
 
-// The mesh of a project alone (no grass), for `render --mesh` and mesh-info.
-Result<SurfaceMesh> loadProjectMesh(const LoadedProject& project, std::vector<std::string>* notes);
+// The mesh of a project alone (no grass), for `render --mesh` and mesh-info. `look`, when given,
+// gets the surface's own material (surface_look.h; nothing for a procedural surface).
+Result<SurfaceMesh> loadProjectMesh(const LoadedProject& project, std::vector<std::string>* notes,
+                                    SurfaceLook* look = nullptr);
 
 // Grows the layers of `project` on a mesh already loaded (so a file is read once).
 Result<Scene> buildSceneFromMesh(const LoadedProject& project, SurfaceMesh mesh,

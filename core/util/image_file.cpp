@@ -1,5 +1,6 @@
 #include "util/image_file.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "util/atomic_file.h"
@@ -80,26 +81,22 @@ Result<void> writeRgba8Image(const fs::path& file, int width, int height,
     return commitTemporaryFile(temporary, file);
 }
 
-Result<Rgba8Pixels> readRgba8Image(const fs::path& file) {
-    std::error_code ec;
-    if (!fs::exists(file, ec))
-        return makeError(file.string(), "file not found");
-    if (auto header = core::checkImageHeader(file, core::MAX_IMAGE_SIDE); !header)
-        return header.error();
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in)
-        return makeError(file.string(), "not a readable image: " + oneLine(OIIO::geterror()));
-    const OIIO::ImageSpec& spec = in->spec();
-    if (auto fits =
-            core::checkImageSize(file.string(), spec.width, spec.height, core::MAX_IMAGE_SIDE);
-        !fits)
+namespace {
+
+// An open image read whole as RGBA8 (grey → RGB, no alpha → 255), refused beyond `maxSide`
+// before its pixels are allocated.
+Result<Rgba8Pixels> readOpenImage(OIIO::ImageInput& in, const std::string& name, int maxSide) {
+    const OIIO::ImageSpec& spec = in.spec();
+    if (spec.nchannels <= 0)
+        return makeError(name, "the image has no channels");
+    if (auto fits = core::checkImageSize(name, spec.width, spec.height, maxSide); !fits)
         return fits.error();
     const int channels = spec.nchannels;
     std::vector<std::uint8_t> raw(static_cast<std::size_t>(spec.width) *
                                   static_cast<std::size_t>(spec.height) *
                                   static_cast<std::size_t>(channels));
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
-        return makeError(file.string(), "cannot read: " + oneLine(in->geterror()));
+    if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
+        return makeError(name, "cannot read: " + oneLine(in.geterror()));
     Rgba8Pixels image;
     image.width = spec.width;
     image.height = spec.height;
@@ -114,6 +111,30 @@ Result<Rgba8Pixels> readRgba8Image(const fs::path& file) {
         image.pixels[4 * i + 3] = channels == 4 ? p[3] : (channels == 2 ? p[1] : 255);
     }
     return image;
+}
+
+}  // namespace
+
+Result<Rgba8Pixels> readRgba8Image(const fs::path& file) {
+    std::error_code ec;
+    if (!fs::exists(file, ec))
+        return makeError(file.string(), "file not found");
+    if (auto header = core::checkImageHeader(file, core::MAX_IMAGE_SIDE); !header)
+        return header.error();
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in)
+        return makeError(file.string(), "not a readable image: " + oneLine(OIIO::geterror()));
+    return readOpenImage(*in, file.string(), core::MAX_IMAGE_SIDE);
+}
+
+Result<Rgba8Pixels> decodeRgba8Image(std::string_view bytes, const std::string& name,
+                                     std::string_view extension, int maxSide) {
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    // The extension picks the decoder; the name is only for messages.
+    auto in = OIIO::ImageInput::open("memory" + std::string(extension), nullptr, &memory);
+    if (!in)
+        return makeError(name, "not a readable image: " + oneLine(OIIO::geterror()));
+    return readOpenImage(*in, name, maxSide);
 }
 
 }  // namespace grass

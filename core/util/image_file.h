@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "util/result.h"
@@ -36,5 +37,10 @@ std::string oneLine(std::string text);
 
 // Reads any image as RGBA8 (grey → RGB, no alpha → 255). For tests and goldens.
 Result<Rgba8Pixels> readRgba8Image(const std::filesystem::path& file);
+// The same for an encoded image in memory (a texture inside a .glb): `extension` (".png",
+// ".jpg") picks the decoder, `name` is what messages call it; sides beyond `maxSide` are
+// refused before the pixels are allocated.
+Result<Rgba8Pixels> decodeRgba8Image(std::string_view bytes, const std::string& name,
+                                     std::string_view extension, int maxSide);
 
 }  // namespace grass

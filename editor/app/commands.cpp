@@ -51,7 +51,9 @@ struct Applier {
     bool operator()(RecordStroke& c) {
         s.doc.paintedMaps.insert({c.edit.layer, c.edit.map});
         s.doc.dirty = true;
-        std::string label = std::string("paint ") + std::string(core::layerMapName(c.edit.map));
+        std::string label = !c.label.empty()
+                                ? c.label
+                                : std::string("paint ") + std::string(core::layerMapName(c.edit.map));
         s.doc.history.push(core::Edit{std::move(label), std::move(c.edit)});
         return true;
     }

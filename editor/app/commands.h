@@ -32,6 +32,7 @@ struct EditProject {
 // brush must be seen as it moves); this records it as one undo step of the document.
 struct RecordStroke {
     core::PaintEdit edit;
+    std::string label = {};  // empty: "paint <map>"
 };
 
 struct Undo {};

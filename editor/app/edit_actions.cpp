@@ -37,6 +37,49 @@ Result<void> carryPaintedMaps(const EditorState& s, core::Scene& from, core::Sce
     return {};
 }
 
+bool importMapImage(EditorState& s, const fs::path& file) {
+    const std::size_t layer = s.view.paint.layer;
+    const core::LayerMap which = s.view.paint.map;
+    const std::string mapName(core::layerMapName(which));
+    if (!s.tools || !s.scene || layer >= s.scene->layers.size() ||
+        layer >= s.doc.project().layers.size()) {
+        s.transient.message = "cannot import " + file.string() + ": the brush's layer does not exist";
+        return false;
+    }
+    if (s.view.toolDragActive || s.busy()) {
+        s.transient.message = "cannot import " + file.string() + " while a stroke or an export runs";
+        return false;
+    }
+    const core::MapImage& current = core::layerMap(s.scene->layers[layer].source.maps, which);
+    const glm::ivec2 size = current.texels.empty() ? s.doc.project().layers[layer].mapResolution
+                                                   : glm::ivec2(current.width, current.height);
+    auto image = core::loadMapImageAt(file, size.x, size.y);
+    if (!image) {
+        s.transient.message = "cannot import: " + image.error().str();
+        return false;
+    }
+    auto replaced = s.tools->painter.replaceMap(layer, which, *image);
+    if (!replaced) {
+        s.transient.message = "cannot import " + file.string() + ": " + replaced.error().str();
+        return false;
+    }
+    auto& [edit, report] = *replaced;
+    if (!edit) {
+        s.transient.message = file.filename().string() + " equals the " + mapName + " map already";
+        return true;
+    }
+    if (s.regrown)
+        s.regrown(layer, report);
+    const std::string label = "import " + mapName + " map";
+    apply(s, RecordStroke{std::move(*edit), label});
+    s.transient.message = "imported " + file.string() + " as the " + mapName + " map of layer \"" +
+                          s.doc.project().layers[layer].name + "\"";
+    // How the picture was read (resampled, colour to luminance): the user should know.
+    for (const std::string& warning : image->warnings)
+        s.transient.message += "; " + warning;
+    return true;
+}
+
 Result<void> savePaintedMaps(EditorState& s, const fs::path& folder) {
     if (!s.scene)
         return {};

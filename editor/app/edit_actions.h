@@ -18,6 +18,11 @@ void resetHistory(EditorState& state);
 // panel edit), which is then re-grown where they differ from what it loaded.
 Result<void> carryPaintedMaps(const EditorState& state, core::Scene& from, core::Scene& to);
 
+// The paint tool's map of the paint tool's layer becomes the picture in `file` (resampled to the
+// map's size), one undo step like a stroke; saved as painted maps are. The status bar says what
+// happened (or why not: no such layer, an unreadable picture).
+bool importMapImage(EditorState& state, const std::filesystem::path& file);
+
 // Writes every painted map into `folder` (the layer's own file, else maps/<layer>-<map>.png) and
 // names it in the project; atomic per file. Called by saveTo before project.json is written.
 Result<void> savePaintedMaps(EditorState& state, const std::filesystem::path& folder);

@@ -77,6 +77,13 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
                                     .budgetMs = e.mSettings.frameBudgetMs});
     state.view.options = viewRenderOptions(state);
     resetHistory(state);
+    // File › Open Recent is the user's, kept across sessions: a replayed script (a test) neither
+    // reads nor writes it, so its pictures and the user's list stay independent.
+    if (!e.mReplay) {
+        state.transient.recentFile = recentFilesPath();
+        state.transient.recent = loadRecentFiles(state.transient.recentFile);
+        rememberRecent(state, state.doc.loaded.file);
+    }
     state.recoveryOffer = findAutosave(state.doc.loaded);
     state.recoverRequested = e.mSettings.recover && state.recoveryOffer.has_value();
     e.resetTimeline();
@@ -199,8 +206,10 @@ bool Editor::applyRequests() {
         } else if (adoptDocument(std::move(*opened), "cannot open")) {
             state.doc.dirty = false;
             state.transient.message = "opened " + state.doc.loaded.file.string();
+            rememberRecent(state, state.doc.loaded.file);
         }
     }
+    applyImports();
     if (state.recoverRequested && !state.busy()) {
         state.recoverRequested = false;
         core::LoadedProject recovered = std::move(*state.recoveryOffer);
@@ -227,8 +236,12 @@ void Editor::regrowLive() {
         mState.transient.message = "cannot grow the field: " + next.error().str();
         return;
     }
+    adoptLive(std::move(*next));
+}
+
+void Editor::adoptLive(Live next) {
     const std::size_t steps = mLive.physics ? mLive.physics->steps : 0;
-    mLive = std::move(*next);
+    mLive = std::move(next);
     mState.scene = mLive.scene.get();
     mState.tools = mLive.tools.get();
     if (mLive.physics)

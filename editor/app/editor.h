@@ -76,7 +76,11 @@ private:
     // New, Open, Recover and re-grows; true when the user quit.
     bool applyRequests();
     void regrowLive();
+    // The same project's field, grown again: it replaces the live one, the clock goes on.
+    void adoptLive(Live next);
     bool adoptDocument(core::LoadedProject next, std::string_view what);
+    // New from mesh, Import mesh and Import map image (editor_imports.cpp).
+    void applyImports();
     void resetTimeline();
     void autosaveWhenDue();
     void advanceTime();

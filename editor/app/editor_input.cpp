@@ -48,6 +48,8 @@ PixelRect toPixels(ui::Rect r, float ppp, int framebufferHeight) {
 }  // namespace
 
 void Editor::runInput(InputState input, int width, int height) {
+    if (!input.dropped.empty())
+        routeDroppedFiles(mState, input.dropped);
     // The UI first: it decides who gets the pointer and the keys this frame.
     const Clock::time_point uiStart = Clock::now();
     mView = PixelRect{0, 0, width, height};

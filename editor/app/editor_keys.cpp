@@ -60,12 +60,14 @@ std::string applyEditorKeys(EditorState& state, const InputState& input, bool wi
             key.modifiers.shift ? redo(state) : undo(state);
         else if (key.key == ui::Key::Y)
             redo(state);
-        else if (key.key == ui::Key::S && withUi) {
-            if (state.doc.loaded.file.empty())
-                state.transient.fileDialog = FileDialog::SaveAs;
-            else
-                saveTo(state, state.doc.loaded.file.string());
-        }
+        else if (key.key == ui::Key::S && withUi && key.modifiers.shift)
+            openBrowser(state, BrowsePurpose::SaveProject);
+        else if (key.key == ui::Key::S && withUi)
+            saveOrAsk(state);
+        else if (key.key == ui::Key::N && withUi)
+            askLeave(state, LeaveAction::New);
+        else if (key.key == ui::Key::O && withUi)
+            openBrowser(state, BrowsePurpose::OpenProject);
     }
     return changed;
 }

@@ -14,9 +14,12 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 #include <utility>
 
 #include "app/export_job.h"
+#include "app/file_browser.h"
+#include "app/recent_files.h"
 #include "app/viewport_tools.h"
 #include "edit/gizmo_drag.h"
 #include "edit/history.h"
@@ -91,10 +94,8 @@ struct FrameStatus {
     std::string reduced;
 };
 
-enum class FileDialog { None, Open, SaveAs };
-
 // What replaces the open project, and so asks first when it has unsaved changes.
-enum class LeaveAction { Quit, New, Open };
+enum class LeaveAction { Quit, New, Open, NewFromMesh };
 
 // The side panel's working copy of the project this frame (buildPanels): its widgets edit it in
 // place, and its difference from the document becomes one EditProject command.
@@ -103,16 +104,28 @@ struct PanelDraft {
     bool regrow = false;  // a value the scene is grown from changed
 };
 
+inline constexpr std::size_t MAX_LOGGED_MESSAGES = 500;
+
 struct Transient {
     FrameStatus status;
     PanelDraft draft;
-    FileDialog fileDialog = FileDialog::None;
-    std::string pathText;
+    // The file browser of Open…, Save As…, New from mesh…, Import mesh… (none: closed).
+    std::optional<FileBrowser> browser;
+    std::filesystem::path meshFolder;  // where the last mesh or map image was picked
+    // File › Open Recent; saved to recentFile after each open and save (empty: not kept, as in
+    // tests).
+    RecentFiles recent;
+    std::filesystem::path recentFile;
     // The "Unsaved changes" window, and what it is about (with the path for Open).
     bool quitDialog = false;
     LeaveAction leaveAction = LeaveAction::Quit;
     std::string leaveOpenPath;
     std::string message;  // last file operation's result, shown in the status bar
+    // Every message shown, newest last, with the UI time it appeared (panels_messages.cpp),
+    // and the Messages window the status bar's message opens.
+    std::vector<std::string> messageLog;
+    std::string loggedMessage;
+    bool messagesWindow = false;
     // A failed save stays on screen: routine messages (autosaved) do not replace it until a
     // save succeeds.
     bool messageIsSaveError = false;
@@ -152,6 +165,11 @@ struct EditorState {
     std::string turntableRequested;   // File → Save turntable: the first view's path
     bool newRequested = false;
     std::string openRequested;  // a path to load
+    // File › New from mesh…, File › Import mesh… or a dropped .gltf/.glb, and a map image for
+    // the paint tool's layer and map (File › Import map image… or a dropped image): paths.
+    std::string newFromMeshRequested;
+    std::string importMeshRequested;
+    std::string importMapRequested;
     bool quitRequested = false;  // the user confirmed (or nothing was unsaved)
 };
 

@@ -28,6 +28,8 @@ std::optional<ui::Key> uiKeyFor(int glfwKey) {
     case GLFW_KEY_Z: return ui::Key::Z;
     case GLFW_KEY_Y: return ui::Key::Y;
     case GLFW_KEY_S: return ui::Key::S;
+    case GLFW_KEY_N: return ui::Key::N;
+    case GLFW_KEY_O: return ui::Key::O;
     default: return std::nullopt;
     }
 }

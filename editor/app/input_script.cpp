@@ -24,6 +24,7 @@ struct Player {
         now.typed.clear();
         now.keys.clear();
         now.buttonEvents.clear();
+        now.dropped.clear();
         now.toggledCullTest = 0;
         now.nextTechnique = now.toggleLighting = false;
     }
@@ -53,7 +54,8 @@ std::optional<ui::Key> keyNamed(const std::string& name) {
         {"backspace", ui::Key::Backspace}, {"delete", ui::Key::Delete},
         {"enter", ui::Key::Enter}, {"escape", ui::Key::Escape}, {"tab", ui::Key::Tab},
         {"a", ui::Key::A}, {"c", ui::Key::C}, {"v", ui::Key::V}, {"x", ui::Key::X},
-        {"z", ui::Key::Z}, {"y", ui::Key::Y}, {"s", ui::Key::S}};
+        {"z", ui::Key::Z}, {"y", ui::Key::Y}, {"s", ui::Key::S},
+        {"n", ui::Key::N}, {"o", ui::Key::O}};
     for (const auto& [text, key] : KEYS)
         if (name == text)
             return key;
@@ -215,6 +217,17 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
             std::getline(in >> std::ws, rest);
             p.now.typed += rest;
             p.emit();
+        } else if (command == "drop") {
+            // A file dropped on the window (relative to the script's folder), as GLFW delivers it.
+            std::string name;
+            std::getline(in >> std::ws, name);
+            if (name.empty())
+                return fail("drop: expected a file path");
+            const std::filesystem::path path = std::filesystem::path(name).is_absolute()
+                                                   ? std::filesystem::path(name)
+                                                   : file.parent_path() / name;
+            p.now.dropped.push_back(path.string());
+            p.emit();
         } else if (command == "pressure") {
             double pressure = 0;
             if (!(in >> pressure) || !(pressure >= 0.0 && pressure <= 1.0))
@@ -232,7 +245,7 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
             break;
         } else {
             return fail("unknown command '" + command +
-                        "' (wait, move, press, release, drag, hold, key, type, pressure, "
+                        "' (wait, move, press, release, drag, hold, key, type, drop, pressure, "
                         "screenshot, quit)");
         }
     }

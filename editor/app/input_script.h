@@ -13,6 +13,7 @@
 //   hold ctrl|shift|none     modifiers held from now on (hold ctrl+shift for both)
 //   key [ctrl+][shift+]NAME  one key press: a letter, digit, [ ], enter, escape, tab, f
 //   type TEXT                typed text (the rest of the line)
+//   drop PATH                a file dropped on the window (relative to the script's folder)
 //   pressure P               pen pressure for what follows, 0…1
 //   screenshot FILE          save the window after this frame (relative to the script's folder)
 //   quit                     stop (also at the end of the script)

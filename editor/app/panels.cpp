@@ -2,6 +2,7 @@
 
 #include "app/autosave.h"
 #include "app/edit_actions.h"
+#include "app/mesh_import.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,15 +22,6 @@ namespace {
 constexpr float STATUS_BAR_HEIGHT = 26.0f;
 constexpr float SIDE_PANEL_WIDTH = 330.0f;
 
-// A folder, or a file that does not end in .json, means <path>/project.json: projects are
-// folders (assets are relative to them), so that is what artists type.
-std::filesystem::path projectFileFor(const std::string& path) {
-    std::filesystem::path p(path);
-    if (p.extension() == ".json")
-        return p;
-    return p / "project.json";
-}
-
 // <project folder>/<stem>-<n><extension> with the first n whose file (and turntable frames)
 // do not exist yet, so repeated shots never overwrite each other.
 std::string freshPath(const EditorState& s, const std::string& stem, const std::string& extension) {
@@ -43,26 +35,48 @@ std::string freshPath(const EditorState& s, const std::string& stem, const std::
     }
 }
 
+// File › Open Recent: the projects opened or saved last, newest first; a project whose file
+// is gone is left out (opening it would only fail).
+void recentItems(ui::Ui& m, EditorState& s) {
+    namespace fs = std::filesystem;
+    std::vector<fs::path> shown;
+    for (const fs::path& file : s.transient.recent.projects) {
+        std::error_code ec;
+        if (fs::is_regular_file(file, ec))
+            shown.push_back(file);
+    }
+    if (shown.empty())
+        return;
+    m.coloredLabel("Open Recent", m.style().textWeak);
+    for (const fs::path& file : shown) {
+        const fs::path folder = file.parent_path();
+        const std::string name = file.filename() == "project.json" ? folder.filename().string()
+                                                                   : file.filename().string();
+        // The label is the item's id too: the full path keeps two "meadow"s apart.
+        if (ui::menuItem(m, "   " + name + "##" + file.string(), folder.parent_path().string()))
+            askLeave(s, LeaveAction::Open, file.string());
+    }
+}
+
 void fileMenu(ui::Ui& bar, EditorState& s) {
     ui::menu(bar, "File", [&](ui::Ui& m) {
-        if (ui::menuItem(m, "New"))
+        if (ui::menuItem(m, "New", "Ctrl+N"))
             askLeave(s, LeaveAction::New);
-        if (ui::menuItem(m, "Open…")) {
-            s.transient.fileDialog = FileDialog::Open;
-            s.transient.pathText = s.doc.loaded.folder.string();
-        }
-        if (ui::menuItem(m, "Save")) {
-            if (s.doc.loaded.file.empty()) {
-                s.transient.fileDialog = FileDialog::SaveAs;
-                s.transient.pathText.clear();
-            } else {
-                saveTo(s, s.doc.loaded.file.string());
-            }
-        }
-        if (ui::menuItem(m, "Save As…")) {
-            s.transient.fileDialog = FileDialog::SaveAs;
-            s.transient.pathText = s.doc.loaded.file.string();
-        }
+        if (ui::menuItem(m, "New from mesh…"))
+            openBrowser(s, BrowsePurpose::NewFromMesh);
+        if (ui::menuItem(m, "Open…", "Ctrl+O"))
+            openBrowser(s, BrowsePurpose::OpenProject);
+        recentItems(m, s);
+        m.separator();
+        if (ui::menuItem(m, "Save", "Ctrl+S"))
+            saveOrAsk(s);
+        if (ui::menuItem(m, "Save As…", "Ctrl+Shift+S"))
+            openBrowser(s, BrowsePurpose::SaveProject);
+        m.separator();
+        if (ui::menuItem(m, "Import mesh…"))
+            openBrowser(s, BrowsePurpose::ImportMesh);
+        if (ui::menuItem(m, "Import map image…"))
+            openBrowser(s, BrowsePurpose::ImportMap);
         m.separator();
         if (ui::menuItem(m, "Export…")) {
             s.transient.exportDialog = true;
@@ -93,43 +107,6 @@ void editMenu(ui::Ui& bar, EditorState& s) {
     });
 }
 
-// The path entry window of Open… and Save As… (there is no native file dialog).
-void fileDialogWindow(ui::Context& ctx, EditorState& s) {
-    if (s.transient.fileDialog == FileDialog::None)
-        return;
-    const bool opening = s.transient.fileDialog == FileDialog::Open;
-    bool open = true;
-    const ui::Rect screen = ctx.screenRect();
-    const ui::Rect defaultRect = ui::Rect::fromMinSize(
-        {screen.centre().x - 230.0f, screen.centre().y - 60.0f}, {460.0f, 120.0f});
-    ui::window(
-        ctx, opening ? "Open project" : "Save project as", &open,
-        [&](ui::Ui& ui) {
-            ui.label(opening ? "Project folder or .json file:" : "Save to folder or .json file:");
-            // The text edit consumes Enter, so look before it: Enter (not a commit by focus loss,
-            // e.g. a click on Cancel) confirms the dialog.
-            const bool enter = ctx.keyPressed(ui::Key::Enter);
-            bool committed = false;
-            ui::textEdit(ui, "##path", s.transient.pathText, ui.availableWidth() - 8.0f, &committed);
-            ui.horizontal([&](ui::Ui& row) {
-                const bool go =
-                    row.button(opening ? "Open" : "Save").clicked() || (committed && enter);
-                if (go && !s.transient.pathText.empty()) {
-                    if (opening)
-                        askLeave(s, LeaveAction::Open, s.transient.pathText);
-                    else
-                        saveTo(s, projectFileFor(s.transient.pathText).string());
-                    s.transient.fileDialog = FileDialog::None;
-                }
-                if (row.button("Cancel").clicked())
-                    s.transient.fileDialog = FileDialog::None;
-            });
-        },
-        defaultRect);
-    if (!open)
-        s.transient.fileDialog = FileDialog::None;
-}
-
 // Carries out the confirmed (or harmless) leave action for the Editor.
 void leave(EditorState& s) {
     s.transient.quitDialog = false;
@@ -142,6 +119,9 @@ void leave(EditorState& s) {
             break;
         case LeaveAction::Open:
             s.openRequested = s.transient.leaveOpenPath;
+            break;
+        case LeaveAction::NewFromMesh:
+            s.newFromMeshRequested = s.transient.leaveOpenPath;
             break;
     }
 }
@@ -158,7 +138,7 @@ void quitDialogWindow(ui::Context& ctx, EditorState& s) {
             ui.horizontal([&](ui::Ui& row) {
                 if (row.button(quitting ? "Save and quit" : "Save first").clicked()) {
                     if (s.doc.loaded.file.empty()) {
-                        s.transient.fileDialog = FileDialog::SaveAs;  // no file yet: ask where first
+                        openBrowser(s, BrowsePurpose::SaveProject);  // no file yet: ask where first
                         s.transient.quitDialog = false;
                     } else if (saveTo(s, s.doc.loaded.file.string())) {
                         askLeave(s, s.transient.leaveAction, s.transient.leaveOpenPath);
@@ -176,13 +156,9 @@ void quitDialogWindow(ui::Context& ctx, EditorState& s) {
                               {400.0f, 90.0f}));
 }
 
-void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
+void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
     const ui::Style& style = ctx.style();
-    ui::Painter bg = ctx.painter(ui::Layer::Panels, rect);
-    bg.rect(rect, 0.0f, style.panelFill);
-    bg.line({rect.min.x, rect.min.y + 0.5f}, {rect.max.x, rect.min.y + 0.5f},
-            {1.0f, style.separator});
-    ctx.registerArea(rect);
+    paintBar(ctx, rect);
     const render::FrameTimings& t = s.transient.status.timings;
     const bool stems = s.doc.loaded.project.render.technique == core::GrassTechnique::Growth;
     // The snow map's time shows only while snow lies (its pass runs only then).
@@ -210,11 +186,18 @@ void statusBar(ui::Context& ctx, ui::Rect rect, const EditorState& s) {
                           dropped);
             row.coloredLabel(behind, ui::Color32::rgb(255, 150, 60));
         }
-        // A failed save in warning orange, so that it reads as something to act on.
-        if (!s.transient.message.empty())
-            row.coloredLabel("   " + s.transient.message, s.transient.messageIsSaveError
-                                                    ? ui::Color32::rgb(255, 150, 60)
-                                                    : style.textWeak);
+        // A failed save in warning orange, so that it reads as something to act on. The line
+        // is cut at the window's edge: a click shows every message whole.
+        if (!s.transient.message.empty()) {
+            const ui::Response shown = row.coloredLabel("   " + s.transient.message,
+                                                        s.transient.messageIsSaveError
+                                                            ? ui::Color32::rgb(255, 150, 60)
+                                                            : style.textWeak);
+            ui::Response click = row.interact(shown.rect(), row.makeId("message"),
+                                              ui::Sense::clickOnly());
+            if (click.onHoverText("Click to see every message in full").clicked())
+                s.transient.messagesWindow = true;
+        }
     });
 }
 
@@ -250,14 +233,10 @@ bool saveTo(EditorState& s, const std::string& file) {
     // Files already at the destination are kept; the copy happens before project.json is
     // written, so a failure leaves the old project as it was and no new one naming missing files.
     if (!s.doc.loaded.folder.empty() && !fs::equivalent(s.doc.loaded.folder, folder, ec)) {
+        // A .gltf brings the buffers and images it names along (mesh_import.h).
         for (const std::string& asset : core::projectAssetPaths(s.doc.loaded.project)) {
-            const fs::path from = s.doc.loaded.folder / asset, to = folder / asset;
-            if (!fs::exists(from) || fs::exists(to))
-                continue;
-            fs::create_directories(to.parent_path(), ec);
-            if (!fs::copy_file(from, to, ec)) {
-                s.transient.message = "not saved: " + to.string() + ": cannot copy " + from.string() + " (" +
-                            ec.message() + ")";
+            if (auto copied = copyAssetFiles(s.doc.loaded.folder / asset, folder / asset); !copied) {
+                s.transient.message = "not saved: " + copied.error().str();
                 s.transient.messageIsSaveError = true;
                 return false;
             }
@@ -278,9 +257,26 @@ bool saveTo(EditorState& s, const std::string& file) {
     s.doc.loaded.file = path;
     s.doc.loaded.folder = folder;
     s.doc.dirty = false;
+    rememberRecent(s, path);
     s.transient.message = "saved " + path.string();
     s.transient.messageIsSaveError = false;
     return true;
+}
+
+void paintBar(ui::Context& ctx, ui::Rect rect) {
+    const ui::Style& style = ctx.style();
+    ui::Painter bg = ctx.painter(ui::Layer::Panels, rect);
+    bg.rect(rect, 0.0f, style.panelFill);
+    bg.line({rect.min.x, rect.min.y + 0.5f}, {rect.max.x, rect.min.y + 0.5f},
+            {1.0f, style.separator});
+    ctx.registerArea(rect);
+}
+
+void saveOrAsk(EditorState& s) {
+    if (s.doc.loaded.file.empty())
+        openBrowser(s, BrowsePurpose::SaveProject);
+    else
+        saveTo(s, s.doc.loaded.file.string());
 }
 
 void askLeave(EditorState& s, LeaveAction action, const std::string& openPath) {
@@ -320,7 +316,6 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
             });
             ui.separator();
             toolSection(ui, s);
-            timelineSection(ui, s);
             layerSection(ui, s);
             windSection(ui, s);
             colliderSection(ui, s);
@@ -336,12 +331,16 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
                              .ongoing = ctx.activeId().value != 0});
     ui::Rect central = ui::centralRect(ctx);
     const ui::Rect bar{{central.min.x, central.max.y - STATUS_BAR_HEIGHT}, central.max};
+    logMessage(s, ctx.input().timeS);
     statusBar(ctx, bar, s);
-    central.max.y = bar.min.y;
-    fileDialogWindow(ctx, s);
+    const ui::Rect strip{{central.min.x, bar.min.y - TIMELINE_STRIP_HEIGHT}, {central.max.x, bar.min.y}};
+    timelineStrip(ctx, strip, s);
+    central.max.y = strip.min.y;
+    fileBrowserWindow(ctx, s);
     quitDialogWindow(ctx, s);
     exportWindow(ctx, s);
     shortcutsWindow(ctx, s);
+    messagesWindow(ctx, s);
     recoveryWindow(ctx, s);
     return central;
 }

@@ -38,6 +38,28 @@ bool saveTo(EditorState& state, const std::string& file);
 // unsaved, else through the confirmation window.
 void askLeave(EditorState& state, LeaveAction action, const std::string& openPath = {});
 void askQuit(EditorState& state);
+// Ctrl+S and File › Save: to the project's file, or through the browser when it has none.
+void saveOrAsk(EditorState& state);
+
+// The file browser (panels_file_browser.cpp): opened for a purpose at the place it suits (the
+// project's folder, its parent for Open, the last mesh's folder for meshes), drawn each frame
+// while open; what it chooses goes where the menu item says.
+void openBrowser(EditorState& state, BrowsePurpose purpose);
+void fileBrowserWindow(ui::Context& ctx, EditorState& state);
+// The project file a chosen project path means: a folder, or a path not ending in .json, is
+// <path>/project.json (projects are folders).
+std::filesystem::path projectFileFor(const std::filesystem::path& path);
+// Files dropped on the window: a .gltf/.glb is imported as the surface, a picture as the brush's
+// map, a project folder or .json opened (asking first when there are unsaved changes); anything
+// else is refused in the status bar with what can be dropped. With several, the last of each
+// kind wins.
+void routeDroppedFiles(EditorState& state, const std::vector<std::string>& paths);
+// The message log (panels_messages.cpp): a new status message is appended (at `timeS`, the
+// UI's clock); the Messages window shows each whole.
+void logMessage(EditorState& state, double timeS);
+void messagesWindow(ui::Context& ctx, EditorState& state);
+// Puts a project just opened or saved first in File › Open Recent (and its file, when kept).
+void rememberRecent(EditorState& state, const std::filesystem::path& projectFile);
 
 // File → Export… (panels_export.cpp): the dialog, and the progress window while the job runs.
 void exportWindow(ui::Context& ctx, EditorState& state);
@@ -53,9 +75,15 @@ void shortcutsWindow(ui::Context& ctx, EditorState& state);
 // Starts exporting the live scene with the dialog's choices.
 void startExport(EditorState& state);
 
-// The viewport tools' settings (brush, gizmo) and the timeline (panels_tools.cpp).
+// The viewport tools' settings (brush, gizmo) (panels_tools.cpp).
 void toolSection(ui::Ui& ui, EditorState& state);
-void timelineSection(ui::Ui& ui, EditorState& state);
+// The timeline strip under the viewport (panels_timeline.cpp): transport, typed time and speed,
+// and the track with the keys' ticks and the playhead.
+inline constexpr float TIMELINE_STRIP_HEIGHT = 56.0f;
+// A bar along the viewport's bottom (status bar, timeline strip): filled, a line on top, and
+// taking the pointer.
+void paintBar(ui::Context& ctx, ui::Rect rect);
+void timelineStrip(ui::Context& ctx, ui::Rect rect, EditorState& state);
 
 // The side panel's sections (panels_scene.cpp).
 void layerSection(ui::Ui& ui, EditorState& state);

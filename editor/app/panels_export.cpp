@@ -46,7 +46,8 @@ void exportWindow(ui::Context& ctx, EditorState& s) {
             if (s.exportJob) {
                 ui.label(s.exportJob->done() ? s.exportJob->summary() : s.exportJob->stage());
                 ui.progressBar(s.exportJob->fraction());
-                if (s.exportJob->done() && ui.button("Close").clicked()) {
+                if (s.exportJob->done() &&
+                    ui.button("Close").onHoverText("Close this window").clicked()) {
                     s.transient.message = s.exportJob->summary();
                     s.exportJob.reset();
                     s.transient.exportDialog = false;
@@ -54,18 +55,27 @@ void exportWindow(ui::Context& ctx, EditorState& s) {
                 return;
             }
             ui.label("Folder (a relative path is inside the project folder):");
-            ui::textEdit(ui, "##exportdir", s.transient.exportDir, ui.availableWidth() - 8.0f);
+            ui::textEdit(ui, "##exportdir", s.transient.exportDir, ui.availableWidth() - 8.0f)
+                .onHoverText("The folder to export into; a relative path is inside the project "
+                             "folder");
             // In core::ExportFormat's order.
             static constexpr std::array<const char*, 4> FORMATS{
                 "glTF per layer (EXT_mesh_gpu_instancing)", "raw GPU buffers",
                 "one .glb, every layer", "one .glb, blades merged (any viewer)"};
-            ui.comboBox("format", s.transient.exportFormat, FORMATS);
+            ui.comboBox("format", s.transient.exportFormat, FORMATS)
+                .onHoverText("What to write: glTF files per layer, raw GPU buffers or one .glb");
             if (s.transient.exportFormat != int(core::ExportFormat::Raw))
-                ui.slider("LOD (keep 1 in 2^N)", s.transient.exportLod, 0, core::MAX_EXPORT_LOD);
+                ui.slider("LOD (keep 1 in 2^N)", s.transient.exportLod, 0, core::MAX_EXPORT_LOD)
+                    .onHoverText("Keep 1 blade in 2^N (N from 0 to 8); 0 keeps every blade");
             ui.horizontal([&](ui::Ui& row) {
-                if (row.button("Export").clicked() && !s.transient.exportDir.empty())
+                if (row.button("Export")
+                        .onHoverText("Write the scene to the folder in the chosen format")
+                        .clicked() &&
+                    !s.transient.exportDir.empty())
                     startExport(s);
-                if (row.button("Cancel").clicked())
+                if (row.button("Cancel")
+                        .onHoverText("Close this window without exporting")
+                        .clicked())
                     s.transient.exportDialog = false;
             });
         },

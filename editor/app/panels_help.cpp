@@ -32,6 +32,13 @@ constexpr std::array SHORTCUTS{
     Shortcut{"Ctrl+Z", "undo"},
     Shortcut{"Ctrl+Shift+Z, Ctrl+Y", "redo"},
     Shortcut{"Ctrl+S", "save (asks for a place the first time)"},
+    Shortcut{"Ctrl+Shift+S", "save as: the file browser"},
+    Shortcut{"Ctrl+N", "new project (asks first when there are unsaved changes)"},
+    Shortcut{"Ctrl+O", "open a project: the file browser"},
+    Shortcut{"drop a .gltf / .glb", "import it as the project's surface (one undo step)"},
+    Shortcut{"drop a .png / .exr / ...", "import it as the brush's map of the brush's layer"},
+    Shortcut{"drop a project folder", "open it"},
+    Shortcut{"double-click (browser)", "enter a folder, choose a file"},
     Shortcut{"Enter", "in a path or number field: confirm"},
     Shortcut{"Escape", "close a menu, a popup or a text field"},
 };
@@ -46,6 +53,8 @@ void helpMenu(ui::Ui& bar, EditorState& s) {
     ui::menu(bar, "Help", [&](ui::Ui& m) {
         if (ui::menuItem(m, "Keyboard shortcuts"))
             s.transient.shortcutsWindow = true;
+        if (ui::menuItem(m, "Messages"))
+            s.transient.messagesWindow = true;
     });
 }
 
@@ -54,8 +63,8 @@ void shortcutsWindow(ui::Context& ctx, EditorState& s) {
         return;
     bool open = true;
     const ui::Rect screen = ctx.screenRect();
-    // The whole table on a 720-pixel screen; a smaller one scrolls it.
-    const float height = std::max(200.0f, std::min(640.0f, screen.height() - 70.0f));
+    // The whole table on a screen of 1000 points or more; a smaller one scrolls it.
+    const float height = std::max(200.0f, std::min(920.0f, screen.height() - 70.0f));
     const float width = std::max(300.0f, std::min(740.0f, screen.width() - 20.0f));
     const ui::Rect defaultRect = ui::Rect::fromMinSize(
         {screen.centre().x - 0.5f * width, screen.min.y + 40.0f}, {width, height});

@@ -49,7 +49,10 @@ void qualityRows(ui::Ui& ui, EditorState& s) {
     core::Project& project = s.transient.draft.project;
     const std::optional<core::QualityPreset> current = core::matchingPreset(project);
     int selected = current ? static_cast<int>(*current) + 1 : 0;
-    if (const ui::Response r = ui.comboBox("quality", selected, PRESET_ITEMS);
+    if (const ui::Response r =
+            ui.comboBox("quality", selected, PRESET_ITEMS)
+                .onHoverText("Set the measured quality knobs to a preset: draft, balanced, high "
+                             "or reference; custom means they match none");
         r.changed() && selected > 0) {
         const core::PhysicsParams physicsBefore = project.physics;
         core::applyQuality(core::qualitySettings(core::QualityPreset(selected - 1)), project);

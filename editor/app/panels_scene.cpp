@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -33,9 +34,11 @@ void regrowRow(ui::Ui& ui, EditorState& s, std::span<const core::settings::Setti
     regrow(s, settingWidget(ui, table, key, value));
 }
 
-void vec3Row(ui::Ui& ui, EditorState& s, const char* label, glm::vec3& v, float speed) {
+void vec3Row(ui::Ui& ui, EditorState& s, const char* label, glm::vec3& v, float speed,
+             std::string_view tooltip) {
     const core::settings::UiHint hint{.min = -1e4f, .max = 1e4f, .speed = speed};
-    regrow(s, setting_widget::vector(ui, label, v, core::json::ANY_NUMBER, hint));
+    regrow(s, setting_widget::vector(ui, label, v, core::json::ANY_NUMBER, hint)
+                  .onHoverText(tooltip));
 }
 
 // An object on a keyed path stands where its path says, not at `position`: the row shows and
@@ -43,13 +46,17 @@ void vec3Row(ui::Ui& ui, EditorState& s, const char* label, glm::vec3& v, float 
 // moves it as the gizmo would. Unkeyed, it edits `position`.
 void positionRow(ui::Ui& ui, EditorState& s, glm::vec3& position, std::vector<core::PathKey>& path) {
     if (path.empty()) {
-        vec3Row(ui, s, "position", position, 0.02f);
+        vec3Row(ui, s, "position", position, 0.02f,
+                "World position x, y, z in metres (-10000 to 10000); "
+                "double-click or Ctrl+click to type a value");
         return;
     }
     const float timeS = float(s.view.timeline.timeS());
     const glm::vec3 before = core::samplePath(path, timeS, position);
     glm::vec3 at = before;
-    vec3Row(ui, s, "position (key at now)", at, 0.02f);
+    vec3Row(ui, s, "position (key at now)", at, 0.02f,
+            "Position on the keyed path at the current time, in metres; an edit keys it there; "
+            "double-click or Ctrl+click to type a value");
     if (at != before)
         core::setKey(path, timeS, at, 0.5f * float(s.view.timeline.stepS()));
 }
@@ -59,9 +66,15 @@ void growthCurves(ui::Ui& ui, EditorState& s, core::GrowthCurves& c) {
     std::array<float, 5> width{c.wy0, c.wy1, c.wy2, c.wy3, c.wy4};
     std::array<float, 5> height{c.hy0, c.hy1, c.hy2, c.hy3, c.hy4};
     const ui::Vec2 size{ui.availableWidth() - 8.0f, 80.0f};
-    regrow(s, ui::bezierCurveEdit(ui, "soil → growth  f1(g)", soil, size));
-    regrow(s, ui::twoPieceCurveEdit(ui, "light → width  f2(l)", width, size));
-    regrow(s, ui::twoPieceCurveEdit(ui, "light → height  f3(l)", height, size));
+    regrow(s, ui::bezierCurveEdit(ui, "soil → growth  f1(g)", soil, size)
+                  .onHoverText("How growth responds to the soil map's value, both 0 to 1; "
+                               "drag a handle up or down"));
+    regrow(s, ui::twoPieceCurveEdit(ui, "light → width  f2(l)", width, size)
+                  .onHoverText("How blade width responds to the light map's value, both 0 to 1; "
+                               "drag a handle up or down"));
+    regrow(s, ui::twoPieceCurveEdit(ui, "light → height  f3(l)", height, size)
+                  .onHoverText("How blade height responds to the light map's value, both 0 to 1; "
+                               "drag a handle up or down"));
     c.gy0 = soil[0], c.gy1 = soil[1], c.gy2 = soil[2];
     c.wy0 = width[0], c.wy1 = width[1], c.wy2 = width[2], c.wy3 = width[3], c.wy4 = width[4];
     c.hy0 = height[0], c.hy1 = height[1], c.hy2 = height[2], c.hy3 = height[3],
@@ -78,7 +91,22 @@ void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
         field->shape = layer.shape;
     for (const std::string_view key : {"height", "width", "stiffness"})
         regrowRow(ui, s, core::settings::blade(), key, layer.scatter.blade);
-    regrowRow(ui, s, rows, "density", layer);
+    // The format takes any density; the scene refuses one that would grow more blades than a
+    // scene may hold: a typed one is refused in its box, with the count.
+    const double area = s.scene ? s.scene->area : 0.0;
+    const auto densityLimit = [&](double typed) -> std::string {
+        core::ScatterParams scatter = layer.scatter;
+        scatter.density = static_cast<float>(typed);
+        const double blades = core::estimateLayerBlades(scatter, area);
+        if (blades <= core::MAX_SCENE_BLADES)
+            return {};
+        char reason[160];
+        std::snprintf(reason, sizeof reason,
+                      "would grow %.3g blades on this %.3g m² surface; a scene holds at most %.3g",
+                      blades, area, core::MAX_SCENE_BLADES);
+        return reason;
+    };
+    regrow(s, settingWidget(ui, rows, "density", layer, nullptr, densityLimit));
     for (const std::string_view key : {"root_color", "tip_color"})
         if (settingWidget(ui, rows, key, layer).changed() && field) {
             field->rootColor = layer.rootColor;
@@ -163,20 +191,25 @@ void cameraSection(ui::Ui& ui, EditorState& s) {
             section.pushId(std::uint64_t(i));
             core::CameraDesc& camera = cameras[i];
             section.horizontal([&](ui::Ui& row) {
-                if (row.button("go").clicked())
+                if (row.button("go").onHoverText("Move the view to this camera").clicked())
                     s.view.cameraRequest = core::OrbitCamera::lookAt(
                         camera.position, camera.target, glm::radians(camera.fovYDeg));
                 bool committed = false;
-                ui::textEdit(row, "##name", camera.name, 150.0f, &committed);
+                ui::textEdit(row, "##name", camera.name, 150.0f, &committed)
+                    .onHoverText("The camera's name; grass render --camera NAME renders it");
                 // The first camera is what grass render draws by default: it stays.
-                if (cameras.size() > 1 && row.button("delete").clicked())
+                if (cameras.size() > 1 &&
+                    row.button("delete").onHoverText("Delete this camera bookmark").clicked())
                     removed = i;
             });
             section.popId();
         }
         if (removed)
             cameras.erase(cameras.begin() + std::ptrdiff_t(*removed));
-        if (cameras.size() < core::MAX_CAMERAS && section.button("keep this view").clicked()) {
+        if (cameras.size() < core::MAX_CAMERAS &&
+            section.button("keep this view")
+                .onHoverText("Save the current view as a new camera bookmark")
+                .clicked()) {
             const core::OrbitCamera& view = s.view.camera;
             core::CameraDesc bookmark;
             // Names are unique among cameras (the format refuses twins): the first free "view N".
@@ -213,10 +246,17 @@ void renderSection(ui::Ui& ui, EditorState& s) {
             ViewOverrides& view = s.view.overrides;
             section.label("Culling (view only)");
             section.indent([&](ui::Ui& body) {
-                body.checkbox(view.orientation, "orientation");
-                body.checkbox(view.frustum, "frustum");
-                body.checkbox(view.distance, "distance");
-                body.checkbox(view.occlusion, "occlusion");
+                body.checkbox(view.orientation, "orientation")
+                    .onHoverText("Skip blades seen edge-on; view only, not saved (key 1)");
+                body.checkbox(view.frustum, "frustum")
+                    .onHoverText("Skip blades outside the camera's view; view only, not saved "
+                                 "(key 2)");
+                body.checkbox(view.distance, "distance")
+                    .onHoverText("Thin out distant blades as the project's thinning says; "
+                                 "view only, not saved (key 3)");
+                body.checkbox(view.occlusion, "occlusion")
+                    .onHoverText("Skip blades hidden behind the terrain; view only, not saved "
+                                 "(key 4)");
             });
             // Adaptive quality: a reduced picture while moving (core/quality/interaction_quality.h).
             core::InteractionQualitySettings adapt = s.view.quality.settings();
@@ -224,8 +264,12 @@ void renderSection(ui::Ui& ui, EditorState& s) {
             const float budgetBefore = float(adapt.budgetMs);
             float budget = budgetBefore;
             section.horizontal([&](ui::Ui& row) {
-                row.checkbox(adapt.enabled, "adapt while moving, budget");
-                row.dragValue("ms##budget", budget, 1.0f, 5.0f, 1000.0f, 0);
+                row.checkbox(adapt.enabled, "adapt while moving, budget")
+                    .onHoverText("Draw a reduced picture while you orbit, paint, drag or play, "
+                                 "to keep each frame within the budget");
+                ui::dragValueWithEntry(row, "ms##budget", budget, 1.0f, 5.0f, 1000.0f, 0)
+                    .onHoverText("Frame time budget while moving, in ms (5 to 1000); "
+                                 "double-click or Ctrl+click to type a value");
             });
             if (adapt.enabled != before || budget != budgetBefore) {
                 adapt.budgetMs = budget;

@@ -58,7 +58,10 @@ void mapResolutionCombo(ui::Ui& ui, core::SnowParams& snow) {
         names[i] = std::to_string(sizes[i]);
     const auto* found = std::find(sizes.begin(), sizes.end(), snow.mapResolution);
     int index = found == sizes.end() ? 1 : int(found - sizes.begin());
-    if (ui.comboBox("depth map texels", index, names).changed())
+    if (ui.comboBox("depth map texels", index, names)
+            .onHoverText("Side of the depth map that tests which ground the snow reaches, "
+                         "in texels: 512, 1024 or 2048")
+            .changed())
         snow.mapResolution = sizes[std::size_t(index)];
 }
 

@@ -19,29 +19,46 @@ void brushSettings(ui::Ui& ui, EditorState& s) {
     for (const core::GrassLayer& layer : project.layers)
         layers.push_back(layer.name);
     int layer = int(s.view.paint.layer);
-    if (!layers.empty() && ui.comboBox("layer", layer, layers).changed())
+    if (!layers.empty() && ui.comboBox("layer", layer, layers)
+                               .onHoverText("The grass layer the brush paints")
+                               .changed())
         s.view.paint.layer = std::size_t(layer);
     int map = int(s.view.paint.map);
-    if (ui.comboBox("map", map, core::LAYER_MAP_NAMES).changed())
+    if (ui.comboBox("map", map, core::LAYER_MAP_NAMES)
+            .onHoverText("Which of the layer's maps the brush paints: density, soil or light")
+            .changed())
         s.view.paint.map = core::LayerMap(map);
     core::BrushSettings& b = s.view.paint.brush;
     ui.horizontal([&](ui::Ui& row) {
-        row.radioValue(b.mode, core::BrushMode::Add, "add");
-        row.radioValue(b.mode, core::BrushMode::Subtract, "subtract");
-        row.radioValue(b.mode, core::BrushMode::Smooth, "smooth");
-        row.radioValue(b.mode, core::BrushMode::Set, "set");
+        row.radioValue(b.mode, core::BrushMode::Add, "add")
+            .onHoverText("The brush raises the map's value; hold Ctrl while painting to subtract");
+        row.radioValue(b.mode, core::BrushMode::Subtract, "subtract")
+            .onHoverText("The brush lowers the map's value; hold Ctrl while painting to add");
+        row.radioValue(b.mode, core::BrushMode::Smooth, "smooth")
+            .onHoverText("The brush moves the map's value toward the mean of its neighbours");
+        row.radioValue(b.mode, core::BrushMode::Set, "set")
+            .onHoverText("The brush moves the map's value toward the set value; "
+                         "Ctrl paints toward 1 minus it");
     });
     if (ui::sliderWithEntry(ui, "radius  [ ]", b.radiusM, 0.01f, 100.0f,
                             {.logarithmic = true, .decimals = 2})
+            .onHoverText("Brush radius in metres (0.01 to 100); [ and ] shrink and grow it; "
+                         "double-click or Ctrl+click to type a value")
             .changed())
         s.view.paint.radiusChosen = true;
-    ui::sliderWithEntry(ui, "strength", b.strength, 0.0f, 1.0f, {.decimals = 2});
+    ui::sliderWithEntry(ui, "strength", b.strength, 0.0f, 1.0f, {.decimals = 2})
+        .onHoverText("How much each dab changes the map (0 to 1); "
+                     "double-click or Ctrl+click to type a value");
     static constexpr std::array<const char*, 3> FALLOFFS{"smooth", "linear", "constant"};
     int falloff = int(b.falloff);
-    if (ui.comboBox("falloff", falloff, FALLOFFS).changed())
+    if (ui.comboBox("falloff", falloff, FALLOFFS)
+            .onHoverText("How the brush's effect fades from its centre to its edge")
+            .changed())
         b.falloff = core::BrushFalloff(falloff);
     if (b.mode == core::BrushMode::Set)
-        ui::sliderWithEntry(ui, "set value", b.setValue, 0.0f, 1.0f, {.decimals = 2});
+        ui::sliderWithEntry(ui, "set value", b.setValue, 0.0f, 1.0f, {.decimals = 2})
+            .onHoverText("The value the set mode paints toward (0 to 1); "
+                         "double-click or Ctrl+click to type a value");
     ui.coloredLabel("left-drag paints, Ctrl inverts; right-drag orbits", ui.style().textWeak);
 }
 
@@ -53,17 +70,28 @@ glm::vec3 newObjectPosition(const EditorState& s) {
 void placeSettings(ui::Ui& ui, EditorState& s) {
     core::Project& project = s.transient.draft.project;
     ui.horizontal([&](ui::Ui& row) {
-        row.radioValue(s.view.place.mode, core::GizmoMode::Translate, "move (w)");
-        row.radioValue(s.view.place.mode, core::GizmoMode::Rotate, "rotate (e)");
-        row.radioValue(s.view.place.mode, core::GizmoMode::Scale, "scale (r)");
+        row.radioValue(s.view.place.mode, core::GizmoMode::Translate, "move (w)")
+            .onHoverText("The gizmo moves the selected wind source or collider (w)");
+        row.radioValue(s.view.place.mode, core::GizmoMode::Rotate, "rotate (e)")
+            .onHoverText("The gizmo turns the selected wind source; colliders do not turn (e)");
+        row.radioValue(s.view.place.mode, core::GizmoMode::Scale, "scale (r)")
+            .onHoverText("The gizmo resizes the selected wind source or collider uniformly (r)");
     });
-    ui.checkbox(s.view.place.snap.enabled, "snap (or hold Ctrl)");
+    ui.checkbox(s.view.place.snap.enabled, "snap (or hold Ctrl)")
+        .onHoverText("Gizmo drags snap to fixed steps; holding Ctrl while dragging snaps too");
     if (s.view.place.snap.enabled) {
-        ui.dragValue("step m", s.view.place.snap.translateStepM, 0.01f, 0.001f, 100.0f, 2);
-        ui.dragValue("step °", s.view.place.snap.rotateStepDeg, 0.5f, 0.5f, 90.0f, 1);
+        ui::dragValueWithEntry(ui, "step m", s.view.place.snap.translateStepM, 0.01f, 0.001f,
+                               100.0f, 3)
+            .onHoverText("Snap step for moving, in metres (0.001 to 100); "
+                         "double-click or Ctrl+click to type a value");
+        ui::dragValueWithEntry(ui, "step °", s.view.place.snap.rotateStepDeg, 0.5f, 0.5f, 90.0f, 1)
+            .onHoverText("Snap step for turning, in degrees (0.5 to 90); "
+                         "double-click or Ctrl+click to type a value");
     }
     ui.horizontal([&](ui::Ui& row) {
-        if (row.button("add wind").clicked()) {
+        if (row.button("add wind")
+                .onHoverText("Add a point wind source above the scene's centre and select it")
+                .clicked()) {
             core::WindDesc wind;
             wind.name = "wind " + std::to_string(project.wind.size() + 1);
             wind.source.kind = core::WindKind::Point;
@@ -73,7 +101,9 @@ void placeSettings(ui::Ui& ui, EditorState& s) {
             s.view.place.selected = PlacedObject{PlacedKind::Wind, project.wind.size() - 1};
             s.transient.draft.regrow = true;
         }
-        if (row.button("add ball").clicked()) {
+        if (row.button("add ball")
+                .onHoverText("Add a ball collider above the scene's centre and select it")
+                .clicked()) {
             core::ColliderDesc ball;
             ball.name = "ball " + std::to_string(project.colliders.size() + 1);
             ball.position = newObjectPosition(s);
@@ -100,13 +130,20 @@ void placeSettings(ui::Ui& ui, EditorState& s) {
     const float timeS = float(s.view.timeline.timeS());
     const float tolerance = 0.5f * float(s.view.timeline.stepS());
     ui.horizontal([&](ui::Ui& row) {
-        if (row.button("key here").clicked()) {
+        if (row.button("key here")
+                .onHoverText("Key the selected object's position at the current time")
+                .clicked()) {
             core::setKey(path, timeS, placedPosition(project, o, timeS), tolerance);
             s.transient.draft.regrow = true;
         }
-        if (row.button("remove key").clicked() && core::removeKey(path, timeS, tolerance))
+        if (row.button("remove key")
+                .onHoverText("Remove the selected object's key at the current time, if any")
+                .clicked() &&
+            core::removeKey(path, timeS, tolerance))
             s.transient.draft.regrow = true;
-        if (row.button("delete").clicked()) {
+        if (row.button("delete")
+                .onHoverText("Delete the selected wind source or collider (Delete)")
+                .clicked()) {
             if (isWind)
                 project.wind.erase(project.wind.begin() + std::ptrdiff_t(o.index));
             else
@@ -124,9 +161,14 @@ void toolSection(ui::Ui& ui, EditorState& s) {
         "Tools",
         [&](ui::Ui& section) {
             section.horizontal([&](ui::Ui& row) {
-                row.radioValue(s.view.tool, ViewportTool::Camera, "camera (c)");
-                row.radioValue(s.view.tool, ViewportTool::Paint, "brush (b)");
-                row.radioValue(s.view.tool, ViewportTool::Place, "gizmo (g)");
+                row.radioValue(s.view.tool, ViewportTool::Camera, "camera (c)")
+                    .onHoverText("Left-drag orbits, Shift+drag or middle-drag pans, "
+                                 "the wheel zooms (c)");
+                row.radioValue(s.view.tool, ViewportTool::Paint, "brush (b)")
+                    .onHoverText("Left-drag paints a layer's map on the ground (b)");
+                row.radioValue(s.view.tool, ViewportTool::Place, "gizmo (g)")
+                    .onHoverText("Click a wind source or collider to select it, "
+                                 "drag its gizmo to place it (g)");
             });
             if (s.view.tool == ViewportTool::Paint)
                 brushSettings(section, s);
@@ -134,34 +176,6 @@ void toolSection(ui::Ui& ui, EditorState& s) {
                 placeSettings(section, s);
         },
         true);
-}
-
-void timelineSection(ui::Ui& ui, EditorState& s) {
-    core::Timeline& t = s.view.timeline;
-    ui.collapsingHeader("Timeline", [&](ui::Ui& section) {
-        section.horizontal([&](ui::Ui& row) {
-            if (row.button("|<").clicked())
-                s.view.timeJump = t.scrub(t.startS());
-            if (row.button("<").clicked())
-                s.view.timeJump = t.stepBack();
-            if (row.button(t.playing() ? "pause" : "play").clicked())
-                s.view.timeJump = t.toggle();
-            if (row.button(">").clicked())
-                s.view.timeJump = t.stepForward();
-            bool loop = t.looping();
-            if (row.checkbox(loop, "loop").changed())
-                t.setLoop(loop);
-        });
-        float timeS = float(t.timeS());
-        if (section.slider("time s", timeS, float(t.startS()), float(t.endS()), {.decimals = 2})
-                .changed())
-            s.view.timeJump = t.scrub(timeS);
-        float speed = float(t.speed());
-        if (section.slider("speed", speed, float(core::TIMELINE_MIN_SPEED),
-                           float(core::TIMELINE_MAX_SPEED), {.logarithmic = true, .decimals = 2})
-                .changed())
-            t.setSpeed(speed);
-    });
 }
 
 }  // namespace grass::editor

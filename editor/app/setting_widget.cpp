@@ -40,8 +40,21 @@ ui::Response keepWithin(const NumberRule& rule, float before, float& value, ui::
     return r;
 }
 
+// A typed value the loader would refuse is refused in the box, with the row's own range and
+// unit ("must be in (0, 5000] m"), as docs/project-format.md states it.
+ui::NumberCheck checkFor(const NumberRule& rule, std::string_view unit) {
+    return [rule, unit = std::string(unit)](double typed) -> std::string {
+        if (within(rule, static_cast<float>(typed)))
+            return {};
+        const std::string range = core::settings::ruleText(rule);
+        const bool interval = range.front() == '[' || range.front() == '(';
+        return core::settings::withUnit("must be " + std::string(interval ? "in " : "") + range, unit);
+    };
+}
+
+// One response for a row of boxes: hovered (its tooltip) or changed when any box is.
 ui::Response mergeChanged(ui::Response into, const ui::Response& other) {
-    return other.changed() ? into.markChanged() : into;
+    return into.unite(other);
 }
 
 }  // namespace
@@ -56,15 +69,22 @@ std::string labelFor(std::string_view key, std::string_view label, std::string_v
 }
 
 ui::Response number(ui::Ui& ui, std::string_view label, float& value, const NumberRule& rule,
-                    const UiHint& hint) {
+                    const UiHint& hint, std::string_view unit, const ui::NumberCheck& limit) {
     const float before = value;
     const Track track = trackFor(rule, hint);
     const bool slider = hint.slider && std::isfinite(track.min) && std::isfinite(track.max);
+    // The track bounds dragging; a typed value may go anywhere the rule allows.
+    const ui::NumberCheck inRule = checkFor(rule, unit);
+    const ui::NumberCheck check = [&](double typed) {
+        std::string reason = inRule(typed);
+        return reason.empty() && limit ? limit(typed) : reason;
+    };
     const ui::Response r =
         slider ? ui::sliderWithEntry(ui, label, value, track.min, track.max,
-                                     {.logarithmic = hint.logarithmic, .decimals = hint.decimals})
+                                     {.logarithmic = hint.logarithmic, .decimals = hint.decimals},
+                                     check)
                : ui::dragValueWithEntry(ui, label, value, hint.speed, track.min, track.max,
-                                        hint.decimals);
+                                        hint.decimals, check);
     return keepWithin(rule, before, value, r);
 }
 
@@ -72,10 +92,23 @@ ui::Response integer(ui::Ui& ui, std::string_view label, int& value, std::int64_
                      std::int64_t max) {
     const int lo = static_cast<int>(std::max<std::int64_t>(min, std::numeric_limits<int>::min()));
     const int hi = static_cast<int>(std::min<std::int64_t>(max, std::numeric_limits<int>::max()));
-    // A short range is a slider; a long one (blades per clump, 0..10000) a drag box.
+    // A short range is a slider whose box can be typed into; a long one (blades per clump,
+    // 0..10000) a drag box that can.
     constexpr std::int64_t SLIDER_STEPS = 64;
-    return max - min <= SLIDER_STEPS ? ui.slider(label, value, lo, hi)
-                                     : ui.dragValue(label, value, 1.0f, lo, hi);
+    if (max - min > SLIDER_STEPS)
+        return ui::dragValueWithEntry(ui, label, value, 1.0f, lo, hi);
+    float proxy = static_cast<float>(value);
+    const ui::Response r = ui::sliderWithEntry(
+        ui, label, proxy, static_cast<float>(lo), static_cast<float>(hi), {.decimals = 0},
+        [lo, hi](double typed) -> std::string {
+            if (typed != std::floor(typed))
+                return "must be a whole number";
+            if (typed < lo || typed > hi)
+                return "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+            return {};
+        });
+    value = static_cast<int>(std::lround(proxy));
+    return r;
 }
 
 ui::Response flag(ui::Ui& ui, std::string_view label, bool& value) {
@@ -83,16 +116,18 @@ ui::Response flag(ui::Ui& ui, std::string_view label, bool& value) {
 }
 
 ui::Response vector(ui::Ui& ui, std::string_view label, glm::vec3& value, const NumberRule& rule,
-                    const UiHint& hint) {
+                    const UiHint& hint, std::string_view unit) {
     const Track track = trackFor(rule, hint);
+    const ui::NumberCheck check = checkFor(rule, unit);
     ui::Response merged;
     ui.withId(label, [&](ui::Ui& inner) {
         inner.horizontal([&](ui::Ui& row) {
             for (int c = 0; c < 3; ++c) {
                 row.pushId(std::uint64_t(c));
                 const float before = value[c];
-                const ui::Response r = row.dragValue(c == 2 ? label : "", value[c], hint.speed,
-                                                     track.min, track.max, hint.decimals);
+                const ui::Response r =
+                    ui::dragValueWithEntry(row, c == 2 ? label : "", value[c], hint.speed,
+                                           track.min, track.max, hint.decimals, check);
                 merged = mergeChanged(c == 0 ? r : merged, keepWithin(rule, before, value[c], r));
                 row.popId();
             }
@@ -106,21 +141,36 @@ ui::Response colour(ui::Ui& ui, std::string_view label, glm::vec3& value) {
 }
 
 ui::Response range(ui::Ui& ui, std::string_view label, float& min, float& max,
-                   const NumberRule& rule, const UiHint& hint) {
+                   const NumberRule& rule, const UiHint& hint, std::string_view unit) {
     const Track track = trackFor(rule, hint);
+    const ui::NumberCheck check = checkFor(rule, unit);
+    // A typed end may not pass the other: the range would be empty.
+    const auto atMost = [&](float bound) {
+        return [check, bound](double typed) -> std::string {
+            std::string reason = check(typed);
+            return !reason.empty() || typed <= bound ? reason : "must not be above the maximum";
+        };
+    };
+    const auto atLeast = [&](float bound) {
+        return [check, bound](double typed) -> std::string {
+            std::string reason = check(typed);
+            return !reason.empty() || typed >= bound ? reason : "must not be below the minimum";
+        };
+    };
     ui::Response merged;
     ui.withId(label, [&](ui::Ui& inner) {
         inner.horizontal([&](ui::Ui& row) {
             row.pushId("min");
             const float minBefore = min;
             merged = keepWithin(rule, minBefore, min,
-                                row.dragValue("", min, hint.speed, track.min, max, hint.decimals));
+                                ui::dragValueWithEntry(row, "", min, hint.speed, track.min, max,
+                                                       hint.decimals, atMost(max)));
             row.popId();
             const float maxBefore = max;
             merged = mergeChanged(
                 merged, keepWithin(rule, maxBefore, max,
-                                   row.dragValue(label, max, hint.speed, min, track.max,
-                                                 hint.decimals)));
+                                   ui::dragValueWithEntry(row, label, max, hint.speed, min,
+                                                          track.max, hint.decimals, atLeast(min))));
         });
     });
     return merged;

@@ -19,6 +19,11 @@ struct WindowCallbacks {
         input.cursorX = x;
         input.cursorY = y;
     }
+    static void drop(GLFWwindow* w, int count, const char** paths) {
+        for (int i = 0; i < count; ++i)
+            if (paths[i])
+                self(w)->mInput.dropped.emplace_back(paths[i]);
+    }
     static void enter(GLFWwindow* w, int entered) { self(w)->mInput.cursorInside = entered != 0; }
     static void character(GLFWwindow* w, unsigned int codepoint) {
         appendUtf8(self(w)->mInput.typed, char32_t(codepoint));
@@ -108,6 +113,7 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
     glfwSetKeyCallback(handle, WindowCallbacks::key);
     glfwSetCharCallback(handle, WindowCallbacks::character);
     glfwSetCursorEnterCallback(handle, WindowCallbacks::enter);
+    glfwSetDropCallback(handle, WindowCallbacks::drop);
     glfwMakeContextCurrent(handle);
     glfwSwapInterval(1);
     if (debugOutput)
@@ -164,6 +170,7 @@ InputState Window::pollInput() {
     mInput.typed.clear();
     mInput.buttonEvents.clear();
     mInput.keys.clear();
+    mInput.dropped.clear();
     mInput.frameRequested = false;
     mInput.toggledCullTest = 0;
     mInput.nextTechnique = mInput.toggleLighting = false;

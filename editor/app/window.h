@@ -38,6 +38,8 @@ struct InputState {
     bool nextTechnique = false;
     bool toggleLighting = false;
     bool escapePressed = false;
+    // Files dropped on the window this frame (routeDroppedFiles, panels.h).
+    std::vector<std::string> dropped;
     // For the UI: typed text (UTF-8), key presses and repeats, modifiers held now.
     std::string typed;
     std::vector<ui::KeyEvent> keys;

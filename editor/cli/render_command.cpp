@@ -76,7 +76,11 @@ Result<core::LoadedProject> loadMeshInput(const RenderArgs& args, core::Scene* s
     std::vector<std::string> notes;
     for (auto& note : imported->notes)
         notes.push_back(args.mesh + ": " + note);
+    core::SurfaceLook look = core::surfaceLookOf(args.mesh, imported->hasUv);
+    notes.insert(notes.end(), look.notes.begin(), look.notes.end());
     auto built = core::buildSceneFromMesh(*loaded, std::move(imported->mesh), std::move(notes));
+    if (built)
+        built->look = std::move(look);
     if (!built)
         return built.error();
     *scene = std::move(*built);

@@ -1,6 +1,7 @@
 #include "render/scene_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "gl/headless_context.h"
@@ -18,6 +19,26 @@ static float meanFieldAo(const core::Scene& scene) {
                 ++aoCount;
             }
     return aoCount > 0 ? static_cast<float>(aoSum / static_cast<double>(aoCount)) : 1.0f;
+}
+
+// A glTF surface's base-colour texture: sRGB storage (the file's colours are sRGB-encoded, the
+// shading is linear), mipmapped, wrapped as its sampler says (glTF's wrap numbers are GL's).
+static gl::TextureHandle uploadSurfaceTexture(const Rgba8Pixels& image, const core::SurfaceLook& look) {
+    const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
+    gl::TextureHandle texture =
+        gl::makeTexture2D(GL_SRGB8_ALPHA8, image.width, image.height, levels, "surface base colour");
+    gl::uploadTexture2D(texture, image.width, image.height, GL_RGBA, image.pixels.data());
+    glGenerateTextureMipmap(texture.id());
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(GL_LINEAR_MIPMAP_LINEAR));
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(GL_LINEAR));
+    const auto wrap = [](int gltf) -> GLint {
+        const bool known = gltf == static_cast<GLint>(GL_CLAMP_TO_EDGE) ||
+                           gltf == static_cast<GLint>(GL_MIRRORED_REPEAT);
+        return known ? gltf : static_cast<GLint>(GL_REPEAT);
+    };
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, wrap(look.wrapS));
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, wrap(look.wrapT));
+    return texture;
 }
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene) {
@@ -53,6 +74,8 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     renderer->mStripProgram = std::move(*strips);
     renderer->mTessProgram = std::move(*tess);
     renderer->mMesh = std::make_unique<MeshGpu>(scene.mesh);
+    if (const Rgba8Pixels& image = scene.look.baseTexture; !image.pixels.empty())
+        renderer->mSurfaceTexture = uploadSurfaceTexture(image, scene.look);
     renderer->mProps.reserve(scene.props.size());
     for (const auto& prop : scene.props)
         renderer->mProps.emplace_back(prop.mesh);

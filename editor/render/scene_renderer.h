@@ -5,12 +5,14 @@
 // grass passes in scene_renderer_grass.cpp.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "gl/gl_ref.h"
 #include "gl/program.h"
+#include "gl/texture.h"
 #include "gl/timer_query.h"
 #include "gl/uniform_block.h"
 #include "render/billboard_gpu.h"
@@ -26,6 +28,9 @@
 #include "scene/scene.h"
 
 namespace grass::render {
+
+// The texture unit of a glTF surface's base colour (mesh.frag's uBaseTexture binding).
+inline constexpr std::uint32_t SURFACE_TEXTURE_UNIT = 5;
 
 class SceneRenderer {
 public:
@@ -72,6 +77,8 @@ private:
     void drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj,
                       const CullSettings& cull);
     std::unique_ptr<MeshGpu> mMesh;
+    // The surface's base-colour texture (scene.look), bound to SURFACE_TEXTURE_UNIT; 0: none.
+    gl::TextureHandle mSurfaceTexture;
     std::vector<MeshGpu> mProps;
     std::vector<FieldGpu> mFields;
     std::unique_ptr<CullPass> mCull;

@@ -82,9 +82,17 @@ void SceneRenderer::drawOpaque(const RenderOptions& options, bool shaded) {
     const gl::Program& program = mSnowLies ? snowMeshProgram() : mMeshProgram;
     const auto draw = [this](const MeshGpu& mesh) { mSnowLies ? mesh.drawPatches() : mesh.draw(); };
     program.set("uModel", glm::mat4(1.0f));
-    if (shaded)
-        program.set("uAlbedo", options.groundColor);
+    const bool textured = shaded && mSurfaceTexture.id() != 0;
+    if (shaded) {
+        // A glTF surface keeps its material's colour; others take the project's ground colour.
+        program.set("uAlbedo", mScene->look.baseColor.value_or(options.groundColor));
+        program.set("uHasBaseTexture", textured ? 1 : 0);
+    }
+    if (textured)
+        glBindTextureUnit(SURFACE_TEXTURE_UNIT, mSurfaceTexture.id());
     draw(*mMesh);
+    if (shaded)
+        program.set("uHasBaseTexture", 0);  // the props have none
     for (std::size_t i = 0; i < mProps.size(); ++i) {
         const core::SceneProp& prop = mScene->props[i];
         program.set("uModel", prop.modelAt(options.timeS));

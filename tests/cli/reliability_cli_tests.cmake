@@ -32,6 +32,17 @@ if(TARGET grass-editor)
     set_tests_properties(cli.editor_real_input PROPERTIES LABELS "cli;gl" TIMEOUT 120
         PASS_REGULAR_EXPRESSION "real input: name typed, quick click, double-click"
         ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
+    # The artist's own mesh by real X input at about one frame a second (issue 26): File › New
+    # from mesh…, a typed path in the file browser, Save As by Ctrl+S, a refused typed value,
+    # Ctrl+O and the recent list; about 50 s.
+    add_test(NAME cli.editor_real_import
+             COMMAND ${GRASS_XVFB_RUN} -a -s "-screen 0 1024x768x24"
+                     ${GRASS_BASH} ${GRASS_CLI_DIR}/editor_real_import_test.sh
+                     $<TARGET_FILE:grass-editor> ${CMAKE_SOURCE_DIR}/tests/data/gltf/cube.glb
+                     ${GRASS_CLI_TMP}/editor-real-import)
+    set_tests_properties(cli.editor_real_import PROPERTIES LABELS "cli;gl" TIMEOUT 150
+        PASS_REGULAR_EXPRESSION "real import: new from mesh, browser typing, save as"
+        ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
 endif()
 
 # Hostile files and careless paths (issue 22): one test per class of defect, each a list of

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "app/autosave.h"
 #include "app/edit_actions.h"
+#include "app/editor_keys.h"
 #include "maps/map_image.h"
 #include "physics/wind.h"
 #include "app/panels.h"
@@ -57,19 +59,57 @@ struct EditorDriver {
         return out;
     }
 
+    // Every text drawn in the next frame.
+    std::set<std::string> shownTexts() {
+        std::set<std::string> shown;
+        for (const ui::ClippedShape& shape : frame().shapes)
+            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape))
+                shown.insert(t->text);
+        return shown;
+    }
+
     // Clicks the topmost text shape reading exactly `text` (hover, press, release).
     void click(std::string_view text) {
+        clickWhere([&](std::string_view shown) { return shown == text; }, text);
+    }
+    // The topmost text shape starting with `prefix` (a file list's row: name, then its size).
+    void clickStartingWith(std::string_view prefix, bool twice = false) {
+        clickWhere([&](std::string_view shown) { return shown.starts_with(prefix); }, prefix, twice);
+    }
+    void clickWhere(const std::function<bool(std::string_view)>& matches, std::string_view what,
+                    bool twice = false) {
         std::optional<ui::Vec2> at;
         const ui::Output& out = frame();
         for (const ui::ClippedShape& shape : out.shapes)
-            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && t->text == text)
+            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && matches(t->text))
                 at = t->pos + ui::Vec2(3.0f, 6.0f);
-        ASSERT_TRUE(at.has_value()) << "nothing reads \"" << text << "\"";
-        input.pointerPos = *at;
+        ASSERT_TRUE(at.has_value()) << "nothing reads \"" << what << "\"";
+        clickAt(*at);
+        if (twice)
+            clickAt(*at);
+    }
+    void clickAt(ui::Vec2 at) {
+        input.pointerPos = at;
         frame();
         input.buttonDown[0] = true;
         frame();
         input.buttonDown[0] = false;
+        frame();
+    }
+    // Types `text` into the browser's path field (right of its label), replacing what it held,
+    // and presses Enter.
+    void typePathAndEnter(const std::string& text, std::string_view fieldLabel = "Name or path:") {
+        std::optional<ui::Vec2> label;
+        for (const ui::ClippedShape& shape : frame().shapes)
+            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && t->text == fieldLabel)
+                label = t->pos;
+        ASSERT_TRUE(label.has_value()) << "no path field";
+        clickAt(*label + ui::Vec2(150.0f, 6.0f));
+        input.keys.push_back({ui::Key::A, {false, true, false}});
+        frame();
+        input.text = text;
+        frame();
+        input.keys.push_back({ui::Key::Enter, {}});
         frame();
     }
 
@@ -99,20 +139,16 @@ TEST(EditorPanels, SaveAsTypedPathWritesTheProjectAndItsFilesThere) {
     EditorDriver editor(from.path());
     editor.click("File");
     editor.click("Save As…");
-    ASSERT_EQ(editor.state.transient.fileDialog, editor::FileDialog::SaveAs);
-    // The path field shows the current file: click into it, select all, type the new folder.
-    editor.click(editor.state.transient.pathText);
-    editor.input.keys.push_back({ui::Key::A, {false, true, false}});
-    editor.frame();
-    editor.input.text = (to.path() / "copy").string();
-    editor.frame();
-    editor.input.keys.push_back({ui::Key::Enter, {}});
-    editor.frame();
+    ASSERT_TRUE(editor.state.transient.browser.has_value());
+    EXPECT_EQ(editor.state.transient.browser->purpose(), editor::BrowsePurpose::SaveProject);
+    // The path field shows the project's folder name: replace it with the new folder.
+    EXPECT_EQ(editor.state.transient.browser->typed(), from.path().filename().string());
+    editor.typePathAndEnter((to.path() / "copy").string(), "Project folder:");
 
     const fs::path saved = to.path() / "copy" / "project.json";
     ASSERT_TRUE(fs::exists(saved)) << editor.state.transient.message;
     EXPECT_FALSE(editor.state.doc.dirty);
-    EXPECT_EQ(editor.state.transient.fileDialog, editor::FileDialog::None);
+    EXPECT_FALSE(editor.state.transient.browser.has_value());
     EXPECT_EQ(editor.state.doc.loaded.file, saved);
     // The copy loads and grows on its own: its map came along.
     EXPECT_TRUE(fs::exists(to.path() / "copy/maps/soil.png"));
@@ -148,20 +184,101 @@ TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
     EditorDriver editor(folder.path());
     editor.click("File");
     editor.click("Open…");
-    ASSERT_EQ(editor.state.transient.fileDialog, editor::FileDialog::Open);
-    editor.click(editor.state.transient.pathText);
-    editor.input.keys.push_back({ui::Key::A, {false, true, false}});
-    editor.frame();
-    editor.input.text = "projects/meadow";
-    editor.frame();
-    editor.click("Open");
-    EXPECT_EQ(editor.state.transient.fileDialog, editor::FileDialog::None);
+    ASSERT_TRUE(editor.state.transient.browser.has_value());
+    EXPECT_EQ(editor.state.transient.browser->purpose(), editor::BrowsePurpose::OpenProject);
+    const fs::path meadow = sourceDir() / "projects/meadow";
+    editor.typePathAndEnter(meadow.string());
+    EXPECT_FALSE(editor.state.transient.browser.has_value());
     // The project has unsaved changes: nothing is replaced before the user says so.
     EXPECT_TRUE(editor.state.openRequested.empty());
     ASSERT_TRUE(editor.state.transient.quitDialog);
     editor.click("Discard changes");
-    EXPECT_EQ(editor.state.openRequested, "projects/meadow");
+    EXPECT_EQ(editor.state.openRequested, meadow.lexically_normal().string());
     EXPECT_TRUE(editor.state.doc.dirty) << "if the open fails, the edits still count as unsaved";
+}
+
+// Issue 26 item 1: File › Import mesh… browses to a mesh; a double-click on it in the list asks
+// the Editor to import it (the list shows folders and glTF files only).
+TEST(EditorPanels, ImportMeshByDoubleClickInTheBrowser) {
+    const ScratchFolder folder("editor-import-mesh");
+    EditorDriver editor(folder.path());
+    editor.state.transient.meshFolder = sourceDir() / "tests/data/gltf";
+    editor.click("File");
+    editor.click("Import mesh…");
+    ASSERT_TRUE(editor.state.transient.browser.has_value());
+    EXPECT_EQ(editor.state.transient.browser->folder(), sourceDir() / "tests/data/gltf");
+    for (const auto& entry : editor.state.transient.browser->listing().entries)
+        EXPECT_TRUE(entry.isFolder || entry.name.ends_with(".glb") || entry.name.ends_with(".gltf"))
+            << entry.name;
+    editor.clickStartingWith("cube.glb", true);
+    EXPECT_FALSE(editor.state.transient.browser.has_value());
+    EXPECT_EQ(editor.state.importMeshRequested, (sourceDir() / "tests/data/gltf/cube.glb").string());
+}
+
+// Issue 26 item 1: File › New from mesh… asks first about unsaved changes, then asks the Editor
+// for a project around the typed mesh; a typed path of the wrong kind stays with its reason.
+TEST(EditorPanels, NewFromMeshAsksFirstAndRefusesTheWrongKindOfFile) {
+    const ScratchFolder folder("editor-new-from-mesh");
+    EditorDriver editor(folder.path());
+    editor.click("File");
+    editor.click("New from mesh…");
+    ASSERT_TRUE(editor.state.transient.browser.has_value());
+    editor.typePathAndEnter((sourceDir() / "tests/data/projects/textured_stone/stone.png").string());
+    ASSERT_TRUE(editor.state.transient.browser.has_value()) << "a picture is not a mesh";
+    const std::set<std::string> shown = editor.shownTexts();
+    EXPECT_TRUE(shown.count("stone.png is not one of glTF (.gltf .glb)"));
+    const fs::path stone = sourceDir() / "tests/data/projects/textured_stone/stone.gltf";
+    editor.typePathAndEnter(stone.string());
+    EXPECT_FALSE(editor.state.transient.browser.has_value());
+    ASSERT_TRUE(editor.state.transient.quitDialog);
+    editor.click("Discard changes");
+    EXPECT_EQ(editor.state.newFromMeshRequested, stone.lexically_normal().string());
+}
+
+// Issue 26 item 1: File › Open Recent lists the projects opened last; a click opens one.
+TEST(EditorPanels, OpenRecentListsTheLastProjects) {
+    const ScratchFolder folder("editor-recent");
+    EditorDriver editor(folder.path());
+    editor.state.doc.dirty = false;
+    const fs::path meadow = sourceDir() / "projects/meadow/project.json";
+    editor.state.transient.recent.add(meadow);
+    editor.state.transient.recent.add(folder.path() / "gone/project.json");  // not shown
+    editor.click("File");
+    const std::set<std::string> shown = editor.shownTexts();
+    EXPECT_TRUE(shown.count("Open Recent"));
+    EXPECT_FALSE(shown.count("   gone"));
+    editor.click("   meadow");
+    EXPECT_EQ(editor.state.openRequested, meadow.lexically_normal().string());
+}
+
+// Issue 26 item 1: files dropped on the window go where their kind says.
+TEST(EditorPanels, DroppedFilesGoWhereTheirKindSays) {
+    const ScratchFolder folder("editor-drop");
+    EditorDriver editor(folder.path());
+    editor.state.doc.dirty = false;
+    editor::routeDroppedFiles(editor.state, {"/m/Rock.GLB", "/m/moss.png"});
+    EXPECT_EQ(editor.state.importMeshRequested, "/m/Rock.GLB");
+    EXPECT_EQ(editor.state.importMapRequested, "/m/moss.png");
+    editor::routeDroppedFiles(editor.state, {(sourceDir() / "projects/meadow").string()});
+    EXPECT_EQ(editor.state.openRequested, (sourceDir() / "projects/meadow").string());
+    editor::routeDroppedFiles(editor.state, {"/m/notes.txt"});
+    EXPECT_NE(editor.state.transient.message.find("drop a .gltf/.glb mesh"), std::string::npos)
+        << editor.state.transient.message;
+}
+
+// Issue 26 item 1: Ctrl+O opens the browser for a project, Ctrl+N starts a new one.
+TEST(EditorPanels, CtrlOAndCtrlN) {
+    const ScratchFolder folder("editor-ctrl-keys");
+    EditorDriver editor(folder.path());
+    editor.state.doc.dirty = false;
+    editor::InputState input;
+    input.keys.push_back({ui::Key::O, {false, true, false}});
+    editor::applyEditorKeys(editor.state, input, true);
+    ASSERT_TRUE(editor.state.transient.browser.has_value());
+    EXPECT_EQ(editor.state.transient.browser->purpose(), editor::BrowsePurpose::OpenProject);
+    input.keys = {{ui::Key::N, {false, true, false}}};
+    editor::applyEditorKeys(editor.state, input, true);
+    EXPECT_TRUE(editor.state.newRequested);
 }
 
 TEST(EditorPanels, QuitWithUnsavedChangesAsksFirst) {
@@ -300,12 +417,10 @@ TEST(EditorPanels, CameraBookmarksKeepTheViewAndGoBack) {
 TEST(EditorPanels, HelpListsEveryKeyboardShortcut) {
     const ScratchFolder folder("editor-help");
     EditorDriver editor(folder.path());
+    editor.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 1200.0f}};  // the table unscrolled
     editor.click("Help");
     editor.click("Keyboard shortcuts");
-    std::set<std::string> shown;
-    for (const ui::ClippedShape& shape : editor.frame().shapes)
-        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape))
-            shown.insert(t->text);
+    const std::set<std::string> shown = editor.shownTexts();
     ASSERT_GE(editor::keyboardShortcuts().size(), 15u);
     for (const editor::Shortcut& shortcut : editor::keyboardShortcuts()) {
         EXPECT_TRUE(shown.count(std::string(shortcut.keys))) << shortcut.keys;

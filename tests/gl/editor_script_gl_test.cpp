@@ -18,8 +18,8 @@ namespace {
 
 constexpr int WIDTH = 900, HEIGHT = 560;
 // The 3D view in the window: right of the 330-point side panel, between the menu bar and the
-// status bar (whose timings differ from frame to frame).
-constexpr int VIEW_X0 = 340, VIEW_Y0 = 30, VIEW_X1 = WIDTH, VIEW_Y1 = HEIGHT - 30;
+// timeline strip and the status bar (whose playhead and timings differ from frame to frame).
+constexpr int VIEW_X0 = 340, VIEW_Y0 = 30, VIEW_X1 = WIDTH, VIEW_Y1 = HEIGHT - 86;
 
 // Share of the view's pixels whose colour differs by more than 24/255 in some channel.
 double changedShare(const Rgba8Pixels& a, const Rgba8Pixels& b) {
@@ -191,6 +191,40 @@ wait 40
     EXPECT_LT(lowestSavedDensity(dir), 0.6f);
     EXPECT_FALSE(std::filesystem::exists(dir / "project.autosave.json"));
     EXPECT_FALSE(std::filesystem::exists(dir / "maps/grass-density.autosave.png"));
+}
+
+// Issue 26 item 1: a glTF dropped on the window becomes the project's surface (copied into the
+// project with the files it names, the view framed on it, its own texture drawn), a picture
+// dropped becomes the brush's map, and Ctrl+S saves both.
+TEST(EditorScript, ADroppedMeshAndMapAreImportedAndSaved) {
+    const auto dir = scratchDir("editor_script_drop");
+    std::ofstream(dir / "project.json") << PROJECT;
+    core::MapImage half = core::makeConstantMap(96, 96, 1.0f);
+    for (int y = 0; y < 96; ++y)
+        for (int x = 0; x < 48; ++x)
+            half.texels[static_cast<std::size_t>(y * 96 + x)] = 0.0f;
+    std::filesystem::create_directories(dir / "elsewhere");
+    ASSERT_TRUE(core::saveMapImage(half, dir / "elsewhere/half.png").ok());
+    const auto stone = sourceDir() / "tests/data/projects/textured_stone/stone.gltf";
+    std::ofstream(dir / "drop.txt") << "move 700 12\nscreenshot before.png\ndrop " << stone.string()
+                                    << "\nwait 2\nscreenshot imported.png\ndrop elsewhere/half.png\n"
+                                       "wait 2\nscreenshot painted.png\nkey ctrl+s\nwait 1\n";
+    ASSERT_EQ(runEditor(dir, dir.string() + " --no-physics --script " + (dir / "drop.txt").string()), 0)
+        << "see " << (dir / "log.txt");
+    auto saved = core::loadProject(dir);
+    ASSERT_TRUE(saved.ok()) << saved.error().str();
+    EXPECT_EQ(saved->project.mesh.file, "meshes/stone/stone.gltf");
+    for (const char* file : {"stone.gltf", "stone.bin", "stone.png"})
+        EXPECT_TRUE(std::filesystem::exists(dir / "meshes/stone" / file)) << file;
+    EXPECT_EQ(saved->project.layers.front().densityMap, "maps/grass-density.png");
+    EXPECT_LT(lowestSavedDensity(dir), 0.01f) << "the dropped picture is the density map";
+    auto before = readRgba8Image((dir / "before.png").string());
+    auto imported = readRgba8Image((dir / "imported.png").string());
+    auto painted = readRgba8Image((dir / "painted.png").string());
+    ASSERT_TRUE(before.ok() && imported.ok() && painted.ok());
+    // Another surface, framed: most of the view changes; half the grass goes with the picture.
+    EXPECT_GT(changedShare(before.value(), imported.value()), 0.2);
+    EXPECT_GT(changedShare(imported.value(), painted.value()), 0.02);
 }
 
 TEST(EditorScript, ABadScriptIsRefusedBeforeAnyWindowOpens) {

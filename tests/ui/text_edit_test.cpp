@@ -237,21 +237,80 @@ TEST(UiTextEdit, DoubleClickOnDragValueTypesANumber) {
     EXPECT_FLOAT_EQ(value, 0.25f);
     EXPECT_TRUE(r.changed());
 
-    // Out of range typed values clamp; Escape leaves the value alone.
+    // Issue 26: an out-of-range value is refused, not clamped: the box stays open and focused,
+    // outlined, with the reason under it; a correction is taken.
     h.clickAt(p, build);
     h.clickAt(p, build);
     h.input.text = "7";
     h.frame(build);
     h.input.keys.push_back({Key::Enter, {}});
     h.frame(build);
-    EXPECT_FLOAT_EQ(value, 1.0f);
+    EXPECT_FLOAT_EQ(value, 0.25f);
+    const Output& refused = h.frame(build);
+    EXPECT_TRUE(r.hasFocus()) << "the refused entry keeps the keyboard for the correction";
+    EXPECT_TRUE(test::findText(refused, "must be in [0.000, 1.000]").has_value());
+    EXPECT_TRUE(test::findText(refused, "7").has_value()) << "the typed text stays visible";
+    h.input.text = "abc";  // replaces the selected "7"
+    h.frame(build);
+    h.input.keys.push_back({Key::Enter, {}});
+    h.frame(build);
+    EXPECT_TRUE(test::findText(h.frame(build), "\"abc\" is not a number").has_value());
+    EXPECT_FLOAT_EQ(value, 0.25f);
+    h.input.text = "0.75";
+    h.frame(build);
+    h.input.keys.push_back({Key::Enter, {}});
+    h.frame(build);
+    EXPECT_FLOAT_EQ(value, 0.75f);
+    EXPECT_FALSE(test::findText(h.frame(build), "\"abc\" is not a number").has_value());
+
+    // Escape leaves the value alone.
     h.clickAt(p, build);
     h.clickAt(p, build);
     h.input.text = "0.1";
     h.frame(build);
     h.input.keys.push_back({Key::Escape, {}});
     h.frame(build);
-    EXPECT_FLOAT_EQ(value, 1.0f);
+    h.frame(build);
+    EXPECT_FLOAT_EQ(value, 0.75f);
+    EXPECT_FALSE(r.hasFocus());
+}
+
+TEST(UiTextEdit, CtrlClickOnDragValueTypesAndACheckSaysWhy) {
+    UiHarness h;
+    int value = 3;
+    Response r;
+    const auto build = [&](Ui& ui) {
+        r = dragValueWithEntry(ui, "Count", value, 1.0f, 0, 100, [](double typed) {
+            return typed > 50.0 ? std::string("must be at most 50 blades") : std::string();
+        });
+    };
+    h.frame(build);
+    const Vec2 p = r.rect().centre();
+    h.input.modifiers = CTRL;
+    h.clickAt(p, build);
+    h.input.modifiers = NONE;
+    h.frame(build);
+    ASSERT_TRUE(r.hasFocus()) << "Ctrl+click opens the text box, as in Blender";
+    for (const char* typed : {"2.5", "60"}) {
+        h.input.text = typed;
+        h.frame(build);
+        h.input.keys.push_back({Key::Enter, {}});
+        h.frame(build);
+    }
+    EXPECT_EQ(value, 3);
+    EXPECT_TRUE(test::findText(h.frame(build), "must be at most 50 blades").has_value());
+    // A click elsewhere leaves the refused entry showing: nothing is reverted silently.
+    h.clickAt({700.0f, 500.0f}, build);
+    EXPECT_FALSE(r.hasFocus());
+    EXPECT_TRUE(test::findText(h.frame(build), "must be at most 50 blades").has_value());
+    h.clickAt(p, build);
+    h.input.keys.push_back({Key::A, CTRL});
+    h.frame(build);
+    h.input.text = "42";
+    h.frame(build);
+    h.input.keys.push_back({Key::Enter, {}});
+    h.frame(build);
+    EXPECT_EQ(value, 42);
 }
 
 TEST(UiTextEdit, SliderWithEntryDragsAndTypes) {

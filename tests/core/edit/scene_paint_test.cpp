@@ -182,5 +182,40 @@ TEST(ScenePainter, AnEditThatNoLongerFitsIsRefusedWithoutChangingAnything) {
     EXPECT_TRUE(scene.layers[0].source.maps.density.texels.empty());
 }
 
+// Issue 26: a picture imported as a map is one edit over the texels that differ; undoing it
+// brings back the map and the field exactly, and the same picture again changes nothing.
+TEST(ScenePainter, AnImportedMapIsOneEditThatUndoesExactly) {
+    Scene scene = grownPlane();
+    const std::size_t bladesBefore = scene.layers[0].liveBlades;
+    ScenePainter painter(scene, GrassLightingDesc{});
+    // Bare on the left half (u < 0.5): density 0 there.
+    MapImage picture = makeConstantMap(64, 64, 1.0f);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 32; ++x)
+            picture.texels[static_cast<std::size_t>(y * 64 + x)] = 0.0f;
+    auto replaced = painter.replaceMap(0, LayerMap::Density, picture);
+    ASSERT_TRUE(replaced) << replaced.error().str();
+    ASSERT_TRUE(replaced->first.has_value());
+    const PaintEdit& edit = *replaced->first;
+    EXPECT_EQ(edit.record.texelIndex.size(), 32u * 64u);
+    EXPECT_FALSE(replaced->second.patches.empty());
+    const std::size_t bladesAfter = scene.layers[0].liveBlades;
+    EXPECT_LT(bladesAfter, bladesBefore * 6 / 10) << "half the plane is bare";
+    EXPECT_GT(bladesAfter, bladesBefore * 4 / 10);
+    EXPECT_EQ(scene.layers[0].source.maps.density.texels, picture.texels);
+
+    auto again = painter.replaceMap(0, LayerMap::Density, picture);
+    ASSERT_TRUE(again);
+    EXPECT_FALSE(again->first.has_value());
+
+    ASSERT_TRUE(painter.apply(edit, true));
+    EXPECT_EQ(scene.layers[0].liveBlades, bladesBefore);
+    for (const float texel : scene.layers[0].source.maps.density.texels)
+        ASSERT_EQ(texel, 1.0f);
+
+    MapImage wrongSize = makeConstantMap(8, 8, 0.0f);
+    EXPECT_FALSE(painter.replaceMap(0, LayerMap::Density, wrongSize));
+}
+
 }  // namespace
 }  // namespace grass::core

@@ -243,6 +243,19 @@ TEST(Timeline, KeyTimesCollectEveryPathOnceSorted) {
     EXPECT_TRUE(keyTimes(Project{}).empty());
 }
 
+// Issue 26: the timeline strip's ticks know what each key moves, and a click near one finds it.
+TEST(Timeline, OwnedKeysSayWhatEachKeyMoves) {
+    const std::vector<OwnedKey> keys = ownedKeys(projectWithKeys());
+    ASSERT_EQ(keys.size(), 5u);
+    EXPECT_EQ(keys[0], (OwnedKey{0.5f, false, 0}));
+    EXPECT_EQ(keys[1], (OwnedKey{1.0f, true, 0}));
+    EXPECT_EQ(keys[2], (OwnedKey{4.0f, true, 0})) << "wind before collider at equal times";
+    EXPECT_EQ(keys[3], (OwnedKey{4.0f, false, 0}));
+    EXPECT_EQ(nearestOwnedKey(keys, 0.9f, 0.2f), std::optional<OwnedKey>(keys[1]));
+    EXPECT_EQ(nearestOwnedKey(keys, 14.0f, 0.6f), std::optional<OwnedKey>(keys[4]));
+    EXPECT_FALSE(nearestOwnedKey(keys, 8.0f, 1.0f).has_value());
+}
+
 TEST(Timeline, DefaultRangeReachesTheLastKeyOrTenSeconds) {
     const Timeline keyed = timelineFor(projectWithKeys());
     EXPECT_EQ(keyed.startS(), 0.0);

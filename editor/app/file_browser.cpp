@@ -1,0 +1,236 @@
+#include "app/file_browser.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <system_error>
+
+namespace grass::editor {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lowerCase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+bool hasExtension(const fs::path& path, const std::vector<std::string>& extensions) {
+    const std::string extension = lowerCase(path.extension().string());
+    return std::find(extensions.begin(), extensions.end(), extension) != extensions.end();
+}
+
+bool isFolder(const fs::path& path) {
+    std::error_code ec;
+    return fs::is_directory(path, ec);
+}
+
+bool isFile(const fs::path& path) {
+    std::error_code ec;
+    return fs::is_regular_file(path, ec);
+}
+
+bool holdsProject(const fs::path& folder) {
+    return isFile(folder / "project.json");
+}
+
+}  // namespace
+
+std::string_view browseTitle(BrowsePurpose purpose) {
+    switch (purpose) {
+        case BrowsePurpose::OpenProject: return "Open project";
+        case BrowsePurpose::SaveProject: return "Save project as";
+        case BrowsePurpose::NewFromMesh: return "New project from mesh";
+        case BrowsePurpose::ImportMesh: return "Import mesh";
+        case BrowsePurpose::ImportMap: return "Import map image";
+    }
+    return "";
+}
+
+std::string_view browseButton(BrowsePurpose purpose) {
+    switch (purpose) {
+        case BrowsePurpose::OpenProject: return "Open";
+        case BrowsePurpose::SaveProject: return "Save";
+        case BrowsePurpose::NewFromMesh: return "Create";
+        case BrowsePurpose::ImportMesh:
+        case BrowsePurpose::ImportMap: return "Import";
+    }
+    return "";
+}
+
+const std::vector<std::string>& browseExtensions(BrowsePurpose purpose) {
+    static const std::vector<std::string> project{".json"};
+    static const std::vector<std::string> mesh{".gltf", ".glb"};
+    // What core/util/image_file reads through OpenImageIO for a map.
+    static const std::vector<std::string> image{".png", ".exr", ".jpg", ".jpeg", ".tif", ".tiff"};
+    switch (purpose) {
+        case BrowsePurpose::OpenProject:
+        case BrowsePurpose::SaveProject: return project;
+        case BrowsePurpose::NewFromMesh:
+        case BrowsePurpose::ImportMesh: return mesh;
+        case BrowsePurpose::ImportMap: return image;
+    }
+    return project;
+}
+
+std::string browseFilterText(BrowsePurpose purpose) {
+    std::string kind = purpose == BrowsePurpose::ImportMap ? "images"
+                       : purpose == BrowsePurpose::NewFromMesh || purpose == BrowsePurpose::ImportMesh
+                           ? "glTF"
+                           : "projects";
+    std::string text = kind + " (";
+    for (const std::string& extension : browseExtensions(purpose))
+        text += (text.back() == '(' ? "" : " ") + extension;
+    return text + ")";
+}
+
+FolderListing listFolder(const fs::path& folder, const std::vector<std::string>& extensions) {
+    FolderListing listing;
+    std::error_code ec;
+    fs::directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec);
+    if (ec) {
+        listing.error = "cannot read " + folder.string() + ": " + ec.message();
+        return listing;
+    }
+    for (; it != fs::directory_iterator(); it.increment(ec)) {
+        if (ec)
+            break;  // a folder that changes while listed: show what was read
+        const fs::path& path = it->path();
+        const std::string name = path.filename().string();
+        if (name.empty() || name.front() == '.')
+            continue;
+        std::error_code statError;
+        const bool folderEntry = it->is_directory(statError);
+        if (!folderEntry && !(it->is_regular_file(statError) && hasExtension(path, extensions)))
+            continue;
+        if (listing.entries.size() >= MAX_BROWSER_ENTRIES) {
+            ++listing.hidden;
+            continue;
+        }
+        BrowserEntry entry{name, folderEntry, folderEntry && holdsProject(path), 0};
+        if (!folderEntry)
+            entry.bytes = it->file_size(statError);
+        listing.entries.push_back(std::move(entry));
+    }
+    std::sort(listing.entries.begin(), listing.entries.end(),
+              [](const BrowserEntry& a, const BrowserEntry& b) {
+                  if (a.isFolder != b.isFolder)
+                      return a.isFolder;
+                  const std::string la = lowerCase(a.name), lb = lowerCase(b.name);
+                  return la != lb ? la < lb : a.name < b.name;
+              });
+    return listing;
+}
+
+fs::path resolveTypedPath(const fs::path& folder, const std::string& typed) {
+    if (typed == "~" || typed.rfind("~/", 0) == 0) {
+        const char* home = std::getenv("HOME");
+        if (home && *home)
+            return (fs::path(home) / typed.substr(std::min<std::size_t>(2, typed.size())))
+                .lexically_normal();
+    }
+    const fs::path path(typed);
+    return (path.is_absolute() ? path : folder / path).lexically_normal();
+}
+
+FileBrowser::FileBrowser(BrowsePurpose purpose, const fs::path& start, std::string typedName)
+    : mPurpose(purpose), mTyped(std::move(typedName)) {
+    // The start folder, or the nearest folder above it that exists (a moved project).
+    fs::path folder = start.empty() ? fs::current_path() : fs::absolute(start).lexically_normal();
+    while (!isFolder(folder) && folder.has_parent_path() && folder.parent_path() != folder)
+        folder = folder.parent_path();
+    enter(folder);
+}
+
+void FileBrowser::enter(const fs::path& folder) {
+    mFolder = folder.lexically_normal();
+    // "/a/b/" normalises to "/a/b/": drop the empty last part so up() and labels work.
+    if (!mFolder.has_filename() && mFolder.has_parent_path() && mFolder != mFolder.root_path())
+        mFolder = mFolder.parent_path();
+    mSelected.reset();
+    mFocusPath = true;  // the next thing typed is a name in the new folder
+    refresh();
+}
+
+void FileBrowser::up() {
+    if (mFolder.has_parent_path() && mFolder.parent_path() != mFolder)
+        enter(mFolder.parent_path());
+}
+
+void FileBrowser::refresh() {
+    mListing = listFolder(mFolder, browseExtensions(mPurpose));
+}
+
+void FileBrowser::select(std::size_t index) {
+    if (index >= mListing.entries.size())
+        return;
+    mSelected = index;
+    mMessage.clear();
+    const BrowserEntry& entry = mListing.entries[index];
+    if (!entry.isFolder || (entry.isProject && mPurpose == BrowsePurpose::OpenProject))
+        mTyped = entry.name;
+}
+
+std::optional<fs::path> FileBrowser::activate(std::size_t index) {
+    if (index >= mListing.entries.size())
+        return std::nullopt;
+    const BrowserEntry& entry = mListing.entries[index];
+    const fs::path path = mFolder / entry.name;
+    mMessage.clear();
+    // A project is a folder: opening one is choosing it, not browsing its maps.
+    if (entry.isFolder && !(entry.isProject && mPurpose == BrowsePurpose::OpenProject)) {
+        enter(path);
+        return std::nullopt;
+    }
+    return choose(path);
+}
+
+std::optional<fs::path> FileBrowser::activateTyped() {
+    mMessage.clear();
+    const bool projects =
+        mPurpose == BrowsePurpose::OpenProject || mPurpose == BrowsePurpose::SaveProject;
+    mFocusPath = true;  // what follows a refusal or a move is more typing
+    if (mTyped.empty()) {
+        // A project folder being shown is what Open and Save mean with nothing typed.
+        if (projects && (mPurpose == BrowsePurpose::SaveProject || holdsProject(mFolder)))
+            return mFolder;
+        mMessage = mPurpose == BrowsePurpose::OpenProject
+                       ? "this folder holds no project.json: pick a project folder"
+                       : "type a file name or pick a file";
+        return std::nullopt;
+    }
+    const fs::path path = resolveTypedPath(mFolder, mTyped);
+    if (isFolder(path) && !(projects && (mPurpose == BrowsePurpose::SaveProject || holdsProject(path)))) {
+        enter(path);
+        mTyped.clear();
+        return std::nullopt;
+    }
+    return choose(path);
+}
+
+std::optional<fs::path> FileBrowser::choose(const fs::path& path) {
+    switch (mPurpose) {
+        case BrowsePurpose::SaveProject:
+            return path;  // a new name is a new project folder (or .json file)
+        case BrowsePurpose::OpenProject:
+            if (isFolder(path) || isFile(path))
+                return path;
+            mMessage = path.string() + " does not exist";
+            return std::nullopt;
+        default:
+            break;
+    }
+    if (!isFile(path)) {
+        mMessage = path.string() + (isFolder(path) ? " is a folder" : " does not exist");
+        return std::nullopt;
+    }
+    if (!hasExtension(path, browseExtensions(mPurpose))) {
+        mMessage = path.filename().string() + " is not one of " + browseFilterText(mPurpose);
+        return std::nullopt;
+    }
+    return path;
+}
+
+}  // namespace grass::editor

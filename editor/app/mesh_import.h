@@ -1,0 +1,42 @@
+// Bringing the artist's own glTF mesh into the editor (issue 26): File › New from mesh… (a new
+// project around the mesh, sized and framed for it as `grass render --mesh` does), File › Import
+// mesh… and a dropped .gltf/.glb (the open project's surface replaced, one undo step). A project
+// names its files relative to its folder, so a mesh from elsewhere is copied in, with the
+// buffers and images a .gltf names, keeping their layout.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "project/project.h"
+#include "util/result.h"
+
+namespace grass::editor {
+
+// Blades a new project from a mesh grows (about the meadow's: interactive on llvmpipe).
+inline constexpr std::size_t NEW_MESH_PROJECT_BLADES = 40000;
+
+// `file` and, for a .gltf, the buffers and images it names: paths relative to the file's folder.
+std::vector<std::filesystem::path> assetFileSet(const std::filesystem::path& file);
+
+// Copies `from` to `to` with the files it names at the same places relative to it; files
+// already at the destination are kept. The error names the file that could not be copied.
+Result<void> copyAssetFiles(const std::filesystem::path& from, const std::filesystem::path& to);
+
+// A new, unsaved project around `meshFile` (its folder is the mesh's, so the mesh needs no copy
+// until it is saved elsewhere). The error names the file and why it cannot be read.
+Result<core::LoadedProject> newProjectFromMesh(const std::filesystem::path& meshFile,
+                                               std::size_t targetBlades = NEW_MESH_PROJECT_BLADES);
+
+// The open project with `meshFile` as its surface. A mesh inside the project's folder is named
+// where it is; one from elsewhere is copied to meshes/<name>/ (a fresh folder each time); a
+// project never saved and naming no file takes the mesh's folder as its own instead. The unit
+// and up axis of a previous glTF surface are kept (a re-exported model keeps its units).
+// `note` says what was copied. The mesh is read first: a broken file copies nothing.
+Result<core::LoadedProject> projectWithImportedMesh(const core::LoadedProject& loaded,
+                                                    const std::filesystem::path& meshFile,
+                                                    std::string* note);
+
+}  // namespace grass::editor

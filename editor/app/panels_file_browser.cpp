@@ -1,0 +1,223 @@
+// The file browser window (file_browser.h is its model): the folder's path with Up and the
+// places (home, the project, the working folder, recent project folders), the folder's entries
+// through the purpose's filter (a click selects, a double-click enters a folder or chooses a
+// file), the typed name or path (Enter chooses), and why a choice was refused.
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <system_error>
+
+#include "app/mesh_import.h"
+#include "app/panels.h"
+#include "ui/text_edit.h"
+#include "ui/window.h"
+#include "util/byte_size.h"
+
+namespace grass::editor {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Places to jump to, each once, those that exist.
+std::vector<BrowserPlace> browserPlaces(const EditorState& s) {
+    std::vector<BrowserPlace> places;
+    const auto add = [&](std::string label, const fs::path& folder) {
+        std::error_code ec;
+        if (folder.empty() || !fs::is_directory(folder, ec))
+            return;
+        for (const BrowserPlace& place : places)
+            if (place.folder == folder)
+                return;
+        places.push_back({std::move(label), folder});
+    };
+    if (const char* home = std::getenv("HOME"))
+        add("Home", home);
+    add("Project", s.doc.loaded.folder);
+    add("Meshes", s.transient.meshFolder);
+    std::error_code ec;
+    add("Working folder", fs::current_path(ec));
+    for (const fs::path& folder : s.transient.recent.folders())
+        add(folder.filename().string(), folder);
+    return places;
+}
+
+// What a chosen path does, by the browser's purpose.
+void choose(EditorState& s, BrowsePurpose purpose, const fs::path& path) {
+    switch (purpose) {
+        case BrowsePurpose::OpenProject:
+            askLeave(s, LeaveAction::Open, path.string());
+            break;
+        case BrowsePurpose::SaveProject:
+            saveTo(s, projectFileFor(path).string());
+            break;
+        case BrowsePurpose::NewFromMesh:
+            s.transient.meshFolder = path.parent_path();
+            askLeave(s, LeaveAction::NewFromMesh, path.string());
+            break;
+        case BrowsePurpose::ImportMesh:
+            s.transient.meshFolder = path.parent_path();
+            s.importMeshRequested = path.string();
+            break;
+        case BrowsePurpose::ImportMap:
+            s.transient.meshFolder = path.parent_path();
+            s.importMapRequested = path.string();
+            break;
+    }
+}
+
+std::string entryText(const BrowserEntry& entry) {
+    if (entry.isFolder)
+        return entry.name + (entry.isProject ? "/    (project)" : "/");
+    return entry.name + "    " + byteSizeText(static_cast<double>(entry.bytes));
+}
+
+}  // namespace
+
+fs::path projectFileFor(const fs::path& path) {
+    return path.extension() == ".json" ? path : path / "project.json";
+}
+
+void routeDroppedFiles(EditorState& s, const std::vector<std::string>& paths) {
+    const auto accepts = [](BrowsePurpose purpose, const fs::path& path) {
+        std::string extension = path.extension().string();
+        for (char& c : extension)
+            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        const auto& list = browseExtensions(purpose);
+        return std::find(list.begin(), list.end(), extension) != list.end();
+    };
+    for (const std::string& dropped : paths) {
+        const fs::path path(dropped);
+        std::error_code ec;
+        if (accepts(BrowsePurpose::ImportMesh, path)) {
+            s.importMeshRequested = dropped;
+            s.transient.meshFolder = path.parent_path();
+        } else if (accepts(BrowsePurpose::ImportMap, path)) {
+            s.importMapRequested = dropped;
+        } else if (accepts(BrowsePurpose::OpenProject, path) ||
+                   fs::is_regular_file(path / "project.json", ec)) {
+            askLeave(s, LeaveAction::Open, dropped);
+        } else {
+            s.transient.message = "cannot use " + dropped +
+                                  ": drop a .gltf/.glb mesh, a map picture (" +
+                                  browseFilterText(BrowsePurpose::ImportMap) + ") or a project folder";
+        }
+    }
+}
+
+void rememberRecent(EditorState& s, const fs::path& projectFile) {
+    s.transient.recent.add(projectFile);
+    // A list that cannot be kept costs nothing but the list: the save or open itself succeeded.
+    (void)saveRecentFiles(s.transient.recent, s.transient.recentFile);
+}
+
+void openBrowser(EditorState& s, BrowsePurpose purpose) {
+    const fs::path projectFolder = s.doc.loaded.folder;
+    fs::path start = projectFolder;
+    std::string typed;
+    switch (purpose) {
+        case BrowsePurpose::OpenProject:
+            // The project's siblings: projects are folders side by side.
+            start = projectFolder.has_parent_path() ? projectFolder.parent_path() : projectFolder;
+            break;
+        case BrowsePurpose::SaveProject:
+            if (!s.doc.loaded.file.empty()) {
+                start = projectFolder.parent_path();
+                typed = projectFolder.filename().string();
+            }
+            break;
+        default:
+            if (!s.transient.meshFolder.empty())
+                start = s.transient.meshFolder;
+            break;
+    }
+    s.transient.browser.emplace(purpose, start, std::move(typed));
+}
+
+void fileBrowserWindow(ui::Context& ctx, EditorState& s) {
+    if (!s.transient.browser)
+        return;
+    FileBrowser& browser = *s.transient.browser;
+    const BrowsePurpose purpose = browser.purpose();
+    bool open = true;
+    std::optional<fs::path> chosen;
+    const ui::Rect screen = ctx.screenRect();
+    const ui::Rect defaultRect = ui::Rect::fromMinSize(
+        {screen.centre().x - 320.0f, screen.centre().y - 220.0f}, {640.0f, 440.0f});
+    ui::window(
+        ctx, "File browser", &open,
+        [&](ui::Ui& ui) {
+            ui.coloredLabel(browseTitle(purpose), ui.style().textStrong);
+            ui.horizontal([&](ui::Ui& row) {
+                if (row.button("Up").onHoverText("The folder above this one").clicked())
+                    browser.up();
+                row.label(browser.folder().string());
+            });
+            ui.horizontal([&](ui::Ui& row) {
+                const std::vector<BrowserPlace> places = browserPlaces(s);
+                for (std::size_t i = 0; i < places.size(); ++i)
+                    row.withId(i, [&](ui::Ui& item) {
+                        if (item.button(places[i].label).onHoverText(places[i].folder.string()).clicked())
+                            browser.enter(places[i].folder);
+                    });
+            });
+            ui.separator();
+            const FolderListing& listing = browser.listing();
+            // The list takes what the rows below it leave of the window.
+            const float listHeight = std::max(80.0f, ui.availableRect().height() - 96.0f);
+            ui.scrollArea("entries", listHeight, [&](ui::Ui& list) {
+                if (!listing.error.empty())
+                    list.coloredLabel(listing.error, ui::Color32::rgb(255, 150, 60));
+                else if (listing.entries.empty())
+                    list.coloredLabel("(no folders or " + browseFilterText(purpose) + " here)",
+                                      list.style().textWeak);
+                for (std::size_t i = 0; i < listing.entries.size(); ++i) {
+                    ui::Response r;
+                    list.withId(i, [&](ui::Ui& item) {
+                        r = item.selectable(browser.selected() == i, entryText(listing.entries[i]));
+                    });
+                    if (r.doubleClicked()) {
+                        chosen = browser.activate(i);
+                        break;  // the listing may have changed
+                    }
+                    if (r.clicked())
+                        browser.select(i);
+                }
+                if (listing.hidden > 0)
+                    list.coloredLabel(std::to_string(listing.hidden) + " more not listed: type the name",
+                                      list.style().textWeak);
+            });
+            ui.separator();
+            // The text edit consumes Enter, so look before it: Enter (not a commit by focus loss,
+            // e.g. a click on Cancel) chooses.
+            const bool enter = ctx.keyPressed(ui::Key::Enter);
+            bool committed = false;
+            ui.horizontal([&](ui::Ui& row) {
+                row.label(purpose == BrowsePurpose::SaveProject ? "Project folder:" : "Name or path:");
+                // Asked before the field runs: a focus it does not see this frame is dropped.
+                if (browser.takeFocusRequest())
+                    ctx.requestFocus(row.makeId("##path"));
+                ui::textEdit(row, "##path", browser.typed(), row.availableWidth() - 8.0f,
+                             &committed);
+            });
+            ui.horizontal([&](ui::Ui& row) {
+                const bool go = row.button(browseButton(purpose)).clicked() || (committed && enter);
+                if (go && !chosen)
+                    chosen = browser.activateTyped();
+                if (row.button("Cancel").clicked())
+                    open = false;
+                row.coloredLabel("Shows " + browseFilterText(purpose), row.style().textWeak);
+            });
+            if (!browser.message().empty())
+                ui.coloredLabel(browser.message(), ui::Color32::rgb(255, 150, 60));
+        },
+        defaultRect);
+    if (chosen) {
+        s.transient.browser.reset();
+        choose(s, purpose, *chosen);
+    } else if (!open) {
+        s.transient.browser.reset();
+    }
+}
+
+}  // namespace grass::editor

@@ -1,0 +1,124 @@
+// The file browser's model (issue 26, app/file_browser.h): what a folder lists through each
+// purpose's filter, where a double-click or a typed path leads, and why a choice is refused.
+#include "app/file_browser.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+
+#include "support/scratch_folder.h"
+
+namespace grass::test {
+namespace {
+
+namespace fs = std::filesystem;
+using editor::BrowsePurpose;
+using editor::FileBrowser;
+
+// A folder as an artist's might be: meshes of both kinds in any case, pictures, a project
+// folder, a plain folder, a hidden file.
+void makeFolder(const fs::path& root) {
+    for (const char* name : {"Terrain.GLB", "rock.gltf", "rock.bin", "notes.txt", "moss.png",
+                             ".hidden.glb"})
+        std::ofstream(root / name) << "x";
+    fs::create_directories(root / "meadow");
+    std::ofstream(root / "meadow/project.json") << "{}";
+    fs::create_directories(root / "Assets");
+}
+
+std::vector<std::string> names(const editor::FolderListing& listing) {
+    std::vector<std::string> out;
+    for (const auto& entry : listing.entries)
+        out.push_back(entry.name);
+    return out;
+}
+
+TEST(FileBrowser, ListsFoldersFirstThenTheFilesThePurposeTakesInAnyCase) {
+    const ScratchFolder folder("browser-list");
+    makeFolder(folder.path());
+    const auto meshes = editor::listFolder(folder.path(), editor::browseExtensions(BrowsePurpose::ImportMesh));
+    EXPECT_EQ(names(meshes), (std::vector<std::string>{"Assets", "meadow", "rock.gltf", "Terrain.GLB"}));
+    EXPECT_TRUE(meshes.entries[1].isProject);
+    EXPECT_FALSE(meshes.entries[0].isProject);
+    EXPECT_EQ(meshes.entries[2].bytes, 1u);
+    const auto images = editor::listFolder(folder.path(), editor::browseExtensions(BrowsePurpose::ImportMap));
+    EXPECT_EQ(names(images), (std::vector<std::string>{"Assets", "meadow", "moss.png"}));
+}
+
+TEST(FileBrowser, AnUnreadableFolderSaysSoInsteadOfThrowing) {
+    const auto listing = editor::listFolder("/no/such/folder", {".glb"});
+    EXPECT_TRUE(listing.entries.empty());
+    EXPECT_NE(listing.error.find("/no/such/folder"), std::string::npos) << listing.error;
+}
+
+TEST(FileBrowser, DoubleClickEntersAFolderAndChoosesAFile) {
+    const ScratchFolder folder("browser-activate");
+    makeFolder(folder.path());
+    FileBrowser browser(BrowsePurpose::ImportMesh, folder.path());
+    // "meadow" is a project, but importing a mesh browses into it.
+    ASSERT_FALSE(browser.activate(1).has_value());
+    EXPECT_EQ(browser.folder(), folder.path() / "meadow");
+    browser.up();
+    EXPECT_EQ(browser.folder(), folder.path());
+    browser.select(3);
+    EXPECT_EQ(browser.typed(), "Terrain.GLB");  // a click puts the file's name in the path field
+    const auto chosen = browser.activate(3);
+    ASSERT_TRUE(chosen.has_value());
+    EXPECT_EQ(*chosen, folder.path() / "Terrain.GLB");
+}
+
+TEST(FileBrowser, OpeningAProjectFolderChoosesItRatherThanBrowsingIt) {
+    const ScratchFolder folder("browser-open");
+    makeFolder(folder.path());
+    FileBrowser browser(BrowsePurpose::OpenProject, folder.path());
+    ASSERT_EQ(browser.listing().entries[1].name, "meadow");
+    const auto chosen = browser.activate(1);
+    ASSERT_TRUE(chosen.has_value());
+    EXPECT_EQ(*chosen, folder.path() / "meadow");
+    // A plain folder is entered; with nothing typed, Open there is refused with the reason.
+    EXPECT_FALSE(browser.activate(0).has_value());
+    EXPECT_FALSE(browser.activateTyped().has_value());
+    EXPECT_NE(browser.message().find("project.json"), std::string::npos) << browser.message();
+}
+
+TEST(FileBrowser, ATypedPathIsRelativeToTheFolderOrAbsoluteOrFromHome) {
+    const ScratchFolder folder("browser-typed");
+    makeFolder(folder.path());
+    FileBrowser browser(BrowsePurpose::ImportMesh, folder.path() / "Assets");
+    browser.typed() = "../rock.gltf";
+    EXPECT_EQ(browser.activateTyped(), std::optional<fs::path>(folder.path() / "rock.gltf"));
+    browser.typed() = (folder.path() / "meadow").string();  // a folder: the browser goes there
+    EXPECT_FALSE(browser.activateTyped().has_value());
+    EXPECT_EQ(browser.folder(), folder.path() / "meadow");
+    EXPECT_TRUE(browser.typed().empty());
+    const char* home = std::getenv("HOME");
+    ASSERT_NE(home, nullptr);
+    EXPECT_EQ(editor::resolveTypedPath("/x", "~/a.glb"), (fs::path(home) / "a.glb").lexically_normal());
+    EXPECT_EQ(editor::resolveTypedPath("/x/y", "a.glb"), fs::path("/x/y/a.glb"));
+}
+
+TEST(FileBrowser, AWrongKindOrAMissingFileIsRefusedWithTheReason) {
+    const ScratchFolder folder("browser-refuse");
+    makeFolder(folder.path());
+    FileBrowser browser(BrowsePurpose::ImportMesh, folder.path());
+    browser.typed() = "notes.txt";
+    EXPECT_FALSE(browser.activateTyped().has_value());
+    EXPECT_NE(browser.message().find("glTF (.gltf .glb)"), std::string::npos) << browser.message();
+    browser.typed() = "gone.glb";
+    EXPECT_FALSE(browser.activateTyped().has_value());
+    EXPECT_NE(browser.message().find("does not exist"), std::string::npos) << browser.message();
+    // Saving takes a new name: a project folder that does not exist yet.
+    FileBrowser save(BrowsePurpose::SaveProject, folder.path());
+    save.typed() = "new-field";
+    EXPECT_EQ(save.activateTyped(), std::optional<fs::path>(folder.path() / "new-field"));
+}
+
+TEST(FileBrowser, StartsAtTheNearestFolderThatExists) {
+    const ScratchFolder folder("browser-start");
+    const FileBrowser browser(BrowsePurpose::OpenProject, folder.path() / "moved/away/project");
+    EXPECT_EQ(browser.folder(), folder.path());
+}
+
+}  // namespace
+}  // namespace grass::test

@@ -1,0 +1,98 @@
+// The artist's own mesh in (issue 26, app/mesh_import.h): File › New from mesh… makes a project
+// sized and framed for the mesh; Import mesh… names a mesh inside the project where it is and
+// copies one from elsewhere in with the files it names; a broken file copies nothing; Save As
+// takes a .gltf's buffers and images along.
+#include "app/mesh_import.h"
+
+#include <gtest/gtest.h>
+
+#include "scene/scene.h"
+#include "support/scratch_folder.h"
+#include "support/test_paths.h"
+
+namespace grass::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path STONE = "tests/data/projects/textured_stone/stone.gltf";
+
+TEST(MeshImport, NewFromMeshIsAnUnsavedProjectAroundTheMeshThatGrows) {
+    const fs::path mesh = sourceDir() / "tests/data/gltf/cube.glb";
+    auto loaded = editor::newProjectFromMesh(mesh);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+    EXPECT_TRUE(loaded->file.empty()) << "a new project is not saved until the user says where";
+    EXPECT_EQ(loaded->folder, mesh.parent_path());
+    EXPECT_TRUE(loaded->project.mesh.isFile);
+    EXPECT_EQ(loaded->project.mesh.file, "cube.glb");
+    auto scene = core::buildScene(*loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    // Sized for the mesh: about the blades asked for (clumping off, so within sampling noise).
+    const double blades = static_cast<double>(scene->totalBlades());
+    EXPECT_GT(blades, 0.8 * editor::NEW_MESH_PROJECT_BLADES);
+    EXPECT_LT(blades, 1.2 * editor::NEW_MESH_PROJECT_BLADES);
+}
+
+TEST(MeshImport, ABrokenMeshIsRefusedNamingTheFileAndCopiesNothing) {
+    const ScratchFolder project("import-broken");
+    core::LoadedProject loaded{core::Project{}, project.path(), project.path() / "project.json"};
+    const fs::path broken = sourceDir() / "tests/data/gltf/truncated.gltf";
+    auto next = editor::projectWithImportedMesh(loaded, broken, nullptr);
+    ASSERT_FALSE(next.ok());
+    EXPECT_NE(next.error().str().find("truncated.gltf"), std::string::npos) << next.error().str();
+    EXPECT_FALSE(fs::exists(project.path() / "meshes"));
+    EXPECT_FALSE(editor::newProjectFromMesh(broken).ok());
+}
+
+TEST(MeshImport, AMeshFromElsewhereIsCopiedInWithTheFilesItNames) {
+    const ScratchFolder project("import-copy");
+    core::LoadedProject loaded{core::Project{}, project.path(), project.path() / "project.json"};
+    std::string note;
+    auto next = editor::projectWithImportedMesh(loaded, sourceDir() / STONE, &note);
+    ASSERT_TRUE(next.ok()) << next.error().str();
+    EXPECT_EQ(next->project.mesh.file, "meshes/stone/stone.gltf");
+    for (const char* file : {"stone.gltf", "stone.bin", "stone.png"})
+        EXPECT_TRUE(fs::exists(project.path() / "meshes/stone" / file)) << file;
+    EXPECT_NE(note.find("meshes/stone"), std::string::npos) << note;
+    // The project grows from its copy; a second import of the same name gets its own folder.
+    EXPECT_TRUE(core::buildScene(*next).ok());
+    auto again = editor::projectWithImportedMesh(*next, sourceDir() / STONE, nullptr);
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(again->project.mesh.file, "meshes/stone-2/stone.gltf");
+}
+
+TEST(MeshImport, AMeshInsideTheProjectIsNamedWhereItIsAndKeepsTheUnits) {
+    const ScratchFolder project("import-inside");
+    fs::create_directories(project.path() / "scans");
+    fs::copy_file(sourceDir() / "tests/data/gltf/cube.glb", project.path() / "scans/cube.glb");
+    core::LoadedProject loaded{core::Project{}, project.path(), project.path() / "project.json"};
+    loaded.project.mesh.isFile = true;
+    loaded.project.mesh.file = "old.glb";
+    loaded.project.mesh.metresPerUnit = 0.001f;
+    auto next = editor::projectWithImportedMesh(loaded, project.path() / "scans/cube.glb", nullptr);
+    ASSERT_TRUE(next.ok()) << next.error().str();
+    EXPECT_EQ(next->project.mesh.file, "scans/cube.glb");
+    EXPECT_EQ(next->project.mesh.metresPerUnit, 0.001f) << "a re-imported model keeps its units";
+    EXPECT_FALSE(fs::exists(project.path() / "meshes"));
+}
+
+TEST(MeshImport, ANeverSavedProjectMovesToTheMeshInsteadOfCopyingIt) {
+    const ScratchFolder cwd("import-unsaved");
+    core::LoadedProject loaded{core::Project{}, cwd.path(), {}};
+    auto next = editor::projectWithImportedMesh(loaded, sourceDir() / STONE, nullptr);
+    ASSERT_TRUE(next.ok()) << next.error().str();
+    EXPECT_EQ(next->folder, (sourceDir() / STONE).parent_path().lexically_normal());
+    EXPECT_EQ(next->project.mesh.file, "stone.gltf");
+    EXPECT_FALSE(fs::exists(cwd.path() / "meshes"));
+}
+
+TEST(MeshImport, CopyingAGltfTakesItsBuffersAndImagesAlong) {
+    const ScratchFolder to("import-save-as");
+    ASSERT_TRUE(editor::copyAssetFiles(sourceDir() / STONE, to.path() / "surface/stone.gltf").ok());
+    for (const char* file : {"stone.gltf", "stone.bin", "stone.png"})
+        EXPECT_TRUE(fs::exists(to.path() / "surface" / file)) << file;
+    EXPECT_EQ(editor::assetFileSet(sourceDir() / STONE).size(), 3u);
+}
+
+}  // namespace
+}  // namespace grass::test
