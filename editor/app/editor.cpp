@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <thread>
+#include <utility>
 
 #include <epoxy/gl.h>
 
@@ -237,6 +238,8 @@ void Editor::regrowLive() {
         return;
     }
     adoptLive(std::move(*next));
+    if (std::exchange(mState.view.frameSurfacePending, false))
+        mCamera = core::frameSurface(mLive.scene->mesh, float(mView.w) / float(std::max(mView.h, 1)));
 }
 
 void Editor::adoptLive(Live next) {

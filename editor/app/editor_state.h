@@ -78,6 +78,8 @@ struct ViewState {
     // The last scrub, step or play of the timeline panel (a jump back re-runs the simulation
     // from rest).
     core::TimeUpdate timeJump;
+    // The surface's unit or up axis changed: once the field is re-grown, the view frames it.
+    bool frameSurfacePending = false;
     // A reduced picture while the user interacts (Render panel: "adapt while moving").
     core::InteractionQuality quality;
 };

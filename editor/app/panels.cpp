@@ -317,6 +317,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
             ui.separator();
             toolSection(ui, s);
             layerSection(ui, s);
+            surfaceSection(ui, s);
             windSection(ui, s);
             colliderSection(ui, s);
             lightSection(ui, s);

@@ -91,6 +91,9 @@ void windSection(ui::Ui& ui, EditorState& state);
 void colliderSection(ui::Ui& ui, EditorState& state);
 void renderSection(ui::Ui& ui, EditorState& state);
 void lightSection(ui::Ui& ui, EditorState& state);
+// What the grass grows on: the glTF file with its unit and up axis, or the procedural shape
+// (panels_surface.cpp).
+void surfaceSection(ui::Ui& ui, EditorState& state);
 void cameraSection(ui::Ui& ui, EditorState& state);
 // The Render section's quality preset menu and measured cost/error readout
 // (panels_quality.cpp).

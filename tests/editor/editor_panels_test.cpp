@@ -413,6 +413,82 @@ TEST(EditorPanels, CameraBookmarksKeepTheViewAndGoBack) {
     EXPECT_EQ(editor.state.doc.loaded.project.cameras.size(), before);
 }
 
+// Issue 26 item 4: the timeline strip under the view draws a tick per key; a click on one selects
+// the object that key moves and goes to its time.
+TEST(EditorPanels, AClickOnAKeyTickSelectsItsObjectAndGoesThere) {
+    const ScratchFolder folder("editor-timeline-strip");
+    EditorDriver editor(folder.path());
+    core::ColliderDesc ball;
+    ball.name = "ball";
+    ball.path = {{10.0f, {-1.0f, 0.2f, 0.0f}}, {50.0f, {1.0f, 0.2f, 0.0f}}};
+    editor.state.doc.loaded.project.colliders.push_back(ball);
+    editor::resetHistory(editor.state);
+    editor.state.view.timeline = core::timelineFor(editor.state.doc.loaded.project);
+    ASSERT_EQ(editor.state.view.timeline.endS(), 50.0);
+    // The track spans the strip from its first button's left edge to 8 points from the window's
+    // right; its centre is 43 points above the window's bottom (status bar 26, strip 56).
+    std::optional<ui::Vec2> first;
+    for (const ui::ClippedShape& shape : editor.frame().shapes)
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && t->text == "|<")
+            first = t->pos;
+    ASSERT_TRUE(first.has_value()) << "the strip's transport row";
+    const float left = first->x - 6.0f, right = 1280.0f - 8.0f;
+    editor.clickAt({left + 0.2f * (right - left) + 1.0f, 720.0f - 43.0f});
+    ASSERT_TRUE(editor.state.view.place.selected.has_value());
+    EXPECT_EQ(editor.state.view.place.selected->kind, editor::PlacedKind::Collider);
+    EXPECT_EQ(editor.state.view.place.selected->index, 0u);
+    EXPECT_NEAR(editor.state.view.timeline.timeS(), 10.0, 1e-4);
+    // Away from the ticks a click scrubs.
+    editor.clickAt({left + 0.6f * (right - left), 720.0f - 43.0f});
+    EXPECT_NEAR(editor.state.view.timeline.timeS(), 30.0, 0.5);
+}
+
+// Issue 26 item 2: the Surface section sets a glTF surface's unit; the field re-grows and the
+// view frames it again.
+TEST(EditorPanels, TheSurfaceSectionSetsTheMeshUnit) {
+    const ScratchFolder folder("editor-surface");
+    EditorDriver editor(folder.path());
+    core::MeshSource& mesh = editor.state.doc.loaded.project.mesh;
+    mesh.isFile = true;
+    mesh.file = "stone.gltf";
+    editor::resetHistory(editor.state);
+    editor.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 3000.0f}};  // no scrolling
+    editor.click("Surface");
+    const std::set<std::string> shown = editor.shownTexts();
+    EXPECT_TRUE(shown.count("file: stone.gltf"));
+    editor.click("m");   // the unit combo, showing metres
+    editor.click("mm");  // its list
+    editor::recordProjectEdit(editor.state, false);
+    EXPECT_EQ(editor.state.doc.loaded.project.mesh.metresPerUnit, 0.001f);
+    EXPECT_TRUE(editor.state.rebuildPending);
+    EXPECT_TRUE(editor.state.view.frameSurfacePending);
+    ASSERT_TRUE(editor::undo(editor.state));
+    EXPECT_EQ(editor.state.doc.loaded.project.mesh.metresPerUnit, 1.0f);
+}
+
+// Issue 26 item 4: every status message is logged; a click on the status line shows them whole.
+TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
+    const ScratchFolder folder("editor-messages");
+    EditorDriver editor(folder.path());
+    const std::string longMessage =
+        "cannot import /a/very/long/path/that/does/not/fit/in/the/status/bar/at/all/rock.glb: "
+        "the file is not glTF";
+    editor.state.transient.message = "first";
+    editor.frame();
+    editor.state.transient.message = longMessage;
+    editor.frame();
+    ASSERT_EQ(editor.state.transient.messageLog.size(), 2u);
+    EXPECT_NE(editor.state.transient.messageLog[1].find(longMessage), std::string::npos);
+    editor.click("   " + longMessage);
+    ASSERT_TRUE(editor.state.transient.messagesWindow);
+    // Wrapped to the window, the whole text is there, line by line.
+    std::string joined;
+    for (const ui::ClippedShape& shape : editor.frame().shapes)
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && !t->text.starts_with("   "))
+            joined += t->text + " ";  // the status line itself starts with three spaces
+    EXPECT_NE(joined.find("the file is not glTF"), std::string::npos) << joined;
+}
+
 // Issue 26 item 4: Help › Keyboard shortcuts shows every key of the editor's table.
 TEST(EditorPanels, HelpListsEveryKeyboardShortcut) {
     const ScratchFolder folder("editor-help");
