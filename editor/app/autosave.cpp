@@ -132,9 +132,9 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
             ui.label("The editor did not close cleanly last time.");
             ui.label("An autosave of this project has changes that were not saved.");
             ui.horizontal([&](ui::Ui& row) {
-                if (row.button("Recover").clicked())
+                if (row.button("Recover").onHoverText("Open the autosaved work (it stays unsaved until you save)").clicked())
                     s.recoverRequested = true;
-                if (row.button("Discard").clicked()) {
+                if (row.button("Discard").onHoverText("Delete the autosave and keep the project as saved").clicked()) {
                     removeAutosave(s.doc.loaded);
                     s.recoveryOffer.reset();
                 }

@@ -136,7 +136,9 @@ void quitDialogWindow(ui::Context& ctx, EditorState& s) {
             ui.label("The project has unsaved changes.");
             const bool quitting = s.transient.leaveAction == LeaveAction::Quit;
             ui.horizontal([&](ui::Ui& row) {
-                if (row.button(quitting ? "Save and quit" : "Save first").clicked()) {
+                if (row.button(quitting ? "Save and quit" : "Save first")
+                        .onHoverText("Save the project (Ctrl+S), then go on")
+                        .clicked()) {
                     if (s.doc.loaded.file.empty()) {
                         openBrowser(s, BrowsePurpose::SaveProject);  // no file yet: ask where first
                         s.transient.quitDialog = false;
@@ -146,9 +148,11 @@ void quitDialogWindow(ui::Context& ctx, EditorState& s) {
                 }
                 // The project stays dirty: if opening the other one fails, the edits are
                 // still there and still count as unsaved.
-                if (row.button(quitting ? "Quit without saving" : "Discard changes").clicked())
+                if (row.button(quitting ? "Quit without saving" : "Discard changes")
+                        .onHoverText("Drop the unsaved changes and go on")
+                        .clicked())
                     leave(s);
-                if (row.button("Cancel").clicked())
+                if (row.button("Cancel").onHoverText("Stay with the project as it is").clicked())
                     s.transient.quitDialog = false;
             });
         },
@@ -312,7 +316,8 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
             ui.horizontal([&](ui::Ui& row) {
                 bool committed = false;
                 ui::textEdit(row, "project##name", s.transient.draft.project.name, 200.0f,
-                             &committed);
+                             &committed)
+                    .onHoverText("The project's name (project.json \"name\")");
             });
             ui.separator();
             toolSection(ui, s);

@@ -174,7 +174,8 @@ void fileBrowserWindow(ui::Context& ctx, EditorState& s) {
                 for (std::size_t i = 0; i < listing.entries.size(); ++i) {
                     ui::Response r;
                     list.withId(i, [&](ui::Ui& item) {
-                        r = item.selectable(browser.selected() == i, entryText(listing.entries[i]));
+                        r = item.selectable(browser.selected() == i, entryText(listing.entries[i]))
+                                .onHoverText("Click to select, double-click to open");
                     });
                     if (r.doubleClicked()) {
                         chosen = browser.activate(i);
@@ -198,13 +199,17 @@ void fileBrowserWindow(ui::Context& ctx, EditorState& s) {
                 if (browser.takeFocusRequest())
                     ctx.requestFocus(row.makeId("##path"));
                 ui::textEdit(row, "##path", browser.typed(), row.availableWidth() - 8.0f,
-                             &committed);
+                             &committed)
+                    .onHoverText("A name in this folder, a relative or absolute path, or ~/...; Enter");
             });
             ui.horizontal([&](ui::Ui& row) {
-                const bool go = row.button(browseButton(purpose)).clicked() || (committed && enter);
+                const bool go = row.button(browseButton(purpose))
+                                        .onHoverText("Use the typed path or the selected file (Enter)")
+                                        .clicked() ||
+                                    (committed && enter);
                 if (go && !chosen)
                     chosen = browser.activateTyped();
-                if (row.button("Cancel").clicked())
+                if (row.button("Cancel").onHoverText("Close the browser (nothing changes)").clicked())
                     open = false;
                 row.coloredLabel("Shows " + browseFilterText(purpose), row.style().textWeak);
             });
