@@ -80,7 +80,7 @@ bool menuItem(Ui& ui, std::string_view label, std::string_view shortcutText) {
     const Style& s = ui.style();
     const FontAtlas& fonts = ctx.fonts();
     // "Text##key" shows Text and is keyed by the whole (two recent projects of one name).
-    const std::string_view shown = label.substr(0, std::min(label.find("##"), label.size()));
+    const std::string_view shown = shownLabel(label);
     const float labelWidth = fonts.textSize(shown, s.textSizePt).x;
     const float shortcutWidth = fonts.textSize(shortcutText, s.textSizePt).x;
     // A gap of several spaces between label and shortcut keeps the columns readable.

@@ -61,10 +61,6 @@ std::size_t hitTest(const FontAtlas& fonts, std::string_view text, float x, floa
     return text.size();
 }
 
-std::string_view displayLabel(std::string_view idLabel) {
-    return idLabel.substr(0, std::min(idLabel.find("##"), idLabel.size()));
-}
-
 // The editing logic; `edited` reports a text change (public callers turn it into changed()).
 Response textEditImpl(Ui& ui, std::string_view idLabel, std::string& text, float width,
                       bool* committed, bool* edited) {
@@ -72,7 +68,7 @@ Response textEditImpl(Ui& ui, std::string_view idLabel, std::string& text, float
     const Style& s = ui.style();
     const FontAtlas& fonts = ctx.fonts();
     const float size = s.textSizePt;
-    const std::string_view label = displayLabel(idLabel);
+    const std::string_view label = shownLabel(idLabel);
     const Vec2 labelSize = fonts.textSize(label, size);
     const float height =
         std::max(s.interactHeight, fonts.lineHeight(size) + 2.0f * s.buttonPadding.y);

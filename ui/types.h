@@ -43,6 +43,12 @@ struct Color32 {
     bool operator==(const Color32&) const = default;
 };
 
+// "Text##key": the part a widget shows (all of the label without "##"); the whole label is its
+// id, so two rows showing the same text keep their own state.
+inline std::string_view shownLabel(std::string_view label) {
+    return label.substr(0, std::min(label.find("##"), label.size()));
+}
+
 // A widget's identity across frames: a hash of its parent's id and a salt (ui::Id::with).
 struct Id {
     std::uint64_t value = 0;

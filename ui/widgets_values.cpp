@@ -45,8 +45,7 @@ struct SliderMapping {
 // it changed. `integer` rounds to whole numbers.
 Response sliderImpl(Ui& ui, std::string_view label, double& value, double min, double max,
                     const SliderOptions& options, bool integer) {
-    // "Text##key": Text is shown, the whole label is the id.
-    const std::string_view shown = label.substr(0, std::min(label.find("##"), label.size()));
+    const std::string_view shown = shownLabel(label);
     const Style& s = ui.style();
     const FontAtlas& fonts = ui.context().fonts();
     const SliderMapping map{min, max, options.logarithmic && min > 0.0 && max > min};
@@ -105,7 +104,7 @@ Response sliderImpl(Ui& ui, std::string_view label, double& value, double min, d
 
 // The value box of a drag value; returns the response of the box.
 Response dragBox(Ui& ui, std::string_view label, const std::string& text) {
-    const std::string_view shown = label.substr(0, std::min(label.find("##"), label.size()));
+    const std::string_view shown = shownLabel(label);
     const Style& s = ui.style();
     const FontAtlas& fonts = ui.context().fonts();
     const Vec2 textSize = fonts.textSize(text, s.textSizePt);

@@ -26,7 +26,6 @@ struct SurfaceLook {
     // glTF wrap modes (10497 repeat, 33071 clamp to edge, 33648 mirrored repeat).
     int wrapS = 10497, wrapT = 10497;
     std::vector<std::string> notes;  // a texture left out and why
-    bool operator==(const SurfaceLook&) const = default;
 };
 
 // The look of the glTF surface in `file`; `meshHasUv`: every merged primitive carried

@@ -239,7 +239,11 @@ void Editor::regrowLive() {
     }
     adoptLive(std::move(*next));
     if (std::exchange(mState.view.frameSurfacePending, false))
-        mCamera = core::frameSurface(mLive.scene->mesh, float(mView.w) / float(std::max(mView.h, 1)));
+        frameLiveSurface();
+}
+
+void Editor::frameLiveSurface() {
+    mCamera = core::frameSurface(mLive.scene->mesh, float(mView.w) / float(std::max(mView.h, 1)));
 }
 
 void Editor::adoptLive(Live next) {

@@ -78,6 +78,8 @@ private:
     void regrowLive();
     // The same project's field, grown again: it replaces the live one, the clock goes on.
     void adoptLive(Live next);
+    // The view framed on the live surface (after a new mesh, unit or up axis).
+    void frameLiveSurface();
     bool adoptDocument(core::LoadedProject next, std::string_view what);
     // New from mesh, Import mesh and Import map image (editor_imports.cpp).
     void applyImports();

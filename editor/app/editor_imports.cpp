@@ -44,7 +44,7 @@ void Editor::applyImports() {
             apply(s, EditProject{.after = std::move(next->project), .label = "import mesh"});
             adoptLive(std::move(*live));
             // Another surface, another place and size: the view moves to it.
-            mCamera = core::frameSurface(mLive.scene->mesh, float(mView.w) / float(std::max(mView.h, 1)));
+            frameLiveSurface();
             s.transient.message = "imported " + file.string() + (note.empty() ? "" : "; " + note);
         }
     }

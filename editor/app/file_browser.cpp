@@ -75,6 +75,10 @@ const std::vector<std::string>& browseExtensions(BrowsePurpose purpose) {
     return project;
 }
 
+bool browseAccepts(BrowsePurpose purpose, const fs::path& path) {
+    return hasExtension(path, browseExtensions(purpose));
+}
+
 std::string browseFilterText(BrowsePurpose purpose) {
     std::string kind = purpose == BrowsePurpose::ImportMap ? "images"
                        : purpose == BrowsePurpose::NewFromMesh || purpose == BrowsePurpose::ImportMesh
@@ -226,7 +230,7 @@ std::optional<fs::path> FileBrowser::choose(const fs::path& path) {
         mMessage = path.string() + (isFolder(path) ? " is a folder" : " does not exist");
         return std::nullopt;
     }
-    if (!hasExtension(path, browseExtensions(mPurpose))) {
+    if (!browseAccepts(mPurpose, path)) {
         mMessage = path.filename().string() + " is not one of " + browseFilterText(mPurpose);
         return std::nullopt;
     }

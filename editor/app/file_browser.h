@@ -23,6 +23,8 @@ std::string_view browseTitle(BrowsePurpose purpose);
 std::string_view browseButton(BrowsePurpose purpose);
 // Lower-case extensions with the dot (".gltf"); a project's is ".json".
 const std::vector<std::string>& browseExtensions(BrowsePurpose purpose);
+// Whether `path`'s extension (any case) is one the purpose takes.
+bool browseAccepts(BrowsePurpose purpose, const std::filesystem::path& path);
 // "glTF (.gltf .glb)" and the like, for the filter line.
 std::string browseFilterText(BrowsePurpose purpose);
 

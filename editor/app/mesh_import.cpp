@@ -1,7 +1,6 @@
 #include "app/mesh_import.h"
 
 #include <algorithm>
-#include <cctype>
 #include <system_error>
 
 #include "mesh/gltf_loader.h"
@@ -14,13 +13,6 @@ namespace grass::editor {
 namespace fs = std::filesystem;
 
 namespace {
-
-bool isGltfText(const fs::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension == ".gltf";
-}
 
 // A free folder name under meshes/ for `stem`: meshes/rock, meshes/rock-2, ...
 std::string freshMeshFolder(const fs::path& projectFolder, const std::string& stem) {
@@ -37,12 +29,12 @@ std::string freshMeshFolder(const fs::path& projectFolder, const std::string& st
 
 std::vector<fs::path> assetFileSet(const fs::path& file) {
     std::vector<fs::path> files{file.filename()};
-    if (isGltfText(file))
-        for (const fs::path& part : core::gltfExternalFiles(file)) {
-            fs::path relative = part.lexically_relative(file.parent_path());
-            if (!relative.empty() && std::find(files.begin(), files.end(), relative) == files.end())
-                files.push_back(std::move(relative));
-        }
+    // Empty for a .glb or an unreadable file: nothing else to take along.
+    for (const fs::path& part : core::gltfExternalFiles(file)) {
+        fs::path relative = part.lexically_relative(file.parent_path());
+        if (!relative.empty() && std::find(files.begin(), files.end(), relative) == files.end())
+            files.push_back(std::move(relative));
+    }
     return files;
 }
 

@@ -2,8 +2,6 @@
 // places (home, the project, the working folder, recent project folders), the folder's entries
 // through the purpose's filter (a click selects, a double-click enters a folder or chooses a
 // file), the typed name or path (Enter chooses), and why a choice was refused.
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <system_error>
 
@@ -79,22 +77,15 @@ fs::path projectFileFor(const fs::path& path) {
 }
 
 void routeDroppedFiles(EditorState& s, const std::vector<std::string>& paths) {
-    const auto accepts = [](BrowsePurpose purpose, const fs::path& path) {
-        std::string extension = path.extension().string();
-        for (char& c : extension)
-            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        const auto& list = browseExtensions(purpose);
-        return std::find(list.begin(), list.end(), extension) != list.end();
-    };
     for (const std::string& dropped : paths) {
         const fs::path path(dropped);
         std::error_code ec;
-        if (accepts(BrowsePurpose::ImportMesh, path)) {
+        if (browseAccepts(BrowsePurpose::ImportMesh, path)) {
             s.importMeshRequested = dropped;
             s.transient.meshFolder = path.parent_path();
-        } else if (accepts(BrowsePurpose::ImportMap, path)) {
+        } else if (browseAccepts(BrowsePurpose::ImportMap, path)) {
             s.importMapRequested = dropped;
-        } else if (accepts(BrowsePurpose::OpenProject, path) ||
+        } else if (browseAccepts(BrowsePurpose::OpenProject, path) ||
                    fs::is_regular_file(path / "project.json", ec)) {
             askLeave(s, LeaveAction::Open, dropped);
         } else {

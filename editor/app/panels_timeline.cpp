@@ -56,12 +56,11 @@ void transportRow(ui::Ui& row, EditorState& s) {
         t.setSpeed(speed);
 }
 
-void drawTrack(ui::Ui& ui, EditorState& s) {
+void drawTrack(ui::Ui& ui, EditorState& s, const std::vector<core::OwnedKey>& keys) {
     core::Timeline& t = s.view.timeline;
     const ui::Style& style = ui.style();
     const ui::Rect track = ui.allocate({ui.availableWidth(), 18.0f});
     ui::Response r = ui.interact(track, ui.makeId("track"), ui::Sense::clickAndDrag());
-    const std::vector<core::OwnedKey> keys = core::ownedKeys(s.doc.project());
     const std::optional<PlacedObject>& selected = s.view.place.selected;
     const auto isSelected = [&](const core::OwnedKey& key) {
         return selected && (selected->kind == PlacedKind::Wind) == key.wind &&
@@ -109,14 +108,15 @@ void timelineStrip(ui::Context& ctx, ui::Rect rect, EditorState& s) {
     ui::Ui ui(ctx, {rect.min + ui::Vec2(8.0f, 4.0f), rect.max - ui::Vec2(8.0f, 2.0f)},
               ui::Layer::Panels);
     ui.pushId("timeline strip");
+    const std::vector<core::OwnedKey> keys = core::ownedKeys(s.doc.project());
     ui.horizontal([&](ui::Ui& row) {
         transportRow(row, s);
         char range[64];
         std::snprintf(range, sizeof range, "   %.2f – %.2f s, %zu keys", s.view.timeline.startS(),
-                      s.view.timeline.endS(), core::ownedKeys(s.doc.project()).size());
+                      s.view.timeline.endS(), keys.size());
         row.coloredLabel(range, style.textWeak);
     });
-    drawTrack(ui, s);
+    drawTrack(ui, s, keys);
     ui.popId();
 }
 

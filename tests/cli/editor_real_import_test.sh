@@ -12,33 +12,17 @@ editor=$1
 mesh=$2
 work=$3
 
-fail() { echo "FAIL: $*" >&2; [ -f "$work/log.txt" ] && sed 's/^/  editor: /' "$work/log.txt" >&2; exit 1; }
-[ -n "${DISPLAY:-}" ] || fail "no X display: run this under xvfb-run -a"
-command -v xdotool >/dev/null || fail "xdotool is missing (apt-get install xdotool)"
-rm -rf -- "$work" && mkdir -p -- "$work/p" "$work/meshes" "$work/config" || fail "cannot make $work"
+. "$(dirname "$0")/editor_window_lib.sh"
+mkdir -p -- "$work/meshes" "$work/config" || fail "cannot make $work"
 cp -- "$mesh" "$work/meshes/rock.glb" || fail "cannot copy $mesh"
-cat > "$work/p/project.json" <<'JSON'
-{
-  "format": "grass-project", "version": 2, "name": "tiny",
-  "mesh": {"procedural": "plane", "size": 2, "resolution": 2},
-  "layers": [{"name": "grass", "density": 20}],
-  "render": {"width": 900, "height": 640, "geometry": "strips", "msaa": 0}
-}
-JSON
-
 # The recent list goes to the test's own folder, not the user's.
-XDG_CONFIG_HOME="$work/config" "$editor" "$work/p" --no-physics --frame-delay-ms 900 \
-    > "$work/log.txt" 2>&1 &
-pid=$!
-trap 'kill $pid 2>/dev/null' EXIT
-xdotool search --sync --name "grass" >/dev/null || fail "no editor window"
-sleep 4  # the first frames (the UI's fonts, the field) are slower still
+export XDG_CONFIG_HOME="$work/config"
+start_editor
 
-act() { xdotool "$@"; sleep 2.5; }  # two frames or more between actions
 shot() { command -v import >/dev/null && import -window root "$work/$1" 2>/dev/null; }
 # Where the widgets are at Xvfb's scale of 1 (re-measure from a screenshot if the layout changes).
 act mousemove 24 12 click 1                   # File
-act mousemove 80 67 click 1          # New from mesh…
+act mousemove 80 67 click 1                   # New from mesh…
 act type "$work/meshes/rock.glb"
 shot browser.png
 act key Return
@@ -55,8 +39,7 @@ act key ctrl+o
 act type "$work/p"
 act key Return
 sleep 3
-kill $pid 2>/dev/null; wait $pid 2>/dev/null
-trap - EXIT
+stop_editor
 
 saved=$work/saved/project.json
 [ -f "$saved" ] || fail "Ctrl+S with a typed folder saved nothing"

@@ -11,28 +11,11 @@ set -u
 editor=$1
 work=$2
 
-fail() { echo "FAIL: $*" >&2; [ -f "$work/log.txt" ] && sed 's/^/  editor: /' "$work/log.txt" >&2; exit 1; }
-[ -n "${DISPLAY:-}" ] || fail "no X display: run this under xvfb-run -a"
-command -v xdotool >/dev/null || fail "xdotool is missing (apt-get install xdotool)"
-rm -rf -- "$work" && mkdir -p -- "$work/p" || fail "cannot make $work"
-cat > "$work/p/project.json" <<'JSON'
-{
-  "format": "grass-project", "version": 2, "name": "tiny",
-  "mesh": {"procedural": "plane", "size": 2, "resolution": 2},
-  "layers": [{"name": "grass", "density": 20}],
-  "render": {"width": 900, "height": 640, "geometry": "strips", "msaa": 0}
-}
-JSON
-
-"$editor" "$work/p" --no-physics --frame-delay-ms 900 > "$work/log.txt" 2>&1 &
-pid=$!
-trap 'kill $pid 2>/dev/null' EXIT
-xdotool search --sync --name "grass" >/dev/null || fail "no editor window"
-sleep 4  # the first frames (the UI's fonts, the field) are slower still
+. "$(dirname "$0")/editor_window_lib.sh"
+start_editor
 
 # Where the widgets are: the side panel's layout at Xvfb's scale of 1, top-left window
 # (re-measure from a screenshot if the panel's layout changes).
-act() { xdotool "$@"; sleep 2.5; }  # two frames or more between actions
 act mousemove 150 43 click 1                  # the name field, after its text
 act type f                                    # one letter: typed, not "frame the scene"
 act key Return                                # done typing
@@ -43,8 +26,7 @@ act type 35
 act key Return
 act key ctrl+s
 sleep 2
-kill $pid 2>/dev/null; wait $pid 2>/dev/null
-trap - EXIT
+stop_editor
 
 saved=$work/p/project.json
 grep -q '"name": "tinyf"' "$saved" || fail "the typed f did not reach the name field: $(grep '"name"' "$saved" | head -1)"
