@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "mesh/gltf_accessors.h"
+#include "mesh/gltf_parts.h"
 #include "mesh/gltf_scene_walk.h"
 #include "mesh/gltf_source.h"
 
@@ -137,6 +138,7 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file) {
         return withPath(instances.error());
     gltf::DecodedMeshes decoded(model, result.notes, false);
     SurfaceMeshBuilder builder;
+    gltf::PartTable parts(model, source->materialNames);
     MergeStats stats;
     for (const MeshInstance& instance : *instances) {
         const auto primitives = decoded.primitives(instance.mesh);
@@ -147,6 +149,7 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file) {
             const auto added = addPrimitive(builder, data, instance.world, meshName, stats);
             if (!added)
                 return withPath(added.error());
+            parts.addFaces(instance.node, instance.mesh, data.material, builder.mesh().n_faces());
         }
     }
 
@@ -163,6 +166,7 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file) {
         result.notes.push_back(std::to_string(builder.duplicatedForManifold()) +
                                " non-manifold triangles given their own vertices");
     result.mesh = builder.take();
+    setMeshParts(result.mesh, parts.take());
     result.hasNormals = stats.withNormals == stats.primitives;
     result.hasUv = stats.withUv == stats.primitives;
     if (!result.hasNormals)

@@ -142,7 +142,7 @@ Result<std::vector<MeshInstance>> collectInstances(const tinygltf::Model& model,
             const glm::dmat4 meshWorld = node.skin >= 0 ? glm::dmat4(1.0) : world;
             const auto gpuInstancing = node.extensions.find("EXT_mesh_gpu_instancing");
             if (gpuInstancing == node.extensions.end()) {
-                instances.push_back({mesh, meshWorld});
+                instances.push_back({mesh, meshWorld, glm::vec4(1.0f), static_cast<int>(index)});
             } else {
                 // Instances replace the plain mesh; each goes node world * instance (T R S).
                 const auto transforms = readInstanceTransforms(model, gpuInstancing->second,
@@ -162,7 +162,8 @@ Result<std::vector<MeshInstance>> collectInstances(const tinygltf::Model& model,
                                              std::to_string(transforms->size()) + " instances");
                 for (std::size_t i = 0; i < transforms->size(); ++i)
                     instances.push_back({mesh, meshWorld * (*transforms)[i],
-                                         colors->empty() ? glm::vec4(1.0f) : (*colors)[i]});
+                                         colors->empty() ? glm::vec4(1.0f) : (*colors)[i],
+                                         static_cast<int>(index)});
             }
         }
         onPath[index] = 1;

@@ -22,6 +22,7 @@ struct MeshInstance {
     std::size_t mesh = 0;
     glm::dmat4 world{1.0};
     glm::vec4 color{1.0f};  // the instance's _COLOR_0; white for plain nodes
+    int node = -1;          // the node that placed it; -1 for a file without scenes
 };
 
 // Normals go by the inverse-transpose of `world`'s linear part, whose columns are the cross

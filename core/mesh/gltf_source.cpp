@@ -250,6 +250,18 @@ std::vector<glm::vec4> baseColorFactors(const Json& doc) {
     return colors;
 }
 
+std::vector<std::string> materialNamesOf(const Json& doc) {
+    std::vector<std::string> names;
+    const Json* materials = member(doc, "materials");
+    if (!materials || !materials->is_array())
+        return names;
+    for (const Json& material : *materials) {
+        const Json* name = material.is_object() ? member(material, "name") : nullptr;
+        names.push_back(name && name->is_string() ? name->get<std::string>() : std::string());
+    }
+    return names;
+}
+
 // A Draco primitive's indices accessor has no bufferView (the indices are in the Draco stream),
 // which tinygltf 2.7 refuses; the accessor moves into the extension object as DRACO_INDICES_KEY,
 // where gltf_draco.cpp finds it to check the decoded count.
@@ -523,6 +535,7 @@ Result<GltfSource> parseGltfFile(const fs::path& file) {
         }
     }
     source.baseColors = baseColorFactors(doc);
+    source.materialNames = materialNamesOf(doc);
     moveDracoIndices(doc);
     // Geometry needs none of these; left in, a broken texture or animation could fail the load.
     for (const char* key :

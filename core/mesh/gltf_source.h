@@ -19,8 +19,10 @@ struct GltfSource {
     tinygltf::Model model;  // images, textures, materials, animations, skins, cameras left out
     std::vector<std::string> notes;  // things ignored, one line each
     // Each material's pbrMetallicRoughness.baseColorFactor (linear RGBA; white where absent or
-    // outside the spec's 0..1), by material index: the one material fact the geometry keeps.
+    // outside the spec's 0..1), by material index: with the names, what the geometry keeps of them.
     std::vector<glm::vec4> baseColors;
+    // Each material's name ("" when unnamed), for the placement rules (mesh_parts.h).
+    std::vector<std::string> materialNames;
 };
 
 // Errors name `file` as given and say what is wrong in one line.

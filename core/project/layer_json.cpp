@@ -156,6 +156,10 @@ constexpr std::array LAYER{
          .label = "tip colour"}),
     settings::object<settings::growth, nullptr, &GrassLayer::growth>(
         {.key = "growth", .allowedText = "see [growth](#growth)", .defaultText = "defaults (off)"}),
+    settings::object<settings::rules, nullptr, &GrassLayer::rules>(
+        {.key = "rules",
+         .allowedText = "see [rules](#rules)",
+         .defaultText = "defaults (everywhere)"}),
 };
 
 }  // namespace

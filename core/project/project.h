@@ -64,6 +64,32 @@ struct GrowthDesc {
     bool operator==(const GrowthDesc&) const = default;
 };
 
+// Where a layer may grow, besides its painted density map (issue 27). Every rule gives each
+// candidate blade a factor in [0, 1] and the candidate lives where keep < map(uv) · factor, so
+// rules combine with the maps and, like them, only remove blades. Names match a glTF node (or
+// any node above it), mesh or material by its name ("node 3" for an unnamed one, as the
+// editor's checklist shows it).
+struct PlacementRules {
+    std::vector<std::string> include;  // empty: the whole surface
+    std::vector<std::string> exclude;  // wins over include
+    // The angle between the surface and the ground plane (0 flat, 90 a wall), measured against
+    // gravity (its direction, or the centre a planet's grass leans from); soft: degrees outside
+    // the window over which the factor falls from 1 to 0.
+    float slopeMinDeg = 0.0f;
+    float slopeMaxDeg = 180.0f;
+    float slopeSoftDeg = 0.0f;
+    // Height along "up" (for centre gravity: distance from the centre), metres.
+    float altitudeMinM = -1.0e6f;
+    float altitudeMaxM = 1.0e6f;
+    float altitudeSoftM = 0.0f;
+    // No grass within this distance of the colliders (at time 0) and of the surfaces of the
+    // parts named in clearOf.
+    float clearanceM = 0.0f;
+    bool clearColliders = false;
+    std::vector<std::string> clearOf;
+    bool operator==(const PlacementRules&) const = default;
+};
+
 // Every map of a layer is resampled to this size when loaded and created at it when painted.
 inline constexpr int DEFAULT_MAP_RESOLUTION = 512;
 inline constexpr int MAX_MAP_RESOLUTION = 8192;
@@ -78,6 +104,7 @@ struct GrassLayer {
     std::string lightMap;
     glm::ivec2 mapResolution{DEFAULT_MAP_RESOLUTION, DEFAULT_MAP_RESOLUTION};
     GrowthDesc growth;
+    PlacementRules rules;
     // Outline of every blade of the layer (SPEC §7); triangle is what files without the key got
     // before shapes were per layer.
     BladeShape shape = BladeShape::Triangle;

@@ -38,6 +38,7 @@ std::vector<DocTable> projectFormatTables() {
         {"layers", markdownTable(layer(), GrassLayer{})},
         {"layers/blade", markdownTable(blade(), BladeRanges{})},
         {"layers/growth", markdownTable(growth(), GrowthDesc{})},
+        {"layers/rules", markdownTable(rules(), PlacementRules{})},
         {"cameras", markdownTable(camera(), CameraDesc{})},
         {"sun", markdownTable(sun(), SunDesc{})},
         {"lighting", markdownTable(lighting(), GrassLightingDesc{})},

@@ -56,6 +56,7 @@ void scatterUniform(const SurfaceSampler& sampler, const ScatterParams& params,
     result.blades.reserve(count);
     result.uvs.reserve(count);
     result.thinning.reserve(count);
+    result.faces.reserve(count);
     for (std::size_t i = 0; i < count; ++i) {
         const SurfaceSample at = sampler.sample(rng);
         // Every candidate draws the same numbers whether a map keeps it or not, so painting the
@@ -64,6 +65,7 @@ void scatterUniform(const SurfaceSampler& sampler, const ScatterParams& params,
         result.blades.push_back(makeBlade(at, params.blade, rng));
         result.uvs.push_back(at.uv);
         result.thinning.push_back({keep, -1});
+        result.faces.push_back(at.triangle);
     }
     result.uniformCount = result.blades.size();
 }
@@ -124,25 +126,28 @@ void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params, std::ui
             result.blades.push_back(makeBlade(at, params.blade, bladeRng));
             result.uvs.push_back(at.uv);
             result.thinning.push_back({keep, clump});
+            result.faces.push_back(at.triangle);
         }
     }
 }
 
 }  // namespace
 
-bool keepsCandidate(const ScatterCandidates& candidates, std::size_t i, const MapImage* densityMap) {
-    if (densityMap == nullptr || densityMap->texels.empty())
+bool keepsCandidate(const ScatterCandidates& candidates, std::size_t i, const MapImage* densityMap,
+                    float factor) {
+    const bool mapped = densityMap != nullptr && !densityMap->texels.empty();
+    if (!mapped && factor >= 1.0f)
         return true;
     const CandidateThinning& thinning = candidates.thinning[i];
-    const float here = densityMap->sample(candidates.uvs[i]);
+    const float here = (mapped ? densityMap->sample(candidates.uvs[i]) : 1.0f) * factor;
     if (thinning.clump < 0)
-        return thinning.keep < here;  // survives with probability map(uv)
+        return thinning.keep < here;  // survives with probability map(uv) · factor
     // Inside a clump the map thins relative to its centre: a blade survives with probability
     // min(1, map(blade)/map(centre)), so the expected density is min(map(centre), map(blade))
     // ≈ map, and a clump at the edge of a painted-out area stops at that edge instead of
     // spilling over it.
     const ClumpCentre& centre = candidates.clumps[static_cast<std::size_t>(thinning.clump)];
-    const float atCentre = densityMap->sample(centre.uv);
+    const float atCentre = mapped ? densityMap->sample(centre.uv) : 1.0f;
     return centre.keep < atCentre && thinning.keep * atCentre < here;
 }
 

@@ -70,13 +70,17 @@ struct ScatterCandidates {
     std::vector<Blade> blades;
     std::vector<glm::vec2> uvs;
     std::vector<CandidateThinning> thinning;
+    std::vector<std::uint32_t> faces;  // the face of the mesh each candidate stands on
     std::vector<ClumpCentre> clumps;
     std::size_t uniformCount = 0;  // candidates from the uniform distribution (they come first)
     std::vector<std::string> warnings;
 };
 
-// Whether candidate i lives under `densityMap` (null: all live).
-bool keepsCandidate(const ScatterCandidates& candidates, std::size_t i, const MapImage* densityMap);
+// Whether candidate i lives under `densityMap` (null: 1 everywhere) scaled by `factor` (the
+// layer's placement rules there, placement_rules.h): the map's value at the blade is multiplied
+// by it, so a factor of 0 removes the blade whatever the map says.
+bool keepsCandidate(const ScatterCandidates& candidates, std::size_t i, const MapImage* densityMap,
+                    float factor = 1.0f);
 
 // The most blades one call produces: a guard against a typo'd density (50 M blades are 3.2 GB
 // of GPU data), reported through ScatterResult::warnings.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "mesh/closest_point.h"
 #include "util/assert.h"
 
 namespace grass::core {
@@ -14,33 +15,6 @@ constexpr float TWO_PI = 6.28318530717958647692f;
 constexpr float PI = 3.14159265358979323846f;
 // Triangles per BVH leaf: small enough that the exact distance test rarely runs in vain.
 constexpr std::uint32_t BVH_LEAF_SIZE = 4;
-
-// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection §5.1.5).
-glm::vec3 closestPointOnTriangle(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
-    const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
-    const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-    if (d1 <= 0.0f && d2 <= 0.0f)
-        return a;
-    const glm::vec3 bp = p - b;
-    const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-    if (d3 >= 0.0f && d4 <= d3)
-        return b;
-    const float vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f)
-        return a + ab * (d1 / (d1 - d3));
-    const glm::vec3 cp = p - c;
-    const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-    if (d6 >= 0.0f && d5 <= d6)
-        return c;
-    const float vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f)
-        return a + ac * (d2 / (d2 - d6));
-    const float va = d3 * d6 - d5 * d4;
-    if (va <= 0.0f && (d4 - d3) >= 0.0f && (d5 - d6) >= 0.0f)
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    const float denom = 1.0f / (va + vb + vc);
-    return a + ab * (vb * denom) + ac * (vc * denom);
-}
 
 float squaredDistanceToBox(glm::vec3 p, glm::vec3 lo, glm::vec3 hi) {
     const glm::vec3 d = glm::max(glm::max(lo - p, p - hi), glm::vec3(0.0f));

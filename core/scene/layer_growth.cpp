@@ -95,7 +95,8 @@ GrownBlade growCandidate(const LayerSource& source, std::size_t candidate) {
     const GrownBlade removed{makeRestBlade(c.v0(), c.up(), 0.0f, 0.0f, c.s(), c.theta()), 0.0f,
                              false};
     const MapImage* density = source.maps.density.texels.empty() ? nullptr : &source.maps.density;
-    if (!keepsCandidate(source.candidates, candidate, density))
+    const float rule = source.ruleFactors.empty() ? 1.0f : source.ruleFactors[candidate];
+    if (!keepsCandidate(source.candidates, candidate, density, rule))
         return removed;
     if (!source.growthEnabled)
         return {c, 0.0f, true};

@@ -49,6 +49,8 @@ std::string& layerMapFile(GrassLayer& layer, LayerMap which);
 struct LayerSource {
     ScatterCandidates candidates;
     LayerMaps maps;
+    // Per candidate, the layer's placement rules there (placement_rules.h); empty: 1 everywhere.
+    std::vector<float> ruleFactors;
     bool growthEnabled = false;
     GrowthCurves curves;
     int stemLevels = MAX_STEM_LEVELS;

@@ -7,6 +7,7 @@
 #include "maps/map_image.h"
 #include "mesh/gltf_loader.h"
 #include "mesh/procedural.h"
+#include "scatter/placement_rules.h"
 #include "scene/camera.h"
 #include "util/byte_size.h"
 #include "util/rng.h"
@@ -37,11 +38,12 @@ double estimateLayerBlades(const ScatterParams& params, double area) {
 }
 
 std::size_t sceneBytesPerBlade() {
-    // The candidate (blade, uv, thinning), the grown slot (blade, wilt, shading), the physics
-    // state (η, rest tip) and the GPU copy (blade, shading).
-    return sizeof(Blade) + sizeof(glm::vec2) + sizeof(CandidateThinning) + sizeof(Blade) +
-           sizeof(float) + sizeof(BladeShading) + sizeof(float) + sizeof(glm::vec3) +
-           sizeof(Blade) + sizeof(BladeShading);
+    // The candidate (blade, uv, thinning, face; a rule factor only where rules thin), the grown
+    // slot (blade, wilt, shading), the physics state (η, rest tip) and the GPU copy (blade,
+    // shading).
+    return sizeof(Blade) + sizeof(glm::vec2) + sizeof(CandidateThinning) + sizeof(std::uint32_t) +
+           sizeof(Blade) + sizeof(float) + sizeof(BladeShading) + sizeof(float) +
+           sizeof(glm::vec3) + sizeof(Blade) + sizeof(BladeShading);
 }
 
 std::size_t sceneBytesPerBillboard() {
@@ -125,6 +127,24 @@ Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std
     return std::move(imported->mesh);
 }
 
+// What the placement rules measure against: the project's gravity and the colliders' surfaces
+// where they stand at time 0.
+static RuleWorld ruleWorldOf(const Project& project, const std::vector<SceneProp>& props) {
+    RuleWorld world;
+    world.gravity = project.physics.gravity;
+    world.gravityMode = project.physics.gravityMode;
+    for (const SceneProp& prop : props) {
+        const glm::mat4 model = prop.modelAt(0.0f);
+        for (const auto fh : prop.mesh.faces()) {
+            auto corners = facePositions(prop.mesh, fh);
+            for (glm::vec3& corner : corners)
+                corner = glm::vec3(model * glm::vec4(corner, 1.0f));
+            world.colliderTriangles.push_back(corners);
+        }
+    }
+    return world;
+}
+
 Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
                                  std::vector<std::string> notes) {
     Scene scene;
@@ -135,6 +155,11 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
     const Project& project = loaded.project;
     if (auto refused = refuseHugeScene(loaded, scene.area); !refused)
         return refused.error();
+    auto props = loadSceneProps(loaded);
+    if (!props)
+        return props.error();
+    scene.props = std::move(*props);
+    const RuleWorld ruleWorld = ruleWorldOf(project, scene.props);
     for (std::size_t i = 0; i < project.layers.size(); ++i) {
         const GrassLayer& layer = project.layers[i];
         LayerField field;
@@ -171,6 +196,7 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
         source.candidates = scatterCandidates(scene.mesh, layer.scatter, field.seed);
         for (auto& warning : source.candidates.warnings)
             scene.notes.push_back("layer \"" + layer.name + "\": " + warning);
+        source.ruleFactors = placementFactors(scene.mesh, source.candidates, layer.rules, ruleWorld);
         source.growthEnabled = layer.growth.enabled;
         source.curves = layer.growth.curves;
         source.stemLevels = layer.growth.levels;
@@ -190,10 +216,6 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
             field.shading[slot].waterAge.z = field.wilt[slot];
         scene.layers.push_back(std::move(field));
     }
-    auto props = loadSceneProps(loaded);
-    if (!props)
-        return props.error();
-    scene.props = std::move(*props);
     auto billboards = buildBillboards(loaded, scene.mesh);
     if (!billboards)
         return billboards.error();

@@ -58,7 +58,7 @@ struct Scene {
 };
 
 // The most blades one scene may hold: with the CPU copies, the GPU copy and the physics state,
-// sceneBytesPerBlade() each (292 bytes), 20 million is ~5.4 GiB; far beyond that a typo in a
+// sceneBytesPerBlade() each (296 bytes), 20 million is ~5.5 GiB; far beyond that a typo in a
 // density would freeze the machine instead of failing. buildScene refuses more up front, naming
 // the layer, the blade count and the memory it would need.
 inline constexpr double MAX_SCENE_BLADES = 20.0e6;

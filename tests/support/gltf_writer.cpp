@@ -132,6 +132,8 @@ public:
         if (!p.uvs.empty())
             attributes.push_back({"TEXCOORD_0", "VEC2", 2, flatten(p.uvs), p.uvEncoding});
         Json out = {{"mode", static_cast<int>(p.mode)}, {"attributes", Json::object()}};
+        if (p.material >= 0)
+            out["material"] = p.material;
         const bool viewlessPosition = !p.sparsePositions.empty() && p.sparseWithoutBufferView;
         std::vector<Json> accessors;
         for (const auto& a : attributes) {
@@ -371,6 +373,8 @@ GltfDocument buildGltf(const GltfAsset& asset) {
             meshJson["name"] = mesh.name;
         doc.json["meshes"].push_back(meshJson);
     }
+    for (const auto& material : asset.materials)
+        doc.json["materials"].push_back(Json::object({{"name", material}}));
     std::vector<bool> isChild(asset.nodes.size(), false);
     for (const auto& node : asset.nodes) {
         Json json = nodeJson(node);

@@ -54,6 +54,7 @@ struct GltfPrimitive {
     // zeros and `positions` only sets the count.
     std::vector<std::pair<std::uint32_t, glm::vec3>> sparsePositions;
     bool sparseWithoutBufferView = false;
+    int material = -1;  // into GltfAsset::materials; -1: none
 };
 
 struct GltfMesh {
@@ -89,6 +90,7 @@ struct GltfAsset {
     bool withScene = true;  // false: the file has no "scenes" and no "scene"
     std::vector<std::string> extensionsUsed;
     std::vector<std::string> extensionsRequired;
+    std::vector<std::string> materials;  // names of plain materials the primitives refer to
 };
 
 struct GltfDocument {

@@ -1,0 +1,20 @@
+// The terrain of issue 27's checks, written as a glTF file without UVs (as many downloaded
+// terrains come): a 20 m ground ("Ground", material "Soil"), a 70° cliff standing on it ("Cliff",
+// "Rock"), a sphere floating 6 m up ("Cloud", "Cloud") and a tree-like blob ("Tree" with children
+// "Trunk", "Bark" and "Canopy", "Leaves").
+#pragma once
+
+#include <filesystem>
+#include <glm/glm.hpp>
+
+namespace grass::test {
+
+// Where the fixture's parts stand, for tests that measure around them.
+inline constexpr float RULES_CLIFF_SLOPE_DEG = 70.0f;
+inline constexpr glm::vec3 RULES_CLOUD_CENTRE{-5.0f, 6.0f, -5.0f};
+inline constexpr float RULES_CLOUD_RADIUS = 1.5f;
+inline constexpr glm::vec3 RULES_TREE_BASE{3.0f, 0.0f, 4.0f};
+
+void writeRulesTerrain(const std::filesystem::path& file);
+
+}  // namespace grass::test
