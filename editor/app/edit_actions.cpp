@@ -2,6 +2,7 @@
 
 #include <system_error>
 
+#include "edit/layer_list.h"
 #include "maps/map_image.h"
 
 namespace grass::editor {
@@ -12,20 +13,44 @@ void resetHistory(EditorState& s) {
     s.doc.history.clear();
     s.doc.committed = s.doc.loaded.project;
     s.doc.paintedMaps.clear();
+    s.doc.waitingMaps.clear();
     s.view.gizmoDrag.reset();
     s.view.toolDragActive = false;
     s.view.place.selected.reset();
 }
 
-Result<void> carryPaintedMaps(const EditorState& s, core::Scene& from, core::Scene& to) {
+Result<void> carryPaintedMaps(EditorState& s, core::Scene& from, core::Scene& to) {
+    std::vector<std::string> before, after;
+    for (const core::LayerField& layer : from.layers)
+        before.push_back(layer.name);
+    for (const core::LayerField& layer : to.layers)
+        after.push_back(layer.name);
+    const auto match = core::matchLayers(before, after);
+    std::set<std::size_t> kept;
+    for (const auto& was : match)
+        if (was)
+            kept.insert(*was);
+    auto& waiting = s.doc.waitingMaps;
+    for (const auto& [layer, map] : s.doc.paintedMaps)
+        if (layer < from.layers.size() && !kept.contains(layer))
+            waiting[{before[layer], map}] = core::layerMap(from.layers[layer].source.maps, map);
+    std::set<std::pair<std::size_t, core::LayerMap>> painted;
+    for (std::size_t j = 0; j < to.layers.size(); ++j)
+        for (const core::LayerMap map : core::ALL_LAYER_MAPS) {
+            core::MapImage& target = core::layerMap(to.layers[j].source.maps, map);
+            if (match[j] && s.doc.paintedMaps.contains({*match[j], map})) {
+                target = core::layerMap(from.layers[*match[j]].source.maps, map);
+                painted.insert({j, map});
+            } else if (const auto found = waiting.find({after[j], map}); found != waiting.end()) {
+                target = std::move(found->second);
+                waiting.erase(found);
+                painted.insert({j, map});
+            }
+        }
+    s.doc.paintedMaps = painted;
     std::set<std::size_t> layers;
-    for (const auto& [layer, map] : s.doc.paintedMaps) {
-        if (layer >= from.layers.size() || layer >= to.layers.size())
-            continue;
-        core::layerMap(to.layers[layer].source.maps, map) =
-            core::layerMap(from.layers[layer].source.maps, map);
-        layers.insert(layer);
-    }
+    for (const auto& entry : painted)
+        layers.insert(entry.first);
     for (const std::size_t layer : layers) {
         // A re-grow over the whole mesh equals growing from these maps (layer_growth tests).
         const float margin = glm::length(to.bounds.size());
@@ -80,6 +105,19 @@ bool importMapImage(EditorState& s, const fs::path& file) {
     return true;
 }
 
+namespace {
+
+// Whether more than one map of the project reads `file`.
+bool mapFileShared(core::Project& project, const std::string& file) {
+    std::size_t readers = 0;
+    for (core::GrassLayer& layer : project.layers)
+        for (const core::LayerMap map : core::ALL_LAYER_MAPS)
+            readers += core::layerMapFile(layer, map) == file ? 1 : 0;
+    return readers > 1;
+}
+
+}  // namespace
+
 Result<void> savePaintedMaps(EditorState& s, const fs::path& folder) {
     if (!s.scene)
         return {};
@@ -89,7 +127,9 @@ Result<void> savePaintedMaps(EditorState& s, const fs::path& folder) {
         core::GrassLayer& layer = s.doc.loaded.project.layers[index];
         std::string& field = core::layerMapFile(layer, map);
         const std::string relative =
-            field.empty() ? core::defaultMapFile(layer.name, core::layerMapName(map)) : field;
+            field.empty() || mapFileShared(s.doc.loaded.project, field)
+                ? core::defaultMapFile(layer.name, core::layerMapName(map))
+                : field;
         auto target = core::resolveAssetPath(folder, relative, "layers/" + layer.name);
         if (!target)
             return target.error();

@@ -14,9 +14,11 @@ namespace grass::editor {
 // Starts the history afresh (a project was opened or created).
 void resetHistory(EditorState& state);
 
-// The painted maps of `from` carried into `to` (a scene re-grown from the same project after a
-// panel edit), which is then re-grown where they differ from what it loaded.
-Result<void> carryPaintedMaps(const EditorState& state, core::Scene& from, core::Scene& to);
+// The painted maps of `from` carried into `to` (a scene re-grown after a panel edit), which is
+// then re-grown where they differ from what it loaded. Each layer of `to` takes the maps of the
+// layer it was (core::matchLayers: by name, so they follow a reorder); a removed layer's maps
+// wait in Document::waitingMaps for an undo to bring it back.
+Result<void> carryPaintedMaps(EditorState& state, core::Scene& from, core::Scene& to);
 
 // The paint tool's map of the paint tool's layer becomes the picture in `file` (resampled to the
 // map's size), one undo step like a stroke; saved as painted maps are. The status bar says what
@@ -24,7 +26,9 @@ Result<void> carryPaintedMaps(const EditorState& state, core::Scene& from, core:
 bool importMapImage(EditorState& state, const std::filesystem::path& file);
 
 // Writes every painted map into `folder` (the layer's own file, else maps/<layer>-<map>.png) and
-// names it in the project; atomic per file. Called by saveTo before project.json is written.
+// names it in the project; atomic per file. Called by saveTo before project.json is written. A
+// file another map of the project also reads (a duplicated layer's) is left as it is: the
+// painted map goes to the layer's own default file instead.
 Result<void> savePaintedMaps(EditorState& state, const std::filesystem::path& folder);
 
 }  // namespace grass::editor

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -42,6 +43,9 @@ struct Document {
     core::Project committed;
     // Maps painted since the last save, by layer; saving writes them (edit_actions.h).
     std::set<std::pair<std::size_t, core::LayerMap>> paintedMaps;
+    // Painted maps waiting, by layer name, for their layer to come (back): those of a removed
+    // layer until an undo restores it, and those a duplicate starts from (edit_actions.h).
+    std::map<std::pair<std::string, core::LayerMap>, core::MapImage> waitingMaps;
 
     const core::Project& project() const { return loaded.project; }
 };

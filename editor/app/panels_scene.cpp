@@ -1,4 +1,5 @@
-// The side panel's sections: layers, wind, colliders, render settings (panels.h says which
+// The side panel's sections: wind, colliders, cameras, light, render settings (layers:
+// panels_layers.cpp) (panels.h says which
 // edits apply next frame and which re-grow the scene).
 #include <algorithm>
 #include <array>
@@ -8,6 +9,7 @@
 #include <string>
 
 #include "edit/timeline.h"
+#include "app/panel_rows.h"
 #include "app/panels.h"
 #include "app/setting_widget.h"
 #include "project/settings.h"
@@ -20,19 +22,6 @@
 namespace grass::editor {
 
 namespace {
-
-// A value the scene is grown from changed: re-grow once the edit ends.
-void regrow(EditorState& s, const ui::Response& r) {
-    if (r.changed())
-        s.transient.draft.regrow = true;
-}
-
-// The row of `key` in `table` for `value`; a change re-grows the scene.
-template <class S>
-void regrowRow(ui::Ui& ui, EditorState& s, std::span<const core::settings::Setting<S>> table,
-               std::string_view key, S& value) {
-    regrow(s, settingWidget(ui, table, key, value));
-}
 
 void vec3Row(ui::Ui& ui, EditorState& s, const char* label, glm::vec3& v, float speed,
              std::string_view tooltip) {
@@ -61,80 +50,7 @@ void positionRow(ui::Ui& ui, EditorState& s, glm::vec3& position, std::vector<co
         core::setKey(path, timeS, at, 0.5f * float(s.view.timeline.stepS()));
 }
 
-void growthCurves(ui::Ui& ui, EditorState& s, core::GrowthCurves& c) {
-    std::array<float, 3> soil{c.gy0, c.gy1, c.gy2};
-    std::array<float, 5> width{c.wy0, c.wy1, c.wy2, c.wy3, c.wy4};
-    std::array<float, 5> height{c.hy0, c.hy1, c.hy2, c.hy3, c.hy4};
-    const ui::Vec2 size{ui.availableWidth() - 8.0f, 80.0f};
-    regrow(s, ui::bezierCurveEdit(ui, "soil → growth  f1(g)", soil, size)
-                  .onHoverText("How growth responds to the soil map's value, both 0 to 1; "
-                               "drag a handle up or down"));
-    regrow(s, ui::twoPieceCurveEdit(ui, "light → width  f2(l)", width, size)
-                  .onHoverText("How blade width responds to the light map's value, both 0 to 1; "
-                               "drag a handle up or down"));
-    regrow(s, ui::twoPieceCurveEdit(ui, "light → height  f3(l)", height, size)
-                  .onHoverText("How blade height responds to the light map's value, both 0 to 1; "
-                               "drag a handle up or down"));
-    c.gy0 = soil[0], c.gy1 = soil[1], c.gy2 = soil[2];
-    c.wy0 = width[0], c.wy1 = width[1], c.wy2 = width[2], c.wy3 = width[3], c.wy4 = width[4];
-    c.hy0 = height[0], c.hy1 = height[1], c.hy2 = height[2], c.hy3 = height[3],
-    c.hy4 = height[4];
-}
-
-void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
-    const auto rows = core::settings::layer();
-    core::GrassLayer& layer = s.transient.draft.project.layers[index];
-    core::LayerField* field =
-        s.scene && index < s.scene->layers.size() ? &s.scene->layers[index] : nullptr;
-    // Shape and colours reach the drawn field at once; the rest re-grows it.
-    if (settingWidget(ui, rows, "shape", layer).changed() && field)
-        field->shape = layer.shape;
-    for (const std::string_view key : {"height", "width", "stiffness"})
-        regrowRow(ui, s, core::settings::blade(), key, layer.scatter.blade);
-    // The format takes any density; the scene refuses one that would grow more blades than a
-    // scene may hold: a typed one is refused in its box, with the count.
-    const double area = s.scene ? s.scene->area : 0.0;
-    const auto densityLimit = [&](double typed) -> std::string {
-        core::ScatterParams scatter = layer.scatter;
-        scatter.density = static_cast<float>(typed);
-        const double blades = core::estimateLayerBlades(scatter, area);
-        if (blades <= core::MAX_SCENE_BLADES)
-            return {};
-        char reason[160];
-        std::snprintf(reason, sizeof reason,
-                      "would grow %.3g blades on this %.3g m² surface; a scene holds at most %.3g",
-                      blades, area, core::MAX_SCENE_BLADES);
-        return reason;
-    };
-    regrow(s, settingWidget(ui, rows, "density", layer, nullptr, densityLimit));
-    for (const std::string_view key : {"root_color", "tip_color"})
-        if (settingWidget(ui, rows, key, layer).changed() && field) {
-            field->rootColor = layer.rootColor;
-            field->tipColor = layer.tipColor;
-        }
-    regrowRow(ui, s, core::settings::growth(), "enabled", layer.growth);
-    if (layer.growth.enabled)
-        ui.collapsingHeader("growth curves", [&](ui::Ui& curves) {
-            growthCurves(curves, s, layer.growth.curves);
-        });
-}
-
 }  // namespace
-
-void layerSection(ui::Ui& ui, EditorState& s) {
-    auto& layers = s.transient.draft.project.layers;
-    ui.collapsingHeader(
-        "Layers (" + std::to_string(layers.size()) + ")##layers",
-        [&](ui::Ui& section) {
-            for (std::size_t i = 0; i < layers.size(); ++i) {
-                section.pushId(std::uint64_t(i));
-                section.collapsingHeader(
-                    layers[i].name, [&](ui::Ui& body) { layerBody(body, s, i); }, i == 0);
-                section.popId();
-            }
-        },
-        true);
-}
 
 void windSection(ui::Ui& ui, EditorState& s) {
     auto& winds = s.transient.draft.project.wind;

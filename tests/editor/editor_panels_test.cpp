@@ -526,5 +526,97 @@ TEST(EditorPanels, ASettingShowsItsTooltipWhenHovered) {
     EXPECT_EQ(tooltip, "multiplies color · allowed: >= 0 · project.json \"intensity\"");
 }
 
+std::vector<std::string> layerNames(const editor::EditorState& state) {
+    std::vector<std::string> names;
+    for (const core::GrassLayer& layer : state.doc.project().layers)
+        names.push_back(layer.name);
+    return names;
+}
+
+// A re-grow as the Editor does it after a panel edit: the scene grown from the project, the
+// painted maps carried over.
+void regrowLikeTheEditor(EditorDriver& d) {
+    auto grown = core::buildScene(d.state.doc.loaded);
+    ASSERT_TRUE(grown.ok()) << grown.error().str();
+    ASSERT_TRUE(editor::carryPaintedMaps(d.state, d.scene, *grown).ok());
+    d.scene = std::move(*grown);
+    d.state.rebuildPending = false;
+}
+
+// Issue 27 item 2: layers as species, added, duplicated, reordered and removed in the panel, each
+// one undo step; the maps painted on a layer follow it through a reorder and a removal's undo.
+TEST(EditorPanels, LayersAreAddedDuplicatedMovedAndRemovedWithTheirPaintedMaps) {
+    const ScratchFolder folder("editor-layers");
+    EditorDriver d(folder.path());
+    d.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 4000.0f}};  // no scrolling
+    editor::resetHistory(d.state);
+    // Paint the first layer's density map (as a finished stroke leaves it).
+    const core::MapImage painted = core::makeConstantMap(64, 64, 0.25f);
+    d.scene.layers[0].source.maps.density = painted;
+    d.state.doc.paintedMaps.insert({0, core::LayerMap::Density});
+
+    d.click("add layer");
+    editor::recordProjectEdit(d.state, false);
+    EXPECT_EQ(layerNames(d.state), (std::vector<std::string>{"grass", "grass 2"}));
+    EXPECT_TRUE(d.state.rebuildPending);
+    regrowLikeTheEditor(d);
+
+    d.click("dup");  // the first layer's header is open
+    editor::recordProjectEdit(d.state, false);
+    EXPECT_EQ(layerNames(d.state), (std::vector<std::string>{"grass", "grass copy", "grass 2"}));
+    regrowLikeTheEditor(d);
+    EXPECT_EQ(d.scene.layers[1].source.maps.density.texels, painted.texels)
+        << "the copy starts from its source's painted map";
+
+    d.click("down");
+    editor::recordProjectEdit(d.state, false);
+    EXPECT_EQ(layerNames(d.state), (std::vector<std::string>{"grass copy", "grass", "grass 2"}));
+    EXPECT_EQ(d.state.view.paint.layer, 1u) << "the brush follows the layer it paints";
+    regrowLikeTheEditor(d);
+    ASSERT_FALSE(d.scene.layers[1].source.maps.density.texels.empty());
+    EXPECT_EQ(d.scene.layers[1].source.maps.density.texels[0], 0.25f);
+    EXPECT_TRUE(d.state.doc.paintedMaps.count({1, core::LayerMap::Density}));
+
+    // Remove the copy (the first layer, whose header is open): its painted map waits.
+    d.click("remove");
+    editor::recordProjectEdit(d.state, false);
+    regrowLikeTheEditor(d);
+    EXPECT_EQ(layerNames(d.state), (std::vector<std::string>{"grass", "grass 2"}));
+    EXPECT_TRUE(d.state.doc.waitingMaps.count({"grass copy", core::LayerMap::Density}))
+        << "the removed layer's painted map waits for an undo";
+    ASSERT_TRUE(editor::undo(d.state));
+    regrowLikeTheEditor(d);
+    EXPECT_EQ(layerNames(d.state), (std::vector<std::string>{"grass copy", "grass", "grass 2"}));
+    ASSERT_FALSE(d.scene.layers[0].source.maps.density.texels.empty());
+    EXPECT_EQ(d.scene.layers[0].source.maps.density.texels[0], 0.25f);
+    EXPECT_TRUE(d.state.doc.waitingMaps.empty());
+
+    // Undo every step: the layers come back in order, with the painted map on "grass".
+    while (editor::undo(d.state))
+        regrowLikeTheEditor(d);
+    EXPECT_EQ(layerNames(d.state), (std::vector<std::string>{"grass"}));
+    ASSERT_FALSE(d.scene.layers[0].source.maps.density.texels.empty());
+    EXPECT_EQ(d.scene.layers[0].source.maps.density.texels[0], 0.25f);
+}
+
+// Issue 27 item 1 in the editor: a layer's rules are edited in its "placement rules" section
+// and re-grow the field; the surface's names are offered as a checklist.
+TEST(EditorPanels, PlacementRulesAreEditedInTheLayer) {
+    const ScratchFolder folder("editor-rules");
+    EditorDriver d(folder.path());
+    d.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 4000.0f}};
+    editor::resetHistory(d.state);
+    d.click("placement rules");
+    const std::set<std::string> shown = d.shownTexts();
+    EXPECT_TRUE(shown.count("this surface names no parts (a procedural shape)"));
+    EXPECT_TRUE(shown.count("clear colliders"));
+    d.click("clear colliders");
+    editor::recordProjectEdit(d.state, false);
+    EXPECT_TRUE(d.state.doc.project().layers[0].rules.clearColliders);
+    EXPECT_TRUE(d.state.rebuildPending);
+    ASSERT_TRUE(editor::undo(d.state));
+    EXPECT_FALSE(d.state.doc.project().layers[0].rules.clearColliders);
+}
+
 }  // namespace
 }  // namespace grass::test

@@ -1,0 +1,259 @@
+// The side panel's Layers section (issue 27): each layer a species, added, duplicated, removed,
+// renamed and reordered here, with its blades, colours, growth and placement rules (the names of
+// the surface's glTF nodes, meshes and materials as a checklist, slope, altitude, clearance).
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "app/panel_rows.h"
+#include "app/panels.h"
+#include "edit/layer_list.h"
+#include "mesh/mesh_parts.h"
+#include "scatter/placement_rules.h"
+#include "project/settings.h"
+#include "ui/curve_edit.h"
+#include "ui/text_edit.h"
+#include "ui/ui.h"
+
+namespace grass::editor {
+
+namespace {
+
+void growthCurves(ui::Ui& ui, EditorState& s, core::GrowthCurves& c) {
+    std::array<float, 3> soil{c.gy0, c.gy1, c.gy2};
+    std::array<float, 5> width{c.wy0, c.wy1, c.wy2, c.wy3, c.wy4};
+    std::array<float, 5> height{c.hy0, c.hy1, c.hy2, c.hy3, c.hy4};
+    const ui::Vec2 size{ui.availableWidth() - 8.0f, 80.0f};
+    regrow(s, ui::bezierCurveEdit(ui, "soil → growth  f1(g)", soil, size)
+                  .onHoverText("How growth responds to the soil map's value, both 0 to 1; "
+                               "drag a handle up or down"));
+    regrow(s, ui::twoPieceCurveEdit(ui, "light → width  f2(l)", width, size)
+                  .onHoverText("How blade width responds to the light map's value, both 0 to 1; "
+                               "drag a handle up or down"));
+    regrow(s, ui::twoPieceCurveEdit(ui, "light → height  f3(l)", height, size)
+                  .onHoverText("How blade height responds to the light map's value, both 0 to 1; "
+                               "drag a handle up or down"));
+    c.gy0 = soil[0], c.gy1 = soil[1], c.gy2 = soil[2];
+    c.wy0 = width[0], c.wy1 = width[1], c.wy2 = width[2], c.wy3 = width[3], c.wy4 = width[4];
+    c.hy0 = height[0], c.hy1 = height[1], c.hy2 = height[2], c.hy3 = height[3],
+    c.hy4 = height[4];
+}
+
+// A name of the surface's parts in one of a rule's lists: a checkbox that adds or removes it.
+bool nameToggle(ui::Ui& row, std::vector<std::string>& names, const std::string& name,
+                const char* label, std::string_view tooltip) {
+    const auto at = std::find(names.begin(), names.end(), name);
+    bool on = at != names.end();
+    if (!row.checkbox(on, label).onHoverText(tooltip).changed())
+        return false;
+    if (on)
+        names.push_back(name);
+    else
+        names.erase(at);
+    return true;
+}
+
+// The rules of a layer: the surface's names as a checklist (grow only on, never on, keep clear
+// of), then the windows and the clearance.
+void rulesBody(ui::Ui& ui, EditorState& s, core::PlacementRules& rules) {
+    const std::vector<std::string> names =
+        s.scene ? core::partNames(s.scene->mesh) : std::vector<std::string>{};
+    if (names.empty()) {
+        ui.coloredLabel("this surface names no parts (a procedural shape)", ui.style().textWeak);
+    } else {
+        ui.collapsingHeader("names (" + std::to_string(names.size()) + ")##names", [&](ui::Ui& list) {
+            list.coloredLabel("only / never / clear of   node, mesh or material", list.style().textWeak);
+            for (std::size_t i = 0; i < names.size(); ++i) {
+                list.pushId(std::uint64_t(i));
+                list.horizontal([&](ui::Ui& row) {
+                    bool changed = nameToggle(row, rules.include, names[i], "##only",
+                                              "Grow only on the parts this name marks (and on "
+                                              "the other names ticked here)");
+                    changed |= nameToggle(row, rules.exclude, names[i], "##never",
+                                          "Never grow on the parts this name marks");
+                    changed |= nameToggle(row, rules.clearOf, names[i], "##clear",
+                                          "Keep the clearance distance of bare ground around "
+                                          "the parts this name marks");
+                    row.label(names[i]);
+                    if (changed)
+                        s.transient.draft.regrow = true;
+                });
+                list.popId();
+            }
+        });
+    }
+    const auto rows = core::settings::rules();
+    for (const std::string_view key :
+         {"slope", "slope_soft", "altitude", "altitude_soft", "clearance", "clear_colliders"})
+        regrowRow(ui, s, rows, key, rules);
+}
+
+void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
+    const auto rows = core::settings::layer();
+    core::GrassLayer& layer = s.transient.draft.project.layers[index];
+    core::LayerField* field =
+        s.scene && index < s.scene->layers.size() ? &s.scene->layers[index] : nullptr;
+    // Shape and colours reach the drawn field at once; the rest re-grows it.
+    if (settingWidget(ui, rows, "shape", layer).changed() && field)
+        field->shape = layer.shape;
+    for (const std::string_view key : {"height", "width", "stiffness"})
+        regrowRow(ui, s, core::settings::blade(), key, layer.scatter.blade);
+    // The format takes any density; the scene refuses one that would grow more blades than a
+    // scene may hold: a typed one is refused in its box, with the count.
+    const double area = s.scene ? s.scene->area : 0.0;
+    const auto densityLimit = [&](double typed) -> std::string {
+        core::ScatterParams scatter = layer.scatter;
+        scatter.density = static_cast<float>(typed);
+        const double blades = core::estimateLayerBlades(scatter, area);
+        if (blades <= core::MAX_SCENE_BLADES)
+            return {};
+        char reason[160];
+        std::snprintf(reason, sizeof reason,
+                      "would grow %.3g blades on this %.3g m² surface; a scene holds at most %.3g",
+                      blades, area, core::MAX_SCENE_BLADES);
+        return reason;
+    };
+    regrow(s, settingWidget(ui, rows, "density", layer, nullptr, densityLimit));
+    for (const std::string_view key : {"root_color", "tip_color"})
+        if (settingWidget(ui, rows, key, layer).changed() && field) {
+            field->rootColor = layer.rootColor;
+            field->tipColor = layer.tipColor;
+        }
+    regrowRow(ui, s, core::settings::growth(), "enabled", layer.growth);
+    if (layer.growth.enabled)
+        ui.collapsingHeader("growth curves", [&](ui::Ui& curves) {
+            growthCurves(curves, s, layer.growth.curves);
+        });
+    const bool open = core::rulesAreOpen(layer.rules);
+    ui.collapsingHeader(open ? "placement rules##rules" : "placement rules (on)##rules",
+                        [&](ui::Ui& rules) { rulesBody(rules, s, layer.rules); });
+}
+
+
+// A change to the list of layers, done after the loop that draws them.
+struct LayerAction {
+    enum class Kind { None, Duplicate, Remove, Up, Down } kind = Kind::None;
+    std::size_t index = 0;
+};
+
+// The row over a layer's settings: its name (a rename is refused when another layer has it),
+// move up and down, duplicate, remove.
+void layerControls(ui::Ui& ui, EditorState& s, std::size_t index, LayerAction& action) {
+    core::Project& project = s.transient.draft.project;
+    const std::size_t count = project.layers.size();
+    ui.horizontal([&](ui::Ui& row) {
+        std::string& name = project.layers[index].name;
+        bool committed = false;
+        ui::textEdit(row, "##layername", name, 120.0f, &committed)
+            .onHoverText("The layer's name, unique among layers; Enter renames");
+        if (committed) {
+            const auto& before = s.doc.committed.layers;
+            const std::string previous = index < before.size() ? before[index].name : name;
+            std::size_t twins = 0;
+            for (const core::GrassLayer& other : project.layers)
+                twins += other.name == name ? 1 : 0;
+            if (name.empty() || twins > 1) {
+                s.transient.message = name.empty() ? "a layer needs a name"
+                                                   : "another layer is named \"" + name + "\"";
+                name = previous;
+            }
+        }
+        // The live field's layer takes the name at once, so the maps painted on it follow it
+        // through a re-grow (core::matchLayers).
+        if (s.scene && index < s.scene->layers.size())
+            s.scene->layers[index].name = name;
+        using Kind = LayerAction::Kind;
+        if (index > 0 && row.button("up").onHoverText("Move this layer up the list").clicked())
+            action = {Kind::Up, index};
+        if (index + 1 < count &&
+            row.button("down").onHoverText("Move this layer down the list").clicked())
+            action = {Kind::Down, index};
+        if (count < core::MAX_LAYERS &&
+            row.button("dup").onHoverText("Duplicate this layer: its settings, rules and maps")
+                .clicked())
+            action = {Kind::Duplicate, index};
+        if (count > 1 &&
+            row.button("remove").onHoverText("Remove this layer (Ctrl+Z brings it back)").clicked())
+            action = {Kind::Remove, index};
+    });
+}
+
+// A duplicate starts from its source's maps as they are now, painted or not yet saved: those
+// wait under the copy's name until the re-grow gives it its field.
+void carryMapsIntoCopy(EditorState& s, std::size_t source, const std::string& copyName) {
+    if (!s.scene || source >= s.scene->layers.size())
+        return;
+    for (const auto& [layer, map] : s.doc.paintedMaps)
+        if (layer == source)
+            s.doc.waitingMaps[{copyName, map}] =
+                core::layerMap(s.scene->layers[source].source.maps, map);
+}
+
+void applyLayerAction(EditorState& s, const LayerAction& action) {
+    core::Project& project = s.transient.draft.project;
+    using Kind = LayerAction::Kind;
+    bool done = false;
+    switch (action.kind) {
+    case Kind::None: return;
+    case Kind::Duplicate:
+        done = core::duplicateLayer(project, action.index);
+        if (done)
+            carryMapsIntoCopy(s, action.index, project.layers[action.index + 1].name);
+        break;
+    case Kind::Remove: done = core::removeLayer(project, action.index); break;
+    case Kind::Up: done = core::moveLayer(project, action.index, true); break;
+    case Kind::Down: done = core::moveLayer(project, action.index, false); break;
+    }
+    if (!done)
+        return;
+    s.transient.draft.regrow = true;
+    // The brush keeps painting the layer it painted, wherever it moved.
+    std::size_t& brush = s.view.paint.layer;
+    if (action.kind == Kind::Up && brush == action.index)
+        brush = action.index - 1;
+    else if (action.kind == Kind::Up && brush == action.index - 1)
+        brush = action.index;
+    else if (action.kind == Kind::Down && brush == action.index)
+        brush = action.index + 1;
+    else if (action.kind == Kind::Down && brush == action.index + 1)
+        brush = action.index;
+    else if (action.kind == Kind::Remove && brush > action.index)
+        --brush;
+    brush = std::min(brush, project.layers.size() - 1);
+}
+
+}  // namespace
+
+void layerSection(ui::Ui& ui, EditorState& s) {
+    auto& layers = s.transient.draft.project.layers;
+    ui.collapsingHeader(
+        "Layers (" + std::to_string(layers.size()) + ")##layers",
+        [&](ui::Ui& section) {
+            LayerAction action;
+            for (std::size_t i = 0; i < layers.size(); ++i) {
+                section.pushId(std::uint64_t(i));
+                section.collapsingHeader(
+                    layers[i].name + "##layer",
+                    [&](ui::Ui& body) {
+                        layerControls(body, s, i, action);
+                        layerBody(body, s, i);
+                    },
+                    i == 0);
+                section.popId();
+            }
+            applyLayerAction(s, action);
+            if (layers.size() < core::MAX_LAYERS &&
+                section.button("add layer")
+                    .onHoverText("Add a grass layer (a species) with default settings, growing "
+                                 "everywhere; paint or give it rules to place it")
+                    .clicked() &&
+                core::addLayer(s.transient.draft.project))
+                s.transient.draft.regrow = true;
+        },
+        true);
+}
+
+}  // namespace grass::editor
