@@ -85,6 +85,17 @@ void readMeshFile(json::Reader& reader, json::Object& object, std::string_view k
 
 Json meshFileJson(const MeshSource& mesh) { return mesh.isFile ? Json(mesh.file) : Json(); }
 
+void readUvAtlas(json::Reader& reader, json::Object& object, std::string_view key, MeshSource& mesh) {
+    if (!object.find(key))
+        return;
+    object.readString(key, false, mesh.uvAtlas);
+    json::checkAssetPath(reader, object.pointerTo(key), mesh.uvAtlas);
+}
+
+Json uvAtlasJson(const MeshSource& mesh) {
+    return mesh.isFile && !mesh.uvAtlas.empty() ? Json(mesh.uvAtlas) : Json();
+}
+
 void readProceduralShape(json::Reader& reader, json::Object& object, std::string_view key, MeshSource& mesh) {
     const Json* shape = object.find(key);
     if (!shape)
@@ -133,6 +144,14 @@ constexpr std::array MESH{
          .allowedText = "`\"+Y\"`, `\"+Z\"`",
          .defaultText = "`\"+Y\"`"},
         readUp, upJson)),
+    fileOnly(settings::custom<MeshSource>(
+        {.key = "uv_atlas",
+         .help = "the generated UVs maps are painted in when the file's are missing or overlap "
+                 "(see [maps](#maps)); written by a save, not by hand",
+         .typeText = "string",
+         .allowedText = "a relative asset path",
+         .defaultText = "absent"},
+        readUvAtlas, uvAtlasJson)),
     procedural(settings::custom<MeshSource>(
         {.key = "procedural",
          .typeText = "string",

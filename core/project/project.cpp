@@ -130,8 +130,10 @@ std::vector<std::string> projectAssetPaths(const Project& project) {
         if (!path.empty() && std::find(paths.begin(), paths.end(), path) == paths.end())
             paths.push_back(path);
     };
-    if (project.mesh.isFile)
+    if (project.mesh.isFile) {
         add(project.mesh.file);
+        add(project.mesh.uvAtlas);
+    }
     for (const GrassLayer& layer : project.layers) {
         add(layer.densityMap);
         add(layer.soilMap);

@@ -45,6 +45,10 @@ struct MeshSource {
     // The file's units and up axis (when isFile; mesh_frame.h): "unit", "up".
     float metresPerUnit = 1.0f;
     UpAxis up = UpAxis::Y;
+    // The UVs grass maps are painted in, when the file's cannot be (missing or overlapping):
+    // a generated atlas kept next to the project (core/mesh/uv_atlas_file.h); "" until a save
+    // writes one.
+    std::string uvAtlas;
     bool operator==(const MeshSource&) const = default;
 };
 

@@ -105,7 +105,7 @@ static Result<void> refuseHugeScene(const LoadedProject& loaded, double area) {
 }
 
 Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes,
-                                    SurfaceLook* look) {
+                                    SurfaceLook* look, PaintUvs* paintUvs) {
     const MeshSource& source = loaded.project.mesh;
     if (!source.isFile)
         return makeProceduralMesh(source.procedural);
@@ -118,9 +118,30 @@ Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std
     if (notes)
         for (auto& note : imported->notes)
             notes->push_back(path->string() + ": " + note);
+    SurfaceLook surfaceLook = surfaceLookOf(*path, imported->hasUv);
+    std::filesystem::path atlasFile;
+    if (!source.uvAtlas.empty()) {
+        auto resolved = resolveAssetPath(loaded.folder, source.uvAtlas, "/mesh/uv_atlas");
+        if (!resolved)
+            return Error{loaded.file.string() + ": " + resolved.error().path,
+                         resolved.error().message};
+        atlasFile = *resolved;
+    }
+    int coarsestMap = MAX_MAP_RESOLUTION;
+    for (const GrassLayer& layer : loaded.project.layers)
+        coarsestMap = std::min({coarsestMap, layer.mapResolution.x, layer.mapResolution.y});
+    std::vector<std::string> uvNotes;
+    PaintUvs uvs = makeUvsPaintable(imported->mesh, imported->hasUv,
+                                    !surfaceLook.baseTexture.pixels.empty(), atlasFile,
+                                    coarsestMap, uvNotes);
+    if (notes)
+        for (auto& note : uvNotes)
+            notes->push_back(path->string() + ": " + note);
+    if (paintUvs)
+        *paintUvs = std::move(uvs);
     applyMeshFrame(imported->mesh, source.metresPerUnit, source.up);
     if (look) {
-        *look = surfaceLookOf(*path, imported->hasUv);
+        *look = std::move(surfaceLook);
         if (notes)
             notes->insert(notes->end(), look->notes.begin(), look->notes.end());
     }
@@ -407,12 +428,15 @@ Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
 Result<Scene> buildScene(const LoadedProject& loaded) {
     std::vector<std::string> notes;
     SurfaceLook look;
-    auto mesh = loadProjectMesh(loaded, &notes, &look);
+    PaintUvs paintUvs;
+    auto mesh = loadProjectMesh(loaded, &notes, &look, &paintUvs);
     if (!mesh)
         return mesh.error();
     auto scene = buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes));
-    if (scene)
+    if (scene) {
         scene->look = std::move(look);
+        scene->paintUvs = std::move(paintUvs);
+    }
     return scene;
 }
 

@@ -12,6 +12,7 @@
 #include "mesh/surface_mesh.h"
 #include "scene/blade_shading.h"
 #include "scene/layer_growth.h"
+#include "scene/paint_uvs.h"
 #include "scene/scene_props.h"
 #include "scene/surface_look.h"
 #include "project/project.h"
@@ -54,6 +55,7 @@ struct Scene {
     BillboardLayer billboards;
     std::vector<std::string> notes;  // warnings from loading (mesh notes, map conversions)
     SurfaceLook look;                // the surface's own material (a glTF file's)
+    PaintUvs paintUvs;               // how its UV0 became paintable (paint_uvs.h)
     std::size_t totalBlades() const;
 };
 
@@ -127,8 +129,9 @@ Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
 
 // The mesh of a project alone (no grass), for `render --mesh` and mesh-info. `look`, when given,
 // gets the surface's own material (surface_look.h; nothing for a procedural surface).
+// `paintUvs`, when given, gets how the surface's UVs were made paintable (paint_uvs.h).
 Result<SurfaceMesh> loadProjectMesh(const LoadedProject& project, std::vector<std::string>* notes,
-                                    SurfaceLook* look = nullptr);
+                                    SurfaceLook* look = nullptr, PaintUvs* paintUvs = nullptr);
 
 // Grows the layers of `project` on a mesh already loaded (so a file is read once).
 Result<Scene> buildSceneFromMesh(const LoadedProject& project, SurfaceMesh mesh,

@@ -15,6 +15,7 @@ bool replaceDocument(EditorState& state, Live& live, core::LoadedProject next, b
     }
     const std::size_t steps = live.physics ? live.physics->steps : 0;
     live = std::move(*built);
+    ++state.mapsChanged;  // the map overlay goes to the new renderer
     if (live.physics)
         live.physics->steps = steps;  // the field starts from rest, the clock goes on
     state.doc.loaded = std::move(next);

@@ -4,6 +4,7 @@
 
 #include "edit/layer_list.h"
 #include "maps/map_image.h"
+#include "mesh/uv_atlas_file.h"
 
 namespace grass::editor {
 
@@ -105,6 +106,27 @@ bool importMapImage(EditorState& s, const fs::path& file) {
     return true;
 }
 
+bool exportMapImage(EditorState& s, const fs::path& file) {
+    const std::size_t layer = s.view.paint.layer;
+    const core::LayerMap which = s.view.paint.map;
+    if (!s.scene || layer >= s.scene->layers.size() || layer >= s.doc.project().layers.size()) {
+        s.transient.message = "cannot export " + file.string() + ": the brush's layer does not exist";
+        return false;
+    }
+    const core::MapImage& current = core::layerMap(s.scene->layers[layer].source.maps, which);
+    const glm::ivec2 size = s.doc.project().layers[layer].mapResolution;
+    const core::MapImage map =
+        current.texels.empty() ? core::makeConstantMap(size.x, size.y, 1.0f) : current;
+    if (auto saved = core::saveMapImage(map, file); !saved) {
+        s.transient.message = "cannot export: " + saved.error().str();
+        return false;
+    }
+    s.transient.message = "exported the " + std::string(core::layerMapName(which)) +
+                          " map of layer \"" + s.doc.project().layers[layer].name + "\" to " +
+                          file.string();
+    return true;
+}
+
 namespace {
 
 // Whether more than one map of the project reads `file`.
@@ -140,6 +162,22 @@ Result<void> savePaintedMaps(EditorState& s, const fs::path& folder) {
             !saved)
             return saved.error();
         field = relative;
+    }
+    // A generated atlas goes with the maps painted on it (scene/paint_uvs.h): next to the mesh
+    // file, named after it, so the next open paints in the same UVs.
+    core::PaintUvs& uvs = s.scene->paintUvs;
+    core::MeshSource& mesh = s.doc.loaded.project.mesh;
+    if (uvs.generated && mesh.isFile) {
+        const std::string relative =
+            fs::path(mesh.file).replace_extension(".uvatlas").generic_string();
+        auto target = core::resolveAssetPath(folder, relative, "mesh/uv_atlas");
+        if (!target)
+            return target.error();
+        if (auto saved = core::saveUvAtlas(*target, uvs.corners, uvs.fingerprint); !saved)
+            return saved.error();
+        mesh.uvAtlas = relative;
+        uvs.generated = false;
+        uvs.fromFile = true;
     }
     // The map names written into the project are part of the save, not an edit to undo.
     s.doc.committed = s.doc.loaded.project;

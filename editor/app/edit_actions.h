@@ -25,6 +25,11 @@ Result<void> carryPaintedMaps(EditorState& state, core::Scene& from, core::Scene
 // happened (or why not: no such layer, an unreadable picture).
 bool importMapImage(EditorState& state, const std::filesystem::path& file);
 
+// Writes the paint tool's map of the paint tool's layer, as it is now (painted or not yet saved;
+// a map never painted is 1 everywhere at the layer's map resolution), to `file`: PNG (16-bit),
+// TIFF or EXR by extension, atomically. The status bar says where, or why not.
+bool exportMapImage(EditorState& state, const std::filesystem::path& file);
+
 // Writes every painted map into `folder` (the layer's own file, else maps/<layer>-<map>.png) and
 // names it in the project; atomic per file. Called by saveTo before project.json is written. A
 // file another map of the project also reads (a duplicated layer's) is left as it is: the

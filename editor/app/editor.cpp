@@ -67,6 +67,7 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     state.tools = e.mLive.tools.get();
     // Patches the brush or an undo re-grew: only those go up to the GPU, at once.
     state.regrown = [&e](std::size_t layer, const core::RegrowReport& report) {
+        ++e.mState.mapsChanged;
         e.mLive.renderer->uploadRegrown(layer, report);
         if (e.mLive.physics)
             e.mLive.physics->gpu.uploadRegrown(layer, *e.mLive.scene, report.patches);
@@ -249,6 +250,7 @@ void Editor::frameLiveSurface() {
 void Editor::adoptLive(Live next) {
     const std::size_t steps = mLive.physics ? mLive.physics->steps : 0;
     mLive = std::move(next);
+    ++mState.mapsChanged;  // a new renderer has no overlay yet, even at the old one's address
     mState.scene = mLive.scene.get();
     mState.tools = mLive.tools.get();
     if (mLive.physics)
@@ -335,6 +337,20 @@ void Editor::chooseQuality() {
     mState.transient.status.reduced = view.quality.level() > 0 ? view.quality.reduction().label : "";
 }
 
+void Editor::syncMapOverlay() {
+    const PaintToolSettings& paint = mState.view.paint;
+    const bool wanted = paint.showMap && mState.view.tool == ViewportTool::Paint &&
+                        paint.layer < mLive.scene->layers.size();
+    std::optional<OverlayShown> shown;
+    if (wanted)
+        shown = OverlayShown{mLive.renderer.get(), paint.layer, paint.map, mState.mapsChanged};
+    if (shown == mOverlayShown)
+        return;
+    mLive.renderer->setMapOverlay(
+        shown ? &core::layerMap(mLive.scene->layers[paint.layer].source.maps, paint.map) : nullptr);
+    mOverlayShown = shown;
+}
+
 void Editor::render(int width, int height) {
     const core::Reduction& r = mState.view.quality.reduction();
     const int samples = r.msaaOff ? 0 : mState.doc.project().render.msaaSamples;
@@ -343,6 +359,7 @@ void Editor::render(int width, int height) {
     const int h = std::max(1, int(float(mView.h) * r.resolutionScale));
     if (!mTarget || mTarget->width() != w || mTarget->height() != h || mTarget->samples() != samples)
         mTarget = std::make_unique<gl::Framebuffer>(w, h, samples);
+    syncMapOverlay();
     mLive.renderer->render(mCamera, w, h, *mTarget, mState.view.options);
     if (!mUi) {
         mTarget->blitTo(0, width, height);

@@ -95,6 +95,8 @@ private:
     // The adaptive quality's rung for this frame (viewRenderOptions applies it).
     void chooseQuality();
     void render(int width, int height);
+    // Gives the renderer the map overlay the paint tool asks for, when it changed.
+    void syncMapOverlay();
     // Screenshots and the turntable; false when the --screenshot was written (the end).
     Result<bool> writeOutputs(int width, int height);
     void updateStatus(bool statusDue, bool timingsDue);
@@ -127,6 +129,16 @@ private:
     bool mToolDrag = false;    // a drag that began on a tool (brush, gizmo) stays the tool's
     bool mInteracting = false;  // orbiting, zooming, painting, dragging, playing: this frame
     std::string mShownTitle;
+    // What the renderer's map overlay shows (syncMapOverlay): none, or a layer's map as of a
+    // count of map changes, on one renderer.
+    struct OverlayShown {
+        const void* renderer = nullptr;
+        std::size_t layer = 0;
+        core::LayerMap map = core::LayerMap::Density;
+        std::uint64_t changes = 0;
+        bool operator==(const OverlayShown&) const = default;
+    };
+    std::optional<OverlayShown> mOverlayShown;
     double mAutosaveDueS = 0.0;
     Clock::time_point mStartTime, mLastStatus, mLastTick;
     int mFramesSinceStatus = 0;  // for the status bar's frame rate

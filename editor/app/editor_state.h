@@ -154,6 +154,9 @@ struct EditorState {
     // Patches re-grown by painting or undo go straight to whoever draws the field (the Editor
     // uploads them to the renderer and the GPU physics); unset, they are dropped.
     std::function<void(std::size_t layer, const core::RegrowReport&)> regrown;
+    // Counts the changes to the live field's maps (each re-grow the brush, an import or an undo
+    // reports): the map overlay is uploaded again when it moves.
+    std::uint64_t mapsChanged = 0;
     // The scene must be re-grown from the document once no widget is being dragged.
     bool rebuildPending = false;
 

@@ -45,6 +45,7 @@ std::string_view browseTitle(BrowsePurpose purpose) {
         case BrowsePurpose::NewFromMesh: return "New project from mesh";
         case BrowsePurpose::ImportMesh: return "Import mesh";
         case BrowsePurpose::ImportMap: return "Import map image";
+        case BrowsePurpose::ExportMap: return "Export map image";
     }
     return "";
 }
@@ -56,6 +57,7 @@ std::string_view browseButton(BrowsePurpose purpose) {
         case BrowsePurpose::NewFromMesh: return "Create";
         case BrowsePurpose::ImportMesh:
         case BrowsePurpose::ImportMap: return "Import";
+        case BrowsePurpose::ExportMap: return "Export";
     }
     return "";
 }
@@ -65,12 +67,15 @@ const std::vector<std::string>& browseExtensions(BrowsePurpose purpose) {
     static const std::vector<std::string> mesh{".gltf", ".glb"};
     // What core/util/image_file reads through OpenImageIO for a map.
     static const std::vector<std::string> image{".png", ".exr", ".jpg", ".jpeg", ".tif", ".tiff"};
+    // What a map is written to without loss (16-bit PNG and TIFF, float EXR: saveMapImage).
+    static const std::vector<std::string> exported{".png", ".exr", ".tif", ".tiff"};
     switch (purpose) {
         case BrowsePurpose::OpenProject:
         case BrowsePurpose::SaveProject: return project;
         case BrowsePurpose::NewFromMesh:
         case BrowsePurpose::ImportMesh: return mesh;
         case BrowsePurpose::ImportMap: return image;
+        case BrowsePurpose::ExportMap: return exported;
     }
     return project;
 }
@@ -80,7 +85,8 @@ bool browseAccepts(BrowsePurpose purpose, const fs::path& path) {
 }
 
 std::string browseFilterText(BrowsePurpose purpose) {
-    std::string kind = purpose == BrowsePurpose::ImportMap ? "images"
+    std::string kind = purpose == BrowsePurpose::ImportMap || purpose == BrowsePurpose::ExportMap
+                           ? "images"
                        : purpose == BrowsePurpose::NewFromMesh || purpose == BrowsePurpose::ImportMesh
                            ? "glTF"
                            : "projects";
@@ -218,6 +224,16 @@ std::optional<fs::path> FileBrowser::choose(const fs::path& path) {
     switch (mPurpose) {
         case BrowsePurpose::SaveProject:
             return path;  // a new name is a new project folder (or .json file)
+        case BrowsePurpose::ExportMap:
+            if (isFolder(path)) {
+                mMessage = path.string() + " is a folder";
+                return std::nullopt;
+            }
+            if (!browseAccepts(mPurpose, path)) {
+                mMessage = path.filename().string() + " is not one of " + browseFilterText(mPurpose);
+                return std::nullopt;
+            }
+            return path;  // a new file or one to replace
         case BrowsePurpose::OpenProject:
             if (isFolder(path) || isFile(path))
                 return path;

@@ -17,7 +17,7 @@
 namespace grass::editor {
 
 // What the browser picks a path for; each purpose has its own filter and button.
-enum class BrowsePurpose { OpenProject, SaveProject, NewFromMesh, ImportMesh, ImportMap };
+enum class BrowsePurpose { OpenProject, SaveProject, NewFromMesh, ImportMesh, ImportMap, ExportMap };
 
 std::string_view browseTitle(BrowsePurpose purpose);
 std::string_view browseButton(BrowsePurpose purpose);

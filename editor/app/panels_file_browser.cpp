@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "app/edit_actions.h"
 #include "app/mesh_import.h"
 #include "app/panels.h"
 #include "ui/text_edit.h"
@@ -61,6 +62,10 @@ void choose(EditorState& s, BrowsePurpose purpose, const fs::path& path) {
             s.transient.meshFolder = path.parent_path();
             s.importMapRequested = path.string();
             break;
+        case BrowsePurpose::ExportMap:
+            s.transient.meshFolder = path.parent_path();
+            exportMapImage(s, path);
+            break;
     }
 }
 
@@ -116,6 +121,16 @@ void openBrowser(EditorState& s, BrowsePurpose purpose) {
                 start = projectFolder.parent_path();
                 typed = projectFolder.filename().string();
             }
+            break;
+        case BrowsePurpose::ExportMap:
+            // "<layer>-<map>.png" in the project's maps folder, as a save would name it.
+            if (s.view.paint.layer < s.doc.project().layers.size())
+                typed = fs::path(core::defaultMapFile(s.doc.project().layers[s.view.paint.layer].name,
+                                                      core::layerMapName(s.view.paint.map)))
+                            .filename()
+                            .string();
+            if (fs::is_directory(projectFolder / "maps"))
+                start = projectFolder / "maps";
             break;
         default:
             if (!s.transient.meshFolder.empty())

@@ -28,6 +28,18 @@ void brushSettings(ui::Ui& ui, EditorState& s) {
             .onHoverText("Which of the layer's maps the brush paints: density, soil or light")
             .changed())
         s.view.paint.map = core::LayerMap(map);
+    ui.horizontal([&](ui::Ui& row) {
+        row.checkbox(s.view.paint.showMap, "show map")
+            .onHoverText("Colour the surface by the map being painted: purple 0, yellow 1");
+        if (row.button("import…")
+                .onHoverText("Replace this map with a picture (PNG, EXR, TIFF, JPEG); one undo step")
+                .clicked())
+            openBrowser(s, BrowsePurpose::ImportMap);
+        if (row.button("export…")
+                .onHoverText("Write this map as it is now to a PNG (16-bit), EXR or TIFF file")
+                .clicked())
+            openBrowser(s, BrowsePurpose::ExportMap);
+    });
     core::BrushSettings& b = s.view.paint.brush;
     ui.horizontal([&](ui::Ui& row) {
         row.radioValue(b.mode, core::BrushMode::Add, "add")

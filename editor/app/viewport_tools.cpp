@@ -398,14 +398,21 @@ void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const Edito
                  core::surfacePointsOnRing(s.tools->bvh, hit->posWorld, hit->normal, radius, RING_POINTS))
                 if (auto px = core::projectToPixel(camera, p, pointer.viewportSize))
                     points.push_back(toPoints(*px));
-            const bool inverted = pointer.ctrl;
-            const ui::Color32 color = inverted ? ui::Color32::rgb(255, 120, 100)
-                                               : ui::Color32::rgb(255, 255, 255);
+            // What a stroke now would do, Ctrl included: a red ring and a minus sign when it
+            // lowers the map, a plus when it raises it.
+            const core::BrushMode mode = effectiveBrush(s.view.paint.brush, pointer.ctrl).mode;
+            const bool lowers = mode == core::BrushMode::Subtract;
+            const ui::Color32 color = lowers ? ui::Color32::rgb(255, 120, 100)
+                                             : ui::Color32::rgb(255, 255, 255);
             if (points.size() > 2) {
                 painter.path(points, true, ui::Color32::transparent(),
                              {2.5f, ui::Color32{0, 0, 0, 140}});
                 painter.path(std::move(points), true, ui::Color32::transparent(), {1.2f, color});
             }
+            if (mode == core::BrushMode::Add || lowers)
+                if (auto centre = core::projectToPixel(camera, hit->posWorld, pointer.viewportSize))
+                    painter.text(toPoints(*centre) + ui::Vec2(-4.0f, -9.0f), lowers ? "-" : "+",
+                                 16.0f, color);
         }
     }
     if (s.view.tool != ViewportTool::Camera)

@@ -42,6 +42,8 @@ struct PaintToolSettings {
     core::LayerMap map = core::LayerMap::Density;
     core::BrushSettings brush;
     bool radiusChosen = false;  // false: the first stroke sizes the brush to the scene
+    // Show the brush's map over the terrain in colour (0 purple, 1 yellow) while painting.
+    bool showMap = false;
 };
 
 enum class PlacedKind { Wind, Collider };

@@ -374,7 +374,11 @@ GltfDocument buildGltf(const GltfAsset& asset) {
         doc.json["meshes"].push_back(meshJson);
     }
     for (const auto& material : asset.materials)
-        doc.json["materials"].push_back(Json::object({{"name", material}}));
+        doc.json["materials"].push_back(Json::object(
+            {{"name", material.name},
+             {"pbrMetallicRoughness",
+              {{"baseColorFactor", {material.baseColor.r, material.baseColor.g,
+                                    material.baseColor.b, material.baseColor.a}}}}}));
     std::vector<bool> isChild(asset.nodes.size(), false);
     for (const auto& node : asset.nodes) {
         Json json = nodeJson(node);

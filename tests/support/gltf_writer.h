@@ -82,6 +82,12 @@ struct GltfNode {
     std::vector<GltfInstance> instances;
 };
 
+// A plain material: a name and pbrMetallicRoughness.baseColorFactor.
+struct GltfMaterial {
+    std::string name;
+    glm::vec4 baseColor{1.0f};
+};
+
 struct GltfAsset {
     std::vector<GltfMesh> meshes;
     std::vector<GltfNode> nodes;
@@ -90,7 +96,7 @@ struct GltfAsset {
     bool withScene = true;  // false: the file has no "scenes" and no "scene"
     std::vector<std::string> extensionsUsed;
     std::vector<std::string> extensionsRequired;
-    std::vector<std::string> materials;  // names of plain materials the primitives refer to
+    std::vector<GltfMaterial> materials;  // what the primitives' `material` indices refer to
 };
 
 struct GltfDocument {

@@ -46,7 +46,11 @@ GltfPrimitive withoutUvs(GltfPrimitive p, int material) {
 
 void writeRulesTerrain(const std::filesystem::path& file) {
     GltfAsset asset;
-    asset.materials = {"Soil", "Rock", "Cloud", "Bark", "Leaves"};
+    asset.materials = {{"Soil", {0.30f, 0.22f, 0.13f, 1.0f}},
+                       {"Rock", {0.42f, 0.40f, 0.38f, 1.0f}},
+                       {"Cloud", {0.95f, 0.95f, 0.97f, 1.0f}},
+                       {"Bark", {0.25f, 0.16f, 0.09f, 1.0f}},
+                       {"Leaves", {0.16f, 0.36f, 0.10f, 1.0f}}};
     asset.meshes = {
         {"GroundMesh", {withoutUvs(gridPrimitive(20.0f, 20.0f, 20), 0)}},
         {"CliffMesh", {withoutUvs(gridPrimitive(4.0f, 8.0f, 4), 1)}},

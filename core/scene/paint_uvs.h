@@ -1,0 +1,36 @@
+// The UVs a surface's grass maps are painted in (issue 27 item 3). A map is painted in UV0, so
+// UVs that are missing (a planar projection is generated) or overlap would let a stroke on one
+// surface paint another: such a surface gets a generated non-overlapping atlas
+// (core/mesh/uv_atlas.h), kept in the project (mesh "uv_atlas") so its maps stay where they
+// were each time it opens. A textured surface keeps its own UVs even when they overlap: its
+// texture needs them (noted).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "mesh/surface_mesh.h"
+#include "mesh/uv_atlas.h"
+
+namespace grass::core {
+
+struct PaintUvs {
+    bool generated = false;  // UV0 is an atlas made now: a save should keep it (corners)
+    bool fromFile = false;   // UV0 is the project's kept atlas
+    CornerUvs corners;       // when generated
+    std::uint64_t fingerprint = 0;
+};
+
+// Makes `mesh`'s UV0 paintable (`mesh` as its file holds it, before its frame is applied, so a
+// change of unit or up axis keeps its atlas). `hasUv`: every primitive had TEXCOORD_0;
+// `textured`: the surface draws a texture through its UVs; `atlasFile`: the project's kept
+// atlas (empty: none); `mapResolution`: the coarsest map side painted in it, which the atlas
+// keeps its gutters for (a brush's texels reach one texel past a chart, a bilinear read one
+// more). Notes say what was done and why.
+PaintUvs makeUvsPaintable(SurfaceMesh& mesh, bool hasUv, bool textured,
+                          const std::filesystem::path& atlasFile, int mapResolution,
+                          std::vector<std::string>& notes);
+
+}  // namespace grass::core
