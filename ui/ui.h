@@ -102,7 +102,8 @@ public:
     Response label(std::string_view text);
     Response coloredLabel(std::string_view text, Color32 color);
     Response button(std::string_view text);
-    Response checkbox(bool& checked, std::string_view text);
+    // "text##key" shows text; the whole label is the id (so "##a" and "##b" are two boxes).
+    Response checkbox(bool& checked, std::string_view label);
     Response radio(bool selected, std::string_view text);
     template <class T>
     Response radioValue(T& current, T value, std::string_view text) {

@@ -70,12 +70,14 @@ Response Ui::button(std::string_view text) {
     return r;
 }
 
-Response Ui::checkbox(bool& checked, std::string_view text) {
+Response Ui::checkbox(bool& checked, std::string_view label) {
+    // "shown##key": the id comes from the whole label, the box shows the part before "##".
+    const std::string_view text = shownLabel(label);
     const Style& s = style();
     const Vec2 textSize = mCtx->fonts().textSize(text, s.textSizePt);
     const Rect rect = allocate({s.iconSize + (text.empty() ? 0.0f : s.iconSpacing + textSize.x),
                                 std::max(s.iconSize, textSize.y)});
-    Response r = interact(rect, makeId(text), Sense::clickOnly());
+    Response r = interact(rect, makeId(label), Sense::clickOnly());
     if (r.clicked()) {
         checked = !checked;
         r.markChanged();

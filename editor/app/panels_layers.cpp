@@ -65,7 +65,7 @@ void rulesBody(ui::Ui& ui, EditorState& s, core::PlacementRules& rules) {
         ui.coloredLabel("this surface names no parts (a procedural shape)", ui.style().textWeak);
     } else {
         ui.collapsingHeader("names (" + std::to_string(names.size()) + ")##names", [&](ui::Ui& list) {
-            list.coloredLabel("only / never / clear of   node, mesh or material", list.style().textWeak);
+            list.coloredLabel("only  never  clear of", list.style().textWeak);
             for (std::size_t i = 0; i < names.size(); ++i) {
                 list.pushId(std::uint64_t(i));
                 list.horizontal([&](ui::Ui& row) {
@@ -144,10 +144,10 @@ struct LayerAction {
 void layerControls(ui::Ui& ui, EditorState& s, std::size_t index, LayerAction& action) {
     core::Project& project = s.transient.draft.project;
     const std::size_t count = project.layers.size();
-    ui.horizontal([&](ui::Ui& row) {
+    {
         std::string& name = project.layers[index].name;
         bool committed = false;
-        ui::textEdit(row, "##layername", name, 120.0f, &committed)
+        ui::textEdit(ui, "name##layername", name, 160.0f, &committed)
             .onHoverText("The layer's name, unique among layers; Enter renames");
         if (committed) {
             const auto& before = s.doc.committed.layers;
@@ -165,6 +165,8 @@ void layerControls(ui::Ui& ui, EditorState& s, std::size_t index, LayerAction& a
         // through a re-grow (core::matchLayers).
         if (s.scene && index < s.scene->layers.size())
             s.scene->layers[index].name = name;
+    }
+    ui.horizontal([&](ui::Ui& row) {
         using Kind = LayerAction::Kind;
         if (index > 0 && row.button("up").onHoverText("Move this layer up the list").clicked())
             action = {Kind::Up, index};
@@ -172,7 +174,7 @@ void layerControls(ui::Ui& ui, EditorState& s, std::size_t index, LayerAction& a
             row.button("down").onHoverText("Move this layer down the list").clicked())
             action = {Kind::Down, index};
         if (count < core::MAX_LAYERS &&
-            row.button("dup").onHoverText("Duplicate this layer: its settings, rules and maps")
+            row.button("duplicate").onHoverText("Duplicate this layer: its settings, rules and maps")
                 .clicked())
             action = {Kind::Duplicate, index};
         if (count > 1 &&

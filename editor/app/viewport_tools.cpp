@@ -410,9 +410,17 @@ void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const Edito
                 painter.path(std::move(points), true, ui::Color32::transparent(), {1.2f, color});
             }
             if (mode == core::BrushMode::Add || lowers)
-                if (auto centre = core::projectToPixel(camera, hit->posWorld, pointer.viewportSize))
-                    painter.text(toPoints(*centre) + ui::Vec2(-4.0f, -9.0f), lowers ? "-" : "+",
-                                 16.0f, color);
+                if (auto centre = core::projectToPixel(camera, hit->posWorld, pointer.viewportSize)) {
+                    const ui::Vec2 c = toPoints(*centre);
+                    // A sign 12 points across, outlined like the ring so it reads on any grass.
+                    for (const auto& [width, stroke] :
+                         {std::pair{4.0f, ui::Color32{0, 0, 0, 160}}, std::pair{2.0f, color}}) {
+                        painter.line(c - ui::Vec2(6.0f, 0.0f), c + ui::Vec2(6.0f, 0.0f), {width, stroke});
+                        if (!lowers)
+                            painter.line(c - ui::Vec2(0.0f, 6.0f), c + ui::Vec2(0.0f, 6.0f),
+                                         {width, stroke});
+                    }
+                }
         }
     }
     if (s.view.tool != ViewportTool::Camera)

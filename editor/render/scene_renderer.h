@@ -31,6 +31,8 @@ namespace grass::render {
 
 // The texture unit of a glTF surface's base colour (mesh.frag's uBaseTexture binding).
 inline constexpr std::uint32_t SURFACE_TEXTURE_UNIT = 5;
+// The texture unit of the editor's map overlay (mesh.frag's uMapOverlay binding).
+inline constexpr std::uint32_t MAP_OVERLAY_UNIT = 6;
 
 class SceneRenderer {
 public:
@@ -47,6 +49,10 @@ public:
     // After core::regrowLayerRegion changed layer `layer` of the scene: re-uploads the regrown
     // patches' blades and stem sets and the re-baked shading; nothing else moves.
     void uploadRegrown(std::size_t layer, const core::RegrowReport& report);
+    // The map the terrain shows as a colour overlay (values 0..1 in its UV space; a map without
+    // texels shows 1 everywhere), uploaded now; null: no overlay. The editor calls it when the
+    // painted map or the choice of map changes.
+    void setMapOverlay(const core::MapImage* map);
     // Snow read-backs for tests and tools (wait for the GPU): the depth pass of the last frame
     // with snow (null before one), and the tip whiteness the cull wrote for layer `layer`.
     const SnowPass* snowPass() const { return mSnow.get(); }
@@ -79,6 +85,9 @@ private:
     std::unique_ptr<MeshGpu> mMesh;
     // The surface's base-colour texture (scene.look), bound to SURFACE_TEXTURE_UNIT; 0: none.
     gl::TextureHandle mSurfaceTexture;
+    // The map overlay (setMapOverlay), R8; 0: none.
+    gl::TextureHandle mMapOverlay;
+    glm::ivec2 mMapOverlaySize{0};
     std::vector<MeshGpu> mProps;
     std::vector<FieldGpu> mFields;
     std::unique_ptr<CullPass> mCull;

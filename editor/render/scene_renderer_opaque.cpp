@@ -3,8 +3,12 @@
 #include "render/scene_renderer.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
 #include <utility>
 
+#include "gl/texture.h"
 #include "scene/scene_snow.h"
 #include "util/assert.h"
 
@@ -90,9 +94,16 @@ void SceneRenderer::drawOpaque(const RenderOptions& options, bool shaded) {
     }
     if (textured)
         glBindTextureUnit(SURFACE_TEXTURE_UNIT, mSurfaceTexture.id());
-    draw(*mMesh);
+    const bool overlaid = shaded && mMapOverlay.id() != 0;
     if (shaded)
-        program.set("uHasBaseTexture", 0);  // the props have none
+        program.set("uHasMapOverlay", overlaid ? 1 : 0);
+    if (overlaid)
+        glBindTextureUnit(MAP_OVERLAY_UNIT, mMapOverlay.id());
+    draw(*mMesh);
+    if (shaded) {
+        program.set("uHasBaseTexture", 0);  // the props have neither
+        program.set("uHasMapOverlay", 0);
+    }
     for (std::size_t i = 0; i < mProps.size(); ++i) {
         const core::SceneProp& prop = mScene->props[i];
         program.set("uModel", prop.modelAt(options.timeS));
@@ -100,6 +111,28 @@ void SceneRenderer::drawOpaque(const RenderOptions& options, bool shaded) {
             program.set("uAlbedo", prop.albedo);
         draw(mProps[i]);
     }
+}
+
+void SceneRenderer::setMapOverlay(const core::MapImage* map) {
+    if (!map) {
+        mMapOverlay = {};
+        mMapOverlaySize = glm::ivec2(0);
+        return;
+    }
+    const bool empty = map->texels.empty() || map->width <= 0 || map->height <= 0;
+    const glm::ivec2 size = empty ? glm::ivec2(1) : glm::ivec2(map->width, map->height);
+    // 8 bits a texel: the overlay is a picture of the map, and 1/255 is finer than its colours
+    // tell apart.
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size.x) * std::size_t(size.y), 255);
+    if (!empty)
+        for (std::size_t i = 0; i < bytes.size(); ++i)
+            bytes[i] = static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(map->texels[i], 0.0f, 1.0f)));
+    if (mMapOverlay.id() == 0 || size != mMapOverlaySize) {
+        mMapOverlay = gl::makeTexture2D(GL_R8, size.x, size.y, 1, "map overlay");
+        gl::setClampedFiltering(mMapOverlay, GL_LINEAR, GL_LINEAR);
+        mMapOverlaySize = size;
+    }
+    gl::uploadTexture2D(mMapOverlay, size.x, size.y, GL_RED, bytes.data());
 }
 
 }  // namespace grass::render
