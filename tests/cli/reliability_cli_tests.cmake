@@ -43,6 +43,16 @@ if(TARGET grass-editor)
     set_tests_properties(cli.editor_real_import PROPERTIES LABELS "cli;gl" TIMEOUT 150
         PASS_REGULAR_EXPRESSION "real import: new from mesh, browser typing, save as"
         ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
+    # Species painted with the map overlay by real X input at about one frame a second (issue
+    # 27): a layer added, chosen for the brush, a subtract stroke with "show map" on, Ctrl+S;
+    # about 45 s.
+    add_test(NAME cli.editor_real_species
+             COMMAND ${GRASS_XVFB_RUN} -a -s "-screen 0 1024x768x24"
+                     ${GRASS_BASH} ${GRASS_CLI_DIR}/editor_real_species_test.sh
+                     $<TARGET_FILE:grass-editor> ${GRASS_CLI_TMP}/editor-real-species)
+    set_tests_properties(cli.editor_real_species PROPERTIES LABELS "cli;gl" TIMEOUT 150
+        PASS_REGULAR_EXPRESSION "real species: a layer added, chosen for the brush"
+        ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
 endif()
 
 # Hostile files and careless paths (issue 22): one test per class of defect, each a list of
