@@ -112,9 +112,16 @@ struct PanelDraft {
 
 inline constexpr std::size_t MAX_LOGGED_MESSAGES = 500;
 
+// A layer's name as typed in its box, taken (or refused) only when the entry ends.
+struct LayerNameEntry {
+    std::string text;
+    bool editing = false;
+};
+
 struct Transient {
     FrameStatus status;
     PanelDraft draft;
+    std::map<std::size_t, LayerNameEntry> layerNames;  // by layer index
     // The file browser of Open…, Save As…, New from mesh…, Import mesh… (none: closed).
     std::optional<FileBrowser> browser;
     std::filesystem::path meshFolder;  // where the last mesh or map image was picked

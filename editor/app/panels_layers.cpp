@@ -145,21 +145,21 @@ void layerControls(ui::Ui& ui, EditorState& s, std::size_t index, LayerAction& a
     core::Project& project = s.transient.draft.project;
     const std::size_t count = project.layers.size();
     {
+        // Typed into a buffer and taken when the entry ends: the project never holds two layers
+        // of one name, and a rename is one undo step.
         std::string& name = project.layers[index].name;
+        LayerNameEntry& entry = s.transient.layerNames[index];
+        if (!entry.editing)
+            entry.text = name;
         bool committed = false;
-        ui::textEdit(ui, "name##layername", name, 160.0f, &committed)
-            .onHoverText("The layer's name, unique among layers; Enter renames");
-        if (committed) {
-            const auto& before = s.doc.committed.layers;
-            const std::string previous = index < before.size() ? before[index].name : name;
-            std::size_t twins = 0;
-            for (const core::GrassLayer& other : project.layers)
-                twins += other.name == name ? 1 : 0;
-            if (name.empty() || twins > 1) {
-                s.transient.message = name.empty() ? "a layer needs a name"
-                                                   : "another layer is named \"" + name + "\"";
-                name = previous;
-            }
+        entry.editing = ui::textEdit(ui, "name##layername", entry.text, 160.0f, &committed)
+                            .onHoverText("The layer's name, unique among layers; Enter renames")
+                            .hasFocus();
+        if (committed && entry.text != name && !core::renameLayer(project, index, entry.text)) {
+            s.transient.message = entry.text.empty()
+                                      ? "a layer needs a name"
+                                      : "another layer is named \"" + entry.text + "\"";
+            entry.text = name;
         }
         // The live field's layer takes the name at once, so the maps painted on it follow it
         // through a re-grow (core::matchLayers).

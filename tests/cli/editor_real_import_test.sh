@@ -30,7 +30,7 @@ sleep 3                                       # the new field grows
 act key ctrl+s                                # not saved yet: the browser asks where
 act type "$work/saved"
 act key Return
-act mousemove 214 287 click --repeat 2 --delay 90 1   # the density field: double-click
+act mousemove 214 339 click --repeat 2 --delay 90 1   # the density field: double-click
 act type 1e30
 act key Return                                # refused: the box stays, with the reason
 shot refused.png

@@ -19,8 +19,8 @@ start_editor
 act mousemove 150 43 click 1                  # the name field, after its text
 act type f                                    # one letter: typed, not "frame the scene"
 act key Return                                # done typing
-act mousemove 49 362 click 1                  # "growth model": a click quicker than a frame
-act mousemove 214 287 click --repeat 2 --delay 90 1   # the density field: double-click
+act mousemove 49 414 click 1                  # "growth model": a click quicker than a frame
+act mousemove 214 339 click --repeat 2 --delay 90 1   # the density field: double-click
 act key ctrl+a
 act type 35
 act key Return

@@ -561,7 +561,7 @@ TEST(EditorPanels, LayersAreAddedDuplicatedMovedAndRemovedWithTheirPaintedMaps) 
     EXPECT_TRUE(d.state.rebuildPending);
     regrowLikeTheEditor(d);
 
-    d.click("dup");  // the first layer's header is open
+    d.click("duplicate");  // the first layer's header is open
     editor::recordProjectEdit(d.state, false);
     EXPECT_EQ(layerNames(d.state), (std::vector<std::string>{"grass", "grass copy", "grass 2"}));
     regrowLikeTheEditor(d);
@@ -616,6 +616,58 @@ TEST(EditorPanels, PlacementRulesAreEditedInTheLayer) {
     EXPECT_TRUE(d.state.rebuildPending);
     ASSERT_TRUE(editor::undo(d.state));
     EXPECT_FALSE(d.state.doc.project().layers[0].rules.clearColliders);
+}
+
+// Issue 27 item 4: the brush's map exported from the paint tool's row (export…, the typed name,
+// Enter) as it is now, painted and not yet saved; a rename to another layer's name is refused.
+TEST(EditorPanels, TheBrushMapIsExportedAndATakenNameRefused) {
+    const ScratchFolder folder("editor-export-map");
+    EditorDriver d(folder.path());
+    d.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 4000.0f}};
+    editor::resetHistory(d.state);
+    d.state.view.tool = editor::ViewportTool::Paint;
+    d.scene.layers[0].source.maps.density = core::makeConstantMap(64, 64, 0.25f);
+    d.click("export…");
+    d.typePathAndEnter((folder / "out.exr").string());
+    auto written = core::loadMapImage(folder / "out.exr");
+    ASSERT_TRUE(written.ok()) << d.state.transient.message;
+    EXPECT_EQ(written->width, 64);
+    EXPECT_FLOAT_EQ(written->texels[0], 0.25f);
+    EXPECT_NE(d.state.transient.message.find("exported the density map"), std::string::npos);
+
+    // A second layer, then the first renamed to its name: refused, the old name kept.
+    d.click("add layer");
+    editor::recordProjectEdit(d.state, false);
+    ASSERT_EQ(d.state.doc.project().layers.size(), 2u);
+    std::optional<ui::Vec2> label;  // the first layer's "name" label, right of its box
+    for (const ui::ClippedShape& shape : d.frame().shapes)
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && t->text == "name" && !label)
+            label = t->pos;
+    ASSERT_TRUE(label.has_value());
+    d.clickAt(*label + ui::Vec2(-80.0f, 6.0f));
+    d.input.keys.push_back({ui::Key::A, {false, true, false}});
+    d.frame();
+    d.input.text = "grass 2";
+    d.frame();
+    d.input.keys.push_back({ui::Key::Enter, {}});
+    d.frame();
+    editor::recordProjectEdit(d.state, false);
+    EXPECT_EQ(d.state.doc.project().layers[0].name, "grass");
+    EXPECT_NE(d.state.transient.message.find("another layer is named"), std::string::npos)
+        << d.state.transient.message;
+    // A free name is taken when Enter ends the entry, as one undo step.
+    d.clickAt(*label + ui::Vec2(-80.0f, 6.0f));
+    d.input.keys.push_back({ui::Key::A, {false, true, false}});
+    d.frame();
+    d.input.text = "clover";
+    d.frame();
+    EXPECT_EQ(d.state.doc.project().layers[0].name, "grass") << "not before Enter";
+    d.input.keys.push_back({ui::Key::Enter, {}});
+    d.frame();
+    editor::recordProjectEdit(d.state, false);
+    EXPECT_EQ(d.state.doc.project().layers[0].name, "clover");
+    ASSERT_TRUE(editor::undo(d.state));
+    EXPECT_EQ(d.state.doc.project().layers[0].name, "grass");
 }
 
 }  // namespace
