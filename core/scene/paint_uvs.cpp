@@ -69,4 +69,22 @@ PaintUvs makeUvsPaintable(SurfaceMesh& mesh, bool hasUv, bool textured,
     return result;
 }
 
+Result<bool> keepGeneratedUvs(Project& project, const std::filesystem::path& folder, PaintUvs& uvs) {
+    MeshSource& mesh = project.mesh;
+    if (!uvs.generated || !mesh.isFile)
+        return false;
+    const std::string relative =
+        std::filesystem::path(mesh.file).replace_extension(".uvatlas").generic_string();
+    auto target = resolveAssetPath(folder, relative, "/mesh/uv_atlas");
+    if (!target)
+        return target.error();
+    if (auto saved = saveUvAtlas(*target, uvs.corners, uvs.fingerprint); !saved)
+        return saved.error();
+    uvs.generated = false;
+    uvs.fromFile = true;
+    const bool changed = mesh.uvAtlas != relative;
+    mesh.uvAtlas = relative;
+    return changed;
+}
+
 }  // namespace grass::core

@@ -13,6 +13,8 @@
 
 #include "mesh/surface_mesh.h"
 #include "mesh/uv_atlas.h"
+#include "project/project.h"
+#include "util/result.h"
 
 namespace grass::core {
 
@@ -32,5 +34,11 @@ struct PaintUvs {
 PaintUvs makeUvsPaintable(SurfaceMesh& mesh, bool hasUv, bool textured,
                           const std::filesystem::path& atlasFile, int mapResolution,
                           std::vector<std::string>& notes);
+
+// What a save of maps painted in a generated atlas must do: write it next to the project's mesh
+// file (terrain.glb → terrain.uvatlas, atomically) and name it in project.mesh.uvAtlas; `uvs`
+// then counts as read from the file. Nothing when `uvs` was not generated. Returns whether the
+// project changed; errors name the file.
+Result<bool> keepGeneratedUvs(Project& project, const std::filesystem::path& folder, PaintUvs& uvs);
 
 }  // namespace grass::core

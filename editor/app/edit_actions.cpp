@@ -4,7 +4,6 @@
 
 #include "edit/layer_list.h"
 #include "maps/map_image.h"
-#include "mesh/uv_atlas_file.h"
 
 namespace grass::editor {
 
@@ -163,22 +162,9 @@ Result<void> savePaintedMaps(EditorState& s, const fs::path& folder) {
             return saved.error();
         field = relative;
     }
-    // A generated atlas goes with the maps painted on it (scene/paint_uvs.h): next to the mesh
-    // file, named after it, so the next open paints in the same UVs.
-    core::PaintUvs& uvs = s.scene->paintUvs;
-    core::MeshSource& mesh = s.doc.loaded.project.mesh;
-    if (uvs.generated && mesh.isFile) {
-        const std::string relative =
-            fs::path(mesh.file).replace_extension(".uvatlas").generic_string();
-        auto target = core::resolveAssetPath(folder, relative, "mesh/uv_atlas");
-        if (!target)
-            return target.error();
-        if (auto saved = core::saveUvAtlas(*target, uvs.corners, uvs.fingerprint); !saved)
-            return saved.error();
-        mesh.uvAtlas = relative;
-        uvs.generated = false;
-        uvs.fromFile = true;
-    }
+    // A generated atlas goes with the maps painted on it (scene/paint_uvs.h).
+    if (auto kept = core::keepGeneratedUvs(s.doc.loaded.project, folder, s.scene->paintUvs); !kept)
+        return kept.error();
     // The map names written into the project are part of the save, not an edit to undo.
     s.doc.committed = s.doc.loaded.project;
     s.doc.paintedMaps.clear();

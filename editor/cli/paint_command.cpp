@@ -42,6 +42,7 @@ struct PaintTarget {
 // the default radius need them.
 struct PaintSurface {
     core::SurfaceMesh mesh;
+    core::PaintUvs uvs;  // a generated atlas is kept with the map painted in it
     std::vector<std::string> notes;
     std::unique_ptr<core::TexelSurface> texels;
 };
@@ -179,7 +180,7 @@ Result<core::MapImage> loadStartingMap(const PaintArgs& args, const core::Loaded
 
 Result<PaintSurface> loadSurface(const core::LoadedProject& loaded, glm::ivec2 size) {
     PaintSurface surface;
-    auto mesh = core::loadProjectMesh(loaded, &surface.notes);
+    auto mesh = core::loadProjectMesh(loaded, &surface.notes, nullptr, &surface.uvs);
     if (!mesh)
         return mesh.error();
     surface.mesh = std::move(*mesh);
@@ -227,10 +228,11 @@ void printBrush(const PaintArgs& args, const core::BrushSettings& brush) {
                 args.falloff.c_str(), args.spacing, setValue);
 }
 
-// Saves the painted map and, when it is a new file for the layer, project.json naming it.
-// Nothing changed, or --dry-run: writes nothing.
+// Saves the painted map and, when it is a new file for the layer or was painted in a generated
+// atlas (kept next to the mesh), project.json naming them. Nothing changed, or --dry-run:
+// writes nothing.
 int saveOutputs(const PaintArgs& args, core::LoadedProject& loaded, const PaintTarget& target,
-                const core::MapImage& painted, std::size_t totalChanged) {
+                const core::MapImage& painted, std::size_t totalChanged, core::PaintUvs& uvs) {
     // Nothing to keep: leave the project as it was rather than save a map equal to what the
     // grass already read (and name a new constant map in project.json).
     if (totalChanged == 0) {
@@ -254,7 +256,13 @@ int saveOutputs(const PaintArgs& args, core::LoadedProject& loaded, const PaintT
     std::printf("wrote %s (%dx%d)\n", target.file.c_str(), painted.width, painted.height);
     core::GrassLayer& layer = loaded.project.layers[target.layerIndex];
     std::string& mapFile = mapFileOf(layer, target.which);
-    if (mapFile == target.relative)
+    auto keptUvs = core::keepGeneratedUvs(loaded.project, loaded.folder, uvs);
+    if (!keptUvs)
+        return reportFailure("paint", keptUvs.error(), EXIT_FAILED);
+    if (*keptUvs)
+        std::printf("wrote %s: the UVs the map is painted in\n",
+                    (loaded.folder / loaded.project.mesh.uvAtlas).c_str());
+    if (mapFile == target.relative && !*keptUvs)
         return 0;
     mapFile = target.relative;
     if (auto saved = core::saveProject(loaded.project, loaded.file); !saved)
@@ -321,7 +329,7 @@ int runPaint(const std::vector<std::string>& argv) {
         return reportFailure("paint", changed.error(), EXIT_FAILED);
     if (strokes->which == core::LayerMap::Density)
         std::printf("live blades %zu -> %zu\n", liveBefore, field.liveBlades);
-    return saveOutputs(args, *loaded, *target, painted, *changed);
+    return saveOutputs(args, *loaded, *target, painted, *changed, surface->uvs);
 }
 
 }  // namespace grass::cli

@@ -108,3 +108,25 @@ paint_cli_test(paint_file_leaves_project "" ERROR "--file" --absent ${ERR}/maps
     -- ${GRASS_BIN} paint ${ERR} --map soil --stroke "0,0,0" --file ../soil.png)
 paint_cli_test(paint_project_missing "" ERROR "no-such-project"
     -- ${GRASS_BIN} paint ${PAINT_TMP}/no-such-project --map soil --stroke "0,0,0")
+
+# --- a surface without UVs (issue 27): painted in a generated atlas, which the paint keeps ------
+# projects/terrain_rules is copied (painting writes into the project); the stroke thins the cliff
+# moss on the Rock face, and terrain.uvatlas is written and named in project.json.
+set(ATLAS ${PAINT_TMP}/atlas)
+add_test(NAME cli.paint_atlas_setup
+         COMMAND ${GRASS_BASH} -c "rm -rf -- \"$0\" && mkdir -p -- \"$0\" && cp -R -- \"$1/.\" \"$0\""
+                 ${ATLAS} ${CMAKE_SOURCE_DIR}/projects/terrain_rules)
+set_tests_properties(cli.paint_atlas_setup PROPERTIES LABELS cli TIMEOUT 30
+                     FIXTURES_SETUP paint_atlas_copy)
+grass_cli_test(paint_atlas_kept OK
+    --stdout "^stroke 1: .* [1-9][0-9]* texels changed"
+    --stdout "^wrote .*terrain\\.uvatlas: the UVs the map is painted in$"
+    --stdout "^updated .*project\\.json: layer \"cliff moss\" density_map = "
+    -- ${GRASS_BIN} paint ${ATLAS} --layer "cliff moss" --map density --mode subtract
+       --strength 1 --radius 0.5 --stroke "6.9,1.6,0")
+set_tests_properties(cli.paint_atlas_kept PROPERTIES FIXTURES_REQUIRED paint_atlas_copy)
+add_test(NAME cli.paint_atlas_named
+         COMMAND ${GRASS_BASH} -c "grep -q '\"uv_atlas\": \"terrain.uvatlas\"' \"$0/project.json\" && test -s \"$0/terrain.uvatlas\""
+                 ${ATLAS})
+set_tests_properties(cli.paint_atlas_named PROPERTIES LABELS cli TIMEOUT 30
+                     FIXTURES_REQUIRED paint_atlas_copy DEPENDS cli.paint_atlas_kept)
