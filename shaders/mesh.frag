@@ -21,6 +21,10 @@ layout(binding = 5) uniform sampler2D uBaseTexture;
 uniform bool uHasBaseTexture;
 // The unlit colour (RenderOptions::albedoView).
 uniform bool uAlbedoView;
+// The editor's map overlay (SceneRenderer::setMapOverlay): the map being painted, 0 purple to 1
+// yellow, over the terrain's colour, so the artist sees what the brush writes.
+layout(binding = 6) uniform sampler2D uMapOverlay;
+uniform bool uHasMapOverlay;
 
 out vec4 fragColor;
 
@@ -30,6 +34,10 @@ void main() {
     vec3 albedo = uAlbedo;
     if (uHasBaseTexture)
         albedo *= texture(uBaseTexture, vUv).rgb;
+    if (uHasMapOverlay) {
+        float value = clamp(texture(uMapOverlay, vUv).r, 0.0, 1.0);
+        albedo = mix(albedo, mix(vec3(0.30, 0.04, 0.45), vec3(0.95, 0.85, 0.10), value), 0.7);
+    }
 #ifdef GRASS_SNOW
     if (uSnowCoverageView) {
         fragColor = vec4(snowCoverageTerms(vPosWorld, vNormal), 1.0);
