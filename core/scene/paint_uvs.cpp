@@ -31,14 +31,14 @@ std::string overlapText(const UvOverlapReport& report) {
 
 }  // namespace
 
-PaintUvs makeUvsPaintable(SurfaceMesh& mesh, bool hasUv, bool textured,
+PaintUvs makeUvsPaintable(SurfaceMesh& mesh, bool hasUv, const std::function<bool()>& textured,
                           const std::filesystem::path& atlasFile, int mapResolution,
                           std::vector<std::string>& notes) {
     PaintUvs result;
     const UvOverlapReport report = findUvOverlaps(cornerUvsOf(mesh), mesh);
     if (hasUv && report.paintable())
         return result;
-    if (textured) {
+    if (textured()) {
         notes.push_back("UVs are not paintable (" + overlapText(report) +
                         "): a stroke may paint more than one place; kept, since the surface's "
                         "texture needs them");

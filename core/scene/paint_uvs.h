@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,11 +28,12 @@ struct PaintUvs {
 
 // Makes `mesh`'s UV0 paintable (`mesh` as its file holds it, before its frame is applied, so a
 // change of unit or up axis keeps its atlas). `hasUv`: every primitive had TEXCOORD_0;
-// `textured`: the surface draws a texture through its UVs; `atlasFile`: the project's kept
+// `textured`: whether the surface draws a texture through its UVs, asked only when they are not
+// paintable (it decodes the surface's material); `atlasFile`: the project's kept
 // atlas (empty: none); `mapResolution`: the coarsest map side painted in it, which the atlas
 // keeps its gutters for (a brush's texels reach one texel past a chart, a bilinear read one
 // more). Notes say what was done and why.
-PaintUvs makeUvsPaintable(SurfaceMesh& mesh, bool hasUv, bool textured,
+PaintUvs makeUvsPaintable(SurfaceMesh& mesh, bool hasUv, const std::function<bool()>& textured,
                           const std::filesystem::path& atlasFile, int mapResolution,
                           std::vector<std::string>& notes);
 

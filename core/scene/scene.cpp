@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "maps/map_image.h"
 #include "mesh/gltf_loader.h"
@@ -118,7 +119,14 @@ Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std
     if (notes)
         for (auto& note : imported->notes)
             notes->push_back(path->string() + ": " + note);
-    SurfaceLook surfaceLook = surfaceLookOf(*path, imported->hasUv);
+    // The material is read when asked for, or when unpaintable UVs must know whether a texture
+    // needs them; never twice.
+    std::optional<SurfaceLook> surfaceLook;
+    const auto readLook = [&]() -> SurfaceLook& {
+        if (!surfaceLook)
+            surfaceLook = surfaceLookOf(*path, imported->hasUv);
+        return *surfaceLook;
+    };
     std::filesystem::path atlasFile;
     if (!source.uvAtlas.empty()) {
         auto resolved = resolveAssetPath(loaded.folder, source.uvAtlas, "/mesh/uv_atlas");
@@ -131,9 +139,9 @@ Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std
     for (const GrassLayer& layer : loaded.project.layers)
         coarsestMap = std::min({coarsestMap, layer.mapResolution.x, layer.mapResolution.y});
     std::vector<std::string> uvNotes;
-    PaintUvs uvs = makeUvsPaintable(imported->mesh, imported->hasUv,
-                                    !surfaceLook.baseTexture.pixels.empty(), atlasFile,
-                                    coarsestMap, uvNotes);
+    PaintUvs uvs = makeUvsPaintable(
+        imported->mesh, imported->hasUv, [&] { return !readLook().baseTexture.pixels.empty(); },
+        atlasFile, coarsestMap, uvNotes);
     if (notes)
         for (auto& note : uvNotes)
             notes->push_back(path->string() + ": " + note);
@@ -141,7 +149,7 @@ Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std
         *paintUvs = std::move(uvs);
     applyMeshFrame(imported->mesh, source.metresPerUnit, source.up);
     if (look) {
-        *look = std::move(surfaceLook);
+        *look = std::move(readLook());
         if (notes)
             notes->insert(notes->end(), look->notes.begin(), look->notes.end());
     }

@@ -23,36 +23,28 @@ if(TARGET grass-editor)
     set_tests_properties(cli.kill_during_autosave PROPERTIES LABELS "cli;gl" TIMEOUT 400
         PASS_REGULAR_EXPRESSION "autosave: 10 sessions killed"
         ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
-    # Real X input (xdotool) at about one frame a second (issue 24): quick clicks, a
-    # double-click and typing all reach the project; about 30 s.
-    add_test(NAME cli.editor_real_input
-             COMMAND ${GRASS_XVFB_RUN} -a -s "-screen 0 1024x768x24"
-                     ${GRASS_BASH} ${GRASS_CLI_DIR}/editor_real_input_test.sh
-                     $<TARGET_FILE:grass-editor> ${GRASS_CLI_TMP}/editor-real-input)
-    set_tests_properties(cli.editor_real_input PROPERTIES LABELS "cli;gl" TIMEOUT 120
-        PASS_REGULAR_EXPRESSION "real input: name typed, quick click, double-click"
-        ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
-    # The artist's own mesh by real X input at about one frame a second (issue 26): File › New
-    # from mesh…, a typed path in the file browser, Save As by Ctrl+S, a refused typed value,
-    # Ctrl+O and the recent list; about 50 s.
-    add_test(NAME cli.editor_real_import
-             COMMAND ${GRASS_XVFB_RUN} -a -s "-screen 0 1024x768x24"
-                     ${GRASS_BASH} ${GRASS_CLI_DIR}/editor_real_import_test.sh
-                     $<TARGET_FILE:grass-editor> ${CMAKE_SOURCE_DIR}/tests/data/gltf/cube.glb
-                     ${GRASS_CLI_TMP}/editor-real-import)
-    set_tests_properties(cli.editor_real_import PROPERTIES LABELS "cli;gl" TIMEOUT 150
-        PASS_REGULAR_EXPRESSION "real import: new from mesh, browser typing, save as"
-        ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
-    # Species painted with the map overlay by real X input at about one frame a second (issue
-    # 27): a layer added, chosen for the brush, a subtract stroke with "show map" on, Ctrl+S;
-    # about 45 s.
-    add_test(NAME cli.editor_real_species
-             COMMAND ${GRASS_XVFB_RUN} -a -s "-screen 0 1024x768x24"
-                     ${GRASS_BASH} ${GRASS_CLI_DIR}/editor_real_species_test.sh
-                     $<TARGET_FILE:grass-editor> ${GRASS_CLI_TMP}/editor-real-species)
-    set_tests_properties(cli.editor_real_species PROPERTIES LABELS "cli;gl" TIMEOUT 150
-        PASS_REGULAR_EXPRESSION "real species: a layer added, chosen for the brush"
-        ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
+    # A real-window test: `script` under Xvfb with real X input (xdotool) at about one frame a
+    # second, passing when its output holds `pass`; the editor and ARGN are its arguments.
+    function(editor_window_test name script timeout pass)
+        add_test(NAME cli.${name}
+                 COMMAND ${GRASS_XVFB_RUN} -a -s "-screen 0 1024x768x24"
+                         ${GRASS_BASH} ${GRASS_CLI_DIR}/${script} $<TARGET_FILE:grass-editor> ${ARGN})
+        set_tests_properties(cli.${name} PROPERTIES LABELS "cli;gl" TIMEOUT ${timeout}
+            PASS_REGULAR_EXPRESSION "${pass}"
+            ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
+    endfunction()
+    # Quick clicks, a double-click and typing all reach the project (issue 24); about 30 s.
+    editor_window_test(editor_real_input editor_real_input_test.sh 120
+        "real input: name typed, quick click, double-click" ${GRASS_CLI_TMP}/editor-real-input)
+    # The artist's own mesh (issue 26): File › New from mesh…, a typed path in the file browser,
+    # Save As by Ctrl+S, a refused typed value, Ctrl+O and the recent list; about 50 s.
+    editor_window_test(editor_real_import editor_real_import_test.sh 150
+        "real import: new from mesh, browser typing, save as"
+        ${CMAKE_SOURCE_DIR}/tests/data/gltf/cube.glb ${GRASS_CLI_TMP}/editor-real-import)
+    # Species painted with the map overlay (issue 27): a layer added, chosen for the brush, a
+    # subtract stroke with "show map" on, Ctrl+S; about 55 s.
+    editor_window_test(editor_real_species editor_real_species_test.sh 150
+        "real species: a layer added, chosen for the brush" ${GRASS_CLI_TMP}/editor-real-species)
 endif()
 
 # Hostile files and careless paths (issue 22): one test per class of defect, each a list of
