@@ -8,6 +8,7 @@
 #include "export/gltf_export.h"
 #include "export/merged_blades.h"
 #include "export/raw_export.h"
+#include "export/runtime_block.h"
 #include "export/source_material.h"
 #include "export/staged_files.h"
 #include "project/project_inputs.h"
@@ -131,6 +132,14 @@ Result<json> stageRawLayer(StagedFiles& staged, const LayerField& layer, const s
     const std::string blades = rawBladeBytes(patched.blades);
     const std::string patches = rawPatchBytes(patched.patches);
     const std::string wilt = rawFloatBytes(layer.wilt);
+    // The lighting inputs the scene baked per slot (SSBO 9 of the blade shaders, 32 bytes:
+    // blurred normal and AO, water, age, wilt), default (open ground) where none were baked.
+    const std::vector<BladeShading> shadingSlots =
+        layer.shading.size() == patched.blades.size()
+            ? layer.shading
+            : std::vector<BladeShading>(patched.blades.size());
+    const std::string shading(reinterpret_cast<const char*>(shadingSlots.data()),
+                              shadingSlots.size() * sizeof(BladeShading));
     const auto name = [&](const char* part, const std::string& bytes, const char* extension) {
         return contentAddressedName(stem + "." + part, contentHash(bytes), extension);
     };
@@ -138,8 +147,9 @@ Result<json> stageRawLayer(StagedFiles& staged, const LayerField& layer, const s
     entry["patches"] =
         file(name("patches", patches, ".bin"), patched.patches.size(), patches.size());
     entry["wilt"] = file(name("wilt", wilt, ".f32"), layer.wilt.size(), wilt.size());
+    entry["shading"] = file(name("shading", shading, ".bin"), shadingSlots.size(), shading.size());
     const std::pair<const char*, const std::string*> parts[] = {
-        {"blades", &blades}, {"patches", &patches}, {"wilt", &wilt}};
+        {"blades", &blades}, {"patches", &patches}, {"wilt", &wilt}, {"shading", &shading}};
     for (const auto& [part, bytes] : parts)
         if (auto written = staged.add(entry[part]["file"].get<std::string>(), *bytes); !written)
             return written.error();
@@ -280,6 +290,26 @@ std::uint64_t ExportReport::totalBytes() const {
     return total;
 }
 
+// The scene's behaviour for runtimes (runtime_block.h): its meshes staged as content-named
+// files, the block returned for the manifest; what it cannot carry becomes notes.
+static Result<json> stageRuntimeBlock(StagedFiles& staged, const LoadedProject& loaded,
+                               const Scene& scene, std::vector<std::string>& notes) {
+    auto physics = buildScenePhysics(loaded);
+    if (!physics)
+        return physics.error();
+    const std::vector<RuntimeMeshFile> meshes = runtimeMeshes(loaded, scene);
+    std::vector<std::string> files;
+    for (const RuntimeMeshFile& mesh : meshes) {
+        files.push_back(contentAddressedName(fileSafeName(mesh.name) + ".mesh",
+                                             contentHash(mesh.bytes), ".bin"));
+        if (auto written = staged.add(files.back(), mesh.bytes); !written)
+            return written.error();
+    }
+    for (std::string& gap : runtimeBlockGaps(loaded, scene))
+        notes.push_back(std::move(gap));
+    return runtimeBlock(loaded, scene, *physics, meshes, files);
+}
+
 std::string exportFileStem(const std::string& layerName) {
     return fileSafeName(layerName);
 }
@@ -376,11 +406,15 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
             report.layers.push_back(exported);
         }
         if (options.format == ExportFormat::Raw) {
+            auto runtime = stageRuntimeBlock(staged, loaded, scene, report.notes);
+            if (!runtime)
+                return runtime.error();
             json manifest = {{"format", "grass-raw-export"},
                              {"version", 1},
                              {"project", loaded.project.name},
                              {"layout", rawLayoutManifest()},
-                             {"layers", layers}};
+                             {"layers", layers},
+                             {"runtime", std::move(*runtime)}};
             if (auto written = staged.add("manifest.json", manifest.dump(2) + "\n"); !written)
                 return written.error();
         }

@@ -94,6 +94,15 @@ nlohmann::json rawLayoutManifest() {
             field("bladeCount", 4, "uint32", "live blades; the patch holds patch_size slots"),
             field("boundsMin", 8, "float32[3]", "metres"),
             field("boundsMax", 20, "float32[3]", "metres")}}}},
+        {"shading_record",
+         {{"stride", 32},
+          {"fields",
+           {field("blurredNormal", 0, "float32[3]", "unit, the terrain normal blurred (SPEC 10)"),
+            field("ao", 12, "float32", "grass ambient occlusion 0..1 at the root"),
+            field("water", 16, "float32", "0..1, the lighting's water term"),
+            field("age", 20, "float32", "0..1"),
+            field("wilt", 24, "float32", "0..1, colour = mix(healthy, poor, wilt)"),
+            field("unused", 28, "float32", "0")}}}},
         {"maps", "float32 width x height, row-major, row 0 = top of the image = v 0, values 0..1"},
     };
 }

@@ -1,61 +1,26 @@
-// LightingBlock: the lighting of a frame as the shaders read it, in the std140 uniform block
-// LightingBlock of shaders/include/lighting_block.glsl: the sun and the sky/ground ambient of
-// lighting.glsl (the wrapped Lambert) and the grass lighting of SPEC §10 (grass_lighting.glsl).
-// The scene renderer uploads it once a frame (gl::UniformBlock) and every program that lights a
-// surface reads it. Colours linear RGB; the sun direction is the way the light travels, unit
-// length; distances in metres.
+// lightingBlock(): a frame's LightingBlock (core/scene/lighting_block.h, the std140 block of
+// shaders/include/lighting_block.glsl) from the project's sun, grass lighting, sky and ground.
+// The scene renderer uploads it once a frame (gl::UniformBlock).
 #pragma once
 
-#include <cstddef>
 #include <cstdint>
 
 #include <glm/glm.hpp>
 
-#include "project/project.h"
+#include "scene/frame_lighting.h"
 
 namespace grass::render {
 
-// LIGHTING_BLOCK_BINDING in shaders/include/lighting_block.glsl.
-inline constexpr std::uint32_t LIGHTING_BLOCK_BINDING = 0;
+// The block itself is core's (core/scene/lighting_block.h): the raw export writes it and the
+// reference runtime (editor/runtime) uploads it without this library.
+using core::LightingBlock;
+inline constexpr std::uint32_t LIGHTING_BLOCK_BINDING = core::LIGHTING_BLOCK_BINDING;
 
-// Members pair a vec3 with a float so that std140 puts them where C++ does; the GLSL block
-// declares them in this order under these names with a `u` prefix (uSunDirection, ...).
-struct LightingBlock {
-    static constexpr std::uint32_t BINDING = LIGHTING_BLOCK_BINDING;
-    glm::vec3 sunDirection{0.0f, -1.0f, 0.0f};
-    float terrainNormalWeight = 0.0f;
-    glm::vec3 sunColor{0.0f};  // colour × intensity
-    float specular = 0.0f;
-    glm::vec3 skyColor{0.0f};
-    float transmission = 0.0f;
-    glm::vec3 groundColor{0.0f};
-    float transmissionDistortion = 0.0f;
-    glm::vec3 diffuseLow{0.0f};
-    float transmissionPower = 0.0f;
-    glm::vec3 diffuseMid{0.0f};
-    float sss = 0.0f;
-    glm::vec3 diffuseHigh{0.0f};
-    float sssIntensity = 0.0f;
-    glm::vec2 specularFadeM{0.0f};
-    // 1: the grass lighting of SPEC §10; 0: the wrapped Lambert.
-    std::int32_t grassLighting = 0;
-    // The water of a field's mean blade, for billboards and stem sets, which stand for many
-    // blades: the middle of GrassLightingDesc::water.
-    float fieldWater = 0.0f;
-};
-static_assert(sizeof(LightingBlock) == 128, "LightingBlock must be eight vec4 (std140)");
-static_assert(offsetof(LightingBlock, sunColor) == 16 && offsetof(LightingBlock, skyColor) == 32 &&
-                  offsetof(LightingBlock, groundColor) == 48 &&
-                  offsetof(LightingBlock, diffuseLow) == 64 &&
-                  offsetof(LightingBlock, diffuseHigh) == 96 &&
-                  offsetof(LightingBlock, specularFadeM) == 112 &&
-                  offsetof(LightingBlock, grassLighting) == 120 &&
-                  offsetof(LightingBlock, fieldWater) == 124,
-              "LightingBlock offsets must match shaders/include/lighting_block.glsl");
-
-// The block of a frame lit by `sun` (a zero direction shines straight down) under the sky and
-// ground colours of the render settings.
-LightingBlock lightingBlock(const core::GrassLightingDesc& lighting, const core::SunDesc& sun,
-                            glm::vec3 skyColor, glm::vec3 groundColor);
+// core::frameLighting under the name the renderer has always called it.
+inline LightingBlock lightingBlock(const core::GrassLightingDesc& lighting,
+                                   const core::SunDesc& sun, glm::vec3 skyColor,
+                                   glm::vec3 groundColor) {
+    return core::frameLighting(lighting, sun, skyColor, groundColor);
+}
 
 }  // namespace grass::render

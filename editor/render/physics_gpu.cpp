@@ -22,15 +22,6 @@ void upload(gl::Buffer& buffer, const std::vector<T>& values, std::string_view l
         buffer.update(bytes);
 }
 
-WindSourceGpu toGpu(const core::WindSource& source) {
-    WindSourceGpu out;
-    out.directionStrength = glm::vec4(source.direction, source.strength);
-    out.axisRadius = glm::vec4(source.axis, source.radiusM);
-    out.shape = glm::vec4(source.coreRadiusM, source.wavelengthM, source.speedMps, source.gust);
-    out.kind = glm::uvec4(static_cast<std::uint32_t>(source.kind), 0u, 0u, 0u);
-    return out;
-}
-
 }  // namespace
 
 Result<PhysicsGpu> PhysicsGpu::load() {
@@ -81,42 +72,21 @@ void PhysicsGpu::step(gl::BufferRef bladeBuffer, std::size_t bladeCount,
                       const std::vector<core::SphereCollider>& colliders, float timeS,
                       float gravityLoadScale) {
     GRASS_ASSERT(bladeCount == mBladeCount);
-    const std::uint32_t n = core::substepCount(params);
+    const core::PhysicsStepInputs inputs =
+        core::physicsStepInputs(params, wind, colliders, timeS);
+    const std::uint32_t n = inputs.substepCount;
     if (bladeCount == 0 || n == 0)
         return;
-    // The same float expressions as core::stepBlade, so the times match bit for bit.
-    const float tau = params.dtS / static_cast<float>(n);
-    std::vector<glm::vec4> substeps;
-    std::vector<glm::vec4> windCentres;
-    std::vector<glm::vec4> spheres;
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const float t = timeS + static_cast<float>(i) * tau;
-        substeps.emplace_back(t, tau, t + tau, 0.0f);
-        for (const core::WindSource& source : wind)
-            windCentres.emplace_back(core::samplePath(source.path, t, source.position), 0.0f);
-        for (const core::SphereCollider& sphere : colliders)
-            spheres.emplace_back(core::samplePath(sphere.path, t + tau, sphere.centre),
-                                 sphere.radiusM);
-    }
-    std::vector<ColliderGroupGpu> groups;
-    groups.reserve(colliders.size());
-    for (const core::SphereCollider& sphere : colliders)
-        groups.push_back({glm::vec4(sphere.boundOffset, sphere.boundRadiusM),
-                          glm::uvec4(std::max(sphere.groupSize, 1u), 0u, 0u, 0u)});
-    std::vector<WindSourceGpu> sources;
-    sources.reserve(wind.size());
-    for (const core::WindSource& source : wind)
-        sources.push_back(toGpu(source));
     upload(mParams, std::vector<core::PhysicsParams>{params}, "physics params");
-    upload(mSubsteps, substeps, "physics substeps");
+    upload(mSubsteps, inputs.substeps, "physics substeps");
     // A scene without wind or colliders holds no buffers for them (the shader reads none).
     if (!wind.empty()) {
-        upload(mWindSources, sources, "physics wind sources");
-        upload(mWindCentres, windCentres, "physics wind centres");
+        upload(mWindSources, inputs.windSources, "physics wind sources");
+        upload(mWindCentres, inputs.windCentres, "physics wind centres");
     }
     if (!colliders.empty()) {
-        upload(mColliders, spheres, "physics colliders");
-        upload(mColliderGroups, groups, "physics collider groups");
+        upload(mColliders, inputs.colliderSpheres, "physics colliders");
+        upload(mColliderGroups, inputs.colliderGroups, "physics collider groups");
     }
 
     mProgram.use();

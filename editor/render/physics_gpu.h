@@ -17,26 +17,14 @@
 #include "gl/gl_ref.h"
 #include "gl/program.h"
 #include "physics/physics.h"
+#include "physics/physics_step_inputs.h"
 #include "util/result.h"
 
 namespace grass::render {
 
-// core::WindSource without its path, std430 (mirrored by WindSource in
-// shaders/include/physics.glsl).
-struct WindSourceGpu {
-    glm::vec4 directionStrength{0.0f};  // xyz direction, w strength
-    glm::vec4 axisRadius{0.0f};         // xyz axis, w radiusM
-    glm::vec4 shape{0.0f};              // coreRadiusM, wavelengthM, speedMps, gust
-    glm::uvec4 kind{0u};                // x: core::WindKind
-};
-static_assert(sizeof(WindSourceGpu) == 64, "WindSourceGpu must be four vec4 (std430)");
-
-// The broad phase of a core::SphereCollider, std430 (ColliderGroup in physics.glsl).
-struct ColliderGroupGpu {
-    glm::vec4 boundOffsetRadius{0.0f};
-    glm::uvec4 size{1u, 0u, 0u, 0u};
-};
-static_assert(sizeof(ColliderGroupGpu) == 32, "ColliderGroupGpu must be two vec4 (std430)");
+// The std430 records of physics.comp (core/physics/physics_step_inputs.h).
+using core::ColliderGroupGpu;
+using core::WindSourceGpu;
 
 class PhysicsGpu {
 public:

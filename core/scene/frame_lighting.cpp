@@ -1,8 +1,8 @@
-#include "render/lighting_block.h"
+#include "scene/frame_lighting.h"
 
-namespace grass::render {
+namespace grass::core {
 
-LightingBlock lightingBlock(const core::GrassLightingDesc& lighting, const core::SunDesc& sun,
+LightingBlock frameLighting(const GrassLightingDesc& lighting, const SunDesc& sun,
                             glm::vec3 skyColor, glm::vec3 groundColor) {
     LightingBlock block;
     block.sunDirection = glm::length(sun.direction) > 0.0f ? glm::normalize(sun.direction)
@@ -10,7 +10,7 @@ LightingBlock lightingBlock(const core::GrassLightingDesc& lighting, const core:
     block.sunColor = sun.color * sun.intensity;
     block.skyColor = skyColor;
     block.groundColor = groundColor;
-    block.grassLighting = lighting.model == core::LightingModel::Grass ? 1 : 0;
+    block.grassLighting = lighting.model == LightingModel::Grass ? 1 : 0;
     block.diffuseLow = lighting.diffuseLow;
     block.diffuseMid = lighting.diffuseMid;
     block.diffuseHigh = lighting.diffuseHigh;
@@ -26,4 +26,4 @@ LightingBlock lightingBlock(const core::GrassLightingDesc& lighting, const core:
     return block;
 }
 
-}  // namespace grass::render
+}  // namespace grass::core
