@@ -125,9 +125,13 @@ View exportCameraView(const ExportData& data, int width, int height) {
 }
 
 bool Field::load(const std::filesystem::path& folder, std::string& error) {
+    ExportData data;
+    return readExport(folder, data, error) && load(std::move(data), error);
+}
+
+bool Field::load(ExportData data, std::string& error) {
     auto state = std::make_unique<State>();
-    if (!readExport(folder, state->data, error))
-        return false;
+    state->data = std::move(data);
     State& s = *state;
     const auto program = [&](GlProgram& out, std::vector<std::pair<GLenum, std::string>> stages) {
         if (!error.empty())
@@ -171,11 +175,11 @@ bool Field::load(const std::filesystem::path& folder, std::string& error) {
         gpu.eta = GlBuffer::of(std::vector<float>(gpu.slots, 0.0f));
         s.layers.push_back(std::move(gpu));
     }
-    for (const MeshData& data : s.data.meshes) {
+    for (const MeshData& meshData : s.data.meshes) {
         MeshGpu mesh;
-        mesh.vertices = GlBuffer::of(data.vertices);
-        mesh.indices = GlBuffer::of(data.indices);
-        mesh.indexCount = static_cast<GLsizei>(data.indices.size());
+        mesh.vertices = GlBuffer::of(meshData.vertices);
+        mesh.indices = GlBuffer::of(meshData.indices);
+        mesh.indexCount = static_cast<GLsizei>(meshData.indices.size());
         glCreateVertexArrays(1, &mesh.vertexArray);
         glVertexArrayVertexBuffer(mesh.vertexArray, 0, mesh.vertices.id(), 0, 8 * sizeof(float));
         glVertexArrayElementBuffer(mesh.vertexArray, mesh.indices.id());

@@ -54,6 +54,8 @@ public:
     // Reads `folder` (a raw export) and uploads it; needs a current GL 4.5 core context. On
     // failure returns false with one line in `error` naming the file or shader and the problem.
     bool load(const std::filesystem::path& folder, std::string& error);
+    // The same for an export already read (readExport), e.g. checked before a window opens.
+    bool load(ExportData data, std::string& error);
     const ExportData& data() const;
 
     // --- physics (SPEC §3–5, shaders/physics.comp) ---

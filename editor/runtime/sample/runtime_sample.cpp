@@ -121,9 +121,9 @@ bool writeScreenshot(const std::string& file, int width, int height) {
 }
 
 // Loads the export and draws it until the window closes or --frames are done; 0 on success.
-int run(GLFWwindow* window, Options& options) {
+int run(GLFWwindow* window, Options& options, grass::runtime::ExportData exported) {
     grass::runtime::Field field;
-    if (std::string error; !field.load(options.folder, error)) {
+    if (std::string error; !field.load(std::move(exported), error)) {
         return fail(error);
     }
     const grass::runtime::ExportData& data = field.data();
@@ -142,6 +142,7 @@ int run(GLFWwindow* window, Options& options) {
     if (!hasCollider)
         std::fprintf(stderr, "note: the export has no collider for the mouse to move\n");
 
+    bool movedByMouse = false;
     std::vector<double> frameMs;
     auto last = std::chrono::steady_clock::now();
     for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
@@ -149,8 +150,10 @@ int run(GLFWwindow* window, Options& options) {
         const grass::runtime::View view = grass::runtime::exportCameraView(data, fbWidth, fbHeight);
         glm::vec3 hit;
         if (hasCollider && glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS &&
-            mouseOnPlane(window, view, colliderHeight, hit))
+            mouseOnPlane(window, view, colliderHeight, hit)) {
             field.moveCollider(0, hit);
+            movedByMouse = true;
+        }
 
         const auto now = std::chrono::steady_clock::now();
         const float elapsedS = std::chrono::duration<float>(now - last).count();
@@ -188,6 +191,12 @@ int run(GLFWwindow* window, Options& options) {
     std::printf("frames %zu, median frame %.1f ms, simulated %.2f s, blades drawn %zu of %zu\n",
                 frameMs.size(), frameMs.empty() ? 0.0 : frameMs[frameMs.size() / 2],
                 double(field.timeS()), stats.bladesDrawn, liveBlades);
+    if (hasCollider) {
+        const glm::vec3 at = field.colliderOrigin(0);
+        std::printf("collider \"%s\" at (%.3f, %.3f, %.3f), %s\n", data.colliders[0].name.c_str(),
+                    double(at.x), double(at.y), double(at.z),
+                    movedByMouse ? "moved by the mouse" : "on its path");
+    }
     if (!options.screenshot.empty())
         std::printf("wrote %s (%dx%d)\n", options.screenshot.c_str(), fbWidth, fbHeight);
     return 0;
@@ -203,7 +212,12 @@ int main(int argc, char** argv) {
         }
     Options options;
     if (std::string error; !parse(argc, argv, options, error))
-        return fail(error + "\n" + USAGE);
+        return fail(error + " (grass-runtime-sample --help lists the options)");
+
+    // The export is read before any window opens, so a wrong folder fails at once, anywhere.
+    grass::runtime::ExportData data;
+    if (std::string error; !grass::runtime::readExport(options.folder, data, error))
+        return fail(error);
 
     if (!glfwInit())
         return fail("cannot open a window (no display? run it under xvfb-run)");
@@ -222,7 +236,7 @@ int main(int argc, char** argv) {
     glfwSwapInterval(options.frames > 0 ? 0 : 1);
 
     // The field's GL objects go before the context does.
-    const int status = run(window, options);
+    const int status = run(window, options, std::move(data));
     glfwTerminate();
     return status;
 }
