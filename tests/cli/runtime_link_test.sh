@@ -12,6 +12,8 @@ for library in OpenImageIO OpenMesh tinygltf draco meshoptimizer glfw; do
   if echo "$needed" | grep -qi "$library"; then fail "the runtime pulls in $library:
 $needed"; fi
 done
+echo "$needed" | grep -q libepoxy || fail "the runtime's GL loader (libepoxy) is not linked:
+$needed"
 "$grass" export "$project" --format raw --out "$work/export" > "$work/export.txt" 2>&1 ||
   { cat "$work/export.txt" >&2; fail "grass export"; }
 "$check" "$work/export" || fail "runtime_link_check could not read the export"
