@@ -137,8 +137,8 @@ fs::path smallWindyMeadow(const fs::path& folder) {
     return folder;
 }
 
-// The small windy meadow grown, exported raw into `dir`/export and loaded by the runtime, with
-// the CPU reference's physics of the same project.
+// `project` grown, exported raw into `dir`/export and loaded by the runtime, with the CPU
+// reference's physics of the same project.
 struct LoadedRun {
     core::LoadedProject loaded;
     core::Scene scene;
@@ -147,8 +147,8 @@ struct LoadedRun {
     runtime::Field field;
 };
 
-bool loadRun(const fs::path& dir, LoadedRun& run) {
-    auto loaded = core::loadProject(smallWindyMeadow(dir / "project"));
+bool loadRun(const fs::path& dir, LoadedRun& run, const fs::path& project) {
+    auto loaded = core::loadProject(project);
     EXPECT_TRUE(loaded.ok()) << loaded.error().str();
     if (!loaded)
         return false;
@@ -191,7 +191,8 @@ TipError compareTips(const std::vector<core::Blade>& gpu, const std::vector<core
 // Tolerance: the CPU/GPU agreement of the physics (physics_gl_test.cpp), 1e-3·h on every tip.
 TEST_F(RuntimeTest, PhysicsAfterFiveSecondsMatchesTheCpuReference) {
     LoadedRun run;
-    ASSERT_TRUE(loadRun(scratchDir("runtime_gl_physics"), run));
+    const fs::path dir = scratchDir("runtime_gl_physics");
+    ASSERT_TRUE(loadRun(dir, run, smallWindyMeadow(dir / "project")));
     core::Scene* scene = &run.scene;
     runtime::Field& field = run.field;
     ASSERT_GT(scene->layers[0].liveBlades, 1000u);
@@ -219,7 +220,8 @@ TEST_F(RuntimeTest, PhysicsAfterFiveSecondsMatchesTheCpuReference) {
 // there in the CPU reference does, and its path no longer counts.
 TEST_F(RuntimeTest, ACollidersHostPositionDrivesThePhysics) {
     LoadedRun run;
-    ASSERT_TRUE(loadRun(scratchDir("runtime_gl_host_collider"), run));
+    const fs::path dir = scratchDir("runtime_gl_host_collider");
+    ASSERT_TRUE(loadRun(dir, run, smallWindyMeadow(dir / "project")));
     core::Scene* scene = &run.scene;
     runtime::Field& field = run.field;
     const core::ScenePhysics* physics = &run.physics;
@@ -257,6 +259,34 @@ TEST_F(RuntimeTest, ACollidersHostPositionDrivesThePhysics) {
     EXPECT_EQ(field.colliderOrigin(0),
               core::samplePath(field.data().colliders[0].path, field.timeS(),
                                field.data().colliders[0].origin));
+}
+
+// A packed mesh collider (tests/data/projects/rock: a cube as 16 spheres behind one bounding
+// sphere, sliding through the field) travels as spheres with their group and moves the same.
+TEST_F(RuntimeTest, APackedMeshColliderMatchesTheCpuReference) {
+    const fs::path dir = scratchDir("runtime_gl_rock");
+    fs::remove_all(dir / "project");
+    fs::copy(sourceDir() / "tests/data/projects/rock", dir / "project",
+             fs::copy_options::recursive);  // the packing cache lands next to the copy
+    LoadedRun run;
+    ASSERT_TRUE(loadRun(dir, run, dir / "project"));
+    ASSERT_EQ(run.field.data().colliders.size(), 1u);
+    EXPECT_EQ(run.field.data().colliders[0].sphereCount, run.physics.colliders.size());
+    EXPECT_GT(run.physics.colliders.size(), 1u);
+    EXPECT_EQ(run.field.data().spheres.front().groupSize, run.physics.colliders.front().groupSize);
+    core::SceneSimulation simulation(run.scene, run.physics, 2);
+    const int steps = static_cast<int>(std::lround(1.0 / double(run.physics.params.dtS)));
+    for (int i = 0; i < steps; ++i) {
+        simulation.step();
+        run.field.step();
+    }
+    const TipError tips =
+        compareTips(run.field.readBlades(0), run.scene.layers[0].patched.blades, run.rest);
+    std::printf("[ runtime ] packed cube, %d steps: max |v2_runtime - v2_cpu| / h = %.3g, tips "
+                "moved up to %.3f m\n",
+                steps, double(tips.maxRelative), double(tips.maxMoveM));
+    EXPECT_GT(tips.maxMoveM, 0.05f);  // the cube did push the grass
+    EXPECT_LT(tips.maxRelative, 1e-3f);
 }
 
 TEST_F(RuntimeTest, ABrokenExportIsRefusedNamingTheFile) {
