@@ -42,7 +42,7 @@ pid=$!
 trap 'kill $pid 2>/dev/null' EXIT
 window=$(xdotool search --sync --name "grass runtime sample" | head -1)
 [ -n "$window" ] || fail "no sample window"
-sleep 1  # the window takes its size from the export
+sleep 1  # the first frame compiles the shaders
 xdotool mousemove --window "$window" 240 160 mousedown 1
 wait $pid || { cat "$work/mouse.txt" >&2; fail "the sample failed under the mouse"; }
 trap - EXIT

@@ -127,11 +127,7 @@ int run(GLFWwindow* window, Options& options, grass::runtime::ExportData exporte
         return fail(error);
     }
     const grass::runtime::ExportData& data = field.data();
-    const int width = options.width > 0 ? options.width : data.render.width;
-    const int height = options.height > 0 ? options.height : data.render.height;
-    glfwSetWindowSize(window, width, height);
-    int fbWidth = width, fbHeight = height;
-    glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
+    int fbWidth = 1, fbHeight = 1;
 
     // Simulated before the first frame, so a screenshot can show the field in motion.
     while (field.timeS() + 0.5f * data.physics.dtS < options.timeS)
@@ -226,8 +222,10 @@ int main(int argc, char** argv) {
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_SAMPLES, 4);
     glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
-    // The window is sized once the export's render size is known; open it small first.
-    GLFWwindow* window = glfwCreateWindow(64, 64, "grass runtime sample", nullptr, nullptr);
+    // The project's render size unless --size says otherwise.
+    const int width = options.width > 0 ? options.width : data.render.width;
+    const int height = options.height > 0 ? options.height : data.render.height;
+    GLFWwindow* window = glfwCreateWindow(width, height, "grass runtime sample", nullptr, nullptr);
     if (window == nullptr) {
         glfwTerminate();
         return fail("cannot create a GL 4.5 core window");
