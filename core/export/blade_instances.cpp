@@ -72,6 +72,11 @@ std::vector<BladeInstance> bladeInstances(const LayerField& layer, int lod) {
         instance.rootColor = glm::mix(layer.rootColor, layer.poorRootColor, wilt);
         instance.tipColor = glm::mix(layer.tipColor, layer.poorTipColor, wilt);
         instance.tipOffset = blade.v2() - blade.v0();
+        if (slot < layer.shading.size()) {
+            instance.blurredNormal = layer.shading[slot].blurredNormal();
+            instance.ao = layer.shading[slot].ao();
+            instance.water = layer.shading[slot].water();
+        }
         instance.leanRad = bladeLeanRad(blade);
         instance.leanBin = leanBinOf(instance.leanRad);
         instance.wilt = wilt;

@@ -50,6 +50,11 @@ struct BladeInstance {
     // v2 − v0 in metres: where the tip hangs (rest lean of the growth model), for runtimes that
     // bend the blade instead of drawing it straight.
     glm::vec3 tipOffset{0.0f};
+    // What the renderer bakes per blade for the grass lighting (blade_shading.h, SPEC §10): the
+    // blurred terrain normal, the grass AO at the root and the water term.
+    glm::vec3 blurredNormal{0.0f, 1.0f, 0.0f};
+    float ao = 1.0f;
+    float water = 0.0f;
     // The lean of the resting blade towards its front (bladeLeanRad) and its bin.
     float leanRad = 0.0f;
     int leanBin = 0;

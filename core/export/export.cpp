@@ -81,7 +81,7 @@ json colorJson(glm::vec3 color) {
 using LayerProgress = std::function<void(float within, const char* stage)>;
 
 Result<void> stageGltfLayer(StagedFiles& staged, const LoadedProject& loaded, const Scene& scene,
-                            const SourceMaterial& terrainMaterial, std::size_t index,
+                            const SourceMaterial& terrainMaterial, const json& runtime, std::size_t index,
                             const std::string& stem, int lod, const LayerProgress& step,
                             ExportedLayer& report) {
     const LayerField& layer = scene.layers[index];
@@ -92,6 +92,7 @@ Result<void> stageGltfLayer(StagedFiles& staged, const LoadedProject& loaded, co
     input.segments = loaded.project.render.stripSegments;
     input.groundColor = loaded.project.render.groundColor;
     input.terrainMaterial = terrainMaterial;
+    input.runtime = runtime;
     input.binStem = stem;
     step(0.0f, "maps");
     for (const NamedMap& map : paintedMaps(layer)) {
@@ -186,7 +187,8 @@ Result<std::string> pngBytes(const MapImage& map, const fs::path& folder, const 
 
 // Every layer in one .glb (buildSceneGlb).
 Result<void> stageGlb(StagedFiles& staged, const LoadedProject& loaded, const Scene& scene,
-                      const SourceMaterial& terrainMaterial, const ExportOptions& options,
+                      const SourceMaterial& terrainMaterial, const json& runtime,
+                      const ExportOptions& options,
                       const ExportProgress& progress, std::vector<ExportedLayer>& layers) {
     GltfSceneInput input;
     input.scene = &scene;
@@ -195,6 +197,7 @@ Result<void> stageGlb(StagedFiles& staged, const LoadedProject& loaded, const Sc
     input.segments = loaded.project.render.stripSegments;
     input.groundColor = loaded.project.render.groundColor;
     input.terrainMaterial = terrainMaterial;
+    input.runtime = runtime;
     input.merged = options.format == ExportFormat::Mesh;
     if (input.merged) {
         // Refused before any work: a merged field over the budget, with the LOD that fits.
@@ -290,14 +293,17 @@ std::uint64_t ExportReport::totalBytes() const {
     return total;
 }
 
-// The scene's behaviour for runtimes (runtime_block.h): its meshes staged as content-named
-// files, the block returned for the manifest; what it cannot carry becomes notes.
+// The scene's behaviour for runtimes (runtime_block.h), returned for the manifest or the glTF
+// scene's extras; with `withMeshes` (raw) the terrain and props are staged as content-named
+// files it names. What it cannot carry becomes notes.
 static Result<json> stageRuntimeBlock(StagedFiles& staged, const LoadedProject& loaded,
-                               const Scene& scene, std::vector<std::string>& notes) {
+                                      const Scene& scene, bool withMeshes,
+                                      std::vector<std::string>& notes) {
     auto physics = buildScenePhysics(loaded);
     if (!physics)
         return physics.error();
-    const std::vector<RuntimeMeshFile> meshes = runtimeMeshes(loaded, scene);
+    const std::vector<RuntimeMeshFile> meshes =
+        withMeshes ? runtimeMeshes(loaded, scene) : std::vector<RuntimeMeshFile>{};
     std::vector<std::string> files;
     for (const RuntimeMeshFile& mesh : meshes) {
         files.push_back(contentAddressedName(fileSafeName(mesh.name) + ".mesh",
@@ -305,8 +311,9 @@ static Result<json> stageRuntimeBlock(StagedFiles& staged, const LoadedProject& 
         if (auto written = staged.add(files.back(), mesh.bytes); !written)
             return written.error();
     }
-    for (std::string& gap : runtimeBlockGaps(loaded, scene))
-        notes.push_back(std::move(gap));
+    if (withMeshes)  // the raw export is the runtime's: say what it will not show
+        for (std::string& gap : runtimeBlockGaps(loaded, scene))
+            notes.push_back(std::move(gap));
     return runtimeBlock(loaded, scene, *physics, meshes, files);
 }
 
@@ -375,8 +382,15 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
             layerNames.push_back(layer.name);
         const std::vector<std::string> stems = layerStems(layerNames);
         json layers = json::array();
+        // Every format carries the scene's behaviour: raw in its manifest (with the meshes as
+        // files), glTF in its scene's extras (the terrain is in the file itself).
+        auto runtime = stageRuntimeBlock(staged, loaded, scene, options.format == ExportFormat::Raw,
+                                         report.notes);
+        if (!runtime)
+            return runtime.error();
         if (options.format == ExportFormat::Glb || options.format == ExportFormat::Mesh) {
-            if (auto written = stageGlb(staged, loaded, scene, terrainMaterial, options, progress,
+            if (auto written = stageGlb(staged, loaded, scene, terrainMaterial, *runtime, options,
+                                        progress,
                                           report.layers);
                 !written)
                 return written.error();
@@ -392,7 +406,8 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
             };
             ExportedLayer exported{layer.name, layer.liveBlades, 0};
             if (options.format == ExportFormat::Gltf) {
-                if (auto written = stageGltfLayer(staged, loaded, scene, terrainMaterial, i, stems[i],
+                if (auto written = stageGltfLayer(staged, loaded, scene, terrainMaterial, *runtime,
+                                                  i, stems[i],
                                                   options.lod, step, exported);
                     !written)
                     return written.error();
@@ -406,9 +421,6 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
             report.layers.push_back(exported);
         }
         if (options.format == ExportFormat::Raw) {
-            auto runtime = stageRuntimeBlock(staged, loaded, scene, report.notes);
-            if (!runtime)
-                return runtime.error();
             json manifest = {{"format", "grass-raw-export"},
                              {"version", 1},
                              {"project", loaded.project.name},

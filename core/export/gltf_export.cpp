@@ -102,7 +102,8 @@ json terrainMesh(GltfBuilder& builder, const SurfaceMesh& mesh, int material, bo
 // `which` of `instances`.
 json instanceAttributes(GltfBuilder& builder, const std::vector<BladeInstance>& instances,
                         const std::vector<std::uint32_t>& which) {
-    std::vector<float> translation, rotation, scale, stiffness, tipColor, rootColor, tipOffset;
+    std::vector<float> translation, rotation, scale, stiffness, tipColor, rootColor, tipOffset,
+        blurredNormal, ao, water;
     for (const std::uint32_t i : which) {
         const BladeInstance& b = instances[i];
         push(translation, {b.translation.x, b.translation.y, b.translation.z});
@@ -113,6 +114,9 @@ json instanceAttributes(GltfBuilder& builder, const std::vector<BladeInstance>& 
         push(tipColor, {b.tipColor.r, b.tipColor.g, b.tipColor.b});
         push(rootColor, {b.rootColor.r, b.rootColor.g, b.rootColor.b});
         push(tipOffset, {b.tipOffset.x, b.tipOffset.y, b.tipOffset.z});
+        push(blurredNormal, {b.blurredNormal.x, b.blurredNormal.y, b.blurredNormal.z});
+        ao.push_back(b.ao);
+        water.push_back(b.water);
     }
     const auto add = [&](const std::vector<float>& values, int components) {
         return builder.addFloats(values, components, GltfTarget::None);
@@ -127,7 +131,10 @@ json instanceAttributes(GltfBuilder& builder, const std::vector<BladeInstance>& 
             {"_COLOR", tip},
             {"_COLOR_0", tip},
             {"_ROOT_COLOR", add(rootColor, 3)},
-            {"_TIP_OFFSET", add(tipOffset, 3)}};
+            {"_TIP_OFFSET", add(tipOffset, 3)},
+            {"_BLURRED_NORMAL", add(blurredNormal, 3)},
+            {"_AO", add(ao, 1)},
+            {"_WATER", add(water, 1)}};
 }
 
 // The root-to-tip shading of the blade meshes' COLOR_0, which loaders multiply with the
@@ -223,8 +230,10 @@ struct DocumentParts {
         doc()["meshes"].push_back(std::move(mesh));
         return static_cast<int>(doc()["meshes"].size()) - 1;
     }
-    void finishScene(const std::string& name) {
+    void finishScene(const std::string& name, const json& runtime) {
         json sceneJson = {{"name", name}};
+        if (!runtime.is_null())
+            sceneJson["extras"] = {{"grass_runtime", runtime}};
         if (!topNodes.empty())
             sceneJson["nodes"] = topNodes;
         doc()["scenes"] = json::array({sceneJson});
@@ -408,7 +417,7 @@ GltfLayerDocument buildLayerGltf(const GltfLayerInput& input) {
     addTerrain(parts, scene.mesh, input.groundColor, input.terrainMaterial);
     GltfLayerDocument out;
     out.instances = addLayerBlades(parts, layer, input.lod, input.segments);
-    parts.finishScene(layer.name);
+    parts.finishScene(layer.name, input.runtime);
     out.binary = parts.builder.finishBinary();
     out.binUri = contentAddressedName(input.binStem, contentHash(out.binary), ".bin");
     out.json = parts.builder.finishJson(out.binUri);
@@ -428,7 +437,7 @@ GltfSceneDocument buildSceneGlb(const GltfSceneInput& input) {
             input.merged ? addLayerMergedBlades(parts, scene.layers[i], input.lod, input.segments)
                          : addLayerBlades(parts, scene.layers[i], input.lod, input.segments));
     }
-    parts.finishScene(input.name);
+    parts.finishScene(input.name, input.runtime);
     out.glb = parts.builder.finishGlb();
     return out;
 }

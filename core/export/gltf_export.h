@@ -49,6 +49,9 @@ struct GltfLayerInput {
     // The buffer's file is named "<binStem>-<hash of its bytes>.bin" (content_names.h).
     std::string binStem;
     std::vector<GltfMapImage> maps;
+    // The scene's behaviour for runtimes (runtime_block.h), written as the glTF scene's
+    // extras.grass_runtime; null: none.
+    nlohmann::json runtime;
 };
 
 GltfLayerDocument buildLayerGltf(const GltfLayerInput& input);
@@ -67,6 +70,7 @@ struct GltfSceneInput {
     // The blades baked into plain meshes per cell (merged_blades.h, --format mesh) instead of
     // instances.
     bool merged = false;
+    nlohmann::json runtime;  // as GltfLayerInput's
 };
 
 struct GltfSceneDocument {

@@ -109,7 +109,8 @@ json spheresJson(const ScenePhysics& physics) {
 
 // Project collider i owns the spheres buildScenePhysics made of it: one for a sphere, a group
 // (the head's groupSize) for a packed mesh; scene.props[i] draws it.
-json collidersJson(const Project& project, const Scene& scene, const ScenePhysics& physics) {
+json collidersJson(const Project& project, const Scene& scene, const ScenePhysics& physics,
+                   std::size_t meshCount) {
     json colliders = json::array();
     std::size_t first = 0;
     for (std::size_t i = 0; i < project.colliders.size(); ++i) {
@@ -122,7 +123,8 @@ json collidersJson(const Project& project, const Scene& scene, const ScenePhysic
                       {"first_sphere", first},
                       {"sphere_count", count}};
         if (i < scene.props.size()) {
-            entry["mesh"] = i + 1;  // meshes[0] is the terrain
+            if (i + 1 < meshCount)
+                entry["mesh"] = i + 1;  // meshes[0] is the terrain
             entry["scale"] = scene.props[i].scale;
         }
         colliders.push_back(std::move(entry));
@@ -210,7 +212,7 @@ json runtimeBlock(const LoadedProject& loaded, const Scene& scene, const ScenePh
             {"physics", physicsJson(physics.params)},
             {"wind", windJson(project, physics)},
             {"spheres", spheresJson(physics)},
-            {"colliders", collidersJson(project, scene, physics)},
+            {"colliders", collidersJson(project, scene, physics, meshEntries.size())},
             {"lighting", lightingJson(lighting)},
             {"render",
              {{"geometry", geometryName(render.geometry)},
