@@ -21,7 +21,7 @@ packages=(g++ cmake ninja-build pkg-config ccache
   libglfw3-dev libglm-dev libtinygltf-dev libopenmesh-dev libopenimageio-dev libepoxy-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libstb-dev fonts-dejavu-core xvfb xauth xdotool gnuplot-nox libdraco-dev libmeshoptimizer-dev
-  python3)
+  libhwy-dev python3)
 # The export tests validate glTF files with the Khronos glTF-Validator, an npm package. Node
 # from elsewhere (nodesource's nodejs bundles npm) will do, so look for the commands first.
 if [ "$mode" = test ] && ! { command -v node && command -v npm; } >/dev/null; then

@@ -12,6 +12,8 @@ find_package(OpenMesh REQUIRED)
 find_package(TinyGLTF REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(Threads REQUIRED)
+# Google Highway: the SIMD of the CPU physics (core/physics/physics_simd.h, issue 29).
+find_package(hwy REQUIRED)
 # Compressed glTF geometry (issue 26): KHR_draco_mesh_compression and EXT_meshopt_compression.
 find_package(draco REQUIRED)
 find_package(meshoptimizer REQUIRED)

@@ -126,9 +126,9 @@ GravityLoad ScenePhysics::snowLoad(std::size_t layer, float timeS) const {
 
 void SceneSimulation::step() {
     for (std::size_t i = 0; i < mScene.layers.size(); ++i)
-        stepPhysics(mScene.layers[i].patched.blades, mEta[i], mRestTips[i], mPhysics.params,
-                    mPhysics.wind, mPhysics.colliders, mTimeS, mThreadCount,
-                    mPhysics.snowLoad(i, mTimeS));
+        stepPhysicsOn(mCpuPhysics, mScene.layers[i].patched.blades, mEta[i], mRestTips[i],
+                      mPhysics.params, mPhysics.wind, mPhysics.colliders, mTimeS, mThreadCount,
+                      mPhysics.snowLoad(i, mTimeS));
     advanceClock();
 }
 

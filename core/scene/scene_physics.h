@@ -9,6 +9,7 @@
 
 #include "physics/field_health.h"
 #include "physics/physics.h"
+#include "physics/physics_simd.h"
 #include "project/project.h"
 #include "scene/scene.h"
 #include "snow/snow_params.h"
@@ -35,8 +36,11 @@ Result<ScenePhysics> buildScenePhysics(const LoadedProject& project);
 // The CPU state of a simulated scene: η and rest tips per layer, parallel to the layer's blades.
 class SceneSimulation {
 public:
-    // threadCount 0: hardware concurrency (core::stepPhysics).
+    // threadCount 0: hardware concurrency (core::stepPhysics). Steps run on the SIMD execution
+    // (physics_simd.h) unless setCpuPhysics says the scalar reference.
     SceneSimulation(Scene& scene, ScenePhysics physics, unsigned threadCount = 0);
+    void setCpuPhysics(CpuPhysics path) { mCpuPhysics = path; }
+    CpuPhysics cpuPhysics() const { return mCpuPhysics; }
 
     // One step of params.dtS from timeS() on every layer.
     void step();
@@ -57,6 +61,7 @@ private:
     Scene& mScene;
     ScenePhysics mPhysics;
     unsigned mThreadCount;
+    CpuPhysics mCpuPhysics = CpuPhysics::Simd;
     std::vector<std::vector<float>> mEta;
     std::vector<std::vector<glm::vec3>> mRestTips;
     float mTimeS = 0.0f;

@@ -21,7 +21,7 @@ namespace grass::cli {
 namespace {
 
 struct SimArgs {
-    std::string project, report, backend = "cpu", preset = "project";
+    std::string project, report, backend = "cpu", preset = "project", cpuPath = "simd";
     double seconds = 5.0;
     double dtS = 0.0;
     int threads = 0;
@@ -40,14 +40,14 @@ struct SimField {
 // Where the physics runs: the GPU backend holds a GL context for as long as it steps.
 struct SimDevice {
     SimBackend backend = SimBackend::Cpu;
-    std::string description = "CPU reference";
+    std::string description = "CPU";
     std::unique_ptr<gl::HeadlessContext> context;
 };
 
 std::optional<int> parseSimArgs(const std::vector<std::string>& argv, SimArgs& args) {
     ArgParser parser(
         "grass sim <project-dir|project.json> [--seconds S] [--dt DT] [--backend cpu|gpu] "
-        "[--report out.json]",
+        "[--cpu-path simd|scalar] [--report out.json]",
         "Grows the project's grass and runs its physics (gravity, wind sources, colliders) "
         "headless for S simulated seconds in steps of DT, on the CPU reference or the compute "
         "shader, with a progress line on stderr. Prints the cost per step and the health of the "
@@ -62,6 +62,10 @@ std::optional<int> parseSimArgs(const std::vector<std::string>& argv, SimArgs& a
                   &args.backend);
     parser.integer("--threads", "CPU threads for the cpu backend (0: all cores)", &args.threads, 0,
                    256);
+    parser.choice("--cpu-path", {"simd", "scalar"},
+                  "cpu backend: the SIMD execution (Highway, widest instruction set of this CPU) "
+                  "or the scalar reference it is tested against (docs/physics.md)",
+                  &args.cpuPath);
     parser.text("--report", "FILE", "write the figures as a JSON object to FILE", &args.report);
     parser.unsignedInteger("--seed", "scatter seed, overrides the project's", &args.seed);
     parser.flag("--gl-debug", "print GL debug output (gpu backend)", &args.glDebug);
@@ -122,6 +126,13 @@ double bladeStepsPerS(const core::Scene& scene, const SimRun& run) {
                             : 0.0;
 }
 
+// "simd AVX2 × 8" or "scalar reference".
+std::string cpuPathLabel(const SimArgs& args) {
+    if (args.cpuPath == "scalar")
+        return "scalar reference";
+    return "simd " + core::physicsSimdTarget() + " x " + std::to_string(core::physicsSimdLanes());
+}
+
 void printSummary(const SimArgs& args, const core::LoadedProject& loaded, const SimField& field,
                   const SimDevice& device, unsigned threads, const SimRun& run) {
     const core::PhysicsParams& params = field.physics.params;
@@ -136,7 +147,7 @@ void printSummary(const SimArgs& args, const core::LoadedProject& loaded, const 
         field.physics.colliders.size());
     std::printf("  backend    %s (%s%s)\n", args.backend.c_str(), device.description.c_str(),
                 device.backend == SimBackend::Cpu
-                    ? (", " + std::to_string(threads) + " threads").c_str()
+                    ? (", " + std::to_string(threads) + " threads, " + cpuPathLabel(args)).c_str()
                     : "");
     std::printf("  cost       %.3f ms/step, %.3g blade-steps/s\n", run.msPerStep,
                 bladeStepsPerS(field.scene, run));
@@ -162,6 +173,9 @@ nlohmann::ordered_json reportJson(const SimArgs& args, const SimField& field, co
     out["backend"] = args.backend;
     out["device"] = device;
     out["threads"] = threads;
+    out["cpu_path"] = args.cpuPath;
+    out["simd_target"] = core::physicsSimdTarget();
+    out["simd_lanes"] = core::physicsSimdLanes();
     out["wind_sources"] = physics.wind.size();
     out["collider_spheres"] = physics.colliders.size();
     out["ms_per_step"] = run.msPerStep;
@@ -198,6 +212,8 @@ int runSim(const std::vector<std::string>& argv) {
 
     const unsigned threads = cpuThreads(args.threads);
     core::SceneSimulation simulation(field->scene, field->physics, threads);
+    simulation.setCpuPhysics(args.cpuPath == "scalar" ? core::CpuPhysics::Scalar
+                                                      : core::CpuPhysics::Simd);
     auto run = runSimulation(field->scene, simulation, args.seconds, device->backend, "sim");
     if (!run)
         return reportFailure("sim", run.error(), EXIT_FAILED);

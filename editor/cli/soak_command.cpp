@@ -163,6 +163,8 @@ Result<BackendSoak> soakOn(SimBackend backend, const SoakSetup& setup,
     }
     const char* name = backend == SimBackend::Gpu ? "gpu" : "cpu";
     core::SceneSimulation simulation(*scene, setup.physics, setup.threads);
+    // The soak watches the reference the SIMD execution is tested against (its label says so).
+    simulation.setCpuPhysics(core::CpuPhysics::Scalar);
     auto run = soakSimulation(*scene, simulation, backend,
                               {setup.args.seconds, setup.args.sampleEveryS, name}, stderr);
     if (!run)

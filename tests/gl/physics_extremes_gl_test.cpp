@@ -30,29 +30,6 @@ std::vector<core::Blade> readBlades(const gl::Buffer& buffer, std::size_t count)
     return blades;
 }
 
-// Cases that can share one dispatch: the same step, wind and collider. The collider's centre
-// scales with h, so cases of different h share one only when its radius is 0 (a sphere of radius
-// 0 is skipped before its centre is read). Putting the three spheres of a group in one dispatch
-// does not work: the 1e3 m sphere placed for h = 1e-4 would swallow the 1 m blade at the same root.
-bool shareDispatch(const ExtremeCase& a, const ExtremeCase& b) {
-    const bool sameCollider =
-        extremeColliders(a) == extremeColliders(b) || (a.radiusM == 0.0f && b.radiusM == 0.0f);
-    return a.dtS == b.dtS && a.windStrength == b.windStrength && sameCollider;
-}
-
-std::vector<std::vector<ExtremeCase>> groupCases(const std::vector<ExtremeCase>& cases) {
-    std::vector<std::vector<ExtremeCase>> groups;
-    for (const ExtremeCase& c : cases) {
-        auto group = std::find_if(groups.begin(), groups.end(),
-                                  [&](const auto& g) { return shareDispatch(g.front(), c); });
-        if (group == groups.end())
-            groups.push_back({c});
-        else
-            group->push_back(c);
-    }
-    return groups;
-}
-
 // The sweep on the GPU and the CPU side by side; `preset`: its substep policy on top (issue 10).
 // `tipTolerance` bounds |v2_gpu − v2_cpu| / h.
 void runExtremesOnGpu(std::optional<core::QualityPreset> preset, float tipTolerance) {

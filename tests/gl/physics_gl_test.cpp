@@ -13,6 +13,7 @@
 #include "physics/physics.h"
 #include "render/physics_gpu.h"
 #include "scatter/scatter.h"
+#include "support/physics_cases.h"
 
 namespace grass::test {
 namespace {
@@ -30,45 +31,6 @@ std::vector<core::Blade> makeBlades() {
     core::ScatterParams scatter;
     scatter.density = 20.0f;
     return core::scatterBlades(core::makeProceduralMesh(mesh), scatter, nullptr, SEED).blades;
-}
-
-std::vector<core::WindSource> makeWind() {
-    core::WindSource wave;
-    wave.kind = core::WindKind::Directional;
-    wave.direction = glm::vec3(1.0f, 0.0f, 0.3f);
-    wave.strength = 3.0f;
-    wave.wavelengthM = 3.0f;
-    wave.speedMps = 1.5f;
-    wave.gust = 0.4f;
-    core::WindSource point;
-    point.kind = core::WindKind::Point;
-    point.strength = 4.0f;
-    point.radiusM = 2.5f;
-    point.coreRadiusM = 0.5f;
-    point.path = {{0.0f, {-1.5f, 0.5f, 1.5f}}, {16.0f, {1.5f, 0.5f, -1.5f}}};
-    return {wave, point};
-}
-
-std::vector<core::SphereCollider> makeColliders() {
-    core::SphereCollider sphere;
-    sphere.radiusM = 0.6f;
-    // Rolls across the field and back, through the blades (centre below their tips).
-    sphere.path = {
-        {0.0f, {-2.5f, 0.3f, 0.0f}}, {8.0f, {2.5f, 0.3f, 0.5f}}, {16.0f, {-2.5f, 0.3f, -0.5f}}};
-    // A packed mesh: three spheres moving together behind one bounding sphere (broad phase).
-    std::vector<core::SphereCollider> colliders{sphere};
-    for (const glm::vec3 offset :
-         {glm::vec3(0.0f), glm::vec3(0.5f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 0.5f)}) {
-        core::SphereCollider part;
-        part.radiusM = 0.4f;
-        part.centre = glm::vec3(0.0f, 0.2f, 2.5f) + offset;
-        part.path = {{0.0f, part.centre}, {12.0f, part.centre + glm::vec3(0.0f, 0.0f, -5.0f)}};
-        colliders.push_back(part);
-    }
-    colliders[1].groupSize = 3;
-    colliders[1].boundOffset = glm::vec3(0.25f, 0.0f, 0.25f);
-    colliders[1].boundRadiusM = 0.4f + glm::length(glm::vec3(0.25f, 0.0f, 0.25f)) + 1e-4f;
-    return colliders;
 }
 
 std::vector<core::Blade> readBlades(const gl::Buffer& buffer, std::size_t count) {
@@ -91,8 +53,8 @@ TEST_F(PhysicsGpuTest, MatchesCpuReferenceOverThousandSteps) {
     const std::vector<glm::vec3> tips = core::restTips(cpu);
     std::vector<float> eta(cpu.size(), 0.0f);
     const core::PhysicsParams params;
-    const auto wind = makeWind();
-    const auto colliders = makeColliders();
+    const auto wind = movingWind();
+    const auto colliders = movingColliders();
 
     auto physics = render::PhysicsGpu::load();
     ASSERT_TRUE(physics.ok()) << physics.error().str();

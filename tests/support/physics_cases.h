@@ -161,6 +161,71 @@ inline float relativeLengthError(const core::Blade& b, float h) {
     return std::abs(lengthEstimate(b) - h) / h;
 }
 
+// A gusty wave and a point source moving on a path (the CPU/GPU and scalar/SIMD agreement tests).
+inline std::vector<core::WindSource> movingWind() {
+    core::WindSource wave;
+    wave.kind = core::WindKind::Directional;
+    wave.direction = glm::vec3(1.0f, 0.0f, 0.3f);
+    wave.strength = 3.0f;
+    wave.wavelengthM = 3.0f;
+    wave.speedMps = 1.5f;
+    wave.gust = 0.4f;
+    core::WindSource point;
+    point.kind = core::WindKind::Point;
+    point.strength = 4.0f;
+    point.radiusM = 2.5f;
+    point.coreRadiusM = 0.5f;
+    point.path = {{0.0f, {-1.5f, 0.5f, 1.5f}}, {16.0f, {1.5f, 0.5f, -1.5f}}};
+    return {wave, point};
+}
+
+// A sphere rolling through a 4 m field and back, and a packed group of three spheres sliding
+// across it behind one bounding sphere.
+inline std::vector<core::SphereCollider> movingColliders() {
+    core::SphereCollider sphere;
+    sphere.radiusM = 0.6f;
+    // Rolls across the field and back, through the blades (centre below their tips).
+    sphere.path = {
+        {0.0f, {-2.5f, 0.3f, 0.0f}}, {8.0f, {2.5f, 0.3f, 0.5f}}, {16.0f, {-2.5f, 0.3f, -0.5f}}};
+    // A packed mesh: three spheres moving together behind one bounding sphere (broad phase).
+    std::vector<core::SphereCollider> colliders{sphere};
+    for (const glm::vec3 offset :
+         {glm::vec3(0.0f), glm::vec3(0.5f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 0.5f)}) {
+        core::SphereCollider part;
+        part.radiusM = 0.4f;
+        part.centre = glm::vec3(0.0f, 0.2f, 2.5f) + offset;
+        part.path = {{0.0f, part.centre}, {12.0f, part.centre + glm::vec3(0.0f, 0.0f, -5.0f)}};
+        colliders.push_back(part);
+    }
+    colliders[1].groupSize = 3;
+    colliders[1].boundOffset = glm::vec3(0.25f, 0.0f, 0.25f);
+    colliders[1].boundRadiusM = 0.4f + glm::length(glm::vec3(0.25f, 0.0f, 0.25f)) + 1e-4f;
+    return colliders;
+}
+
+// Cases that can share one dispatch (one step call, on the GPU or the SIMD execution): the same
+// step, wind and collider. The collider's centre scales with h, so cases of different h share one only when its radius is 0 (a sphere of radius
+// 0 is skipped before its centre is read). Putting the three spheres of a group in one dispatch
+// does not work: the 1e3 m sphere placed for h = 1e-4 would swallow the 1 m blade at the same root.
+inline bool shareDispatch(const ExtremeCase& a, const ExtremeCase& b) {
+    const bool sameCollider =
+        extremeColliders(a) == extremeColliders(b) || (a.radiusM == 0.0f && b.radiusM == 0.0f);
+    return a.dtS == b.dtS && a.windStrength == b.windStrength && sameCollider;
+}
+
+inline std::vector<std::vector<ExtremeCase>> groupCases(const std::vector<ExtremeCase>& cases) {
+    std::vector<std::vector<ExtremeCase>> groups;
+    for (const ExtremeCase& c : cases) {
+        auto group = std::find_if(groups.begin(), groups.end(),
+                                  [&](const auto& g) { return shareDispatch(g.front(), c); });
+        if (group == groups.end())
+            groups.push_back({c});
+        else
+            group->push_back(c);
+    }
+    return groups;
+}
+
 // Degenerate input for the repair rule of core::repairBlade (docs/physics.md). Blades 0–4 are
 // the ones tests/core/physics/physics_test.cpp names by index; checkBlades reports blade 2 first.
 inline std::vector<core::Blade> degenerateBlades() {
