@@ -181,14 +181,14 @@ HWY_INLINE V ValueNoise3(D d, V3 p) {
 HWY_INLINE V Falloff(D d, V r, float radiusM) {
     if (radiusM <= 0.0f)
         return hn::Set(d, 1.0f);
-    const V rr = hn::Div(r, hn::Set(d, radiusM));
+    const V rr = hn::Mul(r, hn::Set(d, 1.0f / radiusM));
     const V q = hn::Sub(hn::Set(d, 1.0f), hn::Mul(rr, rr));
     return hn::IfThenZeroElse(hn::Ge(r, hn::Set(d, radiusM)), hn::Mul(q, q));
 }
 HWY_INLINE V CoreRamp(D d, V r, float coreRadiusM) {
     if (!(coreRadiusM > 0.0f))
         return hn::Set(d, 1.0f);
-    return hn::Min(hn::Div(r, hn::Set(d, coreRadiusM)), hn::Set(d, 1.0f));
+    return hn::Min(hn::Mul(r, hn::Set(d, 1.0f / coreRadiusM)), hn::Set(d, 1.0f));
 }
 
 // core::windAt summed over the sources at the root p (finite in every lane) at time t.
@@ -205,6 +205,8 @@ HWY_INLINE V3 WindAt(D d, const Job& job, std::uint32_t substep, V3 p) {
             V magnitude = hn::Set(d, s.strength);
             const V3 dir = Splat3(d, s.dir);
             if (s.wavelengthM > 0.0f) {
+                // Divided as the reference divides: the wave's phase is where the windiest
+                // extremes are most sensitive to rounding.
                 const V phase = hn::Div(
                     hn::Mul(hn::Set(d, 6.28318530717958647692f),
                             hn::Sub(Dot3(dir, p), hn::Set(d, s.speedMps * t))),
@@ -213,10 +215,8 @@ HWY_INLINE V3 WindAt(D d, const Job& job, std::uint32_t substep, V3 p) {
                                                        hn::Mul(hn::Set(d, 0.5f), hn::Sin(d, phase))));
             }
             if (s.gust > 0.0f) {
-                const V cell = hn::Set(d, s.cellM);
                 const V3 moved = Sub3(p, Scale3(dir, hn::Set(d, s.speedMps * t)));
-                const V n = ValueNoise3(
-                    d, V3{hn::Div(moved.x, cell), hn::Div(moved.y, cell), hn::Div(moved.z, cell)});
+                const V n = ValueNoise3(d, Scale3(moved, hn::Set(d, 1.0f / s.cellM)));
                 const float g = std::clamp(s.gust, 0.0f, 1.0f);
                 magnitude = hn::Mul(magnitude, hn::Add(hn::Set(d, 1.0f - g), hn::Mul(hn::Set(d, g), n)));
             }
@@ -274,8 +274,7 @@ HWY_INLINE V3 SphereCorrection(D d, V3 p, V3 c, V radius, V3 up) {
     const V3 toCentre = Sub3(c, p);
     const V dist = Length3(toCentre);
     const V3 n = Select3(hn::Gt(dist, hn::Set(d, 1e-20f)),
-                         V3{hn::Div(toCentre.x, dist), hn::Div(toCentre.y, dist),
-                            hn::Div(toCentre.z, dist)},
+                         Scale3(toCentre, hn::Div(hn::Set(d, 1.0f), dist)),
                          V3{hn::Neg(up.x), hn::Neg(up.y), hn::Neg(up.z)});
     return Select3(hn::Lt(dist, radius), Scale3(n, hn::Sub(dist, radius)), Zero3(d));
 }
