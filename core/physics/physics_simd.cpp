@@ -243,14 +243,13 @@ HWY_INLINE V3 WindAt(D d, const Job& job, std::uint32_t substep, V3 p) {
 }
 
 // Validation 1–3 of SPEC §3 (core::validateBlade), four passes; h > 0 in every lane.
-HWY_INLINE void Validate(D d, V3 v0, V3 up, V h, V3& v1, V3& v2) {
+HWY_INLINE void Validate(D d, V3 v0, V3 up, V h, V invH, V3& v1, V3& v2) {
     V3 d2 = Sub3(v2, v0);
     d2 = Sub3(d2, Scale3(up, hn::Min(Dot3(up, d2), hn::Zero(d))));
     V3 d1 = Zero3(d);
-    M straight = hn::Lt(h, hn::Zero(d));  // all false
     for (int iteration = 0; iteration < 4; ++iteration) {
         const V lproj = Length3(Sub3(d2, Scale3(up, Dot3(d2, up))));
-        const V ratio = hn::Div(lproj, h);
+        const V ratio = hn::Mul(lproj, invH);
         d1 = Scale3(up, hn::Mul(h, hn::Max(hn::Sub(hn::Set(d, 1.0f), ratio),
                                            hn::Mul(hn::Set(d, 0.05f),
                                                    hn::Max(ratio, hn::Set(d, 1.0f))))));
@@ -258,12 +257,14 @@ HWY_INLINE void Validate(D d, V3 v0, V3 up, V h, V3& v1, V3& v2) {
         const V l1 = hn::Add(Length3(Sub3(d2, d1)), Length3(d1));
         const V length = hn::Div(hn::Add(hn::Mul(hn::Set(d, 2.0f), l0), l1), hn::Set(d, 3.0f));
         const V r = hn::Div(h, length);
-        const M bad = hn::Not(hn::And(hn::And(hn::Gt(length, hn::Zero(d)), hn::IsFinite(r)),
-                                      Finite3(d2)));
-        straight = hn::Or(straight, bad);
         d1 = Scale3(d1, r);
         d2 = Scale3(d2, r);
     }
+    // The reference stands a blade straight as soon as a pass meets a length that is not > 0, a
+    // ratio that is not finite or a d2 that is not: each of these leaves d2 or d1 non-finite
+    // (0·∞, ∞ and NaN persist through the later passes), so one test after the passes finds the
+    // same lanes.
+    const M straight = hn::Not(hn::And(Finite3(d1), Finite3(d2)));
     const V3 top = Add3(v0, Scale3(up, h));
     v1 = Select3(straight, top, Add3(v0, d1));
     v2 = Select3(straight, top, Add3(v0, d2));
@@ -352,16 +353,18 @@ void StepBlocks(const Job& job, std::size_t firstBlock, std::size_t endBlock) {
     HWY_ALIGN float out[7][MAX_LANES];
     for (std::size_t block = firstBlock; block < endBlock; ++block) {
         const std::size_t first = block * lanes;
+        // Into lanes: the blade's 16 floats, then η, the rest tip and the extra gravity.
         for (std::size_t l = 0; l < lanes; ++l) {
             const std::size_t i = first + l;
-            const Blade& c = job.blades[i];
-            const float values[FIELD_COUNT] = {
-                c.v0Theta.x, c.v0Theta.y, c.v0Theta.z, c.v0Theta.w, c.v1H.x, c.v1H.y, c.v1H.z,
-                c.v1H.w, c.v2W.x, c.v2W.y, c.v2W.z, c.v2W.w, c.upS.x, c.upS.y, c.upS.z, c.upS.w,
-                job.eta[i], job.restTips[i].x, job.restTips[i].y, job.restTips[i].z,
-                job.load.at(i)};
-            for (int f = 0; f < FIELD_COUNT; ++f)
-                in[f][l] = values[f];
+            float blade[16];
+            std::memcpy(blade, &job.blades[i], sizeof blade);  // Blade: four vec4 (blade.h)
+            for (int f = 0; f < 16; ++f)
+                in[f][l] = blade[f];
+            in[ETA][l] = job.eta[i];
+            in[TIPX][l] = job.restTips[i].x;
+            in[TIPY][l] = job.restTips[i].y;
+            in[TIPZ][l] = job.restTips[i].z;
+            in[EXTRA][l] = job.load.at(i);
         }
         const auto load = [&](int f) { return hn::Load(d, in[f]); };
         // The lanes the reference would repair or collapse take its scalar step (all fields
@@ -395,6 +398,7 @@ void StepBlocks(const Job& job, std::size_t firstBlock, std::size_t endBlock) {
         const V3 v0{load(V0X), load(V0Y), load(V0Z)};
         const V3 up{load(UPX), load(UPY), load(UPZ)};
         const V h = load(H), s = load(S);
+        const V invH = hn::Div(hn::Set(d, 1.0f), h);  // for the validation's ratio lproj / h
         V3 v1{load(V1X), load(V1Y), load(V1Z)};
         V3 v2{load(V2X), load(V2Y), load(V2Z)};
         V eta = load(ETA);
@@ -443,13 +447,13 @@ void StepBlocks(const Job& job, std::size_t firstBlock, std::size_t endBlock) {
             delta = Select3(hn::IsFinite(move), delta, Zero3(d));
             v2 = Add3(v2, delta);
             eta = hn::Max(hn::Sub(eta, hn::Set(d, job.decayTau)), hn::Zero(d));
-            Validate(d, v0, up, h, v1, v2);
+            Validate(d, v0, up, h, invH, v1, v2);
             if (!job.colliders->empty()) {
                 V3 hitV2 = v2;
                 const M hit = Collide(d, job, i, v0, up, h, v1, hitV2, eta);
                 if (!hn::AllFalse(d, hit)) {
                     V3 hitV1 = v1;
-                    Validate(d, v0, up, h, hitV1, hitV2);
+                    Validate(d, v0, up, h, invH, hitV1, hitV2);
                     v1 = Select3(hit, hitV1, v1);
                     v2 = Select3(hit, hitV2, v2);
                 }

@@ -23,6 +23,7 @@
 #include "gl/buffer.h"
 #include "gl/headless_context.h"
 #include "physics/physics.h"
+#include "physics/physics_simd.h"
 #include "render/physics_gpu.h"
 #include "gl/timer_query.h"
 #include "util/rng.h"
@@ -96,8 +97,9 @@ void setBladeStepCounters(benchmark::State& state, std::size_t count) {
         static_cast<double>(count), benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// state.range(0): blade count, state.range(1): threads.
-void runCpu(benchmark::State& state, Scenario scenario) {
+// state.range(0): blade count, state.range(1): threads. `path`: the scalar reference
+// (BM_PhysicsCpu_*) or the SIMD execution (BM_PhysicsSimd_*, physics_simd.h).
+void runCpu(benchmark::State& state, Scenario scenario, core::CpuPhysics path) {
     const auto count = static_cast<std::size_t>(state.range(0));
     const auto threads = static_cast<unsigned>(state.range(1));
     Field field = makeField(count);
@@ -106,8 +108,8 @@ void runCpu(benchmark::State& state, Scenario scenario) {
     const Forces forces = makeForces(scenario, field.sideM);
     float timeS = 0.0f;
     for (auto _ : state) {
-        core::stepPhysics(field.blades, eta, tips, forces.params, forces.wind, forces.colliders,
-                          timeS, threads);
+        core::stepPhysicsOn(path, field.blades, eta, tips, forces.params, forces.wind,
+                            forces.colliders, timeS, threads);
         timeS += forces.params.dtS;
         benchmark::DoNotOptimize(field.blades.data());
         benchmark::ClobberMemory();
@@ -179,8 +181,8 @@ void runMemoryCopy(benchmark::State& state) {
         2.0 * static_cast<double>(BYTES), benchmark::Counter::kIsIterationInvariantRate);
 }
 
-void registerCpu(const char* name, Scenario scenario) {
-    benchmark::RegisterBenchmark(name, runCpu, scenario)
+void registerCpu(const char* name, Scenario scenario, core::CpuPhysics path) {
+    benchmark::RegisterBenchmark(name, runCpu, scenario, path)
         ->ArgNames({"blades", "threads"})
         ->ArgsProduct({{100000, 1000000}, {1, 2}})
         ->UseRealTime()
@@ -204,9 +206,15 @@ int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
         return 1;
-    registerCpu("BM_PhysicsCpu_Windy", Scenario::Windy);
-    registerCpu("BM_PhysicsCpu_WindyCollider", Scenario::WindyCollider);
-    registerCpu("BM_PhysicsCpu_Still", Scenario::Still);
+    using grass::core::CpuPhysics;
+    registerCpu("BM_PhysicsCpu_Windy", Scenario::Windy, CpuPhysics::Scalar);
+    registerCpu("BM_PhysicsCpu_WindyCollider", Scenario::WindyCollider, CpuPhysics::Scalar);
+    registerCpu("BM_PhysicsCpu_Still", Scenario::Still, CpuPhysics::Scalar);
+    std::printf("SIMD: %s, %zu float lanes\n", grass::core::physicsSimdTarget().c_str(),
+                grass::core::physicsSimdLanes());
+    registerCpu("BM_PhysicsSimd_Windy", Scenario::Windy, CpuPhysics::Simd);
+    registerCpu("BM_PhysicsSimd_WindyCollider", Scenario::WindyCollider, CpuPhysics::Simd);
+    registerCpu("BM_PhysicsSimd_Still", Scenario::Still, CpuPhysics::Simd);
     auto context = grass::gl::HeadlessContext::create();
     if (context) {
         std::printf("GL: %s\n", grass::gl::rendererDescription().c_str());
