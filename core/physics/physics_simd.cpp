@@ -407,9 +407,20 @@ void StepBlocks(const Job& job, std::size_t firstBlock, std::size_t endBlock) {
         const V3 iv2{load(TIPX), load(TIPY), load(TIPZ)};
         const V3 v1Start = v1, v2Start = v2;
         const V etaStart = eta;
+        // Nothing acts on a blade at rest (no wind, no colliders, no gravity, η = 0, the tip at
+        // its rest): the reference leaves it as it was. A block of such blades is done.
+        const V gMagnitudeStart = hn::Add(hn::Set(d, job.gravityW), load(EXTRA));
+        const M atRest =
+            job.restSkip
+                ? hn::And(hn::And(hn::Eq(gMagnitudeStart, hn::Zero(d)), hn::Eq(eta, hn::Zero(d))),
+                          hn::And(hn::And(hn::Eq(v2.x, iv2.x), hn::Eq(v2.y, iv2.y)),
+                                  hn::Eq(v2.z, iv2.z)))
+                : hn::Not(hn::FirstN(d, lanes));
+        if (hn::AllTrue(d, hn::Or(atRest, hn::Not(simdLanes))))
+            continue;
 
         // Gravity, constant over the step: gE plus the front gravity 0.25·|gE|·f.
-        const V gMagnitude = hn::Add(hn::Set(d, job.gravityW), load(EXTRA));
+        const V gMagnitude = gMagnitudeStart;
         const M pulled = hn::Ne(gMagnitude, hn::Zero(d));
         V3 gravity = Zero3(d);
         if (!hn::AllFalse(d, pulled)) {
@@ -461,16 +472,9 @@ void StepBlocks(const Job& job, std::size_t firstBlock, std::size_t endBlock) {
                 }
             }
         }
-        if (job.restSkip) {
-            // Nothing acts on a blade at rest: the reference leaves it as it was.
-            const M atRest = hn::And(
-                hn::And(hn::Eq(gMagnitude, hn::Zero(d)), hn::Eq(etaStart, hn::Zero(d))),
-                hn::And(hn::And(hn::Eq(v2Start.x, iv2.x), hn::Eq(v2Start.y, iv2.y)),
-                        hn::Eq(v2Start.z, iv2.z)));
-            v1 = Select3(atRest, v1Start, v1);
-            v2 = Select3(atRest, v2Start, v2);
-            eta = hn::IfThenElse(atRest, etaStart, eta);
-        }
+        v1 = Select3(atRest, v1Start, v1);
+        v2 = Select3(atRest, v2Start, v2);
+        eta = hn::IfThenElse(atRest, etaStart, eta);
         const V results[7] = {v1.x, v1.y, v1.z, v2.x, v2.y, v2.z, eta};
         for (int f = 0; f < 7; ++f)
             hn::Store(results[f], d, out[f]);

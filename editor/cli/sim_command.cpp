@@ -126,6 +126,9 @@ double bladeStepsPerS(const core::Scene& scene, const SimRun& run) {
                             : 0.0;
 }
 
+// Blade 64 B read + 64 B written, η 4 + 4 B, rest tip 12 B (docs/physics.md, bench_physics).
+constexpr std::size_t CPU_BYTES_PER_BLADE_STEP = 148;
+
 // "simd AVX2 × 8" or "scalar reference".
 std::string cpuPathLabel(const SimArgs& args) {
     if (args.cpuPath == "scalar")
@@ -151,6 +154,12 @@ void printSummary(const SimArgs& args, const core::LoadedProject& loaded, const 
                     : "");
     std::printf("  cost       %.3f ms/step, %.3g blade-steps/s\n", run.msPerStep,
                 bladeStepsPerS(field.scene, run));
+    // The roofline's memory side (docs/physics.md): every blade read and written once a step.
+    if (device.backend == SimBackend::Cpu)
+        std::printf("  memory     %.3g GB/s of traffic at %zu B a blade-step (the bound: the "
+                    "machine's copy bandwidth, docs/physics.md)\n",
+                    bladeStepsPerS(field.scene, run) * double(CPU_BYTES_PER_BLADE_STEP) * 1e-9,
+                    CPU_BYTES_PER_BLADE_STEP);
     std::printf("  health     max rel length error %.3g, nonfinite %zu, below ground %zu\n",
                 health.maxRelLengthError, health.nonfinite, health.belowGround);
     std::printf("  tips       mean displacement %.4g m, max %.4g m, crushed %.2f %%\n",
@@ -180,6 +189,7 @@ nlohmann::ordered_json reportJson(const SimArgs& args, const SimField& field, co
     out["collider_spheres"] = physics.colliders.size();
     out["ms_per_step"] = run.msPerStep;
     out["blade_steps_per_s"] = bladeStepsPerS(field.scene, run);
+    out["bytes_per_blade_step"] = CPU_BYTES_PER_BLADE_STEP;
     out["max_rel_length_error"] = health.maxRelLengthError;
     out["nonfinite"] = health.nonfinite;
     out["below_ground"] = health.belowGround;
