@@ -16,6 +16,6 @@ namespace grass::editor {
 // scene and tools pointers, a fresh history. `what` names the action in the message on failure
 // ("cannot open"). True when replaced.
 bool replaceDocument(EditorState& state, Live& live, core::LoadedProject next, bool withPhysics,
-                     std::string_view what);
+                     std::string_view what, PhysicsDevice device = PhysicsDevice::Auto);
 
 }  // namespace grass::editor

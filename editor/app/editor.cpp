@@ -1,6 +1,7 @@
 #include "app/editor.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -59,7 +60,7 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     if (!camera)
         return camera.error();
     e.mCamera = *camera;
-    auto built = buildLive(state.doc.loaded, !e.mSettings.noPhysics);
+    auto built = buildLive(state.doc.loaded, !e.mSettings.noPhysics, {}, e.mSettings.physicsDevice);
     if (!built)
         return built.error();
     e.mLive = std::move(*built);
@@ -70,7 +71,7 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
         ++e.mState.mapsChanged;
         e.mLive.renderer->uploadRegrown(layer, report);
         if (e.mLive.physics)
-            e.mLive.physics->gpu.uploadRegrown(layer, *e.mLive.scene, report.patches);
+            e.mLive.physics->regrown(layer, *e.mLive.scene, report.patches);
     };
     state.view.softwareRenderer = gl::isSoftwareRenderer();
     // Screenshots and scripts draw every frame at full quality: their pictures must not depend
@@ -231,9 +232,10 @@ bool Editor::applyRequests() {
 // Re-grows the live field from the open project (after an edit that needs it), keeping the maps
 // painted since the last save; on failure the old field stays.
 void Editor::regrowLive() {
-    auto next = buildLive(mState.doc.loaded, !mSettings.noPhysics, [&](core::Scene& grown) {
-        return carryPaintedMaps(mState, *mLive.scene, grown);
-    });
+    auto next = buildLive(
+        mState.doc.loaded, !mSettings.noPhysics,
+        [&](core::Scene& grown) { return carryPaintedMaps(mState, *mLive.scene, grown); },
+        mSettings.physicsDevice);
     if (!next) {
         mState.transient.message = "cannot grow the field: " + next.error().str();
         return;
@@ -259,7 +261,8 @@ void Editor::adoptLive(Live next) {
 
 // New, Open, Recover: the document is replaced only once its field is grown.
 bool Editor::adoptDocument(core::LoadedProject next, std::string_view what) {
-    if (!replaceDocument(mState, mLive, std::move(next), !mSettings.noPhysics, what))
+    if (!replaceDocument(mState, mLive, std::move(next), !mSettings.noPhysics, what,
+                         mSettings.physicsDevice))
         return false;
     if (auto camera = render::projectCamera(mState.doc.loaded.project, ""))
         mCamera = *camera;
@@ -308,10 +311,18 @@ void Editor::advanceTime() {
         // What the machine could not step, per second of wall time, for the status bar.
         // While the picture is reduced for interaction, one step a frame: the physics is the
         // one cost the rungs do not lower (4 steps of the meadow: ~90 ms on llvmpipe).
+        const auto physicsStart = std::chrono::steady_clock::now();
         mSkippedS = physics.advanceTo(state.view.timeline.timeS(),
                                       state.view.quality.level() > 0
                                           ? 1
                                           : LivePhysics::MAX_STEPS_PER_FRAME);
+        state.transient.status.physicsDevice = physics.deviceLabel();
+        // The GPU's steps are queued, not run, here: only the CPU's time means something.
+        state.transient.status.physicsMs =
+            physics.cpu ? std::chrono::duration<double, std::milli>(
+                              std::chrono::steady_clock::now() - physicsStart)
+                              .count()
+                        : 0.0;
         mDropped.simS += mSkippedS;
         mDropped.wallS += elapsedS;
         if (mDropped.wallS >= 1.0) {

@@ -41,6 +41,8 @@ struct EditorSettings {
     bool recover = false;
     bool glDebug = false;
     bool noPhysics = false;
+    // Where the live physics runs (live_scene.h): auto picks the CPU on software GL.
+    PhysicsDevice physicsDevice = PhysicsDevice::Auto;
     bool noUi = false;
     // Tests of time: a script on wall-clock time (not one physics step per frame), and a
     // delay added to every frame to stand for a slow machine.

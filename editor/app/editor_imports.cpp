@@ -32,10 +32,12 @@ void Editor::applyImports() {
         std::string note;
         auto next = projectWithImportedMesh(s.doc.loaded, file, &note);
         // Grown whole before anything changes: a mesh that cannot grow leaves the project as it was.
-        auto live = next ? buildLive(*next, !mSettings.noPhysics,
-                                     [&](core::Scene& grown) {
-                                         return carryPaintedMaps(s, *mLive.scene, grown);
-                                     })
+        auto live = next ? buildLive(
+                               *next, !mSettings.noPhysics,
+                               [&](core::Scene& grown) {
+                                   return carryPaintedMaps(s, *mLive.scene, grown);
+                               },
+                               mSettings.physicsDevice)
                          : Result<Live>(next.error());
         if (!live) {
             s.transient.message = "cannot import " + file.string() + ": " + live.error().str();

@@ -96,6 +96,10 @@ struct FrameStatus {
     double uiMs = 0.0;  // CPU time of building and tessellating the UI
     // Simulated time the live physics could not step in the last second (0: it keeps up).
     double physicsDroppedS = 0.0;
+    // Where the live physics runs ("cpu", "gpu"; empty without physics) and, on the
+    // CPU, the wall time of the last frame's steps and upload.
+    std::string physicsDevice;
+    double physicsMs = 0.0;
     // What the viewport lowered this frame to keep its budget (empty: full quality).
     std::string reduced;
 };

@@ -1,12 +1,69 @@
 #include "app/live_scene.h"
 
+#include <cmath>
 #include <cstdio>
+
+#include "gl/headless_context.h"
+#include "scene/scene_snow.h"
 
 namespace grass::editor {
 
+const char* physicsDeviceName(PhysicsDevice device) {
+    switch (device) {
+        case PhysicsDevice::Cpu: return "cpu";
+        case PhysicsDevice::Gpu: return "gpu";
+        case PhysicsDevice::Auto: break;
+    }
+    return "auto";
+}
+
+std::string LivePhysics::deviceLabel() const {
+    return cpu ? "cpu" : "gpu";
+}
+
+double LivePhysics::advanceTo(double targetS, int maxSteps) {
+    const double dtS = scene.params.dtS;
+    int stepped = 0;
+    for (; stepped < maxSteps && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++stepped) {
+        if (cpu)
+            cpu->step(scene, static_cast<float>(timeS()));
+        else
+            gpu->step(scene, static_cast<float>(timeS()));
+        ++steps;
+    }
+    // The CPU's blades go up once, after the frame's steps.
+    if (cpu && stepped > 0 && renderer != nullptr)
+        for (std::size_t layer = 0; layer < cpu->layerCount(); ++layer)
+            renderer->uploadBlades(layer, cpu->blades(layer));
+    const double behindS = targetS - timeS();
+    if (behindS < dtS)
+        return 0.0;
+    const auto skipped = static_cast<std::size_t>(std::floor(behindS / dtS));
+    steps += skipped;
+    const double dropped = static_cast<double>(skipped) * dtS;
+    droppedS += dropped;
+    return dropped;
+}
+
+void LivePhysics::regrown(std::size_t layer, const core::Scene& field,
+                          const std::vector<std::uint32_t>& patches) {
+    if (cpu)
+        cpu->resetPatches(layer, field, patches);
+    else
+        gpu->uploadRegrown(layer, field, patches);
+}
+
+// Auto: the CPU on software GL unless snow loads the blades (field_simulation.h).
+static bool physicsOnCpu(PhysicsDevice device, const core::ScenePhysics& physics) {
+    if (device != PhysicsDevice::Auto)
+        return device == PhysicsDevice::Cpu;
+    return gl::isSoftwareRenderer() && !core::snowLoadsBlades(physics.snow);
+}
+
 // `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
 Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
-                       const std::function<Result<void>(core::Scene&)>& prepare) {
+                       const std::function<Result<void>(core::Scene&)>& prepare,
+                       PhysicsDevice device) {
     auto scene = core::buildScene(loaded);
     if (!scene)
         return scene.error();
@@ -28,10 +85,19 @@ Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
             return built.error();
         for (const auto& note : built->notes)
             std::fprintf(stderr, "note: %s\n", note.c_str());
-        auto gpu = render::ScenePhysicsGpu::createOn(*live.scene, live.renderer->bladeBuffers());
-        if (!gpu)
-            return gpu.error();
-        live.physics.emplace(LivePhysics{std::move(*built), std::move(*gpu)});
+        LivePhysics physics;
+        physics.scene = std::move(*built);
+        physics.renderer = live.renderer.get();
+        if (physicsOnCpu(device, physics.scene)) {
+            physics.cpu.emplace(*live.scene);
+        } else {
+            auto gpu =
+                render::ScenePhysicsGpu::createOn(*live.scene, live.renderer->bladeBuffers());
+            if (!gpu)
+                return gpu.error();
+            physics.gpu.emplace(std::move(*gpu));
+        }
+        live.physics.emplace(std::move(physics));
     }
     return live;
 }
@@ -44,6 +110,10 @@ Result<void> resetPhysics(Live& live) {
         for (std::uint32_t p = 0; p < live.scene->layers[layer].patched.patches.size(); ++p)
             all.patches.push_back(p);
         live.renderer->uploadRegrown(layer, all);
+    }
+    if (live.physics->cpu) {
+        live.physics->cpu->reset(*live.scene);
+        return {};
     }
     auto gpu = render::ScenePhysicsGpu::createOn(*live.scene, live.renderer->bladeBuffers());
     if (!gpu)

@@ -6,9 +6,12 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "project/project.h"
 #include "scene/scene.h"
+#include "scene/field_simulation.h"
 #include "scene/scene_physics.h"
 #include "render/scene_physics_gpu.h"
 #include "render/scene_renderer.h"
@@ -17,36 +20,37 @@
 
 namespace grass::editor {
 
-// Physics stepping the renderer's blade buffers on the GPU in fixed steps of the project's
-// step_s, following the timeline's time with at most MAX_STEPS_PER_FRAME steps a frame. What a
-// slow device cannot step is dropped (the field jumps to the timeline's time) rather than
-// piled up, so the field keeps moving with the wind and colliders it sees; droppedS says how
-// much, for the status bar.
+// Where the editor's live physics runs: the compute shader on the GL device, or the SIMD
+// execution on the CPU with one upload of the blades a frame. Auto: the CPU on software
+// renderers, where it is measured ~10× faster than the compute shader (llvmpipe, 2 cores: the
+// meadow steps in 2.7 ms against 28 ms; docs/physics.md), unless the scene's snow loads the
+// blades (the CPU copy does not apply snow loads); the GPU elsewhere.
+enum class PhysicsDevice { Auto, Cpu, Gpu };
+const char* physicsDeviceName(PhysicsDevice device);  // "auto" | "cpu" | "gpu"
+
+// Physics stepping the renderer's blades in fixed steps of the project's step_s, following the
+// timeline's time with at most MAX_STEPS_PER_FRAME steps a frame. What a slow device cannot
+// step is dropped (the field jumps to the timeline's time) rather than piled up, so the field
+// keeps moving with the wind and colliders it sees; droppedS says how much, for the status bar.
+// Exactly one of gpu and cpu is set.
 struct LivePhysics {
     static constexpr int MAX_STEPS_PER_FRAME = 4;
     core::ScenePhysics scene;
-    render::ScenePhysicsGpu gpu;
+    std::optional<render::ScenePhysicsGpu> gpu;
+    std::optional<core::FieldSimulation> cpu;
+    render::SceneRenderer* renderer = nullptr;  // receives the CPU's blades after its steps
     std::size_t steps = 0;
     double droppedS = 0.0;  // simulated time skipped since the field was built
 
     double timeS() const { return static_cast<double>(steps) * scene.params.dtS; }
+    // "cpu" or "gpu", for the status bar.
+    std::string deviceLabel() const;
     // Steps towards `targetS`, at most `maxSteps`; returns the time dropped this frame (0 when
     // it kept up).
-    double advanceTo(double targetS, int maxSteps = MAX_STEPS_PER_FRAME) {
-        const double dtS = scene.params.dtS;
-        for (int i = 0; i < maxSteps && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++i) {
-            gpu.step(scene, static_cast<float>(timeS()));
-            ++steps;
-        }
-        const double behindS = targetS - timeS();
-        if (behindS < dtS)
-            return 0.0;
-        const auto skipped = static_cast<std::size_t>(std::floor(behindS / dtS));
-        steps += skipped;
-        const double dropped = static_cast<double>(skipped) * dtS;
-        droppedS += dropped;
-        return dropped;
-    }
+    double advanceTo(double targetS, int maxSteps = MAX_STEPS_PER_FRAME);
+    // After a brush or an undo re-grew patches of `layer`: they restart at rest.
+    void regrown(std::size_t layer, const core::Scene& scene,
+                 const std::vector<std::uint32_t>& patches);
 };
 
 // What a project becomes on the GPU; rebuilt whole when the project is re-grown or replaced.
@@ -61,7 +65,8 @@ struct Live {
 
 // `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
 Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
-                       const std::function<Result<void>(core::Scene&)>& prepare = {});
+                       const std::function<Result<void>(core::Scene&)>& prepare = {},
+                       PhysicsDevice device = PhysicsDevice::Auto);
 
 // Puts every layer's blades back at rest on the GPU and restarts the simulation from there
 // (keeping its step count).

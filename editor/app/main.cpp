@@ -28,6 +28,7 @@ int fail(const std::string& message, int code = 1) {
 int main(int argc, char** argv) {
     editor::EditorSettings settings;
     bool noAdaptive = false;
+    std::string physicsDevice = "auto";
     settings.projectPath = std::string(GRASS_SOURCE_DIR) + "/projects/meadow";
     settings.glDebug = gl::GL_DEBUG_BY_DEFAULT;
     ArgParser parser("grass-editor [project-dir|project.json] [--screenshot F.png --frames N]",
@@ -75,10 +76,15 @@ int main(int argc, char** argv) {
     parser.flag("--gl-debug", "print GL debug output (driver errors and warnings) to stderr",
                 &settings.glDebug);
     parser.flag("--no-physics",
-                "show the field at rest (by default gravity, wind and colliders run live on the "
-                "GPU, one physics step of the project's step_s per elapsed step, at most 4 per "
+                "show the field at rest (by default gravity, wind and colliders run live, on the "
+                "device --physics-device picks, one physics step of the project's step_s per elapsed step, at most 4 per "
                 "frame; time beyond that is skipped, and the status bar says so)",
                 &settings.noPhysics);
+    parser.choice("--physics-device", {"auto", "cpu", "gpu"},
+                  "where the live physics runs: the SIMD execution on the CPU (one upload of the "
+                  "blades a frame) or the compute shader; auto: the CPU on software GL, where it "
+                  "is ~10x faster (docs/physics.md), the GPU elsewhere",
+                  &physicsDevice);
     parser.flag("--no-ui",
                 "show the viewport alone over the whole window (what `grass render` draws; "
                 "tests compare the two)",
@@ -90,6 +96,9 @@ int main(int argc, char** argv) {
         return 0;
     }
     settings.adaptive = !noAdaptive;
+    settings.physicsDevice = physicsDevice == "cpu"   ? editor::PhysicsDevice::Cpu
+                             : physicsDevice == "gpu" ? editor::PhysicsDevice::Gpu
+                                                      : editor::PhysicsDevice::Auto;
     if (!settings.screenshot.empty() && settings.frames == 0)
         settings.frames = 3;
     if (!settings.screenshot.empty())

@@ -183,6 +183,16 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
             row.coloredLabel("moving: " + s.transient.status.reduced + "   ",
                              ui::Color32::rgb(120, 190, 255));
         row.label(text);
+        if (!s.transient.status.physicsDevice.empty()) {
+            char physics[96];
+            if (s.transient.status.physicsMs > 0.0)
+                std::snprintf(physics, sizeof physics, "   physics %s %.1f ms",
+                              s.transient.status.physicsDevice.c_str(), s.transient.status.physicsMs);
+            else
+                std::snprintf(physics, sizeof physics, "   physics %s",
+                              s.transient.status.physicsDevice.c_str());
+            row.label(physics);
+        }
         // The machine cannot step the physics as fast as time passes: say so, in orange.
         if (const double dropped = s.transient.status.physicsDroppedS; dropped > 0.0) {
             char behind[96];

@@ -18,7 +18,8 @@ struct RenderArgs {
     std::string project, mesh, out, camera, geometry = "project", msaa = "project";
     // With --mesh: the file's unit and up axis (core/mesh/mesh_frame.h).
     std::string unit = "m", up = "+Y";
-    std::string backend = "gpu", shape = "project";
+    // "auto" becomes "cpu" on software GL and "gpu" elsewhere once the context is up.
+    std::string backend = "auto", shape = "project";
     std::string cull = "all", stats, lighting = "project", technique = "project",
                 animation = "project", preset = "project";
     double timeS = 0.0;

@@ -11,7 +11,8 @@ namespace grass::cli {
 
 namespace {
 
-std::string statsJson(const render::FrameTimings& frame, double physicsMs, double wallMs) {
+std::string statsJson(const render::FrameTimings& frame, double physicsMs, double wallMs,
+                      const std::string& physicsDevice) {
     const render::CullStats& c = frame.cull;
     // The grass stage is everything that draws grass: blades, billboards and stem sets.
     const double grassMs = frame.grassMs + frame.billboardMs + frame.stemSetMs;
@@ -40,7 +41,8 @@ std::string statsJson(const render::FrameTimings& frame, double physicsMs, doubl
     };
     // Which passes ran and what the renderer allocated: a feature a scene does not use shows in
     // neither (issue 10).
-    return std::string(text) + "  \"passes\": " + list(frame.passes) +
+    return std::string(text) + "  \"physics_device\": \"" + physicsDevice + "\",\n" +
+           "  \"passes\": " + list(frame.passes) +
            ",\n  \"allocated\": " + list(frame.allocated) + "\n}\n";
 }
 
@@ -87,8 +89,8 @@ void printRenderSummary(const std::string& out, const core::Scene& scene, double
 }
 
 Result<void> writeStats(const std::string& file, const render::FrameTimings& frame,
-                        double physicsMs, double wallMs) {
-    return writeOutputFile(file, statsJson(frame, physicsMs, wallMs));
+                        double physicsMs, double wallMs, const std::string& physicsDevice) {
+    return writeOutputFile(file, statsJson(frame, physicsMs, wallMs, physicsDevice));
 }
 
 }  // namespace grass::cli

@@ -16,8 +16,9 @@ void printRenderSummary(const std::string& out, const core::Scene& scene, double
                         const render::OffscreenResult& rendered);
 
 // Writes the --stats file of a frame (its cull counts and pass timings, the physics ms per step
-// of --time, the frame's wall ms) atomically and says so.
+// of --time and where it ran — "cpu", "gpu" or "none" —, the frame's wall ms) atomically and
+// says so.
 Result<void> writeStats(const std::string& file, const render::FrameTimings& frame,
-                        double physicsMs, double wallMs);
+                        double physicsMs, double wallMs, const std::string& physicsDevice = "none");
 
 }  // namespace grass::cli

@@ -79,6 +79,11 @@ void FieldGpu::uploadPatches(std::span<const std::uint32_t> patches, bool withSh
     }
 }
 
+void FieldGpu::uploadBlades(std::span<const core::Blade> blades) {
+    if (blades.size() == mBladeCount && mBladeCount > 0)
+        mBlades.update(std::as_bytes(blades), 0);
+}
+
 void FieldGpu::resetCommands(int segments) {
     // A buffer update from the CPU, not a read-back: the frame never waits on the GPU.
     const CommandArray commands = emptyCommands(segments);

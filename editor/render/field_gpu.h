@@ -54,6 +54,8 @@ public:
     std::uint32_t patchSize() const { return mField->patched.patchSize; }
     const gl::Buffer& bladeBuffer() const { return mBlades; }
 
+    // Replaces every blade slot (the CPU physics' state); `blades` has bladeCount() slots.
+    void uploadBlades(std::span<const core::Blade> blades);
     // Re-uploads the blades (and, when `withShading`, the shading) of these patches from the
     // layer after core::regrowLayerRegion changed them; the rest of the buffers stay.
     void uploadPatches(std::span<const std::uint32_t> patches, bool withShading);

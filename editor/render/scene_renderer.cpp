@@ -122,6 +122,11 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+void SceneRenderer::uploadBlades(std::size_t layer, std::span<const core::Blade> blades) {
+    if (layer < mFields.size())
+        mFields[layer].uploadBlades(blades);
+}
+
 void SceneRenderer::uploadRegrown(std::size_t layer, const core::RegrowReport& report) {
     if (layer >= mFields.size())
         return;

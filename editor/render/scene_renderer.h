@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,9 @@ public:
     std::vector<gl::BufferRef> bladeBuffers() const;
     // After core::regrowLayerRegion changed layer `layer` of the scene: re-uploads the regrown
     // patches' blades and stem sets and the re-baked shading; nothing else moves.
+    // Replaces layer `layer`'s blades on the GPU with `blades` (the CPU physics' state, one
+    // upload a frame; core/scene/field_simulation.h). Same slot count as the layer's.
+    void uploadBlades(std::size_t layer, std::span<const core::Blade> blades);
     void uploadRegrown(std::size_t layer, const core::RegrowReport& report);
     // The map the terrain shows as a colour overlay (values 0..1 in its UV space; a map without
     // texels shows 1 everywhere), uploaded now; null: no overlay. The editor calls it when the

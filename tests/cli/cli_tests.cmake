@@ -167,9 +167,16 @@ grass_cli_test(sim_windy_gpu GL OK
     --stdout "^simulated 1\\.000 s of windy: 100 steps of 0\\.01 s"
     --stdout "^  backend +gpu \\(" --stdout "^  health .*nonfinite 0, below ground 0$"
     -- ${GRASS_BIN} sim ${WINDY} --seconds 1 --dt 0.01 --backend gpu)
+# --backend auto (the default) runs the physics where it is fastest: the CPU on software GL.
 grass_cli_test(render_time GL OK --png ${GRASS_CLI_TMP}/windy.png 64 48
-    --stdout "^simulated +1\\.000 s in 50 steps on the gpu" --stdout "^wrote .*windy\\.png"
-    -- ${GRASS_BIN} render ${WINDY} --time 1 --out ${GRASS_CLI_TMP}/windy.png --frames 1)
+    --stdout "^simulated +1\\.000 s in 50 steps on the (cpu|gpu)" --stdout "^wrote .*windy\\.png"
+    --file ${GRASS_CLI_TMP}/windy-stats.json "\"physics_device\": \"(cpu|gpu)\""
+    -- ${GRASS_BIN} render ${WINDY} --time 1 --out ${GRASS_CLI_TMP}/windy.png --frames 1
+       --stats ${GRASS_CLI_TMP}/windy-stats.json)
+grass_cli_test(render_time_gpu GL OK --png ${GRASS_CLI_TMP}/windy-gpu.png 64 48
+    --stdout "^simulated +1\\.000 s in 50 steps on the gpu"
+    -- ${GRASS_BIN} render ${WINDY} --time 1 --backend gpu --out ${GRASS_CLI_TMP}/windy-gpu.png
+       --frames 1)
 # A mesh collider packs into spheres once and caches them next to the project: the project is
 # copied out of the source tree first (the cache must not land in tests/data).
 set(ROCK ${GRASS_CLI_TMP}/rock)

@@ -1,0 +1,83 @@
+// Issue 29: the editor's live physics runs where it is fastest — the SIMD execution on the CPU
+// with one upload a frame on software GL, the compute shader elsewhere (app/live_scene.h). Both
+// devices must move the renderer's blades alike, and auto must pick the CPU on llvmpipe.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "app/live_scene.h"
+#include "gl/headless_context.h"
+#include "gl_context_fixture.h"
+#include "support/test_paths.h"
+
+namespace grass::test {
+namespace {
+
+using LivePhysicsTest = GlTest;
+
+std::vector<core::Blade> rendererBlades(const editor::Live& live, std::size_t layer) {
+    const gl::BufferRef buffer = live.renderer->bladeBuffers().at(layer);
+    const std::size_t count = live.scene->layers[layer].patched.blades.size();
+    std::vector<core::Blade> blades(count);
+    glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(count * sizeof(core::Blade)), blades.data());
+    return blades;
+}
+
+editor::Live liveOn(const core::LoadedProject& loaded, editor::PhysicsDevice device) {
+    auto live = editor::buildLive(loaded, true, {}, device);
+    EXPECT_TRUE(live.ok()) << live.error().str();
+    return std::move(*live);
+}
+
+// tests/data/projects/windy: a gusty breeze, a vortex on a path and a rolling ball, 1 s.
+TEST_F(LivePhysicsTest, CpuAndGpuMoveTheRenderersBladesAlike) {
+    auto loaded = core::loadProject(sourceDir() / "tests/data/projects/windy");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+    editor::Live cpu = liveOn(*loaded, editor::PhysicsDevice::Cpu);
+    editor::Live gpu = liveOn(*loaded, editor::PhysicsDevice::Gpu);
+    ASSERT_TRUE(cpu.physics && cpu.physics->cpu && !cpu.physics->gpu);
+    ASSERT_TRUE(gpu.physics && gpu.physics->gpu && !gpu.physics->cpu);
+    EXPECT_EQ(cpu.physics->deviceLabel(), "cpu");
+    const std::vector<core::Blade> rest = cpu.scene->layers[0].patched.blades;
+    // Frame by frame as the editor does (a tenth of a second a frame), with no step cap, so both
+    // simulate the same steps.
+    for (double t = 0.1; t <= 1.0 + 1e-9; t += 0.1) {
+        EXPECT_EQ(cpu.physics->advanceTo(t, 1000), 0.0);
+        EXPECT_EQ(gpu.physics->advanceTo(t, 1000), 0.0);
+    }
+    ASSERT_EQ(cpu.physics->steps, gpu.physics->steps);
+    const std::vector<core::Blade> a = rendererBlades(cpu, 0), b = rendererBlades(gpu, 0);
+    float maxTip = 0.0f, moved = 0.0f;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (!(rest[i].h() > 0.0f))
+            continue;
+        maxTip = std::max(maxTip, glm::length(a[i].v2() - b[i].v2()) / rest[i].h());
+        moved = std::max(moved, glm::length(a[i].v2() - rest[i].v2()));
+    }
+    std::printf("[ live physics ] %zu steps: max |v2_cpu - v2_gpu| / h = %.3g, tips moved up to "
+                "%.3f m\n",
+                cpu.physics->steps, double(maxTip), double(moved));
+    EXPECT_GT(moved, 0.01f);   // the field did move on the CPU device's uploads
+    EXPECT_LT(maxTip, 1e-3f);  // the CPU/GPU tolerance (docs/physics.md)
+    // The scene itself stays at rest: the tools pick and paint it.
+    EXPECT_EQ(std::memcmp(rest.data(), cpu.scene->layers[0].patched.blades.data(),
+                          rest.size() * sizeof(core::Blade)),
+              0);
+    // A re-grown patch restarts at rest in the CPU's copy.
+    cpu.physics->regrown(0, *cpu.scene, {0});
+    const std::span<const core::Blade> copy = cpu.physics->cpu->blades(0);
+    const std::size_t patch = cpu.scene->layers[0].patched.patchSize;
+    EXPECT_EQ(std::memcmp(copy.data(), rest.data(), patch * sizeof(core::Blade)), 0);
+}
+
+TEST_F(LivePhysicsTest, AutoPicksTheCpuOnSoftwareGlAndTheGpuElsewhere) {
+    auto loaded = core::loadProject(sourceDir() / "tests/data/projects/windy");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+    editor::Live live = liveOn(*loaded, editor::PhysicsDevice::Auto);
+    ASSERT_TRUE(live.physics);
+    EXPECT_EQ(live.physics->cpu.has_value(), gl::isSoftwareRenderer());
+    EXPECT_EQ(live.physics->gpu.has_value(), !gl::isSoftwareRenderer());
+}
+
+}  // namespace
+}  // namespace grass::test
