@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include <hwy/targets.h>
+
 #include "mesh/procedural.h"
 #include "physics/physics_simd.h"
 #include "scatter/scatter.h"
@@ -98,6 +100,26 @@ TEST(PhysicsSimd, MatchesTheScalarReferenceOnAWindyFieldWithColliders) {
     EXPECT_GT(a.maxEta, 0.0f);  // the colliders did hit blades
     EXPECT_LT(a.maxTip, TIP_TOLERANCE);
     EXPECT_LT(a.maxEtaError, 1e-3f * std::max(a.maxEta, 1e-3f));
+}
+
+// Every instruction set Highway compiled the step for and this CPU runs (SSSE3, SSE4, AVX2,
+// AVX-512 where present, and the scalar fallback), forced one at a time: the other machines
+// the dispatch may pick run the same agreement.
+TEST(PhysicsSimd, EveryCompiledTargetMatchesTheReference) {
+    const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+    ASSERT_FALSE(targets.empty());
+    for (const std::int64_t target : targets) {
+        hwy::SetSupportedTargetsForTest(target);
+        hwy::GetChosenTarget().Update(hwy::SupportedTargets());
+        EXPECT_EQ(core::physicsSimdTarget(), hwy::TargetName(target));
+        const Agreement a = runBoth(scatteredField(20.0f, 5), windyForces(), 120);
+        std::printf("[ simd ] %s (%zu lanes): max tip error %.3g h\n", hwy::TargetName(target),
+                    core::physicsSimdLanes(), double(a.maxTip));
+        EXPECT_LT(a.maxTip, TIP_TOLERANCE) << hwy::TargetName(target);
+        EXPECT_GT(a.maxEta, 0.0f) << hwy::TargetName(target);
+    }
+    hwy::SetSupportedTargetsForTest(0);
+    hwy::GetChosenTarget().Update(hwy::SupportedTargets());
 }
 
 TEST(PhysicsSimd, MatchesWithCentreGravityAndASnowLoad) {
