@@ -348,7 +348,7 @@ void StepBlocks(const Job& job, std::size_t firstBlock, std::size_t endBlock) {
     const std::size_t lanes = hn::Lanes(d);
     HWY_ASSERT(lanes <= MAX_LANES);
     const PhysicsParams& params = *job.params;
-    // Per lane: v0 θ | v1 h | v2 w | up s | η | rest tip | extra gravity | use SIMD.
+    // Per lane: v0 θ | v1 h | v2 w | up s | η | rest tip | extra gravity.
     enum Field { V0X, V0Y, V0Z, THETA, V1X, V1Y, V1Z, H, V2X, V2Y, V2Z, W, UPX, UPY, UPZ, S, ETA,
                  TIPX, TIPY, TIPZ, EXTRA, FIELD_COUNT };
     HWY_ALIGN float in[FIELD_COUNT][MAX_LANES];
