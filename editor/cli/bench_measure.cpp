@@ -13,6 +13,7 @@
 #include "mesh/surface_mesh.h"
 #include "render/offscreen_render.h"
 #include "render/scene_physics_gpu.h"
+#include "scene/field_simulation.h"
 #include "scene/scene_physics.h"
 #include "tools/median.h"
 #include "tools/ms_since.h"
@@ -153,8 +154,8 @@ Result<render::FrameTimings> measureFrames(const GrownCase& grown, const CaseCon
     return last;
 }
 
-// 1 warm-up step, then `steps` timed ones of the compute shader: ms per step and blade-steps per
-// second into `result`.
+// 1 warm-up step, then `steps` timed ones of the compute shader, then the same on the CPU's SIMD
+// execution: ms per step and blade-steps per second of each into `result`.
 Result<void> measurePhysics(GrownCase& grown, const CaseContext& ctx, int steps,
                             BenchCaseResult& result) {
     std::fprintf(stderr, "%s: physics, 1 warm-up + %d timed step(s) on the compute shader\n",
@@ -176,8 +177,23 @@ Result<void> measurePhysics(GrownCase& grown, const CaseContext& ctx, int steps,
     const double ms = msSince(start);
     result.physicsSteps = steps;
     result.physicsMsPerStep = ms / steps;
-    result.bladeStepsPerS =
-        ms > 0.0 ? static_cast<double>(grown.scene.totalBlades()) * steps / (ms / 1000.0) : 0.0;
+    const auto perSecond = [&](double wallMs) {
+        return wallMs > 0.0
+                   ? static_cast<double>(grown.scene.totalBlades()) * steps / (wallMs / 1000.0)
+                   : 0.0;
+    };
+    result.bladeStepsPerS = perSecond(ms);
+    // The same steps on the CPU's SIMD execution, on a copy of the blades (issue 29).
+    std::fprintf(stderr, "%s: physics, 1 warm-up + %d timed step(s) on the CPU (SIMD %s)\n",
+                 ctx.progress.c_str(), steps, core::physicsSimdTarget().c_str());
+    core::FieldSimulation cpu(grown.scene);
+    cpu.step(simulation.physics(), 0.0f);
+    const auto cpuStart = Clock::now();
+    for (int step = 1; step <= steps; ++step)
+        cpu.step(simulation.physics(), static_cast<float>(step) * dtS);
+    const double cpuMs = msSince(cpuStart);
+    result.cpuPhysicsMsPerStep = cpuMs / steps;
+    result.cpuBladeStepsPerS = perSecond(cpuMs);
     return {};
 }
 

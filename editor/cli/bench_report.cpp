@@ -29,6 +29,8 @@ struct Figure {
     double scale;   // table value = figure × scale
     double BenchCaseResult::*real = nullptr;
     std::size_t BenchCaseResult::*count = nullptr;
+    // Added after runs were saved without it: absent reads as 0 (shown as "-" in ratios).
+    bool optional = false;
 };
 
 double valueOf(const Figure& figure, const BenchCaseResult& result) {
@@ -37,7 +39,7 @@ double valueOf(const Figure& figure, const BenchCaseResult& result) {
 
 // The order of the table's columns. Ratios of the ms columns below 1 mean faster; of
 // blade-steps/s above 1.
-constexpr std::array<Figure, 11> FIGURES = {{
+constexpr std::array<Figure, 13> FIGURES = {{
     {"blades in", "", "blades_in", 0, 1.0, nullptr, &BenchCaseResult::bladesIn},
     {"drawn", "", "drawn", 0, 1.0, nullptr, &BenchCaseResult::drawn},
     {"culled %", "", "culled_share", 1, 100.0, &BenchCaseResult::culledShare, nullptr},
@@ -49,6 +51,10 @@ constexpr std::array<Figure, 11> FIGURES = {{
     {"phys ms/step", "physics", "ms_per_step", 2, 1.0, &BenchCaseResult::physicsMsPerStep, nullptr},
     {"M blade-steps/s", "physics", "blade_steps_per_s", 2, 1e-6, &BenchCaseResult::bladeStepsPerS,
      nullptr},
+    {"CPU ms/step", "physics", "cpu_ms_per_step", 2, 1.0, &BenchCaseResult::cpuPhysicsMsPerStep,
+     nullptr, true},
+    {"CPU M b-s/s", "physics", "cpu_blade_steps_per_s", 2, 1e-6,
+     &BenchCaseResult::cpuBladeStepsPerS, nullptr, true},
     {"UI ms", "ms", "ui", 3, 1.0, &BenchCaseResult::uiMs, nullptr},
 }};
 
@@ -168,7 +174,9 @@ Result<BenchCaseResult> caseFromJson(const Json& entry, const std::string& where
             object = &*group;
         }
         double value = 0.0;
-        if (auto read = readNumber(*object, figure.key, prefix, file, &value); !read)
+        if (figure.optional && object->find(figure.key) == object->end())
+            value = 0.0;
+        else if (auto read = readNumber(*object, figure.key, prefix, file, &value); !read)
             return read.error();
         if (figure.count)
             result.*figure.count = static_cast<std::size_t>(value);

@@ -41,6 +41,10 @@ struct BenchCaseResult {
     int physicsSteps = 0;
     double physicsMsPerStep = 0.0;
     double bladeStepsPerS = 0.0;
+    // The same steps on the CPU's SIMD execution (issue 29; physics_simd.h): where the physics is
+    // faster on this machine. 0 in runs saved before it was measured.
+    double cpuPhysicsMsPerStep = 0.0;
+    double cpuBladeStepsPerS = 0.0;
     double uiMs = 0.0;  // median CPU time to build and tessellate the editor's panels
     std::optional<EditorFigures> editor;  // the editor case only
 };
