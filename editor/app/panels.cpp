@@ -169,13 +169,32 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
     char snow[32] = "";
     if (t.snowMs > 0.0)
         std::snprintf(snow, sizeof snow, " · snow %.2f", t.snowMs);
-    char text[320];
+    // The billboards' or stem sets' time only when the technique draws them: the line must fit
+    // beside the "moving:" note of a reduced picture.
+    const core::GrassTechnique technique = s.doc.loaded.project.render.technique;
+    char far[48] = "";
+    if (stems || technique == core::GrassTechnique::Billboards ||
+        technique == core::GrassTechnique::Hybrid)
+        std::snprintf(far, sizeof far, " · %s %.2f", stems ? "stem sets" : "billboards",
+                      stems ? t.stemSetMs : t.billboardMs);
+    // Where the live physics runs, and on the CPU the time of the frame's steps: early in the
+    // line, so it shows while playing, when it matters.
+    char physics[64] = "";
+    if (!s.transient.status.physicsDevice.empty()) {
+        if (s.transient.status.physicsMs > 0.0)
+            std::snprintf(physics, sizeof physics, "   physics %s %.1f ms",
+                          s.transient.status.physicsDevice.c_str(), s.transient.status.physicsMs);
+        else
+            std::snprintf(physics, sizeof physics, "   physics %s",
+                          s.transient.status.physicsDevice.c_str());
+    }
+    char text[384];
     std::snprintf(text, sizeof text,
-                  "%zu blades · %zu drawn   cull %.2f · opaque %.2f · grass %.2f · %s %.2f%s ms"
+                  "%zu blades · %zu drawn%s   cull %.2f · opaque %.2f · grass %.2f%s%s ms"
                   "   UI %.2f ms   %.0f fps",
-                  s.transient.status.blades, stems ? t.stemSetsDrawn : t.cull.drawn, t.cullMs, t.meshMs,
-                  t.grassMs, stems ? "stem sets" : "billboards",
-                  stems ? t.stemSetMs : t.billboardMs, snow, s.transient.status.uiMs, s.transient.status.fps);
+                  s.transient.status.blades, stems ? t.stemSetsDrawn : t.cull.drawn, physics,
+                  t.cullMs, t.meshMs, t.grassMs, far, snow, s.transient.status.uiMs,
+                  s.transient.status.fps);
     ui::Ui ui(ctx, {rect.min + ui::Vec2(8.0f, 2.0f), rect.max}, ui::Layer::Panels);
     ui.horizontal([&](ui::Ui& row) {
         // The viewport draws less while the user interacts (adaptive quality): say what, first.
@@ -183,16 +202,6 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
             row.coloredLabel("moving: " + s.transient.status.reduced + "   ",
                              ui::Color32::rgb(120, 190, 255));
         row.label(text);
-        if (!s.transient.status.physicsDevice.empty()) {
-            char physics[96];
-            if (s.transient.status.physicsMs > 0.0)
-                std::snprintf(physics, sizeof physics, "   physics %s %.1f ms",
-                              s.transient.status.physicsDevice.c_str(), s.transient.status.physicsMs);
-            else
-                std::snprintf(physics, sizeof physics, "   physics %s",
-                              s.transient.status.physicsDevice.c_str());
-            row.label(physics);
-        }
         // The machine cannot step the physics as fast as time passes: say so, in orange.
         if (const double dropped = s.transient.status.physicsDroppedS; dropped > 0.0) {
             char behind[96];

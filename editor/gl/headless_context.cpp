@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "gl/debug_output.h"
+#include "util/software_renderer.h"
 
 namespace grass::gl {
 
@@ -102,13 +103,7 @@ std::string rendererDescription() {
 }
 
 bool isSoftwareRenderer() {
-    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (!renderer)
-        return true;
-    for (const char* name : {"llvmpipe", "softpipe", "SwiftShader", "lavapipe", "Software"})
-        if (std::strstr(renderer, name))
-            return true;
-    return false;
+    return core::isSoftwareRendererName(reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
 }
 
 }  // namespace grass::gl

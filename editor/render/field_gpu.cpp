@@ -7,34 +7,8 @@
 namespace grass::render {
 
 namespace {
-// Command k is the strips of LOD k; LOD_COUNT + k its tessellation patches (shaders/cull.comp).
-GLintptr stripCommandOffset(int lod) {
-    return static_cast<GLintptr>(lod * sizeof(DrawArraysIndirectCommand));
-}
-GLintptr patchCommandOffset(int lod) {
-    return static_cast<GLintptr>((LOD_COUNT + lod) * sizeof(DrawArraysIndirectCommand));
-}
-using CommandArray = std::array<DrawArraysIndirectCommand, 2 * LOD_COUNT>;
-
-CommandArray emptyCommands(int segments) {
-    CommandArray commands{};
-    for (int lod = 0; lod < LOD_COUNT; ++lod) {
-        commands[lod] = {static_cast<std::uint32_t>(stripVertexCount(lodSegments(segments, lod))),
-                         0, 0, 0};
-        // One patch vertex, one instance per blade (blade_tess.vert says why).
-        commands[LOD_COUNT + lod] = {1, 0, 0, 0};
-    }
-    return commands;
-}
+using CommandArray = core::BladeDrawCommands;
 }  // namespace
-
-int lodSegments(int fullSegments, int lod) {
-    return std::max(fullSegments >> lod, 1);
-}
-
-int stripVertexCount(int segments) {
-    return 4 * (segments + 1);
-}
 
 FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
     mBladeCount = field.patched.blades.size();
@@ -59,7 +33,7 @@ FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
     mPatchBounds = gl::Buffer::fromVector(bounds, "patch bounds " + field.name);
     const std::vector<std::uint32_t> visible(LOD_COUNT * std::max<std::size_t>(mBladeCount, 1), 0);
     mVisible = gl::Buffer::fromVector(visible, "visible blades " + field.name);
-    const CommandArray commands = emptyCommands(1);
+    const CommandArray commands = core::emptyBladeDrawCommands(1);
     mCommands = gl::Buffer(std::as_bytes(std::span(commands)), "draw commands " + field.name);
     mEmptyVertexArray = gl::VertexArray("no vertices " + field.name);
 }
@@ -86,7 +60,7 @@ void FieldGpu::uploadBlades(std::span<const core::Blade> blades) {
 
 void FieldGpu::resetCommands(int segments) {
     // A buffer update from the CPU, not a read-back: the frame never waits on the GPU.
-    const CommandArray commands = emptyCommands(segments);
+    const CommandArray commands = core::emptyBladeDrawCommands(segments);
     mCommands.update(std::as_bytes(std::span(commands)), 0);
 }
 
@@ -144,7 +118,7 @@ void FieldGpu::drawStrips(const gl::Program& program, int segments) const {
         program.set("uVisibleOffset", static_cast<unsigned>(lod * mBladeCount));
         program.set("uSegments", lodSegments(segments, lod));
         glDrawArraysIndirect(GL_TRIANGLE_STRIP,
-                             reinterpret_cast<const void*>(stripCommandOffset(lod)));
+                             reinterpret_cast<const void*>(core::stripCommandOffset(lod)));
     }
 }
 
@@ -155,7 +129,7 @@ void FieldGpu::drawTessellated(const gl::Program& program) const {
     glPatchParameteri(GL_PATCH_VERTICES, 1);
     for (int lod = 0; lod < LOD_COUNT; ++lod) {
         program.set("uVisibleOffset", static_cast<unsigned>(lod * mBladeCount));
-        glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(patchCommandOffset(lod)));
+        glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(core::patchCommandOffset(lod)));
     }
 }
 

@@ -13,28 +13,20 @@
 #include "gl/buffer.h"
 #include "gl/program.h"
 #include "gl/vertex_array.h"
+#include "blade/blade_draw_commands.h"
 #include "scene/scene.h"
 
 namespace grass::render {
 
-// Matches GL's DrawArraysIndirectCommand.
-struct DrawArraysIndirectCommand {
-    std::uint32_t count;
-    std::uint32_t instanceCount;
-    std::uint32_t first;
-    std::uint32_t baseInstance;
-};
-static_assert(sizeof(DrawArraysIndirectCommand) == 16);
+// The draw commands and LODs are core's (core/blade/blade_draw_commands.h), shared with the
+// reference runtime.
+using core::DrawArraysIndirectCommand;
+using core::LOD_COUNT;
+using core::lodSegments;
+using core::stripVertexCount;
 
 enum class GeometryPath { Tessellation, Strips };
 
-// Levels of detail (shaders/include/lod.glsl): LOD k draws max(segments >> k, 1) segments.
-inline constexpr int LOD_COUNT = 3;
-int lodSegments(int fullSegments, int lod);
-// Vertices of one instanced strip of `segments` segments: the left half (u = 0, ½) up the
-// blade, then the right half (u = 1, ½) down, so the midrib is a vertex column and the V fold
-// of SPEC §7 shows (blade_strip.vert).
-int stripVertexCount(int segments);
 
 // SSBO bindings shared with shaders/cull.comp and shaders/include/visible.glsl.
 inline constexpr std::uint32_t PATCH_BOUNDS_BINDING = 1;

@@ -1,21 +1,19 @@
 #include "runtime/grass_runtime.h"
 
 #include <algorithm>
-#include <array>
-#include <cstring>
 #include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "blade/blade_draw_commands.h"
 #include "physics/physics_step_inputs.h"
 #include "runtime/runtime_gl.h"
+#include "util/software_renderer.h"
 
 namespace grass::runtime {
 
 namespace {
 
-// shaders/include/lod.glsl: LOD k draws max(segments >> k, 1) segments.
-constexpr int LOD_COUNT = 3;
 // SSBO and uniform-block bindings of the shaders (blade.glsl, cull.comp, visible.glsl,
 // blade_shading.glsl, physics.glsl, lighting_block.glsl).
 constexpr GLuint BLADES = 0, PATCH_BOUNDS = 1, VISIBLE = 5, COMMANDS = 6, COUNTERS = 7,
@@ -26,33 +24,11 @@ constexpr GLuint WORK_GROUP = 32;  // local_size_x of cull.comp and physics.comp
 constexpr std::size_t MAX_GROUPS = 65535;
 constexpr int MAX_STEPS_PER_UPDATE = 8;
 
-struct DrawCommand {
-    std::uint32_t count, instanceCount, first, baseInstance;
-};
-using Commands = std::array<DrawCommand, 2 * LOD_COUNT>;
-
-int lodSegments(int segments, int lod) {
-    return std::max(segments >> lod, 1);
-}
-
-// Strips of LOD k at [k], tessellation patches at [LOD_COUNT + k] (cull.comp).
-Commands emptyCommands(int segments) {
-    Commands commands{};
-    for (int lod = 0; lod < LOD_COUNT; ++lod) {
-        commands[std::size_t(lod)] = {std::uint32_t(4 * (lodSegments(segments, lod) + 1)), 0, 0, 0};
-        commands[std::size_t(LOD_COUNT + lod)] = {1, 0, 0, 0};
-    }
-    return commands;
-}
+using core::LOD_COUNT;
+using Commands = core::BladeDrawCommands;
 
 bool isSoftwareRenderer() {
-    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (renderer == nullptr)
-        return true;
-    for (const char* name : {"llvmpipe", "softpipe", "SwiftShader", "lavapipe", "Software"})
-        if (std::strstr(renderer, name) != nullptr)
-            return true;
-    return false;
+    return core::isSoftwareRendererName(reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
 }
 
 struct LayerGpu {
@@ -165,7 +141,7 @@ bool Field::load(ExportData data, std::string& error) {
         gpu.shading = GlBuffer::of(layer.shading);
         gpu.patchBounds = GlBuffer::of(layer.patchBounds);
         gpu.visible = GlBuffer::of(std::vector<std::uint32_t>(LOD_COUNT * std::max<std::size_t>(gpu.slots, 1), 0u));
-        const Commands commands = emptyCommands(1);
+        const Commands commands = core::emptyBladeDrawCommands(1);
         gpu.commands = GlBuffer(std::as_bytes(std::span(commands)));
         // The physics starts as a grown field stands: at rest, η = 0 (core::restTipsAsGrown).
         std::vector<glm::vec4> tips;
@@ -319,8 +295,9 @@ void Field::draw(const View& view) {
     cull.set("uLodDistance", std::max(render.lodDistanceM, 0.0f));
     cull.set("uCollectStats", 0);
     s.counters.bindStorage(COUNTERS);
-    const Commands commands = emptyCommands(segments);
-    for (LayerGpu& layer : s.layers) {
+    const Commands commands = core::emptyBladeDrawCommands(segments);
+    for (std::size_t i = 0; i < s.layers.size(); ++i) {
+        const LayerGpu& layer = s.layers[i];
         glNamedBufferSubData(layer.commands.id(), 0, sizeof commands, commands.data());
         if (layer.slots == 0)
             continue;
@@ -329,7 +306,7 @@ void Field::draw(const View& view) {
         layer.visible.bindStorage(VISIBLE);
         layer.commands.bindStorage(COMMANDS);
         cull.set("uBladeCount", unsigned(layer.slots));
-        cull.set("uPatchSize", std::max(s.data.layers[&layer - s.layers.data()].patchSize, 1u));
+        cull.set("uPatchSize", std::max(s.data.layers[i].patchSize, 1u));
         glDispatchCompute(GLuint((layer.slots + WORK_GROUP - 1) / WORK_GROUP), 1, 1);
     }
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
@@ -370,12 +347,12 @@ void Field::draw(const View& view) {
         glBindBuffer(GL_DRAW_INDIRECT_BUFFER, layer.commands.id());
         for (int lod = 0; lod < LOD_COUNT; ++lod) {
             program.set("uVisibleOffset", unsigned(std::size_t(lod) * layer.slots));
-            const auto offset = static_cast<std::uintptr_t>(
-                (tessellate ? LOD_COUNT + lod : lod) * int(sizeof(DrawCommand)));
+            const std::size_t offset =
+                tessellate ? core::patchCommandOffset(lod) : core::stripCommandOffset(lod);
             if (tessellate) {
                 glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(offset));
             } else {
-                program.set("uSegments", lodSegments(segments, lod));
+                program.set("uSegments", core::lodSegments(segments, lod));
                 glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(offset));
             }
         }

@@ -24,6 +24,11 @@ set(GRASS_CLI_GLTF ${GRASS_CLI_DATA}/gltf)
 set(GRASS_CLI_PROJECTS ${GRASS_CLI_DATA}/projects)
 file(MAKE_DIRECTORY ${GRASS_CLI_TMP})
 set(GRASS_BIN $<TARGET_FILE:grass>)
+# The real-window tests (editor, runtime sample) run under xvfb-run.
+find_program(GRASS_XVFB_RUN xvfb-run)
+if(NOT GRASS_XVFB_RUN)
+    set(GRASS_XVFB_RUN xvfb-run)  # fails with "not found": never a silent skip
+endif()
 
 # grass_cli_test(NAME [GL] OK|ERROR <driver arguments>... -- <command>...)
 function(grass_cli_test name)

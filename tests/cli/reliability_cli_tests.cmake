@@ -12,10 +12,6 @@ set_tests_properties(cli.kill_during_save PROPERTIES LABELS cli TIMEOUT 300
 # The editor's autosave survives a kill: 10 painting sessions SIGKILLed at random moments, each
 # next one recovering the autosave (kill_autosave_test.sh); under Xvfb, about a minute.
 if(TARGET grass-editor)
-    find_program(GRASS_XVFB_RUN xvfb-run)
-    if(NOT GRASS_XVFB_RUN)
-        set(GRASS_XVFB_RUN xvfb-run)  # fails with "not found": never a silent skip
-    endif()
     add_test(NAME cli.kill_during_autosave
              COMMAND ${GRASS_XVFB_RUN} -a -s "-screen 0 1024x768x24"
                      ${GRASS_BASH} ${GRASS_CLI_DIR}/kill_autosave_test.sh

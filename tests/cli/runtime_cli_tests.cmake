@@ -4,15 +4,11 @@ if(NOT TARGET grass-runtime-sample)
     return()
 endif()
 set(GRASS_SAMPLE_BIN $<TARGET_FILE:grass-runtime-sample>)
-find_program(GRASS_RUNTIME_XVFB_RUN xvfb-run)
-if(NOT GRASS_RUNTIME_XVFB_RUN)
-    set(GRASS_RUNTIME_XVFB_RUN xvfb-run)  # fails with "not found": never a silent skip
-endif()
 
 # A small project exported raw, drawn for a few frames with a screenshot, then the ball moved by
 # the left button held (xdotool) at the window's centre; about 25 s on llvmpipe.
 add_test(NAME cli.runtime_sample
-         COMMAND ${GRASS_RUNTIME_XVFB_RUN} -a -s "-screen 0 1024x768x24"
+         COMMAND ${GRASS_XVFB_RUN} -a -s "-screen 0 1024x768x24"
                  ${GRASS_BASH} ${GRASS_CLI_DIR}/runtime_sample_test.sh ${GRASS_BIN}
                  ${GRASS_SAMPLE_BIN} ${GRASS_CLI_TMP}/runtime-sample)
 set_tests_properties(cli.runtime_sample PROPERTIES LABELS "cli;gl" TIMEOUT 180

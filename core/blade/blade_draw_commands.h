@@ -1,0 +1,60 @@
+// The levels of detail of the blades and the indirect draw commands the cull pass fills
+// (shaders/include/lod.glsl, shaders/cull.comp), GL-free and header-only so the editor's
+// renderer (render/field_gpu.h) and the reference runtime (editor/runtime) lay them out alike.
+// Per layer: one command per LOD for the instanced strips, then one per LOD for the
+// tessellation patches; the cull pass writes each one's instance count.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+namespace grass::core {
+
+// LOD_COUNT in shaders/include/lod.glsl: LOD k draws max(segments >> k, 1) segments.
+inline constexpr int LOD_COUNT = 3;
+
+inline int lodSegments(int fullSegments, int lod) {
+    return std::max(fullSegments >> lod, 1);
+}
+
+// Vertices of one instanced strip of `segments` segments: the left half (u = 0, ½) up the
+// blade, then the right half (u = 1, ½) down, so the midrib is a vertex column and the V fold
+// of SPEC §7 shows (blade_strip.vert).
+inline int stripVertexCount(int segments) {
+    return 4 * (segments + 1);
+}
+
+// Matches GL's DrawArraysIndirectCommand.
+struct DrawArraysIndirectCommand {
+    std::uint32_t count;
+    std::uint32_t instanceCount;
+    std::uint32_t first;
+    std::uint32_t baseInstance;
+};
+static_assert(sizeof(DrawArraysIndirectCommand) == 16);
+
+using BladeDrawCommands = std::array<DrawArraysIndirectCommand, 2 * LOD_COUNT>;
+
+// Byte offsets in the command buffer: LOD k's strips at [k], its patches at [LOD_COUNT + k].
+inline std::size_t stripCommandOffset(int lod) {
+    return std::size_t(lod) * sizeof(DrawArraysIndirectCommand);
+}
+inline std::size_t patchCommandOffset(int lod) {
+    return std::size_t(LOD_COUNT + lod) * sizeof(DrawArraysIndirectCommand);
+}
+
+// The commands before the cull pass: no instances; each LOD's strip vertex count for
+// `segments`, one patch vertex per tessellated blade (blade_tess.vert says why).
+inline BladeDrawCommands emptyBladeDrawCommands(int segments) {
+    BladeDrawCommands commands{};
+    for (int lod = 0; lod < LOD_COUNT; ++lod) {
+        commands[std::size_t(lod)] = {
+            static_cast<std::uint32_t>(stripVertexCount(lodSegments(segments, lod))), 0, 0, 0};
+        commands[std::size_t(LOD_COUNT + lod)] = {1, 0, 0, 0};
+    }
+    return commands;
+}
+
+}  // namespace grass::core
