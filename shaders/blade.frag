@@ -1,12 +1,15 @@
 #version 450 core
-// Blade shading (blade_shade.glsl): per pixel, or the colour the vertex stage lit.
+// Blade shading (blade_shade.glsl): per pixel, or the colour the vertex stage lit
+// (GRASS_LIGHT_PER_VERTEX, a program variant).
 #include "blade_shade.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
-in vec3 vUp;
+flat in vec3 vUp;
 in float vHeight;
+#ifdef GRASS_LIGHT_PER_VERTEX
 in vec3 vLitColor;
+#endif
 flat in uint vBladeIndex;
 
 // Hybrid technique: the blades fade out between these camera distances (metres) while the
@@ -19,7 +22,10 @@ void main() {
     float alpha = uFadeOut.y > 0.0
                       ? 1.0 - smoothstep(uFadeOut.x, uFadeOut.y, distance(uCameraPosition, vPosition))
                       : 1.0;
-    vec3 color = uLightPerVertex != 0 ? vLitColor
-                                      : shadeBlade(vPosition, vNormal, vUp, vHeight, vBladeIndex);
+#ifdef GRASS_LIGHT_PER_VERTEX
+    vec3 color = vLitColor;
+#else
+    vec3 color = shadeBlade(vPosition, vNormal, vUp, vHeight, vBladeIndex);
+#endif
     fragColor = vec4(color, alpha);
 }

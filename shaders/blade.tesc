@@ -2,7 +2,7 @@
 // Tessellation control (Jahrmann §6): the level along the blade (v) follows the camera distance
 // with the same LOD steps the strips use (lod.glsl); across it (u) two segments put a vertex
 // column on the midrib for the V fold of SPEC §7. Padding blades (h = 0) get level 0: discarded.
-#include "blade.glsl"
+#include "blade_texels.glsl"
 #include "lod.glsl"
 
 layout(vertices = 1) out;
@@ -17,7 +17,7 @@ uniform float uLodDistance;
 void main() {
     int index = vBladeIndex[0];
     tcBladeIndex[gl_InvocationID] = index;
-    Blade blade = blades[index];
+    Blade blade = fetchBlade(uint(index));
     int lod = bladeLod(distance(blade.v0Theta.xyz, uCameraPosition), uLodDistance);
     float level = blade.v1H.w > 0.0 ? float(lodSegments(int(uTessLevel), lod)) : 0.0;
     // Quads domain: outer 0 and 2 are the u = 0 and u = 1 edges (along v), 1 and 3 along u.

@@ -15,13 +15,15 @@ uniform float uPixelScale;  // projection[1][1] · viewport height / 2; 0: no wi
 
 out vec3 vPosition;
 out vec3 vNormal;
-out vec3 vUp;
+flat out vec3 vUp;
 out float vHeight;
+#ifdef GRASS_LIGHT_PER_VERTEX
 out vec3 vLitColor;
+#endif
 flat out uint vBladeIndex;
 
 void main() {
-    Blade blade = blades[tcBladeIndex[0]];
+    Blade blade = fetchBlade(uint(tcBladeIndex[0]));
     blade.v2W.w *= uWidthScale;
     // The level along v (outer 0) places the vertices at v = i/level, as the strips' segments do.
     BladeShapeParams shape =
@@ -32,8 +34,8 @@ void main() {
     vUp = blade.upS.xyz;
     vHeight = point.v;
     vBladeIndex = uint(tcBladeIndex[0]);
-    vLitColor = uLightPerVertex != 0
-                    ? shadeBlade(point.position, point.normal, vUp, point.v, vBladeIndex)
-                    : vec3(0.0);
+#ifdef GRASS_LIGHT_PER_VERTEX
+    vLitColor = shadeBlade(point.position, point.normal, vUp, point.v, vBladeIndex);
+#endif
     gl_Position = uViewProj * vec4(point.position, 1.0);
 }

@@ -4,9 +4,11 @@
 // the right half (u = 1, ½) from tip to root, so the midrib is a vertex column and the V fold
 // shows. The turn at the tip adds two zero-area triangles (all three tip points lie on one
 // line). The curve is evaluated here; instances are read through the visible list.
+// GRASS_LIGHT_PER_VERTEX (a program variant, not a uniform: llvmpipe runs both sides of a
+// uniform branch, and the unused per-vertex lighting cost 0.67 s of the 1.7 s above) lights
+// each vertex and hands the colour on.
 #include "blade_geometry.glsl"
 #include "blade_shade.glsl"
-#include "visible.glsl"
 
 uniform mat4 uViewProj;
 uniform int uSegments;
@@ -17,14 +19,16 @@ uniform float uWidthScale;  // 1; wider in the editor's thinned picture while th
 
 out vec3 vPosition;
 out vec3 vNormal;
-out vec3 vUp;
+flat out vec3 vUp;
 out float vHeight;
+#ifdef GRASS_LIGHT_PER_VERTEX
 out vec3 vLitColor;
+#endif
 flat out uint vBladeIndex;
 
 void main() {
     uint bladeIndex = visibleBlade(gl_InstanceID);
-    Blade blade = blades[bladeIndex];
+    Blade blade = fetchBlade(bladeIndex);
     blade.v2W.w *= uWidthScale;
     int halfVertices = 2 * (uSegments + 1);
     int row;
@@ -49,8 +53,8 @@ void main() {
     vUp = blade.upS.xyz;
     vHeight = v;
     vBladeIndex = bladeIndex;
-    vLitColor = uLightPerVertex != 0
-                    ? shadeBlade(point.position, point.normal, vUp, v, bladeIndex)
-                    : vec3(0.0);
+#ifdef GRASS_LIGHT_PER_VERTEX
+    vLitColor = shadeBlade(point.position, point.normal, vUp, v, bladeIndex);
+#endif
     gl_Position = uViewProj * vec4(point.position, 1.0);
 }

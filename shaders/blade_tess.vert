@@ -4,7 +4,7 @@
 // the visible list, travels on. Instanced rather than one patch list of N vertices: Mesa's
 // llvmpipe drew long patch lists wrongly (regions missing, streaks between far blades, beyond
 // ~10k patches at level 8) and 6× slower; tests/gl/lod_gl_test.cpp guards it.
-#include "visible.glsl"
+#include "blade_texels.glsl"
 
 out int vBladeIndex;
 

@@ -26,6 +26,15 @@ inline int stripVertexCount(int segments) {
     return 4 * (segments + 1);
 }
 
+// Texture units of the buffer textures the blade draw stages read (shaders/include/
+// blade_texels.glsl; texelFetch is far cheaper than an SSBO load on software GL): the blades
+// (4 RGBA32F texels a slot), the visible lists (R32UI), the baked shading (2 RGBA32F texels a
+// slot), the tip snow (R32F). Above the units the editor's other passes use (0, 5, 6).
+inline constexpr unsigned BLADE_TEXELS_UNIT = 8;
+inline constexpr unsigned VISIBLE_TEXELS_UNIT = 9;
+inline constexpr unsigned SHADING_TEXELS_UNIT = 10;
+inline constexpr unsigned TIP_SNOW_TEXELS_UNIT = 11;
+
 // Matches GL's DrawArraysIndirectCommand.
 struct DrawArraysIndirectCommand {
     std::uint32_t count;

@@ -260,7 +260,8 @@ void printBenchTable(const BenchRun& run) {
     std::printf("renderer  %s\n", run.renderer.c_str());
     std::printf(
         "settings  %dx%d, %dx MSAA, blade geometry %s; ms are medians over the timed frames: "
-        "frame = CPU wall time with glFinish, stages = GPU timer queries\n",
+        "frame = CPU wall time with glFinish, stages = GPU timer queries (on software GL each "
+        "pass alone between two glFinish, in separate frames)\n",
         run.width, run.height, run.msaaSamples, run.geometry.c_str());
     printHeader("case", true);
     for (const BenchCaseResult& result : run.cases) {

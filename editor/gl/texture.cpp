@@ -12,6 +12,15 @@ TextureHandle makeTexture2D(GLenum internalFormat, int width, int height, int le
     return texture;
 }
 
+TextureHandle makeBufferTexture(GLenum internalFormat, GLuint buffer, std::string_view label) {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &id);
+    TextureHandle texture(id);
+    glTextureBuffer(id, internalFormat, buffer);
+    texture.setLabel(label);
+    return texture;
+}
+
 void setClampedFiltering(TextureRef texture, GLenum minFilter, GLenum magFilter) {
     glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minFilter));
     glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magFilter));

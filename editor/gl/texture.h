@@ -14,6 +14,11 @@ namespace grass::gl {
 TextureHandle makeTexture2D(GLenum internalFormat, int width, int height, int levels,
                             std::string_view label);
 
+// A buffer texture over all of `buffer` (GL_TEXTURE_BUFFER), texels of `internalFormat`
+// (GL_RGBA32F, GL_R32UI, ...): shaders read it with texelFetch. It follows the buffer's
+// contents; the buffer must outlive it and keep its storage.
+TextureHandle makeBufferTexture(GLenum internalFormat, GLuint buffer, std::string_view label);
+
 // Minification and magnification filters, and clamp-to-edge in s and t: the textures here are
 // sprites, atlases and depth maps, none of which may repeat across its edge.
 void setClampedFiltering(TextureRef texture, GLenum minFilter, GLenum magFilter);

@@ -36,6 +36,11 @@ FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
     const CommandArray commands = core::emptyBladeDrawCommands(1);
     mCommands = gl::Buffer(std::as_bytes(std::span(commands)), "draw commands " + field.name);
     mEmptyVertexArray = gl::VertexArray("no vertices " + field.name);
+    mBladeTexels = gl::makeBufferTexture(GL_RGBA32F, mBlades.id(), "blade texels " + field.name);
+    mVisibleTexels =
+        gl::makeBufferTexture(GL_R32UI, mVisible.id(), "visible blade texels " + field.name);
+    mShadingTexels =
+        gl::makeBufferTexture(GL_RGBA32F, mShading.id(), "blade shading texels " + field.name);
 }
 
 void FieldGpu::uploadPatches(std::span<const std::uint32_t> patches, bool withShading) {
@@ -69,6 +74,8 @@ void FieldGpu::enableTipSnow() {
         mTipSnow = gl::Buffer::fromVector(
             std::vector<float>(std::max<std::size_t>(mBladeCount, 1), 0.0f),
             "tip snow " + mField->name);
+    if (mTipSnowTexels.id() == 0)
+        mTipSnowTexels = gl::makeBufferTexture(GL_R32F, mTipSnow.id(), "tip snow texels " + mField->name);
 }
 
 std::vector<float> FieldGpu::readTipSnow() const {
@@ -102,11 +109,10 @@ std::array<std::size_t, LOD_COUNT> FieldGpu::readDrawnCounts() const {
 
 void FieldGpu::bindForDraw() const {
     mEmptyVertexArray.bind();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mBlades.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, VISIBLE_BINDING, mVisible.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SHADING_BINDING, mShading.id());
-    if (mTipSnow.id() != 0)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, TIP_SNOW_BINDING, mTipSnow.id());
+    glBindTextureUnit(core::BLADE_TEXELS_UNIT, mBladeTexels.id());
+    glBindTextureUnit(core::VISIBLE_TEXELS_UNIT, mVisibleTexels.id());
+    glBindTextureUnit(core::SHADING_TEXELS_UNIT, mShadingTexels.id());
+    glBindTextureUnit(core::TIP_SNOW_TEXELS_UNIT, mTipSnowTexels.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands.id());
 }
 

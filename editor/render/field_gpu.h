@@ -12,6 +12,7 @@
 
 #include "gl/buffer.h"
 #include "gl/program.h"
+#include "gl/texture.h"
 #include "gl/vertex_array.h"
 #include "blade/blade_draw_commands.h"
 #include "scene/scene.h"
@@ -28,13 +29,12 @@ using core::stripVertexCount;
 enum class GeometryPath { Tessellation, Strips };
 
 
-// SSBO bindings shared with shaders/cull.comp and shaders/include/visible.glsl.
+// SSBO bindings of shaders/cull.comp; the draw stages read the same buffers as buffer textures
+// (core::BLADE_TEXELS_UNIT and the units after it, shaders/include/blade_texels.glsl).
 inline constexpr std::uint32_t PATCH_BOUNDS_BINDING = 1;
 inline constexpr std::uint32_t VISIBLE_BINDING = 5;
 inline constexpr std::uint32_t COMMAND_BINDING = 6;
-// shaders/include/blade_shading.glsl: the baked lighting inputs, one per blade slot.
-inline constexpr std::uint32_t SHADING_BINDING = 9;
-// shaders/cull.comp writes, shaders/include/blade_shade.glsl reads: snow on each blade's tip.
+// shaders/cull.comp writes snow on each blade's tip; shaders/include/blade_shade.glsl reads it.
 inline constexpr std::uint32_t TIP_SNOW_BINDING = 10;
 
 class FieldGpu {
@@ -80,6 +80,8 @@ private:
     gl::Buffer mVisible;
     gl::Buffer mCommands;
     gl::Buffer mTipSnow;
+    // Texel views of mBlades, mVisible, mShading and mTipSnow for the draw stages.
+    gl::TextureHandle mBladeTexels, mVisibleTexels, mShadingTexels, mTipSnowTexels;
     gl::VertexArray mEmptyVertexArray;  // core profile needs a VAO bound to draw
 };
 

@@ -27,6 +27,11 @@ struct RenderOptions {
     glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
     // Per-blade culling (SPEC §6); all tests off draws every blade.
     CullSettings cull;
+    // Time every pass exactly on software GL (gl/timer_query.h: finish the GL work around each
+    // pass and read the clock), as frames that collect statistics do, without the statistics'
+    // atomics. The stalls cost the overlap of the app's thread with the rasterizer's, so
+    // `grass bench` times its frames' wall clock in frames without them.
+    bool exactStageTimings = false;
     // Draws every layer with this shape instead of its own (`grass render --shape`).
     std::optional<core::BladeShape> shape;
     // Blades, star billboards alone, or blades cross-faded into billboards by distance; the

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "gl/headless_context.h"
+#include "util/assert.h"
 
 namespace grass::render {
 
@@ -41,6 +42,35 @@ static gl::TextureHandle uploadSurfaceTexture(const Rgba8Pixels& image, const co
     return texture;
 }
 
+// The blade program of a geometry path, lit per pixel or per vertex (a compile-time variant:
+// software GL runs both sides of a uniform branch, so an unused lighting path would still cost).
+Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightPerVertex) {
+    std::vector<std::string> defines;
+    if (lightPerVertex)
+        defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
+    const std::string label = std::string(tessellate ? "blade tessellation" : "blade strips") +
+                              (lightPerVertex ? " (lit per vertex)" : "");
+    if (tessellate)
+        return gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
+                                  {GL_TESS_CONTROL_SHADER, "blade.tesc"},
+                                  {GL_TESS_EVALUATION_SHADER, "blade.tese"},
+                                  {GL_FRAGMENT_SHADER, "blade.frag"}},
+                                 label, defines);
+    return gl::Program::load(
+        {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}}, label,
+        defines);
+}
+
+const gl::Program& SceneRenderer::bladeProgram(bool tessellate, bool lightPerVertex) {
+    gl::Program& program = mBladePrograms[tessellate][lightPerVertex];
+    if (program.id() == 0) {
+        auto loaded = loadBladeProgram(tessellate, lightPerVertex);
+        GRASS_ASSERT(loaded.ok());  // the shaders ship with the program; a failure is a bug
+        program = std::move(*loaded);
+    }
+    return program;
+}
+
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene) {
     std::unique_ptr<SceneRenderer> renderer(new SceneRenderer());
     renderer->mScene = &scene;
@@ -49,18 +79,11 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
         {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}}, "mesh");
     if (!mesh)
         return mesh.error();
-    auto strips = gl::Program::load(
-        {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}},
-        "blade strips");
-    if (!strips)
-        return strips.error();
-    auto tess = gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
-                                   {GL_TESS_CONTROL_SHADER, "blade.tesc"},
-                                   {GL_TESS_EVALUATION_SHADER, "blade.tese"},
-                                   {GL_FRAGMENT_SHADER, "blade.frag"}},
-                                  "blade tessellation");
-    if (!tess)
-        return tess.error();
+    for (const bool tessellate : {false, true})
+        if (auto loaded = loadBladeProgram(tessellate, false); loaded)
+            renderer->mBladePrograms[tessellate][0] = std::move(*loaded);
+        else
+            return loaded.error();
     auto stemSets = loadStemSetProgram();
     if (!stemSets)
         return stemSets.error();
@@ -71,8 +94,6 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     renderer->mCull = std::make_unique<CullPass>(std::move(*cull));
     renderer->mFieldAo = meanFieldAo(scene);
     renderer->mMeshProgram = std::move(*mesh);
-    renderer->mStripProgram = std::move(*strips);
-    renderer->mTessProgram = std::move(*tess);
     renderer->mMesh = std::make_unique<MeshGpu>(scene.mesh);
     if (const Rgba8Pixels& image = scene.look.baseTexture; !image.pixels.empty())
         renderer->mSurfaceTexture = uploadSurfaceTexture(image, scene.look);
@@ -111,7 +132,8 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
         lightingBlock(options.lighting, options.sun, options.skyColor, options.groundColor));
     mPasses.clear();
     // Figures a frame's caller reads are timed exactly on software GL (gl/timer_query.h).
-    const bool synchronous = mSoftwareGl && options.cull.collectStats;
+    const bool synchronous =
+        mSoftwareGl && (options.cull.collectStats || options.exactStageTimings);
     for (gl::GpuTimer* timer : {&mMeshTimer, &mGrassTimer, &mCullTimer, &mBillboardTimer,
                                 &mStemSetTimer, &mSnowTimer})
         timer->setSynchronous(synchronous);

@@ -69,7 +69,11 @@ private:
     const core::Scene* mScene = nullptr;
     // The frame's lighting, uploaded once at the start of render().
     gl::UniformBlock<LightingBlock> mLighting{"lighting"};
-    gl::Program mMeshProgram, mStripProgram, mTessProgram, mStemSetProgram;
+    gl::Program mMeshProgram, mStemSetProgram;
+    // [tessellated][lit per vertex]; the per-vertex variants load on first use.
+    gl::Program mBladePrograms[2][2];
+    static Result<gl::Program> loadBladeProgram(bool tessellate, bool lightPerVertex);
+    const gl::Program& bladeProgram(bool tessellate, bool lightPerVertex);
     gl::Program mSnowMeshProgram;  // compiled on the first frame with snow
     const gl::Program& snowMeshProgram();
     // The passes of render(), in order (scene_renderer_opaque.cpp, scene_renderer_grass.cpp).

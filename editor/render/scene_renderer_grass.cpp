@@ -73,7 +73,7 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
 
     mGrassTimer.begin();
     const bool tessellate = options.geometry == GeometryPath::Tessellation;
-    const gl::Program& program = tessellate ? mTessProgram : mStripProgram;
+    const gl::Program& program = bladeProgram(tessellate, options.lightPerVertex);
     program.use();
     program.set("uViewProj", viewProj);
     // Pixels that a length of 1 at view depth 1 covers, for the width correction (SPEC §7).
@@ -85,7 +85,6 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     program.set("uCameraPosition", camera.position());
     program.set("uLodDistance", std::max(options.cull.lodDistanceM, 0.0f));
     program.set("uFadeOut", hybrid ? options.billboards.crossFadeM : glm::vec2(0.0f));
-    program.set("uLightPerVertex", options.lightPerVertex ? 1 : 0);
     program.set("uAlbedoView", options.albedoView ? 1 : 0);
     program.set("uSnowTips", mSnowLies ? 1 : 0);
     program.set("uSnowTipColor", options.snow.snowColor);

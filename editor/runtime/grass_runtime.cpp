@@ -14,10 +14,9 @@ namespace grass::runtime {
 
 namespace {
 
-// SSBO and uniform-block bindings of the shaders (blade.glsl, cull.comp, visible.glsl,
-// blade_shading.glsl, physics.glsl, lighting_block.glsl).
-constexpr GLuint BLADES = 0, PATCH_BOUNDS = 1, VISIBLE = 5, COMMANDS = 6, COUNTERS = 7,
-                 SHADING = 9;
+// SSBO and uniform-block bindings of the shaders (blade.glsl, cull.comp, physics.glsl,
+// lighting_block.glsl); the draws read through texel views (blade_texels.glsl).
+constexpr GLuint BLADES = 0, PATCH_BOUNDS = 1, VISIBLE = 5, COMMANDS = 6, COUNTERS = 7;
 constexpr GLuint PHYSICS_PARAMS = 1, ETA = 2, REST_TIPS = 3, WIND_SOURCES = 4, WIND_CENTRES = 5,
                  COLLIDERS = 6, SUBSTEPS = 7, COLLIDER_GROUPS = 8;
 constexpr GLuint WORK_GROUP = 32;  // local_size_x of cull.comp and physics.comp
@@ -33,6 +32,7 @@ bool isSoftwareRenderer() {
 
 struct LayerGpu {
     GlBuffer blades, shading, patchBounds, visible, commands, eta, restTips;
+    GlTexelView bladeTexels, shadingTexels, visibleTexels;
     std::size_t slots = 0;
 };
 
@@ -143,6 +143,9 @@ bool Field::load(ExportData data, std::string& error) {
         gpu.visible = GlBuffer::of(std::vector<std::uint32_t>(LOD_COUNT * std::max<std::size_t>(gpu.slots, 1), 0u));
         const Commands commands = core::emptyBladeDrawCommands(1);
         gpu.commands = GlBuffer(std::as_bytes(std::span(commands)));
+        gpu.bladeTexels = GlTexelView(gpu.blades, GL_RGBA32F);
+        gpu.shadingTexels = GlTexelView(gpu.shading, GL_RGBA32F);
+        gpu.visibleTexels = GlTexelView(gpu.visible, GL_R32UI);
         // The physics starts as a grown field stands: at rest, η = 0 (core::restTipsAsGrown).
         std::vector<glm::vec4> tips;
         for (const glm::vec3 tip : core::restTipsAsGrown(layer.blades))
@@ -322,7 +325,6 @@ void Field::draw(const View& view) {
     program.set("uCameraPosition", view.cameraPosition);
     program.set("uLodDistance", std::max(render.lodDistanceM, 0.0f));
     program.set("uFadeOut", glm::vec2(0.0f));
-    program.set("uLightPerVertex", 0);
     program.set("uAlbedoView", 0);
     program.set("uSnowTips", 0);
     const GLboolean cullFace = glIsEnabled(GL_CULL_FACE);
@@ -341,9 +343,9 @@ void Field::draw(const View& view) {
         program.set("uPoorTipColor", data.poorTipColor);
         program.set("uShape", data.shape);
         program.set("uTipStart", data.tipStart);
-        layer.blades.bindStorage(BLADES);
-        layer.visible.bindStorage(VISIBLE);
-        layer.shading.bindStorage(SHADING);
+        layer.bladeTexels.bind(core::BLADE_TEXELS_UNIT);
+        layer.visibleTexels.bind(core::VISIBLE_TEXELS_UNIT);
+        layer.shadingTexels.bind(core::SHADING_TEXELS_UNIT);
         glBindBuffer(GL_DRAW_INDIRECT_BUFFER, layer.commands.id());
         for (int lod = 0; lod < LOD_COUNT; ++lod) {
             program.set("uVisibleOffset", unsigned(std::size_t(lod) * layer.slots));

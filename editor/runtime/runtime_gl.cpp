@@ -172,4 +172,18 @@ GlBuffer::~GlBuffer() {
         glDeleteBuffers(1, &mId);
 }
 
+GlTexelView::GlTexelView(const GlBuffer& buffer, GLenum internalFormat) {
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &mId);
+    glTextureBuffer(mId, internalFormat, buffer.id());
+}
+GlTexelView::GlTexelView(GlTexelView&& other) noexcept : mId(std::exchange(other.mId, 0)) {}
+GlTexelView& GlTexelView::operator=(GlTexelView&& other) noexcept {
+    std::swap(mId, other.mId);
+    return *this;
+}
+GlTexelView::~GlTexelView() {
+    if (mId != 0)
+        glDeleteTextures(1, &mId);
+}
+
 }  // namespace grass::runtime

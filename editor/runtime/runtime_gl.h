@@ -72,4 +72,23 @@ private:
     std::size_t mSize = 0;
 };
 
+// A buffer texture over all of a GlBuffer, texels of `internalFormat`: the draw stages read the
+// blades, visible lists and shading through these (shaders/include/blade_texels.glsl). The
+// buffer must outlive the view.
+class GlTexelView {
+public:
+    GlTexelView() = default;
+    GlTexelView(const GlBuffer& buffer, GLenum internalFormat);
+    GlTexelView(GlTexelView&& other) noexcept;
+    GlTexelView& operator=(GlTexelView&& other) noexcept;
+    GlTexelView(const GlTexelView&) = delete;
+    GlTexelView& operator=(const GlTexelView&) = delete;
+    ~GlTexelView();
+
+    void bind(GLuint unit) const { glBindTextureUnit(unit, mId); }
+
+private:
+    GLuint mId = 0;
+};
+
 }  // namespace grass::runtime

@@ -1,5 +1,8 @@
 // The blade layout of SPEC §1, mirrored from core/blade/blade.h (static_asserts there):
 // four vec4, 64 bytes, std430: (v0, theta) (v1, h) (v2, w) (up, s).
+// Included by both blade_geometry.glsl and blade_texels.glsl: defined once.
+#ifndef GRASS_BLADE_GLSL
+#define GRASS_BLADE_GLSL
 struct Blade {
     vec4 v0Theta;
     vec4 v1H;
@@ -19,3 +22,4 @@ vec3 widthDirection(vec3 up, float theta) {
     vec3 b = cross(up, t);
     return cos(theta) * t + sin(theta) * b;
 }
+#endif

@@ -1,8 +1,8 @@
 // The colour of a blade point, shared by the fragment shader (per-pixel lighting, the default)
-// and the vertex stages (per-vertex lighting, the article's choice; uLightPerVertex = 1): the
+// and the vertex stages (per-vertex lighting, the article's choice; GRASS_LIGHT_PER_VERTEX): the
 // grass lighting of SPEC §10 with the blade's baked AO, blurred terrain normal and water, or the
 // wrapped Lambert (uGrassLighting = 0). Blades are two-sided: the normal turns to the viewer.
-#include "blade_shading.glsl"
+#include "blade_texels.glsl"
 #include "grass_lighting.glsl"
 
 uniform vec3 uCameraPosition;
@@ -12,16 +12,12 @@ uniform vec3 uTipColor;
 // blends towards them.
 uniform vec3 uPoorRootColor;
 uniform vec3 uPoorTipColor;
-uniform int uLightPerVertex;
 // 1: the unlit colour (RenderOptions::albedoView), to compare geometry and colour alone.
 uniform int uAlbedoView;
 // Snow on the tips (SPEC §11): the cull pass writes each drawn blade's tip whiteness; 0 = no snow
-// (the buffer is then not bound and not read).
+// (the texels are then not bound and not read).
 uniform int uSnowTips;
 uniform vec3 uSnowTipColor;
-layout(std430, binding = 10) readonly buffer TipSnowBuffer {
-    float tipSnow[];
-};
 // The share of the snow colour at height τ (core::bladeSnowWhiteness, SNOW_TIP_FRACTION 0.3).
 float bladeSnowWhiteness(float tipSnowAmount, float tau) {
     return tipSnowAmount * smoothstep(0.7, 1.0, tau);
@@ -35,12 +31,12 @@ vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeInd
     // gl_FrontFacing cannot tell the side; the view direction can.
     normal = normalize(normal);
     if (dot(normal, toEye) < 0.0) normal = -normal;
-    BladeShading baked = bladeShading[bladeIndex];
+    BladeShading baked = fetchShading(bladeIndex);
     vec3 albedo = mix(mix(uRootColor, uTipColor, height), mix(uPoorRootColor, uPoorTipColor, height),
                       baked.waterAge.z);
     if (uSnowTips != 0) {
         // C = Fp·Cs + (1 − Fp)·Cn (paper eq. 3) with the tip's whiteness for Fp.
-        float white = bladeSnowWhiteness(tipSnow[bladeIndex], height);
+        float white = bladeSnowWhiteness(fetchTipSnow(bladeIndex), height);
         albedo = white * uSnowTipColor + (1.0 - white) * albedo;
     }
     if (uAlbedoView != 0) return albedo;

@@ -1,0 +1,48 @@
+// The draw stages' view of the blade buffers: buffer textures read with texelFetch, where the
+// cull and physics passes use the SSBOs of blade.glsl and cull.comp. Mesa's llvmpipe loads an
+// SSBO element lane by lane, each component behind its own bounds check, while a texel fetch
+// gathers a whole vec4 per lane; the blades of projects/nature drawn in full (398k blades, 36
+// vertices each) took 2.43 s of vertex work through the SSBO and 0.97 s through texels
+// (docs/rendering.md, "What a drawn blade costs"). Units: core/blade/blade_draw_commands.h.
+#include "blade.glsl"
+#ifndef GRASS_BLADE_TEXELS_GLSL
+#define GRASS_BLADE_TEXELS_GLSL
+
+layout(binding = 8) uniform samplerBuffer uBladeTexels;     // 4 RGBA32F texels per blade slot
+layout(binding = 9) uniform usamplerBuffer uVisibleTexels;  // R32UI: the cull pass's lists
+layout(binding = 10) uniform samplerBuffer uShadingTexels;  // 2 RGBA32F texels per blade slot
+layout(binding = 11) uniform samplerBuffer uTipSnowTexels;  // R32F, bound while snow lies
+
+Blade fetchBlade(uint index) {
+    int first = 4 * int(index);
+    return Blade(texelFetch(uBladeTexels, first), texelFetch(uBladeTexels, first + 1),
+                 texelFetch(uBladeTexels, first + 2), texelFetch(uBladeTexels, first + 3));
+}
+
+// The visible-index lists the cull pass writes (SPEC §6, shaders/cull.comp): one list per level
+// of detail; the draw of LOD k reads from uVisibleOffset = k · blade slots, and entry i is the
+// index of the i-th surviving blade of that LOD in the blade buffer.
+uniform uint uVisibleOffset;
+
+uint visibleBlade(int drawIndex) {
+    return texelFetch(uVisibleTexels, int(uVisibleOffset) + drawIndex).r;
+}
+
+// Per-blade lighting inputs baked when the scene is built (core/scene/blade_shading.h,
+// SPEC §10): the Gaussian-blurred terrain normal and the grass AO from neighbour density, and
+// the blade's water (young = wet). One entry per blade slot, same order as the blade buffer.
+struct BladeShading {
+    vec4 blurredNormalAo;  // xyz blurred terrain normal, w AO (1 = open)
+    vec4 waterAge;         // x water, y age, z wilt (growth colour)
+};
+
+BladeShading fetchShading(uint index) {
+    int first = 2 * int(index);
+    return BladeShading(texelFetch(uShadingTexels, first), texelFetch(uShadingTexels, first + 1));
+}
+
+// Snow on the tips (SPEC §11): the whiteness of each drawn blade's tip, written by the cull pass.
+float fetchTipSnow(uint index) {
+    return texelFetch(uTipSnowTexels, int(index)).r;
+}
+#endif
