@@ -15,6 +15,20 @@ namespace grass::core {
 // LOD_COUNT in shaders/include/lod.glsl: LOD k draws max(segments >> k, 1) segments.
 inline constexpr int LOD_COUNT = 3;
 
+// How many LODs, from the nearest, are lit per pixel; the rest are lit per vertex
+// (shaders/blade.frag, GRASS_LIGHT_PER_VERTEX). On a GPU the near blades keep per-pixel light
+// and the blades beyond the LOD distance, a few pixels wide, are lit per vertex. On a software
+// rasterizer every blade is lit per vertex: there per-pixel shading was the dearest stage of the
+// grass pass (projects/nature at 4× MSAA: 2.73 s per pixel, 1.63 s with the far LODs per vertex,
+// 0.64 s with all), and the pictures differ by less than the golden tolerance (no pixel of
+// projects/nature beyond 48 levels, mean 0.07; docs/rendering.md).
+inline constexpr int DEFAULT_PIXEL_LIT_LODS = 1;
+inline constexpr int SOFTWARE_PIXEL_LIT_LODS = 0;
+
+inline int defaultPixelLitLods(bool softwareRenderer) {
+    return softwareRenderer ? SOFTWARE_PIXEL_LIT_LODS : DEFAULT_PIXEL_LIT_LODS;
+}
+
 inline int lodSegments(int fullSegments, int lod) {
     return std::max(fullSegments >> lod, 1);
 }

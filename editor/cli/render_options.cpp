@@ -50,6 +50,10 @@ void describeImageOptions(ArgParser& parser, RenderArgs& args) {
     parser.flag("--light-per-vertex",
                 "light blades per vertex (as the article does) instead of per pixel",
                 &args.lightPerVertex);
+    parser.flag("--light-per-pixel",
+                "light every blade per pixel; by default the blades beyond the LOD distance "
+                "(half or quarter segments, a few pixels wide) are lit per vertex",
+                &args.lightPerPixel);
     parser.flag("--snow",
                 "snow on (SPEC §11) with the project's snow settings (their defaults when the "
                 "project has none); --stats adds the snow pass time",
@@ -132,6 +136,8 @@ Result<void> checkInput(const RenderArgs& args) {
         return makeError(args.unit != "m" ? "--unit" : "--up",
                          "applies to --mesh only (a project says its mesh's unit and up axis in "
                          "project.json: /mesh/unit, /mesh/up)");
+    if (args.lightPerVertex && args.lightPerPixel)
+        return makeError("--light-per-pixel", "cannot be given with --light-per-vertex: choose one");
     if (const auto unit = core::parseMeshUnit(args.unit); !unit)
         return makeError("--unit", unit.error().message);
     if (const auto up = core::parseUpAxis(args.up); !up)
@@ -163,6 +169,8 @@ void applyRenderOverrides(const RenderArgs& args, render::RenderOptions& options
     }
     options.timeS = static_cast<float>(args.timeS);
     options.lightPerVertex = args.lightPerVertex;
+    if (args.lightPerPixel)
+        options.pixelLitLods = core::LOD_COUNT;
     if (args.snow)
         options.snow.enabled = 1u;
     if (args.technique != "project")

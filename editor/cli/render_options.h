@@ -28,6 +28,7 @@ struct RenderArgs {
     std::uint64_t seed = 0;
     bool glDebug = gl::GL_DEBUG_BY_DEFAULT;
     bool lightPerVertex = false;
+    bool lightPerPixel = false;
     bool snow = false;
     // Given on the command line: they override the project's, which they default to.
     bool seedGiven = false, lodDistanceGiven = false;

@@ -116,11 +116,13 @@ void FieldGpu::bindForDraw() const {
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands.id());
 }
 
-void FieldGpu::drawStrips(const gl::Program& program, int segments) const {
+void FieldGpu::drawStrips(const BladePrograms& programs, int segments) const {
     if (mBladeCount == 0)
         return;
     bindForDraw();
     for (int lod = 0; lod < LOD_COUNT; ++lod) {
+        const gl::Program& program = *programs[lod];
+        program.use();
         program.set("uVisibleOffset", static_cast<unsigned>(lod * mBladeCount));
         program.set("uSegments", lodSegments(segments, lod));
         glDrawArraysIndirect(GL_TRIANGLE_STRIP,
@@ -128,12 +130,14 @@ void FieldGpu::drawStrips(const gl::Program& program, int segments) const {
     }
 }
 
-void FieldGpu::drawTessellated(const gl::Program& program) const {
+void FieldGpu::drawTessellated(const BladePrograms& programs) const {
     if (mBladeCount == 0)
         return;
     bindForDraw();
     glPatchParameteri(GL_PATCH_VERTICES, 1);
     for (int lod = 0; lod < LOD_COUNT; ++lod) {
+        const gl::Program& program = *programs[lod];
+        program.use();
         program.set("uVisibleOffset", static_cast<unsigned>(lod * mBladeCount));
         glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(core::patchCommandOffset(lod)));
     }

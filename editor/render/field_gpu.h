@@ -28,6 +28,10 @@ using core::stripVertexCount;
 
 enum class GeometryPath { Tessellation, Strips };
 
+// The program each level of detail is drawn with (near blades lit per pixel, far ones per
+// vertex: RenderOptions::pixelLitLods); consecutive LODs may share one.
+using BladePrograms = std::array<const gl::Program*, LOD_COUNT>;
+
 
 // SSBO bindings of shaders/cull.comp; the draw stages read the same buffers as buffer textures
 // (core::BLADE_TEXELS_UNIT and the units after it, shaders/include/blade_texels.glsl).
@@ -67,8 +71,8 @@ public:
 
     // Binds the blade and visible buffers and issues one indirect draw per LOD; the caller has
     // bound `program` and run the cull pass. Sets uVisibleOffset (and, for strips, uSegments).
-    void drawStrips(const gl::Program& program, int segments) const;
-    void drawTessellated(const gl::Program& program) const;
+    void drawStrips(const BladePrograms& programs, int segments) const;
+    void drawTessellated(const BladePrograms& programs) const;
 
 private:
     void bindForDraw() const;

@@ -21,8 +21,12 @@ struct RenderOptions {
     // Grass lighting (SPEC §10); model Simple draws the foundation's wrapped Lambert.
     core::GrassLightingDesc lighting;
     // Light the blades per vertex (the article's choice) instead of per pixel (docs/rendering.md
-    // compares cost and look).
+    // compares cost and look): every level of detail when lightPerVertex, else the LODs from
+    // pixelLitLods on. -1: as the renderer suits (core::defaultPixelLitLods: on a GPU the
+    // half- and quarter-segment blades beyond lodDistanceM, on software GL every blade);
+    // LOD_COUNT lights every blade per pixel.
     bool lightPerVertex = false;
+    int pixelLitLods = -1;
     glm::vec3 skyColor{0.55f, 0.70f, 0.90f};
     glm::vec3 groundColor{0.30f, 0.24f, 0.16f};
     // Per-blade culling (SPEC §6); all tests off draws every blade.

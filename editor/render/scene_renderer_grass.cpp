@@ -73,36 +73,46 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
 
     mGrassTimer.begin();
     const bool tessellate = options.geometry == GeometryPath::Tessellation;
-    const gl::Program& program = bladeProgram(tessellate, options.lightPerVertex);
-    program.use();
-    program.set("uViewProj", viewProj);
+    // Each LOD's program: lit per pixel up to options.pixelLitLods, per vertex beyond.
+    const int pixelLitLods = options.pixelLitLods >= 0 ? options.pixelLitLods
+                                                       : core::defaultPixelLitLods(mSoftwareGl);
+    BladePrograms programs{};
+    for (int lod = 0; lod < LOD_COUNT; ++lod)
+        programs[lod] =
+            &bladeProgram(tessellate, options.lightPerVertex || lod >= pixelLitLods);
+    const auto setAll = [&programs](const char* name, const auto& value) {
+        for (int lod = 0; lod < LOD_COUNT; ++lod)
+            if (lod == 0 || programs[lod] != programs[lod - 1])
+                programs[lod]->set(name, value);
+    };
+    setAll("uViewProj", viewProj);
     // Pixels that a length of 1 at view depth 1 covers, for the width correction (SPEC §7).
-    program.set("uPixelScale", options.widthCorrection
-                                   ? projection[1][1] * 0.5f * static_cast<float>(height)
-                                   : 0.0f);
-    program.set("uTessLevel", static_cast<float>(std::max(options.tessLevel, 1)));
-    program.set("uWidthScale", options.widthScale);
-    program.set("uCameraPosition", camera.position());
-    program.set("uLodDistance", std::max(options.cull.lodDistanceM, 0.0f));
-    program.set("uFadeOut", hybrid ? options.billboards.crossFadeM : glm::vec2(0.0f));
-    program.set("uAlbedoView", options.albedoView ? 1 : 0);
-    program.set("uSnowTips", mSnowLies ? 1 : 0);
-    program.set("uSnowTipColor", options.snow.snowColor);
+    setAll("uPixelScale", options.widthCorrection
+                              ? projection[1][1] * 0.5f * static_cast<float>(height)
+                              : 0.0f);
+    setAll("uTessLevel", static_cast<float>(std::max(options.tessLevel, 1)));
+    setAll("uWidthScale", options.widthScale);
+    setAll("uCameraPosition", camera.position());
+    setAll("uLodDistance", std::max(options.cull.lodDistanceM, 0.0f));
+    setAll("uFadeOut", hybrid ? options.billboards.crossFadeM : glm::vec2(0.0f));
+    setAll("uAlbedoView", options.albedoView ? 1 : 0);
+    setAll("uSnowTips", mSnowLies ? 1 : 0);
+    setAll("uSnowTipColor", options.snow.snowColor);
     if (hybrid)
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     mBladesDrawn = 0;
     for (auto& field : mFields) {
-        program.set("uRootColor", field.field().rootColor);
-        program.set("uTipColor", field.field().tipColor);
-        program.set("uPoorRootColor", field.field().poorRootColor);
-        program.set("uPoorTipColor", field.field().poorTipColor);
+        setAll("uRootColor", field.field().rootColor);
+        setAll("uTipColor", field.field().tipColor);
+        setAll("uPoorRootColor", field.field().poorRootColor);
+        setAll("uPoorTipColor", field.field().poorTipColor);
         const core::BladeShape shape = options.shape.value_or(field.field().shape);
-        program.set("uShape", static_cast<int>(shape));
-        program.set("uTipStart", field.field().tipStart);
+        setAll("uShape", static_cast<int>(shape));
+        setAll("uTipStart", field.field().tipStart);
         if (tessellate)
-            field.drawTessellated(program);
+            field.drawTessellated(programs);
         else
-            field.drawStrips(program, segments);
+            field.drawStrips(programs, segments);
         mBladesDrawn += field.field().liveBlades;
     }
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);

@@ -46,7 +46,9 @@ struct MeshGpu {
 
 struct Field::State {
     ExportData data;
-    GlProgram cull, strips, tess, mesh, physics;
+    GlProgram cull, mesh, physics;
+    // [lit per vertex]: LODs from core::defaultPixelLitLods on use [1], as the editor does.
+    GlProgram strips[2], tess[2];
     std::vector<LayerGpu> layers;
     std::vector<MeshGpu> meshes;
     GlBuffer lighting, counters;
@@ -109,18 +111,28 @@ bool Field::load(ExportData data, std::string& error) {
     auto state = std::make_unique<State>();
     state->data = std::move(data);
     State& s = *state;
-    const auto program = [&](GlProgram& out, std::vector<std::pair<GLenum, std::string>> stages) {
+    const auto program = [&](GlProgram& out, std::vector<std::pair<GLenum, std::string>> stages,
+                             std::vector<std::string> defines = {}) {
         if (!error.empty())
             return;
-        out = GlProgram(stages, {}, error);
+        out = GlProgram(stages, defines, error);
     };
     program(s.cull, {{GL_COMPUTE_SHADER, "cull.comp"}});
     program(s.physics, {{GL_COMPUTE_SHADER, "physics.comp"}});
-    program(s.strips, {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}});
-    program(s.tess, {{GL_VERTEX_SHADER, "blade_tess.vert"},
-                     {GL_TESS_CONTROL_SHADER, "blade.tesc"},
-                     {GL_TESS_EVALUATION_SHADER, "blade.tese"},
-                     {GL_FRAGMENT_SHADER, "blade.frag"}});
+    for (const bool perVertex : {false, true}) {
+        std::vector<std::string> defines;
+        if (perVertex)
+            defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
+        program(s.strips[perVertex],
+                {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}},
+                defines);
+        program(s.tess[perVertex],
+                {{GL_VERTEX_SHADER, "blade_tess.vert"},
+                 {GL_TESS_CONTROL_SHADER, "blade.tesc"},
+                 {GL_TESS_EVALUATION_SHADER, "blade.tese"},
+                 {GL_FRAGMENT_SHADER, "blade.frag"}},
+                defines);
+    }
     program(s.mesh, {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}});
     if (!error.empty())
         return false;
@@ -316,17 +328,21 @@ void Field::draw(const View& view) {
 
     // The blades (SPEC §7, §10), one indirect draw per LOD and layer.
     const bool tessellate = s.geometry == GeometryPath::Tessellation;
-    const GlProgram& program = tessellate ? s.tess : s.strips;
-    program.use();
-    program.set("uViewProj", viewProj);
-    program.set("uPixelScale", view.projection[1][1] * 0.5f * static_cast<float>(view.height));
-    program.set("uTessLevel", static_cast<float>(std::max(render.tessLevel, 1)));
-    program.set("uWidthScale", 1.0f);
-    program.set("uCameraPosition", view.cameraPosition);
-    program.set("uLodDistance", std::max(render.lodDistanceM, 0.0f));
-    program.set("uFadeOut", glm::vec2(0.0f));
-    program.set("uAlbedoView", 0);
-    program.set("uSnowTips", 0);
+    const GlProgram* programs = tessellate ? s.tess : s.strips;
+    for (int perVertex = 0; perVertex < 2; ++perVertex) {
+        const GlProgram& program = programs[perVertex];
+        program.set("uViewProj", viewProj);
+        program.set("uPixelScale",
+                    view.projection[1][1] * 0.5f * static_cast<float>(view.height));
+        program.set("uTessLevel", static_cast<float>(std::max(render.tessLevel, 1)));
+        program.set("uWidthScale", 1.0f);
+        program.set("uCameraPosition", view.cameraPosition);
+        program.set("uLodDistance", std::max(render.lodDistanceM, 0.0f));
+        program.set("uFadeOut", glm::vec2(0.0f));
+        program.set("uAlbedoView", 0);
+        program.set("uSnowTips", 0);
+    }
+    const int pixelLitLods = core::defaultPixelLitLods(isSoftwareRenderer());
     const GLboolean cullFace = glIsEnabled(GL_CULL_FACE);
     glDisable(GL_CULL_FACE);  // blades are two-sided
     glBindVertexArray(s.emptyVertexArray);
@@ -337,17 +353,22 @@ void Field::draw(const View& view) {
         const LayerData& data = s.data.layers[i];
         if (layer.slots == 0)
             continue;
-        program.set("uRootColor", data.rootColor);
-        program.set("uTipColor", data.tipColor);
-        program.set("uPoorRootColor", data.poorRootColor);
-        program.set("uPoorTipColor", data.poorTipColor);
-        program.set("uShape", data.shape);
-        program.set("uTipStart", data.tipStart);
+        for (int perVertex = 0; perVertex < 2; ++perVertex) {
+            const GlProgram& program = programs[perVertex];
+            program.set("uRootColor", data.rootColor);
+            program.set("uTipColor", data.tipColor);
+            program.set("uPoorRootColor", data.poorRootColor);
+            program.set("uPoorTipColor", data.poorTipColor);
+            program.set("uShape", data.shape);
+            program.set("uTipStart", data.tipStart);
+        }
         layer.bladeTexels.bind(core::BLADE_TEXELS_UNIT);
         layer.visibleTexels.bind(core::VISIBLE_TEXELS_UNIT);
         layer.shadingTexels.bind(core::SHADING_TEXELS_UNIT);
         glBindBuffer(GL_DRAW_INDIRECT_BUFFER, layer.commands.id());
         for (int lod = 0; lod < LOD_COUNT; ++lod) {
+            const GlProgram& program = programs[lod >= pixelLitLods ? 1 : 0];
+            program.use();
             program.set("uVisibleOffset", unsigned(std::size_t(lod) * layer.slots));
             const std::size_t offset =
                 tessellate ? core::patchCommandOffset(lod) : core::stripCommandOffset(lod);

@@ -18,3 +18,11 @@ grass_cli_test(render_cull_unknown_test ERROR "--cull" --also "orientation, frus
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --cull orientation,sideways)
 grass_cli_test(render_stats_folder_missing ERROR "no-such-folder"
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --stats ${GRASS_CLI_TMP}/no-such-folder/s.json)
+# Lighting per pixel everywhere (the far LODs are lit per vertex by default) renders; asking for
+# both extremes at once is refused naming the option.
+grass_cli_test(render_light_per_pixel GL OK
+    --stdout "^wrote .*light-per-pixel.png"
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_TMP}/light-per-pixel.png
+       --width 64 --height 48 --frames 1 --light-per-pixel)
+grass_cli_test(render_light_per_pixel_and_vertex ERROR "--light-per-pixel" --also "--light-per-vertex"
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --light-per-pixel --light-per-vertex)

@@ -44,6 +44,8 @@ struct GoldenCase {
     core::LightingModel lighting = core::LightingModel::Grass;
     core::GrassTechnique technique = core::GrassTechnique::Blades;
     bool lightPerVertex = false;
+    int pixelLitLods = -1;  // as the renderer suits
+    float lodDistanceM = 8.0f;  // the default: every blade of the 1.1 m view at LOD 0
 };
 
 std::vector<GoldenCase> goldenCases() {
@@ -96,6 +98,8 @@ gl::Rgba8Image renderCase(const GoldenCase& golden) {
     request.options.sun.direction = glm::vec3(0.55f, -0.35f, 0.65f);
     request.options.technique = golden.technique;
     request.options.lightPerVertex = golden.lightPerVertex;
+    request.options.pixelLitLods = golden.pixelLitLods;
+    request.options.cull.lodDistanceM = golden.lodDistanceM;
     // The hybrid's cross-fade runs through the middle of the field, so both halves show.
     request.options.billboards.crossFadeM = {0.9f, 1.3f};
     auto result = render::renderOffscreen(goldenScene(), camera, request);
@@ -166,6 +170,27 @@ TEST_F(GoldenTest, RegressionIsCaught) {
     }
 }
 
+// A GPU's default lights the blades beyond the LOD distance per vertex (core::
+// DEFAULT_PIXEL_LIT_LODS). Here the LOD distance is pulled in to 0.45 m so that most of the field
+// is drawn at half and quarter segments, far coarser on screen than such blades are at their
+// real distance: even so the image stays within the golden tolerances of the same field lit per
+// pixel throughout, and differs from it at all (the far LODs do take the per-vertex program).
+TEST_F(GoldenTest, FarBladesLitPerVertexLookLikeEveryBladeLitPerPixel) {
+    GoldenCase byDefault{"far-lods-per-vertex"};
+    byDefault.pixelLitLods = core::DEFAULT_PIXEL_LIT_LODS;
+    byDefault.lodDistanceM = 0.45f;
+    GoldenCase perPixel = byDefault;
+    perPixel.pixelLitLods = core::LOD_COUNT;
+    const ImageDifference diff =
+        compareImages(renderCase(perPixel).pixels, renderCase(byDefault).pixels, PIXEL_THRESHOLD);
+    std::printf("[ golden ] far LODs per vertex vs all per pixel: differing %.4f, mean abs %.3f, "
+                "max %d\n",
+                diff.differingShare, diff.meanAbs, diff.maxChannel);
+    EXPECT_LE(diff.differingShare, MAX_DIFFERING_SHARE);
+    EXPECT_LE(diff.meanAbs, MAX_MEAN_ABS);
+    EXPECT_GT(diff.maxChannel, 0);
+}
+
 }  // namespace
 }  // namespace grass::test
 
@@ -177,7 +202,10 @@ namespace {
 // pixel. They must look alike (mean difference under 2 levels: only specular peaks between
 // vertices move) yet not be the same image (else the switch would do nothing).
 TEST_F(GoldenTest, PerVertexLightingLooksLikePerPixel) {
+    // Per vertex is software GL's default (core::SOFTWARE_PIXEL_LIT_LODS), so every golden case
+    // drawn here meets its per-pixel reference through this path.
     GoldenCase perPixel{"per-pixel"};
+    perPixel.pixelLitLods = core::LOD_COUNT;
     GoldenCase perVertex{"per-vertex"};
     perVertex.lightPerVertex = true;
     const ImageDifference diff =
