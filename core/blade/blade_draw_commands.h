@@ -16,17 +16,18 @@ namespace grass::core {
 inline constexpr int LOD_COUNT = 3;
 
 // How many LODs, from the nearest, are lit per pixel; the rest are lit per vertex
-// (shaders/blade.frag, GRASS_LIGHT_PER_VERTEX). On a GPU the near blades keep per-pixel light
-// and the blades beyond the LOD distance, a few pixels wide, are lit per vertex. On a software
-// rasterizer every blade is lit per vertex: there per-pixel shading was the dearest stage of the
-// grass pass (projects/nature at 4× MSAA: 2.73 s per pixel, 1.63 s with the far LODs per vertex,
-// 0.64 s with all), and the pictures differ by less than the golden tolerance (no pixel of
-// projects/nature beyond 48 levels, mean 0.07; docs/rendering.md).
+// (shaders/blade.frag, GRASS_LIGHT_PER_VERTEX). By default the near blades keep per-pixel light
+// and the blades beyond the LOD distance, a few pixels wide, are lit per vertex. A software
+// rasterizer drawing multisampled lights every blade per vertex: there per-pixel shading of the
+// samples was the dearest stage of the grass pass (projects/nature at 8× MSAA: 2.73 s per pixel,
+// 1.63 s with the far LODs per vertex, 0.64 s with all), and the pictures differ by less than the
+// golden tolerance (no pixel of projects/nature beyond 48 levels, mean 0.07; docs/rendering.md).
+// Without multisampling the vertex work, on one thread there, costs more than the pixels
+// (every blade of projects/nature in full: 1.09 s per pixel, 1.72 s per vertex).
 inline constexpr int DEFAULT_PIXEL_LIT_LODS = 1;
-inline constexpr int SOFTWARE_PIXEL_LIT_LODS = 0;
 
-inline int defaultPixelLitLods(bool softwareRenderer) {
-    return softwareRenderer ? SOFTWARE_PIXEL_LIT_LODS : DEFAULT_PIXEL_LIT_LODS;
+inline int defaultPixelLitLods(bool softwareRenderer, int samplesPerPixel) {
+    return softwareRenderer && samplesPerPixel > 1 ? 0 : DEFAULT_PIXEL_LIT_LODS;
 }
 
 inline int lodSegments(int fullSegments, int lod) {

@@ -27,13 +27,16 @@ struct BenchCase {
 // editor-meadow: the editor as a user meets it (issue 24), orbiting, painting and playing the
 // meadow at wall-clock time in its window.
 // nature-100k-all: nature-100k with every blade drawn in full, the measure of a blade's cost.
-inline constexpr std::array<BenchCase, 8> BENCH_CASES = {{
+// nature-10m (issue 29, scale): nature at 10 million blades; only when named in --cases (a few
+// minutes and ~10 GB on llvmpipe).
+inline constexpr std::array<BenchCase, 9> BENCH_CASES = {{
     {"nature-100k", "projects/nature", 1e5, false},
     {"nature-100k-all", "projects/nature", 1e5, false, true},
     {"helicopter-100k", "projects/helicopter", 1e5, false},
     {"winter-100k", "projects/winter", 1e5, false},
     {"nature-1m", "projects/nature", 1e6, false},
     {"helicopter-1m", "projects/helicopter", 1e6, false},
+    {"nature-10m", "projects/nature", 1e7, false},
     {"tiny", "tests/data/projects/tiny", 0.0, false},
     {"editor-meadow", "projects/meadow", 0.0, true},
 }};

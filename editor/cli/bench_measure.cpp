@@ -17,6 +17,7 @@
 #include "scene/scene_physics.h"
 #include "tools/median.h"
 #include "tools/ms_since.h"
+#include "tools/process_memory.h"
 #include "tools/ui_cost.h"
 #include "ui/font.h"
 
@@ -40,6 +41,7 @@ struct GrownCase {
     core::LoadedProject loaded;
     core::Scene scene;
     core::OrbitCamera camera;
+    double buildS = 0.0;  // buildSceneFromMesh, seconds
 };
 
 // Scales the project to about targetBlades: every layer's uniform density is multiplied by
@@ -86,14 +88,18 @@ Result<GrownCase> growCase(const BenchCase& c, const CaseContext& ctx) {
     if (c.targetBlades > 0.0)
         if (auto scaled = scaleToTarget(c, *loaded, *mesh); !scaled)
             return scaled.error();
+    const auto buildStart = Clock::now();
     auto scene = core::buildSceneFromMesh(*loaded, std::move(*mesh), std::move(notes));
     if (!scene)
         return scene.error();
+    const double buildS = msSince(buildStart) / 1000.0;
+    std::fprintf(stderr, "%s: %zu blades built in %.2f s\n", ctx.progress.c_str(),
+                 scene->totalBlades(), buildS);
     printNotes(scene->notes);
     auto camera = render::projectCamera(loaded->project, "");
     if (!camera)
         return makeError(projectPath.string(), camera.error().message);
-    return GrownCase{std::move(*loaded), std::move(*scene), *camera};
+    return GrownCase{std::move(*loaded), std::move(*scene), *camera, buildS};
 }
 
 // A timer of a pass the frame did not run can read a stale value (docs/rendering.md: an empty
@@ -255,6 +261,8 @@ Result<BenchCaseResult> measureCase(const BenchCase& c, const CaseContext& ctx) 
     const tools::UiCost ui =
         tools::measureUi(ctx.fonts, grown->loaded, grown->scene, options, *last);
     result.uiMs = ui.ms;
+    result.buildS = grown->buildS;
+    result.peakRssMb = static_cast<double>(tools::peakResidentBytes()) / (1024.0 * 1024.0);
     std::fprintf(stderr, "%s: editor panels, %d frames of %zu shapes, %zu vertices\n",
                  ctx.progress.c_str(), tools::UI_FRAMES, ui.shapes, ui.vertices);
     return result;

@@ -12,7 +12,8 @@
 namespace grass::cli {
 
 inline constexpr std::string_view DEFAULT_BENCH_CASES =
-    "nature-100k,helicopter-100k,winter-100k,nature-1m,helicopter-1m,editor-meadow";
+    "nature-100k,nature-100k-all,helicopter-100k,winter-100k,nature-1m,helicopter-1m,"
+    "editor-meadow";
 
 struct BenchArgs {
     std::string cases{DEFAULT_BENCH_CASES}, out, compare, results, root = GRASS_SOURCE_DIR;

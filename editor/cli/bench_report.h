@@ -46,6 +46,11 @@ struct BenchCaseResult {
     double cpuPhysicsMsPerStep = 0.0;
     double cpuBladeStepsPerS = 0.0;
     double uiMs = 0.0;  // median CPU time to build and tessellate the editor's panels
+    // Issue 29 (scale); 0 in runs saved before: the scene build (growth, patches, shading bake)
+    // in seconds, and the process's peak resident memory in MB after the case (the peak of the
+    // run so far: a case run alone gives its own).
+    double buildS = 0.0;
+    double peakRssMb = 0.0;
     std::optional<EditorFigures> editor;  // the editor case only
 };
 

@@ -1,16 +1,14 @@
 #include "cli/soak_run.h"
 
-#include <malloc.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <optional>
 
 #include "physics/path_loop.h"
 #include "render/scene_physics_gpu.h"
+#include "tools/process_memory.h"
 
 namespace grass::cli {
 
@@ -40,23 +38,6 @@ void printSample(std::FILE* out, const char* label, const SoakSample& sample, do
 
 }  // namespace
 
-std::uint64_t residentBytes() {
-    std::ifstream statm("/proc/self/statm");
-    std::uint64_t sizePages = 0, residentPages = 0;
-    if (!(statm >> sizePages >> residentPages))
-        return 0;
-    const long pageBytes = sysconf(_SC_PAGESIZE);
-    return residentPages * static_cast<std::uint64_t>(pageBytes > 0 ? pageBytes : 4096);
-}
-
-std::uint64_t heapInUseBytes() {
-#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
-    const struct mallinfo2 info = mallinfo2();
-    return static_cast<std::uint64_t>(info.uordblks) + static_cast<std::uint64_t>(info.hblkhd);
-#else
-    return 0;
-#endif
-}
 
 Result<SoakRun> soakSimulation(core::Scene& scene, core::SceneSimulation& simulation,
                                SimBackend backend, const SoakOptions& options,
@@ -89,8 +70,8 @@ Result<SoakRun> soakSimulation(core::Scene& scene, core::SceneSimulation& simula
         s.simulatedS = static_cast<double>(s.steps) * static_cast<double>(dtS);
         s.wallS = secondsSince(start);
         s.health = simulation.health();
-        s.rssBytes = residentBytes();
-        s.heapInUseBytes = heapInUseBytes();
+        s.rssBytes = tools::residentBytes();
+        s.heapInUseBytes = tools::heapInUseBytes();
         s.glObjects = gl::liveGlObjects();
         run.samples.push_back(s);
         printSample(progress, options.label, s, static_cast<double>(totalSteps) * dtS);

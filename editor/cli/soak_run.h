@@ -43,11 +43,6 @@ struct SoakRun {
     double wallS = 0.0;
 };
 
-// The resident set size of this process (/proc/self/statm), 0 where it cannot be read.
-std::uint64_t residentBytes();
-// What malloc has handed out and not had back (glibc's mallinfo2), 0 where unknown.
-std::uint64_t heapInUseBytes();
-
 // Steps `simulation` (whose scene is `scene`) on `backend` for options.seconds, keeping every path
 // of its physics looping, with one progress line per sample on `progress`. The GPU backend needs a
 // current GL context; its objects are made and destroyed inside.

@@ -22,8 +22,8 @@ struct RenderOptions {
     core::GrassLightingDesc lighting;
     // Light the blades per vertex (the article's choice) instead of per pixel (docs/rendering.md
     // compares cost and look): every level of detail when lightPerVertex, else the LODs from
-    // pixelLitLods on. -1: as the renderer suits (core::defaultPixelLitLods: on a GPU the
-    // half- and quarter-segment blades beyond lodDistanceM, on software GL every blade);
+    // pixelLitLods on. -1: as the renderer suits (core::defaultPixelLitLods: the half- and
+    // quarter-segment blades beyond lodDistanceM; every blade on software GL with MSAA);
     // LOD_COUNT lights every blade per pixel.
     bool lightPerVertex = false;
     int pixelLitLods = -1;

@@ -74,8 +74,11 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     mGrassTimer.begin();
     const bool tessellate = options.geometry == GeometryPath::Tessellation;
     // Each LOD's program: lit per pixel up to options.pixelLitLods, per vertex beyond.
-    const int pixelLitLods = options.pixelLitLods >= 0 ? options.pixelLitLods
-                                                       : core::defaultPixelLitLods(mSoftwareGl);
+    GLint samples = 0;  // of the framebuffer the frame draws into
+    glGetIntegerv(GL_SAMPLES, &samples);
+    const int pixelLitLods = options.pixelLitLods >= 0
+                                 ? options.pixelLitLods
+                                 : core::defaultPixelLitLods(mSoftwareGl, samples);
     BladePrograms programs{};
     for (int lod = 0; lod < LOD_COUNT; ++lod)
         programs[lod] =

@@ -342,7 +342,9 @@ void Field::draw(const View& view) {
         program.set("uAlbedoView", 0);
         program.set("uSnowTips", 0);
     }
-    const int pixelLitLods = core::defaultPixelLitLods(isSoftwareRenderer());
+    GLint samples = 0;  // of the host's framebuffer
+    glGetIntegerv(GL_SAMPLES, &samples);
+    const int pixelLitLods = core::defaultPixelLitLods(isSoftwareRenderer(), samples);
     const GLboolean cullFace = glIsEnabled(GL_CULL_FACE);
     glDisable(GL_CULL_FACE);  // blades are two-sided
     glBindVertexArray(s.emptyVertexArray);

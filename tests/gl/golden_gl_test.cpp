@@ -202,8 +202,8 @@ namespace {
 // pixel. They must look alike (mean difference under 2 levels: only specular peaks between
 // vertices move) yet not be the same image (else the switch would do nothing).
 TEST_F(GoldenTest, PerVertexLightingLooksLikePerPixel) {
-    // Per vertex is software GL's default (core::SOFTWARE_PIXEL_LIT_LODS), so every golden case
-    // drawn here meets its per-pixel reference through this path.
+    // Per vertex is software GL's default with MSAA (core::defaultPixelLitLods), so every golden
+    // case drawn here (4× MSAA) meets its per-pixel reference through this path.
     GoldenCase perPixel{"per-pixel"};
     perPixel.pixelLitLods = core::LOD_COUNT;
     GoldenCase perVertex{"per-vertex"};
