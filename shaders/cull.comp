@@ -46,6 +46,8 @@ uniform vec3 uCameraPosition;
 uniform float uProj22;
 uniform float uProj32;
 uniform uint uBladeCount;
+// Fields beyond 65535 work groups take several dispatches; each starts at this blade slot.
+uniform uint uFirstBlade;
 uniform uint uPatchSize;
 uniform int uTestPatch;
 uniform int uTestOrientation;
@@ -172,7 +174,7 @@ uint classify(uint index) {
 }
 
 void main() {
-    uint index = gl_GlobalInvocationID.x;
+    uint index = uFirstBlade + gl_GlobalInvocationID.x;
     if (gl_LocalInvocationIndex < COUNTED_RESULTS)
         sCounts[gl_LocalInvocationIndex] = 0u;
     if (gl_LocalInvocationIndex < uint(LOD_COUNT))

@@ -1,5 +1,6 @@
 #include "render/cull_pass.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -11,6 +12,9 @@ namespace grass::render {
 namespace {
 constexpr std::uint32_t COUNTER_BINDING = 7;
 constexpr std::uint32_t WORK_GROUP_SIZE = 32;  // local_size_x of shaders/cull.comp
+// GL guarantees at least 65535 work groups per dimension; larger fields take several dispatches
+// (a 10M-blade layer has 312,500 groups).
+constexpr std::size_t MAX_GROUPS = 65535;
 constexpr std::size_t COUNTER_COUNT = 8;
 }  // namespace
 
@@ -93,14 +97,21 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
         field.bindForCull();
         program.set("uBladeCount", static_cast<unsigned>(field.bladeCount()));
         program.set("uPatchSize", std::max(field.patchSize(), 1u));
-        const auto groups = static_cast<std::uint32_t>((field.bladeCount() + WORK_GROUP_SIZE - 1) /
-                                                       WORK_GROUP_SIZE);
-        glDispatchCompute(groups, 1, 1);
+        for (std::size_t first = 0; first < field.bladeCount();
+             first += WORK_GROUP_SIZE * MAX_GROUPS) {
+            const std::size_t count =
+                std::min(field.bladeCount() - first, WORK_GROUP_SIZE * MAX_GROUPS);
+            program.set("uFirstBlade", static_cast<unsigned>(first));
+            glDispatchCompute(
+                static_cast<std::uint32_t>((count + WORK_GROUP_SIZE - 1) / WORK_GROUP_SIZE), 1, 1);
+        }
     }
     glBindTextureUnit(0, 0);
-    // The draws read the commands (indirect) and the visible lists (SSBO) the dispatch wrote.
+    // The draws read the commands (indirect) and the visible lists and tip snow (texel fetches)
+    // the dispatch wrote.
     // Statistics are read with glGetNamedBufferSubData: that needs the buffer-update bit.
-    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                    GL_SHADER_STORAGE_BARRIER_BIT |
                     (settings.collectStats ? GL_BUFFER_UPDATE_BARRIER_BIT : 0u));
 }
 

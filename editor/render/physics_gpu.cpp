@@ -116,8 +116,10 @@ void PhysicsGpu::step(gl::BufferRef bladeBuffer, std::size_t bladeCount,
         mProgram.set("firstBlade", static_cast<unsigned>(first));
         glDispatchCompute(static_cast<std::uint32_t>((count + LOCAL_SIZE - 1) / LOCAL_SIZE), 1, 1);
     }
-    // Blades feed the draws (SSBO reads) and read-backs; η feeds the next step.
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    // Blades feed the cull (SSBO reads), the draws (texel fetches) and read-backs; η feeds the
+    // next step.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 std::vector<std::string> PhysicsGpu::allocated() const {

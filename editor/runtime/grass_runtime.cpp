@@ -77,7 +77,8 @@ struct Field::State {
             const ColliderData& collider = data.colliders[i];
             for (std::size_t s = collider.firstSphere;
                  s < collider.firstSphere + collider.sphereCount; ++s) {
-                spheres[s].centre = *colliderOverride[i] + (data.spheres[s].centre - collider.origin);
+                spheres[s].centre =
+                    *colliderOverride[i] + (data.spheres[s].centre - collider.origin);
                 spheres[s].path.clear();
             }
         }
@@ -96,9 +97,9 @@ View exportCameraView(const ExportData& data, int width, int height) {
     view.height = std::max(height, 1);
     view.cameraPosition = data.camera.position;
     view.view = glm::lookAt(data.camera.position, data.camera.target, glm::vec3(0.0f, 1.0f, 0.0f));
-    view.projection = glm::perspective(glm::radians(data.camera.fovYDeg),
-                                       float(view.width) / float(view.height), data.camera.nearM,
-                                       data.camera.farM);
+    view.projection =
+        glm::perspective(glm::radians(data.camera.fovYDeg), float(view.width) / float(view.height),
+                         data.camera.nearM, data.camera.farM);
     return view;
 }
 
@@ -152,7 +153,8 @@ bool Field::load(ExportData data, std::string& error) {
         gpu.blades = GlBuffer::of(layer.blades);
         gpu.shading = GlBuffer::of(layer.shading);
         gpu.patchBounds = GlBuffer::of(layer.patchBounds);
-        gpu.visible = GlBuffer::of(std::vector<std::uint32_t>(LOD_COUNT * std::max<std::size_t>(gpu.slots, 1), 0u));
+        gpu.visible = GlBuffer::of(
+            std::vector<std::uint32_t>(LOD_COUNT * std::max<std::size_t>(gpu.slots, 1), 0u));
         const Commands commands = core::emptyBladeDrawCommands(1);
         gpu.commands = GlBuffer(std::as_bytes(std::span(commands)));
         gpu.bladeTexels = GlTexelView(gpu.blades, GL_RGBA32F);
@@ -178,7 +180,8 @@ bool Field::load(ExportData data, std::string& error) {
         const GLuint offsets[] = {0, 3 * sizeof(float), 6 * sizeof(float)};
         for (GLuint a = 0; a < 3; ++a) {
             glEnableVertexArrayAttrib(mesh.vertexArray, a);
-            glVertexArrayAttribFormat(mesh.vertexArray, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+            glVertexArrayAttribFormat(mesh.vertexArray, a, sizes[a], GL_FLOAT, GL_FALSE,
+                                      offsets[a]);
             glVertexArrayAttribBinding(mesh.vertexArray, a, 0);
         }
         s.meshes.push_back(std::move(mesh));
@@ -276,7 +279,9 @@ void Field::step() {
                 glDispatchCompute(GLuint((count + WORK_GROUP - 1) / WORK_GROUP), 1, 1);
             }
         }
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        // The cull reads the blades as an SSBO, the draws through texel views.
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+                        GL_TEXTURE_FETCH_BARRIER_BIT);
         glUseProgram(0);
     }
     ++s.steps;
@@ -322,9 +327,15 @@ void Field::draw(const View& view) {
         layer.commands.bindStorage(COMMANDS);
         cull.set("uBladeCount", unsigned(layer.slots));
         cull.set("uPatchSize", std::max(s.data.layers[i].patchSize, 1u));
-        glDispatchCompute(GLuint((layer.slots + WORK_GROUP - 1) / WORK_GROUP), 1, 1);
+        for (std::size_t first = 0; first < layer.slots; first += WORK_GROUP * MAX_GROUPS) {
+            const std::size_t count = std::min(layer.slots - first, WORK_GROUP * MAX_GROUPS);
+            cull.set("uFirstBlade", unsigned(first));
+            glDispatchCompute(GLuint((count + WORK_GROUP - 1) / WORK_GROUP), 1, 1);
+        }
     }
-    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    // The draws read the commands (indirect) and the visible lists (texel views).
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                    GL_SHADER_STORAGE_BARRIER_BIT);
 
     // The blades (SPEC §7, §10), one indirect draw per LOD and layer.
     const bool tessellate = s.geometry == GeometryPath::Tessellation;
@@ -332,8 +343,7 @@ void Field::draw(const View& view) {
     for (int perVertex = 0; perVertex < 2; ++perVertex) {
         const GlProgram& program = programs[perVertex];
         program.set("uViewProj", viewProj);
-        program.set("uPixelScale",
-                    view.projection[1][1] * 0.5f * static_cast<float>(view.height));
+        program.set("uPixelScale", view.projection[1][1] * 0.5f * static_cast<float>(view.height));
         program.set("uTessLevel", static_cast<float>(std::max(render.tessLevel, 1)));
         program.set("uWidthScale", 1.0f);
         program.set("uCameraPosition", view.cameraPosition);
