@@ -19,8 +19,8 @@ inline constexpr int LOD_COUNT = 3;
 // (shaders/blade.frag, GRASS_LIGHT_PER_VERTEX). By default the near blades keep per-pixel light
 // and the blades beyond the LOD distance, a few pixels wide, are lit per vertex. A software
 // rasterizer drawing multisampled lights every blade per vertex: there per-pixel shading of the
-// samples was the dearest stage of the grass pass (projects/nature at 8× MSAA: 2.73 s per pixel,
-// 1.63 s with the far LODs per vertex, 0.64 s with all), and the pictures differ by less than the
+// samples was the dearest stage of the grass pass (projects/nature at 4× MSAA on llvmpipe, one
+// run: grass pass 1.28 s per pixel, 0.62 s per vertex), and the pictures differ by less than the
 // golden tolerance (no pixel of projects/nature beyond 48 levels, mean 0.07; docs/rendering.md).
 // Without multisampling the vertex work, on one thread there, costs more than the pixels
 // (every blade of projects/nature in full: 1.09 s per pixel, 1.72 s per vertex).
