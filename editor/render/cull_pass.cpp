@@ -6,15 +6,13 @@
 
 #include "gl/scoped_framebuffer.h"
 #include "util/assert.h"
+#include "util/dispatch_chunks.h"
 
 namespace grass::render {
 
 namespace {
 constexpr std::uint32_t COUNTER_BINDING = 7;
 constexpr std::uint32_t WORK_GROUP_SIZE = 32;  // local_size_x of shaders/cull.comp
-// GL guarantees at least 65535 work groups per dimension; larger fields take several dispatches
-// (a 10M-blade layer has 312,500 groups).
-constexpr std::size_t MAX_GROUPS = 65535;
 constexpr std::size_t COUNTER_COUNT = 8;
 }  // namespace
 
@@ -97,14 +95,11 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
         field.bindForCull();
         program.set("uBladeCount", static_cast<unsigned>(field.bladeCount()));
         program.set("uPatchSize", std::max(field.patchSize(), 1u));
-        for (std::size_t first = 0; first < field.bladeCount();
-             first += WORK_GROUP_SIZE * MAX_GROUPS) {
-            const std::size_t count =
-                std::min(field.bladeCount() - first, WORK_GROUP_SIZE * MAX_GROUPS);
-            program.set("uFirstBlade", static_cast<unsigned>(first));
-            glDispatchCompute(
-                static_cast<std::uint32_t>((count + WORK_GROUP_SIZE - 1) / WORK_GROUP_SIZE), 1, 1);
-        }
+        core::forEachDispatchChunk(field.bladeCount(), WORK_GROUP_SIZE,
+                                   [&](std::size_t first, std::uint32_t groups) {
+                                       program.set("uFirstBlade", static_cast<unsigned>(first));
+                                       glDispatchCompute(groups, 1, 1);
+                                   });
     }
     glBindTextureUnit(0, 0);
     // The draws read the commands (indirect) and the visible lists and tip snow (texel fetches)

@@ -4,13 +4,12 @@
 #include <cstring>
 
 #include "util/assert.h"
+#include "util/dispatch_chunks.h"
 
 namespace grass::render {
 namespace {
 
-// GL guarantees at least 65535 work groups per dimension; larger fields take several dispatches.
-constexpr std::size_t LOCAL_SIZE = 32;
-constexpr std::size_t MAX_GROUPS = 65535;
+constexpr std::size_t LOCAL_SIZE = 32;  // local_size_x of shaders/physics.comp
 
 // Immutable storage cannot grow: a new buffer when the size changes, else an update in place.
 template <class T>
@@ -72,8 +71,7 @@ void PhysicsGpu::step(gl::BufferRef bladeBuffer, std::size_t bladeCount,
                       const std::vector<core::SphereCollider>& colliders, float timeS,
                       float gravityLoadScale) {
     GRASS_ASSERT(bladeCount == mBladeCount);
-    const core::PhysicsStepInputs inputs =
-        core::physicsStepInputs(params, wind, colliders, timeS);
+    const core::PhysicsStepInputs inputs = core::physicsStepInputs(params, wind, colliders, timeS);
     const std::uint32_t n = inputs.substepCount;
     if (bladeCount == 0 || n == 0)
         return;
@@ -111,11 +109,11 @@ void PhysicsGpu::step(gl::BufferRef bladeBuffer, std::size_t bladeCount,
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, mColliderGroups.id());
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, mSubsteps.id());
-    for (std::size_t first = 0; first < bladeCount; first += LOCAL_SIZE * MAX_GROUPS) {
-        const std::size_t count = std::min(bladeCount - first, LOCAL_SIZE * MAX_GROUPS);
-        mProgram.set("firstBlade", static_cast<unsigned>(first));
-        glDispatchCompute(static_cast<std::uint32_t>((count + LOCAL_SIZE - 1) / LOCAL_SIZE), 1, 1);
-    }
+    core::forEachDispatchChunk(bladeCount, LOCAL_SIZE,
+                               [&](std::size_t first, std::uint32_t groups) {
+                                   mProgram.set("firstBlade", static_cast<unsigned>(first));
+                                   glDispatchCompute(groups, 1, 1);
+                               });
     // Blades feed the cull (SSBO reads), the draws (texel fetches) and read-backs; η feeds the
     // next step.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |

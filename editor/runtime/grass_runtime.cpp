@@ -8,6 +8,7 @@
 #include "blade/blade_draw_commands.h"
 #include "physics/physics_step_inputs.h"
 #include "runtime/runtime_gl.h"
+#include "util/dispatch_chunks.h"
 #include "util/software_renderer.h"
 
 namespace grass::runtime {
@@ -20,7 +21,6 @@ constexpr GLuint BLADES = 0, PATCH_BOUNDS = 1, VISIBLE = 5, COMMANDS = 6, COUNTE
 constexpr GLuint PHYSICS_PARAMS = 1, ETA = 2, REST_TIPS = 3, WIND_SOURCES = 4, WIND_CENTRES = 5,
                  COLLIDERS = 6, SUBSTEPS = 7, COLLIDER_GROUPS = 8;
 constexpr GLuint WORK_GROUP = 32;  // local_size_x of cull.comp and physics.comp
-constexpr std::size_t MAX_GROUPS = 65535;
 constexpr int MAX_STEPS_PER_UPDATE = 8;
 
 using core::LOD_COUNT;
@@ -55,6 +55,7 @@ struct Field::State {
     GlBuffer params, substeps, windSources, windCentres, colliders, colliderGroups;
     GLuint emptyVertexArray = 0;
     GeometryPath geometry = GeometryPath::Strips;
+    bool softwareGl = false;  // the context's renderer, read once at load
     std::vector<std::optional<glm::vec3>> colliderOverride;
     std::uint64_t steps = 0;
     float timeS = 0.0f;
@@ -139,9 +140,10 @@ bool Field::load(ExportData data, std::string& error) {
         return false;
 
     const std::string& geometry = s.data.render.geometry;
+    s.softwareGl = isSoftwareRenderer();
     s.geometry = geometry == "tessellation" ? GeometryPath::Tessellation
                  : geometry == "strips"     ? GeometryPath::Strips
-                 : isSoftwareRenderer()     ? GeometryPath::Strips
+                 : s.softwareGl             ? GeometryPath::Strips
                                             : GeometryPath::Tessellation;
     s.lighting = GlBuffer(std::as_bytes(std::span(&s.data.lighting, 1)));
     s.counters = GlBuffer::of(std::vector<std::uint32_t>(8, 0u));
@@ -273,11 +275,11 @@ void Field::step() {
             layer.eta.bindStorage(ETA);
             layer.restTips.bindStorage(REST_TIPS);
             s.physics.set("bladeCount", unsigned(layer.slots));
-            for (std::size_t first = 0; first < layer.slots; first += WORK_GROUP * MAX_GROUPS) {
-                const std::size_t count = std::min(layer.slots - first, WORK_GROUP * MAX_GROUPS);
-                s.physics.set("firstBlade", unsigned(first));
-                glDispatchCompute(GLuint((count + WORK_GROUP - 1) / WORK_GROUP), 1, 1);
-            }
+            core::forEachDispatchChunk(layer.slots, WORK_GROUP,
+                                       [&](std::size_t first, std::uint32_t groups) {
+                                           s.physics.set("firstBlade", unsigned(first));
+                                           glDispatchCompute(groups, 1, 1);
+                                       });
         }
         // The cull reads the blades as an SSBO, the draws through texel views.
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
@@ -327,11 +329,11 @@ void Field::draw(const View& view) {
         layer.commands.bindStorage(COMMANDS);
         cull.set("uBladeCount", unsigned(layer.slots));
         cull.set("uPatchSize", std::max(s.data.layers[i].patchSize, 1u));
-        for (std::size_t first = 0; first < layer.slots; first += WORK_GROUP * MAX_GROUPS) {
-            const std::size_t count = std::min(layer.slots - first, WORK_GROUP * MAX_GROUPS);
-            cull.set("uFirstBlade", unsigned(first));
-            glDispatchCompute(GLuint((count + WORK_GROUP - 1) / WORK_GROUP), 1, 1);
-        }
+        core::forEachDispatchChunk(layer.slots, WORK_GROUP,
+                                   [&](std::size_t first, std::uint32_t groups) {
+                                       cull.set("uFirstBlade", unsigned(first));
+                                       glDispatchCompute(groups, 1, 1);
+                                   });
     }
     // The draws read the commands (indirect) and the visible lists (texel views).
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
@@ -354,7 +356,7 @@ void Field::draw(const View& view) {
     }
     GLint samples = 0;  // of the host's framebuffer
     glGetIntegerv(GL_SAMPLES, &samples);
-    const int pixelLitLods = core::defaultPixelLitLods(isSoftwareRenderer(), samples);
+    const int pixelLitLods = core::defaultPixelLitLods(s.softwareGl, samples);
     const GLboolean cullFace = glIsEnabled(GL_CULL_FACE);
     glDisable(GL_CULL_FACE);  // blades are two-sided
     glBindVertexArray(s.emptyVertexArray);
