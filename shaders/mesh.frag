@@ -23,7 +23,7 @@ uniform bool uHasBaseTexture;
 uniform bool uAlbedoView;
 // The editor's map overlay (SceneRenderer::setMapOverlay): the map being painted, 0 purple to 1
 // yellow, over the terrain's colour, so the artist sees what the brush writes.
-layout(binding = 6) uniform sampler2D uMapOverlay;
+layout(binding = 7) uniform sampler2D uMapOverlay;  // MAP_OVERLAY_UNIT, not the snow map's 6
 uniform bool uHasMapOverlay;
 
 out vec4 fragColor;

@@ -7,11 +7,13 @@
 #include <filesystem>
 #include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "gl/gl_handle.h"
+#include "util/assert.h"
 #include "util/result.h"
 
 namespace grass::gl {
@@ -59,5 +61,18 @@ private:
     GLint location(const char* name) const { return glGetUniformLocation(mHandle.id(), name); }
     ProgramHandle mHandle;
 };
+
+// The program in `slot`, made by `load()` (a Result<Program>) the first time it is asked for:
+// variants a frame may never need cost nothing until one does. The shaders ship with the
+// program, so a load failure here is a bug, not an input error.
+template <class Load>
+const Program& loadOnFirstUse(Program& slot, Load&& load) {
+    if (slot.id() == 0) {
+        auto loaded = load();
+        GRASS_ASSERT(loaded.ok());
+        slot = std::move(*loaded);
+    }
+    return slot;
+}
 
 }  // namespace grass::gl

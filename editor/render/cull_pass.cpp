@@ -28,13 +28,10 @@ Result<CullPass> CullPass::create() {
 }
 
 const gl::Program& CullPass::snowProgram() {
-    if (mSnowProgram.id() == 0) {
-        auto program = gl::Program::load({{GL_COMPUTE_SHADER, "cull.comp"}}, "blade cull (snow)",
-                                         {"GRASS_SNOW"});
-        GRASS_ASSERT(program.ok());  // the shader ships with the program; a failure is a bug
-        mSnowProgram = std::move(*program);
-    }
-    return mSnowProgram;
+    return gl::loadOnFirstUse(mSnowProgram, [] {
+        return gl::Program::load({{GL_COMPUTE_SHADER, "cull.comp"}}, "blade cull (snow)",
+                                 {"GRASS_SNOW"});
+    });
 }
 
 // Occlusion depth: a depth-only pre-pass of the opaque scene into a single-sample depth

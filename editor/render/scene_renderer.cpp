@@ -62,21 +62,16 @@ Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightP
 }
 
 const gl::Program& SceneRenderer::bladeProgram(bool tessellate, bool lightPerVertex) {
-    gl::Program& program = mBladePrograms[tessellate][lightPerVertex];
-    if (program.id() == 0) {
-        auto loaded = loadBladeProgram(tessellate, lightPerVertex);
-        GRASS_ASSERT(loaded.ok());  // the shaders ship with the program; a failure is a bug
-        program = std::move(*loaded);
-    }
-    return program;
+    return gl::loadOnFirstUse(mBladePrograms[tessellate][lightPerVertex], [&] {
+        return loadBladeProgram(tessellate, lightPerVertex);
+    });
 }
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene) {
     std::unique_ptr<SceneRenderer> renderer(new SceneRenderer());
     renderer->mScene = &scene;
     renderer->mSoftwareGl = gl::isSoftwareRenderer();
-    auto mesh = gl::Program::load(
-        {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}}, "mesh");
+    auto mesh = loadOpaqueProgram(false, false);
     if (!mesh)
         return mesh.error();
     for (const bool tessellate : {false, true})
@@ -93,7 +88,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
         return cull.error();
     renderer->mCull = std::make_unique<CullPass>(std::move(*cull));
     renderer->mFieldAo = meanFieldAo(scene);
-    renderer->mMeshProgram = std::move(*mesh);
+    renderer->mOpaquePrograms[0][0] = std::move(*mesh);
     renderer->mMesh = std::make_unique<MeshGpu>(scene.mesh);
     if (const Rgba8Pixels& image = scene.look.baseTexture; !image.pixels.empty())
         renderer->mSurfaceTexture = uploadSurfaceTexture(image, scene.look);
@@ -189,7 +184,7 @@ FrameTimings SceneRenderer::lastTimings() const {
     timings.passes = mPasses;
     if (mSnow)
         timings.allocated.push_back("snow_map");
-    if (mSnowMeshProgram.id() != 0)
+    if (mOpaquePrograms[1][0].id() != 0 || mOpaquePrograms[1][1].id() != 0)
         timings.allocated.push_back("snow_programs");
     if (std::any_of(mFields.begin(), mFields.end(),
                     [](const FieldGpu& field) { return field.hasTipSnow(); }))

@@ -32,8 +32,11 @@ namespace grass::render {
 
 // The texture unit of a glTF surface's base colour (mesh.frag's uBaseTexture binding).
 inline constexpr std::uint32_t SURFACE_TEXTURE_UNIT = 5;
-// The texture unit of the editor's map overlay (mesh.frag's uMapOverlay binding).
-inline constexpr std::uint32_t MAP_OVERLAY_UNIT = 6;
+// The texture unit of the editor's map overlay (mesh.frag's uMapOverlay binding). Not the snow
+// map's: the snow surface's program samples both while the artist paints under snow.
+inline constexpr std::uint32_t MAP_OVERLAY_UNIT = 7;
+static_assert(MAP_OVERLAY_UNIT != SNOW_MAP_UNIT && SURFACE_TEXTURE_UNIT != SNOW_MAP_UNIT &&
+              MAP_OVERLAY_UNIT != SURFACE_TEXTURE_UNIT);
 
 class SceneRenderer {
 public:
@@ -69,19 +72,22 @@ private:
     const core::Scene* mScene = nullptr;
     // The frame's lighting, uploaded once at the start of render().
     gl::UniformBlock<LightingBlock> mLighting{"lighting"};
-    gl::Program mMeshProgram, mStemSetProgram;
+    gl::Program mStemSetProgram;
+    // The opaque surfaces' programs, [snow lies][depth only]: lit (the opaque pass) or depth
+    // alone (the cull's pre-pass); all but the plain lit one load on first use.
+    gl::Program mOpaquePrograms[2][2];
+    static Result<gl::Program> loadOpaqueProgram(bool snow, bool depthOnly);
+    const gl::Program& opaqueProgram(bool snow, bool depthOnly);
     // [tessellated][lit per vertex]; the per-vertex variants load on first use.
     gl::Program mBladePrograms[2][2];
     static Result<gl::Program> loadBladeProgram(bool tessellate, bool lightPerVertex);
     const gl::Program& bladeProgram(bool tessellate, bool lightPerVertex);
-    gl::Program mSnowMeshProgram;  // compiled on the first frame with snow
-    const gl::Program& snowMeshProgram();
     // The passes of render(), in order (scene_renderer_opaque.cpp, scene_renderer_grass.cpp).
     void runSnowPass(const RenderOptions& options, int width, int height);
     void drawOpaquePass(const glm::mat4& viewProj, const RenderOptions& options);
     void drawGrass(const core::OrbitCamera& camera, const glm::mat4& projection, int width,
                    int height, const RenderOptions& options);
-    void drawOpaque(const RenderOptions& options, bool shaded);
+    void drawOpaque(const gl::Program& program, const RenderOptions& options, bool shaded);
     void drawBlades(const core::OrbitCamera& camera, const glm::mat4& projection, int width,
                     int height, const RenderOptions& options);
     void drawBillboards(const core::OrbitCamera& camera, const glm::mat4& viewProj,

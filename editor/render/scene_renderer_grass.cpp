@@ -61,9 +61,11 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
         for (FieldGpu& field : mFields)
             field.enableTipSnow();
     cull.snow = mSnowLies;
-    mCull->run(mFields, cullView, cull, [this, &options] {
-        (mSnowLies ? snowMeshProgram() : mMeshProgram).use();
-        drawOpaque(options, false);
+    mCull->run(mFields, cullView, cull, [this, &options, &viewProj] {
+        const gl::Program& depthOnly = opaqueProgram(mSnowLies, true);
+        depthOnly.use();
+        depthOnly.set("uViewProj", viewProj);
+        drawOpaque(depthOnly, options, false);
     });
     mCullTimer.end();
     if (cull.occlusion)

@@ -25,22 +25,25 @@ void SceneRenderer::runSnowPass(const RenderOptions& options, int width, int hei
         mPasses.push_back("snow_depth");
         // The surfaces whiten and rise; the cull buries short blades and whitens the tips.
         mSnow->bind(options.snow, snowAmountM);
-        const gl::Program& snowMesh = snowMeshProgram();
-        snowMesh.set("uSnowCoverageView", options.snowCoverageView ? 1 : 0);
-        snowMesh.set("uViewportPixels", glm::vec2(float(width), float(height)));
-        snowMesh.set("uSnowTessPixels", std::max(options.snowTessPixels, 1.0f));
-        snowMesh.set("uSnowTessMax", float(std::clamp(options.snowTessMax, 1, 64)));
+        opaqueProgram(true, false).set("uSnowCoverageView", options.snowCoverageView ? 1 : 0);
+        // The lit surface and the cull's depth pre-pass cut the snow surface alike.
+        for (const bool depthOnly : {false, true}) {
+            const gl::Program& snowMesh = opaqueProgram(true, depthOnly);
+            snowMesh.set("uViewportPixels", glm::vec2(float(width), float(height)));
+            snowMesh.set("uSnowTessPixels", std::max(options.snowTessPixels, 1.0f));
+            snowMesh.set("uSnowTessMax", float(std::clamp(options.snowTessMax, 1, 64)));
+        }
     }
     mSnowTimer.end();
 }
 
 void SceneRenderer::drawOpaquePass(const glm::mat4& viewProj, const RenderOptions& options) {
     mMeshTimer.begin();
-    const gl::Program& opaque = mSnowLies ? snowMeshProgram() : mMeshProgram;
+    const gl::Program& opaque = opaqueProgram(mSnowLies, false);
     opaque.use();
     opaque.set("uViewProj", viewProj);
     opaque.set("uAlbedoView", options.albedoView ? 1 : 0);
-    drawOpaque(options, true);
+    drawOpaque(opaque, options, true);
     mPasses.push_back(mSnowLies ? "opaque_snow" : "opaque");
     mMeshTimer.end();
 }
@@ -64,26 +67,33 @@ void SceneRenderer::renderSnowMap(const RenderOptions& options) {
     });
 }
 
-// The program of the snow surface (tessellated, displaced, whitened), compiled on the first
-// frame with snow.
-const gl::Program& SceneRenderer::snowMeshProgram() {
-    if (mSnowMeshProgram.id() == 0) {
-        auto program = gl::Program::load({{GL_VERTEX_SHADER, "mesh_snow.vert"},
-                                          {GL_TESS_CONTROL_SHADER, "mesh_snow.tesc"},
-                                          {GL_TESS_EVALUATION_SHADER, "mesh_snow.tese"},
-                                          {GL_FRAGMENT_SHADER, "mesh.frag"}},
-                                         "mesh under snow", {"GRASS_SNOW"});
-        GRASS_ASSERT(program.ok());  // the shaders ship with the program; a failure is a bug
-        mSnowMeshProgram = std::move(*program);
-    }
-    return mSnowMeshProgram;
+// Under snow the surfaces are tessellated and displaced (mesh_snow.*) and whitened (mesh.frag
+// with GRASS_SNOW); the depth-only variants shade nothing.
+Result<gl::Program> SceneRenderer::loadOpaqueProgram(bool snow, bool depthOnly) {
+    const char* fragment = depthOnly ? "depth_only.frag" : "mesh.frag";
+    std::string label = snow ? "mesh under snow" : "mesh";
+    if (depthOnly)
+        label += " (depth only)";
+    if (!snow)
+        return gl::Program::load(
+            {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, fragment}}, label);
+    return gl::Program::load({{GL_VERTEX_SHADER, "mesh_snow.vert"},
+                              {GL_TESS_CONTROL_SHADER, "mesh_snow.tesc"},
+                              {GL_TESS_EVALUATION_SHADER, "mesh_snow.tese"},
+                              {GL_FRAGMENT_SHADER, fragment}},
+                             label, {"GRASS_SNOW"});
 }
 
-// The terrain, then each prop where its path puts it at options.timeS, with the opaque program
-// of this frame (bound by the caller). `shaded` sets the albedo (the cull's depth pre-pass
-// needs none).
-void SceneRenderer::drawOpaque(const RenderOptions& options, bool shaded) {
-    const gl::Program& program = mSnowLies ? snowMeshProgram() : mMeshProgram;
+const gl::Program& SceneRenderer::opaqueProgram(bool snow, bool depthOnly) {
+    return gl::loadOnFirstUse(mOpaquePrograms[snow][depthOnly],
+                              [&] { return loadOpaqueProgram(snow, depthOnly); });
+}
+
+// The terrain, then each prop where its path puts it at options.timeS, with `program` (bound by
+// the caller, an opaqueProgram of this frame's snow). `shaded` sets the albedo (the cull's depth
+// pre-pass needs none).
+void SceneRenderer::drawOpaque(const gl::Program& program, const RenderOptions& options,
+                               bool shaded) {
     const auto draw = [this](const MeshGpu& mesh) { mSnowLies ? mesh.drawPatches() : mesh.draw(); };
     program.set("uModel", glm::mat4(1.0f));
     const bool textured = shaded && mSurfaceTexture.id() != 0;

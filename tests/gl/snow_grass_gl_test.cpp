@@ -10,6 +10,7 @@
 
 #include "gl/framebuffer.h"
 #include "gl_context_fixture.h"
+#include "maps/map_image.h"
 #include "scene/scene.h"
 #include "render/scene_renderer.h"
 #include "snow/snow.h"
@@ -142,6 +143,30 @@ TEST_F(SnowGrassGlTest, BuriedBladesAreCulledAndSnowOffRestoresTheCount) {
     const Frame restored = renderFrame(renderer, options);
     EXPECT_EQ(restored.cull.drawn, bare.cull.drawn);
     EXPECT_EQ(restored.cull.culledSnow, 0u);
+}
+
+// The editor shows the map being painted over the surface while snow lies. The overlay once
+// shared the snow map's texture unit: the opaque pass bound it there and the cull read the
+// painted map as the snow's depth, burying nothing. The overlay now changes no blade's fate.
+TEST_F(SnowGrassGlTest, APaintOverlayLeavesTheSnowBurialAlone) {
+    const core::LoadedProject loaded = shortAndTallBlades(300.0f);
+    const auto drawn = drawnField(loaded);
+    ASSERT_NE(drawn, nullptr);
+    render::SceneRenderer& renderer = *drawn->renderer;
+    render::RenderOptions& options = drawn->options;
+    options.snow.enabled = 1u;
+    options.snow.amountM = 0.25f;
+    options.snow.mapResolution = 512;
+    const Frame plain = renderFrame(renderer, options);
+    ASSERT_GT(plain.cull.culledSnow, plain.cull.bladesIn / 10);
+
+    core::MapImage painted;
+    painted.width = painted.height = 8;
+    painted.texels.assign(64, 0.0f);  // read as depth: the sky's own height, nothing sheltered
+    renderer.setMapOverlay(&painted);
+    const Frame overlaid = renderFrame(renderer, options);
+    EXPECT_EQ(overlaid.cull.culledSnow, plain.cull.culledSnow);
+    EXPECT_EQ(overlaid.tipSnow, plain.tipSnow);
 }
 
 TEST_F(SnowGrassGlTest, ExposedTipsWhitenAndShelteredTipsDoNot) {
