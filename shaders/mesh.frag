@@ -13,6 +13,9 @@ uniform bool uSnowCoverageView;
 in vec3 vNormal;
 in vec2 vUv;
 in vec3 vPosWorld;
+#ifdef GRASS_SNOW
+in float vSnowNoise;  // snowNoiseAt(vPosWorld) at the vertices (mesh_snow.tese)
+#endif
 
 uniform vec3 uAlbedo;
 // A glTF surface's own base-colour texture (core/scene/surface_look.h), sRGB decoded by the
@@ -40,11 +43,11 @@ void main() {
     }
 #ifdef GRASS_SNOW
     if (uSnowCoverageView) {
-        fragColor = vec4(snowCoverageTerms(vPosWorld, vNormal), 1.0);
+        fragColor = vec4(snowCoverageTerms(vPosWorld, vNormal, vSnowNoise), 1.0);
         return;
     }
     // Snow settles on the side that faces the sky, whichever side the camera sees.
-    albedo = snowShade(vPosWorld, vNormal, albedo);
+    albedo = snowShade(vPosWorld, vNormal, vSnowNoise, albedo);
 #endif
     fragColor = vec4(uAlbedoView ? albedo : simpleLighting(albedo, normal, 0.2), 1.0);
 }

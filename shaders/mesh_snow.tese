@@ -2,7 +2,9 @@
 // The snow surface (paper eq. 5): each tessellated point rises along the interpolated normal by
 // As·Fe·Zn, Fe taken over the boundary falloff (snow.glsl), so the snow swells into drifts and
 // fades smoothly at the edge of sheltered ground. The fragment shader (mesh.frag) shades the
-// ground position under the snow, where the exposure was measured.
+// ground position under the snow, where the exposure was measured, with the snow's noise of the
+// vertex (smooth across a triangle of a few pixels; the fragment stage would repeat its four
+// octaves of hashed Perlin noise for every pixel).
 layout(triangles, equal_spacing, ccw) in;
 #include "snow.glsl"
 
@@ -15,6 +17,7 @@ uniform mat4 uViewProj;
 out vec3 vNormal;
 out vec2 vUv;
 out vec3 vPosWorld;
+out float vSnowNoise;
 
 void main() {
     vec3 b = gl_TessCoord;
@@ -23,5 +26,6 @@ void main() {
     vNormal = normal;
     vUv = b.x * teUv[0] + b.y * teUv[1] + b.z * teUv[2];
     vPosWorld = posWorld;
-    gl_Position = uViewProj * vec4(posWorld + snowDisplacement(posWorld, normal), 1.0);
+    vSnowNoise = snowNoiseAt(posWorld);
+    gl_Position = uViewProj * vec4(posWorld + snowDisplacement(posWorld, normal, vSnowNoise), 1.0);
 }

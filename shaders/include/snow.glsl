@@ -152,12 +152,16 @@ float snowBoundaryExposure(vec3 posWorld, vec3 normal) {
                       exposureCoefficient(posWorld, normal, uSnowSamples, uSnowBoundaryRadiusTexels));
 }
 
-// Vn = V + As·Fe·Zn·N (paper eq. 5), Zn = 0.5 + 0.5·noise ≥ 0.
-vec3 snowDisplacement(vec3 posWorld, vec3 normal) {
+// Vn = V + As·Fe·Zn·N (paper eq. 5), Zn = 0.5 + 0.5·noise ≥ 0, `noise` = snowNoiseAt(posWorld).
+vec3 snowDisplacement(vec3 posWorld, vec3 normal, float noise) {
     if (!snowLies())
         return vec3(0.0);
-    float Zn = 0.5 + 0.5 * snowNoiseAt(posWorld);
+    float Zn = 0.5 + 0.5 * noise;
     return uSnowAmountM * snowBoundaryExposure(posWorld, normal) * Zn * normalize(normal);
+}
+
+vec3 snowDisplacement(vec3 posWorld, vec3 normal) {
+    return snowDisplacement(posWorld, normal, snowNoiseAt(posWorld));
 }
 
 // Local snow depth in metres, As·Fe·Zn with the boundary's Fe (core::snowDepthAt).
@@ -173,20 +177,22 @@ float bladeTipSnow(float tipFe) {
     return snowLies() ? clamp(tipFe, 0.0, 1.0) : 0.0;
 }
 
-// (Fp, Fe, Fi) at a surface point: Fp = Fe·Fi (paper eq. 3); zero where no snow lies.
-vec3 snowCoverageTerms(vec3 posWorld, vec3 normal) {
+// (Fp, Fe, Fi) at a surface point: Fp = Fe·Fi (paper eq. 3); zero where no snow lies. `noise`
+// is snowNoiseAt(posWorld), or its value interpolated from the tessellated surface's vertices:
+// the noise is smooth at the scale of a few pixels (projects/winter: Fp moves by at most 3/255,
+// by 0.0002 on average, docs/snow.md), the exposure's shelter edge is not and stays per pixel.
+vec3 snowCoverageTerms(vec3 posWorld, vec3 normal, float noise) {
     if (!snowLies())
         return vec3(0.0);
-    float noise = snowNoiseAt(posWorld);
     float Fi = inclineCoefficient(normal, uSnowUp, noise, uSnowInclineNoise);
     float Fe = exposureCoefficient(posWorld, normal, uSnowSamples, uSnowRadiusTexels);
     return vec3(Fe * Fi, Fe, Fi);
 }
 
 // C = Fp·Cs + (1 − Fp)·Cn (paper eq. 3).
-vec3 snowShade(vec3 posWorld, vec3 normal, vec3 Cn) {
+vec3 snowShade(vec3 posWorld, vec3 normal, float noise, vec3 Cn) {
     if (!snowLies())
         return Cn;
-    float Fp = snowCoverageTerms(posWorld, normal).x;
+    float Fp = snowCoverageTerms(posWorld, normal, noise).x;
     return Fp * uSnowColor + (1.0 - Fp) * Cn;
 }
