@@ -1,7 +1,9 @@
 #version 450 core
 // Tessellation control (Jahrmann §6): the level along the blade (v) follows the camera distance
 // with the same LOD steps the strips use (lod.glsl); across it (u) two segments put a vertex
-// column on the midrib for the V fold of SPEC §7. Padding blades (h = 0) get level 0: discarded.
+// column on the midrib for the V fold of SPEC §7; beyond FOLDED_LODS one segment, which tells the
+// evaluation shader to draw the blade flat, as the strips draw it by its edges alone. Padding
+// blades (h = 0) get level 0: discarded.
 #include "blade_texels.glsl"
 #include "lod.glsl"
 
@@ -21,10 +23,11 @@ void main() {
     int lod = bladeLod(distance(blade.v0Theta.xyz, uCameraPosition), uLodDistance);
     float level = blade.v1H.w > 0.0 ? float(lodSegments(int(uTessLevel), lod)) : 0.0;
     // Quads domain: outer 0 and 2 are the u = 0 and u = 1 edges (along v), 1 and 3 along u.
+    float across = lodFolded(lod) ? 2.0 : 1.0;
     gl_TessLevelOuter[0] = level;
-    gl_TessLevelOuter[1] = 2.0;
+    gl_TessLevelOuter[1] = across;
     gl_TessLevelOuter[2] = level;
-    gl_TessLevelOuter[3] = 2.0;
-    gl_TessLevelInner[0] = 2.0;
+    gl_TessLevelOuter[3] = across;
+    gl_TessLevelInner[0] = across;
     gl_TessLevelInner[1] = level;
 }

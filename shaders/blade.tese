@@ -26,8 +26,12 @@ void main() {
     Blade blade = fetchBlade(uint(tcBladeIndex[0]));
     blade.v2W.w *= uWidthScale;
     // The level along v (outer 0) places the vertices at v = i/level, as the strips' segments do.
-    BladeShapeParams shape =
-        BladeShapeParams(uShape, uTipStart, gl_TessLevelOuter[0], uViewProj, uPixelScale);
+    // Across, the control shader sets 1 for a blade without its fold; GL rounds the inner level
+    // up to 2 all the same (an inner level of 1 next to outer levels above 1 counts as 1 + ε),
+    // so the midrib column exists and the blade is flattened here instead.
+    bool folded = gl_TessLevelOuter[1] > 1.5;
+    BladeShapeParams shape = BladeShapeParams(uShape, uTipStart, gl_TessLevelOuter[0], uViewProj,
+                                              uPixelScale, folded);
     BladeSurfacePoint point = bladeSurface(blade, gl_TessCoord.x, gl_TessCoord.y, shape);
     vPosition = point.position;
     vNormal = point.normal;

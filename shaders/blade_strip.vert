@@ -1,17 +1,21 @@
 #version 450 core
-// Instanced-strip path (SPEC §7): one instance per blade of this draw's level of detail, a
-// triangle strip of 4·(uSegments + 1) vertices: the left half (u = 0, ½) from root to tip, then
-// the right half (u = 1, ½) from tip to root, so the midrib is a vertex column and the V fold
-// shows. The turn at the tip adds two zero-area triangles (all three tip points lie on one
-// line). The curve is evaluated here; instances are read through the visible list.
+// Instanced-strip path (SPEC §7): one instance per blade of this draw's level of detail. Up to
+// FOLDED_LODS (lod.glsl) a triangle strip of 4·(uSegments + 1) vertices: the left half (u = 0,
+// ½) from root to tip, then the right half (u = 1, ½) from tip to root, so the midrib is a
+// vertex column and the V fold shows; the turn at the tip adds two zero-area triangles (all
+// three tip points lie on one line). Beyond, 2·(uSegments + 1) vertices of the two edges (u = 0,
+// 1) from root to tip: the outline alone. The curve is evaluated here; instances are read
+// through the visible list.
 // GRASS_LIGHT_PER_VERTEX (a program variant, not a uniform: llvmpipe runs both sides of a
 // uniform branch, and the unused per-vertex lighting cost 0.67 s of the 1.7 s that every blade
 // of projects/nature drawn in full took) lights each vertex and hands the colour on.
 #include "blade_geometry.glsl"
 #include "blade_shade.glsl"
+#include "lod.glsl"
 
 uniform mat4 uViewProj;
 uniform int uSegments;
+uniform int uLod;  // this draw's level of detail
 uniform int uShape;
 uniform float uTipStart;
 uniform float uPixelScale;  // projection[1][1] · viewport height / 2; 0: no width correction
@@ -33,7 +37,12 @@ void main() {
     int halfVertices = 2 * (uSegments + 1);
     int row;
     float u;
-    if (gl_VertexID < halfVertices) {
+    bool folded = lodFolded(uLod);
+    if (!folded) {
+        // Same winding as the folded halves: (row, u = 0), (row, u = 1), (row + 1, u = 0), …
+        row = gl_VertexID >> 1;
+        u = float(gl_VertexID & 1);
+    } else if (gl_VertexID < halfVertices) {
         row = gl_VertexID >> 1;
         u = (gl_VertexID & 1) != 0 ? 0.5 : 0.0;
     } else {
@@ -44,7 +53,7 @@ void main() {
     }
     float v = float(row) / float(uSegments);
     BladeShapeParams shape =
-        BladeShapeParams(uShape, uTipStart, float(uSegments), uViewProj, uPixelScale);
+        BladeShapeParams(uShape, uTipStart, float(uSegments), uViewProj, uPixelScale, folded);
     BladeSurfacePoint point = bladeSurface(blade, u, v, shape);
     // Padding blades (h = 0) collapse to a point and produce no fragments.
     if (blade.v1H.w <= 0.0) point.position = blade.v0Theta.xyz;

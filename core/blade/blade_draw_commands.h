@@ -34,11 +34,22 @@ inline int lodSegments(int fullSegments, int lod) {
     return std::max(fullSegments >> lod, 1);
 }
 
-// Vertices of one instanced strip of `segments` segments: the left half (u = 0, ½) up the
-// blade, then the right half (u = 1, ½) down, so the midrib is a vertex column and the V fold
-// of SPEC §7 shows (blade_strip.vert).
-inline int stripVertexCount(int segments) {
-    return 4 * (segments + 1);
+// FOLDED_LODS in shaders/include/lod.glsl: the LODs, from the nearest, whose blades keep a
+// vertex column on the midrib so the V fold of SPEC §7 shows. Beyond the LOD distance a blade is
+// a few pixels wide and the fold cannot be seen; the two edges alone draw it with half the
+// triangles (the strips and the tessellation alike). On llvmpipe the grass pass of nature-100k
+// is bound by triangle setup and rasterization, not by its fragments (docs/rendering.md).
+inline constexpr int FOLDED_LODS = 1;
+
+inline bool lodFolded(int lod) {
+    return lod < FOLDED_LODS;
+}
+
+// Vertices of one instanced strip of `segments` segments (blade_strip.vert). Folded: the left
+// half (u = 0, ½) up the blade, then the right half (u = 1, ½) down, so the midrib is a vertex
+// column. Not folded: the two edges (u = 0, 1) up the blade.
+inline int stripVertexCount(int segments, bool folded = true) {
+    return (folded ? 4 : 2) * (segments + 1);
 }
 
 // Texture units of the buffer textures the blade draw stages read (shaders/include/
@@ -75,7 +86,8 @@ inline BladeDrawCommands emptyBladeDrawCommands(int segments) {
     BladeDrawCommands commands{};
     for (int lod = 0; lod < LOD_COUNT; ++lod) {
         commands[std::size_t(lod)] = {
-            static_cast<std::uint32_t>(stripVertexCount(lodSegments(segments, lod))), 0, 0, 0};
+            static_cast<std::uint32_t>(stripVertexCount(lodSegments(segments, lod), lodFolded(lod))),
+            0, 0, 0};
         commands[std::size_t(LOD_COUNT + lod)] = {1, 0, 0, 0};
     }
     return commands;

@@ -125,6 +125,7 @@ void FieldGpu::drawStrips(const BladePrograms& programs, int segments) const {
         program.use();
         program.set("uVisibleOffset", static_cast<unsigned>(lod * mBladeCount));
         program.set("uSegments", lodSegments(segments, lod));
+        program.set("uLod", lod);
         glDrawArraysIndirect(GL_TRIANGLE_STRIP,
                              reinterpret_cast<const void*>(core::stripCommandOffset(lod)));
     }

@@ -390,6 +390,7 @@ void Field::draw(const View& view) {
                 glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(offset));
             } else {
                 program.set("uSegments", core::lodSegments(segments, lod));
+                program.set("uLod", lod);
                 glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(offset));
             }
         }

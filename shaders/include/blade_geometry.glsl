@@ -14,13 +14,14 @@ struct BladeSurfacePoint {
 // What the shape needs besides the blade: the layer's shape id and τ, the vertices along v
 // (both paths place them at v = i/level), and for the width correction the view-projection
 // and the pixels a length of 1 covers at distance 1 (projection[1][1] · viewport height / 2;
-// 0 turns the correction off).
+// 0 turns the correction off), and whether the blade keeps its V fold (lodFolded: the near LODs).
 struct BladeShapeParams {
     int shape;
     float tipStart;
     float level;
     mat4 viewProj;
     float pixelScale;
+    bool folded;
 };
 
 BladeSurfacePoint bladeSurface(Blade blade, float u, float v, BladeShapeParams params) {
@@ -44,8 +45,9 @@ BladeSurfacePoint bladeSurface(Blade blade, float u, float v, BladeShapeParams p
     t = widthCorrectedT(t, u, widthPx);
     // V-shaped fold along the midrib (SPEC §7): at the root the mid line u = ½ stands w/2 off
     // the edges along n; towards the tip the edges rise to it. Both paths place a vertex column
-    // at u = ½ so the V shows.
-    float fold = 0.5 - abs(u - 0.5) * (1.0 - v);
+    // at u = ½ so the V shows. A blade drawn without the fold (a far LOD) is flat between its
+    // edges, which stay where the folded blade has them.
+    float fold = params.folded ? 0.5 - abs(u - 0.5) * (1.0 - v) : 0.5 * v;
     // Each half faces away from the midrib: ∂p/∂u gains ±w(1 − v)·n against 2w·t1, which tilts
     // that half's normal by ∓½(1 − v)·t1; the midrib keeps n, so shading rounds over the V.
     float side = u < 0.5 ? 1.0 : (u > 0.5 ? -1.0 : 0.0);

@@ -107,7 +107,7 @@ TEST_F(LodTest, DefaultLodChangesThePictureLittle) {
 
 // One wide quad blade seen exactly along its width direction: a flat blade would be a line a
 // pixel wide; the V fold stands the midrib w/2 off the edges at the root, so the blade covers
-// a wedge. Both paths draw it.
+// a wedge. Both paths draw it, and both leave it out at the far LODs.
 TEST_F(LodTest, FoldShowsWhenABladeIsSeenEdgeOn) {
     core::Scene scene;
     core::SurfaceMeshBuilder builder;
@@ -122,16 +122,14 @@ TEST_F(LodTest, FoldShowsWhenABladeIsSeenEdgeOn) {
     field.shape = core::BladeShape::Quad;
     scene.layers.push_back(std::move(field));
     scene.bounds = core::Bounds{{-1, 0, -1}, {1, 1, 1}};
-    // theta = 0 with up = +Y: the width runs along x; look along x.
-    core::OrbitCamera camera;
-    camera.target = glm::vec3(0.0f, 0.25f, 0.0f);
-    camera.distance = 1.2f;
-    camera.yawRad = 0.5f * 3.14159265f;
-    camera.pitchRad = 0.0f;
+    // Look along the blade's width direction (theta = 0 about +Y), level with its middle.
+    const glm::vec3 width = core::widthDirection({0.0f, 1.0f, 0.0f}, 0.0f);
+    const glm::vec3 target(0.0f, 0.25f, 0.0f);
+    core::OrbitCamera camera = core::OrbitCamera::lookAt(target + 1.2f * width, target, 0.7853982f);
     camera.nearPlane = 0.05f;
     camera.farPlane = 10.0f;
-    const glm::vec3 eye = camera.position();
-    ASSERT_LT(std::abs(eye.z), 0.05f) << "camera must look along the width (x axis)";
+    const glm::vec3 toBlade = glm::normalize(target - camera.position());
+    ASSERT_GT(std::abs(glm::dot(toBlade, width)), 0.999f) << "the camera must look along the width";
     for (auto path : {render::GeometryPath::Strips, render::GeometryPath::Tessellation}) {
         const auto frame = renderWith(scene, camera, 0.0f, path);
         const double share = grassPixelShare(frame.image.pixels);
@@ -141,6 +139,14 @@ TEST_F(LodTest, FoldShowsWhenABladeIsSeenEdgeOn) {
         // 1.2 m with a 45° field of view: about 0.5·0.04·0.5 / (2·1.2·tan 22.5°)² ≈ 1 % of the
         // image. A flat blade covers the one-pixel line: < 0.5 %.
         EXPECT_GT(share, 0.006) << render::geometryPathLabel(path);
+        // Beyond FOLDED_LODS the blade is drawn by its two edges alone (a far blade is a few
+        // pixels wide, its fold invisible): seen edge-on it is the one-pixel line.
+        const auto far = renderWith(scene, camera, 0.01f, path);
+        ASSERT_EQ(far.lastFrame.cull.drawnPerLod[2], 1u);
+        const double farShare = grassPixelShare(far.image.pixels);
+        std::printf("[ fold ] %s, quarter segments: edge-on blade covers %.4f of the image\n",
+                    render::geometryPathLabel(path), farShare);
+        EXPECT_LT(farShare, 0.005) << render::geometryPathLabel(path);
     }
 }
 
