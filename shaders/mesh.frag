@@ -15,6 +15,9 @@ in vec2 vUv;
 in vec3 vPosWorld;
 #ifdef GRASS_SNOW
 in float vSnowNoise;  // snowNoiseAt(vPosWorld) at the vertices (mesh_snow.tese)
+#ifdef GRASS_SNOW_EXPOSURE_PER_VERTEX
+in float vSnowExposure;  // exposureCoefficient at the vertices
+#endif
 #endif
 
 uniform vec3 uAlbedo;
@@ -42,12 +45,17 @@ void main() {
         albedo = mix(albedo, mix(vec3(0.30, 0.04, 0.45), vec3(0.95, 0.85, 0.10), value), 0.7);
     }
 #ifdef GRASS_SNOW
+    // Snow settles on the side that faces the sky, whichever side the camera sees.
+#ifdef GRASS_SNOW_EXPOSURE_PER_VERTEX
+    vec3 coverage = snowCoverageFromExposure(vNormal, vSnowNoise, vSnowExposure);
+#else
+    vec3 coverage = snowCoverageTerms(vPosWorld, vNormal, vSnowNoise);
+#endif
     if (uSnowCoverageView) {
-        fragColor = vec4(snowCoverageTerms(vPosWorld, vNormal, vSnowNoise), 1.0);
+        fragColor = vec4(coverage, 1.0);
         return;
     }
-    // Snow settles on the side that faces the sky, whichever side the camera sees.
-    albedo = snowShade(vPosWorld, vNormal, vSnowNoise, albedo);
+    albedo = snowShade(coverage.x, albedo);
 #endif
     fragColor = vec4(uAlbedoView ? albedo : simpleLighting(albedo, normal, 0.2), 1.0);
 }

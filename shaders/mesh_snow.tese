@@ -18,6 +18,11 @@ out vec3 vNormal;
 out vec2 vUv;
 out vec3 vPosWorld;
 out float vSnowNoise;
+#ifdef GRASS_SNOW_EXPOSURE_PER_VERTEX
+// The exposure of the coverage (not the displacement's wider boundary disc) at the vertex, for
+// the fragments to interpolate (RenderOptions::snowExposurePerVertex).
+out float vSnowExposure;
+#endif
 
 void main() {
     vec3 b = gl_TessCoord;
@@ -27,5 +32,8 @@ void main() {
     vUv = b.x * teUv[0] + b.y * teUv[1] + b.z * teUv[2];
     vPosWorld = posWorld;
     vSnowNoise = snowNoiseAt(posWorld);
+#ifdef GRASS_SNOW_EXPOSURE_PER_VERTEX
+    vSnowExposure = exposureCoefficient(posWorld, normal, uSnowSamples, uSnowRadiusTexels);
+#endif
     gl_Position = uViewProj * vec4(posWorld + snowDisplacement(posWorld, normal, vSnowNoise), 1.0);
 }

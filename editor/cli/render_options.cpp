@@ -54,6 +54,11 @@ void describeImageOptions(ArgParser& parser, RenderArgs& args) {
                 "light every blade per pixel; by default the blades beyond the LOD distance "
                 "(half or quarter segments, a few pixels wide) are lit per vertex",
                 &args.lightPerPixel);
+    parser.choice("--snow-exposure", {"auto", "pixel", "vertex"},
+                  "where the snow surface measures its exposure to the sky (the shelter edge): "
+                  "per pixel (exact), or per vertex of the tessellated surface, interpolated "
+                  "(cheaper, softer edges; docs/snow.md); auto: per vertex on software GL",
+                  &args.snowExposure);
     parser.flag("--snow",
                 "snow on (SPEC §11) with the project's snow settings (their defaults when the "
                 "project has none); --stats adds the snow pass time",
@@ -173,6 +178,8 @@ void applyRenderOverrides(const RenderArgs& args, render::RenderOptions& options
         options.pixelLitLods = core::LOD_COUNT;
     if (args.snow)
         options.snow.enabled = 1u;
+    if (args.snowExposure != "auto")
+        options.snowExposurePerVertex = args.snowExposure == "vertex";
     if (args.technique != "project")
         if (auto technique = core::parseGrassTechnique(args.technique))
             options.technique = *technique;

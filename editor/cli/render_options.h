@@ -22,6 +22,8 @@ struct RenderArgs {
     std::string backend = "auto", shape = "project";
     std::string cull = "all", stats, lighting = "project", technique = "project",
                 animation = "project", preset = "project";
+    // The snow surface's exposure: "auto" as the renderer suits (per vertex on software GL).
+    std::string snowExposure = "auto";
     double timeS = 0.0;
     double lodDistanceM = render::CullSettings{}.lodDistanceM;
     int width = 0, height = 0, frames = 3, blades = 60000, turntable = 0;

@@ -34,6 +34,7 @@ RenderOptions renderOptionsFor(const core::Project& project, bool softwareRender
     // Tessellation is what snow costs most on a software rasterizer (docs/snow.md: 8 px edges
     // 1.3–2.2 s a frame on llvmpipe, 16 px 0.6–1.4 s); GPUs tessellate in hardware.
     options.snowTessPixels = softwareRenderer ? 16.0f : 8.0f;
+    options.snowExposurePerVertex = softwareRenderer;
     return options;
 }
 

@@ -57,6 +57,11 @@ struct RenderOptions {
     // software rasterizers.
     float snowTessPixels = 8.0f;
     int snowTessMax = 16;
+    // The snow surface's exposure Fe (eq. 1, `samples` lookups of the snow map) per vertex of the
+    // tessellated surface, interpolated, instead of per pixel: renderOptionsFor picks it on
+    // software rasterizers, where the per-pixel lookups were the dearest part of the surface
+    // (docs/snow.md measures the cost and the error).
+    bool snowExposurePerVertex = false;
     // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for
     // tests that measure a shape alone.
     bool widthCorrection = true;

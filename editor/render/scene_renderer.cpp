@@ -71,7 +71,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     std::unique_ptr<SceneRenderer> renderer(new SceneRenderer());
     renderer->mScene = &scene;
     renderer->mSoftwareGl = gl::isSoftwareRenderer();
-    auto mesh = loadOpaqueProgram(false, false);
+    auto mesh = loadOpaqueProgram(Opaque::Lit);
     if (!mesh)
         return mesh.error();
     for (const bool tessellate : {false, true})
@@ -88,7 +88,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
         return cull.error();
     renderer->mCull = std::make_unique<CullPass>(std::move(*cull));
     renderer->mFieldAo = meanFieldAo(scene);
-    renderer->mOpaquePrograms[0][0] = std::move(*mesh);
+    renderer->mOpaquePrograms[static_cast<int>(Opaque::Lit)] = std::move(*mesh);
     renderer->mMesh = std::make_unique<MeshGpu>(scene.mesh);
     if (const Rgba8Pixels& image = scene.look.baseTexture; !image.pixels.empty())
         renderer->mSurfaceTexture = uploadSurfaceTexture(image, scene.look);
@@ -184,7 +184,8 @@ FrameTimings SceneRenderer::lastTimings() const {
     timings.passes = mPasses;
     if (mSnow)
         timings.allocated.push_back("snow_map");
-    if (mOpaquePrograms[1][0].id() != 0 || mOpaquePrograms[1][1].id() != 0)
+    if (mOpaquePrograms[static_cast<int>(Opaque::Snow)].id() != 0 ||
+        mOpaquePrograms[static_cast<int>(Opaque::SnowExposurePerVertex)].id() != 0)
         timings.allocated.push_back("snow_programs");
     if (std::any_of(mFields.begin(), mFields.end(),
                     [](const FieldGpu& field) { return field.hasTipSnow(); }))

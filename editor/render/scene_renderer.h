@@ -73,11 +73,17 @@ private:
     // The frame's lighting, uploaded once at the start of render().
     gl::UniformBlock<LightingBlock> mLighting{"lighting"};
     gl::Program mStemSetProgram;
-    // The opaque surfaces' programs, [snow lies][depth only]: lit (the opaque pass) or depth
-    // alone (the cull's pre-pass); all but the plain lit one load on first use.
-    gl::Program mOpaquePrograms[2][2];
-    static Result<gl::Program> loadOpaqueProgram(bool snow, bool depthOnly);
-    const gl::Program& opaqueProgram(bool snow, bool depthOnly);
+    // The opaque surfaces' programs: lit, depth alone (the cull's pre-pass), and the snow
+    // surface with its exposure per pixel or per vertex (RenderOptions::snowExposurePerVertex);
+    // all but the lit one load on first use.
+    enum class Opaque { Lit, DepthOnly, Snow, SnowExposurePerVertex, Count };
+    gl::Program mOpaquePrograms[static_cast<int>(Opaque::Count)];
+    static Result<gl::Program> loadOpaqueProgram(Opaque variant);
+    const gl::Program& opaqueProgram(Opaque variant);
+    // The snow surface's program for these options.
+    static Opaque snowVariant(const RenderOptions& options) {
+        return options.snowExposurePerVertex ? Opaque::SnowExposurePerVertex : Opaque::Snow;
+    }
     // [tessellated][lit per vertex]; the per-vertex variants load on first use.
     gl::Program mBladePrograms[2][2];
     static Result<gl::Program> loadBladeProgram(bool tessellate, bool lightPerVertex);
@@ -87,7 +93,8 @@ private:
     void drawOpaquePass(const glm::mat4& viewProj, const RenderOptions& options);
     void drawGrass(const core::OrbitCamera& camera, const glm::mat4& projection, int width,
                    int height, const RenderOptions& options);
-    void drawOpaque(const gl::Program& program, const RenderOptions& options, bool shaded);
+    void drawOpaque(const gl::Program& program, const RenderOptions& options, bool shaded,
+                    bool snowSurface);
     void drawBlades(const core::OrbitCamera& camera, const glm::mat4& projection, int width,
                     int height, const RenderOptions& options);
     void drawBillboards(const core::OrbitCamera& camera, const glm::mat4& viewProj,

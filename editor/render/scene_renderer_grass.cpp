@@ -61,11 +61,15 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
         for (FieldGpu& field : mFields)
             field.enableTipSnow();
     cull.snow = mSnowLies;
+    // The pre-pass draws the surfaces without their snow. The ground lies under the snow, so
+    // its depth is never nearer than the snow surface's: no blade in sight is culled, a few
+    // behind drifts are drawn and hidden by the depth test (winter-100k: 6 % more blades drawn),
+    // and the snow surface is not tessellated a second time (it cost winter's cull 110-170 ms).
     mCull->run(mFields, cullView, cull, [this, &options, &viewProj] {
-        const gl::Program& depthOnly = opaqueProgram(mSnowLies, true);
+        const gl::Program& depthOnly = opaqueProgram(Opaque::DepthOnly);
         depthOnly.use();
         depthOnly.set("uViewProj", viewProj);
-        drawOpaque(depthOnly, options, false);
+        drawOpaque(depthOnly, options, false, false);
     });
     mCullTimer.end();
     if (cull.occlusion)

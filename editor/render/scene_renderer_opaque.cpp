@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 #include <utility>
 
@@ -25,25 +26,22 @@ void SceneRenderer::runSnowPass(const RenderOptions& options, int width, int hei
         mPasses.push_back("snow_depth");
         // The surfaces whiten and rise; the cull buries short blades and whitens the tips.
         mSnow->bind(options.snow, snowAmountM);
-        opaqueProgram(true, false).set("uSnowCoverageView", options.snowCoverageView ? 1 : 0);
-        // The lit surface and the cull's depth pre-pass cut the snow surface alike.
-        for (const bool depthOnly : {false, true}) {
-            const gl::Program& snowMesh = opaqueProgram(true, depthOnly);
-            snowMesh.set("uViewportPixels", glm::vec2(float(width), float(height)));
-            snowMesh.set("uSnowTessPixels", std::max(options.snowTessPixels, 1.0f));
-            snowMesh.set("uSnowTessMax", float(std::clamp(options.snowTessMax, 1, 64)));
-        }
+        const gl::Program& snowMesh = opaqueProgram(snowVariant(options));
+        snowMesh.set("uSnowCoverageView", options.snowCoverageView ? 1 : 0);
+        snowMesh.set("uViewportPixels", glm::vec2(float(width), float(height)));
+        snowMesh.set("uSnowTessPixels", std::max(options.snowTessPixels, 1.0f));
+        snowMesh.set("uSnowTessMax", float(std::clamp(options.snowTessMax, 1, 64)));
     }
     mSnowTimer.end();
 }
 
 void SceneRenderer::drawOpaquePass(const glm::mat4& viewProj, const RenderOptions& options) {
     mMeshTimer.begin();
-    const gl::Program& opaque = opaqueProgram(mSnowLies, false);
+    const gl::Program& opaque = opaqueProgram(mSnowLies ? snowVariant(options) : Opaque::Lit);
     opaque.use();
     opaque.set("uViewProj", viewProj);
     opaque.set("uAlbedoView", options.albedoView ? 1 : 0);
-    drawOpaque(opaque, options, true);
+    drawOpaque(opaque, options, true, mSnowLies);
     mPasses.push_back(mSnowLies ? "opaque_snow" : "opaque");
     mMeshTimer.end();
 }
@@ -68,33 +66,42 @@ void SceneRenderer::renderSnowMap(const RenderOptions& options) {
 }
 
 // Under snow the surfaces are tessellated and displaced (mesh_snow.*) and whitened (mesh.frag
-// with GRASS_SNOW); the depth-only variants shade nothing.
-Result<gl::Program> SceneRenderer::loadOpaqueProgram(bool snow, bool depthOnly) {
-    const char* fragment = depthOnly ? "depth_only.frag" : "mesh.frag";
-    std::string label = snow ? "mesh under snow" : "mesh";
-    if (depthOnly)
-        label += " (depth only)";
-    if (!snow)
+// with GRASS_SNOW); the depth-only variant shades nothing.
+Result<gl::Program> SceneRenderer::loadOpaqueProgram(Opaque variant) {
+    switch (variant) {
+    case Opaque::Lit:
         return gl::Program::load(
-            {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, fragment}}, label);
+            {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}}, "mesh");
+    case Opaque::DepthOnly:
+        return gl::Program::load(
+            {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}},
+            "mesh (depth only)");
+    default:
+        break;
+    }
+    std::vector<std::string> defines{"GRASS_SNOW"};
+    if (variant == Opaque::SnowExposurePerVertex)
+        defines.emplace_back("GRASS_SNOW_EXPOSURE_PER_VERTEX");
     return gl::Program::load({{GL_VERTEX_SHADER, "mesh_snow.vert"},
                               {GL_TESS_CONTROL_SHADER, "mesh_snow.tesc"},
                               {GL_TESS_EVALUATION_SHADER, "mesh_snow.tese"},
-                              {GL_FRAGMENT_SHADER, fragment}},
-                             label, {"GRASS_SNOW"});
+                              {GL_FRAGMENT_SHADER, "mesh.frag"}},
+                             "mesh under snow", defines);
 }
 
-const gl::Program& SceneRenderer::opaqueProgram(bool snow, bool depthOnly) {
-    return gl::loadOnFirstUse(mOpaquePrograms[snow][depthOnly],
-                              [&] { return loadOpaqueProgram(snow, depthOnly); });
+const gl::Program& SceneRenderer::opaqueProgram(Opaque variant) {
+    return gl::loadOnFirstUse(mOpaquePrograms[static_cast<int>(variant)],
+                              [variant] { return loadOpaqueProgram(variant); });
 }
 
 // The terrain, then each prop where its path puts it at options.timeS, with `program` (bound by
-// the caller, an opaqueProgram of this frame's snow). `shaded` sets the albedo (the cull's depth
-// pre-pass needs none).
+// the caller: a snow variant of opaqueProgram when snowSurface, and it takes patches). `shaded` sets the
+// albedo (the cull's depth pre-pass needs none).
 void SceneRenderer::drawOpaque(const gl::Program& program, const RenderOptions& options,
-                               bool shaded) {
-    const auto draw = [this](const MeshGpu& mesh) { mSnowLies ? mesh.drawPatches() : mesh.draw(); };
+                               bool shaded, bool snowSurface) {
+    const auto draw = [snowSurface](const MeshGpu& mesh) {
+        snowSurface ? mesh.drawPatches() : mesh.draw();
+    };
     program.set("uModel", glm::mat4(1.0f));
     const bool textured = shaded && mSurfaceTexture.id() != 0;
     if (shaded) {

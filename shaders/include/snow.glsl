@@ -177,22 +177,26 @@ float bladeTipSnow(float tipFe) {
     return snowLies() ? clamp(tipFe, 0.0, 1.0) : 0.0;
 }
 
-// (Fp, Fe, Fi) at a surface point: Fp = Fe·Fi (paper eq. 3); zero where no snow lies. `noise`
-// is snowNoiseAt(posWorld), or its value interpolated from the tessellated surface's vertices:
-// the noise is smooth at the scale of a few pixels (projects/winter: Fp moves by at most 3/255,
-// by 0.0002 on average, docs/snow.md), the exposure's shelter edge is not and stays per pixel.
-vec3 snowCoverageTerms(vec3 posWorld, vec3 normal, float noise) {
+// (Fp, Fe, Fi) from the exposure Fe at a surface point: Fp = Fe·Fi (paper eq. 3); zero where no
+// snow lies. `noise` is snowNoiseAt at the point, or its value interpolated from the tessellated
+// surface's vertices: the noise is smooth at the scale of a few pixels (projects/winter: Fp moves
+// by at most 3/255, by 0.0002 on average, docs/snow.md).
+vec3 snowCoverageFromExposure(vec3 normal, float noise, float Fe) {
     if (!snowLies())
         return vec3(0.0);
     float Fi = inclineCoefficient(normal, uSnowUp, noise, uSnowInclineNoise);
-    float Fe = exposureCoefficient(posWorld, normal, uSnowSamples, uSnowRadiusTexels);
     return vec3(Fe * Fi, Fe, Fi);
 }
 
-// C = Fp·Cs + (1 − Fp)·Cn (paper eq. 3).
-vec3 snowShade(vec3 posWorld, vec3 normal, float noise, vec3 Cn) {
+// The same with Fe measured at the point (per pixel in the opaque pass).
+vec3 snowCoverageTerms(vec3 posWorld, vec3 normal, float noise) {
     if (!snowLies())
-        return Cn;
-    float Fp = snowCoverageTerms(posWorld, normal, noise).x;
+        return vec3(0.0);
+    return snowCoverageFromExposure(
+        normal, noise, exposureCoefficient(posWorld, normal, uSnowSamples, uSnowRadiusTexels));
+}
+
+// C = Fp·Cs + (1 − Fp)·Cn (paper eq. 3); exactly Cn at Fp = 0.
+vec3 snowShade(float Fp, vec3 Cn) {
     return Fp * uSnowColor + (1.0 - Fp) * Cn;
 }

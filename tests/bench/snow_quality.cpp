@@ -10,8 +10,10 @@
 // The reference is checked against 4096²/32 (beyond the format's range). Results: docs/snow.md.
 //
 // Usage: snow_quality [project.json] [--out table.md] [--frames N] [--images DIR]
-//                     [--camera NAME] [--tess-pixels P] [--row MAPxS]
-// --tess-pixels: RenderOptions::snowTessPixels (1e6 = every edge level 1); --row: one row only.
+//                     [--camera NAME] [--tess-pixels P] [--row MAPxS] [--exposure pixel|vertex]
+// --tess-pixels: RenderOptions::snowTessPixels (1e6 = every edge level 1); --row: one row only;
+// --exposure: the rows' Fe per pixel (default) or per tessellated vertex
+// (RenderOptions::snowExposurePerVertex); the references are always per pixel.
 // Default project: projects/winter, else projects/meadow with snow switched on (fall (0.3, −1,
 // 0.2), 0.1 m: lee slopes, and a ball that shelters the ground and overhangs itself).
 // Build RelWithDebInfo (-O3 trips GCC 12 false positives under -Werror), -DGRASS_BUILD_BENCH=ON.
@@ -287,12 +289,12 @@ Result<core::LoadedProject> loadInput(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string projectPath, outPath, imageFolder, cameraName, onlyRow;
+    std::string projectPath, outPath, imageFolder, cameraName, onlyRow, exposure = "pixel";
     int frames = 5;
     double tessPixels = render::RenderOptions{}.snowTessPixels;
     ArgParser parser(
         "snow_quality [project.json] [--out table.md] [--frames N] [--images DIR] "
-        "[--camera NAME] [--tess-pixels P] [--row MAPxS]",
+        "[--camera NAME] [--tess-pixels P] [--row MAPxS] [--exposure pixel|vertex]",
         "Snow map resolution × samples: snow cost against the error of the snow "
         "mask Fp (reference 2048², 32 samples); prints a markdown table.");
     parser.positional("project", "project folder or .json (default: winter, else meadow)",
@@ -305,6 +307,10 @@ int main(int argc, char** argv) {
     parser.number("--tess-pixels", "P", "snow surface edge length on screen in px", &tessPixels,
                   1.0, 1e9, "8");
     parser.text("--row", "MAPxS", "measure only this map size and sample count (1024x8)", &onlyRow);
+    parser.choice("--exposure", {"pixel", "vertex"},
+                  "the rows' snow exposure per pixel or per tessellated vertex (references: "
+                  "per pixel)",
+                  &exposure);
     if (auto parsed = parser.parse(std::vector<std::string>(argv + 1, argv + argc)); !parsed) {
         std::fprintf(stderr, "snow_quality: %s\n", parsed.error().str().c_str());
         return 2;
@@ -343,6 +349,7 @@ int main(int argc, char** argv) {
                 target,     render::renderOptionsFor(loaded->project, gl::isSoftwareRenderer()),
                 frames,     imageFolder};
     bench.shaded.snowTessPixels = static_cast<float>(tessPixels);
+    bench.shaded.snowExposurePerVertex = false;  // the references
     core::SnowParams off = snow;
     off.enabled = 0u;
     const Timing baseline = bench.time(off);
@@ -356,6 +363,7 @@ int main(int argc, char** argv) {
     check.mapResolution = CHECK_RESOLUTION;
     const MaskError referenceError = compare(referenceCoverage, bench.coverage(check, "check"));
 
+    bench.shaded.snowExposurePerVertex = exposure == "vertex";
     std::vector<Row> rows;
     for (const int resolution : RESOLUTIONS)
         for (const int samples : SAMPLE_COUNTS) {
@@ -384,12 +392,13 @@ int main(int argc, char** argv) {
         header, sizeof header,
         "Device: %s\nProject: %s (grass layers left out), camera \"%s\", %dx%d, 1 "
         "sample per pixel, %d timed frames per row (medians).\nSnow: fall direction "
-        "(%.2f, %.2f, %.2f), amount %.2f m, sample radius %.2f texels, tessellation %g px.\n",
+        "(%.2f, %.2f, %.2f), amount %.2f m, sample radius %.2f texels, tessellation %g px, "
+        "exposure per %s.\n",
         device.c_str(), loaded->project.name.c_str(),
         cameraName.empty() ? loaded->project.cameras.front().name.c_str() : cameraName.c_str(),
         WIDTH, HEIGHT, frames, static_cast<double>(fall.x), static_cast<double>(fall.y),
         static_cast<double>(fall.z), static_cast<double>(snow.amountM),
-        static_cast<double>(snow.sampleRadiusTexels), tessPixels);
+        static_cast<double>(snow.sampleRadiusTexels), tessPixels, exposure.c_str());
     const std::string table = formatTable(rows, baseline, referenceError, header);
     std::fputs(table.c_str(), stdout);
     if (!outPath.empty())

@@ -26,3 +26,11 @@ grass_cli_test(render_light_per_pixel GL OK
        --width 64 --height 48 --frames 1 --light-per-pixel)
 grass_cli_test(render_light_per_pixel_and_vertex ERROR "--light-per-pixel" --also "--light-per-vertex"
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --light-per-pixel --light-per-vertex)
+# The snow surface's exposure per pixel (the default on a GPU) renders on software GL too; an
+# unknown choice is refused naming the option and the choices.
+grass_cli_test(render_snow_exposure_pixel GL OK
+    --stdout "^wrote .*snow-exposure-pixel.png"
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_TMP}/snow-exposure-pixel.png
+       --width 64 --height 48 --frames 1 --snow --snow-exposure pixel)
+grass_cli_test(render_snow_exposure_unknown ERROR "--snow-exposure" --also "vertex"
+    -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --snow-exposure texel)
