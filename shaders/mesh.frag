@@ -1,7 +1,8 @@
 #version 450 core
-// Opaque meshes, lit. Built twice: plain, and with GRASS_SNOW for the surfaces under snow (the
-// snow-free program holds no snow code at all, so a scene without snow pays nothing for it, not
-// even on software rasterizers that execute both sides of a uniform branch).
+// Opaque meshes, lit. Built plain, and with GRASS_SNOW for the surfaces under snow (the snow-free
+// program holds no snow code at all, so a scene without snow pays nothing for it, not even on
+// software rasterizers that execute both sides of a uniform branch); the snow variant also with
+// GRASS_SNOW_EXPOSURE_PER_VERTEX, which takes the exposure from the tessellated vertices.
 #include "lighting.glsl"
 #ifdef GRASS_SNOW
 #include "snow.glsl"

@@ -48,7 +48,7 @@ inline bool lodFolded(int lod) {
 // Vertices of one instanced strip of `segments` segments (blade_strip.vert). Folded: the left
 // half (u = 0, ½) up the blade, then the right half (u = 1, ½) down, so the midrib is a vertex
 // column. Not folded: the two edges (u = 0, 1) up the blade.
-inline int stripVertexCount(int segments, bool folded = true) {
+inline int stripVertexCount(int segments, bool folded) {
     return (folded ? 4 : 2) * (segments + 1);
 }
 
@@ -86,7 +86,8 @@ inline BladeDrawCommands emptyBladeDrawCommands(int segments) {
     BladeDrawCommands commands{};
     for (int lod = 0; lod < LOD_COUNT; ++lod) {
         commands[std::size_t(lod)] = {
-            static_cast<std::uint32_t>(stripVertexCount(lodSegments(segments, lod), lodFolded(lod))),
+            static_cast<std::uint32_t>(
+                stripVertexCount(lodSegments(segments, lod), lodFolded(lod))),
             0, 0, 0};
         commands[std::size_t(LOD_COUNT + lod)] = {1, 0, 0, 0};
     }

@@ -95,8 +95,8 @@ const gl::Program& SceneRenderer::opaqueProgram(Opaque variant) {
 }
 
 // The terrain, then each prop where its path puts it at options.timeS, with `program` (bound by
-// the caller: a snow variant of opaqueProgram when snowSurface, and it takes patches). `shaded` sets the
-// albedo (the cull's depth pre-pass needs none).
+// the caller; a snow variant of opaqueProgram when snowSurface, which takes patches). `shaded`
+// sets the albedo (the cull's depth pre-pass needs none).
 void SceneRenderer::drawOpaque(const gl::Program& program, const RenderOptions& options,
                                bool shaded, bool snowSurface) {
     const auto draw = [snowSurface](const MeshGpu& mesh) {

@@ -152,7 +152,7 @@ float snowBoundaryExposure(vec3 posWorld, vec3 normal) {
                       exposureCoefficient(posWorld, normal, uSnowSamples, uSnowBoundaryRadiusTexels));
 }
 
-// Vn = V + As·Fe·Zn·N (paper eq. 5), Zn = 0.5 + 0.5·noise ≥ 0, `noise` = snowNoiseAt(posWorld).
+// Vn = V + As·Fe·Zn·N (paper eq. 5), Zn = 0.5 + 0.5·noise ≥ 0; `noise` is snowNoiseAt(posWorld).
 vec3 snowDisplacement(vec3 posWorld, vec3 normal, float noise) {
     if (!snowLies())
         return vec3(0.0);

@@ -191,7 +191,8 @@ TEST_F(SnowGlTest, ExposurePerVertexSoftensTheShelterEdgeOnly) {
         double fp = 0.0;
         for (int y = 77; y < 83; ++y)
             for (int x = cx - 3; x < cx + 3; ++x)
-                fp += image.pixels[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4];
+                fp += image.pixels[(std::size_t(y) * std::size_t(image.width) +
+                                    std::size_t(x)) * 4];
         return fp / (36.0 * 255.0);
     };
     for (const gl::Rgba8Image* image : {&pixel, &vertex}) {
