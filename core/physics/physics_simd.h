@@ -3,9 +3,10 @@
 // at once in SIMD lanes (Google Highway, the widest instruction set the CPU has, chosen at run
 // time), with the blocks spread over a reused thread pool.
 //
-// Layout: the blade buffer stays the GPU's array of 64-byte records; each block of lanes is
-// transposed into lanes (structure of arrays) in registers and cache, stepped through every
-// substep, and written back: one read and one write of each blade per step, as the bandwidth
+// Layout: the blade buffer stays the GPU's array of 64-byte records; each block of blades (three
+// native vectors of lanes, simd_pack-inl.h: their dependency chains overlap) is transposed into
+// lanes (structure of arrays) in cache by 4×4 transposes, stepped through every substep, and
+// written back the same way: one read and one write of each blade per step, as the bandwidth
 // bound in docs/physics.md assumes. What depends on time only (substep times, wind and collider
 // path positions) is evaluated once per step for all blades (physics_step_inputs.h). Blades the
 // reference would repair (non-finite values, zero height, an up that is not unit length) and the
