@@ -1,8 +1,20 @@
 #include "blade/blade_shape.h"
 
+#include <algorithm>
 #include <string>
 
 namespace grass::core {
+
+float widthCorrectionPhi(float widthPx) {
+    return 1.0f - std::clamp((widthPx - WIDTH_CORRECTION_MIN_PX) / WIDTH_CORRECTION_SPAN_PX, 0.0f,
+                             1.0f);
+}
+
+float widthCorrectedT(float t, float u, float widthPx) {
+    if (widthPx < 0.0f)
+        return t;
+    return t + widthCorrectionPhi(widthPx) * (u - t);
+}
 
 const std::array<std::string_view, BLADE_SHAPE_COUNT>& bladeShapeNames() {
     return BLADE_SHAPE_NAMES;

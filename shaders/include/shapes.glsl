@@ -8,7 +8,8 @@
 #define SHAPE_DANDELION 4
 
 // Width correction of SPEC §7: below W_MIN_PX projected pixels a blade blends towards the quad
-// over WIDTH_SPAN_PX pixels, so far blades keep covering pixels instead of aliasing away.
+// over WIDTH_SPAN_PX pixels, so far blades keep covering pixels instead of aliasing away
+// (core::WIDTH_CORRECTION_MIN_PX and _SPAN_PX, core::widthCorrectedT: the tested twin).
 #define W_MIN_PX 1.0
 #define WIDTH_SPAN_PX 2.0
 
@@ -42,10 +43,12 @@ float shapeT(int shape, float u, float v, float tau, float level) {
     return u + 0.5 * v - u * v;  // triangle
 }
 
-// SPEC §7: t' = max(t, Φ·u), Φ = 1 − clamp((wpx − w_min)/span, 0, 1); wpx the projected blade
-// width in pixels. A negative wpx means "unknown" and leaves the shape alone.
+// SPEC §7's blend towards the quad, Φ = 1 − clamp((wpx − w_min)/span, 0, 1), wpx the projected
+// blade width in pixels, as t' = t + Φ·(u − t): at Φ = 1 both edges are the quad's (SPEC's
+// max(t, Φ·u) moved the u = 1 edge alone and left a triangle a ¾-area trapezoid). A negative
+// wpx means "unknown" and leaves the shape alone. core::widthCorrectedT is the twin.
 float widthCorrectedT(float t, float u, float widthPx) {
     if (widthPx < 0.0) return t;
     float phi = 1.0 - clamp((widthPx - W_MIN_PX) / WIDTH_SPAN_PX, 0.0, 1.0);
-    return max(t, phi * u);
+    return t + phi * (u - t);
 }

@@ -198,10 +198,13 @@ TEST_F(ExportStockTest, AStockViewerDrawsTheMeadowAsGrassRenderDoes) {
     EXPECT_LE(exactTiles, 2.0);
     EXPECT_LE(exactPixels, 5.0);
     EXPECT_GT(beforeTiles, 2.0) << "the test must fail on the export before issue 25";
-    // Against grass render as it draws (width correction on): the far blades' extra tip colour
-    // adds to the error, measured 3.97 against 11.0 before.
-    EXPECT_LE(renderedTiles, 6.0);
-    EXPECT_GT(beforeRenderedTiles, 6.0) << "the test must fail on the export before issue 25";
+    // Against grass render as it draws (width correction on), recorded, not asserted: SPEC §7
+    // turns a blade thinner than a pixel into the full quad, which no stock viewer can do, and
+    // that difference dominates (measured 7.37, and 7.95 for the export before issue 25; 3.97
+    // while the correction widened one edge alone, issue 30). It cannot tell a good export from
+    // a bad one; the comparison above, the same blades drawn by both, does.
+    RecordProperty("tile_error_width_corrected", std::to_string(renderedTiles));
+    EXPECT_LT(exactTiles, renderedTiles) << "the width correction must show in our picture";
 }
 
 }  // namespace
