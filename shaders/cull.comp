@@ -7,6 +7,7 @@
 // Survivors append their index to the visible list of their level of detail (lod.glsl) and bump
 // that LOD's strip and tessellation instance counts (reset to 0 before the dispatch).
 #include "blade.glsl"
+#include "cull_rules.glsl"
 #include "lod.glsl"
 #ifdef GRASS_SNOW
 #include "snow.glsl"
@@ -133,14 +134,12 @@ uint classify(uint index) {
     if (uTestPatch != 0 &&
         boxOutsideFrustum(patchBounds[2u * patchIndex].xyz, patchBounds[2u * patchIndex + 1u].xyz))
         return RESULT_PATCH;
-    // Orientation: a blade seen edge-on is thinner than a pixel and only aliases.
+    // Orientation, distance: the formulas live in cull_rules.glsl, which a GL test runs against
+    // their C++ twin (core/scene/cull_rules.h).
     vec3 toBlade = v0 - uCameraPosition;
-    if (uTestOrientation != 0 && dot(toBlade, toBlade) > 0.0) {
-        vec3 dirView = normalize(toBlade);
-        vec3 dirWidth = widthDirection(up, blade.v0Theta.w);
-        if (abs(dot(dirView, dirWidth)) > 0.9)
-            return RESULT_ORIENTATION;
-    }
+    if (uTestOrientation != 0 && dot(toBlade, toBlade) > 0.0 &&
+        seenEdgeOn(normalize(toBlade), widthDirection(up, blade.v0Theta.w)))
+        return RESULT_ORIENTATION;
     vec3 m = 0.25 * v0 + 0.5 * v1 + 0.25 * v2;
     vec4 clipV0 = uViewProj * vec4(v0, 1.0);
     vec4 clipM = uViewProj * vec4(m, 1.0);
@@ -149,15 +148,12 @@ uint classify(uint index) {
         !insideFrustum(clipV2))
         return RESULT_FRUSTUM;
     // Distance: thin the field towards uMaxDistance by keeping fewer of n classes (i mod n).
-    float dproj = length(toBlade - up * dot(toBlade, up));
+    float dproj = projectedDistance(toBlade, up);
     if (uCutoffDistance > 0.0 && dproj > uCutoffDistance)
         return RESULT_DISTANCE;
-    if (uTestDistance != 0) {
-        float n = float(uDistanceClasses);
-        uint kept = uint(ceil(n * max(1.0 - dproj / uMaxDistance, 0.0)));
-        if (index % uint(uDistanceClasses) >= kept)
-            return RESULT_DISTANCE;
-    }
+    if (uTestDistance != 0 &&
+        !keptByDistance(index, uint(uDistanceClasses), dproj, uMaxDistance))
+        return RESULT_DISTANCE;
     if (uTestOcclusion != 0 && hiddenByOpaque(clipV0) && hiddenByOpaque(clipM) &&
         hiddenByOpaque(clipV2))
         return RESULT_OCCLUSION;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/cull_rules.h"
 #include "scene/frustum.h"
 
 namespace grass::core {
@@ -63,10 +64,9 @@ void cullStemSets(std::span<const StemSetInstance> sets, int levels, const glm::
         }
         const glm::vec3 toSet = root - cameraPosition;
         if (settings.distance && settings.maxDistanceM > 0.0f) {
-            const float dproj = glm::length(toSet - up * glm::dot(toSet, up));
-            const auto kept = static_cast<std::uint32_t>(
-                std::ceil(float(classes) * std::max(1.0f - dproj / settings.maxDistanceM, 0.0f)));
-            if (i % classes >= kept) {
+            const float dproj = projectedDistance(toSet, up);
+            if (!keptByDistance(static_cast<std::uint32_t>(i), classes, dproj,
+                                settings.maxDistanceM)) {
                 ++out.culledDistance;
                 continue;
             }

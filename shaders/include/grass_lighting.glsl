@@ -8,8 +8,11 @@
 //   final = mix(diffuse, specular + transmission + sss, water), plus sky ambient × AO.
 // The article lights per vertex; per pixel costs the same on the strips here (the fragment
 // count, not the vertex count, dominates on a software rasterizer) and keeps highlights round.
+// core/scene/grass_lighting_formulas.h is this file's C++ twin, function for function; a GL test
+// (tests/gl/formula_twins_gl_test.cpp) runs both on the same inputs: change them together.
 #include "lighting.glsl"
 
+// core::GRASS_PI and core::GRASS_F0 mirror these.
 const float GRASS_PI = 3.14159265358979;
 const float GRASS_F0 = 0.04;
 
