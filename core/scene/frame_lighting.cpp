@@ -1,5 +1,7 @@
 #include "scene/frame_lighting.h"
 
+#include <algorithm>
+
 namespace grass::core {
 
 LightingBlock frameLighting(const GrassLightingDesc& lighting, const SunDesc& sun,
@@ -16,7 +18,11 @@ LightingBlock frameLighting(const GrassLightingDesc& lighting, const SunDesc& su
     block.diffuseHigh = lighting.diffuseHigh;
     block.terrainNormalWeight = lighting.terrainNormalWeight;
     block.specular = lighting.specular;
-    block.specularFadeM = lighting.specularFadeM;
+    // GLSL's smoothstep is undefined for near ≥ far (and the project reader takes any two
+    // non-negative distances): an empty or reversed fade switches the specular on at `near`, the
+    // same on every GPU and in the C++ twin.
+    const float nearM = lighting.specularFadeM.x;
+    block.specularFadeM = {nearM, std::max(lighting.specularFadeM.y, nearM + MIN_SPECULAR_FADE_M)};
     block.transmission = lighting.transmission;
     block.transmissionDistortion = lighting.transmissionDistortion;
     block.transmissionPower = lighting.transmissionPower;

@@ -9,6 +9,10 @@
 
 namespace grass::core {
 
+// The shortest specular fade (m): a fade whose far distance is not beyond its near one is
+// widened to this, a switch at `near`.
+inline constexpr float MIN_SPECULAR_FADE_M = 1e-3f;
+
 // The block of a frame lit by `sun` (a zero direction shines straight down) under the sky and
 // ground colours of the render settings.
 LightingBlock frameLighting(const GrassLightingDesc& lighting, const SunDesc& sun,
