@@ -15,7 +15,7 @@ float ggxD(float nh, float alpha) {
 }
 
 float schlickF(float nv) {
-    return GRASS_F0 + (1.0f - GRASS_F0) * std::pow(1.0f - nv, 5.0f);
+    return GRASS_F0 + (1.0f - GRASS_F0) * std::pow(std::max(1.0f - nv, 0.0f), 5.0f);
 }
 
 float specularLobes(glm::vec3 n, glm::vec3 toLight, glm::vec3 toEye, float water) {

@@ -37,7 +37,8 @@ float ggxD(float nh, float alpha) {
 }
 
 float schlickF(float nv) {
-    return GRASS_F0 + (1.0 - GRASS_F0) * pow(1.0 - nv, 5.0);
+    // pow of a negative base is undefined in GLSL: n·v of unit vectors can round above 1.
+    return GRASS_F0 + (1.0 - GRASS_F0) * pow(max(1.0 - nv, 0.0), 5.0);
 }
 
 // 0.5·S(water) + 0.3·S(water/2) + 0.2·S(water/4): the argument is each lobe's roughness.

@@ -70,6 +70,13 @@ TEST(GrassLightingFormulas, SchlickIsF0FacingAndOneAtGrazing) {
     EXPECT_EQ(GRASS_F0, 0.04f);
 }
 
+// n·v of two unit vectors can round just above 1; GLSL's pow of the negative base 1 − n·v would
+// be undefined (a NaN pixel on some GPUs), so the base is clamped: F0 exactly.
+TEST(GrassLightingFormulas, SchlickStaysF0WhenNvRoundsAboveOne) {
+    EXPECT_EQ(schlickF(1.0f + 1e-6f), GRASS_F0);
+    EXPECT_EQ(schlickF(1.5f), GRASS_F0);
+}
+
 TEST(GrassLightingFormulas, GgxPeakIsOneOverPiAlphaSquared) {
     // α is the roughness itself: D(1, α) = 1/(π α²), not 1/(π α⁴).
     EXPECT_NEAR(ggxD(1.0f, 0.5f), 1.0f / (PI * 0.25f), 1e-5f);
