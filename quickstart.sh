@@ -48,8 +48,14 @@ if ((${#missing[@]})); then
 fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
+# ccache keeps the compiled objects of earlier runs (~/.cache/ccache): a second run on the same
+# machine, or CI on a machine that keeps its cache, recompiles only what changed.
+launcher=()
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
 echo "== configuring and building (build/, $jobs jobs)"
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_WERROR=ON >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_WERROR=ON "${launcher[@]}" >/dev/null
 cmake --build build -j "$jobs"
 
 if [ "$mode" = run ]; then
@@ -74,7 +80,7 @@ ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600 || status=1
 fuzz_seconds="${GRASS_FUZZ_SECONDS:-20}"
 echo "== fuzzing the file readers (build-fuzz/, clang, ${fuzz_seconds} s per target)"
 if cmake -S tests/fuzz -B build-fuzz -G Ninja -DCMAKE_C_COMPILER=clang \
-    -DCMAKE_CXX_COMPILER=clang++ >/dev/null && cmake --build build-fuzz -j "$jobs"; then
+    -DCMAKE_CXX_COMPILER=clang++ "${launcher[@]}" >/dev/null && cmake --build build-fuzz -j "$jobs"; then
   tests/fuzz/run_fuzz.sh -j "$jobs" build-fuzz "$fuzz_seconds" || status=1
   # The same build holds the unit tests of core and ui (no GL) under these sanitizers; the whole
   # suite, GL and command line included, runs under them in .ci/sanitize. Bounded, so that a

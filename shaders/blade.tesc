@@ -11,16 +11,21 @@ layout(vertices = 1) out;
 
 in int vBladeIndex[];
 out int tcBladeIndex[];
+// The blade's LOD and how far it has morphed towards the next (lod.glsl's lodMorph).
+patch out vec2 tcLodMorph;
 
 uniform float uTessLevel;
 uniform vec3 uCameraPosition;
 uniform float uLodDistance;
+uniform float uLodBlend;  // 0: LODs switch hard
 
 void main() {
     int index = vBladeIndex[0];
     tcBladeIndex[gl_InvocationID] = index;
     Blade blade = fetchBlade(uint(index));
-    int lod = bladeLod(distance(blade.v0Theta.xyz, uCameraPosition), uLodDistance);
+    float toCamera = distance(blade.v0Theta.xyz, uCameraPosition);
+    int lod = bladeLod(toCamera, uLodDistance);
+    tcLodMorph = vec2(float(lod), lodMorph(toCamera, uLodDistance, lod, uLodBlend));
     float level = blade.v1H.w > 0.0 ? float(lodSegments(int(uTessLevel), lod)) : 0.0;
     // Quads domain: outer 0 and 2 are the u = 0 and u = 1 edges (along v), 1 and 3 along u.
     float across = lodFolded(lod) ? 2.0 : 1.0;

@@ -1,11 +1,11 @@
 #version 450 core
 // Tessellation evaluation: bend the unit quad (u, v) onto the blade curve (SPEC §7).
-#include "blade_geometry.glsl"
-#include "blade_shade.glsl"
+#include "blade_lod_blend.glsl"
 
 layout(quads, equal_spacing, ccw) in;
 
 in int tcBladeIndex[];
+patch in vec2 tcLodMorph;  // the blade's LOD and its morph towards the next (blade.tesc)
 
 uniform float uWidthScale;  // 1; wider in the editor's thinned picture while the user interacts
 uniform mat4 uViewProj;
@@ -32,14 +32,16 @@ void main() {
     bool folded = gl_TessLevelOuter[1] > 1.5;
     BladeShapeParams shape = BladeShapeParams(uShape, uTipStart, gl_TessLevelOuter[0], uViewProj,
                                               uPixelScale, folded);
-    BladeSurfacePoint point = bladeSurface(blade, gl_TessCoord.x, gl_TessCoord.y, shape);
+    BladeLodPoints points = bladeLodPoints(blade, gl_TessCoord.x, gl_TessCoord.y, shape,
+                                           int(tcLodMorph.x + 0.5), tcLodMorph.y);
+    BladeSurfacePoint point = blendedLodPoint(points);
     vPosition = point.position;
     vNormal = point.normal;
     vUp = blade.upS.xyz;
     vHeight = point.v;
     vBladeIndex = uint(tcBladeIndex[0]);
 #ifdef GRASS_LIGHT_PER_VERTEX
-    vLitColor = shadeBlade(point.position, point.normal, vUp, point.v, vBladeIndex);
+    vLitColor = shadeBladeAtLod(points, vUp, vBladeIndex);
 #endif
     gl_Position = uViewProj * vec4(point.position, 1.0);
 }

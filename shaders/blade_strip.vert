@@ -9,9 +9,7 @@
 // GRASS_LIGHT_PER_VERTEX (a program variant, not a uniform: llvmpipe runs both sides of a
 // uniform branch, and the unused per-vertex lighting cost 0.67 s of the 1.7 s that every blade
 // of projects/nature drawn in full took) lights each vertex and hands the colour on.
-#include "blade_geometry.glsl"
-#include "blade_shade.glsl"
-#include "lod.glsl"
+#include "blade_lod_blend.glsl"
 
 uniform mat4 uViewProj;
 uniform int uSegments;
@@ -20,6 +18,10 @@ uniform int uShape;
 uniform float uTipStart;
 uniform float uPixelScale;  // projection[1][1] · viewport height / 2; 0: no width correction
 uniform float uWidthScale;  // 1; wider in the editor's thinned picture while the user interacts
+// The blend towards the next LOD (lod.glsl's lodMorph): the LOD distance the cull pass sorted
+// by (from uCameraPosition, blade_shade.glsl's), and the band's share; 0 switches LODs hard.
+uniform float uLodDistance;
+uniform float uLodBlend;
 
 out vec3 vPosition;
 out vec3 vNormal;
@@ -54,7 +56,10 @@ void main() {
     float v = float(row) / float(uSegments);
     BladeShapeParams shape =
         BladeShapeParams(uShape, uTipStart, float(uSegments), uViewProj, uPixelScale, folded);
-    BladeSurfacePoint point = bladeSurface(blade, u, v, shape);
+    float morph =
+        lodMorph(distance(blade.v0Theta.xyz, uCameraPosition), uLodDistance, uLod, uLodBlend);
+    BladeLodPoints points = bladeLodPoints(blade, u, v, shape, uLod, morph);
+    BladeSurfacePoint point = blendedLodPoint(points);
     // Padding blades (h = 0) collapse to a point and produce no fragments.
     if (blade.v1H.w <= 0.0) point.position = blade.v0Theta.xyz;
     vPosition = point.position;
@@ -63,7 +68,7 @@ void main() {
     vHeight = v;
     vBladeIndex = bladeIndex;
 #ifdef GRASS_LIGHT_PER_VERTEX
-    vLitColor = shadeBlade(point.position, point.normal, vUp, v, bladeIndex);
+    vLitColor = shadeBladeAtLod(points, vUp, bladeIndex);
 #endif
     gl_Position = uViewProj * vec4(point.position, 1.0);
 }

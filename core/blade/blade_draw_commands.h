@@ -34,6 +34,33 @@ inline int lodSegments(int fullSegments, int lod) {
     return std::max(fullSegments >> lod, 1);
 }
 
+// lod.glsl's bladeLod: LOD 0 up to lodDistance, LOD 1 up to 3·lodDistance, LOD 2 beyond;
+// lodDistance ≤ 0 keeps every blade at LOD 0.
+inline int bladeLod(float distance, float lodDistance) {
+    if (lodDistance <= 0.0f || distance < lodDistance)
+        return 0;
+    return distance < 3.0f * lodDistance ? 1 : 2;
+}
+
+// LOD_BLEND in lod.glsl: the share of each LOD's distance range over which its blades morph
+// into the next LOD's shape. A quarter keeps the morphing blades (three surface evaluations a
+// vertex instead of one) a small part of the field, and is wide enough that a blade crossing
+// it moves by a fraction of a pixel a frame at walking speed.
+inline constexpr float LOD_BLEND = 0.25f;
+
+// lod.glsl's lodMorph (continuous level of detail, issue 30 item 12): how far a blade of LOD
+// `lod` at `distance` has morphed towards LOD lod + 1, rising linearly from 0 to 1 over the last
+// `blend` share of its range ([0, d) for LOD 0, [d, 3d) for LOD 1), so that at the switch the
+// two LODs draw the same surface. 0 for the last LOD, without LODs and with blend ≤ 0.
+inline float lodMorph(float distance, float lodDistance, int lod, float blend) {
+    if (lodDistance <= 0.0f || blend <= 0.0f || lod >= LOD_COUNT - 1)
+        return 0.0f;
+    const float start = lod == 0 ? 0.0f : lodDistance;
+    const float end = lod == 0 ? lodDistance : 3.0f * lodDistance;
+    const float band = std::min(blend, 1.0f) * (end - start);
+    return std::clamp((distance - (end - band)) / band, 0.0f, 1.0f);
+}
+
 // FOLDED_LODS in shaders/include/lod.glsl: the LODs, from the nearest, whose blades keep a
 // vertex column on the midrib so the V fold of SPEC §7 shows. Beyond the LOD distance a blade is
 // a few pixels wide and the fold cannot be seen; the two edges alone draw it with half the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "blade/blade_draw_commands.h"
 #include "scene/cull_rules.h"
 #include "scene/frustum.h"
 
@@ -32,9 +33,7 @@ float stemSetBoundRadius(const StemSetInstance& set, int levels) {
 }
 
 int stemSetLod(float distanceM, float lodDistanceM) {
-    if (lodDistanceM <= 0.0f || distanceM < lodDistanceM)
-        return 0;
-    return distanceM < 3.0f * lodDistanceM ? 1 : 2;
+    return bladeLod(distanceM, lodDistanceM);
 }
 
 void cullStemSets(std::span<const StemSetInstance> sets, int levels, const glm::mat4& viewProj,

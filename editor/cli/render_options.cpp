@@ -68,6 +68,10 @@ void describeImageOptions(ArgParser& parser, RenderArgs& args) {
                   "half up to 3·M, a quarter beyond",
                   &args.lodDistanceM, 0.0, 1e5,
                   "the project's lod_distance; 0: full detail everywhere");
+    parser.number("--lod-blend", "SHARE",
+                  "blades morph into the next level of detail over the last SHARE of each "
+                  "level's distance range, so nothing pops where the level changes",
+                  &args.lodBlend, 0.0, 1.0, "0.25; 0: levels switch hard");
     addPresetOption(parser, &args.preset);
     parser.choice("--msaa", {"project", "0", "1", "2", "4", "8"},
                   "multisample anti-aliasing samples per pixel", &args.msaa);
@@ -174,6 +178,7 @@ void applyRenderOverrides(const RenderArgs& args, render::RenderOptions& options
     }
     options.timeS = static_cast<float>(args.timeS);
     options.lightPerVertex = args.lightPerVertex;
+    options.lodBlend = static_cast<float>(args.lodBlend);
     if (args.lightPerPixel)
         options.pixelLitLods = core::LOD_COUNT;
     if (args.snow)

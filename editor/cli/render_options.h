@@ -26,6 +26,7 @@ struct RenderArgs {
     std::string snowExposure = "auto";
     double timeS = 0.0;
     double lodDistanceM = render::CullSettings{}.lodDistanceM;
+    double lodBlend = core::LOD_BLEND;
     int width = 0, height = 0, frames = 3, blades = 60000, turntable = 0;
     std::uint64_t seed = 0;
     bool glDebug = gl::GL_DEBUG_BY_DEFAULT;

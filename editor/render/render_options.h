@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "blade/blade_draw_commands.h"
 #include "project/project.h"
 #include "render/cull_pass.h"
 #include "render/field_gpu.h"
@@ -65,6 +66,9 @@ struct RenderOptions {
     // Far blades blend towards the quad below 1 px of projected width (SPEC §7); off only for
     // tests that measure a shape alone.
     bool widthCorrection = true;
+    // Continuous level of detail: the share of each LOD's distance range over which its blades
+    // morph into the next LOD's shape (lod.glsl's lodMorph); 0 switches LODs hard, as before.
+    float lodBlend = core::LOD_BLEND;
     // Blade widths × this: 1, except in the editor's thinned picture while the user interacts,
     // where fewer, wider blades keep the field's coverage (core/quality/interaction_quality.h).
     float widthScale = 1.0f;

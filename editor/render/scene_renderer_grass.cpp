@@ -103,6 +103,7 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     setAll("uWidthScale", options.widthScale);
     setAll("uCameraPosition", camera.position());
     setAll("uLodDistance", std::max(options.cull.lodDistanceM, 0.0f));
+    setAll("uLodBlend", options.lodBlend);
     setAll("uFadeOut", hybrid ? options.billboards.crossFadeM : glm::vec2(0.0f));
     setAll("uAlbedoView", options.albedoView ? 1 : 0);
     setAll("uSnowTips", mSnowLies ? 1 : 0);

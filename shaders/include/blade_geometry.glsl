@@ -1,6 +1,8 @@
 // The curve-and-shape evaluation both geometry paths share (SPEC §7): the tessellation
 // evaluation shader and the instanced-strip vertex shader call bladeSurface with the same
 // (u, v) and get the same point, so the two paths draw the same blade.
+#ifndef GRASS_BLADE_GEOMETRY_GLSL
+#define GRASS_BLADE_GEOMETRY_GLSL
 #include "blade.glsl"
 #include "bezier.glsl"
 #include "shapes.glsl"
@@ -57,3 +59,4 @@ BladeSurfacePoint bladeSurface(Blade blade, float u, float v, BladeShapeParams p
     point.v = v;
     return point;
 }
+#endif

@@ -2,6 +2,8 @@
 // and the vertex stages (per-vertex lighting, the article's choice; GRASS_LIGHT_PER_VERTEX): the
 // grass lighting of SPEC §10 with the blade's baked AO, blurred terrain normal and water, or the
 // wrapped Lambert (uGrassLighting = 0). Blades are two-sided: the normal turns to the viewer.
+#ifndef GRASS_BLADE_SHADE_GLSL
+#define GRASS_BLADE_SHADE_GLSL
 #include "blade_texels.glsl"
 #include "grass_lighting.glsl"
 
@@ -60,3 +62,4 @@ vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeInd
     surface.eyeDistance = eyeDistance;
     return grassLighting(surface);
 }
+#endif

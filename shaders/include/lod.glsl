@@ -3,6 +3,9 @@
 // control shader (which picks the level), so both paths bend the same polyline at a distance.
 // LOD 0 up to lodDistance, LOD 1 up to 3·lodDistance, LOD 2 beyond; each halves the segments
 // along the blade. lodDistance ≤ 0 keeps every blade at LOD 0.
+// Included by blade_lod_blend.glsl and by the stages that include it: defined once.
+#ifndef GRASS_LOD_GLSL
+#define GRASS_LOD_GLSL
 #define LOD_COUNT 3
 
 int bladeLod(float distance, float lodDistance) {
@@ -24,3 +27,22 @@ bool lodFolded(int lod) {
 int lodSegments(int fullSegments, int lod) {
     return max(fullSegments >> lod, 1);
 }
+
+// The share of each LOD's distance range over which its blades morph into the next LOD's
+// shape (core::LOD_BLEND; RenderOptions::lodBlend, `grass render --lod-blend`).
+#define LOD_BLEND 0.25
+
+// Continuous level of detail (issue 30 item 12): over the last `blend` share of its distance
+// range (LOD 0: [0, d), LOD 1: [d, 3d)) a blade of LOD k moves linearly towards LOD k + 1's
+// surface (blade_lod_blend.glsl), 0 at the band's start, 1 at the switch,
+// where the two LODs therefore draw the same blade and nothing pops. 0 for the last LOD, without
+// LODs (lodDistance ≤ 0) and with blend ≤ 0 (the hard switches of before). core::lodMorph is the
+// tested twin.
+float lodMorph(float distance, float lodDistance, int lod, float blend) {
+    if (lodDistance <= 0.0 || blend <= 0.0 || lod >= LOD_COUNT - 1) return 0.0;
+    float start = lod == 0 ? 0.0 : lodDistance;
+    float end = lod == 0 ? lodDistance : 3.0 * lodDistance;
+    float band = min(blend, 1.0) * (end - start);
+    return clamp((distance - (end - band)) / band, 0.0, 1.0);
+}
+#endif

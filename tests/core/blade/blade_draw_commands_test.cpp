@@ -2,6 +2,8 @@
 // LOD's strip vertex count follows its segments and whether it keeps the midrib column.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "blade/blade_draw_commands.h"
 
 namespace grass::core {
@@ -25,6 +27,59 @@ TEST(BladeDrawCommands, NearStripsKeepTheMidribAndFarStripsDrawTheEdgesAlone) {
     }
     // A single segment never drops below one quad.
     EXPECT_EQ(emptyBladeDrawCommands(1)[2].count, 4u);
+}
+
+TEST(BladeLod, FullUpToTheDistanceHalfToThreeTimesItQuarterBeyond) {
+    EXPECT_EQ(bladeLod(7.99f, 8.0f), 0);
+    EXPECT_EQ(bladeLod(8.0f, 8.0f), 1);
+    EXPECT_EQ(bladeLod(23.99f, 8.0f), 1);
+    EXPECT_EQ(bladeLod(24.0f, 8.0f), 2);
+    EXPECT_EQ(bladeLod(1e6f, 0.0f), 0) << "no LOD distance: full detail everywhere";
+}
+
+// The blend band of lod.glsl's lodMorph: 0 before it, linear across it, 1 at the switch, with
+// the band a share of each LOD's own range (LOD 0: [0, d), LOD 1: [d, 3d)).
+TEST(BladeLod, MorphRisesOverTheLastShareOfEachRange) {
+    const float d = 8.0f;
+    // LOD 0, band [6, 8).
+    EXPECT_EQ(lodMorph(5.9f, d, 0, 0.25f), 0.0f);
+    EXPECT_NEAR(lodMorph(6.5f, d, 0, 0.25f), 0.25f, 1e-6f);
+    EXPECT_NEAR(lodMorph(7.0f, d, 0, 0.25f), 0.5f, 1e-6f);
+    EXPECT_NEAR(lodMorph(7.999f, d, 0, 0.25f), 1.0f, 1e-3f);
+    // LOD 1, range [8, 24), band [20, 24): not [22, 24) as a share of d would give.
+    EXPECT_EQ(lodMorph(19.9f, d, 1, 0.25f), 0.0f);
+    EXPECT_NEAR(lodMorph(21.0f, d, 1, 0.25f), 0.25f, 1e-6f);
+    EXPECT_NEAR(lodMorph(23.999f, d, 1, 0.25f), 1.0f, 1e-3f);
+    // The last LOD has nothing to morph into; no blend and no LODs switch hard.
+    EXPECT_EQ(lodMorph(100.0f, d, LOD_COUNT - 1, 0.25f), 0.0f);
+    EXPECT_EQ(lodMorph(7.9f, d, 0, 0.0f), 0.0f);
+    EXPECT_EQ(lodMorph(7.9f, 0.0f, 0, 0.25f), 0.0f);
+    // A whole-range blend starts at the range's start.
+    EXPECT_NEAR(lodMorph(4.0f, d, 0, 1.0f), 0.5f, 1e-6f);
+    EXPECT_NEAR(lodMorph(16.0f, d, 1, 2.0f), 0.5f, 1e-6f) << "shares above 1 clamp to 1";
+}
+
+// Walking out through the field, a blade's (LOD, morph) never jumps: each switch happens where
+// the morph has reached 1, which is where the coarser LOD's surface (morph 0) is the same.
+TEST(BladeLod, MorphReachesOneExactlyWhereTheLodChanges) {
+    const float d = 5.0f;
+    int previousLod = 0;
+    float previousMorph = 0.0f;
+    for (int i = 1; i <= 40000; ++i) {
+        const float distance = 0.001f * static_cast<float>(i);
+        const int lod = bladeLod(distance, d);
+        const float morph = lodMorph(distance, d, lod, LOD_BLEND);
+        if (lod != previousLod) {
+            EXPECT_EQ(lod, previousLod + 1) << distance;
+            EXPECT_GT(previousMorph, 0.998f) << "switched before the blend was done at " << distance;
+            EXPECT_LT(morph, 1e-6f) << distance;
+        } else {
+            EXPECT_LE(std::abs(morph - previousMorph), 0.002f) << "a jump at " << distance;
+        }
+        previousLod = lod;
+        previousMorph = morph;
+    }
+    EXPECT_EQ(previousLod, 2);
 }
 
 }  // namespace
