@@ -676,6 +676,23 @@ HWY_EXPORT(BlockLanes);
 HWY_EXPORT(NativeLanes);
 HWY_EXPORT(Target);
 
+// Every call goes through these, written inside simd_step: HWY_DYNAMIC_DISPATCH names its
+// function relative to where it is written, and where one target alone is compiled
+// (HWY_COMPILE_ONLY_EMU128 in the sanitizer builds) it becomes N_EMU128::Name, which resolves
+// only here.
+std::size_t blockLanes() {
+    return HWY_DYNAMIC_DISPATCH(BlockLanes)();
+}
+std::size_t nativeLanes() {
+    return HWY_DYNAMIC_DISPATCH(NativeLanes)();
+}
+std::int64_t target() {
+    return HWY_DYNAMIC_DISPATCH(Target)();
+}
+void stepBlocks(const Job& job, std::size_t firstBlock, std::size_t endBlock) {
+    HWY_DYNAMIC_DISPATCH(StepBlocks)(job, firstBlock, endBlock);
+}
+
 // Below this many blocks a task, waking a worker costs more than it saves.
 constexpr std::size_t MIN_BLOCKS_PER_TASK = 64;
 
@@ -745,14 +762,14 @@ void stepPhysicsSimd(std::span<Blade> blades, std::span<float> eta,
     job.eta = eta;
     job.restTips = restTips;
     job.load = load;
-    const std::size_t lanes = HWY_DYNAMIC_DISPATCH(simd_step::BlockLanes)();
+    const std::size_t lanes = simd_step::blockLanes();
     const std::size_t blocks = blades.size() / lanes;
     ThreadPool& pool = ThreadPool::shared();
     const std::size_t threads = threadCount > 0 ? threadCount : pool.workerCount() + 1;
     const std::size_t tasks =
         std::clamp<std::size_t>(blocks / simd_step::MIN_BLOCKS_PER_TASK, 1, threads);
     pool.run(blocks, tasks, [&job](std::size_t begin, std::size_t end) {
-        HWY_DYNAMIC_DISPATCH(simd_step::StepBlocks)(job, begin, end);
+        simd_step::stepBlocks(job, begin, end);
     });
     // The last partial block: the scalar reference.
     for (std::size_t i = blocks * lanes; i < blades.size(); ++i)
@@ -775,11 +792,11 @@ void stepPhysicsOn(CpuPhysics path, std::span<Blade> blades, std::span<float> et
 }
 
 std::string physicsSimdTarget() {
-    return hwy::TargetName(HWY_DYNAMIC_DISPATCH(simd_step::Target)());
+    return hwy::TargetName(simd_step::target());
 }
 
 std::size_t physicsSimdLanes() {
-    return HWY_DYNAMIC_DISPATCH(simd_step::NativeLanes)();
+    return simd_step::nativeLanes();
 }
 
 }  // namespace grass::core

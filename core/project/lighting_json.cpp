@@ -12,7 +12,7 @@ using json::NumberRule;
 using settings::field;
 using settings::Kind;
 
-constexpr std::array<std::string_view, 2> MODEL_NAMES{"grass", "simple"};
+constexpr std::array<std::string_view, 3> MODEL_NAMES{"grass", "simple", "article"};
 // Colours multiply the sun: above 4 a typo would wash the frame out.
 constexpr NumberRule COLOR_RULE{0.0, 4.0};
 constexpr NumberRule WEIGHT_RULE{0.0, 10.0};
@@ -35,7 +35,8 @@ constexpr std::array LIGHTING{
         {.key = "model",
          .names = MODEL_NAMES,
          .label = "lighting",
-         .allowedText = "`\"grass\"` (SPEC §10) or `\"simple\"` (wrapped Lambert, for comparison)"}),
+         .allowedText = "`\"grass\"` (SPEC §10), `\"simple\"` (wrapped Lambert, for comparison) or "
+                        "`\"article\"` (article 003's model exactly as written)"}),
     field<&GrassLightingDesc::diffuseLow>(
         {.key = "diffuse_low", .kind = Kind::Colour, .rule = COLOR_RULE,
          .help = "the ramp at N·L = −1"}),

@@ -135,9 +135,11 @@ struct SunDesc {
     bool operator==(const SunDesc&) const = default;
 };
 
-// How blades are lit: SPEC §10's grass model, or the foundation's wrapped Lambert (kept for
-// comparison and for the lighting-off golden images).
-enum class LightingModel { Grass, Simple };
+// How blades are lit: SPEC §10's grass model as we draw it, the foundation's wrapped Lambert
+// (kept for comparison and for the lighting-off golden images), or article 003's model exactly
+// as the article writes it (no N·L on the lobes, α = roughness², no clamp, no ambient;
+// docs/rendering.md compares them).
+enum class LightingModel { Grass, Simple, Article };
 
 // Grass lighting of SPEC §10 (article 003). Colours are multipliers of the sun colour; distances
 // are metres. The AO and blurred-normal terms are baked per blade when the scene is built.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "scene/grass_lighting_formulas.h"
+
 namespace grass::core {
 
 LightingBlock frameLighting(const GrassLightingDesc& lighting, const SunDesc& sun,
@@ -12,7 +14,9 @@ LightingBlock frameLighting(const GrassLightingDesc& lighting, const SunDesc& su
     block.sunColor = sun.color * sun.intensity;
     block.skyColor = skyColor;
     block.groundColor = groundColor;
-    block.grassLighting = lighting.model == LightingModel::Grass ? 1 : 0;
+    block.grassLighting = lighting.model == LightingModel::Grass     ? GRASS_LIGHTING
+                          : lighting.model == LightingModel::Article ? ARTICLE_LIGHTING
+                                                                     : SIMPLE_LIGHTING;
     block.diffuseLow = lighting.diffuseLow;
     block.diffuseMid = lighting.diffuseMid;
     block.diffuseHigh = lighting.diffuseHigh;

@@ -7,6 +7,8 @@
 // the way the light travels; colours linear RGB; distances metres.
 #pragma once
 
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 #include "scene/lighting_block.h"
@@ -39,13 +41,25 @@ float ggxD(float nh, float alpha);
 // Fresnel-Schlick on n·v (as the article writes it): F0 + (1 − F0)(1 − n·v)⁵; n·v in [0, 1].
 float schlickF(float nv);
 
-// The three lobes 0.5·D(r) + 0.3·D(r/2) + 0.2·D(r/4), r = max(water, 0.02), times F(n·v) and
-// n·l, at most 4; 0 where the light is behind `n`.
-float specularLobes(glm::vec3 n, glm::vec3 toLight, glm::vec3 toEye, float water);
+// LightingBlock::grassLighting values: the wrapped Lambert, SPEC §10 as we draw it, and the
+// article's model as written (LightingModel::Simple, Grass, Article).
+inline constexpr std::int32_t SIMPLE_LIGHTING = 0;
+inline constexpr std::int32_t GRASS_LIGHTING = 1;
+inline constexpr std::int32_t ARTICLE_LIGHTING = 2;
+
+// The diffuse ramp: n·l ∈ [−1, 0] maps diffuseLow → diffuseMid, [0, 1] diffuseMid → diffuseHigh.
+glm::vec3 diffuseRamp(float nl, const LightingBlock& lighting);
+
+// The three lobes 0.5·D(r) + 0.3·D(r/2) + 0.2·D(r/4), r = max(water, 0.02), times F(n·v).
+// Ours (article = 0): α = r, times n·l (0 where the light is behind `n`), at most 4. The
+// article's (article = 1): α = r², no n·l factor, no clamp.
+float specularLobes(glm::vec3 n, glm::vec3 toLight, glm::vec3 toEye, float water, float article);
 
 // The lit colour of a grass pixel under `lighting` (the LightingBlock the GLSL reads as
-// uniforms): the diffuse ramp, specular, transmission and SSS terms of SPEC §10 mixed by water,
-// darkened by the AO, plus the sky/ground ambient.
+// uniforms): the diffuse ramp, specular, transmission and SSS terms of SPEC §10 mixed by water;
+// ours darkens it by the AO and adds the sky/ground ambient, the article's
+// (lighting.grassLighting == ARTICLE_LIGHTING) does neither and lights its SSS term with the
+// ramp through the SSS normal instead of our wrapped light.
 glm::vec3 grassLighting(const GrassSurface& s, const LightingBlock& lighting);
 
 }  // namespace grass::core

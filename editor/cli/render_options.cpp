@@ -44,8 +44,9 @@ void describeImageOptions(ArgParser& parser, RenderArgs& args) {
                   "billboard wind animation: a CPU offset per cluster (one draw each), or in the "
                   "shader by vertex position or by object centre",
                   &args.animation);
-    parser.choice("--lighting", {"project", "grass", "simple"},
-                  "blade lighting: the grass model of SPEC §10 or a wrapped Lambert",
+    parser.choice("--lighting", {"project", "grass", "simple", "article"},
+                  "blade lighting: the grass model of SPEC §10, a wrapped Lambert, or article "
+                  "003's model exactly as written (docs/rendering.md compares them)",
                   &args.lighting);
     parser.flag("--light-per-vertex",
                 "light blades per vertex (as the article does) instead of per pixel",
@@ -192,8 +193,9 @@ void applyRenderOverrides(const RenderArgs& args, render::RenderOptions& options
         if (auto animation = core::parseBillboardAnimation(args.animation))
             options.billboards.animation = *animation;
     if (args.lighting != "project")
-        options.lighting.model =
-            args.lighting == "grass" ? core::LightingModel::Grass : core::LightingModel::Simple;
+        options.lighting.model = args.lighting == "grass"     ? core::LightingModel::Grass
+                                 : args.lighting == "article" ? core::LightingModel::Article
+                                                              : core::LightingModel::Simple;
     if (args.shape != "project") {
         if (auto shape = core::parseBladeShape(args.shape))
             options.shape = *shape;

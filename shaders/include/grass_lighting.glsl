@@ -6,6 +6,11 @@
 //   transmission through the blade, thinned by the grass AO (dense grass passes less light);
 //   SSS: wrapped light on mix(terrainN, blurredTerrainN, sssIntensity);
 //   final = mix(diffuse, specular + transmission + sss, water), plus sky ambient × AO.
+// uGrassLighting 2 (LightingModel::Article) draws the article's model as written instead of
+// ours: lobes without our N·L factor and clamp, α = roughness², SSS as the ramp lit through the
+// SSS normal, no ambient and no AO on the lit colour (docs/rendering.md shows the two side by
+// side). It is chosen by arithmetic, not by a branch: llvmpipe runs both sides of a uniform
+// branch, so ours pays a few multiplications for it and nothing more.
 // The article lights per vertex; per pixel costs the same on the strips here (the fragment
 // count, not the vertex count, dominates on a software rasterizer) and keeps highlights round.
 // core/scene/grass_lighting_formulas.h is this file's C++ twin, function for function; a GL test
@@ -41,43 +46,53 @@ float schlickF(float nv) {
     return GRASS_F0 + (1.0 - GRASS_F0) * pow(max(1.0 - nv, 0.0), 5.0);
 }
 
-// 0.5·S(water) + 0.3·S(water/2) + 0.2·S(water/4): the argument is each lobe's roughness.
-float specularLobes(vec3 n, vec3 toLight, vec3 toEye, float water) {
-    float nl = dot(n, toLight);
-    if (nl <= 0.0) return 0.0;
-    vec3 h = normalize(toLight + toEye);
-    float nh = max(dot(n, h), 0.0);
+// The diffuse ramp: n·l ∈ [−1, 0] maps low → mid, [0, 1] mid → high.
+vec3 diffuseRamp(float nl) {
+    return nl > 0.0 ? mix(uDiffuseMid, uDiffuseHigh, nl) : mix(uDiffuseLow, uDiffuseMid, nl + 1.0);
+}
+
+// 0.5·S(water) + 0.3·S(water/2) + 0.2·S(water/4): the argument is each lobe's roughness r,
+// floored at 0.02. Ours (article 0): α = r, times n·l (0 where the light is behind n), at most 4.
+// The article's (article 1): α = r², no n·l, no clamp.
+float specularLobes(vec3 n, vec3 toLight, vec3 toEye, float water, float article) {
+    float cosine = mix(max(dot(n, toLight), 0.0), 1.0, article);
+    // The eye looking straight into the light has no half vector: no lobe faces it.
+    vec3 halfway = toLight + toEye;
+    float nh = dot(halfway, halfway) > 1e-12 ? max(dot(n, normalize(halfway)), 0.0) : 0.0;
     float f = schlickF(max(dot(n, toEye), 0.0));
     float r = max(water, 0.02);
-    float lobes = 0.5 * ggxD(nh, r) + 0.3 * ggxD(nh, 0.5 * r) + 0.2 * ggxD(nh, 0.25 * r);
-    // The lobes are normalized distributions; their peaks reach tens. Clamp so a perfect
+    float lobes = 0.5 * ggxD(nh, mix(r, r * r, article)) +
+                  0.3 * ggxD(nh, mix(0.5 * r, 0.25 * r * r, article)) +
+                  0.2 * ggxD(nh, mix(0.25 * r, 0.0625 * r * r, article));
+    // The lobes are normalized distributions; their peaks reach tens. Ours clamps so a perfect
     // mirror angle on one blade cannot flash a pixel white.
-    return min(lobes * f * nl, 4.0);
+    return min(lobes * f * cosine, mix(4.0, 3.0e38, article));
 }
 
 vec3 grassLighting(GrassSurface s) {
+    float article = uGrassLighting == 2 ? 1.0 : 0.0;
     vec3 toLight = -uSunDirection;
     vec3 sssNormal = normalize(mix(s.terrainNormal, s.blurredNormal, uSssIntensity));
     vec3 diffuseNormal = normalize(mix(s.bladeNormal, sssNormal, uTerrainNormalWeight));
 
-    float nl = dot(diffuseNormal, toLight);
-    vec3 ramp = nl > 0.0 ? mix(uDiffuseMid, uDiffuseHigh, nl)
-                         : mix(uDiffuseLow, uDiffuseMid, nl + 1.0);
-    vec3 diffuse = s.albedo * uSunColor * ramp;
+    vec3 diffuse = s.albedo * uSunColor * diffuseRamp(dot(diffuseNormal, toLight));
 
     float fade = smoothstep(uSpecularFade.x, uSpecularFade.y, s.eyeDistance);
-    float specular = s.height * specularLobes(s.bladeNormal, toLight, s.toEye, s.water) +
-                     specularLobes(s.terrainNormal, toLight, s.toEye, s.water);
+    float specular = s.height * specularLobes(s.bladeNormal, toLight, s.toEye, s.water, article) +
+                     specularLobes(s.terrainNormal, toLight, s.toEye, s.water, article);
     vec3 specularTerm = uSunColor * (uSpecular * fade * specular);
 
     vec3 fakeN = -normalize(mix(s.bladeNormal, toLight, uTransmissionDistortion));
     float through = pow(clamp(dot(fakeN, s.toEye), 0.0, 1.0), uTransmissionPower);
     vec3 transmissionTerm = uTransmission * through * s.ao * uSunColor * s.albedo;
 
+    // Ours: wrapped light on the SSS normal. The article's: its SSS is the blurred shading
+    // normal itself, so the ramp lit through it.
     float wrapped = clamp(0.5 + 0.5 * dot(sssNormal, toLight), 0.0, 1.0);
-    vec3 sssTerm = uSss * wrapped * wrapped * uSunColor * s.albedo;
+    vec3 sssLight = mix(vec3(wrapped * wrapped), diffuseRamp(dot(sssNormal, toLight)), article);
+    vec3 sssTerm = uSss * sssLight * uSunColor * s.albedo;
 
     vec3 lit = mix(diffuse, specularTerm + transmissionTerm + sssTerm, s.water);
     vec3 ambient = mix(uGroundColor, uSkyColor, 0.5 + 0.5 * sssNormal.y) * 0.35 * s.albedo;
-    return lit * mix(1.0, s.ao, 0.5) + ambient * s.ao;
+    return lit * mix(1.0, s.ao, 0.5 - 0.5 * article) + (1.0 - article) * ambient * s.ao;
 }

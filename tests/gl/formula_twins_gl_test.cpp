@@ -109,7 +109,8 @@ glm::vec3 randomColor(Rng& rng, float hi) {
     return {rng.uniform(0.0f, hi), rng.uniform(0.0f, hi), rng.uniform(0.0f, hi)};
 }
 
-// The project's default lighting, then seeded ones over the settings' whole ranges.
+// The project's default lighting, then seeded ones over the settings' whole ranges, then two of
+// them with the article's model.
 std::vector<core::LightingBlock> lightingBlocks() {
     std::vector<core::LightingBlock> blocks{core::frameLighting(
         core::GrassLightingDesc{}, core::SunDesc{}, {0.5f, 0.7f, 1.0f}, {0.3f, 0.25f, 0.2f})};
@@ -132,7 +133,13 @@ std::vector<core::LightingBlock> lightingBlocks() {
         b.sssIntensity = rng.uniform();
         b.specularFadeM.x = rng.uniform(0.0f, 10.0f);
         b.specularFadeM.y = b.specularFadeM.x + rng.uniform(1.0f, 20.0f);
-        b.grassLighting = 1;
+        b.grassLighting = core::GRASS_LIGHTING;
+        blocks.push_back(b);
+    }
+    // The article's model (LightingModel::Article) under the default and a seeded lighting.
+    for (std::size_t i : {std::size_t(0), std::size_t(1)}) {
+        core::LightingBlock b = blocks[i];
+        b.grassLighting = core::ARTICLE_LIGHTING;
         blocks.push_back(b);
     }
     return blocks;
@@ -281,6 +288,7 @@ TEST_F(FormulaTwins, GrassLightingMatchesItsCppTwin) {
             const FormulaCase& c = cases[i];
             const FormulaResult& r = results[i];
             const core::GrassSurface s = c.surface();
+            const float article = blocks[b].grassLighting == core::ARTICLE_LIGHTING ? 1.0f : 0.0f;
             const std::array<Bracket, 4> cpu = bracketOf([&](float scale) {
                 core::GrassSurface scaled = s;
                 scaled.bladeNormal *= scale;
@@ -288,7 +296,8 @@ TEST_F(FormulaTwins, GrassLightingMatchesItsCppTwin) {
                 const glm::vec3 toLight(c.toLightNh);
                 return glm::vec4(
                     core::grassLighting(scaled, blocks[b]),
-                    core::specularLobes(scaled.bladeNormal, toLight, s.toEye, s.water));
+                    core::specularLobes(scaled.bladeNormal, toLight, s.toEye, s.water,
+                                        article));
             });
             for (int k = 0; k < 3; ++k)
                 ASSERT_TRUE(lighting.check(r.lightingLobes[k], cpu[k]))

@@ -52,6 +52,16 @@ TEST(ProjectLighting, EveryFieldRoundTrips) {
     EXPECT_EQ(serializeProject(*again), text);
 }
 
+TEST(ProjectLighting, TheArticleModelIsAChoice) {
+    const auto parsed = parseProject(
+        R"({"format": "grass-project", "version": 1, "lighting": {"model": "article"}})", SOURCE);
+    ASSERT_TRUE(parsed.ok()) << parsed.error().str();
+    EXPECT_EQ(parsed->lighting.model, LightingModel::Article);
+    const auto again = parseProject(serializeProject(*parsed), SOURCE);
+    ASSERT_TRUE(again.ok()) << again.error().str();
+    EXPECT_EQ(again->lighting.model, LightingModel::Article);
+}
+
 TEST(ProjectLighting, BadValuesNameTheirPointer) {
     expectError(R"("model": "phong")", "/lighting/model", "\"phong\"");
     expectError(R"("water": [0.7, 0.2])", "/lighting/water", "");

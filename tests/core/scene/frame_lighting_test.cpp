@@ -5,6 +5,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/grass_lighting_formulas.h"
+
 namespace grass::core {
 namespace {
 
@@ -28,6 +30,18 @@ TEST(FrameLighting, AnEmptyOrReversedSpecularFadeSwitchesOnAtItsNearDistance) {
     const LightingBlock block =
         frameLighting(lighting, SunDesc{}, glm::vec3(0.5f), glm::vec3(0.2f));
     EXPECT_EQ(block.specularFadeM, glm::vec2(0.5f, 6.0f));
+}
+
+// Each model reaches the shaders as its own uGrassLighting value (grass_lighting.glsl).
+TEST(FrameLighting, EachLightingModelHasItsShaderValue) {
+    const auto valueOf = [](LightingModel model) {
+        GrassLightingDesc lighting;
+        lighting.model = model;
+        return frameLighting(lighting, SunDesc{}, glm::vec3(0.5f), glm::vec3(0.2f)).grassLighting;
+    };
+    EXPECT_EQ(valueOf(LightingModel::Simple), SIMPLE_LIGHTING);
+    EXPECT_EQ(valueOf(LightingModel::Grass), GRASS_LIGHTING);
+    EXPECT_EQ(valueOf(LightingModel::Article), ARTICLE_LIGHTING);
 }
 
 }  // namespace

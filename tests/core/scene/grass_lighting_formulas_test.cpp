@@ -20,6 +20,9 @@ constexpr float PI = std::numbers::pi_v<float>;
 constexpr float TOLERANCE = 1e-5f;
 
 const glm::vec3 UP{0.0f, 1.0f, 0.0f};
+// specularLobes' last argument: our lobes, or the article's.
+constexpr float OURS = 0.0f;
+constexpr float ARTICLE = 1.0f;
 
 // A unit vector in the xy plane at `degrees` from +y towards +x.
 glm::vec3 tilted(float degrees) {
@@ -59,7 +62,7 @@ GrassSurface whiteSurface() {
 float lobeSumAt(float degrees) {
     const glm::vec3 dir = tilted(degrees);
     const float cosine = dir.y;
-    return specularLobes(UP, dir, dir, 1.0f) / (schlickF(cosine) * cosine);
+    return specularLobes(UP, dir, dir, 1.0f, OURS) / (schlickF(cosine) * cosine);
 }
 
 TEST(GrassLightingFormulas, SchlickIsF0FacingAndOneAtGrazing) {
@@ -90,7 +93,7 @@ TEST(GrassLightingFormulas, GgxPeakIsOneOverPiAlphaSquared) {
 TEST(GrassLightingFormulas, LobesAtThePeakSumTheirWeightedPeaks) {
     // Light = eye = normal: n·h = n·v = n·l = 1, F = F0. Water 1 → roughness 1, 1/2, 1/4, peaks
     // 1/π, 4/π, 16/π: 0.5·1 + 0.3·4 + 0.2·16 = 4.9 (any two weights swapped gives another sum).
-    EXPECT_NEAR(specularLobes(UP, UP, UP, 1.0f), 0.04f * 4.9f / PI, 1e-6f);
+    EXPECT_NEAR(specularLobes(UP, UP, UP, 1.0f, OURS), 0.04f * 4.9f / PI, 1e-6f);
 }
 
 TEST(GrassLightingFormulas, LobeWeightsAreHalfThreeTenthsAndOneFifth) {
@@ -116,7 +119,7 @@ TEST(GrassLightingFormulas, LobesScaleWithFresnelOnNvAndWithNl) {
     // Light and eye 60° from the normal: n·h = n·v = n·l = 1/2, F = 0.04 + 0.96/32.
     const glm::vec3 dir = tilted(60.0f);
     const float d = 0.5f * ggxD(0.5f, 1.0f) + 0.3f * ggxD(0.5f, 0.5f) + 0.2f * ggxD(0.5f, 0.25f);
-    EXPECT_NEAR(specularLobes(UP, dir, dir, 1.0f), d * (0.04f + 0.96f / 32.0f) * 0.5f, 1e-6f);
+    EXPECT_NEAR(specularLobes(UP, dir, dir, 1.0f, OURS), d * (0.04f + 0.96f / 32.0f) * 0.5f, 1e-6f);
 }
 
 TEST(GrassLightingFormulas, FresnelTakesNvNotNl) {
@@ -125,17 +128,17 @@ TEST(GrassLightingFormulas, FresnelTakesNvNotNl) {
     const glm::vec3 eye = tilted(60.0f);
     const float nh = std::cos(glm::radians(30.0f));
     const float d = 0.5f * ggxD(nh, 1.0f) + 0.3f * ggxD(nh, 0.5f) + 0.2f * ggxD(nh, 0.25f);
-    EXPECT_NEAR(specularLobes(UP, UP, eye, 1.0f), d * (0.04f + 0.96f / 32.0f), 1e-6f);
+    EXPECT_NEAR(specularLobes(UP, UP, eye, 1.0f, OURS), d * (0.04f + 0.96f / 32.0f), 1e-6f);
 }
 
 TEST(GrassLightingFormulas, LobesVanishWithTheLightBehind) {
-    EXPECT_EQ(specularLobes(UP, -UP, UP, 1.0f), 0.0f);
-    EXPECT_EQ(specularLobes(UP, glm::vec3(1.0f, 0.0f, 0.0f), UP, 1.0f), 0.0f);
+    EXPECT_EQ(specularLobes(UP, -UP, UP, 1.0f, OURS), 0.0f);
+    EXPECT_EQ(specularLobes(UP, glm::vec3(1.0f, 0.0f, 0.0f), UP, 1.0f, OURS), 0.0f);
 }
 
 TEST(GrassLightingFormulas, LobesAreClampedAtFour) {
     // Dry (roughness 0.02): the peak is 0.04·4.9/(π·0.02²) ≈ 156, clamped to 4.
-    EXPECT_EQ(specularLobes(UP, UP, UP, 0.0f), 4.0f);
+    EXPECT_EQ(specularLobes(UP, UP, UP, 0.0f, OURS), 4.0f);
 }
 
 TEST(GrassLightingFormulas, RoughnessIsFlooredAtTwoHundredths) {
@@ -145,8 +148,8 @@ TEST(GrassLightingFormulas, RoughnessIsFlooredAtTwoHundredths) {
     const float expected =
         (0.5f * ggxD(nh, 0.02f) + 0.3f * ggxD(nh, 0.01f) + 0.2f * ggxD(nh, 0.005f)) * schlickF(nh) *
         nh;
-    EXPECT_NEAR(specularLobes(UP, dir, dir, 0.0f), expected, 1e-9f);
-    EXPECT_NEAR(specularLobes(UP, dir, dir, 0.01f), expected, 1e-9f);
+    EXPECT_NEAR(specularLobes(UP, dir, dir, 0.0f, OURS), expected, 1e-9f);
+    EXPECT_NEAR(specularLobes(UP, dir, dir, 0.01f, OURS), expected, 1e-9f);
     EXPECT_NEAR(expected, 4.1415e-5f, 1e-8f);
 }
 
@@ -203,7 +206,7 @@ TEST(GrassLightingFormulas, SpecularFadesInWithEyeDistance) {
     s.water = 1.0f;  // the wet mix: specular alone, no diffuse
     // Blade and terrain normals both up, at the tip: twice the lobes at the peak.
     s.height = 1.0f;
-    const float full = 2.0f * specularLobes(UP, UP, UP, 1.0f);
+    const float full = 2.0f * specularLobes(UP, UP, UP, 1.0f, OURS);
     s.eyeDistance = 10.0f;
     expectNear(grassLighting(s, block), glm::vec3(0.0f));
     s.eyeDistance = 20.0f;  // smoothstep's middle
@@ -220,7 +223,7 @@ TEST(GrassLightingFormulas, BladeSpecularGrowsWithHeightTerrainSpecularDoesNot) 
     block.sunColor = {1.0f, 0.5f, 0.25f};
     GrassSurface s = whiteSurface();
     s.water = 1.0f;
-    const float peak = specularLobes(UP, UP, UP, 1.0f);
+    const float peak = specularLobes(UP, UP, UP, 1.0f, OURS);
     // The terrain normal faces away from the sun: only the blade's lobes light it, × height.
     s.terrainNormal = -UP;
     s.height = 0.25f;
@@ -307,6 +310,71 @@ TEST(GrassLightingFormulas, AmbientBlendsGroundToSkyTimesAoAndAoDarkensLit) {
     s.terrainNormal = UP;
     s.ao = 0.2f;
     expectNear(grassLighting(s, block), glm::vec3(0.6f));
+}
+
+// The article's model (LightingModel::Article): what ours adds is gone.
+LightingBlock articleOnly() {
+    LightingBlock block = sunOnly();
+    block.grassLighting = ARTICLE_LIGHTING;
+    return block;
+}
+
+TEST(GrassLightingFormulas, ArticleLobesUseRoughnessSquaredWithoutNlOrClamp) {
+    // Light, eye and normal together (n·h = n·v = n·l = 1), water 1: α = 1, 1/4, 1/16, so
+    // D = 1/(π α²) is 1/π, 16/π, 256/π, and F = F0.
+    const float expected = 0.04f * (0.5f + 0.3f * 16.0f + 0.2f * 256.0f) / PI;
+    EXPECT_NEAR(specularLobes(UP, UP, UP, 1.0f, ARTICLE), expected, 1e-5f);
+    // Ours at the same angle: α = 1, 1/2, 1/4 and the clamp at 4 does not bind: 4.9·F0/π.
+    EXPECT_NEAR(specularLobes(UP, UP, UP, 1.0f, OURS), 0.04f * 4.9f / PI, 1e-6f);
+    // Light behind the normal: ours is 0, the article's lobes stay (no n·l factor). With the eye
+    // and the light mirrored about the plane, h lies in it: n·h = 0, D = α²/π per lobe.
+    const glm::vec3 eye = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
+    const glm::vec3 light = glm::normalize(glm::vec3(-1.0f, -1.0f, 0.0f));
+    EXPECT_EQ(specularLobes(UP, light, eye, 1.0f, OURS), 0.0f);
+    const float schlick = 0.04f + 0.96f;  // n·v clamped to 0
+    const float flat = (0.5f * 1.0f + 0.3f * (1.0f / 16.0f) + 0.2f * (1.0f / 256.0f)) / PI;
+    EXPECT_NEAR(specularLobes(UP, light, eye, 1.0f, ARTICLE), schlick * flat, 1e-5f);
+    // Dry blades: r = 0.02, α = 4e-4, 1e-4, 2.5e-5: peaks of millions, unclamped.
+    EXPECT_GT(specularLobes(UP, UP, UP, 0.0f, ARTICLE), 1e5f);
+    EXPECT_EQ(specularLobes(UP, UP, UP, 0.0f, OURS), 4.0f);
+}
+
+TEST(GrassLightingFormulas, ArticleHasNoAmbientAndNoAoOnTheLitColour) {
+    LightingBlock block = articleOnly();
+    block.skyColor = {1.0f, 0.0f, 0.0f};
+    block.groundColor = {0.0f, 1.0f, 0.0f};
+    block.diffuseHigh = glm::vec3(1.0f);
+    GrassSurface s = whiteSurface();
+    s.bladeNormal = UP;
+    s.ao = 0.2f;
+    // Diffuse alone, at full strength whatever the AO (ours: 0.6 plus the ambient).
+    expectNear(grassLighting(s, block), glm::vec3(1.0f));
+    block.sunColor = glm::vec3(0.0f);
+    expectNear(grassLighting(s, block), glm::vec3(0.0f));
+}
+
+TEST(GrassLightingFormulas, ArticleSssIsTheRampLitThroughTheSssNormal) {
+    LightingBlock block = articleOnly();
+    block.sss = 2.0f;
+    block.sssIntensity = 0.0f;  // the terrain normal itself
+    block.diffuseLow = {1.0f, 0.0f, 0.0f};
+    block.diffuseMid = {0.0f, 1.0f, 0.0f};
+    block.diffuseHigh = {0.0f, 0.0f, 1.0f};
+    GrassSurface s = whiteSurface();
+    s.water = 1.0f;                      // the wet terms alone
+    s.bladeNormal = {0.0f, 0.0f, 1.0f};  // the sun grazes it: no blade lobe
+    s.toEye = {0.0f, 0.0f, 1.0f};
+    block.specular = 0.0f;
+    // Terrain normal 60° from the sun: the ramp at n·l = ½, mid to high halfway.
+    s.terrainNormal = tilted(60.0f);
+    expectNear(grassLighting(s, block), 2.0f * glm::vec3(0.0f, 0.5f, 0.5f));
+    // Facing away (n·l = −1): the low colour, where our wrapped light gives 0.
+    s.terrainNormal = -UP;
+    expectNear(grassLighting(s, block), 2.0f * glm::vec3(1.0f, 0.0f, 0.0f));
+    block.grassLighting = GRASS_LIGHTING;
+    block.diffuseLow = block.diffuseMid = block.diffuseHigh = glm::vec3(0.0f);
+    block.skyColor = block.groundColor = glm::vec3(0.0f);
+    expectNear(grassLighting(s, block), glm::vec3(0.0f));
 }
 
 }  // namespace

@@ -57,8 +57,9 @@ void main() {
     s.eyeDistance = c.blurredNormalDistance.w;
 
     FormulaResult r;
+    float article = uGrassLighting == 2 ? 1.0 : 0.0;
     r.lightingLobes = vec4(grassLighting(s), specularLobes(s.bladeNormal, c.toLightNh.xyz,
-                                                           s.toEye, s.water));
+                                                           s.toEye, s.water, article));
     r.ggxSchlickDproj = vec4(ggxD(c.toLightNh.w, c.dirViewAlpha.w), schlickF(c.toEyeNv.w),
                              projectedDistance(c.toBladeMaxDistance.xyz, c.up.xyz), 0.0);
     uint classes = c.classesIndex.x;
