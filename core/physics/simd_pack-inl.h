@@ -50,6 +50,32 @@ using RebindToUnsigned = Tag<hn::RebindToUnsigned<typename D::Native>, D::PARTS>
 
 #define GRASS_PACK_EACH(K) _Pragma("GCC unroll 8") for (std::size_t k = 0; k < (K); ++k)
 
+// Highway's emulated targets (EMU128, SCALAR) convert float to int with a C++ cast, which is
+// undefined for NaN; the native instructions define it (the lowest int). The sanitizer builds
+// compile EMU128 alone and UBSan stops on it: a degenerate blade's NaN reaches the noise's
+// lattice index and the gusts' Sin, whose lanes are then thrown away (such blades take the
+// reference's step). So there, and only there, a NaN converts as the native targets convert it
+// and the math functions see 0 in its place and hand the NaN back.
+#if HWY_TARGET == HWY_EMU128 || HWY_TARGET == HWY_SCALAR
+template <class DN, class VN>
+HWY_INLINE VN NaNAs(DN dn, VN a, float value) {
+    return hn::IfThenElse(hn::Eq(a, a), a, hn::Set(dn, value));
+}
+template <class VN>
+HWY_INLINE VN KeepNaN(VN a, VN r) {
+    return hn::IfThenElse(hn::Eq(a, a), r, a);
+}
+#else
+template <class DN, class VN>
+HWY_INLINE VN NaNAs(DN, VN a, float) {
+    return a;
+}
+template <class VN>
+HWY_INLINE VN KeepNaN(VN, VN r) {
+    return r;
+}
+#endif
+
 template <class DN, std::size_t K>
 HWY_INLINE std::size_t Lanes(Tag<DN, K>) {
     return K * hn::Lanes(DN());
@@ -129,7 +155,8 @@ HWY_INLINE Mask<DN, K> FirstN(Tag<DN, K>, std::size_t n) {
     HWY_INLINE Vec<DN, K> Op(Tag<DN, K>, Vec<DN, K> a) {      \
         const DN dn;                                          \
         Vec<DN, K> r;                                         \
-        GRASS_PACK_EACH(K) r.part[k] = hn::Op(dn, a.part[k]); \
+        GRASS_PACK_EACH(K) r.part[k] =                        \
+            KeepNaN(a.part[k], hn::Op(dn, NaNAs(dn, a.part[k], 0.0f)));               \
         return r;                                             \
     }
 
@@ -226,7 +253,12 @@ HWY_INLINE Vec<DN, K> VecFromMask(Tag<DN, K>, Mask<DN, K> m) {
 template <class DTo, class DFrom, std::size_t K>
 HWY_INLINE Vec<DTo, K> ConvertTo(Tag<DTo, K>, Vec<DFrom, K> a) {
     Vec<DTo, K> r;
-    GRASS_PACK_EACH(K) r.part[k] = hn::ConvertTo(DTo(), a.part[k]);
+    if constexpr (hwy::IsFloat<hn::TFromD<DFrom>>()) {
+        const DFrom from;
+        GRASS_PACK_EACH(K) r.part[k] = hn::ConvertTo(DTo(), NaNAs(from, a.part[k], -2147483648.0f));
+    } else {
+        GRASS_PACK_EACH(K) r.part[k] = hn::ConvertTo(DTo(), a.part[k]);
+    }
     return r;
 }
 template <class DTo, class DFrom, std::size_t K>

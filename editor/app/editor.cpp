@@ -165,8 +165,18 @@ Result<bool> Editor::frame() {
     auto more = writeOutputs(width, height);
     if (!more || !*more)
         return more;
-    if (mSettings.frameDelayMs > 0)
-        std::this_thread::sleep_for(std::chrono::milliseconds(mSettings.frameDelayMs));
+    // The frame's slowness (--frame-delay-ms), spent gathering events as they come: a slow
+    // frame must not stretch the time between two clicks of a double-click.
+    if (mSettings.frameDelayMs > 0) {
+        const Clock::time_point until =
+            Clock::now() + std::chrono::milliseconds(mSettings.frameDelayMs);
+        while (Clock::now() < until) {
+            std::this_thread::sleep_for(
+                std::min<Clock::duration>(std::chrono::milliseconds(5), until - Clock::now()));
+            mWindow->gatherEvents();
+        }
+    }
+    mWindow->gatherEvents();  // what came in while the frame rendered: stamped before the swap
     mWindow->swapBuffers();
     updateStatus(statusDue, timingsDue);
     return true;

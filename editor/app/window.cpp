@@ -164,7 +164,14 @@ void Window::setClipboard(const std::string& text) {
     glfwSetClipboardString(mWindow, text.c_str());
 }
 
+void Window::gatherEvents() {
+    glfwPollEvents();
+}
+
 InputState Window::pollInput() {
+    glfwPollEvents();
+    const InputState gathered = mInput;
+    // What happened since: the next call starts from the held buttons and the cursor alone.
     mInput.dragDx = mInput.dragDy = mInput.scrollSteps = mInput.scrollX = 0.0;
     mInput.leftPressed = mInput.escapePressed = false;
     mInput.typed.clear();
@@ -174,8 +181,7 @@ InputState Window::pollInput() {
     mInput.frameRequested = false;
     mInput.toggledCullTest = 0;
     mInput.nextTechnique = mInput.toggleLighting = false;
-    glfwPollEvents();
-    return mInput;
+    return gathered;
 }
 
 }  // namespace grass::editor

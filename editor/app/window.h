@@ -62,8 +62,14 @@ public:
     void cancelClose();
     void setTitle(const std::string& title);
     void swapBuffers();
-    // Polls events; the returned input holds this frame's drags and scrolls.
+    // Polls events; the returned input holds everything since the last call: this frame's
+    // drags and scrolls, and the events gatherEvents() collected meanwhile.
     InputState pollInput();
+    // Collects pending events into the next pollInput() without handing them out, so each is
+    // stamped with the time it came in (its callback's nowS()) rather than the next frame's.
+    // Called while a frame waits: GLFW reports events only when polled, and a double-click
+    // whose second click was polled a slow frame after its first read as two single clicks.
+    void gatherEvents();
     // Seconds since the window opened: the clock of input events and the UI.
     double nowS() const;
     void framebufferSize(int* width, int* height) const;
