@@ -85,13 +85,26 @@ if cmake -S tests/fuzz -B build-fuzz -G Ninja -DCMAKE_C_COMPILER=clang \
     -DCMAKE_CXX_COMPILER=clang++ "${launcher[@]}" >/dev/null && cmake --build build-fuzz -j "$jobs"; then
   tests/fuzz/run_fuzz.sh -j "$jobs" build-fuzz "$fuzz_seconds" || status=1
   # The same build holds the unit tests of core and ui (no GL) under these sanitizers; the whole
-  # suite, GL and command line included, runs under them in .ci/sanitize. Bounded, so that a
-  # hang fails the run in 20 minutes instead of holding CI to its limit (they take about 2).
-  echo "== the unit tests under AddressSanitizer, LeakSanitizer and UBSan (build-fuzz/)"
-  mkdir -p build-fuzz/test-tmp
-  GRASS_TEST_TMP="$PWD/build-fuzz/test-tmp" UBSAN_OPTIONS=print_stacktrace=1 \
-    LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0" \
-    timeout -k 10 1200 build-fuzz/bin/sanitized_unit_tests --gtest_brief=1 || status=1
+  # suite, GL and command line included, runs under them in .ci/sanitize. They run in $jobs
+  # gtest shards at once (each with its own scratch folder), about 6 min of work in all, most of
+  # it ExtremeValues; bounded, so that a hang fails the run in 20 minutes instead of holding CI
+  # to its limit. Each shard's report is printed when it ends.
+  echo "== the unit tests under AddressSanitizer, LeakSanitizer and UBSan (build-fuzz/, $jobs shards)"
+  shard_pids=()
+  for ((shard = 0; shard < jobs; shard++)); do
+    mkdir -p "build-fuzz/test-tmp/shard-$shard"
+    GRASS_TEST_TMP="$PWD/build-fuzz/test-tmp/shard-$shard" UBSAN_OPTIONS=print_stacktrace=1 \
+      LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0" \
+      GTEST_TOTAL_SHARDS="$jobs" GTEST_SHARD_INDEX="$shard" \
+      timeout -k 10 1200 build-fuzz/bin/sanitized_unit_tests --gtest_brief=1 \
+      >"build-fuzz/sanitized-shard-$shard.log" 2>&1 &
+    shard_pids+=($!)
+  done
+  for ((shard = 0; shard < jobs; shard++)); do
+    wait "${shard_pids[$shard]}" || status=1
+    echo "-- shard $((shard + 1)) of $jobs"
+    cat "build-fuzz/sanitized-shard-$shard.log"
+  done
 else
   echo "fuzz and sanitizer build failed" >&2
   status=1
