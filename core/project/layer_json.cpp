@@ -160,6 +160,10 @@ constexpr std::array LAYER{
         {.key = "rules",
          .allowedText = "see [rules](#rules)",
          .defaultText = "defaults (everywhere)"}),
+    settings::object<settings::bending, nullptr, &GrassLayer::bending>(
+        {.key = "bending",
+         .allowedText = "see [bending](#bending)",
+         .defaultText = "defaults (off)"}),
 };
 
 }  // namespace

@@ -94,6 +94,29 @@ struct PlacementRules {
     bool operator==(const PlacementRules&) const = default;
 };
 
+// Bending cues (SPEC §10, article 003 "the bend of grass"): how a layer's blades lean at rest
+// besides the growth model's lean. Grass on steep ground bends downhill, grass among tall,
+// dense neighbours grows sideways towards the light, and a blade that grows sideways sways more
+// easily. All off by default: a layer without them grows exactly as before
+// (core/scene/bending_cues.h has the formulas).
+// Below a centimetre the neighbour kernel covers no neighbour in any field we can grow; above
+// ten metres it blurs a whole scene's density into one value.
+inline constexpr double MIN_BENDING_RADIUS_M = 0.01;
+inline constexpr double MAX_BENDING_RADIUS_M = 10.0;
+struct BendingCues {
+    // Rest lean downhill as a share of the slope (0.5: a 40° slope leans its blades 20°); the
+    // slope is measured against gravity, as the placement rules measure it.
+    float slope = 0.0f;
+    // Rest lean, in degrees, of a blade fully shaded by taller, denser neighbours (towards its
+    // front); a blade alone does not lean.
+    float neighboursDeg = 0.0f;
+    // Gaussian σ (metres) over which neighbours count.
+    float neighbourRadiusM = 0.15f;
+    // How much a leaning blade's stiffness drops: s·(1 − sway·sin(lean)).
+    float sway = 0.0f;
+    bool operator==(const BendingCues&) const = default;
+};
+
 // Every map of a layer is resampled to this size when loaded and created at it when painted.
 inline constexpr int DEFAULT_MAP_RESOLUTION = 512;
 inline constexpr int MAX_MAP_RESOLUTION = 8192;
@@ -109,6 +132,7 @@ struct GrassLayer {
     glm::ivec2 mapResolution{DEFAULT_MAP_RESOLUTION, DEFAULT_MAP_RESOLUTION};
     GrowthDesc growth;
     PlacementRules rules;
+    BendingCues bending;
     // Outline of every blade of the layer (SPEC §7); triangle is what files without the key got
     // before shapes were per layer.
     BladeShape shape = BladeShape::Triangle;

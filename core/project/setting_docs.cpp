@@ -39,6 +39,7 @@ std::vector<DocTable> projectFormatTables() {
         {"layers/blade", markdownTable(blade(), BladeRanges{})},
         {"layers/growth", markdownTable(growth(), GrowthDesc{})},
         {"layers/rules", markdownTable(rules(), PlacementRules{})},
+        {"layers/bending", markdownTable(bending(), BendingCues{})},
         {"cameras", markdownTable(camera(), CameraDesc{})},
         {"sun", markdownTable(sun(), SunDesc{})},
         {"lighting", markdownTable(lighting(), GrassLightingDesc{})},

@@ -17,6 +17,7 @@ std::span<const Setting<GrassLayer>> layer();         // layer_json.cpp
 std::span<const Setting<BladeRanges>> blade();        // layer_json.cpp: a layer's "blade"
 std::span<const Setting<GrowthDesc>> growth();        // growth_json.cpp: a layer's "growth"
 std::span<const Setting<PlacementRules>> rules();     // rules_json.cpp: a layer's "rules"
+std::span<const Setting<BendingCues>> bending();     // bending_json.cpp: a layer's "bending"
 std::span<const Setting<CameraDesc>> camera();        // project_json.cpp
 std::span<const Setting<SunDesc>> sun();              // lighting_json.cpp
 std::span<const Setting<GrassLightingDesc>> lighting();  // lighting_json.cpp

@@ -11,13 +11,6 @@ namespace {
 
 constexpr float DEGREES_PER_RADIAN = 57.29577951308232f;
 
-glm::vec3 upAt(glm::vec3 p, const RuleWorld& world) {
-    const glm::vec3 g(world.gravity);
-    const glm::vec3 up = world.gravityMode == GravityMode::Centre ? p - g : -g;
-    const float length = glm::length(up);
-    return length > 0.0f && std::isfinite(length) ? up / length : glm::vec3(0.0f, 1.0f, 0.0f);
-}
-
 bool anyName(const MeshPart& part, const std::vector<std::string>& names) {
     return std::any_of(names.begin(), names.end(),
                        [&](const std::string& name) { return partHasName(part, name); });
@@ -77,6 +70,13 @@ float windowFactor(float value, float min, float max, float soft) {
     if (outside <= 0.0f)
         return 1.0f;
     return soft > 0.0f ? std::max(0.0f, 1.0f - outside / soft) : 0.0f;
+}
+
+glm::vec3 upAt(glm::vec3 p, const RuleWorld& world) {
+    const glm::vec3 g(world.gravity);
+    const glm::vec3 up = world.gravityMode == GravityMode::Centre ? p - g : -g;
+    const float length = glm::length(up);
+    return length > 0.0f && std::isfinite(length) ? up / length : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
 float slopeDeg(glm::vec3 normal, glm::vec3 p, const RuleWorld& world) {

@@ -31,6 +31,9 @@ bool rulesAreOpen(const PlacementRules& rules);
 std::vector<float> placementFactors(const SurfaceMesh& mesh, const ScatterCandidates& candidates,
                                     const PlacementRules& rules, const RuleWorld& world);
 
+// "Up" at `p` as the rules measure it: against gravity's direction, or away from its centre.
+glm::vec3 upAt(glm::vec3 p, const RuleWorld& world);
+
 // The slope in degrees (0 level, 90 a wall, 180 a ceiling) of a surface with normal `normal` at
 // `p`, and the altitude of `p`, as the rules measure them.
 float slopeDeg(glm::vec3 normal, glm::vec3 p, const RuleWorld& world);

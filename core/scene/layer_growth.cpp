@@ -98,25 +98,22 @@ GrownBlade growCandidate(const LayerSource& source, std::size_t candidate) {
     const float rule = source.ruleFactors.empty() ? 1.0f : source.ruleFactors[candidate];
     if (!keepsCandidate(source.candidates, candidate, density, rule))
         return removed;
+    const CandidateBend* bend = source.bends.empty() ? nullptr : &source.bends[candidate];
     if (!source.growthEnabled)
-        return {c, 0.0f, true};
+        return {bend ? bentRestBlade(c, c.h(), c.w(), 0.0f, *bend, source.sway) : c, 0.0f, true};
     const BladeGrowth growth = bladeGrowth(candidateGrowth(source, candidate));
     const float h = c.h() * growth.heightScale;
     const float w = c.w() * growth.widthScale;
     if (!(h > 0.0f) || !(w > 0.0f))
         return removed;
-    const glm::vec3 up = c.up();
-    GrownBlade grown{makeRestBlade(c.v0(), up, h, w, c.s(), c.theta()),
+    GrownBlade grown{makeRestBlade(c.v0(), c.up(), h, w, c.s(), c.theta()),
                      1.0f - growth.colourBlend, true};
-    if (growth.restLeanRad > 0.0f) {
-        // Leaned towards the blade's front, the side front gravity pulls it to (SPEC §3), so a
-        // lean and a droop agree; validation places v1 and keeps the length h.
-        const glm::vec3 front = glm::normalize(glm::cross(up, widthDirection(up, c.theta())));
-        const glm::vec3 direction =
-            std::cos(growth.restLeanRad) * up + std::sin(growth.restLeanRad) * front;
-        grown.blade.v2W = glm::vec4(c.v0() + h * direction, w);
-        validateBlade(grown.blade);
-    }
+    // Leaned towards the blade's front, the side front gravity pulls it to (SPEC §3), so a lean
+    // and a droop agree; validation places v1 and keeps the length h.
+    if (bend)
+        grown.blade = bentRestBlade(c, h, w, growth.restLeanRad, *bend, source.sway);
+    else
+        leanTowardsFront(grown.blade, growth.restLeanRad);
     return grown;
 }
 

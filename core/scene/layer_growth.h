@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "blade/blade.h"
+#include "scene/bending_cues.h"
 #include "growth/growth_curves.h"
 #include "growth/growth_stems.h"
 #include "maps/map_image.h"
@@ -51,6 +52,9 @@ struct LayerSource {
     LayerMaps maps;
     // Per candidate, the layer's placement rules there (placement_rules.h); empty: 1 everywhere.
     std::vector<float> ruleFactors;
+    // Per candidate, what the layer's bending cues do to it (bending_cues.h); empty: nothing.
+    std::vector<CandidateBend> bends;
+    float sway = 0.0f;
     bool growthEnabled = false;
     GrowthCurves curves;
     int stemLevels = MAX_STEM_LEVELS;

@@ -39,9 +39,9 @@ double estimateLayerBlades(const ScatterParams& params, double area) {
 }
 
 std::size_t sceneBytesPerBlade() {
-    // The candidate (blade, uv, thinning, face; a rule factor only where rules thin), the grown
-    // slot (blade, wilt, shading), the physics state (η, rest tip) and the GPU copy (blade,
-    // shading).
+    // The candidate (blade, uv, thinning, face; a rule factor only where rules thin, a bend only
+    // where bending cues are on), the grown slot (blade, wilt, shading), the physics state (η,
+    // rest tip) and the GPU copy (blade, shading).
     return sizeof(Blade) + sizeof(glm::vec2) + sizeof(CandidateThinning) + sizeof(std::uint32_t) +
            sizeof(Blade) + sizeof(float) + sizeof(BladeShading) + sizeof(float) +
            sizeof(glm::vec3) + sizeof(Blade) + sizeof(BladeShading);
@@ -226,6 +226,9 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
         for (auto& warning : source.candidates.warnings)
             scene.notes.push_back("layer \"" + layer.name + "\": " + warning);
         source.ruleFactors = placementFactors(scene.mesh, source.candidates, layer.rules, ruleWorld);
+        source.bends = candidateBends(layer.bending, source.candidates, source.ruleFactors,
+                                      ruleWorld);
+        source.sway = layer.bending.sway;
         source.growthEnabled = layer.growth.enabled;
         source.curves = layer.growth.curves;
         source.stemLevels = layer.growth.levels;

@@ -13,6 +13,7 @@
 #include "edit/layer_list.h"
 #include "mesh/mesh_parts.h"
 #include "scatter/placement_rules.h"
+#include "scene/bending_cues.h"
 #include "project/settings.h"
 #include "ui/curve_edit.h"
 #include "ui/text_edit.h"
@@ -130,6 +131,11 @@ void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
     const bool open = core::rulesAreOpen(layer.rules);
     ui.collapsingHeader(open ? "placement rules##rules" : "placement rules (on)##rules",
                         [&](ui::Ui& rules) { rulesBody(rules, s, layer.rules); });
+    const bool bent = !core::bendingIsOff(layer.bending);
+    ui.collapsingHeader(bent ? "bending (on)##bending" : "bending##bending", [&](ui::Ui& bending) {
+        for (const std::string_view key : {"slope", "neighbours", "neighbour_radius", "sway"})
+            regrowRow(bending, s, core::settings::bending(), key, layer.bending);
+    });
 }
 
 
