@@ -22,13 +22,16 @@ inline constexpr float GROWTH_LIGHT_JOINT = 0.3f;
 
 // The user-editable control values (the editor's curve widgets). Meant to lie in [0, 1]; see
 // validate(). Defaults: poor soil grows little (gy0 = 0.1), good soil fully (gy2 = 1.0), with a
-// concave middle (gy1 = 0.6: moderate soil is already fairly good). Width and height rise with
-// light, steeper in the dim range; wy and hy are chosen C1 at the joint (slope 0.5 on both sides:
-// (0.5 − 0.35)/0.3 = (0.85 − 0.5)/0.7) so the default curves have no visible kink at l = 0.3.
+// concave middle (gy1 = 0.6: moderate soil is already fairly good). Light as Kim & Cho describe
+// it (§3.2): grass short of light grows narrow and relatively tall, grass in strong light wide
+// and short, so width rises with light and height falls, both steeper in the dim range. wy and
+// hy are C1 at the joint (slope ±0.5 on both sides: (0.5 − 0.35)/0.3 = (0.85 − 0.5)/0.7) so the
+// default curves have no visible kink at l = 0.3; hy is wy's mirror, 1 − (0.1, 0.25, 0.4, 0.75,
+// 0.8), the rising curve the defaults had before (issue 30 item 5).
 struct GrowthCurves {
     float gy0 = 0.1f, gy1 = 0.6f, gy2 = 1.0f;
     float wy0 = 0.2f, wy1 = 0.35f, wy2 = 0.5f, wy3 = 0.85f, wy4 = 0.9f;
-    float hy0 = 0.1f, hy1 = 0.25f, hy2 = 0.4f, hy3 = 0.75f, hy4 = 0.8f;
+    float hy0 = 0.9f, hy1 = 0.75f, hy2 = 0.6f, hy3 = 0.25f, hy4 = 0.2f;
 
     bool operator==(const GrowthCurves&) const = default;
 };

@@ -83,7 +83,8 @@ glm::vec3 clampedBSpline(const std::vector<glm::vec3>& controls, float u) {
     return d[static_cast<std::size_t>(degree)];
 }
 
-std::vector<glm::vec3> stemRibbon(const StemSetParams& params, int stem, float halfWidth) {
+std::vector<glm::vec3> stemRibbon(const StemSetParams& params, int stem, float halfWidth,
+                                  float tipWidth) {
     const std::vector<glm::vec3> controls = stemLevelPoints(params, stem);
     const int samples = STEM_SAMPLES_PER_LEVEL * clampedLevels(params.levels);
     std::vector<glm::vec3> ribbon;
@@ -91,18 +92,18 @@ std::vector<glm::vec3> stemRibbon(const StemSetParams& params, int stem, float h
     for (int i = 0; i < samples; ++i) {
         const float u = static_cast<float>(i) / static_cast<float>(samples - 1);
         const glm::vec3 p = clampedBSpline(controls, u);
-        // The ribbon narrows to a point at the tip, as a grass stem does.
-        const float w = halfWidth * (1.0f - u);
+        const float w = halfWidth * (1.0f - (1.0f - tipWidth) * u);
         ribbon.emplace_back(p.x - w, p.y, p.z);
         ribbon.emplace_back(p.x + w, p.y, p.z);
     }
     return ribbon;
 }
 
-std::vector<glm::vec3> stemSetVertices(const StemSetParams& params, float halfWidth) {
+std::vector<glm::vec3> stemSetVertices(const StemSetParams& params, float halfWidth,
+                                       float tipWidth) {
     std::vector<glm::vec3> vertices;
     for (int k = 0; k < STEMS_PER_SET; ++k) {
-        const auto ribbon = stemRibbon(params, k, halfWidth);
+        const auto ribbon = stemRibbon(params, k, halfWidth, tipWidth);
         vertices.insert(vertices.end(), ribbon.begin(), ribbon.end());
     }
     return vertices;

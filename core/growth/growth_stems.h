@@ -39,11 +39,15 @@ std::vector<glm::vec3> stemLevelPoints(const StemSetParams& params, int stem);
 glm::vec3 clampedBSpline(const std::vector<glm::vec3>& controls, float u);
 
 // The ribbon of one stem: 2 · STEM_SAMPLES_PER_LEVEL · levels vertices, pairs (left, right) of
-// half-width halfWidth across x at each sample from root to tip.
-std::vector<glm::vec3> stemRibbon(const StemSetParams& params, int stem, float halfWidth);
+// half-width halfWidth·(1 − (1 − tipWidth)·u) across x at each sample u from root (0) to tip
+// (1): tipWidth 0 narrows it to a point, as a grass stem does; 1 is the paper's constant-width
+// quad (Kim & Cho draw each stem as a strip of width α).
+std::vector<glm::vec3> stemRibbon(const StemSetParams& params, int stem, float halfWidth,
+                                  float tipWidth = 0.0f);
 
 // All six ribbons, stem after stem (240 vertices at 4 levels).
-std::vector<glm::vec3> stemSetVertices(const StemSetParams& params, float halfWidth);
+std::vector<glm::vec3> stemSetVertices(const StemSetParams& params, float halfWidth,
+                                       float tipWidth = 0.0f);
 
 // One stem set placed on the surface, the per-instance data of Kim & Cho's instanced technique
 // (`--technique growth`): four vec4, 64 bytes, std430. The set's model frame (y up, x across, z
@@ -53,7 +57,9 @@ struct StemSetInstance {
     glm::vec4 rootMetresPerUnit{0.0f, 0.0f, 0.0f, 1.0f};  // root position (world, m), scale
     glm::vec4 upYaw{0.0f, 1.0f, 0.0f, 0.0f};               // unit surface normal, yaw (radians)
     glm::vec4 alphaBetaThetaB{0.1f, 0.7f, 0.0f, 1.0f};     // growth parameters (SPEC §9)
-    glm::vec4 halfWidthSpread{0.02f, 0.05f, 0.05f, 0.0f};  // ribbon half width, spreadX, spreadZ
+    // Ribbon half width, spreadX, spreadZ, the ribbon's width at the tip as a share of its root
+    // width (stemRibbon's tipWidth).
+    glm::vec4 halfWidthSpread{0.02f, 0.05f, 0.05f, 0.0f};
 };
 static_assert(sizeof(StemSetInstance) == 64, "StemSetInstance must be four vec4 (std430)");
 

@@ -73,6 +73,13 @@ constexpr std::array GROWTH{
          .intMin = 1,
          .intMax = MAX_STEM_LEVELS,
          .help = "levels of each stem the `\"growth\"` technique draws"}),
+    field<&GrowthDesc::stemTipWidth>(
+        {.key = "stem_tip_width",
+         .rule = json::UNIT_INTERVAL,
+         .help = "width of the `\"growth\"` technique's stems at their tips, as a share of their "
+                 "root width: 0 narrows each to a point, 1 is Kim & Cho's constant-width strip",
+         .label = "stem tip width",
+         .ui = {.min = 0.0f, .max = 1.0f, .decimals = 2, .speed = 0.01f, .slider = true}}),
     field<&GrowthDesc::poorRootColor>(
         {.key = "poor_root_color",
          .kind = Kind::Colour,

@@ -27,7 +27,7 @@ namespace grass::core {
 
 // Raised with every change to what project.json holds or accepts; older files are raised to it
 // as they are read (project_migration.h). 2: the limits of issue 22 (steps, blade sizes, lists).
-inline constexpr int PROJECT_FORMAT_VERSION = 2;
+inline constexpr int PROJECT_FORMAT_VERSION = 3;
 
 // Lists a project may hold (docs/project-format.md "Limits"): every frame draws each layer and
 // every physics step visits each wind source and collider, so beyond these nothing runs at an
@@ -61,6 +61,9 @@ struct GrowthDesc {
     GrowthCurves curves;
     // Levels of the stem sets the growth technique draws (1..4).
     int levels = 4;
+    // The width of a stem set's stems at their tips as a share of their root width: 0 narrows
+    // each to a point (ours), 1 is the paper's constant-width strip (core::stemRibbon).
+    float stemTipWidth = 0.0f;
     // The colours of grass in poor conditions (b = 0), linear RGB; rootColor/tipColor of the
     // layer are the healthy ones (b = 1). Straw-like by default.
     glm::vec3 poorRootColor{0.30f, 0.24f, 0.08f};

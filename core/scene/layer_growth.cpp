@@ -36,7 +36,8 @@ StemSetInstance stemSetFor(const LayerSource& source, std::size_t candidate) {
     set.alphaBetaThetaB = glm::vec4(growth.alpha, growth.beta, growth.theta, growth.b);
     const float widthScale = bladeGrowth(growth).widthScale;
     set.halfWidthSpread = glm::vec4(metresPerUnit > 0.0f ? c.w() * widthScale / metresPerUnit : 0.0f,
-                                    STEM_SET_SPREAD, STEM_SET_SPREAD, 0.0f);
+                                    STEM_SET_SPREAD, STEM_SET_SPREAD,
+                                    std::clamp(source.stemTipWidth, 0.0f, 1.0f));
     return set;
 }
 

@@ -58,6 +58,7 @@ struct LayerSource {
     bool growthEnabled = false;
     GrowthCurves curves;
     int stemLevels = MAX_STEM_LEVELS;
+    float stemTipWidth = 0.0f;  // GrowthDesc::stemTipWidth
 };
 
 // The grown field: per slot of `patched` (patch-major, padding included) the blade, how far its

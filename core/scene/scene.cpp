@@ -232,6 +232,7 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
         source.growthEnabled = layer.growth.enabled;
         source.curves = layer.growth.curves;
         source.stemLevels = layer.growth.levels;
+        source.stemTipWidth = layer.growth.stemTipWidth;
         static_cast<GrownField&>(field) = growField(source, project.render.patchSize);
         field.rootColor = layer.rootColor;
         field.tipColor = layer.tipColor;

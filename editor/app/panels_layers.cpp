@@ -127,6 +127,7 @@ void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
     if (layer.growth.enabled)
         ui.collapsingHeader("growth curves", [&](ui::Ui& curves) {
             growthCurves(curves, s, layer.growth.curves);
+            regrowRow(curves, s, core::settings::growth(), "stem_tip_width", layer.growth);
         });
     const bool open = core::rulesAreOpen(layer.rules);
     ui.collapsingHeader(open ? "placement rules##rules" : "placement rules (on)##rules",

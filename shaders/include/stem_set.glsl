@@ -14,7 +14,7 @@ struct StemSetInstance {
     vec4 rootMetresPerUnit;  // root (world, m), metres per model unit
     vec4 upYaw;              // surface normal, yaw (radians)
     vec4 alphaBetaThetaB;    // growth parameters α, β, θ and colour blend b
-    vec4 halfWidthSpread;    // ribbon half width, spreadX, spreadZ, unused
+    vec4 halfWidthSpread;    // ribbon half width, spreadX, spreadZ, width at the tip (share)
 };
 
 // Stem k's side (−1: stems 0–2, +1: stems 3–5), x spread and z spread (growth_stems.cpp
@@ -116,8 +116,8 @@ StemVertex stemRibbonVertex(StemSetInstance stemSet, int levels, int samplesPerL
     v.u = float(sampleIndex) / float(samples - 1);
     vec3 tangent;
     vec3 p = clampedBSpline(controls, n, v.u, tangent);
-    // The ribbon narrows to a point at the tip, as a grass stem does.
-    float w = shape.x * (1.0 - v.u);
+    // core::stemRibbon: 0 at the tip's share narrows to a point, 1 is the paper's constant width.
+    float w = shape.x * (1.0 - (1.0 - shape.w) * v.u);
     v.position = vec3(side == 0 ? p.x - w : p.x + w, p.y, p.z);
     vec3 normal = cross(vec3(1.0, 0.0, 0.0), tangent);
     // With β = 0 and no z spread a stem lies flat along x (or is a point) and the cross

@@ -71,7 +71,7 @@ std::vector<StemSetInstance> variedInstances() {
                     root, 0.2f + 0.02f * static_cast<float>(n % 7), up, yaws[n % 4],
                     {0.05f + 0.04f * static_cast<float>(n % 5), beta, theta, 0.5f},
                     {0.01f + 0.01f * static_cast<float>(n % 3), 0.03f * static_cast<float>(n % 4),
-                     0.02f * static_cast<float>(n % 5), 0.0f}));
+                     0.02f * static_cast<float>(n % 5), n % 3 == 0 ? 1.0f : 0.0f}));
                 ++n;
             }
     return instances;
@@ -80,7 +80,8 @@ std::vector<StemSetInstance> variedInstances() {
 // The CPU reference: the set's vertices in core::stemSetVertices order, in world space.
 std::vector<glm::vec3> cpuWorldVertices(const StemSetInstance& s, int levels) {
     std::vector<glm::vec3> vertices =
-        core::stemSetVertices(render::stemSetParams(s, levels), s.halfWidthSpread.x);
+        core::stemSetVertices(render::stemSetParams(s, levels), s.halfWidthSpread.x,
+                              s.halfWidthSpread.w);
     for (glm::vec3& v : vertices)
         v = render::stemSetWorldPosition(s, v);
     return vertices;

@@ -171,13 +171,14 @@ TEST(GrowthCurves, PaperRawParameterJumpsAtTheJoint) {
     EXPECT_LT(std::abs(widthLightCurve(c, 0.3f - eps) - widthLightCurve(c, 0.3f + eps)), 1e-3f);
 }
 
-TEST(GrowthCurves, DefaultsRiseAndAreSmoothAtTheJoint) {
+// Kim & Cho §3.2: little light, narrow and relatively tall grass; strong light, wide and short.
+TEST(GrowthCurves, DefaultsWidenAndShortenWithLightAndAreSmoothAtTheJoint) {
     const GrowthCurves c;
     for (int i = 1; i <= 100; ++i) {
         const float x0 = float(i - 1) / 100.0f, x1 = float(i) / 100.0f;
         EXPECT_GT(soilCurve(c, x1), soilCurve(c, x0)) << x1;
         EXPECT_GT(widthLightCurve(c, x1), widthLightCurve(c, x0)) << x1;
-        EXPECT_GT(heightLightCurve(c, x1), heightLightCurve(c, x0)) << x1;
+        EXPECT_LT(heightLightCurve(c, x1), heightLightCurve(c, x0)) << x1;
     }
     // One-sided slopes at the joint agree (C1): the defaults have no kink at l = 0.3.
     const float h = 1e-3f;
@@ -298,7 +299,9 @@ TEST(GrowthParams, UnvalidatedControlValuesStayInRange) {
     }
 }
 
-TEST(GrowthParams, DefaultsGrowTallerWiderHealthierWithSoilAndLight) {
+// Soil: taller, wider, healthier. Light (Kim & Cho §3.2): wider and shorter; b stays, since the
+// default f2 and f3 mirror each other (f2 + f3 = 1.1 at every l) and b averages them.
+TEST(GrowthParams, DefaultsGrowTallerWiderHealthierWithSoilAndWiderShorterWithLight) {
     const GrowthCurves c;
     for (int i = 1; i <= 20; ++i) {
         const float lo = float(i - 1) / 20, hi = float(i) / 20;
@@ -311,8 +314,8 @@ TEST(GrowthParams, DefaultsGrowTallerWiderHealthierWithSoilAndLight) {
             const GrowthParams lightLo = growthParams(c, other, lo);
             const GrowthParams lightHi = growthParams(c, other, hi);
             EXPECT_GT(lightHi.alpha, lightLo.alpha);
-            EXPECT_GT(lightHi.beta, lightLo.beta);
-            EXPECT_GT(lightHi.b, lightLo.b);
+            EXPECT_LT(lightHi.beta, lightLo.beta);
+            EXPECT_NEAR(lightHi.b, lightLo.b, 1e-6f);
         }
     }
 }
@@ -338,6 +341,22 @@ TEST(GrowthBlade, ClampsHandFilledParams) {
     EXPECT_EQ(blade, (BladeGrowth{1.0f, 0.0f, PI / 3.0f, 0.0f}));
     const BladeGrowth other = bladeGrowth(GrowthParams{1.0f, NAN_F, 0.0f, -1.0f, 3.0f});
     EXPECT_EQ(other, (BladeGrowth{0.0f, 1.0f, 0.0f, 1.0f}));
+}
+
+// The paper's stated behaviour at the extremes of light, on every soil: in the dark (l = 0) the
+// blade is narrower (α) and taller (β) than in full light (l = 1), and it bends more (θ: the
+// paper's taller grass bends more); good soil grows taller than poor soil in any light.
+TEST(GrowthParams, DefaultsGrowNarrowTallGrassInTheDarkAndWideShortGrassInTheLight) {
+    const GrowthCurves c;
+    for (const float g : {0.0f, 0.5f, 1.0f}) {
+        const GrowthParams dark = growthParams(c, g, 0.0f);
+        const GrowthParams bright = growthParams(c, g, 1.0f);
+        EXPECT_LT(dark.alpha, bright.alpha) << "soil " << g;
+        EXPECT_GT(dark.beta, bright.beta) << "soil " << g;
+        EXPECT_GE(dark.theta, bright.theta) << "soil " << g;
+    }
+    for (const float l : {0.0f, 0.3f, 1.0f})
+        EXPECT_GT(growthParams(c, 1.0f, l).beta, growthParams(c, 0.0f, l).beta) << "light " << l;
 }
 
 }  // namespace

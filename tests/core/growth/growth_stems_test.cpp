@@ -85,6 +85,41 @@ TEST(GrowthStems, VertexCountsMatchThePaper) {
     EXPECT_EQ(stemSetVertices(params, 0.01f).size(), 60u);
 }
 
+// α has two roles (docs/growth.md, issue 30 item 5): the paper's x_i = ±α/2 ± spread places the
+// stem groups α apart, and the ribbon's width (the caller's halfWidth, from the blade's width
+// scaled by α/0.25). The ribbon narrows to a point at the tip by default; tip width 1 is the
+// paper's constant-width strip, and every share between scales the tip linearly.
+TEST(GrowthStems, TipWidthSetsTheRibbonsWidthFromRootToTip) {
+    StemSetParams params;
+    params.levels = 4;
+    const float half = 0.02f;
+    const auto widthAt = [&](const std::vector<glm::vec3>& ribbon, std::size_t sample) {
+        return glm::length(ribbon[2 * sample + 1] - ribbon[2 * sample]);
+    };
+    const auto pointed = stemRibbon(params, 0, half);
+    const auto strip = stemRibbon(params, 0, half, 1.0f);
+    const auto third = stemRibbon(params, 0, half, 0.3f);
+    const std::size_t tip = pointed.size() / 2 - 1, middle = tip / 2;
+    EXPECT_NEAR(widthAt(pointed, 0), 2.0f * half, 1e-6f);
+    EXPECT_NEAR(widthAt(pointed, tip), 0.0f, 1e-6f);
+    for (std::size_t i = 0; i <= tip; ++i)
+        EXPECT_NEAR(widthAt(strip, i), 2.0f * half, 1e-6f) << i;
+    EXPECT_NEAR(widthAt(third, tip), 0.3f * 2.0f * half, 1e-6f);
+    const float u = static_cast<float>(middle) / static_cast<float>(tip);
+    EXPECT_NEAR(widthAt(third, middle), 2.0f * half * (1.0f - 0.7f * u), 1e-6f);
+    // The centre line does not move with the width.
+    for (std::size_t i = 0; i <= tip; ++i)
+        EXPECT_NEAR(glm::length((strip[2 * i] + strip[2 * i + 1]) -
+                                (pointed[2 * i] + pointed[2 * i + 1])),
+                    0.0f, 1e-6f);
+    // The paper's offset: stems 0 (−x group) and 3 (+x group) stand α apart in x.
+    StemSetParams noSpread = params;
+    noSpread.spreadX = noSpread.spreadZ = 0.0f;
+    noSpread.alpha = 0.2f;
+    EXPECT_NEAR(stemLevelPoints(noSpread, 3)[1].x - stemLevelPoints(noSpread, 0)[1].x,
+                0.2f, 1e-6f);
+}
+
 TEST(GrowthStems, SixStemsAreDistinct) {
     StemSetParams params;
     for (int a = 0; a < STEMS_PER_SET; ++a)

@@ -27,8 +27,9 @@ namespace fs = std::filesystem;
 
 const std::string SOURCE = "projects/test/project.json";
 
+// The current version (3 changed the default height-vs-light curve; project_migration_test).
 std::string documentWithLayer(const std::string& members) {
-    return R"({"format": "grass-project", "version": 1, "layers": [{)" + members + "}]}";
+    return R"({"format": "grass-project", "version": 3, "layers": [{)" + members + "}]}";
 }
 
 std::string documentWithGrowth(const std::string& members) {
@@ -197,7 +198,7 @@ TEST(ProjectGrowth, BadGrowthSettingsNameTheirPointer) {
     expectGrowthError(R"("shadows": 1)", "/layers/0/growth/shadows",
                       "unknown key (expected one of \"enabled\", \"soil_curve\", "
                       "\"width_light_curve\", \"height_light_curve\", \"levels\", "
-                      "\"poor_root_color\", \"poor_tip_color\")");
+                      "\"stem_tip_width\", \"poor_root_color\", \"poor_tip_color\")");
     // A typo: the hint names the key meant.
     expectGrowthError(R"("level": 2)", "/layers/0/growth/level", "did you mean \"levels\"");
 }

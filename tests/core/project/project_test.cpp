@@ -178,8 +178,8 @@ TEST(Project, MissingFormatIsRejected) {
 
 TEST(Project, UnknownVersionIsRejected) {
     // The version after the newest this build writes (project_migration_test covers both ends).
-    expectError(R"({"format": "grass-project", "version": 3})", "/version",
-                "this build reads only versions 1 to 2");
+    expectError(R"({"format": "grass-project", "version": 4})", "/version",
+                "this build reads only versions 1 to 3");
     expectError(R"({"format": "grass-project"})", "/version", "missing required key");
 }
 
