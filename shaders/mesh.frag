@@ -16,6 +16,7 @@ in vec2 vUv;
 in vec3 vPosWorld;
 #ifdef GRASS_SNOW
 in float vSnowNoise;  // snowNoiseAt(vPosWorld) at the vertices (mesh_snow.tese)
+in float vSnowDrift;  // snowDriftAt(vPosWorld) at the vertices (1 without drift)
 #ifdef GRASS_SNOW_EXPOSURE_PER_VERTEX
 in float vSnowExposure;  // exposureCoefficient at the vertices
 #endif
@@ -48,9 +49,9 @@ void main() {
 #ifdef GRASS_SNOW
     // Snow settles on the side that faces the sky, whichever side the camera sees.
 #ifdef GRASS_SNOW_EXPOSURE_PER_VERTEX
-    vec3 coverage = snowCoverageFromExposure(vNormal, vSnowNoise, vSnowExposure);
+    vec3 coverage = snowCoverageFromExposure(vNormal, vSnowNoise, vSnowExposure, vSnowDrift);
 #else
-    vec3 coverage = snowCoverageTerms(vPosWorld, vNormal, vSnowNoise);
+    vec3 coverage = snowCoverageTerms(vPosWorld, vNormal, vSnowNoise, vSnowDrift);
 #endif
     if (uSnowCoverageView) {
         fragColor = vec4(coverage, 1.0);

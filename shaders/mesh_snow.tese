@@ -18,6 +18,7 @@ out vec3 vNormal;
 out vec2 vUv;
 out vec3 vPosWorld;
 out float vSnowNoise;
+out float vSnowDrift;
 #ifdef GRASS_SNOW_EXPOSURE_PER_VERTEX
 // The exposure of the coverage (not the displacement's wider boundary disc) at the vertex, for
 // the fragments to interpolate (RenderOptions::snowExposurePerVertex).
@@ -32,6 +33,7 @@ void main() {
     vUv = b.x * teUv[0] + b.y * teUv[1] + b.z * teUv[2];
     vPosWorld = posWorld;
     vSnowNoise = snowNoiseAt(posWorld);
+    vSnowDrift = snowDriftAt(posWorld);
 #ifdef GRASS_SNOW_EXPOSURE_PER_VERTEX
     vSnowExposure = exposureCoefficient(posWorld, normal, uSnowSamples, uSnowRadiusTexels);
 #endif

@@ -28,6 +28,8 @@ constexpr NumberRule LOAD_RULE{0.0, 1000.0};
 // Components of the fall direction (normalized on use); the length must not vanish.
 constexpr NumberRule DIRECTION_RULE{-1000.0, 1000.0};
 constexpr float MIN_DIRECTION_LENGTH = 1e-3f;
+// Metres upwind that shelter a point: beyond 100 m a hill a field away would still count.
+constexpr NumberRule DRIFT_REACH_RULE{0.0, 100.0, true, false};
 
 // One message for every wrong value (a non-integer, 700, 4096): the three sizes are the choice.
 void readMapResolution(json::Reader& reader, json::Object& object, std::string_view key, SnowParams& snow) {
@@ -141,6 +143,31 @@ constexpr std::array SNOW{
          .unit = "(m/s²)/m",
          .help = "extra gravity on exposed blades: load_gravity × depth × Fe",
          .ui = {.decimals = 1, .speed = 0.5f}}),
+    field<&SnowParams::drift>(
+        {.key = "drift",
+         .rule = json::UNIT_INTERVAL,
+         .help = "how much the wind moves the snow: the depth is scaled by 1 ± drift, more in "
+                 "the lee of what stands upwind, less on ground facing the wind ([snow.md]"
+                 "(snow.md#drift-with-the-wind)); 0: none",
+         .ui = {.slider = true}}),
+    field<&SnowParams::driftReachM>(
+        {.key = "drift_reach",
+         .rule = DRIFT_REACH_RULE,
+         .unit = "m",
+         .help = "how far upwind a rock or a ridge shelters the ground",
+         .label = "drift reach",
+         .ui = {.min = 0.1f, .max = 100.0f, .logarithmic = true, .slider = true}}),
+    field<&SnowParams::driftFollowsWind>(
+        {.key = "drift_follows_wind",
+         .kind = Kind::Flag,
+         .help = "`true`: the snow drifts the way the project's directional winds blow "
+                 "(strength-weighted; none: no drift); `false`: along `drift_direction`",
+         .label = "drift follows the wind"}),
+    field<&SnowParams::driftDirection>(
+        {.key = "drift_direction",
+         .rule = DIRECTION_RULE,
+         .help = "not zero; where the snow drifts to when `drift_follows_wind` is `false`",
+         .ui = {.min = -1.0f, .max = 1.0f}}),
 };
 
 }  // namespace
@@ -154,6 +181,9 @@ void json::checkSnow(Reader& reader, const Object& object, const SnowParams& sno
     else if (glm::length(snow.fallDirection) < MIN_DIRECTION_LENGTH)
         reader.fail(object.pointerTo("fall_direction"),
                     "must not be zero: the direction snow falls to, e.g. [0, -1, 0]");
+    else if (glm::length(snow.driftDirection) < MIN_DIRECTION_LENGTH)
+        reader.fail(object.pointerTo("drift_direction"),
+                    "must not be zero: the direction snow drifts to, e.g. [1, 0, 0]");
 }
 
 }  // namespace grass::core

@@ -7,6 +7,7 @@
 #include "collider/packing_cache.h"
 #include "scene/scene_props.h"
 #include "scene/scene_snow.h"
+#include "snow/snow_drift.h"
 
 namespace grass::core {
 
@@ -87,9 +88,9 @@ Result<ScenePhysics> buildScenePhysics(const LoadedProject& loaded) {
     const Project& project = loaded.project;
     ScenePhysics out;
     out.params = project.physics;
-    out.snow = project.snow;
     for (const WindDesc& wind : project.wind)
         out.wind.push_back(wind.source);
+    out.snow = snowWithWindDrift(project.snow, out.wind);
     for (std::size_t i = 0; i < project.colliders.size(); ++i) {
         const ColliderDesc& collider = project.colliders[i];
         if (collider.shape == ColliderShape::Sphere) {

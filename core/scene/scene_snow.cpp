@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "snow/snow_drift.h"
+
 namespace grass::core {
 
 OrthoSnowView sceneSnowView(const Scene& scene, const SnowParams& params, float timeS) {
@@ -47,13 +49,17 @@ std::vector<float> snowLoadPerMetre(std::span<const Blade> blades, const SnowDep
     SnowParams perMetre = params;
     perMetre.amountM = 1.0f;
     const glm::vec3 up = snowUp(params);
+    // params' drift direction is resolved (snowWithWindDrift), as the renderer's is.
+    const SnowDriftMap drift =
+        computeSnowDriftMap(map, params, snowDriftMapDirection(map.view, params.driftDirection));
     std::vector<float> load(blades.size(), 0.0f);
     for (std::size_t i = 0; i < blades.size(); ++i) {
         const Blade& blade = blades[i];
         if (!(blade.h() > 0.0f))
             continue;
         const float rootFe = snowBoundaryExposure(map, blade.v0(), blade.up(), perMetre);
-        const float depth = snowDepthAt(blade.v0(), rootFe, perMetre);
+        const float depth = snowDepthAt(blade.v0(), rootFe, perMetre,
+                                        snowDriftFactorAt(drift, map.view, blade.v0()));
         const float tipFe = exposureCoefficient(map, blade.v2(), up, params.samples,
                                                 params.sampleRadiusTexels, params.depthBiasM);
         load[i] = snowLoadGravity(perMetre, depth, tipFe);

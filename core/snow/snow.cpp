@@ -57,17 +57,17 @@ float snowHeightNoise(float noise) {
 }
 
 glm::vec3 snowDisplacement(glm::vec3 posWorld, glm::vec3 normal, float Fe,
-                           const SnowParams& params) {
+                           const SnowParams& params, float drift) {
     if (!snowLies(params))
         return glm::vec3(0.0f);
     const float Zn = snowHeightNoise(snowNoiseAt(params, posWorld));
-    return params.amountM * Fe * Zn * glm::normalize(normal);
+    return params.amountM * (Fe * drift) * Zn * glm::normalize(normal);
 }
 
-float snowDepthAt(glm::vec3 posWorld, float Fe, const SnowParams& params) {
+float snowDepthAt(glm::vec3 posWorld, float Fe, const SnowParams& params, float drift) {
     if (!snowLies(params))
         return 0.0f;
-    return params.amountM * Fe * snowHeightNoise(snowNoiseAt(params, posWorld));
+    return params.amountM * (Fe * drift) * snowHeightNoise(snowNoiseAt(params, posWorld));
 }
 
 bool bladeBuriedBySnow(float heightM, float snowDepthM) {
@@ -95,17 +95,17 @@ float snowAmountAt(const SnowParams& params, float timeS) {
 }
 
 SnowShade shadeSnow(const SnowParams& params, glm::vec3 posWorld, glm::vec3 normal, float Fe,
-                    float FeBoundary, glm::vec3 Cn) {
+                    float FeBoundary, glm::vec3 Cn, float drift) {
     SnowShade shade;
     shade.color = Cn;
     if (!snowLies(params))
         return shade;
     const float noise = snowNoiseAt(params, posWorld);
     shade.Fi = inclineCoefficient(normal, snowUp(params), noise, params.inclineNoise);
-    shade.Fp = snowCoverage(Fe, shade.Fi);
+    shade.Fp = snowCoverage(Fe, shade.Fi) * std::min(drift, 1.0f);
     shade.color = snowColor(Cn, params.snowColor, shade.Fp);
     shade.displacement =
-        params.amountM * FeBoundary * snowHeightNoise(noise) * glm::normalize(normal);
+        params.amountM * (FeBoundary * drift) * snowHeightNoise(noise) * glm::normalize(normal);
     return shade;
 }
 

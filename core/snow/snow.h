@@ -55,14 +55,15 @@ float snowBoundaryExposure(const SnowDepthMap& map, glm::vec3 posWorld, glm::vec
 // Zn of eq. 5: 0.5 + 0.5·noise ∈ [0, 1], so snow never digs below the surface.
 float snowHeightNoise(float noise);
 
-// Paper eq. 5: As·Fe·Zn·normalize(normal), Zn = snowHeightNoise(snowNoiseAt(posWorld)).
-// Fe: snowBoundaryExposure. As is params.amountM: with --time, pass params whose amountM is
-// snowAmountAt(params, t). Zero vector when disabled or As = 0.
+// Paper eq. 5: As·Fe·D·Zn·normalize(normal), Zn = snowHeightNoise(snowNoiseAt(posWorld)).
+// Fe: snowBoundaryExposure; D: the wind's drift factor there (snow_drift.h; 1 without drift).
+// As is params.amountM: with --time, pass params whose amountM is snowAmountAt(params, t). Zero
+// vector when disabled or As = 0.
 glm::vec3 snowDisplacement(glm::vec3 posWorld, glm::vec3 normal, float Fe,
-                           const SnowParams& params);
+                           const SnowParams& params, float drift = 1.0f);
 
-// Local snow depth in metres: |snowDisplacement| = As·Fe·Zn (0 when disabled).
-float snowDepthAt(glm::vec3 posWorld, float Fe, const SnowParams& params);
+// Local snow depth in metres: |snowDisplacement| = As·Fe·D·Zn (0 when disabled).
+float snowDepthAt(glm::vec3 posWorld, float Fe, const SnowParams& params, float drift = 1.0f);
 
 // A blade shorter than the snow at its root is buried: culled (h < depth; a blade exactly as
 // tall as the snow shows its tip).
@@ -91,8 +92,9 @@ struct SnowShade {
     glm::vec3 color{0.0f};
     glm::vec3 displacement{0.0f};
 };
-// Fe: exposureCoefficient; FeBoundary: snowBoundaryExposure; Cn: the snow-free colour.
+// Fe: exposureCoefficient; FeBoundary: snowBoundaryExposure; Cn: the snow-free colour; drift:
+// D (snow_drift.h), which scales the depth and, up to 1, the coverage: Fp = Fe·Fi·min(D, 1).
 SnowShade shadeSnow(const SnowParams& params, glm::vec3 posWorld, glm::vec3 normal, float Fe,
-                    float FeBoundary, glm::vec3 Cn);
+                    float FeBoundary, glm::vec3 Cn, float drift = 1.0f);
 
 }  // namespace grass::core

@@ -54,18 +54,25 @@ struct SnowParams {
     int mapResolution = 1024;
     // 0 or 1 (a uint, not bool, to keep the std430 layout). Off: no snow pass runs.
     std::uint32_t enabled = 0;
-    std::uint32_t pad0 = 0;
-    std::uint32_t pad1 = 0;
+    // Drift with the wind (snow_drift.h): the snow depth is scaled by 1 + drift·(shelter
+    // upwind within driftReachM), in [1 − drift, 1 + drift]; 0: none.
+    float drift = 0.0f;
+    float driftReachM = 4.0f;
+    // Where the snow drifts to when driftFollowsWind is 0; with it (1), the scene's directional
+    // winds decide.
+    glm::vec3 driftDirection{1.0f, 0.0f, 0.0f};
+    std::uint32_t driftFollowsWind = 1;
 
     bool operator==(const SnowParams&) const = default;
 };
 
-static_assert(sizeof(SnowParams) == 96, "SnowParams must be six vec4 (std430)");
+static_assert(sizeof(SnowParams) == 112, "SnowParams must be seven vec4 (std430)");
 static_assert(offsetof(SnowParams, amountM) == 12 && offsetof(SnowParams, noiseAmplitude) == 28 &&
                   offsetof(SnowParams, noiseFrequency) == 32 &&
                   offsetof(SnowParams, boundaryFalloffM) == 48 &&
                   offsetof(SnowParams, maxAmountM) == 64 &&
-                  offsetof(SnowParams, mapResolution) == 80 && offsetof(SnowParams, enabled) == 84,
+                  offsetof(SnowParams, mapResolution) == 80 && offsetof(SnowParams, enabled) == 84 &&
+                  offsetof(SnowParams, drift) == 88 && offsetof(SnowParams, driftDirection) == 96,
               "SnowParams offsets must match the snow shaders");
 
 }  // namespace grass::core

@@ -40,14 +40,15 @@ void amountRows(ui::Ui& ui, core::SnowParams& snow) {
     settingWidget(ui, maxRow, snow, &maxAmount);
 }
 
-// The loader refuses a fall direction of length < 1e-3; a direction is a direction at any
-// length, so the row stays within the unit cube and keeps its old value rather than vanish.
-void fallDirectionRow(ui::Ui& ui, core::SnowParams& snow) {
+// The loader refuses a fall or drift direction of length < 1e-3; a direction is a direction at
+// any length, so the row stays within the unit cube and keeps its old value rather than vanish.
+void directionRow(ui::Ui& ui, core::SnowParams& snow, std::string_view key,
+                  glm::vec3 core::SnowParams::*direction) {
     constexpr float MIN_DIRECTION_LENGTH = 1e-2f;
-    const glm::vec3 before = snow.fallDirection;
-    settingWidget(ui, core::settings::snow(), "fall_direction", snow);
-    if (glm::length(snow.fallDirection) < MIN_DIRECTION_LENGTH)
-        snow.fallDirection = before;
+    const glm::vec3 before = snow.*direction;
+    settingWidget(ui, core::settings::snow(), key, snow);
+    if (glm::length(snow.*direction) < MIN_DIRECTION_LENGTH)
+        snow.*direction = before;
 }
 
 // One of the three sizes the loader accepts.
@@ -68,7 +69,7 @@ void mapResolutionCombo(ui::Ui& ui, core::SnowParams& snow) {
 void snowBody(ui::Ui& ui, core::SnowParams& snow) {
     rows(ui, snow, {"enabled"});
     amountRows(ui, snow);
-    fallDirectionRow(ui, snow);
+    directionRow(ui, snow, "fall_direction", &core::SnowParams::fallDirection);
     rows(ui, snow, {"color"});
     // Fractal noise of the snow surface (paper eq. 4) and of the incline (Fi = cos φ + n).
     ui.collapsingHeader("noise", [&](ui::Ui& body) {
@@ -80,6 +81,12 @@ void snowBody(ui::Ui& ui, core::SnowParams& snow) {
     ui.collapsingHeader("exposure", [&](ui::Ui& body) {
         mapResolutionCombo(body, snow);
         rows(body, snow, {"samples", "sample_radius", "depth_bias", "boundary_falloff"});
+    });
+    // Drift with the wind: more snow in the lee of rocks and ridges, less facing the wind.
+    ui.collapsingHeader(snow.drift > 0.0f ? "drift (on)##drift" : "drift##drift", [&](ui::Ui& body) {
+        rows(body, snow, {"drift", "drift_reach", "drift_follows_wind"});
+        if (snow.driftFollowsWind == 0u)
+            directionRow(body, snow, "drift_direction", &core::SnowParams::driftDirection);
     });
     // Accumulation and melt over --time, and the snow's load on the blades.
     ui.collapsingHeader("accumulation, melt, load", [&](ui::Ui& body) {

@@ -1,5 +1,9 @@
 #include "render/render_options.h"
 
+#include <vector>
+
+#include "snow/snow_drift.h"
+
 namespace grass::render {
 
 GeometryPath resolveGeometryPath(core::GeometryPath path, bool softwareRenderer) {
@@ -26,7 +30,11 @@ RenderOptions renderOptionsFor(const core::Project& project, bool softwareRender
     options.groundColor = settings.groundColor;
     options.technique = settings.technique;
     options.billboards = project.billboards;
-    options.snow = project.snow;
+    std::vector<core::WindSource> wind;
+    for (const core::WindDesc& source : project.wind)
+        wind.push_back(source.source);
+    // The drift follows the winds the project has now (the editor rebuilds these every frame).
+    options.snow = core::snowWithWindDrift(project.snow, wind);
     options.cull.lodDistanceM = settings.lodDistanceM;
     options.cull.distance = settings.thinningDistanceM > 0.0f;
     if (options.cull.distance)

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "snow/snow.h"
+#include "snow/snow_drift.h"
 
 namespace grass::render {
 
@@ -24,6 +25,12 @@ SnowBlock snowBlock(const core::SnowParams& params, float amountM, const core::O
     block.boundaryRadiusTexels =
         std::max(params.sampleRadiusTexels, params.boundaryFalloffM / texelM);
     block.biasM = params.depthBiasM;
+    const glm::vec2 driftDirection = core::snowDriftMapDirection(view, params.driftDirection);
+    if (block.enabled != 0 && core::snowDrifts(params, driftDirection)) {
+        block.drift = params.drift;
+        block.driftReachM = params.driftReachM;
+        block.driftDirection = driftDirection;
+    }
     return block;
 }
 

@@ -19,6 +19,8 @@ namespace grass::render {
 inline constexpr std::uint32_t SNOW_BLOCK_BINDING = 1;
 // The texture unit of the snow depth map: SNOW_MAP_UNIT in shaders/include/snow.glsl.
 inline constexpr std::uint32_t SNOW_MAP_UNIT = 6;
+// The texture unit of the drift factors per cell: SNOW_DRIFT_UNIT in shaders/include/snow.glsl.
+inline constexpr std::uint32_t SNOW_DRIFT_UNIT = 12;
 
 // The GLSL block declares these members in this order, with a uSnow prefix (uSnowColor, ...).
 struct SnowBlock {
@@ -36,16 +38,22 @@ struct SnowBlock {
     std::int32_t octaves = 1;
     std::int32_t samples = 1;
     std::int32_t enabled = 0;  // 0 or 1
-    std::int32_t pad0 = 0, pad1 = 0, pad2 = 0;
+    float drift = 0.0f;        // 0 when the snow does not drift (core::snowDrifts)
+    float driftReachM = 0.0f;
+    std::int32_t pad2 = 0;
+    glm::vec2 driftDirection{0.0f};  // unit, across the depth map
+    glm::vec2 pad3{0.0f};
 };
-static_assert(sizeof(SnowBlock) == 80, "SnowBlock must be five vec4 (std140)");
+static_assert(sizeof(SnowBlock) == 96, "SnowBlock must be six vec4 (std140)");
 static_assert(offsetof(SnowBlock, up) == 16 && offsetof(SnowBlock, noiseB) == 32 &&
                   offsetof(SnowBlock, boundaryRadiusTexels) == 48 &&
-                  offsetof(SnowBlock, samples) == 60 && offsetof(SnowBlock, enabled) == 64,
+                  offsetof(SnowBlock, samples) == 60 && offsetof(SnowBlock, enabled) == 64 &&
+                  offsetof(SnowBlock, drift) == 68 && offsetof(SnowBlock, driftDirection) == 80,
               "SnowBlock offsets must match shaders/include/snow_block.glsl");
 
 // The block for snow `params` lying `amountM` deep, sampled from a depth map of `view` at
-// `resolution`² texels (0: no map yet, and the block says snow is off).
+// `resolution`² texels (0: no map yet, and the block says snow is off). The drift goes the way
+// params.driftDirection says (the caller resolves the wind first: core::snowWithWindDrift).
 SnowBlock snowBlock(const core::SnowParams& params, float amountM, const core::OrthoSnowView& view,
                     int resolution);
 

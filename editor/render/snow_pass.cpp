@@ -1,6 +1,8 @@
 #include "render/snow_pass.h"
 
 #include "gl/scoped_framebuffer.h"
+#include "snow/snow_drift.h"
+#include "util/assert.h"
 
 namespace grass::render {
 
@@ -34,9 +36,33 @@ void SnowPass::run(const core::OrthoSnowView& view, int resolution,
 }
 
 void SnowPass::bind(const core::SnowParams& params, float amountM) {
-    mSnowBlock.upload(snowBlock(params, amountM, mView, mResolution));
+    const SnowBlock block = snowBlock(params, amountM, mView, mResolution);
+    mSnowBlock.upload(block);
     mViewBlock.bind();
     glBindTextureUnit(SNOW_MAP_UNIT, mDepth.texture.id());
+    if (block.drift > 0.0f)
+        computeDrift();
+}
+
+void SnowPass::computeDrift() {
+    const int cells = mResolution / core::SNOW_DRIFT_CELL_TEXELS;
+    if (cells != mDriftCells) {
+        mDrift = gl::makeTexture2D(GL_R32F, cells, cells, 1, "snow drift cells");
+        gl::setClampedFiltering(mDrift, GL_NEAREST, GL_NEAREST);
+        mDriftCells = cells;
+    }
+    if (!mDriftProgram) {
+        auto program = gl::Program::load({{GL_COMPUTE_SHADER, "snow_drift.comp"}}, "snow drift");
+        GRASS_ASSERT(program.ok());  // the shader ships with the program; a failure is a bug
+        mDriftProgram = std::move(*program);
+    }
+    mDriftProgram->use();
+    glBindImageTexture(0, mDrift.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    const GLuint groups = static_cast<GLuint>((cells + 7) / 8);
+    glDispatchCompute(groups, groups, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindTextureUnit(SNOW_DRIFT_UNIT, mDrift.id());
 }
 
 }  // namespace grass::render

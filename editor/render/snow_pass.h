@@ -4,10 +4,12 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 
 #include "gl/framebuffer.h"
 #include "gl/gl_ref.h"
 #include "gl/program.h"
+#include "gl/texture.h"
 #include "gl/uniform_block.h"
 #include "render/snow_block.h"
 #include "render/snow_view_block.h"
@@ -27,14 +29,25 @@ public:
              const std::function<void(const gl::Program&)>& draw);
     // What shaders/include/snow.glsl reads, for every program drawn after it: uploads the
     // SnowBlock of `params` at `amountM`, binds it with the last run()'s view block, and binds
-    // the map on SNOW_MAP_UNIT.
+    // the map on SNOW_MAP_UNIT. While the snow drifts (params' drift direction resolved:
+    // core::snowWithWindDrift) it also computes the drift cells (snow_drift.comp) and binds
+    // them on SNOW_DRIFT_UNIT.
     void bind(const core::SnowParams& params, float amountM);
     // The depth texture (depth / depthRange), for tests.
     gl::TextureRef depthTexture() const { return mDepth.texture; }
+    // The drift cells of the last bind() (R32F, resolution / SNOW_DRIFT_CELL_TEXELS a side;
+    // none while the snow does not drift), for tests.
+    gl::TextureRef driftTexture() const { return mDrift; }
+    int driftCells() const { return mDriftCells; }
     const core::OrthoSnowView& view() const { return mView; }
 
 private:
+    void computeDrift();
+
     gl::Program mProgram;
+    std::optional<gl::Program> mDriftProgram;  // loaded the first time the snow drifts
+    gl::TextureHandle mDrift;
+    int mDriftCells = 0;
     gl::UniformBlock<SnowBlock> mSnowBlock{"snow"};
     gl::UniformBlock<SnowViewBlock> mViewBlock{"snow view"};
     gl::DepthTarget mDepth;

@@ -11,6 +11,14 @@
 #define SNOW_MAP_UNIT 6
 layout(binding = SNOW_MAP_UNIT) uniform sampler2D uSnowDepth;
 
+// The drift factor D per cell of SNOW_DRIFT_CELL_TEXELS² depth-map texels (R32F), written by
+// snow_drift.comp while the snow drifts. SNOW_DRIFT_UNIT in render/snow_block.h.
+#define SNOW_DRIFT_UNIT 12
+layout(binding = SNOW_DRIFT_UNIT) uniform sampler2D uSnowDriftMap;
+const int SNOW_DRIFT_CELL_TEXELS = 8;
+const int SNOW_DRIFT_SAMPLES = 16;
+const float SNOW_DRIFT_REFERENCE_RAD = 0.34906585;
+
 const float SNOW_GOLDEN_ANGLE = 2.39996323;
 const float SNOW_MAX_SLOPE_BIAS = 4.0;
 const float SNOW_HALF_TEXEL_DIAGONAL = 0.70710678;
@@ -134,6 +142,72 @@ float exposureCoefficient(vec3 posWorld, vec3 normal, int samples, float radiusT
     return float(exposed) / n;
 }
 
+// The world position of the surface texel (ix, iy) holds at `depth` (core: texelWorld).
+vec3 snowTexelWorld(int ix, int iy, float depth) {
+    float n = float(uSnowResolution);
+    float u = (float(ix) + 0.5) / n, v = (float(iy) + 0.5) / n;
+    return uSnowOrigin + uSnowRight * (u * uSnowSizeM) + uSnowUpAxis * (v * uSnowSizeM) +
+           uSnowForward * depth;
+}
+
+// Sx, the maximum upwind slope at the centre of drift cell `cell` (core::snowDriftShelterAngle):
+// a texel holds a surface when its depth lies inside the view's range (the cleared far plane
+// and off-map samples do not).
+float snowDriftShelterAngle(ivec2 cell) {
+    float halfCell = 0.5 * float(SNOW_DRIFT_CELL_TEXELS);
+    vec2 centre = vec2(float(cell.x * SNOW_DRIFT_CELL_TEXELS) + halfCell,
+                       float(cell.y * SNOW_DRIFT_CELL_TEXELS) + halfCell);
+    int hx = snowTexelIndex(centre.x), hy = snowTexelIndex(centre.y);
+    float here = snowStoredDepth(hx, hy);
+    if (!(here < uSnowDepthRangeM))
+        return 0.0;
+    vec3 herePos = snowTexelWorld(hx, hy, here);
+    float texelM = uSnowSizeM / float(uSnowResolution);
+    float reachTexels = uSnowDriftReachM / texelM;
+    float steepest = 0.0;
+    bool any = false;
+    for (int k = 1; k <= SNOW_DRIFT_SAMPLES; ++k) {
+        float share = float(k) / float(SNOW_DRIFT_SAMPLES);
+        vec2 s = centre - uSnowDriftDirection * (reachTexels * share);
+        int sx = snowTexelIndex(s.x), sy = snowTexelIndex(s.y);
+        float stored = snowStoredDepth(sx, sy);
+        if (!(stored < uSnowDepthRangeM))
+            continue;
+        // Heights along world up, distances across it (a slanted fall tilts the map plane).
+        vec3 d = snowTexelWorld(sx, sy, stored) - herePos;
+        float across = sqrt(d.x * d.x + d.z * d.z);
+        if (!(across > 0.0))
+            continue;
+        float slope = d.y / across;
+        steepest = any ? max(steepest, slope) : slope;
+        any = true;
+    }
+    return any ? atan(steepest) : 0.0;
+}
+
+// D at a world point: bilinear between the four nearest cell centres (core::snowDriftFactorAt);
+// exactly 1 while the snow does not drift.
+float snowDriftAt(vec3 posWorld) {
+    if (!(uSnowDrift > 0.0))
+        return 1.0;
+    vec3 c = snowMapCoords(posWorld);
+    int cells = uSnowResolution / SNOW_DRIFT_CELL_TEXELS;
+    float n = float(cells);
+    float x = clamp(c.x * n - 0.5, 0.0, n - 1.0);
+    float y = clamp(c.y * n - 0.5, 0.0, n - 1.0);
+    int x0 = min(int(x), cells - 1);
+    int y0 = min(int(y), cells - 1);
+    int x1 = min(x0 + 1, cells - 1), y1 = min(y0 + 1, cells - 1);
+    float fx = x - float(x0), fy = y - float(y0);
+    float d00 = texelFetch(uSnowDriftMap, ivec2(x0, y0), 0).r;
+    float d10 = texelFetch(uSnowDriftMap, ivec2(x1, y0), 0).r;
+    float d01 = texelFetch(uSnowDriftMap, ivec2(x0, y1), 0).r;
+    float d11 = texelFetch(uSnowDriftMap, ivec2(x1, y1), 0).r;
+    float bottom = d00 + fx * (d10 - d00);
+    float top = d01 + fx * (d11 - d01);
+    return bottom + fy * (top - bottom);
+}
+
 // Fi (paper eq. 2): cos φ plus the noise, none on vertical faces and overhangs.
 float inclineCoefficient(vec3 normal, vec3 up, float noise, float inclineNoise) {
     float cosPhi = dot(normalize(normal), up);
@@ -157,14 +231,15 @@ vec3 snowDisplacement(vec3 posWorld, vec3 normal, float noise) {
     if (!snowLies())
         return vec3(0.0);
     float Zn = 0.5 + 0.5 * noise;
-    return uSnowAmountM * snowBoundaryExposure(posWorld, normal) * Zn * normalize(normal);
+    float Fe = snowBoundaryExposure(posWorld, normal);
+    return uSnowAmountM * (Fe * snowDriftAt(posWorld)) * Zn * normalize(normal);
 }
 
 vec3 snowDisplacement(vec3 posWorld, vec3 normal) {
     return snowDisplacement(posWorld, normal, snowNoiseAt(posWorld));
 }
 
-// Local snow depth in metres, As·Fe·Zn with the boundary's Fe (core::snowDepthAt).
+// Local snow depth in metres, As·Fe·D·Zn with the boundary's Fe (core::snowDepthAt).
 float snowDepthAt(vec3 posWorld, vec3 normal) {
     return length(snowDisplacement(posWorld, normal));
 }
@@ -181,19 +256,21 @@ float bladeTipSnow(float tipFe) {
 // snow lies. `noise` is snowNoiseAt at the point, or its value interpolated from the tessellated
 // surface's vertices: the noise is smooth at the scale of a few pixels (projects/winter: Fp moves
 // by at most 3/255, by 0.0002 on average, docs/snow.md).
-vec3 snowCoverageFromExposure(vec3 normal, float noise, float Fe) {
+// `drift` is D there (snowDriftAt): ground the wind scours (D < 1) shows through, Fp = Fe·Fi·D.
+vec3 snowCoverageFromExposure(vec3 normal, float noise, float Fe, float drift) {
     if (!snowLies())
         return vec3(0.0);
     float Fi = inclineCoefficient(normal, uSnowUp, noise, uSnowInclineNoise);
-    return vec3(Fe * Fi, Fe, Fi);
+    return vec3(Fe * Fi * min(drift, 1.0), Fe, Fi);
 }
 
 // The same with Fe measured at the point (per pixel in the opaque pass).
-vec3 snowCoverageTerms(vec3 posWorld, vec3 normal, float noise) {
+vec3 snowCoverageTerms(vec3 posWorld, vec3 normal, float noise, float drift) {
     if (!snowLies())
         return vec3(0.0);
     return snowCoverageFromExposure(
-        normal, noise, exposureCoefficient(posWorld, normal, uSnowSamples, uSnowRadiusTexels));
+        normal, noise, exposureCoefficient(posWorld, normal, uSnowSamples, uSnowRadiusTexels),
+        drift);
 }
 
 // C = Fp·Cs + (1 − Fp)·Cn (paper eq. 3); exactly Cn at Fp = 0.

@@ -20,9 +20,11 @@ layout(std140, binding = SNOW_BLOCK_BINDING) uniform SnowBlock {
     int uSnowOctaves;
     int uSnowSamples;
     int uSnowEnabled;  // 0 or 1
-    int uSnowPad0;
-    int uSnowPad1;
+    float uSnowDrift;  // core::SnowParams::drift; 0 when the snow does not drift (snowDrifts)
+    float uSnowDriftReachM;
     int uSnowPad2;
+    vec2 uSnowDriftDirection;  // unit, across the depth map (core::snowDriftMapDirection)
+    vec2 uSnowPad3;
 };
 
 #endif

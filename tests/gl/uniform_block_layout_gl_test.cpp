@@ -60,9 +60,11 @@ const Member SNOW_MEMBERS[] = {
     {"uSnowOctaves", offsetof(render::SnowBlock, octaves)},
     {"uSnowSamples", offsetof(render::SnowBlock, samples)},
     {"uSnowEnabled", offsetof(render::SnowBlock, enabled)},
-    {"uSnowPad0", offsetof(render::SnowBlock, pad0)},
-    {"uSnowPad1", offsetof(render::SnowBlock, pad1)},
+    {"uSnowDrift", offsetof(render::SnowBlock, drift)},
+    {"uSnowDriftReachM", offsetof(render::SnowBlock, driftReachM)},
     {"uSnowPad2", offsetof(render::SnowBlock, pad2)},
+    {"uSnowDriftDirection", offsetof(render::SnowBlock, driftDirection)},
+    {"uSnowPad3", offsetof(render::SnowBlock, pad3)},
 };
 
 const Member SNOW_VIEW_MEMBERS[] = {
@@ -159,6 +161,10 @@ TEST_F(UniformBlockLayout, SnowMapSamplerIsOnTheSnowMapUnit) {
     GLint unit = -1;
     glGetUniformiv(program.id(), location, &unit);
     EXPECT_EQ(unit, static_cast<GLint>(render::SNOW_MAP_UNIT));
+    const GLint drift = glGetUniformLocation(program.id(), "uSnowDriftMap");
+    ASSERT_GE(drift, 0);
+    glGetUniformiv(program.id(), drift, &unit);
+    EXPECT_EQ(unit, static_cast<GLint>(render::SNOW_DRIFT_UNIT));
 }
 
 }  // namespace

@@ -52,6 +52,10 @@ TEST(ProjectSnow, EveryFieldRoundTrips) {
     s.accumulationRate = 0.01f;
     s.meltRate = 0.002f;
     s.loadGravity = 12.0f;
+    s.drift = 0.7f;
+    s.driftReachM = 6.5f;
+    s.driftFollowsWind = 0u;
+    s.driftDirection = {-1.0f, 0.0f, 0.4f};
     const std::string text = serializeProject(project);
     EXPECT_NE(text.find("\"snow\""), std::string::npos);
     const auto again = parseProject(text, SOURCE);
@@ -76,6 +80,10 @@ TEST(ProjectSnow, BadValuesNameTheirPointer) {
     expectError(R"("amount": 2, "max_amount": 1)", "/snow/amount", "max_amount");
     expectError(R"("max_amount": 11)", "/snow/max_amount", "");
     expectError(R"("fall_direction": [0, 0, 0])", "/snow/fall_direction", "zero");
+    expectError(R"("drift_direction": [0, 0, 0])", "/snow/drift_direction", "zero");
+    expectError(R"("drift": 1.5)", "/snow/drift", "[0, 1]");
+    expectError(R"("drift_reach": 0)", "/snow/drift_reach", "(0, 100]");
+    expectError(R"("drift_follows_wind": 1)", "/snow/drift_follows_wind", "true");
     expectError(R"("fall_direction": [0, -1])", "/snow/fall_direction", "");
     expectError(R"("color": [1.2, 1, 1])", "/snow/color/0", "[0, 1]");
     expectError(R"("noise_octaves": 0)", "/snow/noise_octaves", "");

@@ -8,18 +8,14 @@
 #include <numbers>
 
 #include "snow/snow.h"
+#include "support/snow_triangles.h"
 #include "util/rng.h"
 
 namespace grass::core {
 namespace {
 
-using Triangle = std::array<glm::vec3, 3>;
-
-// A horizontal rectangle [x0, x1] × [z0, z1] at height y, as two triangles.
-void addRect(std::vector<Triangle>& out, float x0, float x1, float z0, float z1, float y) {
-    out.push_back({glm::vec3(x0, y, z0), glm::vec3(x1, y, z0), glm::vec3(x1, y, z1)});
-    out.push_back({glm::vec3(x0, y, z0), glm::vec3(x1, y, z1), glm::vec3(x0, y, z1)});
-}
+using Triangle = test::SnowTriangle;
+using test::addRect;
 
 // Snow falling straight down on a 10 m ground with a 2 × 2 m roof 2 m up over the origin. The view
 // is laid out by hand so texels are 1/32 m and the roof edges (x, z = ±1) fall on texel borders:
