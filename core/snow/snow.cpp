@@ -56,12 +56,12 @@ float snowHeightNoise(float noise) {
     return 0.5f + 0.5f * noise;
 }
 
-glm::vec3 snowDisplacement(glm::vec3 posWorld, glm::vec3 normal, float Fe,
+glm::vec3 snowDisplacement(glm::vec3 posWorld, glm::vec3 /*normal*/, float Fe,
                            const SnowParams& params, float drift) {
     if (!snowLies(params))
         return glm::vec3(0.0f);
     const float Zn = snowHeightNoise(snowNoiseAt(params, posWorld));
-    return params.amountM * (Fe * drift) * Zn * glm::normalize(normal);
+    return params.amountM * (Fe * drift) * Zn * snowUp(params);
 }
 
 float snowDepthAt(glm::vec3 posWorld, float Fe, const SnowParams& params, float drift) {
@@ -105,7 +105,7 @@ SnowShade shadeSnow(const SnowParams& params, glm::vec3 posWorld, glm::vec3 norm
     shade.Fp = snowCoverage(Fe, shade.Fi) * std::min(drift, 1.0f);
     shade.color = snowColor(Cn, params.snowColor, shade.Fp);
     shade.displacement =
-        params.amountM * (FeBoundary * drift) * snowHeightNoise(noise) * glm::normalize(normal);
+        params.amountM * (FeBoundary * drift) * snowHeightNoise(noise) * snowUp(params);
     return shade;
 }
 

@@ -6,7 +6,8 @@
 //   Fe  exposure (snow_map.h, eq. 1): how much of the sky along the fall direction it sees;
 //   Fi  incline (eq. 2): less snow on steep faces, none on vertical ones and overhangs;
 //   Fp = Fe·Fi (eq. 3), colour C = Fp·Cs + (1 − Fp)·Cn (eq. 3);
-//   displacement Vn = V + As·Fe·N·Zn (eq. 5), Fe taken over the boundary falloff (below).
+//   displacement Vn = V + As·Fe·Zn·up (eq. 5 raised against the fall, not along N: see
+//   snowDisplacement), Fe taken over the boundary falloff (below).
 // Beyond the paper: blades under snow deeper than they are tall are culled, exposed tips turn
 // white, snow load adds gravity, and the amount grows and melts over time.
 // Disabled snow or As = 0 gives exactly the snow-free colour and zero displacement.
@@ -55,7 +56,13 @@ float snowBoundaryExposure(const SnowDepthMap& map, glm::vec3 posWorld, glm::vec
 // Zn of eq. 5: 0.5 + 0.5·noise ∈ [0, 1], so snow never digs below the surface.
 float snowHeightNoise(float noise);
 
-// Paper eq. 5: As·Fe·D·Zn·normalize(normal), Zn = snowHeightNoise(snowNoiseAt(posWorld)).
+// Paper eq. 5, raised against the fall instead of along the normal: As·Fe·D·Zn·snowUp, Zn =
+// snowHeightNoise(snowNoiseAt(posWorld)). The paper moves each vertex along its normal; where
+// normals converge (every valley, every rock's foot) deep snow then folds the surface over
+// itself and its back faces show as black slivers, and rocks swell into blobs (projects/winter
+// at 0.87 m, issue 30 item 8). Snow piles up under gravity: a surface raised along one
+// direction stays a height field over that direction and cannot fold. `normal` is unused (the
+// exposure Fe was taken with it); the signature is kept for the callers.
 // Fe: snowBoundaryExposure; D: the wind's drift factor there (snow_drift.h; 1 without drift).
 // As is params.amountM: with --time, pass params whose amountM is snowAmountAt(params, t). Zero
 // vector when disabled or As = 0.

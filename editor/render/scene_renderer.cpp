@@ -184,6 +184,8 @@ FrameTimings SceneRenderer::lastTimings() const {
     timings.passes = mPasses;
     if (mSnow)
         timings.allocated.push_back("snow_map");
+    if (mSnow && mSnow->driftCells() > 0)
+        timings.allocated.push_back("snow_drift");
     if (mOpaquePrograms[static_cast<int>(Opaque::Snow)].id() != 0 ||
         mOpaquePrograms[static_cast<int>(Opaque::SnowExposurePerVertex)].id() != 0)
         timings.allocated.push_back("snow_programs");

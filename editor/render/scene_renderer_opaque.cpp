@@ -25,7 +25,8 @@ void SceneRenderer::runSnowPass(const RenderOptions& options, int width, int hei
         renderSnowMap(options);
         mPasses.push_back("snow_depth");
         // The surfaces whiten and rise; the cull buries short blades and whitens the tips.
-        mSnow->bind(options.snow, snowAmountM);
+        if (mSnow->bind(options.snow, snowAmountM))
+            mPasses.push_back("snow_drift");
         const gl::Program& snowMesh = opaqueProgram(snowVariant(options));
         snowMesh.set("uSnowCoverageView", options.snowCoverageView ? 1 : 0);
         snowMesh.set("uViewportPixels", glm::vec2(float(width), float(height)));

@@ -35,13 +35,15 @@ void SnowPass::run(const core::OrthoSnowView& view, int resolution,
     glEnable(GL_MULTISAMPLE);
 }
 
-void SnowPass::bind(const core::SnowParams& params, float amountM) {
+bool SnowPass::bind(const core::SnowParams& params, float amountM) {
     const SnowBlock block = snowBlock(params, amountM, mView, mResolution);
     mSnowBlock.upload(block);
     mViewBlock.bind();
     glBindTextureUnit(SNOW_MAP_UNIT, mDepth.texture.id());
-    if (block.drift > 0.0f)
-        computeDrift();
+    if (!(block.drift > 0.0f))
+        return false;
+    computeDrift();
+    return true;
 }
 
 void SnowPass::computeDrift() {

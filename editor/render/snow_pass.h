@@ -31,8 +31,8 @@ public:
     // SnowBlock of `params` at `amountM`, binds it with the last run()'s view block, and binds
     // the map on SNOW_MAP_UNIT. While the snow drifts (params' drift direction resolved:
     // core::snowWithWindDrift) it also computes the drift cells (snow_drift.comp) and binds
-    // them on SNOW_DRIFT_UNIT.
-    void bind(const core::SnowParams& params, float amountM);
+    // them on SNOW_DRIFT_UNIT. Returns whether it did.
+    bool bind(const core::SnowParams& params, float amountM);
     // The depth texture (depth / depthRange), for tests.
     gl::TextureRef depthTexture() const { return mDepth.texture; }
     // The drift cells of the last bind() (R32F, resolution / SNOW_DRIFT_CELL_TEXELS a side;

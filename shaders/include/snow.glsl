@@ -226,13 +226,14 @@ float snowBoundaryExposure(vec3 posWorld, vec3 normal) {
                       exposureCoefficient(posWorld, normal, uSnowSamples, uSnowBoundaryRadiusTexels));
 }
 
-// Vn = V + As·Fe·Zn·N (paper eq. 5), Zn = 0.5 + 0.5·noise ≥ 0; `noise` is snowNoiseAt(posWorld).
+// Vn = V + As·Fe·D·Zn·up (paper eq. 5 raised against the fall, not along N: core::
+// snowDisplacement says why), Zn = 0.5 + 0.5·noise ≥ 0; `noise` is snowNoiseAt(posWorld).
 vec3 snowDisplacement(vec3 posWorld, vec3 normal, float noise) {
     if (!snowLies())
         return vec3(0.0);
     float Zn = 0.5 + 0.5 * noise;
     float Fe = snowBoundaryExposure(posWorld, normal);
-    return uSnowAmountM * (Fe * snowDriftAt(posWorld)) * Zn * normalize(normal);
+    return uSnowAmountM * (Fe * snowDriftAt(posWorld)) * Zn * uSnowUp;
 }
 
 vec3 snowDisplacement(vec3 posWorld, vec3 normal) {

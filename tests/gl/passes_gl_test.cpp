@@ -81,6 +81,17 @@ TEST_F(PassesGlTest, AFrameRunsAndAllocatesOnlyWhatItsFeaturesUse) {
               (Names{"snow_depth", "opaque_snow", "occlusion_prepass", "cull_snow", "blades"}));
     EXPECT_EQ(snowy.allocated, (Names{"snow_map", "snow_programs", "tip_snow"}));
 
+    // Drift (issue 30 item 2) runs its pass only while the snow drifts.
+    options.snow.drift = 0.5f;
+    options.snow.driftFollowsWind = 0u;
+    options.snow.driftDirection = {1.0f, 0.0f, 0.0f};
+    const Ran drifting = frames.draw(options);
+    EXPECT_EQ(drifting.passes, (Names{"snow_depth", "snow_drift", "opaque_snow",
+                                      "occlusion_prepass", "cull_snow", "blades"}));
+    EXPECT_EQ(drifting.allocated, (Names{"snow_map", "snow_drift", "snow_programs", "tip_snow"}));
+    options.snow.drift = 0.0f;
+    EXPECT_EQ(frames.draw(options).passes, snowy.passes) << "no drift runs no drift pass again";
+
     options.snow.enabled = 0u;
     EXPECT_EQ(frames.draw(options).passes, plain.passes) << "snow off runs no snow pass again";
 
@@ -90,8 +101,8 @@ TEST_F(PassesGlTest, AFrameRunsAndAllocatesOnlyWhatItsFeaturesUse) {
     options.technique = core::GrassTechnique::Growth;
     const Ran growth = frames.draw(options);
     EXPECT_EQ(growth.passes, (Names{"opaque", "stem_sets"})) << "no blades, no cull";
-    EXPECT_EQ(growth.allocated, (Names{"snow_map", "snow_programs", "tip_snow", "billboards",
-                                       "stem_sets"}))
+    EXPECT_EQ(growth.allocated, (Names{"snow_map", "snow_drift", "snow_programs", "tip_snow",
+                                       "billboards", "stem_sets"}))
         << "what was allocated stays for the next frame that needs it";
 }
 

@@ -84,7 +84,7 @@ TEST_F(SnowDriftGlTest, TheDriftCellsMatchTheCpuReference) {
     ASSERT_TRUE(pass.ok()) << pass.error().str();
     runDepth(*pass, ball);
     const core::SnowParams params = drifting(0.8f);
-    pass->bind(params, 0.2f);
+    EXPECT_TRUE(pass->bind(params, 0.2f));
     const int cells = RES / core::SNOW_DRIFT_CELL_TEXELS;
     ASSERT_EQ(pass->driftCells(), cells);
     std::vector<float> gpu(std::size_t(cells) * cells);
@@ -114,11 +114,11 @@ TEST_F(SnowDriftGlTest, SnowWithoutDriftRunsNoDriftPass) {
     auto pass = render::SnowPass::create();
     ASSERT_TRUE(pass.ok()) << pass.error().str();
     runDepth(*pass, ball);
-    pass->bind(drifting(0.0f), 0.2f);
+    EXPECT_FALSE(pass->bind(drifting(0.0f), 0.2f));
     EXPECT_EQ(pass->driftCells(), 0);
     core::SnowParams along = drifting(1.0f);
     along.driftDirection = {0.1f, -1.0f, 0.05f};  // along the fall: no direction across the map
-    pass->bind(along, 0.2f);
+    EXPECT_FALSE(pass->bind(along, 0.2f));
     EXPECT_EQ(pass->driftCells(), 0);
 }
 

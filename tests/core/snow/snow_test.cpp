@@ -276,10 +276,12 @@ TEST(SnowSurface, ZeroAmountOrDisabledIsExactlySnowFree) {
     EXPECT_EQ(snowLoadGravity(off, 0.5f, 1.0f), 0.0f);
 }
 
-TEST(SnowSurface, DisplacementIsAmountTimesExposureTimesNoiseAlongTheNormal) {
+TEST(SnowSurface, DisplacementIsAmountTimesExposureTimesNoiseAgainstTheFall) {
     SnowParams params;
     params.enabled = 1;
     params.amountM = 0.4f;
+    params.fallDirection = {0.3f, -1.0f, 0.2f};
+    const glm::vec3 up = snowUp(params);
     Rng rng(5);
     for (int i = 0; i < 200; ++i) {
         const glm::vec3 p{rng.uniform(-9, 9), rng.uniform(-1, 1), rng.uniform(-9, 9)};
@@ -288,7 +290,8 @@ TEST(SnowSurface, DisplacementIsAmountTimesExposureTimesNoiseAlongTheNormal) {
         const glm::vec3 d = snowDisplacement(p, 2.0f * normal, fe, params);
         const float depth = snowDepthAt(p, fe, params);
         EXPECT_NEAR(glm::length(d), depth, 1e-6f);
-        EXPECT_NEAR(glm::dot(d, normal), depth, 1e-6f);  // along N
+        EXPECT_NEAR(glm::dot(d, up), depth, 1e-6f);  // against the fall, whatever N
+        EXPECT_NEAR(glm::length(glm::cross(d, up)), 0.0f, 1e-6f);
         EXPECT_GE(depth, 0.0f);                          // Zn ≥ 0
         EXPECT_LE(depth, params.amountM * fe + 1e-7f);
     }
