@@ -37,5 +37,6 @@ void main() {
 #ifdef GRASS_SNOW_EXPOSURE_PER_VERTEX
     vSnowExposure = exposureCoefficient(posWorld, normal, uSnowSamples, uSnowRadiusTexels);
 #endif
-    gl_Position = uViewProj * vec4(posWorld + snowDisplacement(posWorld, normal, vSnowNoise), 1.0);
+    gl_Position = uViewProj *
+                  vec4(posWorld + snowDisplacement(posWorld, normal, vSnowNoise, vSnowDrift), 1.0);
 }

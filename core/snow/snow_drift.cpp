@@ -7,13 +7,6 @@ namespace grass::core {
 
 namespace {
 
-// Beyond any map: keeps floor() of a far sample an int (snow.glsl: SNOW_MAX_TEXEL_COORD).
-constexpr float MAX_TEXEL_COORD = 1048576.0f;
-
-int texelIndex(float t) {
-    return static_cast<int>(std::floor(std::clamp(t, -MAX_TEXEL_COORD, MAX_TEXEL_COORD)));
-}
-
 // A texel holds a surface when its depth lies inside the view's range: the CPU map stores
 // SNOW_MAP_EMPTY where none is, the GPU map its cleared far plane (depthRange).
 bool holdsSurface(const SnowDepthMap& map, float depth) {
@@ -23,9 +16,8 @@ bool holdsSurface(const SnowDepthMap& map, float depth) {
 // The world position of the surface a texel holds: its centre across the map, at its depth.
 glm::vec3 texelWorld(const SnowDepthMap& map, int ix, int iy, float depth) {
     const float n = static_cast<float>(map.resolution);
-    const float u = (static_cast<float>(ix) + 0.5f) / n, v = (static_cast<float>(iy) + 0.5f) / n;
-    return map.view.origin + map.view.right * (u * map.view.sizeM) +
-           map.view.up * (v * map.view.sizeM) + map.view.forward * depth;
+    return snowMapToWorld(map.view, {(static_cast<float>(ix) + 0.5f) / n,
+                                     (static_cast<float>(iy) + 0.5f) / n, depth});
 }
 
 float cellFactor(const SnowDepthMap& map, int cx, int cy, glm::vec2 direction,
@@ -74,7 +66,7 @@ float snowDriftShelterAngle(const SnowDepthMap& map, int cx, int cy, glm::vec2 m
     const float half = 0.5f * static_cast<float>(SNOW_DRIFT_CELL_TEXELS);
     const glm::vec2 centre(static_cast<float>(cx * SNOW_DRIFT_CELL_TEXELS) + half,
                            static_cast<float>(cy * SNOW_DRIFT_CELL_TEXELS) + half);
-    const int hx = texelIndex(centre.x), hy = texelIndex(centre.y);
+    const int hx = snowTexelIndex(centre.x), hy = snowTexelIndex(centre.y);
     const float here = map.at(hx, hy);
     if (!holdsSurface(map, here))
         return 0.0f;
@@ -85,7 +77,7 @@ float snowDriftShelterAngle(const SnowDepthMap& map, int cx, int cy, glm::vec2 m
     for (int k = 1; k <= SNOW_DRIFT_SAMPLES; ++k) {
         const float share = static_cast<float>(k) / static_cast<float>(SNOW_DRIFT_SAMPLES);
         const glm::vec2 s = centre - mapDirection * (reachTexels * share);
-        const int sx = texelIndex(s.x), sy = texelIndex(s.y);
+        const int sx = snowTexelIndex(s.x), sy = snowTexelIndex(s.y);
         const float stored = map.at(sx, sy);
         if (!holdsSurface(map, stored))
             continue;

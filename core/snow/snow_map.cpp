@@ -10,15 +10,14 @@
 
 namespace grass::core {
 
-namespace {
-
-// Texel positions far outside any map are clamped here so float → int stays defined (the
-// samples there read SNOW_MAP_EMPTY either way).
-constexpr float MAX_TEXEL_COORD = 1048576.0f;
-
-int texelIndex(float t) {
-    return static_cast<int>(std::floor(std::clamp(t, -MAX_TEXEL_COORD, MAX_TEXEL_COORD)));
+// Texel positions far outside any map are clamped so float → int stays defined (the samples
+// there read SNOW_MAP_EMPTY either way).
+int snowTexelIndex(float t) {
+    const float clamped = std::clamp(t, -SNOW_MAX_TEXEL_COORD, SNOW_MAX_TEXEL_COORD);
+    return static_cast<int>(std::floor(clamped));
 }
+
+namespace {
 
 // Twice the signed area of (a, b, p) in the map plane.
 double edge(const glm::dvec3& a, const glm::dvec3& b, double px, double py) {
@@ -136,8 +135,8 @@ float exposureCoefficient(const SnowDepthMap& map, glm::vec3 posWorld, glm::vec3
     const glm::vec3 c = snowMapCoords(map.view, posWorld);
     const float res = static_cast<float>(map.resolution);
     const glm::vec2 centre{c.x * res, c.y * res};
-    const auto ix = static_cast<std::uint32_t>(texelIndex(centre.x));
-    const auto iy = static_cast<std::uint32_t>(texelIndex(centre.y));
+    const auto ix = static_cast<std::uint32_t>(snowTexelIndex(centre.x));
+    const auto iy = static_cast<std::uint32_t>(snowTexelIndex(centre.y));
     // tan φ from cos φ without a division by zero: vertical and overhanging faces get the cap.
     const float cosPhi = glm::dot(glm::normalize(normal), -map.view.forward);
     const float sinPhi = std::sqrt(std::max(0.0f, 1.0f - cosPhi * cosPhi));
@@ -155,7 +154,7 @@ float exposureCoefficient(const SnowDepthMap& map, glm::vec3 posWorld, glm::vec3
         const float angle =
             rotation + fk * SNOW_GOLDEN_ANGLE + (hashToUnit(h.y) - 0.5f) * (twoPi / n);
         const glm::vec2 s = centre + r * glm::vec2(std::cos(angle), std::sin(angle));
-        const float stored = map.at(texelIndex(s.x), texelIndex(s.y));
+        const float stored = map.at(snowTexelIndex(s.x), snowTexelIndex(s.y));
         // The texel's depth was taken at its centre, up to half a diagonal from the sample.
         const float bias = biasM + (r + SNOW_HALF_TEXEL_DIAGONAL) * texelM * slope;
         if (stored >= c.z - bias)

@@ -42,6 +42,11 @@ struct OrthoSnowView {
 // orthogonal to forward; up = cross(forward, right). Falling straight down: u = x, v = z.
 OrthoSnowView makeOrthoSnowView(glm::vec3 fallDirection, const Bounds& bounds, float marginM);
 
+// The texel index holding map coordinate t (in texels): floor(t), t clamped to
+// ±SNOW_MAX_TEXEL_COORD first (snow.glsl: snowTexelIndex).
+inline constexpr float SNOW_MAX_TEXEL_COORD = 1048576.0f;
+int snowTexelIndex(float t);
+
 // World → (u, v, depthM) and back; exact inverses up to rounding.
 glm::vec3 snowMapCoords(const OrthoSnowView& view, glm::vec3 posWorld);
 glm::vec3 snowMapToWorld(const OrthoSnowView& view, glm::vec3 mapCoords);

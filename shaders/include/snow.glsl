@@ -228,12 +228,17 @@ float snowBoundaryExposure(vec3 posWorld, vec3 normal) {
 
 // Vn = V + As·Fe·D·Zn·up (paper eq. 5 raised against the fall, not along N: core::
 // snowDisplacement says why), Zn = 0.5 + 0.5·noise ≥ 0; `noise` is snowNoiseAt(posWorld).
-vec3 snowDisplacement(vec3 posWorld, vec3 normal, float noise) {
+// `drift` is snowDriftAt(posWorld), for a caller that needs it anyway (mesh_snow.tese).
+vec3 snowDisplacement(vec3 posWorld, vec3 normal, float noise, float drift) {
     if (!snowLies())
         return vec3(0.0);
     float Zn = 0.5 + 0.5 * noise;
     float Fe = snowBoundaryExposure(posWorld, normal);
-    return uSnowAmountM * (Fe * snowDriftAt(posWorld)) * Zn * uSnowUp;
+    return uSnowAmountM * (Fe * drift) * Zn * uSnowUp;
+}
+
+vec3 snowDisplacement(vec3 posWorld, vec3 normal, float noise) {
+    return snowDisplacement(posWorld, normal, noise, snowDriftAt(posWorld));
 }
 
 vec3 snowDisplacement(vec3 posWorld, vec3 normal) {

@@ -32,10 +32,7 @@ BallScene ballScene() {
     field.resolution = 8;
     field.density = 2.0f;
     core::LoadedProject loaded = planeFieldProject(field);
-    core::ColliderDesc ball;
-    ball.position = {0.0f, 0.7f, 0.0f};
-    ball.radiusM = 0.6f;
-    loaded.project.colliders.push_back(ball);
+    addBall(loaded, {0.0f, 0.7f, 0.0f}, 0.6f);
     auto scene = core::buildScene(loaded);
     EXPECT_TRUE(scene.ok()) << scene.error().str();
     core::Bounds bounds{{-2.0f, 0.0f, -2.0f}, {2.0f, 1.4f, 2.0f}};

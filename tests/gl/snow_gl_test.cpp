@@ -28,10 +28,7 @@ core::LoadedProject shelteredPlane() {
     field.resolution = 8;
     field.density = 2.0f;
     core::LoadedProject loaded = planeFieldProject(field);
-    core::ColliderDesc ball;
-    ball.position = BALL_CENTRE;
-    ball.radiusM = BALL_RADIUS;
-    loaded.project.colliders.push_back(ball);
+    addBall(loaded, BALL_CENTRE, BALL_RADIUS);
     return loaded;
 }
 

@@ -175,10 +175,7 @@ TEST_F(SnowGrassGlTest, ExposedTipsWhitenAndShelteredTipsDoNot) {
     plane.resolution = 8;
     plane.density = 60.0f;
     core::LoadedProject loaded = planeFieldProject(plane);
-    core::ColliderDesc ball;
-    ball.position = {0.0f, 1.4f, 0.0f};
-    ball.radiusM = 0.8f;
-    loaded.project.colliders.push_back(ball);
+    addBall(loaded, {0.0f, 1.4f, 0.0f}, 0.8f);
     const auto drawn = drawnField(loaded);
     ASSERT_NE(drawn, nullptr);
     render::SceneRenderer& renderer = *drawn->renderer;

@@ -32,4 +32,12 @@ inline core::LoadedProject planeFieldProject(const PlaneField& field,
     return loaded;
 }
 
+// A sphere collider (a ball) over the field: the shelter of the snow tests.
+inline void addBall(core::LoadedProject& loaded, glm::vec3 centre, float radiusM) {
+    core::ColliderDesc ball;
+    ball.position = centre;
+    ball.radiusM = radiusM;
+    loaded.project.colliders.push_back(ball);
+}
+
 }  // namespace grass::test
