@@ -10,8 +10,10 @@ uniform float uAlphaCutoff;
 
 in vec2 vUv;
 in vec3 vNormal;
+in vec3 vUp;
 in vec3 vPosition;
 in float vFade;
+in vec3 vTint;  // the near field's growth colour here (1: the texture's own)
 
 // The blades' lighting (SPEC §10, uGrassLighting 1; 0: the wrapped Lambert) so billboards and
 // blades match where they cross-fade: the object stands for many blades, so it takes the field's
@@ -24,6 +26,7 @@ out vec4 fragColor;
 
 void main() {
     vec4 texel = texture(uGrassTexture, vUv);
+    texel.rgb *= vTint;
     // Sharpen alpha to about one pixel of ramp at every mip level: minified, mipmapped alpha
     // otherwise goes soft and thin, and alpha-to-coverage turns soft alpha into dither.
     float alpha = texel.a;
@@ -33,10 +36,12 @@ void main() {
     alpha *= vFade;
     if (alpha < uAlphaCutoff)
         discard;
-    // Two-sided, and the normal is the object's up on both sides (GPU Gems ch. 7): no flip.
-    vec3 up = normalize(vNormal);
+    // Two-sided, and the normal is the object's up on both sides (GPU Gems ch. 7): no flip. It
+    // leans with the wind (the animated normal); the ground's stays the object's rest up.
+    vec3 normal = normalize(vNormal);
+    vec3 up = normalize(vUp);
     if (uGrassLighting == 0) {
-        fragColor = vec4(simpleLighting(texel.rgb, up, 0.3), alpha);
+        fragColor = vec4(simpleLighting(texel.rgb, normal, 0.3), alpha);
         return;
     }
     vec3 toEye = uCameraPosition - vPosition;
@@ -44,7 +49,7 @@ void main() {
     float height = clamp(1.0 - vUv.y, 0.0, 1.0);  // v = 0 at the top of the quads
     GrassSurface surface;
     surface.albedo = texel.rgb;
-    surface.bladeNormal = up;
+    surface.bladeNormal = normal;
     surface.terrainNormal = up;
     surface.blurredNormal = up;
     surface.ao = mix(uFieldAo, 1.0, height * height);

@@ -40,6 +40,12 @@ void tangentFrame(glm::vec3 up, glm::vec3& tangent, glm::vec3& bitangent) {
     bitangent = glm::cross(up, tangent);
 }
 
+// Uniform in [0, 1) from the seed and an index: the top 24 bits of a SplitMix64 hash.
+float keepOf(std::uint64_t seed, std::size_t index) {
+    const std::uint64_t h = Rng::splitMix(seed ^ (0xD1B54A32D192ED03ULL * (index + 1)));
+    return static_cast<float>(h >> 40) * (1.0f / 16777216.0f);
+}
+
 float ramp(float start, float end, float d) {
     if (!(end > start))
         return d >= start ? 1.0f : 0.0f;
@@ -70,6 +76,9 @@ std::vector<GrassObject> placeGrassObjects(const SurfaceMesh& mesh,
         object.height = rng.uniform(heightMin, heightMax);
         object.width = object.height * params.widthToHeight;
         object.rotationRad = rng.uniform(0.0f, TWO_PI);
+        object.uv = at.uv;
+        object.face = at.triangle;
+        object.keep = keepOf(seed, i);
         objects.push_back(object);
     }
     // Clusters in lexicographic cell order (std::map: ordered, so the numbering is deterministic).
@@ -134,6 +143,8 @@ StarMesh buildStarVertices(const std::vector<GrassObject>& objects) {
                 v.normal = up;
                 v.objectCentre = object.centre;
                 v.sway = k >= 2 ? 1.0f : 0.0f;
+                v.tint = object.tint;
+                v.objectHeight = object.height;
             }
         }
     }

@@ -29,11 +29,22 @@ struct GrassObject {
     float width = 0.36f;             // metres, of each quad
     float rotationRad = 0.0f;        // of the first quad about `up`
     std::uint32_t cluster = 0;       // index into StarMesh::clusters
+    // Where it stands in the mesh's terms: UV0 (the painted maps' space) and the face.
+    glm::vec2 uv{0.0f};
+    std::uint32_t face = 0;
+    // Uniform in [0, 1): the object lives where the near field keeps at least this share of its
+    // blades (scene/billboard_follow.h), as a scattered blade lives where keep < density.
+    float keep = 0.0f;
+    // Multiplies the texture's colour: the near field's growth colour here against the colour
+    // the texture stands for (1: as painted).
+    glm::vec3 tint{1.0f};
     bool operator==(const GrassObject&) const = default;
 };
 
 // Objects uniform over the surface (area-weighted, SurfaceSampler), up = interpolated surface
-// normal, height uniform in heightRangeM, rotation uniform in [0, 2π). The count is
+// normal, height uniform in heightRangeM, rotation uniform in [0, 2π), keep from a hash of the
+// seed and the object's placement index (not the placement stream, so it moved no object). The
+// count is
 // density × area rounded up or down at random (so its expectation is exactly density × area).
 // Clusters: the cubic grid cells of edge clusterSizeM (≤ 0: one cluster) that hold at least one
 // object, numbered in lexicographic cell order; objects are returned sorted by cluster (stable,
@@ -52,8 +63,10 @@ struct StarVertex {
     glm::vec3 normal{0.0f, 1.0f, 0.0f};
     glm::vec3 objectCentre{0.0f};
     float sway = 0.0f;  // 1 for the upper vertices (moved by the wind), 0 for the roots
+    glm::vec3 tint{1.0f};       // the object's GrassObject::tint
+    float objectHeight = 0.0f;  // metres: the animated normal and the scene wind's bend use it
 };
-static_assert(sizeof(StarVertex) == 48, "StarVertex is the GPU vertex layout, tightly packed");
+static_assert(sizeof(StarVertex) == 64, "StarVertex is the GPU vertex layout, tightly packed");
 
 inline constexpr std::uint32_t STAR_QUADS = 3;
 // Four vertices per quad (lower left, lower right, upper right, upper left), twelve per object;

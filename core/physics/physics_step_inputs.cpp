@@ -4,7 +4,6 @@
 
 namespace grass::core {
 
-namespace {
 WindSourceGpu packWindSource(const WindSource& source) {
     WindSourceGpu out;
     out.directionStrength = glm::vec4(source.direction, source.strength);
@@ -13,7 +12,6 @@ WindSourceGpu packWindSource(const WindSource& source) {
     out.kind = glm::uvec4(static_cast<std::uint32_t>(source.kind), 0u, 0u, 0u);
     return out;
 }
-}  // namespace
 
 PhysicsStepInputs physicsStepInputs(const PhysicsParams& params,
                                     const std::vector<WindSource>& wind,

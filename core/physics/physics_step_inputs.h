@@ -24,6 +24,9 @@ struct WindSourceGpu {
 };
 static_assert(sizeof(WindSourceGpu) == 64, "WindSourceGpu must be four vec4 (std430)");
 
+// The source as the shaders read it (its path is the caller's to sample).
+WindSourceGpu packWindSource(const WindSource& source);
+
 // The broad phase of a core::SphereCollider (ColliderGroup in physics.glsl).
 struct ColliderGroupGpu {
     glm::vec4 boundOffsetRadius{0.0f};

@@ -48,8 +48,9 @@ std::size_t sceneBytesPerBlade() {
 }
 
 std::size_t sceneBytesPerBillboard() {
-    // The object, its star's vertices on the CPU and the GPU, and its indices.
-    return sizeof(GrassObject) + 2 * STAR_VERTICES_PER_OBJECT * sizeof(StarVertex) +
+    // The object placed and drawn, its rule factor per layer (one layer counted), its star's
+    // vertices on the CPU and the GPU, and its indices.
+    return 2 * sizeof(GrassObject) + sizeof(float) + 2 * STAR_VERTICES_PER_OBJECT * sizeof(StarVertex) +
            STAR_INDICES_PER_OBJECT * sizeof(std::uint32_t);
 }
 
@@ -253,6 +254,12 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
     if (!billboards)
         return billboards.error();
     scene.billboards = std::move(*billboards);
+    std::vector<PlacementRules> rules;
+    for (const GrassLayer& layer : project.layers)
+        rules.push_back(layer.rules);
+    scene.billboards.follow =
+        billboardFollow(scene.billboards.placed, scene.layers, rules, scene.mesh, ruleWorld);
+    refreshBillboards(scene);
     return scene;
 }
 
@@ -267,7 +274,8 @@ Result<BillboardLayer> buildBillboards(const LoadedProject& loaded, const Surfac
     const BillboardDesc& desc = loaded.project.billboards;
     const std::uint64_t seed = Rng::splitMix(loaded.project.seed ^ 0xB111B0A2D5ULL);
     BillboardLayer layer;
-    layer.objects = placeGrassObjects(mesh, desc.placement, seed);
+    layer.placed = placeGrassObjects(mesh, desc.placement, seed);
+    layer.objects = layer.placed;
     if (!desc.texture.empty()) {
         auto path = resolveAssetPath(loaded.folder, desc.texture, "/billboards/texture");
         if (!path)
@@ -284,6 +292,11 @@ Result<BillboardLayer> buildBillboards(const LoadedProject& loaded, const Surfac
                                              colours.tipColor);
     }
     return layer;
+}
+
+void refreshBillboards(Scene& scene) {
+    scene.billboards.objects =
+        followLayers(scene.billboards.placed, scene.billboards.follow, scene.layers);
 }
 
 BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting) {

@@ -10,6 +10,7 @@
 #include "billboard/grass_texture.h"
 #include "billboard/star_billboards.h"
 #include "mesh/surface_mesh.h"
+#include "scene/billboard_follow.h"
 #include "scene/blade_shading.h"
 #include "scene/layer_growth.h"
 #include "scene/paint_uvs.h"
@@ -42,7 +43,9 @@ struct LayerField : GrownField {
 // The star billboard grass objects of SPEC §8 and their texture: the billboard technique and
 // the hybrid's far field (project "billboards").
 struct BillboardLayer {
-    std::vector<GrassObject> objects;
+    std::vector<GrassObject> placed;   // every object placement made, before the layers speak
+    BillboardFollow follow;            // what of the layers does not change with painting
+    std::vector<GrassObject> objects;  // the ones drawn: followLayers(placed, follow, layers)
     Rgba8Pixels texture;
 };
 
@@ -75,8 +78,13 @@ std::size_t sceneBytesPerBillboard();
 double estimateLayerBlades(const ScatterParams& params, double area);
 
 // The project's billboards placed on `mesh` with their texture (loaded, or generated from the
-// first layer's colours); errors name the texture file.
+// first layer's colours); errors name the texture file. Every placed object is drawn: buildScene
+// then makes them follow the layers (billboard_follow.h).
 Result<BillboardLayer> buildBillboards(const LoadedProject& loaded, const SurfaceMesh& mesh);
+
+// After a layer's maps changed (a repaint, an undo): which billboards live, how tall and how
+// tinted, from the layers' maps now (billboard_follow.h). The placements and rule factors stay.
+void refreshBillboards(Scene& scene);
 
 // The bake parameters of a project's lighting (AO kernel, normal blur, water range).
 BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting);

@@ -10,6 +10,7 @@
 
 #include "gl/scoped_capability.h"
 #include "gl/texture.h"
+#include "physics/physics_step_inputs.h"
 #include "scene/frustum.h"
 
 namespace grass::render {
@@ -63,35 +64,43 @@ Result<BillboardField> BillboardField::create(const std::vector<core::GrassObjec
 
     BillboardField field;
     field.mProgram = std::move(*program);
-    const core::StarMesh mesh = core::buildStarVertices(objects);
-    field.mObjectCount = mesh.objectCount();
-    field.mClusters = mesh.clusters;
-    const std::string name(label);
-    field.mVertices = gl::Buffer::fromVector(mesh.vertices, name + " vertices", 0);
-    field.mIndices =
-        gl::Buffer::fromVector(core::starQuadIndices(field.mObjectCount), name + " indices", 0);
-    field.mTexture = uploadTexture(texture, name + " texture");
-
-    field.mVertexArray = gl::VertexArray(name);
-    field.mVertexArray.setVertexBuffer(field.mVertices, sizeof(core::StarVertex));
-    field.mVertexArray.setElementBuffer(field.mIndices);
+    field.mLabel = std::string(label);
+    field.mTexture = uploadTexture(texture, field.mLabel + " texture");
+    field.mVertexArray = gl::VertexArray(field.mLabel);
     const gl::VertexAttribute attributes[] = {
-        {3, offsetof(core::StarVertex, position)}, {2, offsetof(core::StarVertex, uv)},
-        {3, offsetof(core::StarVertex, normal)},   {3, offsetof(core::StarVertex, objectCentre)},
-        {1, offsetof(core::StarVertex, sway)},
+        {3, offsetof(core::StarVertex, position)},     {2, offsetof(core::StarVertex, uv)},
+        {3, offsetof(core::StarVertex, normal)},       {3, offsetof(core::StarVertex, objectCentre)},
+        {1, offsetof(core::StarVertex, sway)},         {3, offsetof(core::StarVertex, tint)},
+        {1, offsetof(core::StarVertex, objectHeight)},
     };
     field.mVertexArray.setAttributes(attributes);
+    field.setObjects(objects);
     return field;
+}
+
+void BillboardField::setObjects(const std::vector<core::GrassObject>& objects) {
+    const core::StarMesh mesh = core::buildStarVertices(objects);
+    mObjectCount = mesh.objectCount();
+    mClusters = mesh.clusters;
+    mTallestObjectM = 0.0f;
+    for (const core::GrassObject& object : objects)
+        mTallestObjectM = std::max(mTallestObjectM, object.height);
+    mVertices = gl::Buffer::fromVector(mesh.vertices, mLabel + " vertices", 0);
+    mIndices = gl::Buffer::fromVector(core::starQuadIndices(mObjectCount), mLabel + " indices", 0);
+    mVertexArray.setVertexBuffer(mVertices, sizeof(core::StarVertex));
+    mVertexArray.setElementBuffer(mIndices);
 }
 
 // Clusters that may hold a visible object, back to front (ties by index, so the order is
 // deterministic). Every object centre lies within the cluster's radius of its centre, and the
-// fade is 0 outside [in start, out end]. Wind moves upper vertices by at most the amplitude
-// (core::billboardWindOffset).
+// fade is 0 outside [in start, out end]. The sway moves upper vertices by at most its amplitude
+// (core::billboardWindOffset), the scene's wind by less than the object's height
+// (core::billboardWindBend).
 std::vector<std::uint32_t> BillboardField::visibleClusters(
     const BillboardDrawParams& params) const {
     const core::FrustumPlanes planes = core::frustumPlanes(params.viewProj);
-    const float sway = std::abs(params.wind.amplitudeM);
+    const float sway =
+        std::abs(params.wind.amplitudeM) + (params.sceneWind.empty() ? 0.0f : mTallestObjectM);
     std::vector<std::pair<float, std::uint32_t>> byDistance;
     for (std::uint32_t c = 0; c < mClusters.size(); ++c) {
         const core::StarCluster& cluster = mClusters[c];
@@ -114,8 +123,29 @@ std::vector<std::uint32_t> BillboardField::visibleClusters(
     return order;
 }
 
+// The scene's wind sources as the shader reads them (billboard_wind.glsl), each centre on its path
+// at the draw's time.
+void BillboardField::uploadSceneWind(const BillboardDrawParams& params) {
+    std::vector<core::WindSourceGpu> sources;
+    std::vector<glm::vec4> centres;
+    for (const core::WindSource& source : params.sceneWind) {
+        sources.push_back(core::packWindSource(source));
+        centres.emplace_back(core::samplePath(source.path, params.timeS, source.position), 0.0f);
+    }
+    const std::size_t bytes = sources.size() * sizeof(core::WindSourceGpu);
+    if (mWindSources.size() < bytes) {
+        mWindSources = gl::Buffer::fromVector(sources, mLabel + " wind sources");
+        mWindCentres = gl::Buffer::fromVector(centres, mLabel + " wind centres");
+    } else {
+        mWindSources.update(std::as_bytes(std::span(sources)));
+        mWindCentres.update(std::as_bytes(std::span(centres)));
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BILLBOARD_WIND_SOURCE_BINDING, mWindSources.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BILLBOARD_WIND_CENTRE_BINDING, mWindCentres.id());
+}
+
 // Binds the program with the uniforms of `params`, the texture and the vertex array.
-void BillboardField::bindForDraw(const BillboardDrawParams& params, bool multisampled) const {
+void BillboardField::bindForDraw(const BillboardDrawParams& params, bool multisampled) {
     mProgram.use();
     mProgram.set("uViewProj", params.viewProj);
     mProgram.set("uCameraPos", params.cameraPosWorld);
@@ -125,6 +155,11 @@ void BillboardField::bindForDraw(const BillboardDrawParams& params, bool multisa
     mProgram.set("uWindAmplitude", params.wind.amplitudeM);
     mProgram.set("uWindFrequency", params.wind.frequencyHz);
     mProgram.set("uClusterOffset", glm::vec3(0.0f));
+    mProgram.set("uClusterWind", glm::vec3(0.0f));
+    mProgram.set("uStiffness", params.stiffness);
+    mProgram.set("uWindSourceCount", static_cast<int>(params.sceneWind.size()));
+    if (!params.sceneWind.empty())
+        uploadSceneWind(params);
     mProgram.set("uFade", glm::vec4(params.fade.inStartM, params.fade.inEndM, params.fade.outStartM,
                                     params.fade.outEndM));
     mProgram.set("uAlphaCutoff",
@@ -133,13 +168,17 @@ void BillboardField::bindForDraw(const BillboardDrawParams& params, bool multisa
     mVertexArray.bind();
 }
 
-// Per-cluster wind: one draw per cluster, each with the offset the CPU computed for it.
+// Per-cluster wind: one draw per cluster, each with the sway and the scene's wind the CPU
+// computed at its centre.
 void BillboardField::drawEachCluster(const std::vector<std::uint32_t>& order,
                                      const BillboardDrawParams& params) {
     for (const std::uint32_t c : order) {
         const core::StarCluster& cluster = mClusters[c];
         mProgram.set("uClusterOffset",
                      core::billboardWindOffset(cluster.centre, params.timeS, params.wind));
+        if (!params.sceneWind.empty())
+            mProgram.set("uClusterWind",
+                         core::windAt(params.sceneWind, cluster.centre, params.timeS));
         glDrawElements(GL_TRIANGLES, clusterIndexCount(cluster), GL_UNSIGNED_INT,
                        clusterIndexOffset(cluster));
         ++mDrawCalls;

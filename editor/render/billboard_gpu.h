@@ -9,17 +9,20 @@
 // (render/lighting_block.h), whose uGrassLighting picks the wrapped Lambert or SPEC §10. Clusters
 // wholly outside the fade range or the view frustum are skipped (bounding spheres, with the largest
 // wind offset added); the rest are drawn back to front by cluster-centre distance: one draw per
-// cluster in the per-cluster mode (each with its CPU-computed wind offset), one glMultiDrawElements
-// otherwise.
+// cluster in the per-cluster mode (each with its CPU-computed sway and scene wind), one
+// glMultiDrawElements otherwise. The scene's wind sources go to the shader each draw (their
+// centres at the draw's time) so the far field moves with them (core/billboard/billboard_motion.h).
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "billboard/star_billboards.h"
+#include "physics/wind.h"
 #include "gl/buffer.h"
 #include "gl/gl_handle.h"
 #include "gl/program.h"
@@ -29,6 +32,9 @@
 namespace grass::render {
 
 inline constexpr std::uint32_t BILLBOARD_TEXTURE_UNIT = 0;
+// The scene's wind sources and their centres (shaders/include/billboard_wind.glsl).
+inline constexpr std::uint32_t BILLBOARD_WIND_SOURCE_BINDING = 13;
+inline constexpr std::uint32_t BILLBOARD_WIND_CENTRE_BINDING = 14;
 
 using BillboardWindMode = core::BillboardWindMode;
 
@@ -39,6 +45,10 @@ struct BillboardDrawParams {
     BillboardWindMode mode = BillboardWindMode::PerObject;
     core::BillboardWind wind;
     core::BillboardFade fade;
+    // The scene's wind sources and the stiffness of the blades the billboards stand for
+    // (core::BillboardFollow::stiffness); no sources: GPU Gems' sway alone.
+    std::vector<core::WindSource> sceneWind;
+    float stiffness = 0.0f;
     // Skips clusters whose bounding sphere lies outside the view frustum of viewProj.
     bool frustumCull = true;
 };
@@ -52,6 +62,9 @@ public:
                                          std::string_view label = "billboards");
 
     void draw(const BillboardDrawParams& params);
+    // New objects (a repaint changed which live, how tall and how tinted), same texture and
+    // program.
+    void setObjects(const std::vector<core::GrassObject>& objects);
 
     std::size_t objectCount() const { return mObjectCount; }
     std::size_t clusterCount() const { return mClusters.size(); }
@@ -66,17 +79,23 @@ private:
     BillboardField() = default;
     // The steps of draw().
     std::vector<std::uint32_t> visibleClusters(const BillboardDrawParams& params) const;
-    void bindForDraw(const BillboardDrawParams& params, bool multisampled) const;
+    void bindForDraw(const BillboardDrawParams& params, bool multisampled);
+    void uploadSceneWind(const BillboardDrawParams& params);
     void drawEachCluster(const std::vector<std::uint32_t>& order,
                          const BillboardDrawParams& params);
     void drawClustersAtOnce(const std::vector<std::uint32_t>& order);
 
     gl::Program mProgram;
+    std::string mLabel;
     gl::Buffer mVertices;
     gl::Buffer mIndices;
     gl::VertexArray mVertexArray;
     gl::TextureHandle mTexture;
+    // The scene's wind sources and their centres, re-made when the source count grows.
+    gl::Buffer mWindSources;
+    gl::Buffer mWindCentres;
     std::vector<core::StarCluster> mClusters;
+    float mTallestObjectM = 0.0f;  // how far the scene's wind can move a top, at most
     std::size_t mObjectCount = 0;
     std::size_t mDrawnObjects = 0;
     std::size_t mDrawCalls = 0;

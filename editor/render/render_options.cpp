@@ -1,5 +1,6 @@
 #include "render/render_options.h"
 
+#include <utility>
 #include <vector>
 
 #include "snow/snow_drift.h"
@@ -35,6 +36,7 @@ RenderOptions renderOptionsFor(const core::Project& project, bool softwareRender
         wind.push_back(source.source);
     // The drift follows the winds the project has now (the editor rebuilds these every frame).
     options.snow = core::snowWithWindDrift(project.snow, wind);
+    options.wind = std::move(wind);
     options.cull.lodDistanceM = settings.lodDistanceM;
     options.cull.distance = settings.thinningDistanceM > 0.0f;
     if (options.cull.distance)

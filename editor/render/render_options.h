@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -45,6 +46,9 @@ struct RenderOptions {
     core::BillboardDesc billboards;
     // Scene time in seconds: where the props (colliders) stand on their paths.
     float timeS = 0.0f;
+    // The scene's wind sources: the billboards bend with them (the blades' physics has its own
+    // copy); renderOptionsFor takes the project's.
+    std::vector<core::WindSource> wind;
     // Snow (SPEC §11); off by default. Its depth pass runs, and its map exists, only when on.
     core::SnowParams snow;
     // Draw the opaque surfaces as (Fp, Fe, Fi) in (R, G, B), unlit, to measure the snow mask.

@@ -150,6 +150,9 @@ void SceneRenderer::uploadRegrown(std::size_t layer, const core::RegrowReport& r
     mFields[layer].uploadPatches(report.patches, false);
     mFields[layer].uploadPatches(report.shadedPatches, true);
     mFieldAo = meanFieldAo(*mScene);
+    // The maps changed: the billboards follow them when next drawn (a field drawn by blades
+    // alone pays nothing).
+    mBillboardsStale = true;
     if (layer < mStemSets.size()) {
         const core::LayerField& field = mScene->layers[layer];
         for (std::uint32_t p : report.patches) {

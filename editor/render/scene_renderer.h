@@ -117,6 +117,7 @@ private:
     bool mSnowLies = false;  // this frame: snow on with an amount > 0
     void renderSnowMap(const RenderOptions& options);
     std::unique_ptr<BillboardField> mBillboards;
+    bool mBillboardsStale = false;  // a repaint since they were last made to follow the layers
     BillboardField* billboardField();
     std::vector<StemSetField> mStemSets;
     core::StemSetCullResult mStemSetCull;  // reused frame to frame

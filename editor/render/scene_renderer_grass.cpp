@@ -131,13 +131,20 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
 }
 
 // The billboard clusters, uploaded on the first frame that draws them: a scene drawn by blades
-// alone allocates none. Null when the scene has no billboards (scenes assembled by hand).
+// alone allocates none. Null when the scene has no billboards (scenes assembled by hand). After a
+// repaint they follow the layers' maps again (core/scene/billboard_follow.h) before they draw.
 BillboardField* SceneRenderer::billboardField() {
-    if (!mBillboards && !mScene->billboards.objects.empty()) {
-        auto billboards =
-            BillboardField::create(mScene->billboards.objects, mScene->billboards.texture);
-        GRASS_ASSERT(billboards.ok());  // the shaders ship with the program; a failure is a bug
-        mBillboards = std::make_unique<BillboardField>(std::move(*billboards));
+    const core::BillboardLayer& billboards = mScene->billboards;
+    if (!mBillboards && !billboards.placed.empty()) {
+        auto made = BillboardField::create(billboards.objects, billboards.texture);
+        GRASS_ASSERT(made.ok());  // the shaders ship with the program; a failure is a bug
+        mBillboards = std::make_unique<BillboardField>(std::move(*made));
+        mBillboardsStale = false;
+    }
+    if (mBillboards && mBillboardsStale) {
+        mBillboards->setObjects(
+            core::followLayers(billboards.placed, billboards.follow, mScene->layers));
+        mBillboardsStale = false;
     }
     return mBillboards.get();
 }
@@ -150,6 +157,8 @@ void SceneRenderer::drawBillboards(const core::OrbitCamera& camera, const glm::m
     params.timeS = options.timeS;
     params.mode = options.billboards.animation;
     params.wind = options.billboards.wind;
+    params.sceneWind = options.wind;
+    params.stiffness = mScene->billboards.follow.stiffness;
     if (options.technique == core::GrassTechnique::Hybrid)
         params.fade = {options.billboards.crossFadeM.x, options.billboards.crossFadeM.y, 1.0e30f,
                        1.0e30f};
