@@ -198,4 +198,15 @@ Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file) {
     return image;
 }
 
+glm::vec3 meanGrassColour(const Rgba8Pixels& texture) {
+    glm::dvec3 sum(0.0);
+    double weight = 0.0;
+    for (std::size_t p = 0; p + 3 < texture.pixels.size(); p += 4) {
+        const double alpha = texture.pixels[p + 3];
+        sum += alpha * glm::dvec3(texture.pixels[p], texture.pixels[p + 1], texture.pixels[p + 2]);
+        weight += alpha;
+    }
+    return weight > 0.0 ? glm::vec3(sum / (weight * 255.0)) : glm::vec3(0.0f);
+}
+
 }  // namespace grass::core

@@ -30,4 +30,8 @@ Rgba8Pixels generateGrassTexture(int width, int height, int bladeCount, std::uin
 // (a billboard would then be a solid rectangle).
 Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file);
 
+// The alpha-weighted mean colour of a grass texture, 0..1 per channel (the values as the shader
+// reads them): what a distant tuft of it looks like. Black for a texture without opaque texels.
+glm::vec3 meanGrassColour(const Rgba8Pixels& texture);
+
 }  // namespace grass::core

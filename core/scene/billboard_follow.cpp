@@ -1,7 +1,6 @@
 #include "scene/billboard_follow.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "scene/scene.h"
 
@@ -13,13 +12,8 @@ float sampleOrOne(const MapImage& map, glm::vec2 uv) {
     return map.texels.empty() ? 1.0f : map.sample(uv);
 }
 
-glm::vec3 healthyColour(const LayerField& layer) {
-    return 0.5f * (layer.rootColor + layer.tipColor);
-}
-
-glm::vec3 poorColour(const LayerField& layer) {
-    return 0.5f * (layer.poorRootColor + layer.poorTipColor);
-}
+// The mean of mix(root, tip, τ) over the upper half τ ∈ [0.5, 1] of a blade.
+constexpr float VISIBLE_TIP_SHARE = 0.75f;
 
 // The blades' own candidates, for placementFactors: a root and a face per object.
 ScatterCandidates objectRoots(const std::vector<GrassObject>& placed) {
@@ -36,11 +30,18 @@ ScatterCandidates objectRoots(const std::vector<GrassObject>& placed) {
 
 }  // namespace
 
+glm::vec3 visibleBladeColour(const LayerField& layer, float wilt) {
+    const glm::vec3 healthy = glm::mix(layer.rootColor, layer.tipColor, VISIBLE_TIP_SHARE);
+    const glm::vec3 poor = glm::mix(layer.poorRootColor, layer.poorTipColor, VISIBLE_TIP_SHARE);
+    return glm::mix(healthy, poor, wilt);
+}
+
 BillboardFollow billboardFollow(const std::vector<GrassObject>& placed,
                                 const std::vector<LayerField>& layers,
                                 const std::vector<PlacementRules>& rules, const SurfaceMesh& mesh,
-                                const RuleWorld& world) {
+                                const RuleWorld& world, glm::vec3 textureColour) {
     BillboardFollow follow;
+    follow.textureColour = textureColour;
     const ScatterCandidates roots = objectRoots(placed);
     double weightSum = 0.0, stiffnessSum = 0.0;
     for (std::size_t i = 0; i < layers.size(); ++i) {
@@ -68,7 +69,7 @@ std::vector<GrassObject> followLayers(const std::vector<GrassObject>& placed,
         weightSum += weight;
     if (layers.empty() || !(weightSum > 0.0))
         return placed;
-    const glm::vec3 base = healthyColour(layers.front());
+    const glm::vec3 base = follow.textureColour;
     std::vector<GrassObject> living;
     living.reserve(placed.size());
     for (std::size_t o = 0; o < placed.size(); ++o) {
@@ -90,11 +91,8 @@ std::vector<GrassObject> followLayers(const std::vector<GrassObject>& placed,
             const double blades = follow.layerWeights[i] * static_cast<double>(share);
             kept += blades;
             heightSum += blades * growth.heightScale;
-            const glm::vec3 colour =
-                source.growthEnabled
-                    ? glm::mix(healthyColour(layers[i]), poorColour(layers[i]),
-                               1.0f - growth.colourBlend)
-                    : healthyColour(layers[i]);
+            const glm::vec3 colour = visibleBladeColour(
+                layers[i], source.growthEnabled ? 1.0f - growth.colourBlend : 0.0f);
             colourSum += blades * glm::dvec3(colour);
         }
         if (!(kept > 0.0) || !(static_cast<double>(object.keep) < kept / weightSum))
@@ -104,11 +102,8 @@ std::vector<GrassObject> followLayers(const std::vector<GrassObject>& placed,
         grown.height *= heightScale;
         grown.width *= heightScale;
         const glm::vec3 colour(colourSum / kept);
-        for (int c = 0; c < 3; ++c) {
-            const float ratio = base[c] > 0.0f ? std::clamp(colour[c] / base[c], 0.0f, 4.0f) : 1.0f;
-            // The rounding of the weighted mean must not tint an unpainted field.
-            grown.tint[c] = std::abs(ratio - 1.0f) < 1e-5f ? 1.0f : ratio;
-        }
+        for (int c = 0; c < 3; ++c)
+            grown.tint[c] = base[c] > 0.0f ? std::clamp(colour[c] / base[c], 0.0f, 4.0f) : 1.0f;
         living.push_back(grown);
     }
     return living;

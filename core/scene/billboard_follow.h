@@ -8,8 +8,11 @@
 // density map times its placement rules there, as keepsCandidate thins a scattered blade); with
 // w_i the layer's candidate count, the near field keeps F = Σ w_i·p_i / Σ w_i of its blades
 // there, and the object lives where its keep < F. A living object's height is scaled by the
-// kept blades' mean growth height scale (1 without growth) and its tint is their mean growth
-// colour over the first layer's healthy colour (the colour the billboard texture stands for).
+// kept blades' mean growth height scale (1 without growth), and its tint takes the texture's
+// mean colour to the kept blades' mean visible colour: a distant field shows its blades' upper
+// halves, root + 0.75·(tip − root) on average, of the healthy or (by the growth model's wilt)
+// poor colours. Without the tint a generated texture of the same colours drew the far field of
+// projects/helicopter at 0.62× the brightness of its blades (docs/rendering.md).
 #pragma once
 
 #include <vector>
@@ -30,15 +33,19 @@ struct BillboardFollow {
     std::vector<std::vector<float>> ruleFactors;
     std::vector<double> layerWeights;  // w_i: the layer's blade candidates
     float stiffness = 0.0f;            // the mean stiffness s of every layer's candidates
+    glm::vec3 textureColour{1.0f};     // meanGrassColour of the billboards' texture
 };
 
 BillboardFollow billboardFollow(const std::vector<GrassObject>& placed,
                                 const std::vector<LayerField>& layers,
                                 const std::vector<PlacementRules>& rules, const SurfaceMesh& mesh,
-                                const RuleWorld& world);
+                                const RuleWorld& world, glm::vec3 textureColour);
 
 // The placed objects the layers keep, with their height (and width) scaled and their tint set;
 // cluster numbers and order as placed. Without layers every object lives, untinted.
+// The colour a far view of a layer's blades shows, healthy (wilt 0) to poor (wilt 1).
+glm::vec3 visibleBladeColour(const LayerField& layer, float wilt);
+
 std::vector<GrassObject> followLayers(const std::vector<GrassObject>& placed,
                                       const BillboardFollow& follow,
                                       const std::vector<LayerField>& layers);

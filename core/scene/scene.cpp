@@ -258,7 +258,8 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
     for (const GrassLayer& layer : project.layers)
         rules.push_back(layer.rules);
     scene.billboards.follow =
-        billboardFollow(scene.billboards.placed, scene.layers, rules, scene.mesh, ruleWorld);
+        billboardFollow(scene.billboards.placed, scene.layers, rules, scene.mesh, ruleWorld,
+                        meanGrassColour(scene.billboards.texture));
     refreshBillboards(scene);
     return scene;
 }

@@ -35,10 +35,25 @@ MapImage stripeMap(int side, float u0, float u1, float inside, float outside) {
     return map;
 }
 
-TEST(BillboardFollow, AnUnpaintedFieldDrawsEveryPlacedObjectUnchanged) {
+TEST(BillboardFollow, AnUnpaintedFieldDrawsEveryPlacedObjectAsPlacedInItsBladesColour) {
     const Scene scene = fieldScene();
-    ASSERT_GT(scene.billboards.placed.size(), 600u);
-    EXPECT_EQ(scene.billboards.objects, scene.billboards.placed);
+    const auto& placed = scene.billboards.placed;
+    const auto& drawn = scene.billboards.objects;
+    ASSERT_GT(placed.size(), 600u);
+    ASSERT_EQ(drawn.size(), placed.size());
+    // One tint for all: the texture's mean colour times it is the blades' visible colour,
+    // root + 0.75·(tip − root).
+    const LayerField& layer = scene.layers[0];
+    const glm::vec3 visible = layer.rootColor + 0.75f * (layer.tipColor - layer.rootColor);
+    const glm::vec3 texture = meanGrassColour(scene.billboards.texture);
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+        GrassObject untinted = drawn[i];
+        untinted.tint = placed[i].tint;
+        EXPECT_EQ(untinted, placed[i]);
+        EXPECT_EQ(drawn[i].tint, drawn[0].tint);
+    }
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(drawn[0].tint[c] * texture[c], visible[c], 1e-5f) << "channel " << c;
 }
 
 TEST(BillboardFollow, APathPaintedOutOfTheDensityHasNoBillboards) {
@@ -164,6 +179,18 @@ TEST(BillboardFollow, StiffnessIsTheLayersMeanBladeStiffness) {
     const BladeRanges ranges;
     EXPECT_NEAR(scene.billboards.follow.stiffness,
                 0.5f * (ranges.stiffnessMin + ranges.stiffnessMax), 2.0f);
+}
+
+TEST(BillboardFollow, TextureColourIsTheAlphaWeightedMean) {
+    Rgba8Pixels texture;
+    texture.width = 2;
+    texture.height = 1;
+    // An opaque red texel and a quarter-opaque blue one: (255, 0, 0)·1 + (0, 0, 255)·0.25.
+    texture.pixels = {255, 0, 0, 255, 0, 0, 255, 64};
+    const glm::vec3 mean = meanGrassColour(texture);
+    EXPECT_NEAR(mean.r, 255.0f / 319.0f, 1e-6f);
+    EXPECT_NEAR(mean.g, 0.0f, 1e-6f);
+    EXPECT_NEAR(mean.b, 64.0f / 319.0f, 1e-6f);
 }
 
 TEST(BillboardFollow, WithoutLayersEveryObjectLives) {
