@@ -1,7 +1,8 @@
 // Incremental re-growth on the GPU (issue 6): after a brush stroke, core::regrowLayerRegion
 // changes a few patches and SceneRenderer::uploadRegrown re-uploads only those; the live
 // renderer must then draw exactly what a renderer built fresh from the repainted scene draws,
-// for the blades and for the stem sets.
+// for the blades, the stem sets and the billboards (which follow the layers' maps, issue 30
+// item 3).
 #include <gtest/gtest.h>
 
 #include "gl/framebuffer.h"
@@ -57,6 +58,7 @@ TEST_F(RegrowGlTest, UploadingRegrownPatchesDrawsWhatAFreshRendererDraws) {
     ASSERT_TRUE(live.ok()) << live.error().str();
     const auto bladesBefore = draw(**live, core::GrassTechnique::Blades);
     draw(**live, core::GrassTechnique::Growth);  // uploads the stem sets before the paint
+    const auto billboardsBefore = draw(**live, core::GrassTechnique::Billboards);
 
     // Clear a path of density and poison the soil across the middle of the field.
     const core::TexelSurface surface(scene.mesh, 32, 32);
@@ -80,9 +82,12 @@ TEST_F(RegrowGlTest, UploadingRegrownPatchesDrawsWhatAFreshRendererDraws) {
     EXPECT_LT(report->patches.size(), field.patched.patches.size());
     (*live)->uploadRegrown(0, *report);
 
+    // A fresh renderer draws the scene's billboards as a rebuild would make them follow the maps.
+    core::refreshBillboards(scene);
     auto fresh = render::SceneRenderer::create(scene);
     ASSERT_TRUE(fresh.ok()) << fresh.error().str();
-    for (const auto technique : {core::GrassTechnique::Blades, core::GrassTechnique::Growth}) {
+    for (const auto technique : {core::GrassTechnique::Blades, core::GrassTechnique::Growth,
+                                 core::GrassTechnique::Billboards}) {
         SCOPED_TRACE(std::string(core::grassTechniqueName(technique)));
         const auto fromLive = draw(**live, technique);
         const auto fromFresh = draw(**fresh, technique);
@@ -97,6 +102,14 @@ TEST_F(RegrowGlTest, UploadingRegrownPatchesDrawsWhatAFreshRendererDraws) {
                 report->patches.size(), field.patched.patches.size(), report->rebakedBlades,
                 100.0 * painted.differingShare);
     EXPECT_GT(painted.differingShare, 0.02);
+    // The billboards lost the path too.
+    const ImageDifference farPainted = compareImages(
+        draw(**live, core::GrassTechnique::Billboards), billboardsBefore, 24);
+    std::printf("[ regrow ] billboards: %zu of %zu placed live; %.1f %% of the pixels changed\n",
+                scene.billboards.objects.size(), scene.billboards.placed.size(),
+                100.0 * farPainted.differingShare);
+    EXPECT_LT(scene.billboards.objects.size(), scene.billboards.placed.size());
+    EXPECT_GT(farPainted.differingShare, 0.02);
 }
 
 }  // namespace
