@@ -40,8 +40,9 @@ void main() {
     // leans with the wind (the animated normal); the ground's stays the object's rest up.
     vec3 normal = normalize(vNormal);
     vec3 up = normalize(vUp);
+    float sun = sunVisibility(vPosition);
     if (uGrassLighting == 0) {
-        fragColor = vec4(simpleLighting(texel.rgb, normal, 0.3), alpha);
+        fragColor = vec4(simpleLightingShadowed(texel.rgb, normal, 0.3, sun), alpha);
         return;
     }
     vec3 toEye = uCameraPosition - vPosition;
@@ -57,5 +58,6 @@ void main() {
     surface.height = height;
     surface.toEye = eyeDistance > 0.0 ? toEye / eyeDistance : up;
     surface.eyeDistance = eyeDistance;
+    surface.sunVisibility = sun;
     fragColor = vec4(grassLighting(surface), alpha);
 }

@@ -59,5 +59,8 @@ void main() {
     }
     albedo = snowShade(coverage.x, albedo);
 #endif
-    fragColor = vec4(uAlbedoView ? albedo : simpleLighting(albedo, normal, 0.2), 1.0);
+    fragColor = vec4(uAlbedoView ? albedo
+                                 : simpleLightingShadowed(albedo, normal, 0.2,
+                                                          sunVisibility(vPosWorld)),
+                     1.0);
 }

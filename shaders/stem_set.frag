@@ -37,10 +37,12 @@ void main() {
     vec3 root = mix(uPoorRoot, uHealthyRoot, vB);
     vec3 tip = mix(uPoorTip, uHealthyTip, vB);
     vec3 albedo = mix(root, tip, height);
+    float sun = sunVisibility(vPosition);
     if (uGrassLighting == 0) {
         // A thin ribbon's normal is nearly horizontal, so a high sun would leave it black;
         // leaning it towards the surface normal lights it the way a field scatters.
-        fragColor = vec4(simpleLighting(albedo, normalize(normal + 0.8 * up), 0.5), 1.0);
+        fragColor = vec4(simpleLightingShadowed(albedo, normalize(normal + 0.8 * up), 0.5, sun),
+                         1.0);
         return;
     }
     GrassSurface surface;
@@ -54,5 +56,6 @@ void main() {
     surface.height = height;
     surface.toEye = toEye;
     surface.eyeDistance = eyeDistance;
+    surface.sunVisibility = sun;
     fragColor = vec4(grassLighting(surface), 1.0);
 }

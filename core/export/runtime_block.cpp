@@ -237,6 +237,8 @@ std::vector<std::string> runtimeBlockGaps(const LoadedProject& loaded, const Sce
         gaps.push_back("runtime: the runtime draws blades only (no billboards or stem sets)");
     if (!scene.look.baseTexture.pixels.empty())
         gaps.push_back("runtime: the surface's texture does not travel (its base colour does)");
+    if (project.sun.shadows)
+        gaps.push_back("runtime: sun shadows do not travel (the runtime lights without them)");
     return gaps;
 }
 

@@ -28,6 +28,17 @@ constexpr std::array SUN{
     field<&SunDesc::color>({.key = "color", .kind = Kind::Colour, .rule = json::UNIT_INTERVAL}),
     field<&SunDesc::intensity>(
         {.key = "intensity", .rule = json::NON_NEGATIVE, .help = "multiplies `color`"}),
+    field<&SunDesc::shadows>(
+        {.key = "shadows",
+         .kind = Kind::Flag,
+         .help = "the surface and the colliders shade the grass, the ground and each other; off "
+                 "costs nothing",
+         .label = "sun shadows"}),
+    field<&SunDesc::shadowResolution>(
+        {.key = "shadow_resolution",
+         .intMin = 256,
+         .intMax = 8192,
+         .help = "texels a side of the sun's depth map, which covers the whole scene"}),
 };
 
 constexpr std::array LIGHTING{

@@ -159,6 +159,10 @@ struct SunDesc {
     glm::vec3 direction{-0.4f, -1.0f, -0.3f};  // direction the light travels (normalized on use)
     glm::vec3 color{1.0f, 0.96f, 0.88f};
     float intensity = 1.0f;
+    // Shadows of the surface and the colliders on the grass, the ground and the colliders
+    // (a depth map along the sun, docs/rendering.md); off: no pass, no map, no lookups.
+    bool shadows = false;
+    int shadowResolution = 2048;  // texels a side of the sun's depth map
     bool operator==(const SunDesc&) const = default;
 };
 

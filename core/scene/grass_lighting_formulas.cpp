@@ -46,26 +46,30 @@ glm::vec3 grassLighting(const GrassSurface& s, const LightingBlock& lighting) {
         glm::normalize(glm::mix(s.bladeNormal, sssNormal, lighting.terrainNormalWeight));
 
     const glm::vec3 diffuse =
-        s.albedo * lighting.sunColor * diffuseRamp(glm::dot(diffuseNormal, toLight), lighting);
+        s.albedo * lighting.sunColor *
+        glm::mix(lighting.diffuseLow, diffuseRamp(glm::dot(diffuseNormal, toLight), lighting),
+                 s.sunVisibility);
 
     const float fade =
         glm::smoothstep(lighting.specularFadeM.x, lighting.specularFadeM.y, s.eyeDistance);
     const float specular =
         s.height * specularLobes(s.bladeNormal, toLight, s.toEye, s.water, article) +
         specularLobes(s.terrainNormal, toLight, s.toEye, s.water, article);
-    const glm::vec3 specularTerm = lighting.sunColor * (lighting.specular * fade * specular);
+    const glm::vec3 specularTerm =
+        lighting.sunColor * (lighting.specular * fade * specular * s.sunVisibility);
 
     const glm::vec3 fakeN =
         -glm::normalize(glm::mix(s.bladeNormal, toLight, lighting.transmissionDistortion));
     const float through =
         std::pow(std::clamp(glm::dot(fakeN, s.toEye), 0.0f, 1.0f), lighting.transmissionPower);
     const glm::vec3 transmissionTerm =
-        lighting.transmission * through * s.ao * lighting.sunColor * s.albedo;
+        lighting.transmission * through * s.ao * s.sunVisibility * lighting.sunColor * s.albedo;
 
     const float wrapped = std::clamp(0.5f + 0.5f * glm::dot(sssNormal, toLight), 0.0f, 1.0f);
     const glm::vec3 sssLight = glm::mix(glm::vec3(wrapped * wrapped),
                                         diffuseRamp(glm::dot(sssNormal, toLight), lighting), article);
-    const glm::vec3 sssTerm = lighting.sss * sssLight * lighting.sunColor * s.albedo;
+    const glm::vec3 sssTerm =
+        lighting.sss * sssLight * s.sunVisibility * lighting.sunColor * s.albedo;
 
     const glm::vec3 lit = glm::mix(diffuse, specularTerm + transmissionTerm + sssTerm, s.water);
     const glm::vec3 ambient =

@@ -31,6 +31,7 @@ struct GrassSurface {
     float height = 0.0f;                        // 0 root, 1 tip
     glm::vec3 toEye{0.0f, 1.0f, 0.0f};          // normalized
     float eyeDistance = 0.0f;                   // metres
+    float sunVisibility = 1.0f;                 // 0 in the sun's shadow .. 1 lit (sun_shadow.h)
     bool operator==(const GrassSurface&) const = default;
 };
 

@@ -41,16 +41,29 @@ struct LightingBlock {
     // The water of a field's mean blade, for billboards and stem sets, which stand for many
     // blades: the middle of GrassLightingDesc::water.
     float fieldWater = 0.0f;
+    // Sun shadows (scene/sun_shadow.h): the sun's depth-map view (OrthoSnowView) and the bias;
+    // sunShadows 0: off, nothing is looked up (and runtimes, which draw none, leave it so).
+    glm::vec3 sunShadowOrigin{0.0f};
+    float sunShadowSizeM = 1.0f;
+    glm::vec3 sunShadowRight{1.0f, 0.0f, 0.0f};
+    float sunShadowDepthRangeM = 1.0f;
+    glm::vec3 sunShadowUp{0.0f, 0.0f, 1.0f};
+    std::int32_t sunShadows = 0;
+    glm::vec3 sunShadowForward{0.0f, -1.0f, 0.0f};
+    float sunShadowBiasM = 0.0f;
     bool operator==(const LightingBlock&) const = default;
 };
-static_assert(sizeof(LightingBlock) == 128, "LightingBlock must be eight vec4 (std140)");
+static_assert(sizeof(LightingBlock) == 192, "LightingBlock must be twelve vec4 (std140)");
 static_assert(offsetof(LightingBlock, sunColor) == 16 && offsetof(LightingBlock, skyColor) == 32 &&
                   offsetof(LightingBlock, groundColor) == 48 &&
                   offsetof(LightingBlock, diffuseLow) == 64 &&
                   offsetof(LightingBlock, diffuseHigh) == 96 &&
                   offsetof(LightingBlock, specularFadeM) == 112 &&
                   offsetof(LightingBlock, grassLighting) == 120 &&
-                  offsetof(LightingBlock, fieldWater) == 124,
+                  offsetof(LightingBlock, fieldWater) == 124 &&
+                  offsetof(LightingBlock, sunShadowOrigin) == 128 &&
+                  offsetof(LightingBlock, sunShadows) == 172 &&
+                  offsetof(LightingBlock, sunShadowBiasM) == 188,
               "LightingBlock offsets must match shaders/include/lighting_block.glsl");
 
 }  // namespace grass::core

@@ -119,13 +119,15 @@ static void beginFrame(gl::FramebufferRef framebuffer, int width, int height, gl
 
 void SceneRenderer::render(const core::OrbitCamera& camera, int width, int height,
                            gl::FramebufferRef framebuffer, const RenderOptions& options) {
-    beginFrame(framebuffer, width, height, options.skyColor);
     const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
     const glm::mat4 projection = camera.projection(aspect);
-    // Every program that lights a surface reads this one upload.
-    mLighting.upload(
-        lightingBlock(options.lighting, options.sun, options.skyColor, options.groundColor));
     mPasses.clear();
+    // Every program that lights a surface reads this one upload, the sun's shadows included.
+    LightingBlock lighting =
+        lightingBlock(options.lighting, options.sun, options.skyColor, options.groundColor);
+    runSunShadowPass(options, lighting);  // before the frame's target is bound and cleared
+    beginFrame(framebuffer, width, height, options.skyColor);
+    mLighting.upload(lighting);
     // Figures a frame's caller reads are timed exactly on software GL (gl/timer_query.h).
     const bool synchronous =
         mSoftwareGl && (options.cull.collectStats || options.exactStageTimings);
@@ -199,6 +201,8 @@ FrameTimings SceneRenderer::lastTimings() const {
         timings.allocated.push_back("billboards");
     if (!mStemSets.empty())
         timings.allocated.push_back("stem_sets");
+    if (mSunShadow)
+        timings.allocated.push_back("sun_shadow_map");
     return timings;
 }
 

@@ -35,6 +35,9 @@ inline constexpr std::uint32_t SURFACE_TEXTURE_UNIT = 5;
 // The texture unit of the editor's map overlay (mesh.frag's uMapOverlay binding). Not the snow
 // map's: the snow surface's program samples both while the artist paints under snow.
 inline constexpr std::uint32_t MAP_OVERLAY_UNIT = 7;
+// The sun's depth map (shaders/include/sun_shadow.glsl's uSunShadowMap), bound while the
+// project's shadows are on.
+inline constexpr std::uint32_t SUN_SHADOW_UNIT = 13;
 static_assert(MAP_OVERLAY_UNIT != SNOW_MAP_UNIT && SURFACE_TEXTURE_UNIT != SNOW_MAP_UNIT &&
               MAP_OVERLAY_UNIT != SURFACE_TEXTURE_UNIT);
 
@@ -114,8 +117,11 @@ private:
     std::unique_ptr<CullPass> mCull;
     // Made on the first frame with snow on: a snow-free scene allocates no map.
     std::unique_ptr<SnowPass> mSnow;
+    std::unique_ptr<SnowPass> mSunShadow;  // the sun's depth map, made when shadows are first on
     bool mSnowLies = false;  // this frame: snow on with an amount > 0
     void renderSnowMap(const RenderOptions& options);
+    void drawOccluders(const gl::Program& program, float timeS);
+    void runSunShadowPass(const RenderOptions& options, LightingBlock& block);
     std::unique_ptr<BillboardField> mBillboards;
     bool mBillboardsStale = false;  // a repaint since they were last made to follow the layers
     BillboardField* billboardField();

@@ -2,6 +2,8 @@
 // snow depth map they cast (SPEC §11).
 #include "render/scene_renderer.h"
 
+#include "scene/sun_shadow.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -56,14 +58,38 @@ void SceneRenderer::renderSnowMap(const RenderOptions& options) {
         mSnow = std::make_unique<SnowPass>(std::move(*pass));
     }
     const core::OrthoSnowView view = core::sceneSnowView(*mScene, options.snow, options.timeS);
-    mSnow->run(view, options.snow.mapResolution, [&](const gl::Program& program) {
-        program.set("uModel", glm::mat4(1.0f));
-        mMesh->draw();
-        for (std::size_t i = 0; i < mProps.size(); ++i) {
-            program.set("uModel", mScene->props[i].modelAt(options.timeS));
-            mProps[i].draw();
-        }
-    });
+    mSnow->run(view, options.snow.mapResolution,
+               [&](const gl::Program& program) { drawOccluders(program, options.timeS); });
+}
+
+// The terrain and the props where they stand at timeS, each with the program's uModel set.
+void SceneRenderer::drawOccluders(const gl::Program& program, float timeS) {
+    program.set("uModel", glm::mat4(1.0f));
+    mMesh->draw();
+    for (std::size_t i = 0; i < mProps.size(); ++i) {
+        program.set("uModel", mScene->props[i].modelAt(timeS));
+        mProps[i].draw();
+    }
+}
+
+// The sun's depth map (core/scene/sun_shadow.h): the snow's depth pass pointed along the light,
+// over the same casters; bound on SUN_SHADOW_UNIT and announced in `block`. Nothing is made or
+// run while the project's shadows are off.
+void SceneRenderer::runSunShadowPass(const RenderOptions& options, LightingBlock& block) {
+    if (!options.sun.shadows)
+        return;
+    if (!mSunShadow) {
+        auto pass = SnowPass::create();
+        GRASS_ASSERT(pass.ok());  // the shader ships with the program; a load failure is a bug
+        mSunShadow = std::make_unique<SnowPass>(std::move(*pass));
+    }
+    const int resolution = std::clamp(options.sun.shadowResolution, 1, 16384);
+    const core::OrthoSnowView view = core::sceneSunView(*mScene, options.sun, options.timeS);
+    mSunShadow->run(view, resolution,
+                    [&](const gl::Program& program) { drawOccluders(program, options.timeS); });
+    glBindTextureUnit(SUN_SHADOW_UNIT, mSunShadow->depthTexture().id());
+    core::enableSunShadows(block, view, resolution);
+    mPasses.push_back("sun_shadow");
 }
 
 // Under snow the surfaces are tessellated and displaced (mesh_snow.*) and whitened (mesh.frag

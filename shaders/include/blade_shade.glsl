@@ -42,12 +42,13 @@ vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeInd
         albedo = white * uSnowTipColor + (1.0 - white) * albedo;
     }
     if (uAlbedoView != 0) return albedo;
+    float sun = sunVisibility(position);
     if (uGrassLighting == 0) {
         // A thin blade's normal is nearly horizontal, so a high sun would leave the field
         // black; leaning it towards the surface normal lights it the way a field scatters.
         float selfShadow = mix(0.45, 1.0, height);
         vec3 leaned = normalize(normal + 0.8 * up);
-        return simpleLighting(albedo, leaned, 0.5) * selfShadow;
+        return simpleLightingShadowed(albedo, leaned, 0.5, sun) * selfShadow;
     }
     GrassSurface surface;
     surface.albedo = albedo;
@@ -60,6 +61,7 @@ vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeInd
     surface.height = height;
     surface.toEye = toEye;
     surface.eyeDistance = eyeDistance;
+    surface.sunVisibility = sun;
     return grassLighting(surface);
 }
 #endif

@@ -31,6 +31,7 @@ struct GrassSurface {
     float height;        // 0 root, 1 tip
     vec3 toEye;          // normalized
     float eyeDistance;   // metres
+    float sunVisibility; // 0 in the sun's shadow .. 1 lit (sun_shadow.glsl)
 };
 
 // GGX normal distribution with α = roughness (not squared: α = r² would make the driest lobe
@@ -75,22 +76,25 @@ vec3 grassLighting(GrassSurface s) {
     vec3 sssNormal = normalize(mix(s.terrainNormal, s.blurredNormal, uSssIntensity));
     vec3 diffuseNormal = normalize(mix(s.bladeNormal, sssNormal, uTerrainNormalWeight));
 
-    vec3 diffuse = s.albedo * uSunColor * diffuseRamp(dot(diffuseNormal, toLight));
+    // In the sun's shadow the ramp falls to its N·L = −1 colour, the ramp's own shade.
+    vec3 diffuse = s.albedo * uSunColor *
+                   mix(uDiffuseLow, diffuseRamp(dot(diffuseNormal, toLight)), s.sunVisibility);
 
     float fade = smoothstep(uSpecularFade.x, uSpecularFade.y, s.eyeDistance);
     float specular = s.height * specularLobes(s.bladeNormal, toLight, s.toEye, s.water, article) +
                      specularLobes(s.terrainNormal, toLight, s.toEye, s.water, article);
-    vec3 specularTerm = uSunColor * (uSpecular * fade * specular);
+    vec3 specularTerm = uSunColor * (uSpecular * fade * specular * s.sunVisibility);
 
     vec3 fakeN = -normalize(mix(s.bladeNormal, toLight, uTransmissionDistortion));
     float through = pow(clamp(dot(fakeN, s.toEye), 0.0, 1.0), uTransmissionPower);
-    vec3 transmissionTerm = uTransmission * through * s.ao * uSunColor * s.albedo;
+    vec3 transmissionTerm =
+        uTransmission * through * s.ao * s.sunVisibility * uSunColor * s.albedo;
 
     // Ours: wrapped light on the SSS normal. The article's: its SSS is the blurred shading
     // normal itself, so the ramp lit through it.
     float wrapped = clamp(0.5 + 0.5 * dot(sssNormal, toLight), 0.0, 1.0);
     vec3 sssLight = mix(vec3(wrapped * wrapped), diffuseRamp(dot(sssNormal, toLight)), article);
-    vec3 sssTerm = uSss * sssLight * uSunColor * s.albedo;
+    vec3 sssTerm = uSss * sssLight * s.sunVisibility * uSunColor * s.albedo;
 
     vec3 lit = mix(diffuse, specularTerm + transmissionTerm + sssTerm, s.water);
     vec3 ambient = mix(uGroundColor, uSkyColor, 0.5 + 0.5 * sssNormal.y) * 0.35 * s.albedo;

@@ -24,6 +24,15 @@ layout(std140, binding = LIGHTING_BLOCK_BINDING) uniform LightingBlock {
     vec2 uSpecularFade;  // metres: specular 0 at x, full at y
     int uGrassLighting;  // 1: grass lighting (SPEC §10), 0: the wrapped Lambert
     float uFieldWater;   // a field's mean water, for billboards and stem sets
+    // Sun shadows (sun_shadow.glsl): the sun's depth-map view, uSunShadows 0 = off.
+    vec3 uSunShadowOrigin;
+    float uSunShadowSizeM;
+    vec3 uSunShadowRight;
+    float uSunShadowDepthRangeM;
+    vec3 uSunShadowUp;
+    int uSunShadows;
+    vec3 uSunShadowForward;
+    float uSunShadowBiasM;
 };
 
 #endif

@@ -57,6 +57,7 @@ struct FormulaCase {
         s.height = terrainNormalHeight.w;
         s.toEye = glm::vec3(toEyeNv);
         s.eyeDistance = blurredNormalDistance.w;
+        s.sunVisibility = up.w;
         return s;
     }
 };
@@ -186,7 +187,8 @@ std::vector<FormulaCase> makeCases(const core::LightingBlock& block, std::uint64
         c.dirWidthDproj = glm::vec4(width, dproj);
         c.toBladeMaxDistance = glm::vec4{rng.uniform(-100.0f, 100.0f), rng.uniform(-100.0f, 100.0f),
                                          rng.uniform(-100.0f, 100.0f), maxDistance};
-        c.up = glm::vec4(randomUnit(rng), 0.0f);
+        // Half the cases in full sun, the rest anywhere from shadow to sun.
+        c.up = glm::vec4(randomUnit(rng), i % 2 == 0 ? 1.0f : rng.uniform(0.0f, 1.0f));
         c.classesIndex = glm::uvec4(1u + i % 16u, rng.below(100000), 0u, 0u);
     }
     return cases;

@@ -104,6 +104,16 @@ TEST_F(PassesGlTest, AFrameRunsAndAllocatesOnlyWhatItsFeaturesUse) {
     EXPECT_EQ(growth.allocated, (Names{"snow_map", "snow_drift", "snow_programs", "tip_snow",
                                        "billboards", "stem_sets"}))
         << "what was allocated stays for the next frame that needs it";
+
+    // Sun shadows (issue 30 item 11): a depth pass and a map only while they are on.
+    options.technique = core::GrassTechnique::Blades;
+    options.sun.shadows = true;
+    const Ran shaded = frames.draw(options);
+    EXPECT_EQ(shaded.passes,
+              (Names{"sun_shadow", "opaque", "occlusion_prepass", "cull", "blades"}));
+    EXPECT_EQ(shaded.allocated.back(), "sun_shadow_map");
+    options.sun.shadows = false;
+    EXPECT_EQ(frames.draw(options).passes, plain.passes) << "shadows off run no shadow pass";
 }
 
 TEST_F(PassesGlTest, PhysicsHoldsNoWindOrColliderBuffersWithoutThem) {

@@ -44,6 +44,14 @@ const Member LIGHTING_MEMBERS[] = {
     {"uSpecularFade", offsetof(render::LightingBlock, specularFadeM)},
     {"uGrassLighting", offsetof(render::LightingBlock, grassLighting)},
     {"uFieldWater", offsetof(render::LightingBlock, fieldWater)},
+    {"uSunShadowOrigin", offsetof(render::LightingBlock, sunShadowOrigin)},
+    {"uSunShadowSizeM", offsetof(render::LightingBlock, sunShadowSizeM)},
+    {"uSunShadowRight", offsetof(render::LightingBlock, sunShadowRight)},
+    {"uSunShadowDepthRangeM", offsetof(render::LightingBlock, sunShadowDepthRangeM)},
+    {"uSunShadowUp", offsetof(render::LightingBlock, sunShadowUp)},
+    {"uSunShadows", offsetof(render::LightingBlock, sunShadows)},
+    {"uSunShadowForward", offsetof(render::LightingBlock, sunShadowForward)},
+    {"uSunShadowBiasM", offsetof(render::LightingBlock, sunShadowBiasM)},
 };
 
 const Member SNOW_MEMBERS[] = {

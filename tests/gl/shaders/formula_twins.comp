@@ -20,7 +20,7 @@ struct FormulaCase {
     vec4 dirViewAlpha;           // seenEdgeOn's dirView; ggxD's α
     vec4 dirWidthDproj;          // seenEdgeOn's dirWidth; the keep count's dproj
     vec4 toBladeMaxDistance;     // projectedDistance's toBlade; the keep count's maxDistance
-    vec4 up;                     // projectedDistance's up, w unused
+    vec4 up;                     // projectedDistance's up, w GrassSurface sunVisibility
     uvec4 classesIndex;          // x distance classes, y blade index, zw unused
 };
 
@@ -55,6 +55,7 @@ void main() {
     s.height = c.terrainNormalHeight.w;
     s.toEye = c.toEyeNv.xyz;
     s.eyeDistance = c.blurredNormalDistance.w;
+    s.sunVisibility = c.up.w;
 
     FormulaResult r;
     float article = uGrassLighting == 2 ? 1.0 : 0.0;
