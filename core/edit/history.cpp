@@ -13,7 +13,8 @@ std::size_t projectBytes(const Project& project) {
     std::size_t bytes = sizeof(Project) + project.name.capacity() + project.mesh.file.capacity();
     for (const GrassLayer& layer : project.layers)
         bytes += sizeof(GrassLayer) + layer.name.capacity() + layer.densityMap.capacity() +
-                 layer.soilMap.capacity() + layer.lightMap.capacity();
+                 layer.soilMap.capacity() + layer.lightMap.capacity() +
+                 layer.cutMap.capacity();
     for (const WindDesc& wind : project.wind)
         bytes += sizeof(WindDesc) + wind.name.capacity() + payload(wind.source.path);
     for (const ColliderDesc& collider : project.colliders)

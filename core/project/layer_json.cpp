@@ -122,6 +122,16 @@ constexpr std::array LAYER{
     mapPath<&GrassLayer::lightMap>("light_map",
                                    "empty: 1 everywhere (full light); light amount l in [0, 1], "
                                    "read by the growth model only when `growth.enabled`"),
+    mapPath<&GrassLayer::cutMap>("cut_map",
+                                 "empty: 1 everywhere (uncut); the height blades are cut to, as "
+                                 "a share of their own (0: mown to the ground)"),
+    field<&GrassLayer::regrowRate>(
+        {.key = "regrow_rate",
+         .rule = json::NON_NEGATIVE,
+         .unit = "1/s",
+         .help = "share of their height cut blades grow back each second of scene time (0: they "
+                 "stay cut)",
+         .ui = {.max = 1.0f, .decimals = 3}}),
     settings::custom<GrassLayer>(
         {.key = "map_resolution",
          .help = "the size every map of the layer is resampled to when loaded and created at "

@@ -138,6 +138,7 @@ std::vector<std::string> projectAssetPaths(const Project& project) {
         add(layer.densityMap);
         add(layer.soilMap);
         add(layer.lightMap);
+        add(layer.cutMap);
     }
     add(project.billboards.texture);
     for (const ColliderDesc& collider : project.colliders)

@@ -132,6 +132,11 @@ struct GrassLayer {
     std::string densityMap;
     std::string soilMap;
     std::string lightMap;
+    // Cut and regrow (issue 30 item 10): the height blades are cut to, as a share of their own
+    // (1 uncut, 0 mown to the ground), regrowing by regrowRate of their height a second of
+    // scene time.
+    std::string cutMap;
+    float regrowRate = 0.0f;
     glm::ivec2 mapResolution{DEFAULT_MAP_RESOLUTION, DEFAULT_MAP_RESOLUTION};
     GrowthDesc growth;
     PlacementRules rules;

@@ -43,6 +43,7 @@ std::vector<ProjectInput> projectInputFiles(const LoadedProject& loaded) {
         addAsset(project.layers[i].densityMap, at + "density_map");
         addAsset(project.layers[i].soilMap, at + "soil_map");
         addAsset(project.layers[i].lightMap, at + "light_map");
+        addAsset(project.layers[i].cutMap, at + "cut_map");
     }
     addAsset(project.billboards.texture, "/billboards/texture");
     for (std::size_t i = 0; i < project.colliders.size(); ++i)

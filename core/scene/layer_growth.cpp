@@ -76,6 +76,7 @@ MapImage& layerMap(LayerMaps& maps, LayerMap which) {
     switch (which) {
     case LayerMap::Soil: return maps.soil;
     case LayerMap::Light: return maps.light;
+    case LayerMap::Cut: return maps.cut;
     case LayerMap::Density: break;
     }
     return maps.density;
@@ -84,11 +85,19 @@ MapImage& layerMap(LayerMaps& maps, LayerMap which) {
 std::string& layerMapFile(GrassLayer& layer, LayerMap which) {
     return which == LayerMap::Density ? layer.densityMap
            : which == LayerMap::Soil  ? layer.soilMap
-                                      : layer.lightMap;
+           : which == LayerMap::Light ? layer.lightMap
+                                      : layer.cutMap;
 }
 
 const MapImage& layerMap(const LayerMaps& maps, LayerMap which) {
     return layerMap(const_cast<LayerMaps&>(maps), which);
+}
+
+float cutShare(const LayerSource& source, std::size_t candidate) {
+    if (source.maps.cut.texels.empty())
+        return 1.0f;
+    const float regrown = std::max(source.regrowRate, 0.0f) * std::max(source.regrowthS, 0.0f);
+    return std::min(source.maps.cut.sample(source.candidates.uvs[candidate]) + regrown, 1.0f);
 }
 
 GrownBlade growCandidate(const LayerSource& source, std::size_t candidate) {
@@ -100,10 +109,18 @@ GrownBlade growCandidate(const LayerSource& source, std::size_t candidate) {
     if (!keepsCandidate(source.candidates, candidate, density, rule))
         return removed;
     const CandidateBend* bend = source.bends.empty() ? nullptr : &source.bends[candidate];
-    if (!source.growthEnabled)
+    const float cut = cutShare(source, candidate);
+    if (!(cut > 0.0f))
+        return removed;  // mown to the ground
+    if (!source.growthEnabled) {
+        if (cut < 1.0f)
+            return {bend ? bentRestBlade(c, c.h() * cut, c.w(), 0.0f, *bend, source.sway)
+                         : makeRestBlade(c.v0(), c.up(), c.h() * cut, c.w(), c.s(), c.theta()),
+                    0.0f, true};
         return {bend ? bentRestBlade(c, c.h(), c.w(), 0.0f, *bend, source.sway) : c, 0.0f, true};
+    }
     const BladeGrowth growth = bladeGrowth(candidateGrowth(source, candidate));
-    const float h = c.h() * growth.heightScale;
+    const float h = c.h() * growth.heightScale * cut;
     const float w = c.w() * growth.widthScale;
     if (!(h > 0.0f) || !(w > 0.0f))
         return removed;

@@ -31,15 +31,16 @@ struct LayerMaps {
     MapImage density;
     MapImage soil;
     MapImage light;
+    MapImage cut;  // the height blades are cut to, a share of their own (issue 30 item 10)
 };
 
-enum class LayerMap { Density, Soil, Light };
+enum class LayerMap { Density, Soil, Light, Cut };
 MapImage& layerMap(LayerMaps& maps, LayerMap which);
 const MapImage& layerMap(const LayerMaps& maps, LayerMap which);
 // Every map, and its name as the CLI, the panels and default file names spell it.
-inline constexpr std::array<LayerMap, 3> ALL_LAYER_MAPS{LayerMap::Density, LayerMap::Soil,
-                                                        LayerMap::Light};
-inline constexpr std::array<const char*, 3> LAYER_MAP_NAMES{"density", "soil", "light"};
+inline constexpr std::array<LayerMap, 4> ALL_LAYER_MAPS{LayerMap::Density, LayerMap::Soil,
+                                                        LayerMap::Light, LayerMap::Cut};
+inline constexpr std::array<const char*, 4> LAYER_MAP_NAMES{"density", "soil", "light", "cut"};
 constexpr const char* layerMapName(LayerMap which) {
     return LAYER_MAP_NAMES[static_cast<std::size_t>(which)];
 }
@@ -59,7 +60,15 @@ struct LayerSource {
     GrowthCurves curves;
     int stemLevels = MAX_STEM_LEVELS;
     float stemTipWidth = 0.0f;  // GrowthDesc::stemTipWidth
+    // Cut blades grow back by regrowRate of their height a second; regrowthS is the scene time
+    // the field has grown since the cut map was painted (regrowCut moves it).
+    float regrowRate = 0.0f;
+    float regrowthS = 0.0f;
 };
+
+// The share of its height candidate `candidate` keeps: its cut map there plus what it regrew,
+// at most 1 (1 without a cut map).
+float cutShare(const LayerSource& source, std::size_t candidate);
 
 // The grown field: per slot of `patched` (patch-major, padding included) the blade, how far its
 // colour leans to the poor colours (wilt = 1 − b; 0 without growth), and every STEMS_PER_SET-th

@@ -214,7 +214,8 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
         LayerSource& source = field.source;
         for (auto loadedMap : {loadMap(layer.densityMap, "density_map", source.maps.density),
                                loadMap(layer.soilMap, "soil_map", source.maps.soil),
-                               loadMap(layer.lightMap, "light_map", source.maps.light)})
+                               loadMap(layer.lightMap, "light_map", source.maps.light),
+                               loadMap(layer.cutMap, "cut_map", source.maps.cut)})
             if (!loadedMap)
                 return loadedMap.error();
         if (!layer.growth.enabled && (!layer.soilMap.empty() || !layer.lightMap.empty()))
@@ -234,6 +235,7 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
         source.curves = layer.growth.curves;
         source.stemLevels = layer.growth.levels;
         source.stemTipWidth = layer.growth.stemTipWidth;
+        source.regrowRate = layer.regrowRate;
         static_cast<GrownField&>(field) = growField(source, project.render.patchSize);
         field.rootColor = layer.rootColor;
         field.tipColor = layer.tipColor;
@@ -512,6 +514,41 @@ Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, cons
     camera.target = framed.target;
     camera.fovYDeg = 45.0f;
     return loaded;
+}
+
+float regrowthStepS(const LayerSource& source) {
+    return source.regrowRate > 0.0f ? REGROWTH_STEP_SHARE / source.regrowRate : 0.0f;
+}
+
+RegrowReport regrowCut(LayerField& layer, float timeS) {
+    RegrowReport report;
+    LayerSource& source = layer.source;
+    if (source.maps.cut.texels.empty() || !(source.regrowRate > 0.0f))
+        return report;
+    // In whole steps of REGROWTH_STEP_SHARE of a blade's height: a frame between steps changes
+    // nothing, and no blade ever waits more than a step.
+    const float step = regrowthStepS(source);
+    const float due = std::floor(std::max(timeS, 0.0f) / step) * step;
+    if (due == source.regrowthS)
+        return report;
+    const float before = source.regrowthS;
+    source.regrowthS = due;
+    // The patches holding a blade cut below full height at either time.
+    const std::uint32_t size = layer.patched.patchSize;
+    const float lowest = std::min(before, due) * source.regrowRate;
+    for (std::uint32_t p = 0; p < layer.patched.patches.size(); ++p)
+        for (std::size_t slot = std::size_t(p) * size; slot < std::size_t(p + 1) * size; ++slot) {
+            const std::uint32_t candidate = layer.patched.sourceIndex[slot];
+            if (candidate != UINT32_MAX &&
+                source.maps.cut.sample(source.candidates.uvs[candidate]) + lowest < 1.0f) {
+                report.patches.push_back(p);
+                break;
+            }
+        }
+    regrowPatches(source, report.patches, layer);
+    restoreWilt(layer, report.patches);
+    report.shadedPatches = report.patches;
+    return report;
 }
 
 }  // namespace grass::core

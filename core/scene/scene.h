@@ -129,6 +129,14 @@ Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted,
                                        const GrassLightingDesc& lighting,
                                        ShadingUpdate update = ShadingUpdate::Exact);
 
+// Cut and regrow (issue 30 item 10): at scene time timeS the layer's cut blades have grown back
+// by regrowRate·timeS of their height, in steps of REGROWTH_STEP_SHARE; re-grows the patches
+// holding cut blades when a step is due (only those: the report lists them for the renderers)
+// and nothing otherwise. Without a cut map or a regrow rate, nothing.
+inline constexpr float REGROWTH_STEP_SHARE = 0.01f;
+float regrowthStepS(const LayerSource& source);
+RegrowReport regrowCut(LayerField& layer, float timeS);
+
 // The exact re-bake of `region`'s neighbourhood that RegrownOnly re-grows left pending: the
 // shading of every blade within reach of `region` (3σ of the kernels); reports the patches to
 // re-upload.

@@ -347,6 +347,15 @@ void Editor::advanceTime() {
             mDropped = {};
         }
     }
+    // Cut blades grow back with the scene's time (issue 30 item 10): the patches a regrowth step
+    // changed go up to the GPU and to the physics as a repaint's do.
+    if (mLive.scene && state.regrown)
+        for (std::size_t i = 0; i < mLive.scene->layers.size(); ++i) {
+            const core::RegrowReport report = core::regrowCut(
+                mLive.scene->layers[i], static_cast<float>(state.view.timeline.timeS()));
+            if (!report.patches.empty())
+                state.regrown(i, report);
+        }
     state.view.options.timeS = static_cast<float>(state.view.timeline.timeS());
 }
 

@@ -123,6 +123,8 @@ void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
             field->rootColor = layer.rootColor;
             field->tipColor = layer.tipColor;
         }
+    // How fast a path mown with the brush's cut map grows back (issue 30 item 10).
+    regrowRow(ui, s, rows, "regrow_rate", layer);
     regrowRow(ui, s, core::settings::growth(), "enabled", layer.growth);
     if (layer.growth.enabled)
         ui.collapsingHeader("growth curves", [&](ui::Ui& curves) {

@@ -25,7 +25,7 @@ void brushSettings(ui::Ui& ui, EditorState& s) {
         s.view.paint.layer = std::size_t(layer);
     int map = int(s.view.paint.map);
     if (ui.comboBox("map", map, core::LAYER_MAP_NAMES)
-            .onHoverText("Which of the layer's maps the brush paints: density, soil or light")
+            .onHoverText("Which of the layer's maps the brush paints: density, soil, light or cut (the height blades are mown to)")
             .changed())
         s.view.paint.map = core::LayerMap(map);
     ui.horizontal([&](ui::Ui& row) {

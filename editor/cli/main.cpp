@@ -16,7 +16,7 @@ commands:
   render      render a project (or any glTF mesh) headless to an image
   sim         run a project's physics headless and report its cost and health
   mesh-info   print vertex/triangle counts, area, bounds of a glTF file
-  paint       paint a layer's density, soil or light map with brush strokes
+  paint       paint a layer's density, soil, light or cut map with brush strokes
   export      write a project's grass as glTF (instanced blades) or raw GPU buffers
   bench       run the standard benchmark set and print per-stage costs (--compare old runs)
   tradeoff    sweep quality knobs against a reference: cost/error table, tradeoff.json, plots

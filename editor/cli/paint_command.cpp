@@ -63,7 +63,8 @@ template <class Layer>
 auto& mapFileOf(Layer& layer, core::LayerMap which) {
     return which == core::LayerMap::Density ? layer.densityMap
            : which == core::LayerMap::Soil  ? layer.soilMap
-                                            : layer.lightMap;
+           : which == core::LayerMap::Light ? layer.lightMap
+                                            : layer.cutMap;
 }
 
 // --uv: a point in the map's UV space becomes the surface position of the texel it falls in.

@@ -31,8 +31,8 @@ Result<core::LayerMap> parseMapName(const std::string& map) {
     for (const core::LayerMap which : core::ALL_LAYER_MAPS)
         if (map == core::layerMapName(which))
             return which;
-    return makeError("--map", map.empty() ? "missing: give --map density, soil or light"
-                                          : "expected density, soil or light, got '" + map + "'");
+    return makeError("--map", map.empty() ? "missing: give --map density, soil, light or cut"
+                                          : "expected density, soil, light or cut, got '" + map + "'");
 }
 
 }  // namespace
@@ -41,7 +41,7 @@ std::optional<int> parsePaintArgs(const std::vector<std::string>& argv, PaintArg
     // --stroke repeats, so takeStrokes reads it; the parser lists it for --help only.
     std::string strokeForHelp;
     ArgParser parser(
-        "grass paint <project-dir|project.json> --map density|soil|light --stroke \"x,y,z; ...\" "
+        "grass paint <project-dir|project.json> --map density|soil|light|cut --stroke \"x,y,z; ...\" "
         "[--stroke ...] [options]",
         "Paints one map of a layer (density, or soil / light of the growth model, SPEC §9) with "
         "brush strokes across the mesh surface, as the editor's brush does, and saves it "
@@ -50,7 +50,7 @@ std::optional<int> parsePaintArgs(const std::vector<std::string>& argv, PaintArg
         "changes. Prints per stroke the dabs, the texels changed, the touched bounds and the "
         "grass patches re-grown (and how long that took); for density also the live blades.");
     addProjectArgument(parser, &args.project, true);
-    parser.text("--map", "density|soil|light", "which of the layer's maps to paint (required)",
+    parser.text("--map", "density|soil|light|cut", "which of the layer's maps to paint (required); cut: the height blades are cut to, a share of their own",
                 &args.map);
     parser.text("--stroke", "\"x,y,z; x,y,z; ...\"",
                 "one stroke: surface hits in world units, separated by ';'; repeat for more "

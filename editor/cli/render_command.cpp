@@ -117,6 +117,9 @@ Result<double> simulateBeforeRender(const RenderArgs& args, const core::LoadedPr
                                     core::Scene& scene) {
     if (!(args.timeS > 0.0))
         return 0.0;
+    // Cut blades have grown back for T seconds (issue 30 item 10) before the physics takes them.
+    for (core::LayerField& layer : scene.layers)
+        (void)core::regrowCut(layer, static_cast<float>(args.timeS));
     auto physics = core::buildScenePhysics(loaded);
     if (!physics)
         return physics.error();

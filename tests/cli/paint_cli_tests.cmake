@@ -9,7 +9,7 @@
 
 set(PAINT_TMP ${GRASS_CLI_TMP}/paint)
 set(PAINT_SOURCE ${GRASS_CLI_PROJECTS}/growth_tiny)
-set(PAINT_COPIES soil uv dry errors)
+set(PAINT_COPIES soil uv dry errors cut)
 add_test(NAME cli.paint_setup_copies
          COMMAND ${GRASS_BASH} -c
                  "rm -rf -- \"$0\" && for c in \"\${@:2}\"; do mkdir -p -- \"$0/$c\" && cp -R -- \"$1/.\" \"$0/$c\" || exit 1; done"
@@ -36,7 +36,7 @@ function(paint_check name after script)
 endfunction()
 
 grass_cli_test(paint_help OK --no-stderr
-    --stdout "^usage: grass paint" --stdout "^  --map density\\|soil\\|light" --stdout "^  --stroke "
+    --stdout "^usage: grass paint" --stdout "^  --map density\\|soil\\|light\\|cut" --stdout "^  --stroke "
     --stdout "^  --uv" --stdout "^  --dry-run" --stdout "^  --help"
     -- ${GRASS_BIN} paint --help)
 
@@ -130,3 +130,18 @@ add_test(NAME cli.paint_atlas_named
                  ${ATLAS})
 set_tests_properties(cli.paint_atlas_named PROPERTIES LABELS cli TIMEOUT 30
                      FIXTURES_REQUIRED paint_atlas_copy DEPENDS cli.paint_atlas_kept)
+
+# --- cut and regrow (issue 30 item 10): a path mown to a fifth of the blades' height ---------
+set(CUT ${PAINT_TMP}/cut)
+paint_cli_test(paint_cut_new "" OK --png ${CUT}/maps/grass-cut.png 64 64
+    --stdout "^cut map of layer \"grass\": new, 64x64"
+    --stdout "^stroke 1: 2 points, [1-9][0-9]* dabs, [1-9][0-9]* texels changed, .*re-grew [1-9][0-9]* of"
+    --stdout "^updated .*project\\.json: layer \"grass\" cut_map = \"maps/grass-cut\\.png\"$"
+    -- ${GRASS_BIN} paint ${CUT} --map cut --mode set --value 0.2 --strength 1 --radius 0.25
+       --stroke "-0.9,0,0; 0.9,0,0")
+paint_check(paint_cut_project_names_map paint_cut_new
+    "grep -Eq '\"cut_map\": \"maps/grass-cut\\.png\"' \"$0/project.json\"" ${CUT})
+paint_cli_test(render_cut_regrown paint_cut_project_names_map GL OK
+    --stdout "^simulated  0\\.500 s"
+    -- ${GRASS_BIN} render ${CUT} --time 0.5 --frames 1 --width 64 --height 48
+       --out ${GRASS_CLI_TMP}/cut.png)
