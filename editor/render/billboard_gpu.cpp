@@ -48,7 +48,19 @@ gl::TextureHandle uploadTexture(const Rgba8Pixels& image, std::string_view label
     return texture;
 }
 
+Result<gl::Program> loadBillboardProgram(bool sunShadows) {
+    return gl::Program::load(
+        {{GL_VERTEX_SHADER, "billboard.vert"}, {GL_FRAGMENT_SHADER, "billboard.frag"}},
+        sunShadows ? "billboards (sun shadows)" : "billboards",
+        sunShadows ? std::vector<std::string>{"GRASS_SUN_SHADOWS"} : std::vector<std::string>{});
+}
+
 }  // namespace
+
+const gl::Program& BillboardField::program(bool sunShadows) {
+    return gl::loadOnFirstUse(mPrograms[sunShadows],
+                              [sunShadows] { return loadBillboardProgram(sunShadows); });
+}
 
 Result<BillboardField> BillboardField::create(const std::vector<core::GrassObject>& objects,
                                               const Rgba8Pixels& texture, std::string_view label) {
@@ -56,14 +68,12 @@ Result<BillboardField> BillboardField::create(const std::vector<core::GrassObjec
         texture.pixels.size() !=
             static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height) * 4)
         return makeError(std::string(label), "billboard texture size does not match its pixels");
-    auto program = gl::Program::load(
-        {{GL_VERTEX_SHADER, "billboard.vert"}, {GL_FRAGMENT_SHADER, "billboard.frag"}},
-        "billboards");
+    auto program = loadBillboardProgram(false);
     if (!program)
         return program.error();
 
     BillboardField field;
-    field.mProgram = std::move(*program);
+    field.mPrograms[0] = std::move(*program);
     field.mLabel = std::string(label);
     field.mTexture = uploadTexture(texture, field.mLabel + " texture");
     field.mVertexArray = gl::VertexArray(field.mLabel);
@@ -146,23 +156,24 @@ void BillboardField::uploadSceneWind(const BillboardDrawParams& params) {
 
 // Binds the program with the uniforms of `params`, the texture and the vertex array.
 void BillboardField::bindForDraw(const BillboardDrawParams& params, bool multisampled) {
-    mProgram.use();
-    mProgram.set("uViewProj", params.viewProj);
-    mProgram.set("uCameraPos", params.cameraPosWorld);
-    mProgram.set("uTime", params.timeS);
-    mProgram.set("uWindMode", static_cast<int>(params.mode));
-    mProgram.set("uWindDirection", params.wind.directionXZ);
-    mProgram.set("uWindAmplitude", params.wind.amplitudeM);
-    mProgram.set("uWindFrequency", params.wind.frequencyHz);
-    mProgram.set("uClusterOffset", glm::vec3(0.0f));
-    mProgram.set("uClusterWind", glm::vec3(0.0f));
-    mProgram.set("uStiffness", params.stiffness);
-    mProgram.set("uWindSourceCount", static_cast<int>(params.sceneWind.size()));
+    const gl::Program& program = this->program(params.sunShadows);
+    program.use();
+    program.set("uViewProj", params.viewProj);
+    program.set("uCameraPos", params.cameraPosWorld);
+    program.set("uTime", params.timeS);
+    program.set("uWindMode", static_cast<int>(params.mode));
+    program.set("uWindDirection", params.wind.directionXZ);
+    program.set("uWindAmplitude", params.wind.amplitudeM);
+    program.set("uWindFrequency", params.wind.frequencyHz);
+    program.set("uClusterOffset", glm::vec3(0.0f));
+    program.set("uClusterWind", glm::vec3(0.0f));
+    program.set("uStiffness", params.stiffness);
+    program.set("uWindSourceCount", static_cast<int>(params.sceneWind.size()));
     if (!params.sceneWind.empty())
         uploadSceneWind(params);
-    mProgram.set("uFade", glm::vec4(params.fade.inStartM, params.fade.inEndM, params.fade.outStartM,
+    program.set("uFade", glm::vec4(params.fade.inStartM, params.fade.inEndM, params.fade.outStartM,
                                     params.fade.outEndM));
-    mProgram.set("uAlphaCutoff",
+    program.set("uAlphaCutoff",
                  multisampled ? ALPHA_CUTOFF_MULTISAMPLED : ALPHA_CUTOFF_SINGLE_SAMPLED);
     glBindTextureUnit(BILLBOARD_TEXTURE_UNIT, mTexture.id());
     mVertexArray.bind();
@@ -172,12 +183,13 @@ void BillboardField::bindForDraw(const BillboardDrawParams& params, bool multisa
 // computed at its centre.
 void BillboardField::drawEachCluster(const std::vector<std::uint32_t>& order,
                                      const BillboardDrawParams& params) {
+    const gl::Program& program = this->program(params.sunShadows);
     for (const std::uint32_t c : order) {
         const core::StarCluster& cluster = mClusters[c];
-        mProgram.set("uClusterOffset",
+        program.set("uClusterOffset",
                      core::billboardWindOffset(cluster.centre, params.timeS, params.wind));
         if (!params.sceneWind.empty())
-            mProgram.set("uClusterWind",
+            program.set("uClusterWind",
                          core::windAt(params.sceneWind, cluster.centre, params.timeS));
         glDrawElements(GL_TRIANGLES, clusterIndexCount(cluster), GL_UNSIGNED_INT,
                        clusterIndexOffset(cluster));

@@ -49,6 +49,8 @@ struct BillboardDrawParams {
     // (core::BillboardFollow::stiffness); no sources: GPU Gems' sway alone.
     std::vector<core::WindSource> sceneWind;
     float stiffness = 0.0f;
+    // The program variant with the sun's shadows (the caller binds the map and the lighting).
+    bool sunShadows = false;
     // Skips clusters whose bounding sphere lies outside the view frustum of viewProj.
     bool frustumCull = true;
 };
@@ -73,7 +75,8 @@ public:
     std::size_t drawnObjects() const { return mDrawnObjects; }
     std::size_t drawCalls() const { return mDrawCalls; }
     // For uniforms draw() does not set (uCameraPosition and uFieldAo of the grass lighting).
-    const gl::Program& program() const { return mProgram; }
+    // With the sun's shadows compiled in or not (loaded on first use).
+    const gl::Program& program(bool sunShadows = false);
 
 private:
     BillboardField() = default;
@@ -85,7 +88,7 @@ private:
                          const BillboardDrawParams& params);
     void drawClustersAtOnce(const std::vector<std::uint32_t>& order);
 
-    gl::Program mProgram;
+    gl::Program mPrograms[2];  // [sun shadows]
     std::string mLabel;
     gl::Buffer mVertices;
     gl::Buffer mIndices;

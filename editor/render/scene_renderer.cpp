@@ -42,14 +42,19 @@ static gl::TextureHandle uploadSurfaceTexture(const Rgba8Pixels& image, const co
     return texture;
 }
 
-// The blade program of a geometry path, lit per pixel or per vertex (a compile-time variant:
-// software GL runs both sides of a uniform branch, so an unused lighting path would still cost).
-Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightPerVertex) {
+// The blade program of a geometry path, lit per pixel or per vertex, with or without the sun's
+// shadows (compile-time variants: software GL runs both sides of a uniform branch, so an unused
+// lighting path would still cost).
+Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightPerVertex,
+                                                    bool sunShadows) {
     std::vector<std::string> defines;
     if (lightPerVertex)
         defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
+    if (sunShadows)
+        defines.emplace_back("GRASS_SUN_SHADOWS");
     const std::string label = std::string(tessellate ? "blade tessellation" : "blade strips") +
-                              (lightPerVertex ? " (lit per vertex)" : "");
+                              (lightPerVertex ? " (lit per vertex)" : "") +
+                              (sunShadows ? " (sun shadows)" : "");
     if (tessellate)
         return gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
                                   {GL_TESS_CONTROL_SHADER, "blade.tesc"},
@@ -61,9 +66,10 @@ Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightP
         defines);
 }
 
-const gl::Program& SceneRenderer::bladeProgram(bool tessellate, bool lightPerVertex) {
-    return gl::loadOnFirstUse(mBladePrograms[tessellate][lightPerVertex], [&] {
-        return loadBladeProgram(tessellate, lightPerVertex);
+const gl::Program& SceneRenderer::bladeProgram(bool tessellate, bool lightPerVertex,
+                                               bool sunShadows) {
+    return gl::loadOnFirstUse(mBladePrograms[tessellate][lightPerVertex][sunShadows], [&] {
+        return loadBladeProgram(tessellate, lightPerVertex, sunShadows);
     });
 }
 
@@ -71,24 +77,24 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     std::unique_ptr<SceneRenderer> renderer(new SceneRenderer());
     renderer->mScene = &scene;
     renderer->mSoftwareGl = gl::isSoftwareRenderer();
-    auto mesh = loadOpaqueProgram(Opaque::Lit);
+    auto mesh = loadOpaqueProgram(Opaque::Lit, false);
     if (!mesh)
         return mesh.error();
     for (const bool tessellate : {false, true})
-        if (auto loaded = loadBladeProgram(tessellate, false); loaded)
-            renderer->mBladePrograms[tessellate][0] = std::move(*loaded);
+        if (auto loaded = loadBladeProgram(tessellate, false, false); loaded)
+            renderer->mBladePrograms[tessellate][0][0] = std::move(*loaded);
         else
             return loaded.error();
     auto stemSets = loadStemSetProgram();
     if (!stemSets)
         return stemSets.error();
-    renderer->mStemSetProgram = std::move(*stemSets);
+    renderer->mStemSetPrograms[0] = std::move(*stemSets);
     auto cull = CullPass::create();
     if (!cull)
         return cull.error();
     renderer->mCull = std::make_unique<CullPass>(std::move(*cull));
     renderer->mFieldAo = meanFieldAo(scene);
-    renderer->mOpaquePrograms[static_cast<int>(Opaque::Lit)] = std::move(*mesh);
+    renderer->mOpaquePrograms[0][static_cast<int>(Opaque::Lit)] = std::move(*mesh);
     renderer->mMesh = std::make_unique<MeshGpu>(scene.mesh);
     if (const Rgba8Pixels& image = scene.look.baseTexture; !image.pixels.empty())
         renderer->mSurfaceTexture = uploadSurfaceTexture(image, scene.look);
@@ -191,8 +197,10 @@ FrameTimings SceneRenderer::lastTimings() const {
         timings.allocated.push_back("snow_map");
     if (mSnow && mSnow->driftCells() > 0)
         timings.allocated.push_back("snow_drift");
-    if (mOpaquePrograms[static_cast<int>(Opaque::Snow)].id() != 0 ||
-        mOpaquePrograms[static_cast<int>(Opaque::SnowExposurePerVertex)].id() != 0)
+    if (std::any_of(std::begin(mOpaquePrograms), std::end(mOpaquePrograms), [](const auto& shadows) {
+            return shadows[static_cast<int>(Opaque::Snow)].id() != 0 ||
+                   shadows[static_cast<int>(Opaque::SnowExposurePerVertex)].id() != 0;
+        }))
         timings.allocated.push_back("snow_programs");
     if (std::any_of(mFields.begin(), mFields.end(),
                     [](const FieldGpu& field) { return field.hasTipSnow(); }))

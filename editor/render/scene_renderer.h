@@ -75,22 +75,24 @@ private:
     const core::Scene* mScene = nullptr;
     // The frame's lighting, uploaded once at the start of render().
     gl::UniformBlock<LightingBlock> mLighting{"lighting"};
-    gl::Program mStemSetProgram;
+    gl::Program mStemSetPrograms[2];  // [sun shadows]; the shadowed one loads on first use
     // The opaque surfaces' programs: lit, depth alone (the cull's pre-pass), and the snow
     // surface with its exposure per pixel or per vertex (RenderOptions::snowExposurePerVertex);
     // all but the lit one load on first use.
     enum class Opaque { Lit, DepthOnly, Snow, SnowExposurePerVertex, Count };
-    gl::Program mOpaquePrograms[static_cast<int>(Opaque::Count)];
-    static Result<gl::Program> loadOpaqueProgram(Opaque variant);
-    const gl::Program& opaqueProgram(Opaque variant);
+    // [sun shadows][variant]
+    gl::Program mOpaquePrograms[2][static_cast<int>(Opaque::Count)];
+    static Result<gl::Program> loadOpaqueProgram(Opaque variant, bool sunShadows);
+    const gl::Program& opaqueProgram(Opaque variant, bool sunShadows = false);
     // The snow surface's program for these options.
     static Opaque snowVariant(const RenderOptions& options) {
         return options.snowExposurePerVertex ? Opaque::SnowExposurePerVertex : Opaque::Snow;
     }
-    // [tessellated][lit per vertex]; the per-vertex variants load on first use.
-    gl::Program mBladePrograms[2][2];
-    static Result<gl::Program> loadBladeProgram(bool tessellate, bool lightPerVertex);
-    const gl::Program& bladeProgram(bool tessellate, bool lightPerVertex);
+    // [tessellated][lit per vertex][sun shadows]; all but the plain ones load on first use.
+    gl::Program mBladePrograms[2][2][2];
+    static Result<gl::Program> loadBladeProgram(bool tessellate, bool lightPerVertex,
+                                                bool sunShadows);
+    const gl::Program& bladeProgram(bool tessellate, bool lightPerVertex, bool sunShadows);
     // The passes of render(), in order (scene_renderer_opaque.cpp, scene_renderer_grass.cpp).
     void runSnowPass(const RenderOptions& options, int width, int height);
     void drawOpaquePass(const glm::mat4& viewProj, const RenderOptions& options);
@@ -105,7 +107,7 @@ private:
     // Technique growth: Kim & Cho's stem sets, uploaded on first use (a scene that never draws
     // them pays nothing).
     void drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj,
-                      const CullSettings& cull);
+                      const CullSettings& cull, bool sunShadows);
     std::unique_ptr<MeshGpu> mMesh;
     // The surface's base-colour texture (scene.look), bound to SURFACE_TEXTURE_UNIT; 0: none.
     gl::TextureHandle mSurfaceTexture;

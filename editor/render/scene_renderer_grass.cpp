@@ -38,7 +38,7 @@ void SceneRenderer::drawGrass(const core::OrbitCamera& camera, const glm::mat4& 
     mStemSetTimer.begin();
     mStemSetsDrawn = 0;
     if (options.technique == core::GrassTechnique::Growth) {
-        drawStemSets(camera, viewProj, options.cull);
+        drawStemSets(camera, viewProj, options.cull, options.sun.shadows);
         mPasses.push_back("stem_sets");
     }
     mStemSetTimer.end();
@@ -88,7 +88,8 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     BladePrograms programs{};
     for (int lod = 0; lod < LOD_COUNT; ++lod)
         programs[lod] =
-            &bladeProgram(tessellate, options.lightPerVertex || lod >= pixelLitLods);
+            &bladeProgram(tessellate, options.lightPerVertex || lod >= pixelLitLods,
+                          options.sun.shadows);
     const auto setAll = [&programs](const char* name, const auto& value) {
         for (int lod = 0; lod < LOD_COUNT; ++lod)
             if (lod == 0 || programs[lod] != programs[lod - 1])
@@ -159,10 +160,11 @@ void SceneRenderer::drawBillboards(const core::OrbitCamera& camera, const glm::m
     params.wind = options.billboards.wind;
     params.sceneWind = options.wind;
     params.stiffness = mScene->billboards.follow.stiffness;
+    params.sunShadows = options.sun.shadows;
     if (options.technique == core::GrassTechnique::Hybrid)
         params.fade = {options.billboards.crossFadeM.x, options.billboards.crossFadeM.y, 1.0e30f,
                        1.0e30f};
-    const gl::Program& program = mBillboards->program();
+    const gl::Program& program = mBillboards->program(params.sunShadows);
     program.set("uCameraPosition", camera.position());
     program.set("uFieldAo", mFieldAo);
     mBillboards->draw(params);
@@ -171,7 +173,7 @@ void SceneRenderer::drawBillboards(const core::OrbitCamera& camera, const glm::m
 }
 
 void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat4& viewProj,
-                                 const CullSettings& cull) {
+                                 const CullSettings& cull, bool sunShadows) {
     // Uploaded on first use: a scene drawn by another technique pays nothing for them.
     if (mStemSets.empty())
         for (const auto& layer : mScene->layers)
@@ -184,7 +186,10 @@ void SceneRenderer::drawStemSets(const core::OrbitCamera& camera, const glm::mat
     settings.maxDistanceM = cull.maxDistanceM;
     settings.lodDistanceM = cull.lodDistanceM;
     settings.keepEvery = cull.keepEvery;
-    const gl::Program& program = mStemSetProgram;
+    const gl::Program& program = gl::loadOnFirstUse(mStemSetPrograms[sunShadows], [&] {
+        return loadStemSetProgram(sunShadows ? std::vector<std::string>{"GRASS_SUN_SHADOWS"}
+                                             : std::vector<std::string>{});
+    });
     program.use();
     program.set("uViewProj", viewProj);
     program.set("uCameraPosition", camera.position());

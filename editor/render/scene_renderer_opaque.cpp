@@ -29,7 +29,7 @@ void SceneRenderer::runSnowPass(const RenderOptions& options, int width, int hei
         // The surfaces whiten and rise; the cull buries short blades and whitens the tips.
         if (mSnow->bind(options.snow, snowAmountM))
             mPasses.push_back("snow_drift");
-        const gl::Program& snowMesh = opaqueProgram(snowVariant(options));
+        const gl::Program& snowMesh = opaqueProgram(snowVariant(options), options.sun.shadows);
         snowMesh.set("uSnowCoverageView", options.snowCoverageView ? 1 : 0);
         snowMesh.set("uViewportPixels", glm::vec2(float(width), float(height)));
         snowMesh.set("uSnowTessPixels", std::max(options.snowTessPixels, 1.0f));
@@ -40,7 +40,8 @@ void SceneRenderer::runSnowPass(const RenderOptions& options, int width, int hei
 
 void SceneRenderer::drawOpaquePass(const glm::mat4& viewProj, const RenderOptions& options) {
     mMeshTimer.begin();
-    const gl::Program& opaque = opaqueProgram(mSnowLies ? snowVariant(options) : Opaque::Lit);
+    const gl::Program& opaque =
+        opaqueProgram(mSnowLies ? snowVariant(options) : Opaque::Lit, options.sun.shadows);
     opaque.use();
     opaque.set("uViewProj", viewProj);
     opaque.set("uAlbedoView", options.albedoView ? 1 : 0);
@@ -94,11 +95,15 @@ void SceneRenderer::runSunShadowPass(const RenderOptions& options, LightingBlock
 
 // Under snow the surfaces are tessellated and displaced (mesh_snow.*) and whitened (mesh.frag
 // with GRASS_SNOW); the depth-only variant shades nothing.
-Result<gl::Program> SceneRenderer::loadOpaqueProgram(Opaque variant) {
+Result<gl::Program> SceneRenderer::loadOpaqueProgram(Opaque variant, bool sunShadows) {
+    std::vector<std::string> defines;
+    if (sunShadows)
+        defines.emplace_back("GRASS_SUN_SHADOWS");
     switch (variant) {
     case Opaque::Lit:
         return gl::Program::load(
-            {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}}, "mesh");
+            {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}},
+            sunShadows ? "mesh (sun shadows)" : "mesh", defines);
     case Opaque::DepthOnly:
         return gl::Program::load(
             {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}},
@@ -106,7 +111,7 @@ Result<gl::Program> SceneRenderer::loadOpaqueProgram(Opaque variant) {
     default:
         break;
     }
-    std::vector<std::string> defines{"GRASS_SNOW"};
+    defines.emplace_back("GRASS_SNOW");
     if (variant == Opaque::SnowExposurePerVertex)
         defines.emplace_back("GRASS_SNOW_EXPOSURE_PER_VERTEX");
     return gl::Program::load({{GL_VERTEX_SHADER, "mesh_snow.vert"},
@@ -116,9 +121,9 @@ Result<gl::Program> SceneRenderer::loadOpaqueProgram(Opaque variant) {
                              "mesh under snow", defines);
 }
 
-const gl::Program& SceneRenderer::opaqueProgram(Opaque variant) {
-    return gl::loadOnFirstUse(mOpaquePrograms[static_cast<int>(variant)],
-                              [variant] { return loadOpaqueProgram(variant); });
+const gl::Program& SceneRenderer::opaqueProgram(Opaque variant, bool sunShadows) {
+    return gl::loadOnFirstUse(mOpaquePrograms[sunShadows][static_cast<int>(variant)],
+                              [variant, sunShadows] { return loadOpaqueProgram(variant, sunShadows); });
 }
 
 // The terrain, then each prop where its path puts it at options.timeS, with `program` (bound by

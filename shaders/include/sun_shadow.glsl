@@ -1,12 +1,16 @@
 // Sun shadows (issue 30 item 11): how much of the sun reaches a point, from the sun's depth map
 // of the surface and the colliders (SceneRenderer's sun pass, the snow depth program along the
 // light). The same 2×2 bilinear percentage-closer filter as core::sunVisibility, its C++ twin
-// (core/scene/sun_shadow.h). uSunShadows 0: 1 everywhere, the map is not read.
+// (core/scene/sun_shadow.h). Compiled in only with GRASS_SUN_SHADOWS (the renderer's shadowed
+// program variants): software GL runs both sides of a uniform branch, so a lookup merely skipped
+// would still cost a frame without shadows (docs/rendering.md measured 2-5 %). Without the
+// define, and with uSunShadows 0, every point is lit.
 #ifndef SUN_SHADOW_GLSL
 #define SUN_SHADOW_GLSL
 
 #include "lighting_block.glsl"
 
+#ifdef GRASS_SUN_SHADOWS
 // SUN_SHADOW_UNIT (render/scene_renderer.h); depth in [0, 1] of uSunShadowDepthRangeM.
 layout(binding = 13) uniform sampler2D uSunShadowMap;
 
@@ -36,5 +40,10 @@ float sunVisibility(vec3 p) {
     float top = l01 + (l11 - l01) * f.x;
     return bottom + (top - bottom) * f.y;
 }
+#else
+float sunVisibility(vec3 p) {
+    return 1.0;
+}
+#endif
 
 #endif
