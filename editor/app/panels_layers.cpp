@@ -123,14 +123,14 @@ void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
             field->rootColor = layer.rootColor;
             field->tipColor = layer.tipColor;
         }
-    // How fast a path mown with the brush's cut map grows back (issue 30 item 10).
-    regrowRow(ui, s, rows, "regrow_rate", layer);
     regrowRow(ui, s, core::settings::growth(), "enabled", layer.growth);
     if (layer.growth.enabled)
         ui.collapsingHeader("growth curves", [&](ui::Ui& curves) {
             growthCurves(curves, s, layer.growth.curves);
             regrowRow(curves, s, core::settings::growth(), "stem_tip_width", layer.growth);
         });
+    // How fast a path mown with the brush's cut map grows back (issue 30 item 10).
+    regrowRow(ui, s, rows, "regrow_rate", layer);
     const bool open = core::rulesAreOpen(layer.rules);
     ui.collapsingHeader(open ? "placement rules##rules" : "placement rules (on)##rules",
                         [&](ui::Ui& rules) { rulesBody(rules, s, layer.rules); });

@@ -143,11 +143,12 @@ void cameraSection(ui::Ui& ui, EditorState& s) {
     });
 }
 
-// The sun and the sky (issue 26 item 5): live edits, saved in the project (/sun, /render).
+// The sun, its shadows (issue 30 item 11) and the sky (issue 26 item 5): live edits, saved in
+// the project (/sun, /render).
 void lightSection(ui::Ui& ui, EditorState& s) {
     ui.collapsingHeader("Light", [&](ui::Ui& section) {
         core::Project& project = s.transient.draft.project;
-        for (const char* key : {"direction", "color", "intensity"})
+        for (const char* key : {"direction", "color", "intensity", "shadows", "shadow_resolution"})
             settingWidget(section, core::settings::sun(), key, project.sun);
         for (const char* key : {"sky_color", "ground_color"})
             settingWidget(section, core::settings::render(), key, project.render);
