@@ -13,6 +13,15 @@ WindSourceGpu packWindSource(const WindSource& source) {
     return out;
 }
 
+WindSourcesAt packWindSourcesAt(const std::vector<WindSource>& wind, float timeS) {
+    WindSourcesAt packed;
+    for (const WindSource& source : wind) {
+        packed.sources.push_back(packWindSource(source));
+        packed.centres.emplace_back(samplePath(source.path, timeS, source.position), 0.0f);
+    }
+    return packed;
+}
+
 PhysicsStepInputs physicsStepInputs(const PhysicsParams& params,
                                     const std::vector<WindSource>& wind,
                                     const std::vector<SphereCollider>& colliders, float timeS) {

@@ -27,6 +27,15 @@ static_assert(sizeof(WindSourceGpu) == 64, "WindSourceGpu must be four vec4 (std
 // The source as the shaders read it (its path is the caller's to sample).
 WindSourceGpu packWindSource(const WindSource& source);
 
+// Every source as the shaders read it, with its centre on its path at timeS (xyz; w 0): what a
+// pass that evaluates the wind at one time binds (the billboards, shaders/include/
+// billboard_wind.glsl).
+struct WindSourcesAt {
+    std::vector<WindSourceGpu> sources;
+    std::vector<glm::vec4> centres;
+};
+WindSourcesAt packWindSourcesAt(const std::vector<WindSource>& wind, float timeS);
+
 // The broad phase of a core::SphereCollider (ColliderGroup in physics.glsl).
 struct ColliderGroupGpu {
     glm::vec4 boundOffsetRadius{0.0f};

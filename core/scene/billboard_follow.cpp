@@ -8,10 +8,6 @@ namespace grass::core {
 
 namespace {
 
-float sampleOrOne(const MapImage& map, glm::vec2 uv) {
-    return map.texels.empty() ? 1.0f : map.sample(uv);
-}
-
 // The mean of mix(root, tip, τ) over the upper half τ ∈ [0.5, 1] of a blade.
 constexpr float VISIBLE_TIP_SHARE = 0.75f;
 
@@ -79,18 +75,20 @@ std::vector<GrassObject> followLayers(const std::vector<GrassObject>& placed,
         for (std::size_t i = 0; i < layers.size() && i < follow.layerWeights.size(); ++i) {
             const LayerSource& source = layers[i].source;
             const std::vector<float>& rule = follow.ruleFactors[i];
-            float share = sampleOrOne(source.maps.density, object.uv) *
-                          (rule.empty() ? 1.0f : rule[o]);
-            BladeGrowth growth;
-            if (source.growthEnabled)
-                growth = bladeGrowth(growthParams(source.curves,
-                                                  sampleOrOne(source.maps.soil, object.uv),
-                                                  sampleOrOne(source.maps.light, object.uv)));
-            if (!(growth.heightScale > 0.0f) || !(share > 0.0f))
+            const float share =
+                (source.maps.density.texels.empty() ? 1.0f
+                                                    : source.maps.density.sample(object.uv)) *
+                (rule.empty() ? 1.0f : rule[o]);
+            // Growth off leaves heights and colours as scattered (growCandidate does the same).
+            const BladeGrowth growth =
+                source.growthEnabled ? bladeGrowth(growthAt(source, object.uv)) : BladeGrowth{};
+            // Mown blades are short blades (cut and regrow): the tufts standing for them too.
+            const float height = growth.heightScale * cutShareAt(source, object.uv);
+            if (!(height > 0.0f) || !(share > 0.0f))
                 continue;  // this layer grows nothing here
             const double blades = follow.layerWeights[i] * static_cast<double>(share);
             kept += blades;
-            heightSum += blades * growth.heightScale;
+            heightSum += blades * height;
             const glm::vec3 colour = visibleBladeColour(
                 layers[i], source.growthEnabled ? 1.0f - growth.colourBlend : 0.0f);
             colourSum += blades * glm::dvec3(colour);

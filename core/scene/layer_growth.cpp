@@ -13,14 +13,8 @@ float sampleOrOne(const MapImage& map, glm::vec2 uv) {
     return map.texels.empty() ? 1.0f : map.sample(uv);
 }
 
-// Soil and light count only with growth on (the project says so); off, every point grows as
-// in the best conditions.
 GrowthParams candidateGrowth(const LayerSource& source, std::size_t candidate) {
-    if (!source.growthEnabled)
-        return growthParams(source.curves, 1.0f, 1.0f);
-    const glm::vec2 uv = source.candidates.uvs[candidate];
-    return growthParams(source.curves, sampleOrOne(source.maps.soil, uv),
-                        sampleOrOne(source.maps.light, uv));
+    return growthAt(source, source.candidates.uvs[candidate]);
 }
 
 // The stem set grown at a slot's candidate: the set stands on the surface (up is the surface
@@ -93,11 +87,18 @@ const MapImage& layerMap(const LayerMaps& maps, LayerMap which) {
     return layerMap(const_cast<LayerMaps&>(maps), which);
 }
 
-float cutShare(const LayerSource& source, std::size_t candidate) {
+GrowthParams growthAt(const LayerSource& source, glm::vec2 uv) {
+    if (!source.growthEnabled)
+        return growthParams(source.curves, 1.0f, 1.0f);
+    return growthParams(source.curves, sampleOrOne(source.maps.soil, uv),
+                        sampleOrOne(source.maps.light, uv));
+}
+
+float cutShareAt(const LayerSource& source, glm::vec2 uv) {
     if (source.maps.cut.texels.empty())
         return 1.0f;
     const float regrown = std::max(source.regrowRate, 0.0f) * std::max(source.regrowthS, 0.0f);
-    return std::min(source.maps.cut.sample(source.candidates.uvs[candidate]) + regrown, 1.0f);
+    return std::min(source.maps.cut.sample(uv) + regrown, 1.0f);
 }
 
 GrownBlade growCandidate(const LayerSource& source, std::size_t candidate) {
@@ -109,15 +110,15 @@ GrownBlade growCandidate(const LayerSource& source, std::size_t candidate) {
     if (!keepsCandidate(source.candidates, candidate, density, rule))
         return removed;
     const CandidateBend* bend = source.bends.empty() ? nullptr : &source.bends[candidate];
-    const float cut = cutShare(source, candidate);
+    const float cut = cutShareAt(source, source.candidates.uvs[candidate]);
     if (!(cut > 0.0f))
         return removed;  // mown to the ground
     if (!source.growthEnabled) {
-        if (cut < 1.0f)
-            return {bend ? bentRestBlade(c, c.h() * cut, c.w(), 0.0f, *bend, source.sway)
-                         : makeRestBlade(c.v0(), c.up(), c.h() * cut, c.w(), c.s(), c.theta()),
-                    0.0f, true};
-        return {bend ? bentRestBlade(c, c.h(), c.w(), 0.0f, *bend, source.sway) : c, 0.0f, true};
+        const float h = c.h() * cut;
+        if (bend)
+            return {bentRestBlade(c, h, c.w(), 0.0f, *bend, source.sway), 0.0f, true};
+        return {cut < 1.0f ? makeRestBlade(c.v0(), c.up(), h, c.w(), c.s(), c.theta()) : c, 0.0f,
+                true};
     }
     const BladeGrowth growth = bladeGrowth(candidateGrowth(source, candidate));
     const float h = c.h() * growth.heightScale * cut;

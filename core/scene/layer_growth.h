@@ -66,9 +66,12 @@ struct LayerSource {
     float regrowthS = 0.0f;
 };
 
-// The share of its height candidate `candidate` keeps: its cut map there plus what it regrew,
-// at most 1 (1 without a cut map).
-float cutShare(const LayerSource& source, std::size_t candidate);
+// What the layer's maps say at `uv`, for its candidates and for anything standing for them (the
+// billboards, scene/billboard_follow.h): the growth model's inputs there (the best conditions
+// with growth off: soil and light count only with it on), and the share of its height a blade
+// keeps there, its cut map plus what it regrew, at most 1 (1 without a cut map).
+GrowthParams growthAt(const LayerSource& source, glm::vec2 uv);
+float cutShareAt(const LayerSource& source, glm::vec2 uv);
 
 // The grown field: per slot of `patched` (patch-major, padding included) the blade, how far its
 // colour leans to the poor colours (wilt = 1 − b; 0 without growth), and every STEMS_PER_SET-th

@@ -136,19 +136,14 @@ std::vector<std::uint32_t> BillboardField::visibleClusters(
 // The scene's wind sources as the shader reads them (billboard_wind.glsl), each centre on its path
 // at the draw's time.
 void BillboardField::uploadSceneWind(const BillboardDrawParams& params) {
-    std::vector<core::WindSourceGpu> sources;
-    std::vector<glm::vec4> centres;
-    for (const core::WindSource& source : params.sceneWind) {
-        sources.push_back(core::packWindSource(source));
-        centres.emplace_back(core::samplePath(source.path, params.timeS, source.position), 0.0f);
-    }
-    const std::size_t bytes = sources.size() * sizeof(core::WindSourceGpu);
+    const core::WindSourcesAt wind = core::packWindSourcesAt(params.sceneWind, params.timeS);
+    const std::size_t bytes = wind.sources.size() * sizeof(core::WindSourceGpu);
     if (mWindSources.size() < bytes) {
-        mWindSources = gl::Buffer::fromVector(sources, mLabel + " wind sources");
-        mWindCentres = gl::Buffer::fromVector(centres, mLabel + " wind centres");
+        mWindSources = gl::Buffer::fromVector(wind.sources, mLabel + " wind sources");
+        mWindCentres = gl::Buffer::fromVector(wind.centres, mLabel + " wind centres");
     } else {
-        mWindSources.update(std::as_bytes(std::span(sources)));
-        mWindCentres.update(std::as_bytes(std::span(centres)));
+        mWindSources.update(std::as_bytes(std::span(wind.sources)));
+        mWindCentres.update(std::as_bytes(std::span(wind.centres)));
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BILLBOARD_WIND_SOURCE_BINDING, mWindSources.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BILLBOARD_WIND_CENTRE_BINDING, mWindCentres.id());

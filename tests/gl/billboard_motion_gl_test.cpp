@@ -85,14 +85,9 @@ struct Motion {
 std::vector<Motion> runShader(const gl::Program& program, const core::StarMesh& stars,
                               BillboardWindMode mode, glm::vec3 clusterCentre) {
     const std::vector<core::WindSource> wind = sceneWind();
-    std::vector<core::WindSourceGpu> sources;
-    std::vector<glm::vec4> centres;
-    for (const core::WindSource& source : wind) {
-        sources.push_back(core::packWindSource(source));
-        centres.emplace_back(core::samplePath(source.path, TIME_S, source.position), 0.0f);
-    }
-    const gl::Buffer sourceBuffer = gl::Buffer::fromVector(sources, "twin wind sources");
-    const gl::Buffer centreBuffer = gl::Buffer::fromVector(centres, "twin wind centres");
+    const core::WindSourcesAt packed = core::packWindSourcesAt(wind, TIME_S);
+    const gl::Buffer sourceBuffer = gl::Buffer::fromVector(packed.sources, "twin wind sources");
+    const gl::Buffer centreBuffer = gl::Buffer::fromVector(packed.centres, "twin wind centres");
     const gl::Buffer input = gl::Buffer::fromVector(stars.vertices, "twin star vertices");
     // NaN first: a vertex the shader never wrote cannot pass by accident.
     const float nan = std::numeric_limits<float>::quiet_NaN();

@@ -169,6 +169,21 @@ TEST(BillboardFollow, GrowthTintsAndShortensBillboardsWhereItGrowsPoorGrass) {
     EXPECT_LT(poorHeight / poor, richHeight / rich - 0.1);
 }
 
+TEST(BillboardFollow, AMownPathMowsTheBillboardsToo) {
+    Scene scene = fieldScene();
+    // Cut to 40 % everywhere: every tuft stands at 40 % of its placed height, none is removed;
+    // mown to the ground: none stands.
+    scene.layers[0].source.maps.cut = makeConstantMap(8, 8, 0.4f);
+    refreshBillboards(scene);
+    ASSERT_EQ(scene.billboards.objects.size(), scene.billboards.placed.size());
+    for (std::size_t i = 0; i < scene.billboards.placed.size(); ++i)
+        EXPECT_NEAR(scene.billboards.objects[i].height,
+                    0.4f * scene.billboards.placed[i].height, 1e-6f);
+    scene.layers[0].source.maps.cut = makeConstantMap(8, 8, 0.0f);
+    refreshBillboards(scene);
+    EXPECT_TRUE(scene.billboards.objects.empty());
+}
+
 TEST(BillboardFollow, StiffnessIsTheLayersMeanBladeStiffness) {
     const Scene scene = fieldScene();
     double sum = 0.0;
