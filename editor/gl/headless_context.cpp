@@ -3,9 +3,11 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include <cstdlib>
 #include <cstring>
 
 #include "gl/debug_output.h"
+#include "util/egl_vendor_dirs.h"
 #include "util/software_renderer.h"
 
 namespace grass::gl {
@@ -41,21 +43,83 @@ bool hasExtension(const char* list, const char* name) {
     return false;
 }
 
+// Lets glvnd see a GPU driver whose vendor file lies outside its search folders. Must run
+// before the first EGL call: glvnd reads the variable once, when libEGL loads.
+void addDriverEglVendorFolders() {
+    if (const auto dirs = core::eglVendorDirsValue(std::getenv("__EGL_VENDOR_LIBRARY_FILENAMES"),
+                                                   std::getenv("__EGL_VENDOR_LIBRARY_DIRS"),
+                                                   core::folderHoldsJsonFile))
+        setenv("__EGL_VENDOR_LIBRARY_DIRS", dirs->c_str(), 0);
+}
+
+bool initialise(EGLDisplay display) {
+    EGLint major = 0, minor = 0;
+    return display != EGL_NO_DISPLAY && eglInitialize(display, &major, &minor);
+}
+
+// A display without a window system: Mesa's surfaceless platform first (llvmpipe, Mesa GPU
+// drivers), then the first GPU that EGL_EXT_platform_device lists (NVIDIA's driver). Returns
+// EGL_NO_DISPLAY with `why` filled when neither initialises.
+// GRASS_EGL_PLATFORM=surfaceless or device tries that platform alone (tests reach the device path
+// on llvmpipe with it).
+EGLDisplay openDisplay(const std::string& only, std::string& why) {
+    const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    if (only != "device" && hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) {
+        EGLDisplay display =
+            eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (initialise(display))
+            return display;
+        why = "the surfaceless display (" + eglErrorName(eglGetError()) + ")";
+    }
+    if (only != "surfaceless" && hasExtension(clientExtensions, "EGL_EXT_platform_device") &&
+        hasExtension(clientExtensions, "EGL_EXT_device_enumeration")) {
+        EGLDeviceEXT devices[16];
+        EGLint count = 0;
+        if (eglQueryDevicesEXT(16, devices, &count))
+            for (EGLint i = 0; i < count; ++i) {
+                EGLDisplay display =
+                    eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+                if (initialise(display))
+                    return display;
+            }
+        why += std::string(why.empty() ? "" : ", ") + std::to_string(count) + " EGL device" +
+               (count == 1 ? "" : "s");
+    }
+    if (why.empty())
+        why = only.empty() ? "neither EGL_MESA_platform_surfaceless nor EGL_EXT_platform_device "
+                             "is offered"
+                           : "the " + only + " platform is not offered";
+    return EGL_NO_DISPLAY;
+}
+
+// EGL_KHR_no_config_context lets a context exist without a surface format; where a driver lacks
+// it, any config that renders desktop OpenGL does (rendering goes to framebuffer objects).
+EGLConfig contextConfig(EGLDisplay display) {
+    if (hasExtension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_no_config_context"))
+        return EGL_NO_CONFIG_KHR;
+    const EGLint wanted[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig config = EGL_NO_CONFIG_KHR;
+    EGLint count = 0;
+    eglChooseConfig(display, wanted, &config, 1, &count);
+    return count > 0 ? config : EGL_NO_CONFIG_KHR;
+}
+
 }  // namespace
 
 Result<std::unique_ptr<HeadlessContext>> HeadlessContext::create(bool debugOutput) {
-    const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (!hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
-        return makeError("EGL",
-                         "EGL_MESA_platform_surfaceless is not available: install Mesa's "
-                         "EGL (apt-get install libegl1 libegl-mesa0 libgl1-mesa-dri)");
-    EGLDisplay display =
-        eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    EGLint major = 0, minor = 0;
-    if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor))
-        return makeError("EGL", "cannot initialise the surfaceless display (" +
-                                    eglErrorName(eglGetError()) +
-                                    "): is libgl1-mesa-dri installed?");
+    addDriverEglVendorFolders();
+    std::string only = std::getenv("GRASS_EGL_PLATFORM") ? std::getenv("GRASS_EGL_PLATFORM") : "";
+    if (only == "auto")
+        only.clear();
+    if (!only.empty() && only != "surfaceless" && only != "device")
+        return makeError("GRASS_EGL_PLATFORM",
+                         "'" + only + "' is not a platform: use auto, surfaceless or device");
+    std::string why;
+    EGLDisplay display = openDisplay(only, why);
+    if (display == EGL_NO_DISPLAY)
+        return makeError("EGL", "cannot open a headless EGL display: " + why +
+                                    ". Install Mesa's EGL (apt-get install libegl1 "
+                                    "libegl-mesa0 libgl1-mesa-dri) or a GPU driver's EGL");
     if (!eglBindAPI(EGL_OPENGL_API)) {
         eglTerminate(display);
         return makeError("EGL", "desktop OpenGL is not available through EGL");
@@ -69,11 +133,12 @@ Result<std::unique_ptr<HeadlessContext>> HeadlessContext::create(bool debugOutpu
                                  EGL_CONTEXT_OPENGL_DEBUG,
                                  debugOutput ? EGL_TRUE : EGL_FALSE,
                                  EGL_NONE};
-    EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    EGLContext context =
+        eglCreateContext(display, contextConfig(display), EGL_NO_CONTEXT, attributes);
     if (context == EGL_NO_CONTEXT) {
-        const std::string why = eglErrorName(eglGetError());
+        const std::string error = eglErrorName(eglGetError());
         eglTerminate(display);
-        return makeError("EGL", "cannot create an OpenGL 4.5 core context (" + why +
+        return makeError("EGL", "cannot create an OpenGL 4.5 core context (" + error +
                                     "): the driver is too old (Mesa 20+ llvmpipe works)");
     }
     if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {

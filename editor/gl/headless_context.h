@@ -1,5 +1,6 @@
 // HeadlessContext: an OpenGL 4.5 core context without a window or display, through EGL on
-// Mesa's surfaceless platform (llvmpipe works with no GPU). Used by `grass` and the GL tests.
+// Mesa's surfaceless platform (llvmpipe works with no GPU) or on a GPU found through
+// EGL_EXT_platform_device (NVIDIA). Used by `grass` and the GL tests.
 // Rendering goes to framebuffer objects; the context has no default framebuffer.
 #pragma once
 

@@ -123,6 +123,16 @@ grass_cli_test(render_meadow GL OK --png ${GRASS_CLI_TMP}/meadow.png 160 90
     --stdout "^wrote .*meadow\\.png \\(160x90\\)$" --stdout "^  frames +1,"
     -- ${GRASS_BIN} render ${GRASS_SOURCE_DIR}/projects/meadow --out ${GRASS_CLI_TMP}/meadow.png
        --width 160 --height 90 --frames 1)
+# The headless context's second way to a display, EGL_EXT_platform_device (how NVIDIA's driver
+# offers a GPU without a window system), forced on llvmpipe, which offers it too.
+grass_cli_test(render_egl_device_platform GL OK --png ${GRASS_CLI_TMP}/meadow_device.png 64 36
+    --stdout "^  renderer +"
+    -- env GRASS_EGL_PLATFORM=device ${GRASS_BIN} render ${GRASS_SOURCE_DIR}/projects/meadow
+       --out ${GRASS_CLI_TMP}/meadow_device.png --width 64 --height 36 --frames 1)
+grass_cli_test(render_egl_platform_bad ERROR "GRASS_EGL_PLATFORM" --also "auto, surfaceless or device"
+    --absent ${GRASS_CLI_TMP}/never_egl.png
+    -- env GRASS_EGL_PLATFORM=x11 ${GRASS_BIN} render ${GRASS_SOURCE_DIR}/projects/meadow
+       --out ${GRASS_CLI_TMP}/never_egl.png --width 64 --height 36 --frames 1)
 grass_cli_test(render_mesh GL OK --png ${GRASS_CLI_TMP}/quad.png 128 128
     --stdout "^wrote .*quad\\.png \\(128x128\\)$" --stdout "^  scene +2 triangles, [1-9][0-9]* blades"
     -- ${GRASS_BIN} render --mesh ${GRASS_CLI_GLTF}/quad.gltf --out ${GRASS_CLI_TMP}/quad.png
