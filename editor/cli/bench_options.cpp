@@ -12,7 +12,8 @@ void describeOptions(ArgParser& parser, BenchArgs& args) {
                 "comma-separated cases: nature-100k, nature-100k-all (every blade drawn at full "
                 "detail without MSAA: what a drawn blade costs), helicopter-100k, winter-100k "
                 "(snow on), "
-                "nature-1m, helicopter-1m, editor-meadow (the editor window orbiting, painting "
+                "nature-1m, helicopter-1m, nature-1m-all (a million blades drawn in full), "
+                "nature-10m, editor-meadow (the editor window orbiting, painting "
                 "and playing the meadow at wall-clock time; needs a display or xvfb-run), tiny "
                 "(tests/data/projects/tiny, for tests); default all but tiny",
                 &args.cases);

@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# The GPU checks of issue 29 item 4, run on a machine with a GPU driver (no Debian libraries,
+# no display), from the repository root with .gpu/ made by .ci/gpu/pack.py beside it:
+#   1. grass render of the default project through the GPU's own EGL (the headless context
+#      finds the driver's EGL vendor file itself; the tessellation path `auto` picks on a GPU)
+#   2. grass bench: 100k, 1M (also at 1080p) and 10M blades
+#   3. the GL test suite
+#   4. grass tradeoff on one scene, grass sim on the CPU's threads
+# Everything lands in $OUT (default /tmp/gpu-out): run.log, the bench JSON, and results.tgz.
+# Each step has its own time limit and the whole run a deadline (GPU_DEADLINE_S, default 420),
+# so one hung step cannot eat the others.
+set -u
+ROOT=$PWD
+OUT=${OUT:-/tmp/gpu-out}
+WORK=/tmp/gpu-work
+DEADLINE=$((SECONDS + ${GPU_DEADLINE_S:-420}))
+mkdir -p "$OUT" "$WORK"
+exec > >(tee "$OUT/run.log") 2>&1
+
+# The binaries look for shaders and test data where they were built.
+src=$(cat "$ROOT/.gpu/source_dir")
+if [ -n "$src" ] && [ ! -e "$src/shaders" ]; then mkdir -p "$(dirname "$src")"; ln -sfn "$ROOT" "$src"; fi
+export GRASS_SHADER_DIR=$ROOT/shaders
+export LD_LIBRARY_PATH=$ROOT/.gpu/lib:/usr/local/nvidia/lib64:/usr/local/nvidia/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+
+# Debian 12's glibc 2.36 and GCC 12's libstdc++: the machine's own when new enough.
+LOADER=()
+glibc=$(getconf GNU_LIBC_VERSION | awk '{print $2}')
+if [ "$(printf '%s\n2.36\n' "$glibc" | sort -V | head -1)" != "2.36" ]; then
+    LOADER=("$ROOT/.gpu/compat/ld-linux-x86-64.so.2" --library-path "$ROOT/.gpu/compat:$LD_LIBRARY_PATH")
+    echo "glibc $glibc is older than 2.36: running through the packed loader"
+else
+    stdcxx=$(ldconfig -p | awk '/libstdc\+\+\.so\.6 .*x86-64/ {print $NF; exit}')
+    if [ -z "$stdcxx" ] || ! grep -aq GLIBCXX_3.4.30 "$stdcxx"; then
+        export LD_LIBRARY_PATH=$LD_LIBRARY_PATH:$ROOT/.gpu/compat-cxx
+        mkdir -p "$ROOT/.gpu/compat-cxx"
+        cp "$ROOT/.gpu/compat/libstdc++.so.6" "$ROOT/.gpu/compat/libgcc_s.so.1" "$ROOT/.gpu/compat-cxx/"
+        echo "libstdc++ older than GCC 12's: using the packed one"
+    fi
+fi
+
+step() {  # step NAME LIMIT_S COMMAND...: runs within its limit and the run's deadline
+    local name=$1 limit=$2; shift 2
+    local left=$((DEADLINE - SECONDS))
+    if [ "$left" -lt 10 ]; then echo "== $name: skipped, the run's deadline is near"; return 1; fi
+    [ "$limit" -gt "$left" ] && limit=$left
+    echo "== $name (limit ${limit} s): $*"
+    local start=$SECONDS
+    timeout -k 5 "$limit" "$@"
+    local rc=$?
+    echo "== $name: exit $rc after $((SECONDS - start)) s"
+    return $rc
+}
+G=("${LOADER[@]}" "$ROOT/.gpu/bin/grass")
+T=("${LOADER[@]}" "$ROOT/.gpu/bin/grass_gl_tests")
+
+echo "== machine"
+nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm --format=csv 2>&1
+nproc; getconf GNU_LIBC_VERSION; uname -r
+ls /usr/local/nvidia/share/glvnd/egl_vendor.d /usr/share/glvnd/egl_vendor.d 2>&1
+
+# 1. The headless context on the GPU, first as a user would start it (no EGL variables).
+if ! step render 90 "${G[@]}" render projects/nature --out "$WORK/nature_gpu.png" --stats "$WORK/render_stats.json"; then
+    echo "== the headless context needed the vendor file named: __EGL_VENDOR_LIBRARY_FILENAMES"
+    export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
+    step render-named-vendor 90 "${G[@]}" render projects/nature --out "$WORK/nature_gpu.png" --stats "$WORK/render_stats.json"
+fi
+step render-1080p 60 "${G[@]}" render projects/helicopter --width 1920 --height 1080 --out "$WORK/helicopter_gpu.png" --stats "$WORK/render_helicopter_stats.json"
+
+# 2. grass bench at 720p, then the million drawn blades at 1080p, then ten million.
+step bench 150 "${G[@]}" bench --cases nature-100k,nature-100k-all,helicopter-100k,winter-100k,nature-1m,helicopter-1m,nature-1m-all \
+    --frames 20 --frames-1m 10 --steps 50 --steps-1m 20 --out "$OUT/bench_gpu.json"
+step bench-1080p 60 "${G[@]}" bench --cases nature-1m,nature-1m-all --width 1920 --height 1080 --msaa 0 \
+    --frames-1m 10 --steps-1m 20 --out "$OUT/bench_gpu_1080p.json"
+step bench-10m 120 "${G[@]}" bench --cases nature-10m --frames-1m 5 --steps-1m 10 --out "$OUT/bench_gpu_10m.json"
+
+# 3. The GL tests (goldens were made on llvmpipe: a GPU rasterises edges differently).
+step gl-tests 150 "${T[@]}" --gtest_brief=1 --gtest_output=json:"$WORK/gl_tests.json"
+
+# 4. The quality knobs on one scene, and the CPU physics on this machine's cores.
+step tradeoff 60 "${G[@]}" tradeoff projects/meadow --out "$WORK/tradeoff" --frames 5
+step sim-cpu 30 "${G[@]}" sim projects/nature --backend cpu --threads "$(nproc)" --seconds 2
+step sim-gpu 30 "${G[@]}" sim projects/nature --backend gpu --seconds 2
+
+tar czf "$OUT/results.tgz" -C "$WORK" . 2>/dev/null
+echo "== done in $SECONDS s"
