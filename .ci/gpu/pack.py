@@ -23,6 +23,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 BUILD = os.path.join(ROOT, sys.argv[1] if len(sys.argv) > 1 else "build")
 OUT = os.path.join(ROOT, ".gpu")
 BINARIES = ["grass", "grass_gl_tests"]
+FONT = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
 # Loaded with dlopen by libepoxy and glvnd, so no NEEDED entry names them.
 DLOPENED = ["libEGL.so.1", "libOpenGL.so.0", "libGLdispatch.so.0", "libGL.so.1"]
 COMPAT = {"libc.so.6", "libm.so.6", "ld-linux-x86-64.so.2", "libpthread.so.0", "libdl.so.2",
@@ -156,6 +157,9 @@ def main():
         wanted |= imported(path)
     exported = sum(write_stub(soname, source, os.path.join(OUT, "lib"), wanted)
                    for soname, source in stubs)
+    # The UI font (fonts-dejavu-core): grass bench times the editor's panels, the GL tests draw them.
+    os.makedirs(os.path.join(OUT, "fonts"))
+    shutil.copy(FONT, os.path.join(OUT, "fonts"))
     # The binaries read shaders and test data from the source tree they were built from.
     with open(os.path.join(OUT, "source_dir"), "w") as f:
         f.write(ROOT + "\n")
