@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
+#include "physics/physics.h"
+#include "physics/physics_simd.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"
 
@@ -99,24 +103,31 @@ namespace {
 
 // A mesh collider becomes its packed spheres placed in the world: centre = position + scale·c,
 // radius scale·r, and a path moves every sphere by the same offset.
-TEST(ScenePhysics, MeshColliderIsPlacedPackedSpheres) {
-    const auto folder = test::scratchDir("scene_physics_mesh_collider");
+// A project in a fresh scratch folder whose one collider is tests/data/gltf/cube.glb packed into
+// `sphereCount` spheres at `position`, moving 2 m along x in its first second.
+LoadedProject cubeColliderProject(const char* folderName, ColliderDesc rock) {
+    const auto folder = test::scratchDir(folderName);
     std::filesystem::copy_file(test::sourceDir() / "tests/data/gltf/cube.glb", folder / "cube.glb",
                                std::filesystem::copy_options::overwrite_existing);
     std::filesystem::remove_all(folder / ".grass-cache");
     LoadedProject loaded;
     loaded.folder = folder;
     loaded.file = folder / "project.json";
-    ColliderDesc rock;
     rock.name = "rock";
     rock.shape = ColliderShape::Mesh;
     rock.file = "cube.glb";
+    rock.path = {{0.0f, rock.position}, {1.0f, rock.position + glm::vec3(2.0f, 0.0f, 0.0f)}};
+    loaded.project.colliders = {rock};
+    return loaded;
+}
+
+TEST(ScenePhysics, MeshColliderIsPlacedPackedSpheres) {
+    ColliderDesc rock;
     rock.scale = 2.0f;
     rock.sphereCount = 8;
     rock.packingResolution = 16;
     rock.position = {10.0f, 0.0f, 0.0f};
-    rock.path = {{0.0f, {10.0f, 0.0f, 0.0f}}, {1.0f, {12.0f, 0.0f, 0.0f}}};
-    loaded.project.colliders = {rock};
+    const LoadedProject loaded = cubeColliderProject("scene_physics_mesh_collider", rock);
 
     auto physics = buildScenePhysics(loaded);
     ASSERT_TRUE(physics) << physics.error().str();
@@ -141,6 +152,69 @@ TEST(ScenePhysics, MeshColliderIsPlacedPackedSpheres) {
     ASSERT_TRUE(again) << again.error().str();
     EXPECT_EQ(again->colliders, physics->colliders);
     EXPECT_NE(again->notes[0].find("(cached in"), std::string::npos) << again->notes[0];
+}
+
+// A packed mesh's broad phase has two levels: the first sphere bounds the whole mesh, the first
+// of each later chunk of ~√N spheres (in Morton order) bounds its chunk. Every bound holds its
+// spheres, and the blades step bit for bit as with no bounds at all, on the reference and the
+// SIMD step: a bound only skips spheres that could not touch the blade.
+TEST(ScenePhysics, MeshColliderBoundsItsSpheresInChunks) {
+    ColliderDesc rock;
+    rock.sphereCount = 40;
+    rock.packingResolution = 24;
+    rock.position = {-1.0f, -0.6f, 0.0f};
+    const LoadedProject loaded = cubeColliderProject("scene_physics_mesh_chunks", rock);
+    auto physics = buildScenePhysics(loaded);
+    ASSERT_TRUE(physics) << physics.error().str();
+    const std::vector<SphereCollider>& spheres = physics->colliders;
+    const std::size_t n = spheres.size();
+    ASSERT_GE(n, 20u);
+    const auto chunk = static_cast<std::size_t>(std::ceil(std::sqrt(double(n))));
+    const auto holds = [&](std::size_t head, std::size_t first, std::size_t count) {
+        const glm::vec3 bound = spheres[head].centre + spheres[head].boundOffset;
+        for (std::size_t i = first; i < first + count; ++i)
+            EXPECT_LE(glm::length(spheres[i].centre - bound) + spheres[i].radiusM,
+                      spheres[head].boundRadiusM)
+                << "sphere " << i << " outside the bound on " << head;
+    };
+    EXPECT_EQ(spheres[0].groupSize, n);
+    holds(0, 0, n);
+    std::size_t heads = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+        if (i % chunk != 0) {
+            EXPECT_EQ(spheres[i].groupSize, 1u) << i;
+            continue;
+        }
+        ++heads;
+        EXPECT_EQ(spheres[i].groupSize, std::min(chunk, n - i)) << i;
+        holds(i, i, spheres[i].groupSize);
+        // Morton order keeps a chunk compact: its bound is well inside the mesh's.
+        EXPECT_LT(spheres[i].boundRadiusM, spheres[0].boundRadiusM) << i;
+    }
+    EXPECT_EQ(heads, (n - 1) / chunk);
+
+    std::vector<SphereCollider> unbounded = spheres;
+    for (SphereCollider& sphere : unbounded)
+        sphere.groupSize = 1;
+    std::vector<Blade> blades;
+    for (int z = -12; z <= 12; ++z)
+        for (int x = -30; x <= 30; ++x)
+            blades.push_back(makeRestBlade({0.05f * float(x), 0.0f, 0.05f * float(z)}, {0, 1, 0},
+                                           0.3f, 0.01f, 30.0f, 0.1f * float(x + z)));
+    const auto tips = restTips(blades);
+    for (const CpuPhysics path : {CpuPhysics::Scalar, CpuPhysics::Simd}) {
+        SCOPED_TRACE(cpuPhysicsName(path));
+        std::vector<Blade> a = blades, b = blades;
+        std::vector<float> etaA(blades.size(), 0.0f), etaB = etaA;
+        for (int step = 0; step < 30; ++step) {
+            const float t = float(step) / 30.0f;
+            stepPhysicsOn(path, a, etaA, tips, PhysicsParams{}, {}, spheres, t, 1);
+            stepPhysicsOn(path, b, etaB, tips, PhysicsParams{}, {}, unbounded, t, 1);
+        }
+        EXPECT_EQ(a, b);
+        EXPECT_EQ(etaA, etaB);
+        EXPECT_GT(std::count_if(etaA.begin(), etaA.end(), [](float e) { return e > 0.0f; }), 50);
+    }
 }
 
 TEST(ScenePhysics, MissingColliderMeshIsNamed) {
