@@ -63,24 +63,48 @@ TEST_F(SnowGlTest, TheDepthMapMatchesTheCpuRasteriser) {
                       GLsizei(gpu.size() * sizeof(float)), gpu.data());
     // Both sample texel centres; only texels an edge passes exactly through may differ in
     // coverage (GL's tie rule against the CPU's inclusive edges): under 1 % of them. Where both
-    // hold a surface, depths agree to 1e-4 of the depth range (32-bit depth of a linear map).
-    std::size_t coverageDiffers = 0, compared = 0;
-    float worst = 0.0f;
-    for (std::size_t i = 0; i < gpu.size(); ++i) {
-        const bool gpuCovered = gpu[i] < 1.0f;
-        const bool cpuCovered = cpu.depthM[i] < core::SNOW_MAP_EMPTY;
-        if (gpuCovered != cpuCovered) {
-            ++coverageDiffers;
-            continue;
+    // hold a surface, depths agree to 1e-4 of the depth range (32-bit depth of a linear map)
+    // plus what snapping the vertices to the rasteriser's sub-pixel grid moves a sloped surface:
+    // GL asks for at least 4 sub-pixel bits, so up to 1/16 of a texel times the surface's depth
+    // change per texel (the smaller one-sided difference along each axis, so a silhouette's jump
+    // does not count). llvmpipe meets the first term alone; an NVIDIA H200 was 0.68 mm off on the
+    // ball's steep flanks, where 1e-4 of the range is 0.33 mm.
+    const auto depthAt = [&](int x, int y) { return cpu.depthM[std::size_t(y) * RES + x]; };
+    const auto slopeAt = [&](int x, int y) {
+        float slope = 0.0f;
+        for (const glm::ivec2 step : {glm::ivec2(1, 0), glm::ivec2(0, 1)}) {
+            const glm::ivec2 low = glm::max(glm::ivec2(x, y) - step, glm::ivec2(0));
+            const glm::ivec2 high = glm::min(glm::ivec2(x, y) + step, glm::ivec2(RES - 1));
+            const float here = depthAt(x, y);
+            slope = std::max(slope, std::min(std::abs(depthAt(high.x, high.y) - here),
+                                             std::abs(here - depthAt(low.x, low.y))));
         }
-        if (!gpuCovered)
-            continue;
-        ++compared;
-        worst = std::max(worst, std::abs(gpu[i] * view.depthRangeM - cpu.depthM[i]));
-    }
+        return slope;
+    };
+    std::size_t coverageDiffers = 0, compared = 0;
+    float worstExcess = -1.0f, worst = 0.0f;
+    for (int y = 0; y < RES; ++y)
+        for (int x = 0; x < RES; ++x) {
+            const std::size_t i = std::size_t(y) * RES + x;
+            const bool gpuCovered = gpu[i] < 1.0f;
+            const bool cpuCovered = cpu.depthM[i] < core::SNOW_MAP_EMPTY;
+            if (gpuCovered != cpuCovered) {
+                ++coverageDiffers;
+                continue;
+            }
+            if (!gpuCovered)
+                continue;
+            ++compared;
+            const float error = std::abs(gpu[i] * view.depthRangeM - cpu.depthM[i]);
+            const float allowed = 1e-4f * view.depthRangeM + slopeAt(x, y) / 16.0f;
+            worst = std::max(worst, error);
+            worstExcess = std::max(worstExcess, error - allowed);
+        }
+    std::printf("[ snow ] depth map against the CPU rasteriser: worst %.3g m (range %.3g m)\n",
+                double(worst), double(view.depthRangeM));
     EXPECT_GT(compared, gpu.size() / 4);
     EXPECT_LT(coverageDiffers, gpu.size() / 100);
-    EXPECT_LT(worst, 1e-4f * view.depthRangeM);
+    EXPECT_LT(worstExcess, 0.0f);
 }
 
 // Mean of the red, green and blue of a pixel box (row 0 at the top).

@@ -122,9 +122,11 @@ TEST_F(SunShadowGlTest, TheBallShadesTheGrassUnderItAndNothingElse) {
                     "%.3f in the sun (%d points)\n",
                     darkerInShadow / inShadow, inShadow, changedInSun / inSun, inSun);
         // The sun's share is most of a lit field's brightness (ambient 0.35-0.45 of the sky
-        // remains); a shaded point loses tens of levels, an open one nothing.
+        // remains); a shaded point loses tens of levels, an open one nothing but the rounding
+        // of another program variant: 0.10-0.11 levels on llvmpipe, 0.49-0.51 on an NVIDIA H200,
+        // against 42-47 in the shadow on both.
         EXPECT_GT(darkerInShadow / inShadow, 20.0);
-        EXPECT_LT(changedInSun / inSun, 0.5);
+        EXPECT_LT(changedInSun / inSun, 1.0);
     }
 }
 
