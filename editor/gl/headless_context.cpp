@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 #include "gl/debug_output.h"
 #include "util/egl_vendor_dirs.h"
@@ -57,13 +58,52 @@ bool initialise(EGLDisplay display) {
     return display != EGL_NO_DISPLAY && eglInitialize(display, &major, &minor);
 }
 
-// A display without a window system: Mesa's surfaceless platform first (llvmpipe, Mesa GPU
-// drivers), then the first GPU that EGL_EXT_platform_device lists (NVIDIA's driver). Returns
-// EGL_NO_DISPLAY with `why` filled when neither initialises.
-// GRASS_EGL_PLATFORM=surfaceless or device tries that platform alone (tests reach the device path
-// on llvmpipe with it).
+struct EglDevice {
+    EGLDeviceEXT handle;
+    bool software;  // Mesa marks its software rasteriser with EGL_MESA_device_software
+};
+
+// The GPUs and software rasterisers EGL_EXT_platform_device lists.
+std::vector<EglDevice> listDevices(const char* clientExtensions) {
+    if (!hasExtension(clientExtensions, "EGL_EXT_platform_device") ||
+        !hasExtension(clientExtensions, "EGL_EXT_device_enumeration"))
+        return {};
+    EGLDeviceEXT listed[16];
+    EGLint count = 0;
+    if (!eglQueryDevicesEXT(16, listed, &count))
+        return {};
+    const bool queryable = hasExtension(clientExtensions, "EGL_EXT_device_query");
+    std::vector<EglDevice> devices;
+    for (EGLint i = 0; i < count; ++i)
+        devices.push_back(
+            {listed[i], queryable && hasExtension(eglQueryDeviceStringEXT(listed[i], EGL_EXTENSIONS),
+                                                  "EGL_MESA_device_software")});
+    return devices;
+}
+
+// A display without a window system: a GPU through EGL_EXT_platform_device (NVIDIA's way; Mesa
+// lists its GPUs there too), else Mesa's surfaceless platform (llvmpipe when there is no GPU),
+// else a software device. Returns EGL_NO_DISPLAY with `why` filled when none initialises.
+// GRASS_EGL_PLATFORM=surfaceless or device tries that platform alone (tests reach the device
+// platform on llvmpipe with it).
 EGLDisplay openDisplay(const std::string& only, std::string& why) {
     const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    const std::vector<EglDevice> devices =
+        only == "surfaceless" ? std::vector<EglDevice>{} : listDevices(clientExtensions);
+    const auto openDevice = [&](bool software) {
+        for (const EglDevice& device : devices) {
+            if (device.software != software)
+                continue;
+            EGLDisplay display =
+                eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device.handle, nullptr);
+            if (initialise(display))
+                return display;
+        }
+        return EGL_NO_DISPLAY;
+    };
+    if (only != "surfaceless")
+        if (EGLDisplay display = openDevice(false); display != EGL_NO_DISPLAY)
+            return display;
     if (only != "device" && hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) {
         EGLDisplay display =
             eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
@@ -71,19 +111,12 @@ EGLDisplay openDisplay(const std::string& only, std::string& why) {
             return display;
         why = "the surfaceless display (" + eglErrorName(eglGetError()) + ")";
     }
-    if (only != "surfaceless" && hasExtension(clientExtensions, "EGL_EXT_platform_device") &&
-        hasExtension(clientExtensions, "EGL_EXT_device_enumeration")) {
-        EGLDeviceEXT devices[16];
-        EGLint count = 0;
-        if (eglQueryDevicesEXT(16, devices, &count))
-            for (EGLint i = 0; i < count; ++i) {
-                EGLDisplay display =
-                    eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
-                if (initialise(display))
-                    return display;
-            }
-        why += std::string(why.empty() ? "" : ", ") + std::to_string(count) + " EGL device" +
-               (count == 1 ? "" : "s");
+    if (only != "surfaceless") {
+        if (EGLDisplay display = openDevice(true); display != EGL_NO_DISPLAY)
+            return display;
+        if (!devices.empty() || !why.empty())
+            why += std::string(why.empty() ? "" : ", ") + std::to_string(devices.size()) +
+                   " EGL device" + (devices.size() == 1 ? "" : "s");
     }
     if (why.empty())
         why = only.empty() ? "neither EGL_MESA_platform_surfaceless nor EGL_EXT_platform_device "
