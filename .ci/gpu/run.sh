@@ -7,6 +7,8 @@
 #   3. the GL test suite
 #   4. grass tradeoff on one scene, grass sim on the CPU's threads
 # Everything lands in $OUT (default /tmp/gpu-out): run.log, the bench JSON, and results.tgz.
+# Here: `ninja -C build grass grass_gl_tests && .ci/gpu/pack.py`; there, with .gpu carried along:
+# `bash .ci/gpu/run.sh` (all steps in about a minute on an H200; docs/gpu-h200/ holds the last).
 # Each step has its own time limit and the whole run a deadline (GPU_DEADLINE_S, default 420),
 # so one hung step cannot eat the others.
 set -u
