@@ -75,10 +75,7 @@ std::vector<GrassObject> followLayers(const std::vector<GrassObject>& placed,
         for (std::size_t i = 0; i < layers.size() && i < follow.layerWeights.size(); ++i) {
             const LayerSource& source = layers[i].source;
             const std::vector<float>& rule = follow.ruleFactors[i];
-            const float share =
-                (source.maps.density.texels.empty() ? 1.0f
-                                                    : source.maps.density.sample(object.uv)) *
-                (rule.empty() ? 1.0f : rule[o]);
+            const float share = densityAt(source, object.uv) * (rule.empty() ? 1.0f : rule[o]);
             // Growth off leaves heights and colours as scattered (growCandidate does the same).
             const BladeGrowth growth =
                 source.growthEnabled ? bladeGrowth(growthAt(source, object.uv)) : BladeGrowth{};

@@ -94,6 +94,10 @@ GrowthParams growthAt(const LayerSource& source, glm::vec2 uv) {
                         sampleOrOne(source.maps.light, uv));
 }
 
+float densityAt(const LayerSource& source, glm::vec2 uv) {
+    return sampleOrOne(source.maps.density, uv);
+}
+
 float cutShareAt(const LayerSource& source, glm::vec2 uv) {
     if (source.maps.cut.texels.empty())
         return 1.0f;

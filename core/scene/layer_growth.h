@@ -70,8 +70,11 @@ struct LayerSource {
 // billboards, scene/billboard_follow.h): the growth model's inputs there (the best conditions
 // with growth off: soil and light count only with it on), and the share of its height a blade
 // keeps there, its cut map plus what it regrew, at most 1 (1 without a cut map).
+// The density map's value there (1 without a map) is the share of candidates a layer keeps
+// before its rules.
 GrowthParams growthAt(const LayerSource& source, glm::vec2 uv);
 float cutShareAt(const LayerSource& source, glm::vec2 uv);
+float densityAt(const LayerSource& source, glm::vec2 uv);
 
 // The grown field: per slot of `patched` (patch-major, padding included) the blade, how far its
 // colour leans to the poor colours (wilt = 1 − b; 0 without growth), and every STEMS_PER_SET-th

@@ -22,14 +22,20 @@ std::string formatPercent(float share) {
 
 // One bounding sphere around spheres that move together (a packed mesh), stored on the first so
 // blades out of its reach skip the whole group (SphereCollider::groupSize).
-void addBroadPhase(std::span<SphereCollider> group) {
-    if (group.size() < 2)
-        return;
+// The box around a group's spheres.
+std::pair<glm::vec3, glm::vec3> sphereBox(std::span<const SphereCollider> group) {
     glm::vec3 low = group[0].centre, high = group[0].centre;
     for (const SphereCollider& sphere : group) {
         low = glm::min(low, sphere.centre - sphere.radiusM);
         high = glm::max(high, sphere.centre + sphere.radiusM);
     }
+    return {low, high};
+}
+
+void addBroadPhase(std::span<SphereCollider> group) {
+    if (group.size() < 2)
+        return;
+    const auto [low, high] = sphereBox(group);
     const glm::vec3 centre = 0.5f * (low + high);
     float radius = 0.0f;
     for (const SphereCollider& sphere : group)
@@ -61,11 +67,7 @@ std::uint32_t mortonCode(glm::uvec3 cell) {
 void addMeshBroadPhase(std::span<SphereCollider> group) {
     if (group.size() < 2)
         return;
-    glm::vec3 low = group[0].centre, high = group[0].centre;
-    for (const SphereCollider& sphere : group) {
-        low = glm::min(low, sphere.centre);
-        high = glm::max(high, sphere.centre);
-    }
+    const auto [low, high] = sphereBox(group);
     const glm::vec3 cellsPerMetre = 1023.0f / glm::max(high - low, glm::vec3(1e-6f));
     std::vector<std::pair<std::uint32_t, std::size_t>> order(group.size());
     for (std::size_t i = 0; i < group.size(); ++i)
