@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <span>
+#include <utility>
 
 #include "collider/packing_cache.h"
 #include "scene/scene_props.h"
