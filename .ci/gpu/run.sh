@@ -109,10 +109,15 @@ variant() {  # variant NAME: a copy of projects/nature with one part emptied
       bare) sed '/"wind": \[/,/^  \],/c\  "wind": [],' projects/nature/project.json |
               sed '/"colliders": \[/,$d' > "$dir/project.json"
             echo '  "colliders": []}' >> "$dir/project.json" ;;
+      few-spheres) sed 's/"spheres": 1000/"spheres": 100/' projects/nature/project.json > "$dir/project.json" ;;
+      collider-aloft) sed 's/\("position": \[[-0-9.]*, \)[0-9.]*\(, 9.0\]\)/\150.0\2/' \
+                        projects/nature/project.json > "$dir/project.json" ;;
     esac
     echo "$dir"
 }
-for v in no-colliders no-wind bare; do
+# few-spheres: the bunny packed in 100 spheres; collider-aloft: its path 50 m up, out of every
+# blade's reach (what is left is the per-step cost of having a collider at all).
+for v in no-colliders no-wind bare few-spheres collider-aloft; do
     step "sim-gpu-$v" 30 "${G[@]}" sim "$(variant $v)" --backend gpu --seconds 2
 done
 step sim-gpu-helicopter 30 "${G[@]}" sim projects/helicopter --backend gpu --seconds 2
