@@ -76,10 +76,11 @@ private:
     // The frame's lighting, uploaded once at the start of render().
     gl::UniformBlock<LightingBlock> mLighting{"lighting"};
     gl::Program mStemSetPrograms[2];  // [sun shadows]; the shadowed one loads on first use
-    // The opaque surfaces' programs: lit, depth alone (the cull's pre-pass), and the snow
-    // surface with its exposure per pixel or per vertex (RenderOptions::snowExposurePerVertex);
-    // all but the lit one load on first use.
-    enum class Opaque { Lit, DepthOnly, Snow, SnowExposurePerVertex, Count };
+    // The opaque surfaces' programs: lit, lit with the terrain's textures (its glTF base colour,
+    // the editor's map overlay), depth alone (the cull's pre-pass), and the snow surface with its
+    // exposure per pixel or per vertex (RenderOptions::snowExposurePerVertex); all but the lit
+    // one load on first use.
+    enum class Opaque { Lit, LitTextured, DepthOnly, Snow, SnowExposurePerVertex, Count };
     // [sun shadows][variant]
     gl::Program mOpaquePrograms[2][static_cast<int>(Opaque::Count)];
     static Result<gl::Program> loadOpaqueProgram(Opaque variant, bool sunShadows);

@@ -40,8 +40,13 @@ void SceneRenderer::runSnowPass(const RenderOptions& options, int width, int hei
 
 void SceneRenderer::drawOpaquePass(const glm::mat4& viewProj, const RenderOptions& options) {
     mMeshTimer.begin();
+    // The textures' lookups only where the terrain has one: software GL runs both sides of a
+    // uniform branch, and two unused lookups a fragment cost projects/nature's opaque pass about
+    // 5 ms of 35 on llvmpipe at 4× MSAA (docs/rendering.md).
+    const bool textured = mSurfaceTexture.id() != 0 || mMapOverlay.id() != 0;
+    const Opaque lit = textured ? Opaque::LitTextured : Opaque::Lit;
     const gl::Program& opaque =
-        opaqueProgram(mSnowLies ? snowVariant(options) : Opaque::Lit, options.sun.shadows);
+        opaqueProgram(mSnowLies ? snowVariant(options) : lit, options.sun.shadows);
     opaque.use();
     opaque.set("uViewProj", viewProj);
     opaque.set("uAlbedoView", options.albedoView ? 1 : 0);
@@ -104,6 +109,11 @@ Result<gl::Program> SceneRenderer::loadOpaqueProgram(Opaque variant, bool sunSha
         return gl::Program::load(
             {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}},
             sunShadows ? "mesh (sun shadows)" : "mesh", defines);
+    case Opaque::LitTextured:
+        defines.emplace_back("GRASS_MESH_TEXTURES");
+        return gl::Program::load(
+            {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}},
+            sunShadows ? "mesh textured (sun shadows)" : "mesh textured", defines);
     case Opaque::DepthOnly:
         return gl::Program::load(
             {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}},
@@ -111,7 +121,10 @@ Result<gl::Program> SceneRenderer::loadOpaqueProgram(Opaque variant, bool sunSha
     default:
         break;
     }
+    // The snow surface keeps the textures' lookups (a snowy textured glTF, the overlay while
+    // painting under snow); its exposure and noise cost far more.
     defines.emplace_back("GRASS_SNOW");
+    defines.emplace_back("GRASS_MESH_TEXTURES");
     if (variant == Opaque::SnowExposurePerVertex)
         defines.emplace_back("GRASS_SNOW_EXPOSURE_PER_VERTEX");
     return gl::Program::load({{GL_VERTEX_SHADER, "mesh_snow.vert"},

@@ -410,8 +410,6 @@ void Field::drawMeshes(const View& view) {
     program.use();
     program.set("uViewProj", view.projection * view.view);
     program.set("uAlbedoView", 0);
-    program.set("uHasBaseTexture", 0);
-    program.set("uHasMapOverlay", 0);
     const auto drawMesh = [&](std::size_t index, const glm::mat4& model) {
         const MeshGpu& mesh = s.meshes[index];
         if (mesh.indexCount == 0)
