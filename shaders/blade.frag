@@ -14,14 +14,23 @@ flat in uint vBladeIndex;
 
 // Hybrid technique: the blades fade out between these camera distances (metres) while the
 // billboards fade in; alpha-to-coverage turns the alpha into a per-sample dissolve. (0, 0): off.
+#ifdef GRASS_BLADE_FADE_OUT
+// The hybrid's cross-fade (x, y: start and end distance): blades dissolve by alpha-to-coverage
+// as the billboards come in. A program variant, so other blades carry no position to the
+// fragments for it (software GL runs both sides of a uniform branch).
 uniform vec2 uFadeOut;
+#endif
 
 out vec4 fragColor;
 
 void main() {
+#ifdef GRASS_BLADE_FADE_OUT
     float alpha = uFadeOut.y > 0.0
                       ? 1.0 - smoothstep(uFadeOut.x, uFadeOut.y, distance(uCameraPosition, vPosition))
                       : 1.0;
+#else
+    float alpha = 1.0;
+#endif
 #ifdef GRASS_LIGHT_PER_VERTEX
     vec3 color = vLitColor;
 #else

@@ -43,18 +43,23 @@ static gl::TextureHandle uploadSurfaceTexture(const Rgba8Pixels& image, const co
 }
 
 // The blade program of a geometry path, lit per pixel or per vertex, with or without the sun's
-// shadows (compile-time variants: software GL runs both sides of a uniform branch, so an unused
-// lighting path would still cost).
+// shadows, with or without the hybrid's fade-out (compile-time variants: software GL runs both
+// sides of a uniform branch, so an unused path would still cost). Without the fade a blade lit
+// per vertex hands its fragments one colour and nothing else: the fade's distance and its
+// position varying cost llvmpipe 12 % of nature-100k's grass pass at 4× MSAA (docs/rendering.md).
 Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightPerVertex,
-                                                    bool sunShadows) {
+                                                    bool sunShadows, bool fadeOut) {
     std::vector<std::string> defines;
     if (lightPerVertex)
         defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
     if (sunShadows)
         defines.emplace_back("GRASS_SUN_SHADOWS");
+    if (fadeOut)
+        defines.emplace_back("GRASS_BLADE_FADE_OUT");
     const std::string label = std::string(tessellate ? "blade tessellation" : "blade strips") +
                               (lightPerVertex ? " (lit per vertex)" : "") +
-                              (sunShadows ? " (sun shadows)" : "");
+                              (sunShadows ? " (sun shadows)" : "") +
+                              (fadeOut ? " (fading out)" : "");
     if (tessellate)
         return gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
                                   {GL_TESS_CONTROL_SHADER, "blade.tesc"},
@@ -67,9 +72,9 @@ Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightP
 }
 
 const gl::Program& SceneRenderer::bladeProgram(bool tessellate, bool lightPerVertex,
-                                               bool sunShadows) {
-    return gl::loadOnFirstUse(mBladePrograms[tessellate][lightPerVertex][sunShadows], [&] {
-        return loadBladeProgram(tessellate, lightPerVertex, sunShadows);
+                                               bool sunShadows, bool fadeOut) {
+    return gl::loadOnFirstUse(mBladePrograms[tessellate][lightPerVertex][sunShadows][fadeOut], [&] {
+        return loadBladeProgram(tessellate, lightPerVertex, sunShadows, fadeOut);
     });
 }
 
@@ -81,8 +86,8 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     if (!mesh)
         return mesh.error();
     for (const bool tessellate : {false, true})
-        if (auto loaded = loadBladeProgram(tessellate, false, false); loaded)
-            renderer->mBladePrograms[tessellate][0][0] = std::move(*loaded);
+        if (auto loaded = loadBladeProgram(tessellate, false, false, false); loaded)
+            renderer->mBladePrograms[tessellate][0][0][0] = std::move(*loaded);
         else
             return loaded.error();
     auto stemSets = loadStemSetProgram();

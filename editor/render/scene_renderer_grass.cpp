@@ -89,7 +89,7 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     for (int lod = 0; lod < LOD_COUNT; ++lod)
         programs[lod] =
             &bladeProgram(tessellate, options.lightPerVertex || lod >= pixelLitLods,
-                          options.sun.shadows);
+                          options.sun.shadows, hybrid);
     const auto setAll = [&programs](const char* name, const auto& value) {
         for (int lod = 0; lod < LOD_COUNT; ++lod)
             if (lod == 0 || programs[lod] != programs[lod - 1])

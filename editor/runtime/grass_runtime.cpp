@@ -351,7 +351,6 @@ void Field::draw(const View& view) {
         program.set("uCameraPosition", view.cameraPosition);
         program.set("uLodDistance", std::max(render.lodDistanceM, 0.0f));
         program.set("uLodBlend", core::LOD_BLEND);
-        program.set("uFadeOut", glm::vec2(0.0f));
         program.set("uAlbedoView", 0);
         program.set("uSnowTips", 0);
     }

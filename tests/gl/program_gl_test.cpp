@@ -1,6 +1,9 @@
 // Shader loading: #include resolution, defines, and compile errors that name file and line.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include <cstdlib>
 #include <fstream>
 
@@ -89,6 +92,31 @@ TEST_F(ProgramTest, EveryShippedProgramCompiles) {
                                    {GL_FRAGMENT_SHADER, "blade.frag"}},
                                   "tess");
     EXPECT_TRUE(tess.ok()) << (tess.ok() ? "" : tess.error().str());
+}
+
+// The hybrid's fade-out is a variant of its own: a blade program without it has no fade uniform
+// (and, lit per vertex, no position varying for the fragments, which software GL would set up
+// and interpolate for every triangle); the hybrid's pictures (GoldenTest) show the fade works.
+TEST_F(ProgramTest, OnlyTheFadingBladeProgramCarriesTheFade) {
+    for (const bool tessellate : {false, true}) {
+        const auto load = [tessellate](std::vector<std::string> defines) {
+            if (tessellate)
+                return gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
+                                          {GL_TESS_CONTROL_SHADER, "blade.tesc"},
+                                          {GL_TESS_EVALUATION_SHADER, "blade.tese"},
+                                          {GL_FRAGMENT_SHADER, "blade.frag"}},
+                                         "tess", defines);
+            return gl::Program::load(
+                {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}},
+                "strips", defines);
+        };
+        auto plain = load({"GRASS_LIGHT_PER_VERTEX"});
+        auto fading = load({"GRASS_LIGHT_PER_VERTEX", "GRASS_BLADE_FADE_OUT"});
+        ASSERT_TRUE(plain.ok()) << plain.error().str();
+        ASSERT_TRUE(fading.ok()) << fading.error().str();
+        EXPECT_EQ(glGetUniformLocation(plain->id(), "uFadeOut"), -1) << tessellate;
+        EXPECT_GE(glGetUniformLocation(fading->id(), "uFadeOut"), 0) << tessellate;
+    }
 }
 
 }  // namespace
