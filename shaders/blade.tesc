@@ -25,7 +25,11 @@ void main() {
     Blade blade = fetchBlade(uint(index));
     float toCamera = distance(blade.v0Theta.xyz, uCameraPosition);
     int lod = bladeLod(toCamera, uLodDistance);
+#ifdef GRASS_LOD_BLEND
     tcLodMorph = vec2(float(lod), lodMorph(toCamera, uLodDistance, lod, uLodBlend));
+#else
+    tcLodMorph = vec2(float(lod), 0.0);  // this draw's blades lie before their LOD's morph band
+#endif
     float level = blade.v1H.w > 0.0 ? float(lodSegments(int(uTessLevel), lod)) : 0.0;
     // Quads domain: outer 0 and 2 are the u = 0 and u = 1 edges (along v), 1 and 3 along u.
     float across = lodFolded(lod) ? 2.0 : 1.0;

@@ -56,8 +56,12 @@ void main() {
     float v = float(row) / float(uSegments);
     BladeShapeParams shape =
         BladeShapeParams(uShape, uTipStart, float(uSegments), uViewProj, uPixelScale, folded);
+#ifdef GRASS_LOD_BLEND
     float morph =
         lodMorph(distance(blade.v0Theta.xyz, uCameraPosition), uLodDistance, uLod, uLodBlend);
+#else
+    float morph = 0.0;  // this draw's blades lie before their LOD's morph band
+#endif
     BladeLodPoints points = bladeLodPoints(blade, u, v, shape, uLod, morph);
     BladeSurfacePoint point = blendedLodPoint(points);
     // Padding blades (h = 0) collapse to a point and produce no fragments.

@@ -5,7 +5,10 @@
 // editor's reduced picture while the user interacts, off otherwise), orientation, frustum,
 // distance, occlusion, burial under snow, in that order; a blade is counted by the first test that removes it.
 // Survivors append their index to the visible list of their level of detail (lod.glsl) and bump
-// that LOD's strip and tessellation instance counts (reset to 0 before the dispatch).
+// that LOD's strip and tessellation instance counts (reset to 0 before the dispatch); a blade in
+// its LOD's morph band (lodMorph > 0) is listed from the list's end, backwards, and counted in
+// the LOD's blending commands, drawn by the program that holds the blend
+// (core::lodBlending says why).
 #include "blade.glsl"
 #include "cull_rules.glsl"
 #include "lod.glsl"
@@ -19,14 +22,16 @@ layout(local_size_x = 32) in;
 layout(std430, binding = 1) readonly buffer PatchBoundsBuffer {
     vec4 patchBounds[];
 };
-// LOD_COUNT lists of uBladeCount entries each: LOD k's survivors start at k·uBladeCount.
+// LOD_COUNT lists of uBladeCount entries each: LOD k's survivors start at k·uBladeCount, its
+// blending ones end at (k + 1)·uBladeCount − 1 and run backwards.
 layout(std430, binding = 5) writeonly buffer VisibleBuffer {
     uint visible[];
 };
 // DrawArraysIndirectCommand (count, instanceCount, first, baseInstance) per LOD: strips at
-// [4k .. 4k+3], tessellation patches at [4·LOD_COUNT + 4k ..].
+// [4k .. 4k+3], tessellation patches at [4·LOD_COUNT + 4k ..], then the same for the blades in
+// the morph band from [8·LOD_COUNT] (core::BladeDrawCommands).
 layout(std430, binding = 6) buffer CommandBuffer {
-    uint commands[8 * LOD_COUNT];
+    uint commands[16 * LOD_COUNT];
 };
 // Statistics: blades in, culled by patch, orientation, frustum, distance, occlusion, snow.
 layout(std430, binding = 7) buffer CounterBuffer {
@@ -58,6 +63,7 @@ uniform int uTestOcclusion;
 uniform int uDistanceClasses;
 uniform float uMaxDistance;
 uniform float uLodDistance;
+uniform float uLodBlend;  // lod.glsl's lodMorph band; 0: no blade blends
 uniform float uCutoffDistance;  // > 0: blades beyond it are culled as distance (hybrid far field)
 uniform int uKeepEvery;  // > 1: only every n-th blade is drawn (the editor's reduced picture)
 uniform int uCollectStats;
@@ -83,8 +89,9 @@ const uint RESULT_SKIPPED = 7u;
 const uint COUNTED_RESULTS = 7u;
 
 shared uint sCounts[COUNTED_RESULTS];
-shared uint sSurvivors[LOD_COUNT];
-shared uint sBase[LOD_COUNT];
+// Per draw class: LOD k's blades at [k], its blending ones at [LOD_COUNT + k].
+shared uint sSurvivors[2 * LOD_COUNT];
+shared uint sBase[2 * LOD_COUNT];
 
 bool boxOutsideFrustum(vec3 lo, vec3 hi) {
     // Outside when all eight corners lie beyond the same clip plane (conservative).
@@ -173,18 +180,23 @@ void main() {
     uint index = uFirstBlade + gl_GlobalInvocationID.x;
     if (gl_LocalInvocationIndex < COUNTED_RESULTS)
         sCounts[gl_LocalInvocationIndex] = 0u;
-    if (gl_LocalInvocationIndex < uint(LOD_COUNT))
+    if (gl_LocalInvocationIndex < uint(2 * LOD_COUNT))
         sSurvivors[gl_LocalInvocationIndex] = 0u;
     barrier();
     uint result = index < uBladeCount ? classify(index) : RESULT_SKIPPED;
     int lod = 0;
-    if (result == RESULT_VISIBLE)
-        lod = bladeLod(distance(blades[index].v0Theta.xyz, uCameraPosition), uLodDistance);
+    bool blending = false;
+    if (result == RESULT_VISIBLE) {
+        float eyeDistance = distance(blades[index].v0Theta.xyz, uCameraPosition);
+        lod = bladeLod(eyeDistance, uLodDistance);
+        blending = lodMorph(eyeDistance, uLodDistance, lod, uLodBlend) > 0.0;
+    }
+    int drawClass = blending ? LOD_COUNT + lod : lod;
     // Survivors take a slot in shared memory; one global atomic per group and LOD reserves the
     // range (contended global atomics per blade cost more than the tests on CPU rasterizers).
     uint localSlot = 0u;
     if (result == RESULT_VISIBLE)
-        localSlot = atomicAdd(sSurvivors[lod], 1u);
+        localSlot = atomicAdd(sSurvivors[drawClass], 1u);
     // Statistics are summed in shared memory first: one global atomic per counter and group.
     if (uCollectStats != 0 && result != RESULT_SKIPPED) {
         atomicAdd(sCounts[0], 1u);
@@ -192,15 +204,21 @@ void main() {
             atomicAdd(sCounts[result], 1u);
     }
     barrier();
-    uint groupLod = gl_LocalInvocationIndex;
-    if (groupLod < uint(LOD_COUNT) && sSurvivors[groupLod] != 0u) {
-        sBase[groupLod] = atomicAdd(commands[4u * groupLod + 1u], sSurvivors[groupLod]);
-        atomicAdd(commands[4u * (uint(LOD_COUNT) + groupLod) + 1u], sSurvivors[groupLod]);
+    // Class c's strip command is command c (blending: 2·LOD_COUNT + k), its patch command
+    // LOD_COUNT after it.
+    uint groupClass = gl_LocalInvocationIndex;
+    if (groupClass < uint(2 * LOD_COUNT) && sSurvivors[groupClass] != 0u) {
+        uint strip = groupClass < uint(LOD_COUNT) ? groupClass : groupClass + uint(LOD_COUNT);
+        sBase[groupClass] = atomicAdd(commands[4u * strip + 1u], sSurvivors[groupClass]);
+        atomicAdd(commands[4u * (strip + uint(LOD_COUNT)) + 1u], sSurvivors[groupClass]);
     }
     if (uCollectStats != 0 && gl_LocalInvocationIndex < COUNTED_RESULTS &&
         sCounts[gl_LocalInvocationIndex] != 0u)
         atomicAdd(counters[gl_LocalInvocationIndex], sCounts[gl_LocalInvocationIndex]);
     barrier();
-    if (result == RESULT_VISIBLE)
-        visible[uint(lod) * uBladeCount + sBase[lod] + localSlot] = index;
+    if (result == RESULT_VISIBLE) {
+        uint rank = sBase[drawClass] + localSlot;
+        visible[blending ? uint(lod + 1) * uBladeCount - 1u - rank : uint(lod) * uBladeCount + rank] =
+            index;
+    }
 }

@@ -97,14 +97,34 @@ struct DrawArraysIndirectCommand {
 };
 static_assert(sizeof(DrawArraysIndirectCommand) == 16);
 
-using BladeDrawCommands = std::array<DrawArraysIndirectCommand, 2 * LOD_COUNT>;
-
-// Byte offsets in the command buffer: LOD k's strips at [k], its patches at [LOD_COUNT + k].
-inline std::size_t stripCommandOffset(int lod) {
-    return std::size_t(lod) * sizeof(DrawArraysIndirectCommand);
+// A LOD's blades in its morph band (lodMorph > 0: they blend towards the next LOD's shape) are
+// drawn apart from the others, by a program variant that holds the blend (GRASS_LOD_BLEND,
+// blade_lod_blend.glsl); the others by one without it. Software GL runs the blend's extra
+// surface evaluations and shadings for every vertex of a program that holds it, whatever the
+// blade (nature-100k on llvmpipe: ~20 % of the grass pass), and three quarters of a LOD's blades
+// lie before its band. The cull pass sorts them (shaders/cull.comp): a LOD's visible list takes
+// the others from its start and the blending ones from its end, backwards.
+inline bool lodBlending(float distance, float lodDistance, int lod, float blend) {
+    return lodMorph(distance, lodDistance, lod, blend) > 0.0f;
 }
-inline std::size_t patchCommandOffset(int lod) {
-    return std::size_t(LOD_COUNT + lod) * sizeof(DrawArraysIndirectCommand);
+
+// Per LOD k: its strips at [k], its patches at [LOD_COUNT + k], then the same for its blades in
+// the morph band at [2·LOD_COUNT + k] and [3·LOD_COUNT + k].
+using BladeDrawCommands = std::array<DrawArraysIndirectCommand, 4 * LOD_COUNT>;
+
+// Byte offsets in the command buffer.
+inline std::size_t stripCommandOffset(int lod, bool blending = false) {
+    return std::size_t((blending ? 2 * LOD_COUNT : 0) + lod) * sizeof(DrawArraysIndirectCommand);
+}
+inline std::size_t patchCommandOffset(int lod, bool blending = false) {
+    return std::size_t((blending ? 3 * LOD_COUNT : LOD_COUNT) + lod) *
+           sizeof(DrawArraysIndirectCommand);
+}
+
+// Blades drawn at `lod`, blending or not (the strips' and the patches' counts are the same).
+inline std::uint32_t drawnAtLod(const BladeDrawCommands& commands, int lod) {
+    return commands[std::size_t(lod)].instanceCount +
+           commands[std::size_t(2 * LOD_COUNT + lod)].instanceCount;
 }
 
 // The commands before the cull pass: no instances; each LOD's strip vertex count for
@@ -112,11 +132,12 @@ inline std::size_t patchCommandOffset(int lod) {
 inline BladeDrawCommands emptyBladeDrawCommands(int segments) {
     BladeDrawCommands commands{};
     for (int lod = 0; lod < LOD_COUNT; ++lod) {
-        commands[std::size_t(lod)] = {
-            static_cast<std::uint32_t>(
-                stripVertexCount(lodSegments(segments, lod), lodFolded(lod))),
-            0, 0, 0};
+        const auto strip = static_cast<std::uint32_t>(
+            stripVertexCount(lodSegments(segments, lod), lodFolded(lod)));
+        commands[std::size_t(lod)] = {strip, 0, 0, 0};
         commands[std::size_t(LOD_COUNT + lod)] = {1, 0, 0, 0};
+        commands[std::size_t(2 * LOD_COUNT + lod)] = {strip, 0, 0, 0};
+        commands[std::size_t(3 * LOD_COUNT + lod)] = {1, 0, 0, 0};
     }
     return commands;
 }

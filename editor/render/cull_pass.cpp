@@ -81,6 +81,7 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
     program.set("uCutoffDistance", std::max(settings.cutoffDistanceM, 0.0f));
     program.set("uKeepEvery", std::max(settings.keepEvery, 1));
     program.set("uLodDistance", std::max(settings.lodDistanceM, 0.0f));
+    program.set("uLodBlend", settings.lodBlend);
     program.set("uCollectStats", settings.collectStats ? 1 : 0);
     program.set("uSceneDepth", 0);
     glBindTextureUnit(0, mDepth.texture.id());
@@ -121,10 +122,13 @@ CullStats CullPass::readStats(const std::vector<FieldGpu>& fields) const {
     stats.culledOcclusion = counters[5];
     stats.culledSnow = counters[6];
     for (const FieldGpu& field : fields) {
-        const auto drawn = field.readDrawnCounts();
+        const core::BladeDrawCommands commands = field.readCommands();
         for (int lod = 0; lod < LOD_COUNT; ++lod) {
-            stats.drawnPerLod[lod] += drawn[lod];
-            stats.drawn += drawn[lod];
+            const std::size_t drawn = core::drawnAtLod(commands, lod);
+            stats.drawnPerLod[lod] += drawn;
+            stats.drawn += drawn;
+            stats.blendingPerLod[lod] +=
+                commands[std::size_t(2 * LOD_COUNT + lod)].instanceCount;
         }
     }
     return stats;

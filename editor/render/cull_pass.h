@@ -35,6 +35,9 @@ struct CullSettings {
     // 8 m away stand ~40 px tall at 720p (0.4 m, 45° field of view): 4 segments of 10 px
     // still follow the curve; measured in docs/rendering.md.
     float lodDistanceM = 8.0f;
+    // lod.glsl's morph band (RenderOptions::lodBlend; the renderer copies it here): blades in it
+    // are listed and drawn apart from their LOD's others (core::lodBlending).
+    float lodBlend = core::LOD_BLEND;
     // Blades farther than this (measured like the thinning) are culled outright, counted as
     // distance; 0 = none. The hybrid technique sets it to the end of its cross-fade.
     float cutoffDistanceM = 0.0f;
@@ -61,6 +64,9 @@ struct CullStats {
     std::size_t culledSnow = 0;  // buried: shorter than the snow at the root (SPEC §11)
     std::size_t drawn = 0;
     std::array<std::size_t, LOD_COUNT> drawnPerLod{};  // sums to drawn
+    // Of drawnPerLod, the blades in the LOD's morph band, drawn by the blending program
+    // (core::lodBlending).
+    std::array<std::size_t, LOD_COUNT> blendingPerLod{};
     std::size_t culledTotal() const {
         return culledPatch + culledOrientation + culledFrustum + culledDistance + culledOcclusion +
                culledSnow;

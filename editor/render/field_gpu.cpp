@@ -96,14 +96,18 @@ void FieldGpu::bindForCull() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, COMMAND_BINDING, mCommands.id());
 }
 
+core::BladeDrawCommands FieldGpu::readCommands() const {
+    CommandArray commands{};
+    if (mBladeCount > 0)
+        glGetNamedBufferSubData(mCommands.id(), 0, sizeof commands, commands.data());
+    return commands;
+}
+
 std::array<std::size_t, LOD_COUNT> FieldGpu::readDrawnCounts() const {
     std::array<std::size_t, LOD_COUNT> drawn{};
-    if (mBladeCount == 0)
-        return drawn;
-    CommandArray commands{};
-    glGetNamedBufferSubData(mCommands.id(), 0, sizeof commands, commands.data());
+    const CommandArray commands = readCommands();
     for (int lod = 0; lod < LOD_COUNT; ++lod)
-        drawn[lod] = commands[lod].instanceCount;
+        drawn[lod] = core::drawnAtLod(commands, lod);
     return drawn;
 }
 
@@ -120,15 +124,25 @@ void FieldGpu::drawStrips(const BladePrograms& programs, int segments) const {
     if (mBladeCount == 0)
         return;
     bindForDraw();
-    for (int lod = 0; lod < LOD_COUNT; ++lod) {
-        const gl::Program& program = *programs[lod];
-        program.use();
-        program.set("uVisibleOffset", static_cast<unsigned>(lod * mBladeCount));
-        program.set("uSegments", lodSegments(segments, lod));
-        program.set("uLod", lod);
-        glDrawArraysIndirect(GL_TRIANGLE_STRIP,
-                             reinterpret_cast<const void*>(core::stripCommandOffset(lod)));
-    }
+    for (const bool blending : {false, true})
+        for (int lod = 0; lod < LOD_COUNT; ++lod) {
+            const gl::Program& program = *programs[std::size_t(blending * LOD_COUNT + lod)];
+            program.use();
+            setVisibleList(program, lod, blending);
+            program.set("uSegments", lodSegments(segments, lod));
+            program.set("uLod", lod);
+            glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(
+                                                        core::stripCommandOffset(lod, blending)));
+        }
+}
+
+// LOD `lod`'s visible list as shaders/cull.comp wrote it: from its start, or for the blades in
+// its morph band from its end, backwards.
+void FieldGpu::setVisibleList(const gl::Program& program, int lod, bool blending) const {
+    const std::size_t first = std::size_t(lod) * mBladeCount;
+    program.set("uVisibleOffset",
+                static_cast<unsigned>(blending ? first + mBladeCount - 1 : first));
+    program.set("uVisibleBackwards", blending ? 1 : 0);
 }
 
 void FieldGpu::drawTessellated(const BladePrograms& programs) const {
@@ -136,12 +150,14 @@ void FieldGpu::drawTessellated(const BladePrograms& programs) const {
         return;
     bindForDraw();
     glPatchParameteri(GL_PATCH_VERTICES, 1);
-    for (int lod = 0; lod < LOD_COUNT; ++lod) {
-        const gl::Program& program = *programs[lod];
-        program.use();
-        program.set("uVisibleOffset", static_cast<unsigned>(lod * mBladeCount));
-        glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(core::patchCommandOffset(lod)));
-    }
+    for (const bool blending : {false, true})
+        for (int lod = 0; lod < LOD_COUNT; ++lod) {
+            const gl::Program& program = *programs[std::size_t(blending * LOD_COUNT + lod)];
+            program.use();
+            setVisibleList(program, lod, blending);
+            glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(
+                                                 core::patchCommandOffset(lod, blending)));
+        }
 }
 
 }  // namespace grass::render

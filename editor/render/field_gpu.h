@@ -29,8 +29,10 @@ using core::stripVertexCount;
 enum class GeometryPath { Tessellation, Strips };
 
 // The program each level of detail is drawn with (near blades lit per pixel, far ones per
-// vertex: RenderOptions::pixelLitLods); consecutive LODs may share one.
-using BladePrograms = std::array<const gl::Program*, LOD_COUNT>;
+// vertex: RenderOptions::pixelLitLods), at [lod] for the blades before the LOD's morph band and
+// at [LOD_COUNT + lod] for those in it (the variant that blends: core::lodBlending); several
+// entries may share one program.
+using BladePrograms = std::array<const gl::Program*, 2 * LOD_COUNT>;
 
 
 // SSBO bindings of shaders/cull.comp; the draw stages read the same buffers as buffer textures
@@ -68,6 +70,8 @@ public:
     void bindForCull() const;
     // The instance counts the cull pass wrote per LOD (waits for the GPU; statistics only).
     std::array<std::size_t, LOD_COUNT> readDrawnCounts() const;
+    // The indirect draw commands as the last cull pass left them (a read-back, for statistics).
+    core::BladeDrawCommands readCommands() const;
 
     // Binds the blade and visible buffers and issues one indirect draw per LOD; the caller has
     // bound `program` and run the cull pass. Sets uVisibleOffset (and, for strips, uSegments).
@@ -76,6 +80,7 @@ public:
 
 private:
     void bindForDraw() const;
+    void setVisibleList(const gl::Program& program, int lod, bool blending) const;
     const core::LayerField* mField;
     std::size_t mBladeCount = 0;
     gl::Buffer mBlades;

@@ -43,12 +43,14 @@ static gl::TextureHandle uploadSurfaceTexture(const Rgba8Pixels& image, const co
 }
 
 // The blade program of a geometry path, lit per pixel or per vertex, with or without the sun's
-// shadows, with or without the hybrid's fade-out (compile-time variants: software GL runs both
-// sides of a uniform branch, so an unused path would still cost). Without the fade a blade lit
-// per vertex hands its fragments one colour and nothing else: the fade's distance and its
-// position varying cost llvmpipe 12 % of nature-100k's grass pass at 4× MSAA (docs/rendering.md).
+// shadows, with or without the hybrid's fade-out, with or without the blend towards the next LOD
+// (compile-time variants: software GL runs both sides of a uniform branch, so an unused path
+// would still cost). Without the fade a blade lit per vertex hands its fragments one colour and
+// nothing else: the fade's distance and its position varying cost llvmpipe 12 % of
+// nature-100k's grass pass at 4× MSAA; the blend's extra evaluations cost it ~20 % more
+// (docs/rendering.md), so only the blades in a morph band are drawn with it.
 Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightPerVertex,
-                                                    bool sunShadows, bool fadeOut) {
+                                                    bool sunShadows, bool fadeOut, bool lodBlend) {
     std::vector<std::string> defines;
     if (lightPerVertex)
         defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
@@ -56,10 +58,12 @@ Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightP
         defines.emplace_back("GRASS_SUN_SHADOWS");
     if (fadeOut)
         defines.emplace_back("GRASS_BLADE_FADE_OUT");
+    if (lodBlend)
+        defines.emplace_back("GRASS_LOD_BLEND");
     const std::string label = std::string(tessellate ? "blade tessellation" : "blade strips") +
                               (lightPerVertex ? " (lit per vertex)" : "") +
                               (sunShadows ? " (sun shadows)" : "") +
-                              (fadeOut ? " (fading out)" : "");
+                              (fadeOut ? " (fading out)" : "") + (lodBlend ? " (LOD blend)" : "");
     if (tessellate)
         return gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
                                   {GL_TESS_CONTROL_SHADER, "blade.tesc"},
@@ -72,10 +76,11 @@ Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightP
 }
 
 const gl::Program& SceneRenderer::bladeProgram(bool tessellate, bool lightPerVertex,
-                                               bool sunShadows, bool fadeOut) {
-    return gl::loadOnFirstUse(mBladePrograms[tessellate][lightPerVertex][sunShadows][fadeOut], [&] {
-        return loadBladeProgram(tessellate, lightPerVertex, sunShadows, fadeOut);
-    });
+                                               bool sunShadows, bool fadeOut, bool lodBlend) {
+    return gl::loadOnFirstUse(
+        mBladePrograms[tessellate][lightPerVertex][sunShadows][fadeOut][lodBlend], [&] {
+            return loadBladeProgram(tessellate, lightPerVertex, sunShadows, fadeOut, lodBlend);
+        });
 }
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene) {
@@ -86,8 +91,8 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     if (!mesh)
         return mesh.error();
     for (const bool tessellate : {false, true})
-        if (auto loaded = loadBladeProgram(tessellate, false, false, false); loaded)
-            renderer->mBladePrograms[tessellate][0][0][0] = std::move(*loaded);
+        if (auto loaded = loadBladeProgram(tessellate, false, false, false, false); loaded)
+            renderer->mBladePrograms[tessellate][0][0][0][0] = std::move(*loaded);
         else
             return loaded.error();
     auto stemSets = loadStemSetProgram();

@@ -89,13 +89,13 @@ private:
     static Opaque snowVariant(const RenderOptions& options) {
         return options.snowExposurePerVertex ? Opaque::SnowExposurePerVertex : Opaque::Snow;
     }
-    // [tessellated][lit per vertex][sun shadows][fading out (the hybrid)]; all but the plain
-    // ones load on first use.
-    gl::Program mBladePrograms[2][2][2][2];
+    // [tessellated][lit per vertex][sun shadows][fading out (the hybrid)][blending towards the
+    // next LOD]; all but the plain ones load on first use.
+    gl::Program mBladePrograms[2][2][2][2][2];
     static Result<gl::Program> loadBladeProgram(bool tessellate, bool lightPerVertex,
-                                                bool sunShadows, bool fadeOut);
+                                                bool sunShadows, bool fadeOut, bool lodBlend);
     const gl::Program& bladeProgram(bool tessellate, bool lightPerVertex, bool sunShadows,
-                                    bool fadeOut);
+                                    bool fadeOut, bool lodBlend);
     // The passes of render(), in order (scene_renderer_opaque.cpp, scene_renderer_grass.cpp).
     void runSnowPass(const RenderOptions& options, int width, int height);
     void drawOpaquePass(const glm::mat4& viewProj, const RenderOptions& options);

@@ -53,6 +53,7 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     const glm::mat4 viewProj = projection * camera.view();
     const int segments = std::max(options.stripSegments, 1);
     CullSettings cull = options.cull;
+    cull.lodBlend = options.lodBlend;  // the cull sorts the blending blades out for their draw
     if (hybrid)
         cull.cutoffDistanceM = options.billboards.crossFadeM.y;
     mCullTimer.begin();
@@ -85,15 +86,20 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     const int pixelLitLods = options.pixelLitLods >= 0
                                  ? options.pixelLitLods
                                  : core::defaultPixelLitLods(mSoftwareGl, samples);
+    // The blades in a LOD's morph band get the blending variant; none blend without LODs or
+    // a band, nor at the last LOD, whose slots then share the plain programs (no compile).
+    const bool blends = options.lodBlend > 0.0f && cull.lodDistanceM > 0.0f;
     BladePrograms programs{};
-    for (int lod = 0; lod < LOD_COUNT; ++lod)
-        programs[lod] =
-            &bladeProgram(tessellate, options.lightPerVertex || lod >= pixelLitLods,
-                          options.sun.shadows, hybrid);
-    const auto setAll = [&programs](const char* name, const auto& value) {
+    for (const bool blending : {false, true})
         for (int lod = 0; lod < LOD_COUNT; ++lod)
-            if (lod == 0 || programs[lod] != programs[lod - 1])
-                programs[lod]->set(name, value);
+            programs[std::size_t(blending * LOD_COUNT + lod)] = &bladeProgram(
+                tessellate, options.lightPerVertex || lod >= pixelLitLods, options.sun.shadows,
+                hybrid, blending && blends && lod < LOD_COUNT - 1);
+    const auto setAll = [&programs](const char* name, const auto& value) {
+        for (std::size_t i = 0; i < programs.size(); ++i)
+            if (std::find(programs.begin(), programs.begin() + std::ptrdiff_t(i), programs[i]) ==
+                programs.begin() + std::ptrdiff_t(i))
+                programs[i]->set(name, value);
     };
     setAll("uViewProj", viewProj);
     // Pixels that a length of 1 at view depth 1 covers, for the width correction (SPEC §7).

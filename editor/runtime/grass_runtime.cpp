@@ -47,8 +47,10 @@ struct MeshGpu {
 struct Field::State {
     ExportData data;
     GlProgram cull, mesh, physics;
-    // [lit per vertex]: LODs from core::defaultPixelLitLods on use [1], as the editor does.
-    GlProgram strips[2], tess[2];
+    // [lit per vertex][blending towards the next LOD]: LODs from core::defaultPixelLitLods on
+    // use [1][..], as the editor does; the blades in a LOD's morph band are drawn with [..][1]
+    // (core::lodBlending).
+    GlProgram strips[2][2], tess[2][2];
     std::vector<LayerGpu> layers;
     std::vector<MeshGpu> meshes;
     GlBuffer lighting, counters;
@@ -121,20 +123,23 @@ bool Field::load(ExportData data, std::string& error) {
     };
     program(s.cull, {{GL_COMPUTE_SHADER, "cull.comp"}});
     program(s.physics, {{GL_COMPUTE_SHADER, "physics.comp"}});
-    for (const bool perVertex : {false, true}) {
-        std::vector<std::string> defines;
-        if (perVertex)
-            defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
-        program(s.strips[perVertex],
-                {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}},
-                defines);
-        program(s.tess[perVertex],
-                {{GL_VERTEX_SHADER, "blade_tess.vert"},
-                 {GL_TESS_CONTROL_SHADER, "blade.tesc"},
-                 {GL_TESS_EVALUATION_SHADER, "blade.tese"},
-                 {GL_FRAGMENT_SHADER, "blade.frag"}},
-                defines);
-    }
+    for (const bool perVertex : {false, true})
+        for (const bool blend : {false, true}) {
+            std::vector<std::string> defines;
+            if (perVertex)
+                defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
+            if (blend)
+                defines.emplace_back("GRASS_LOD_BLEND");
+            program(s.strips[perVertex][blend],
+                    {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}},
+                    defines);
+            program(s.tess[perVertex][blend],
+                    {{GL_VERTEX_SHADER, "blade_tess.vert"},
+                     {GL_TESS_CONTROL_SHADER, "blade.tesc"},
+                     {GL_TESS_EVALUATION_SHADER, "blade.tese"},
+                     {GL_FRAGMENT_SHADER, "blade.frag"}},
+                    defines);
+        }
     program(s.mesh, {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}});
     if (!error.empty())
         return false;
@@ -315,6 +320,7 @@ void Field::draw(const View& view) {
     cull.set("uCutoffDistance", 0.0f);
     cull.set("uKeepEvery", 1);
     cull.set("uLodDistance", std::max(render.lodDistanceM, 0.0f));
+    cull.set("uLodBlend", core::LOD_BLEND);
     cull.set("uCollectStats", 0);
     s.counters.bindStorage(COUNTERS);
     const Commands commands = core::emptyBladeDrawCommands(segments);
@@ -341,9 +347,9 @@ void Field::draw(const View& view) {
 
     // The blades (SPEC §7, §10), one indirect draw per LOD and layer.
     const bool tessellate = s.geometry == GeometryPath::Tessellation;
-    const GlProgram* programs = tessellate ? s.tess : s.strips;
-    for (int perVertex = 0; perVertex < 2; ++perVertex) {
-        const GlProgram& program = programs[perVertex];
+    const GlProgram(*programs)[2] = tessellate ? s.tess : s.strips;
+    for (int variant = 0; variant < 4; ++variant) {
+        const GlProgram& program = programs[variant / 2][variant % 2];
         program.set("uViewProj", viewProj);
         program.set("uPixelScale", view.projection[1][1] * 0.5f * static_cast<float>(view.height));
         program.set("uTessLevel", static_cast<float>(std::max(render.tessLevel, 1)));
@@ -367,8 +373,8 @@ void Field::draw(const View& view) {
         const LayerData& data = s.data.layers[i];
         if (layer.slots == 0)
             continue;
-        for (int perVertex = 0; perVertex < 2; ++perVertex) {
-            const GlProgram& program = programs[perVertex];
+        for (int variant = 0; variant < 4; ++variant) {
+            const GlProgram& program = programs[variant / 2][variant % 2];
             program.set("uRootColor", data.rootColor);
             program.set("uTipColor", data.tipColor);
             program.set("uPoorRootColor", data.poorRootColor);
@@ -380,20 +386,26 @@ void Field::draw(const View& view) {
         layer.visibleTexels.bind(core::VISIBLE_TEXELS_UNIT);
         layer.shadingTexels.bind(core::SHADING_TEXELS_UNIT);
         glBindBuffer(GL_DRAW_INDIRECT_BUFFER, layer.commands.id());
-        for (int lod = 0; lod < LOD_COUNT; ++lod) {
-            const GlProgram& program = programs[lod >= pixelLitLods ? 1 : 0];
-            program.use();
-            program.set("uVisibleOffset", unsigned(std::size_t(lod) * layer.slots));
-            const std::size_t offset =
-                tessellate ? core::patchCommandOffset(lod) : core::stripCommandOffset(lod);
-            if (tessellate) {
-                glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(offset));
-            } else {
-                program.set("uSegments", core::lodSegments(segments, lod));
-                program.set("uLod", lod);
-                glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(offset));
+        // Each LOD's blades before its morph band, then those in it (listed from the end of
+        // the LOD's list, backwards, by the cull).
+        for (const bool blending : {false, true})
+            for (int lod = 0; lod < LOD_COUNT; ++lod) {
+                const GlProgram& program = programs[lod >= pixelLitLods ? 1 : 0][blending];
+                program.use();
+                const std::size_t first = std::size_t(lod) * layer.slots;
+                program.set("uVisibleOffset",
+                            unsigned(blending ? first + layer.slots - 1 : first));
+                program.set("uVisibleBackwards", blending ? 1 : 0);
+                const std::size_t offset = tessellate ? core::patchCommandOffset(lod, blending)
+                                                      : core::stripCommandOffset(lod, blending);
+                if (tessellate) {
+                    glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(offset));
+                } else {
+                    program.set("uSegments", core::lodSegments(segments, lod));
+                    program.set("uLod", lod);
+                    glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(offset));
+                }
             }
-        }
     }
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     glBindVertexArray(0);
@@ -439,7 +451,7 @@ DrawStats Field::readStats() const {
         Commands commands{};
         glGetNamedBufferSubData(layer.commands.id(), 0, sizeof commands, commands.data());
         for (int lod = 0; lod < LOD_COUNT; ++lod)
-            stats.bladesDrawn += commands[std::size_t(lod)].instanceCount;
+            stats.bladesDrawn += core::drawnAtLod(commands, lod);
     }
     return stats;
 }

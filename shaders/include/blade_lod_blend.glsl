@@ -8,6 +8,9 @@
 // folded blade moves onto the middle of the flat blade's edges (a flat blade is linear across u,
 // every shape and the width correction alike). At morph 1 every vertex lies on the coarser
 // blade, with its colour, so the switch to it changes nothing.
+// The blend is compiled in only with GRASS_LOD_BLEND, the program variant that draws the blades
+// in a morph band (the cull lists them apart: core::lodBlending); without it every point is the
+// fine one, for software GL runs the blend's extra evaluations whatever the blade.
 #include "blade_geometry.glsl"
 #include "blade_shade.glsl"
 #include "lod.glsl"
@@ -30,6 +33,7 @@ BladeLodPoints bladeLodPoints(Blade blade, float u, float v, BladeShapeParams pa
     points.between = 0.0;
     points.morph = morph;
     points.sameAsFine = true;
+#ifdef GRASS_LOD_BLEND
     if (morph <= 0.0) return points;
     BladeShapeParams coarse = params;
     coarse.level = float(max(int(params.level + 0.5) >> 1, 1));
@@ -45,11 +49,15 @@ BladeLodPoints bladeLodPoints(Blade blade, float u, float v, BladeShapeParams pa
     points.below = bladeSurface(blade, u, row / coarse.level, coarse);
     if (points.between > 0.0)
         points.above = bladeSurface(blade, u, (row + 1.0) / coarse.level, coarse);
+#endif
     return points;
 }
 
 // The drawn point: the fine point moved `morph` of the way onto the coarser blade.
 BladeSurfacePoint blendedLodPoint(BladeLodPoints points) {
+#ifndef GRASS_LOD_BLEND
+    return points.fine;
+#else
     if (points.sameAsFine) return points.fine;
     BladeSurfacePoint target = points.below;
     if (points.between > 0.0) {
@@ -60,6 +68,7 @@ BladeSurfacePoint blendedLodPoint(BladeLodPoints points) {
     point.position = mix(point.position, target.position, points.morph);
     point.normal = normalize(mix(point.normal, target.normal, points.morph));
     return point;
+#endif
 }
 
 // Lit per vertex, the colour blends the same way: the coarser blade interpolates its rows'
@@ -67,6 +76,9 @@ BladeSurfacePoint blendedLodPoint(BladeLodPoints points) {
 // linear (on a field of projects/nature's blades a third of the hard switch's change was left).
 vec3 shadeBladeAtLod(BladeLodPoints points, vec3 up, uint bladeIndex) {
     vec3 colour = shadeBlade(points.fine.position, points.fine.normal, up, points.fine.v, bladeIndex);
+#ifndef GRASS_LOD_BLEND
+    return colour;
+#else
     if (points.sameAsFine) return colour;
     vec3 coarse =
         shadeBlade(points.below.position, points.below.normal, up, points.below.v, bladeIndex);
@@ -75,4 +87,5 @@ vec3 shadeBladeAtLod(BladeLodPoints points, vec3 up, uint bladeIndex) {
                                         points.above.v, bladeIndex),
                      points.between);
     return mix(colour, coarse, points.morph);
+#endif
 }

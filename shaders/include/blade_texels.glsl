@@ -23,9 +23,13 @@ Blade fetchBlade(uint index) {
 // of detail; the draw of LOD k reads from uVisibleOffset = k · blade slots, and entry i is the
 // index of the i-th surviving blade of that LOD in the blade buffer.
 uniform uint uVisibleOffset;
+// The draw of a LOD's blades in its morph band reads its list backwards from uVisibleOffset, the
+// list's last entry (shaders/cull.comp lists them from the end).
+uniform bool uVisibleBackwards;
 
 uint visibleBlade(int drawIndex) {
-    return texelFetch(uVisibleTexels, int(uVisibleOffset) + drawIndex).r;
+    return texelFetch(uVisibleTexels, uVisibleBackwards ? int(uVisibleOffset) - drawIndex
+                                                       : int(uVisibleOffset) + drawIndex).r;
 }
 
 // Per-blade lighting inputs baked when the scene is built (core/scene/blade_shading.h,

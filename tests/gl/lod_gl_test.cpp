@@ -4,6 +4,8 @@
 // edge-on a visible V on both geometry paths.
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -83,6 +85,37 @@ TEST_F(LodTest, BladesMoveToCoarserLodsAsTheCameraBacksOff) {
     // LOD off: everything at full detail.
     const auto off = renderWith(*scene, cameraAt(32.0f), 0.0f);
     EXPECT_EQ(off.lastFrame.cull.drawnPerLod[0], off.lastFrame.cull.drawn);
+}
+
+// The blades in a LOD's morph band are listed and drawn apart (core::lodBlending): the cull
+// counts them in the LOD's blending commands, the last LOD never blends, a hard switch lists
+// none, and splitting them off draws the same blades and the same picture as drawing every
+// blade without the split would (a hard switch differs from the blend only inside the bands).
+TEST_F(LodTest, BladesInAMorphBandAreDrawnApartWithTheBlend) {
+    auto scene = core::buildScene(planeFieldProject({8.0f, 2, 80.0f, 0.3f, 0.5f}, sourceDir()));
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    // 2.5 m back: the 2 m LOD distance's bands ([1.5, 2) m and [4, 6) m) both lie in view.
+    const core::OrbitCamera camera = cameraAt(2.5f);
+    for (const auto path : {render::GeometryPath::Strips, render::GeometryPath::Tessellation}) {
+        const auto blended = renderWith(*scene, camera, 2.0f, path, 128, 0.25f);
+        const auto hard = renderWith(*scene, camera, 2.0f, path, 128, 0.0f);
+        const render::CullStats& b = blended.lastFrame.cull;
+        const render::CullStats& h = hard.lastFrame.cull;
+        std::printf("[ lod ] blending in the bands: %zu of %zu (LOD 0), %zu of %zu (LOD 1)\n",
+                    b.blendingPerLod[0], b.drawnPerLod[0], b.blendingPerLod[1], b.drawnPerLod[1]);
+        for (int lod = 0; lod < 2; ++lod) {
+            EXPECT_GT(b.blendingPerLod[lod], 0u) << lod;
+            EXPECT_LT(b.blendingPerLod[lod], b.drawnPerLod[lod]) << lod << ": a quarter band";
+        }
+        EXPECT_EQ(b.blendingPerLod[2], 0u) << "the last LOD has nothing to blend into";
+        EXPECT_EQ(b.drawnPerLod, h.drawnPerLod) << "the same blades at the same LODs";
+        EXPECT_EQ(h.blendingPerLod, (std::array<std::size_t, core::LOD_COUNT>{}));
+        // Every blade is drawn once: drawn twice or lost, the blended picture would differ from
+        // the hard switch's far more than the blend moves blades inside the bands.
+        const double difference = meanAbsDifference(blended.image, hard.image);
+        EXPECT_GT(difference, 0.0) << "the blend moved nothing";
+        EXPECT_LT(difference, 1.0);
+    }
 }
 
 // The default LOD distance draws nearly what full detail draws: coarse segments only straighten

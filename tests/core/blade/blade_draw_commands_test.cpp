@@ -29,6 +29,35 @@ TEST(BladeDrawCommands, NearStripsKeepTheMidribAndFarStripsDrawTheEdgesAlone) {
     EXPECT_EQ(emptyBladeDrawCommands(1)[2].count, 4u);
 }
 
+// The blades in a LOD's morph band have commands of their own after the others' (strips, then
+// patches), with the same vertex counts; a LOD's drawn blades are both commands' together.
+TEST(BladeDrawCommands, BlendingBladesHaveCommandsOfTheirOwn) {
+    BladeDrawCommands commands = emptyBladeDrawCommands(8);
+    for (int lod = 0; lod < LOD_COUNT; ++lod) {
+        const auto plain = stripCommandOffset(lod) / sizeof(DrawArraysIndirectCommand);
+        const auto blending = stripCommandOffset(lod, true) / sizeof(DrawArraysIndirectCommand);
+        EXPECT_EQ(plain, std::size_t(lod));
+        EXPECT_EQ(blending, std::size_t(2 * LOD_COUNT + lod));
+        EXPECT_EQ(patchCommandOffset(lod) / sizeof(DrawArraysIndirectCommand),
+                  std::size_t(LOD_COUNT + lod));
+        EXPECT_EQ(patchCommandOffset(lod, true) / sizeof(DrawArraysIndirectCommand),
+                  std::size_t(3 * LOD_COUNT + lod));
+        EXPECT_EQ(commands[blending].count, commands[plain].count) << lod;
+        EXPECT_EQ(commands[3 * LOD_COUNT + std::size_t(lod)].count, 1u) << lod;
+        commands[plain].instanceCount = 10u + std::uint32_t(lod);
+        commands[blending].instanceCount = 3u;
+        EXPECT_EQ(drawnAtLod(commands, lod), 13u + std::uint32_t(lod));
+    }
+    // The band: the last quarter of LOD 0's range and of LOD 1's; never LOD 2 nor without LODs.
+    EXPECT_FALSE(lodBlending(5.9f, 8.0f, 0, LOD_BLEND));
+    EXPECT_TRUE(lodBlending(6.1f, 8.0f, 0, LOD_BLEND));
+    EXPECT_FALSE(lodBlending(19.9f, 8.0f, 1, LOD_BLEND));
+    EXPECT_TRUE(lodBlending(20.1f, 8.0f, 1, LOD_BLEND));
+    EXPECT_FALSE(lodBlending(30.0f, 8.0f, 2, LOD_BLEND));
+    EXPECT_FALSE(lodBlending(7.9f, 8.0f, 0, 0.0f)) << "a hard switch blends nothing";
+    EXPECT_FALSE(lodBlending(7.9f, 0.0f, 0, LOD_BLEND)) << "no LODs, nothing to blend into";
+}
+
 TEST(BladeLod, FullUpToTheDistanceHalfToThreeTimesItQuarterBeyond) {
     EXPECT_EQ(bladeLod(7.99f, 8.0f), 0);
     EXPECT_EQ(bladeLod(8.0f, 8.0f), 1);
