@@ -42,29 +42,30 @@ static gl::TextureHandle uploadSurfaceTexture(const Rgba8Pixels& image, const co
     return texture;
 }
 
-// The blade program of a geometry path, lit per pixel or per vertex, with or without the sun's
-// shadows, with or without the hybrid's fade-out, with or without the blend towards the next LOD
-// (compile-time variants: software GL runs both sides of a uniform branch, so an unused path
-// would still cost). Without the fade a blade lit per vertex hands its fragments one colour and
-// nothing else: the fade's distance and its position varying cost llvmpipe 12 % of
-// nature-100k's grass pass at 4× MSAA; the blend's extra evaluations cost it ~20 % more
-// (docs/rendering.md), so only the blades in a morph band are drawn with it.
-Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightPerVertex,
-                                                    bool sunShadows, bool fadeOut, bool lodBlend) {
+// The blade program of a variant (compile-time variants: software GL runs both sides of a
+// uniform branch, so an unused path would still cost). Without the fade a blade lit per vertex
+// hands its fragments one colour and nothing else: the fade's distance and its position varying
+// cost llvmpipe 12 % of nature-100k's grass pass at 4× MSAA; the blend's extra evaluations cost
+// it ~20 % more, so only the blades in a morph band are drawn with it; the tip snow's lookup
+// runs only while snow lies (docs/rendering.md).
+Result<gl::Program> SceneRenderer::loadBladeProgram(const BladeVariant& variant) {
     std::vector<std::string> defines;
-    if (lightPerVertex)
+    if (variant.lightPerVertex)
         defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
-    if (sunShadows)
+    if (variant.sunShadows)
         defines.emplace_back("GRASS_SUN_SHADOWS");
-    if (fadeOut)
+    if (variant.fadeOut)
         defines.emplace_back("GRASS_BLADE_FADE_OUT");
-    if (lodBlend)
+    if (variant.lodBlend)
         defines.emplace_back("GRASS_LOD_BLEND");
-    const std::string label = std::string(tessellate ? "blade tessellation" : "blade strips") +
-                              (lightPerVertex ? " (lit per vertex)" : "") +
-                              (sunShadows ? " (sun shadows)" : "") +
-                              (fadeOut ? " (fading out)" : "") + (lodBlend ? " (LOD blend)" : "");
-    if (tessellate)
+    if (variant.snowTips)
+        defines.emplace_back("GRASS_SNOW_TIPS");
+    const std::string label =
+        std::string(variant.tessellate ? "blade tessellation" : "blade strips") +
+        (variant.lightPerVertex ? " (lit per vertex)" : "") +
+        (variant.sunShadows ? " (sun shadows)" : "") + (variant.fadeOut ? " (fading out)" : "") +
+        (variant.lodBlend ? " (LOD blend)" : "") + (variant.snowTips ? " (snow tips)" : "");
+    if (variant.tessellate)
         return gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
                                   {GL_TESS_CONTROL_SHADER, "blade.tesc"},
                                   {GL_TESS_EVALUATION_SHADER, "blade.tese"},
@@ -75,12 +76,9 @@ Result<gl::Program> SceneRenderer::loadBladeProgram(bool tessellate, bool lightP
         defines);
 }
 
-const gl::Program& SceneRenderer::bladeProgram(bool tessellate, bool lightPerVertex,
-                                               bool sunShadows, bool fadeOut, bool lodBlend) {
-    return gl::loadOnFirstUse(
-        mBladePrograms[tessellate][lightPerVertex][sunShadows][fadeOut][lodBlend], [&] {
-            return loadBladeProgram(tessellate, lightPerVertex, sunShadows, fadeOut, lodBlend);
-        });
+const gl::Program& SceneRenderer::bladeProgram(const BladeVariant& variant) {
+    return gl::loadOnFirstUse(mBladePrograms[variant.index()],
+                              [&] { return loadBladeProgram(variant); });
 }
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene) {
@@ -90,11 +88,13 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     auto mesh = loadOpaqueProgram(Opaque::Lit, false);
     if (!mesh)
         return mesh.error();
-    for (const bool tessellate : {false, true})
-        if (auto loaded = loadBladeProgram(tessellate, false, false, false, false); loaded)
-            renderer->mBladePrograms[tessellate][0][0][0][0] = std::move(*loaded);
+    for (const bool tessellate : {false, true}) {
+        const BladeVariant plain{.tessellate = tessellate};
+        if (auto loaded = loadBladeProgram(plain); loaded)
+            renderer->mBladePrograms[plain.index()] = std::move(*loaded);
         else
             return loaded.error();
+    }
     auto stemSets = loadStemSetProgram();
     if (!stemSets)
         return stemSets.error();

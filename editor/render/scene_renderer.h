@@ -5,6 +5,8 @@
 // grass passes in scene_renderer_grass.cpp.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -89,13 +91,25 @@ private:
     static Opaque snowVariant(const RenderOptions& options) {
         return options.snowExposurePerVertex ? Opaque::SnowExposurePerVertex : Opaque::Snow;
     }
-    // [tessellated][lit per vertex][sun shadows][fading out (the hybrid)][blending towards the
-    // next LOD]; all but the plain ones load on first use.
-    gl::Program mBladePrograms[2][2][2][2][2];
-    static Result<gl::Program> loadBladeProgram(bool tessellate, bool lightPerVertex,
-                                                bool sunShadows, bool fadeOut, bool lodBlend);
-    const gl::Program& bladeProgram(bool tessellate, bool lightPerVertex, bool sunShadows,
-                                    bool fadeOut, bool lodBlend);
+    // A blade program's compile-time variant: geometry path, lit per vertex, the sun's shadows,
+    // the hybrid's fade-out, the blend towards the next LOD, the tip snow while snow lies.
+    struct BladeVariant {
+        bool tessellate = false;
+        bool lightPerVertex = false;
+        bool sunShadows = false;
+        bool fadeOut = false;
+        bool lodBlend = false;
+        bool snowTips = false;
+        std::size_t index() const {
+            return std::size_t(tessellate) | std::size_t(lightPerVertex) << 1 |
+                   std::size_t(sunShadows) << 2 | std::size_t(fadeOut) << 3 |
+                   std::size_t(lodBlend) << 4 | std::size_t(snowTips) << 5;
+        }
+    };
+    // By BladeVariant::index(); all but the plain ones load on first use.
+    std::array<gl::Program, 64> mBladePrograms;
+    static Result<gl::Program> loadBladeProgram(const BladeVariant& variant);
+    const gl::Program& bladeProgram(const BladeVariant& variant);
     // The passes of render(), in order (scene_renderer_opaque.cpp, scene_renderer_grass.cpp).
     void runSnowPass(const RenderOptions& options, int width, int height);
     void drawOpaquePass(const glm::mat4& viewProj, const RenderOptions& options);

@@ -92,9 +92,13 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     BladePrograms programs{};
     for (const bool blending : {false, true})
         for (int lod = 0; lod < LOD_COUNT; ++lod)
-            programs[std::size_t(blending * LOD_COUNT + lod)] = &bladeProgram(
-                tessellate, options.lightPerVertex || lod >= pixelLitLods, options.sun.shadows,
-                hybrid, blending && blends && lod < LOD_COUNT - 1);
+            programs[std::size_t(blending * LOD_COUNT + lod)] =
+                &bladeProgram({.tessellate = tessellate,
+                               .lightPerVertex = options.lightPerVertex || lod >= pixelLitLods,
+                               .sunShadows = options.sun.shadows,
+                               .fadeOut = hybrid,
+                               .lodBlend = blending && blends && lod < LOD_COUNT - 1,
+                               .snowTips = mSnowLies});
     const auto setAll = [&programs](const char* name, const auto& value) {
         for (std::size_t i = 0; i < programs.size(); ++i)
             if (std::find(programs.begin(), programs.begin() + std::ptrdiff_t(i), programs[i]) ==
@@ -113,7 +117,6 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     setAll("uLodBlend", options.lodBlend);
     setAll("uFadeOut", hybrid ? options.billboards.crossFadeM : glm::vec2(0.0f));
     setAll("uAlbedoView", options.albedoView ? 1 : 0);
-    setAll("uSnowTips", mSnowLies ? 1 : 0);
     setAll("uSnowTipColor", options.snow.snowColor);
     if (hybrid)
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);

@@ -358,7 +358,6 @@ void Field::draw(const View& view) {
         program.set("uLodDistance", std::max(render.lodDistanceM, 0.0f));
         program.set("uLodBlend", core::LOD_BLEND);
         program.set("uAlbedoView", 0);
-        program.set("uSnowTips", 0);
     }
     GLint samples = 0;  // of the host's framebuffer
     glGetIntegerv(GL_SAMPLES, &samples);

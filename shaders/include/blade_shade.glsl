@@ -16,10 +16,12 @@ uniform vec3 uPoorRootColor;
 uniform vec3 uPoorTipColor;
 // 1: the unlit colour (RenderOptions::albedoView), to compare geometry and colour alone.
 uniform int uAlbedoView;
-// Snow on the tips (SPEC §11): the cull pass writes each drawn blade's tip whiteness; 0 = no snow
-// (the texels are then not bound and not read).
-uniform int uSnowTips;
+// Snow on the tips (SPEC §11): the cull pass writes each drawn blade's tip whiteness, read only
+// by the program variant with GRASS_SNOW_TIPS, which draws while snow lies (software GL runs both
+// sides of a uniform branch, so a lookup merely switched off would still cost every vertex).
+#ifdef GRASS_SNOW_TIPS
 uniform vec3 uSnowTipColor;
+#endif
 // The share of the snow colour at height τ (core::bladeSnowWhiteness, SNOW_TIP_FRACTION 0.3).
 float bladeSnowWhiteness(float tipSnowAmount, float tau) {
     return tipSnowAmount * smoothstep(0.7, 1.0, tau);
@@ -36,11 +38,11 @@ vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeInd
     BladeShading baked = fetchShading(bladeIndex);
     vec3 albedo = mix(mix(uRootColor, uTipColor, height), mix(uPoorRootColor, uPoorTipColor, height),
                       baked.waterAge.z);
-    if (uSnowTips != 0) {
-        // C = Fp·Cs + (1 − Fp)·Cn (paper eq. 3) with the tip's whiteness for Fp.
-        float white = bladeSnowWhiteness(fetchTipSnow(bladeIndex), height);
-        albedo = white * uSnowTipColor + (1.0 - white) * albedo;
-    }
+#ifdef GRASS_SNOW_TIPS
+    // C = Fp·Cs + (1 − Fp)·Cn (paper eq. 3) with the tip's whiteness for Fp.
+    float white = bladeSnowWhiteness(fetchTipSnow(bladeIndex), height);
+    albedo = white * uSnowTipColor + (1.0 - white) * albedo;
+#endif
     if (uAlbedoView != 0) return albedo;
     float sun = sunVisibility(position);
     if (uGrassLighting == 0) {

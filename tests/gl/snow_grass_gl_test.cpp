@@ -221,6 +221,50 @@ TEST_F(SnowGrassGlTest, ExposedTipsWhitenAndShelteredTipsDoNot) {
     EXPECT_EQ(exposedWhite, exposed) << "in the open every tip carries snow";
 }
 
+// The picture carries the tips' snow (the blade programs' GRASS_SNOW_TIPS variant, drawn while
+// snow lies): tall blades seen from low down stand against the sky above the horizon, where no
+// snow-covered ground can show, so pixels of the snow's colour there are whitened tips. A
+// magenta snow keeps them apart from the sky and the grass; unlit (albedo view), so the colour
+// is the mix of paper eq. 3 alone.
+TEST_F(SnowGrassGlTest, TheTipsSnowShowsInThePicture) {
+    PlaneField plane;
+    plane.sizeM = 4.0f;
+    plane.resolution = 4;
+    plane.density = 100.0f;
+    plane.heightMinM = 0.5f;
+    plane.heightMaxM = 0.8f;
+    const auto drawn = drawnField(planeFieldProject(plane));
+    ASSERT_NE(drawn, nullptr);
+    render::RenderOptions options = drawn->options;
+    options.albedoView = true;
+    const core::OrbitCamera camera =
+        core::OrbitCamera::lookAt({0.0f, 0.3f, 2.6f}, {0.0f, 0.3f, -2.0f}, 0.9f);
+    const auto magentaAboveHorizon = [&](const render::RenderOptions& frameOptions) {
+        gl::Framebuffer framebuffer(SIZE, SIZE, 0);
+        drawn->renderer->render(camera, SIZE, SIZE, framebuffer, frameOptions);
+        const gl::Rgba8Image image = framebuffer.readPixels();
+        std::size_t count = 0;
+        // Rows from the top (readPixels): the upper half holds sky and the blades' tops.
+        for (int y = 0; y < SIZE / 2 - 2; ++y)
+            for (int x = 0; x < SIZE; ++x) {
+                const std::uint8_t* p = &image.pixels[4 * (std::size_t(y) * SIZE + std::size_t(x))];
+                count += p[0] > 150 && p[1] < 110 && p[2] > 150 ? 1u : 0u;
+            }
+        return count;
+    };
+    const std::size_t without = magentaAboveHorizon(options);
+    options.snow.enabled = 1u;
+    options.snow.amountM = 0.01f;  // too thin to bury a blade
+    options.snow.fallDirection = {0.0f, -1.0f, 0.0f};
+    options.snow.snowColor = {1.0f, 0.0f, 1.0f};
+    const std::size_t with = magentaAboveHorizon(options);
+    std::printf("[ snow ] magenta pixels above the horizon: %zu without snow, %zu with\n", without,
+                with);
+    EXPECT_EQ(without, 0u);
+X
+    EXPECT_GT(with, 20u) << "the tips carry no snow in the picture";
+}
+
 // --time: As(t) = clamp(As + (accumulation − melt)·t, 0, max). Snow that starts at nothing
 // buries blades once enough has fallen, and snow that melts away gives the snow-free frame back.
 TEST_F(SnowGrassGlTest, SnowAccumulatesAndMeltsOverTime) {
