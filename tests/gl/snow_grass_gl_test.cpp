@@ -261,7 +261,7 @@ TEST_F(SnowGrassGlTest, TheTipsSnowShowsInThePicture) {
     std::printf("[ snow ] magenta pixels above the horizon: %zu without snow, %zu with\n", without,
                 with);
     EXPECT_EQ(without, 0u);
-X
+    // Without the tips' snow in the shading none at all (measured); with it ~50 pixels.
     EXPECT_GT(with, 20u) << "the tips carry no snow in the picture";
 }
 
