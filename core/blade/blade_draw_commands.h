@@ -121,6 +121,14 @@ inline std::size_t patchCommandOffset(int lod, bool blending = false) {
            sizeof(DrawArraysIndirectCommand);
 }
 
+// Where a draw reads its blades in the visible lists of a layer of `slots` blade slots
+// (shaders/cull.comp writes them): LOD k's list spans [k·slots, (k + 1)·slots); its blades before
+// the morph band from the start forwards, those in it from the last entry backwards.
+inline std::size_t visibleListStart(int lod, std::size_t slots, bool blending) {
+    const std::size_t first = std::size_t(lod) * slots;
+    return blending ? first + slots - 1 : first;
+}
+
 // Blades drawn at `lod`, blending or not (the strips' and the patches' counts are the same).
 inline std::uint32_t drawnAtLod(const BladeDrawCommands& commands, int lod) {
     return commands[std::size_t(lod)].instanceCount +

@@ -139,9 +139,8 @@ void FieldGpu::drawStrips(const BladePrograms& programs, int segments) const {
 // LOD `lod`'s visible list as shaders/cull.comp wrote it: from its start, or for the blades in
 // its morph band from its end, backwards.
 void FieldGpu::setVisibleList(const gl::Program& program, int lod, bool blending) const {
-    const std::size_t first = std::size_t(lod) * mBladeCount;
     program.set("uVisibleOffset",
-                static_cast<unsigned>(blending ? first + mBladeCount - 1 : first));
+                static_cast<unsigned>(core::visibleListStart(lod, mBladeCount, blending)));
     program.set("uVisibleBackwards", blending ? 1 : 0);
 }
 

@@ -391,9 +391,8 @@ void Field::draw(const View& view) {
             for (int lod = 0; lod < LOD_COUNT; ++lod) {
                 const GlProgram& program = programs[lod >= pixelLitLods ? 1 : 0][blending];
                 program.use();
-                const std::size_t first = std::size_t(lod) * layer.slots;
                 program.set("uVisibleOffset",
-                            unsigned(blending ? first + layer.slots - 1 : first));
+                            unsigned(core::visibleListStart(lod, layer.slots, blending)));
                 program.set("uVisibleBackwards", blending ? 1 : 0);
                 const std::size_t offset = tessellate ? core::patchCommandOffset(lod, blending)
                                                       : core::stripCommandOffset(lod, blending);

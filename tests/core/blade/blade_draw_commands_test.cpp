@@ -48,6 +48,9 @@ TEST(BladeDrawCommands, BlendingBladesHaveCommandsOfTheirOwn) {
         commands[blending].instanceCount = 3u;
         EXPECT_EQ(drawnAtLod(commands, lod), 13u + std::uint32_t(lod));
     }
+    // LOD 1 of a 100-slot layer: its list is [100, 200); forwards from 100, backwards from 199.
+    EXPECT_EQ(visibleListStart(1, 100, false), 100u);
+    EXPECT_EQ(visibleListStart(1, 100, true), 199u);
     // The band: the last quarter of LOD 0's range and of LOD 1's; never LOD 2 nor without LODs.
     EXPECT_FALSE(lodBlending(5.9f, 8.0f, 0, LOD_BLEND));
     EXPECT_TRUE(lodBlending(6.1f, 8.0f, 0, LOD_BLEND));
