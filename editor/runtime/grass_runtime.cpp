@@ -49,7 +49,8 @@ struct Field::State {
     GlProgram cull, mesh, physics;
     // [lit per vertex][blending towards the next LOD]: LODs from core::defaultPixelLitLods on
     // use [1][..], as the editor does; the blades in a LOD's morph band are drawn with [..][1]
-    // (core::lodBlending).
+    // (core::lodBlending). Only the geometry path in use is compiled: the other path's four
+    // programs (half the start-up's compiling) wait for setGeometry.
     GlProgram strips[2][2], tess[2][2];
     std::vector<LayerGpu> layers;
     std::vector<MeshGpu> meshes;
@@ -87,6 +88,45 @@ struct Field::State {
         }
         return spheres;
     }
+
+    GlProgram (*bladePrograms(GeometryPath path))[2] {
+        return path == GeometryPath::Tessellation ? tess : strips;
+    }
+
+    // The four blade programs of `path`, compiled unless they are already; false (with the
+    // driver's log in `error`) when one does not compile.
+    bool compileBladePrograms(GeometryPath path, std::string& error) {
+        GlProgram(*programs)[2] = bladePrograms(path);
+        if (programs[0][0].id() != 0)
+            return true;
+        const std::vector<std::pair<GLenum, std::string>> stages =
+            path == GeometryPath::Tessellation
+                ? std::vector<std::pair<GLenum, std::string>>{{GL_VERTEX_SHADER, "blade_tess.vert"},
+                                                              {GL_TESS_CONTROL_SHADER, "blade.tesc"},
+                                                              {GL_TESS_EVALUATION_SHADER, "blade.tese"},
+                                                              {GL_FRAGMENT_SHADER, "blade.frag"}}
+                : std::vector<std::pair<GLenum, std::string>>{{GL_VERTEX_SHADER, "blade_strip.vert"},
+                                                              {GL_FRAGMENT_SHADER, "blade.frag"}};
+        GlProgram compiled[2][2];
+        for (const bool perVertex : {false, true})
+            for (const bool blend : {false, true}) {
+                std::vector<std::string> defines;
+                if (perVertex)
+                    defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
+                if (blend)
+                    defines.emplace_back("GRASS_LOD_BLEND");
+                std::string log;
+                compiled[perVertex][blend] = GlProgram(stages, defines, log);
+                if (compiled[perVertex][blend].id() == 0) {
+                    error = log;
+                    return false;
+                }
+            }
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j)
+                programs[i][j] = std::move(compiled[i][j]);
+        return true;
+    }
 };
 
 Field::Field() = default;
@@ -121,35 +161,18 @@ bool Field::load(ExportData data, std::string& error) {
             return;
         out = GlProgram(stages, defines, error);
     };
-    program(s.cull, {{GL_COMPUTE_SHADER, "cull.comp"}});
-    program(s.physics, {{GL_COMPUTE_SHADER, "physics.comp"}});
-    for (const bool perVertex : {false, true})
-        for (const bool blend : {false, true}) {
-            std::vector<std::string> defines;
-            if (perVertex)
-                defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
-            if (blend)
-                defines.emplace_back("GRASS_LOD_BLEND");
-            program(s.strips[perVertex][blend],
-                    {{GL_VERTEX_SHADER, "blade_strip.vert"}, {GL_FRAGMENT_SHADER, "blade.frag"}},
-                    defines);
-            program(s.tess[perVertex][blend],
-                    {{GL_VERTEX_SHADER, "blade_tess.vert"},
-                     {GL_TESS_CONTROL_SHADER, "blade.tesc"},
-                     {GL_TESS_EVALUATION_SHADER, "blade.tese"},
-                     {GL_FRAGMENT_SHADER, "blade.frag"}},
-                    defines);
-        }
-    program(s.mesh, {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}});
-    if (!error.empty())
-        return false;
-
     const std::string& geometry = s.data.render.geometry;
     s.softwareGl = isSoftwareRenderer();
     s.geometry = geometry == "tessellation" ? GeometryPath::Tessellation
                  : geometry == "strips"     ? GeometryPath::Strips
                  : s.softwareGl             ? GeometryPath::Strips
                                             : GeometryPath::Tessellation;
+    program(s.cull, {{GL_COMPUTE_SHADER, "cull.comp"}});
+    program(s.physics, {{GL_COMPUTE_SHADER, "physics.comp"}});
+    program(s.mesh, {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}});
+    if (!error.empty() || !s.compileBladePrograms(s.geometry, error))
+        return false;
+
     s.lighting = GlBuffer(std::as_bytes(std::span(&s.data.lighting, 1)));
     s.counters = GlBuffer::of(std::vector<std::uint32_t>(8, 0u));
     s.params = GlBuffer::of(std::vector<core::PhysicsParams>{s.data.physics});
@@ -211,7 +234,15 @@ GeometryPath Field::geometry() const {
 }
 
 void Field::setGeometry(GeometryPath path) {
+    std::string error;
+    setGeometry(path, error);
+}
+
+bool Field::setGeometry(GeometryPath path, std::string& error) {
+    if (!mState->compileBladePrograms(path, error))
+        return false;
     mState->geometry = path;
+    return true;
 }
 
 glm::vec3 Field::colliderOrigin(std::size_t i) const {
@@ -347,7 +378,7 @@ void Field::draw(const View& view) {
 
     // The blades (SPEC §7, §10), one indirect draw per LOD and layer.
     const bool tessellate = s.geometry == GeometryPath::Tessellation;
-    const GlProgram(*programs)[2] = tessellate ? s.tess : s.strips;
+    const GlProgram(*programs)[2] = s.bladePrograms(s.geometry);
     for (int variant = 0; variant < 4; ++variant) {
         const GlProgram& program = programs[variant / 2][variant % 2];
         program.set("uViewProj", viewProj);

@@ -82,8 +82,12 @@ public:
     // its own ground and objects skips it.
     void drawMeshes(const View& view);
     // Strips or tessellation; the export's "auto" picks strips on software GL, else tessellation.
+    // load() compiles the programs of that path alone; switching compiles the other path's on
+    // the first switch. It returns false, naming the shader in `error` and keeping the path
+    // drawn so far, when they do not compile (the form without `error` drops the message).
     GeometryPath geometry() const;
     void setGeometry(GeometryPath path);
+    bool setGeometry(GeometryPath path, std::string& error);
     // Blades the last draw() kept, summed over layers (waits for the GPU).
     DrawStats readStats() const;
 

@@ -66,12 +66,14 @@ gl::Rgba8Image drawWithRuntime(runtime::Field& field, int samples) {
     return framebuffer.readPixels();
 }
 
-TEST_F(RuntimeTest, DrawsTheMeadowAsGrassRenderDoes) {
+// The meadow exported raw, loaded by the runtime and drawn on `path` (switched to with
+// setGeometry when the export's choice differs: the first switch compiles that path's programs),
+// against `grass render` of the project on the same path.
+void expectTheMeadowAsGrassRenderDraws(const fs::path& dir, render::GeometryPath path) {
     auto loaded = core::loadProject(sourceDir() / "projects/meadow");
     ASSERT_TRUE(loaded.ok()) << loaded.error().str();
     auto scene = core::buildScene(*loaded);
     ASSERT_TRUE(scene.ok()) << scene.error().str();
-    const fs::path dir = scratchDir("runtime_gl");
     exportRaw(*loaded, *scene, dir / "meadow");
 
     runtime::Field field;
@@ -79,6 +81,11 @@ TEST_F(RuntimeTest, DrawsTheMeadowAsGrassRenderDoes) {
     ASSERT_TRUE(field.load(dir / "meadow", error)) << error;
     ASSERT_EQ(field.data().layers.size(), 1u);
     EXPECT_EQ(field.data().layers[0].liveBlades, scene->layers[0].liveBlades);
+    const runtime::GeometryPath runtimePath = path == render::GeometryPath::Tessellation
+                                                  ? runtime::GeometryPath::Tessellation
+                                                  : runtime::GeometryPath::Strips;
+    ASSERT_TRUE(field.setGeometry(runtimePath, error)) << error;
+    EXPECT_EQ(field.geometry(), runtimePath);
     const gl::Rgba8Image ours = drawWithRuntime(field, loaded->project.render.msaaSamples);
     const std::size_t drawn = field.readStats().bladesDrawn;
 
@@ -90,6 +97,7 @@ TEST_F(RuntimeTest, DrawsTheMeadowAsGrassRenderDoes) {
     request.msaaSamples = loaded->project.render.msaaSamples;
     request.frames = 1;
     request.options = render::renderOptionsFor(loaded->project, gl::isSoftwareRenderer());
+    request.options.geometry = path;
     request.options.cull.collectStats = true;
     auto reference = render::renderOffscreen(*scene, *camera, request);
     ASSERT_TRUE(reference.ok()) << reference.error().str();
@@ -100,16 +108,26 @@ TEST_F(RuntimeTest, DrawsTheMeadowAsGrassRenderDoes) {
 
     const ImageDifference diff = compareImages(ours.pixels, reference->image.pixels, PIXEL_THRESHOLD);
     const std::size_t referenceDrawn = reference->lastFrame.cull.drawn;
-    std::printf("[ runtime ] meadow %dx%d: differing %.4f, mean abs %.3f, max %d; blades drawn "
-                "%zu (grass render %zu, occlusion culled %zu)\n",
-                WIDTH, HEIGHT, diff.differingShare, diff.meanAbs, diff.maxChannel, drawn,
-                referenceDrawn, reference->lastFrame.cull.culledOcclusion);
+    std::printf("[ runtime ] meadow %dx%d, %s: differing %.4f, mean abs %.3f, max %d; blades "
+                "drawn %zu (grass render %zu, occlusion culled %zu)\n",
+                WIDTH, HEIGHT, path == render::GeometryPath::Tessellation ? "tessellation" : "strips",
+                diff.differingShare, diff.meanAbs, diff.maxChannel, drawn, referenceDrawn,
+                reference->lastFrame.cull.culledOcclusion);
     EXPECT_LE(diff.differingShare, MAX_DIFFERING_SHARE) << "pictures in " << dir;
     EXPECT_LE(diff.meanAbs, MAX_MEAN_ABS) << "pictures in " << dir;
     // Every blade the editor draws, the runtime draws too (it only lacks the occlusion test).
     EXPECT_EQ(drawn, referenceDrawn + reference->lastFrame.cull.culledOcclusion);
     // And the picture is a field, not the sky: most of its lower half is grass.
     EXPECT_GT(grassPixelShare(ours.pixels), 0.2);
+}
+
+TEST_F(RuntimeTest, DrawsTheMeadowAsGrassRenderDoes) {
+    expectTheMeadowAsGrassRenderDraws(scratchDir("runtime_gl"), render::GeometryPath::Strips);
+}
+
+TEST_F(RuntimeTest, DrawsTheMeadowAsGrassRenderDoesWithTessellation) {
+    expectTheMeadowAsGrassRenderDraws(scratchDir("runtime_gl_tess"),
+                                      render::GeometryPath::Tessellation);
 }
 
 // The meadow, thinned to a few thousand blades so 300 CPU steps stay quick, with a vortex on a
