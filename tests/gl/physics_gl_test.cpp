@@ -131,6 +131,24 @@ TEST_F(PhysicsGpuTest, MatchesCpuReferenceWithAVortexAndCentreGravity) {
     expectCpuAndGpuAgree(params, {vortex}, movingColliders(), STEP_COUNT / 2);
 }
 
+// The shader skips a sphere on squared distances when the blade's tip and midpoint are clearly
+// outside it; with surfaces a hair from the points (physics_cases.h), the blades inside must
+// still be corrected and those outside left alone, as the CPU reference does.
+TEST_F(PhysicsGpuTest, SpheresAHairFromTheTipOrMidpointDecideAsTheReference) {
+    const SphereEdgeField field = sphereEdgeField();
+    const core::PhysicsParams params = sphereEdgeParams();
+    auto physics = render::PhysicsGpu::load();
+    ASSERT_TRUE(physics.ok()) << physics.error().str();
+    physics->reset(field.blades);
+    gl::Buffer gpuBlades = gl::Buffer::fromVector(field.blades, "sphere edge blades");
+    physics->step(gpuBlades, field.blades.size(), params, {}, field.colliders, 0.0f);
+    const std::vector<float> eta = physics->readEta();
+    ASSERT_EQ(eta.size(), field.blades.size());
+    for (std::size_t i = 0; i < eta.size(); ++i)
+        EXPECT_EQ(eta[i] > 0.0f, field.deltas[i] < 0.0f)
+            << "blade " << i << ", surface " << field.deltas[i] << " m away, eta " << eta[i];
+}
+
 // The snow load (core::GravityLoad, SPEC §11): extra gravity per blade, growing over time as snow
 // accumulates, bends the GPU's blades exactly as the CPU reference's.
 TEST_F(PhysicsGpuTest, SnowLoadMatchesCpuReference) {

@@ -267,4 +267,57 @@ inline std::vector<core::Blade> degenerateBlades() {
     return blades;
 }
 
+// Spheres whose surface passes within a hair of a blade's tip or midpoint, for the collision
+// loops' squared-distance shortcut (core/physics/physics_simd.cpp TipOrMidpointNear, the same in
+// shaders/physics.comp): blades at rest (upright; run them without wind or gravity) beside a
+// sphere of radius 1 m whose centre lies (1 + δ) m from the tip, or from the midpoint,
+// horizontally. Inside (δ < 0) the exact test corrects the blade, so η > 0 after a step; outside
+// it leaves the blade as it is, η = 0. The outside δ lie both within the shortcut's margin
+// (√(1 + 1e-4) − 1 ≈ 5e-5) and beyond it; the smallest, 1e-5 m, is ~10 float steps of the
+// coordinates (every site lies within 6 m of the origin). Sites 3 m apart, out of each other's
+// reach; 16 equal blades a site, so every block of SIMD lanes (4, 8 or 16) holds one case.
+struct SphereEdgeField {
+    std::vector<core::Blade> blades;
+    std::vector<float> deltas;  // per blade: its site's δ
+    std::vector<core::SphereCollider> colliders;
+};
+
+// One substep without gravity, wind or η's decay: η after the step is the first collision's
+// squared correction, ≥ 1e-10 m² for the nearest inside surface (a decay of 0.1/s over the
+// substep would take 8e-4 off it).
+inline core::PhysicsParams sphereEdgeParams() {
+    core::PhysicsParams params;
+    params.gravity.w = 0.0f;
+    params.etaDecayPerS = 0.0f;
+    params.dtS = params.maxSubstepS;
+    return params;
+}
+
+inline SphereEdgeField sphereEdgeField() {
+    constexpr std::array<float, 10> DELTAS{-1e-3f, -1e-4f, -2e-5f, -1e-5f, 1e-5f,
+                                           2e-5f,  4e-5f,  6e-5f,  1e-4f,  1e-3f};
+    constexpr float H = 0.5f, RADIUS = 1.0f;
+    constexpr std::size_t BLADES_PER_SITE = 16;
+    const glm::vec3 up(0.0f, 1.0f, 0.0f);
+    SphereEdgeField field;
+    std::size_t site = 0;
+    for (const bool atMidpoint : {false, true})
+        for (const float delta : DELTAS) {
+            const glm::vec3 root(3.0f * float(site % 5) - 6.0f, 0.0f, 3.0f * float(site / 5) - 4.5f);
+            ++site;
+            const core::Blade blade = core::makeRestBlade(root, up, H, 0.01f, 1.0f, 0.3f);
+            // At rest v1 = v2 = the tip, so the midpoint 0.25·v0 + 0.5·v1 + 0.25·v2 is 0.75·h up.
+            const glm::vec3 point = root + (atMidpoint ? 0.75f * H : H) * up;
+            core::SphereCollider sphere;
+            sphere.centre = point + glm::vec3(RADIUS * (1.0f + delta), 0.0f, 0.0f);
+            sphere.radiusM = RADIUS;
+            field.colliders.push_back(sphere);
+            for (std::size_t i = 0; i < BLADES_PER_SITE; ++i) {
+                field.blades.push_back(blade);
+                field.deltas.push_back(delta);
+            }
+        }
+    return field;
+}
+
 }  // namespace grass::test

@@ -169,6 +169,36 @@ TEST(PhysicsSimd, DegenerateBladesTakeTheReferenceStepExactly) {
     }
 }
 
+// The SIMD collision loop skips a sphere on squared distances when no lane's tip or midpoint
+// can be inside it; with surfaces a hair from the points (physics_cases.h), the blades inside
+// must still be corrected and those outside left alone, on every compiled instruction set, as
+// the reference does.
+TEST(PhysicsSimd, SpheresAHairFromTheTipOrMidpointDecideAsTheReference) {
+    const SphereEdgeField field = sphereEdgeField();
+    const core::PhysicsParams params = sphereEdgeParams();
+    const std::vector<glm::vec3> tips = core::restTips(field.blades);
+    const auto expectInsideCorrected = [&](const std::vector<float>& eta, const char* what) {
+        for (std::size_t i = 0; i < field.blades.size(); ++i)
+            EXPECT_EQ(eta[i] > 0.0f, field.deltas[i] < 0.0f)
+                << what << ": blade " << i << ", surface " << field.deltas[i] << " m away, eta "
+                << eta[i];
+    };
+    std::vector<core::Blade> scalar = field.blades;
+    std::vector<float> etaScalar(scalar.size(), 0.0f);
+    core::stepPhysics(scalar, etaScalar, tips, params, {}, field.colliders, 0.0f, 1);
+    expectInsideCorrected(etaScalar, "reference");
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        hwy::GetChosenTarget().Update(hwy::SupportedTargets());
+        std::vector<core::Blade> simd = field.blades;
+        std::vector<float> etaSimd(simd.size(), 0.0f);
+        core::stepPhysicsSimd(simd, etaSimd, tips, params, {}, field.colliders, 0.0f, 2);
+        expectInsideCorrected(etaSimd, hwy::TargetName(target));
+    }
+    hwy::SetSupportedTargetsForTest(0);
+    hwy::GetChosenTarget().Update(hwy::SupportedTargets());
+}
+
 // Nothing acts on a field at rest: both executions leave it bit for bit as it was.
 TEST(PhysicsSimd, AFieldAtRestStaysBitIdentical) {
     std::vector<core::Blade> blades = scatteredField(20.0f, 1);
