@@ -47,7 +47,7 @@ static gl::TextureHandle uploadSurfaceTexture(const Rgba8Pixels& image, const co
 // hands its fragments one colour and nothing else: the fade's distance and its position varying
 // cost llvmpipe 12 % of nature-100k's grass pass at 4× MSAA; the blend's extra evaluations cost
 // it ~20 % more, so only the blades in a morph band are drawn with it; the tip snow's lookup
-// runs only while snow lies (docs/rendering.md).
+// runs only while snow lies; a program holds one lighting model (docs/rendering.md).
 Result<gl::Program> SceneRenderer::loadBladeProgram(const BladeVariant& variant) {
     std::vector<std::string> defines;
     if (variant.lightPerVertex)
@@ -60,11 +60,14 @@ Result<gl::Program> SceneRenderer::loadBladeProgram(const BladeVariant& variant)
         defines.emplace_back("GRASS_LOD_BLEND");
     if (variant.snowTips)
         defines.emplace_back("GRASS_SNOW_TIPS");
+    if (variant.simpleLighting)
+        defines.emplace_back("GRASS_SIMPLE_LIGHTING");
     const std::string label =
         std::string(variant.tessellate ? "blade tessellation" : "blade strips") +
         (variant.lightPerVertex ? " (lit per vertex)" : "") +
         (variant.sunShadows ? " (sun shadows)" : "") + (variant.fadeOut ? " (fading out)" : "") +
-        (variant.lodBlend ? " (LOD blend)" : "") + (variant.snowTips ? " (snow tips)" : "");
+        (variant.lodBlend ? " (LOD blend)" : "") + (variant.snowTips ? " (snow tips)" : "") +
+        (variant.simpleLighting ? " (simple lighting)" : "");
     if (variant.tessellate)
         return gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
                                   {GL_TESS_CONTROL_SHADER, "blade.tesc"},

@@ -92,7 +92,8 @@ private:
         return options.snowExposurePerVertex ? Opaque::SnowExposurePerVertex : Opaque::Snow;
     }
     // A blade program's compile-time variant: geometry path, lit per vertex, the sun's shadows,
-    // the hybrid's fade-out, the blend towards the next LOD, the tip snow while snow lies.
+    // the hybrid's fade-out, the blend towards the next LOD, the tip snow while snow lies, the
+    // simple lighting model instead of the grass lighting.
     struct BladeVariant {
         bool tessellate = false;
         bool lightPerVertex = false;
@@ -100,14 +101,16 @@ private:
         bool fadeOut = false;
         bool lodBlend = false;
         bool snowTips = false;
+        bool simpleLighting = false;
         std::size_t index() const {
             return std::size_t(tessellate) | std::size_t(lightPerVertex) << 1 |
                    std::size_t(sunShadows) << 2 | std::size_t(fadeOut) << 3 |
-                   std::size_t(lodBlend) << 4 | std::size_t(snowTips) << 5;
+                   std::size_t(lodBlend) << 4 | std::size_t(snowTips) << 5 |
+                   std::size_t(simpleLighting) << 6;
         }
     };
     // By BladeVariant::index(); all but the plain ones load on first use.
-    std::array<gl::Program, 64> mBladePrograms;
+    std::array<gl::Program, 128> mBladePrograms;
     static Result<gl::Program> loadBladeProgram(const BladeVariant& variant);
     const gl::Program& bladeProgram(const BladeVariant& variant);
     // The passes of render(), in order (scene_renderer_opaque.cpp, scene_renderer_grass.cpp).

@@ -98,7 +98,9 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
                                .sunShadows = options.sun.shadows,
                                .fadeOut = hybrid,
                                .lodBlend = blending && blends && lod < LOD_COUNT - 1,
-                               .snowTips = mSnowLies});
+                               .snowTips = mSnowLies,
+                               .simpleLighting =
+                                   options.lighting.model == core::LightingModel::Simple});
     const auto setAll = [&programs](const char* name, const auto& value) {
         for (std::size_t i = 0; i < programs.size(); ++i)
             if (std::find(programs.begin(), programs.begin() + std::ptrdiff_t(i), programs[i]) ==

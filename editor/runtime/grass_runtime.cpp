@@ -115,6 +115,9 @@ struct Field::State {
                     defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
                 if (blend)
                     defines.emplace_back("GRASS_LOD_BLEND");
+                // The export's lighting model is fixed: its programs hold that one alone.
+                if (data.lighting.grassLighting == 0)
+                    defines.emplace_back("GRASS_SIMPLE_LIGHTING");
                 std::string log;
                 compiled[perVertex][blend] = GlProgram(stages, defines, log);
                 if (compiled[perVertex][blend].id() == 0) {

@@ -1,7 +1,10 @@
 // The colour of a blade point, shared by the fragment shader (per-pixel lighting, the default)
 // and the vertex stages (per-vertex lighting, the article's choice; GRASS_LIGHT_PER_VERTEX): the
-// grass lighting of SPEC §10 with the blade's baked AO, blurred terrain normal and water, or the
-// wrapped Lambert (uGrassLighting = 0). Blades are two-sided: the normal turns to the viewer.
+// grass lighting of SPEC §10 with the blade's baked AO, blurred terrain normal and water, or,
+// compiled with GRASS_SIMPLE_LIGHTING (the program variant for uGrassLighting = 0), the wrapped
+// Lambert: software GL runs both sides of a branch, so the model a frame does not use is not
+// compiled in (nature-100k's grass pass ~3 ms). Blades are two-sided: the normal turns to the
+// viewer.
 #ifndef GRASS_BLADE_SHADE_GLSL
 #define GRASS_BLADE_SHADE_GLSL
 #include "blade_texels.glsl"
@@ -45,13 +48,13 @@ vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeInd
 #endif
     if (uAlbedoView != 0) return albedo;
     float sun = sunVisibility(position);
-    if (uGrassLighting == 0) {
-        // A thin blade's normal is nearly horizontal, so a high sun would leave the field
-        // black; leaning it towards the surface normal lights it the way a field scatters.
-        float selfShadow = mix(0.45, 1.0, height);
-        vec3 leaned = normalize(normal + 0.8 * up);
-        return simpleLightingShadowed(albedo, leaned, 0.5, sun) * selfShadow;
-    }
+#ifdef GRASS_SIMPLE_LIGHTING
+    // A thin blade's normal is nearly horizontal, so a high sun would leave the field
+    // black; leaning it towards the surface normal lights it the way a field scatters.
+    float selfShadow = mix(0.45, 1.0, height);
+    vec3 leaned = normalize(normal + 0.8 * up);
+    return simpleLightingShadowed(albedo, leaned, 0.5, sun) * selfShadow;
+#else
     GrassSurface surface;
     surface.albedo = albedo;
     surface.bladeNormal = normal;
@@ -65,5 +68,6 @@ vec3 shadeBlade(vec3 position, vec3 normal, vec3 up, float height, uint bladeInd
     surface.eyeDistance = eyeDistance;
     surface.sunVisibility = sun;
     return grassLighting(surface);
+#endif
 }
 #endif

@@ -66,11 +66,12 @@ gl::Rgba8Image drawWithRuntime(runtime::Field& field, int samples) {
     return framebuffer.readPixels();
 }
 
-// The meadow exported raw, loaded by the runtime and drawn on `path` (switched to with
-// setGeometry when the export's choice differs: the first switch compiles that path's programs),
-// against `grass render` of the project on the same path.
-void expectTheMeadowAsGrassRenderDraws(const fs::path& dir, render::GeometryPath path) {
-    auto loaded = core::loadProject(sourceDir() / "projects/meadow");
+// A project (the meadow by default) exported raw, loaded by the runtime and drawn on `path`
+// (switched to with setGeometry when the export's choice differs: the first switch compiles that
+// path's programs), against `grass render` of the project on the same path.
+void expectTheMeadowAsGrassRenderDraws(const fs::path& dir, render::GeometryPath path,
+                                       const fs::path& project = sourceDir() / "projects/meadow") {
+    auto loaded = core::loadProject(project);
     ASSERT_TRUE(loaded.ok()) << loaded.error().str();
     auto scene = core::buildScene(*loaded);
     ASSERT_TRUE(scene.ok()) << scene.error().str();
@@ -128,6 +129,19 @@ TEST_F(RuntimeTest, DrawsTheMeadowAsGrassRenderDoes) {
 TEST_F(RuntimeTest, DrawsTheMeadowAsGrassRenderDoesWithTessellation) {
     expectTheMeadowAsGrassRenderDraws(scratchDir("runtime_gl_tess"),
                                       render::GeometryPath::Tessellation);
+}
+
+// An export lit by the simple model: the runtime compiles its blade programs with that model
+// alone (GRASS_SIMPLE_LIGHTING), as the renderer picks its variant.
+TEST_F(RuntimeTest, DrawsASimplyLitMeadowAsGrassRenderDoes) {
+    const fs::path dir = scratchDir("runtime_gl_simple");
+    const fs::path project = dir / "simple_meadow";
+    fs::remove_all(project);
+    fs::copy(sourceDir() / "projects/meadow", project, fs::copy_options::recursive);
+    json document = json::parse(std::ifstream(project / "project.json"));
+    document["lighting"]["model"] = "simple";
+    std::ofstream(project / "project.json") << document.dump(2);
+    expectTheMeadowAsGrassRenderDraws(dir, render::GeometryPath::Strips, project);
 }
 
 // The meadow, thinned to a few thousand blades so 300 CPU steps stay quick, with a vortex on a
