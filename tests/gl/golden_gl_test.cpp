@@ -14,6 +14,15 @@
 // do so. A real regression moves whole outlines: drawing the quadratic shape instead of the
 // triangle differs in several percent of the pixels (RegressionIsCaught measures it), a
 // lighting change shifts every blade pixel and the mean.
+// Alpha to coverage (the billboards and the hybrid's cross-fade) is the one part GL leaves to
+// the implementation (the specification's multisample fragment operations: how an alpha value
+// becomes a set of covered samples), and the references are llvmpipe's. On another
+// implementation those cases are compared at half resolution, where a dither over 2×2 pixels
+// averages out, with the mean allowed MAX_MEAN_ABS_OTHER_COVERAGE: the NVIDIA H200 dithers the
+// tufts' edges as a screen-space pattern (1.0–3.3 % of the pixels beyond 48 levels at full
+// resolution, within 0.5 % at half) and covers partly transparent pixels a little differently
+// on average (mean 2.0–2.3 levels). A billboard pass drawn wrong moves whole tufts, far beyond
+// both. (llvmpipe itself keeps the full-resolution metric.)
 // Refresh after an intended change: GRASS_UPDATE_GOLDEN=1 grass_gl_tests --gtest_filter='Golden*'
 // then look at the images before committing them.
 #include <gtest/gtest.h>
@@ -21,6 +30,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "gl/headless_context.h"
 #include "gl_context_fixture.h"
 #include "render/offscreen_render.h"
 #include "support/image_compare.h"
@@ -35,6 +45,7 @@ constexpr int SIDE = 96;
 constexpr int PIXEL_THRESHOLD = 48;
 constexpr double MAX_DIFFERING_SHARE = 0.005;
 constexpr double MAX_MEAN_ABS = 1.0;
+constexpr double MAX_MEAN_ABS_OTHER_COVERAGE = 3.0;
 
 using GoldenTest = GlTest;
 
@@ -129,11 +140,18 @@ TEST_F(GoldenTest, EveryCaseMatchesItsReference) {
         auto reference = readRgba8Image(goldenFile(golden.name));
         ASSERT_TRUE(reference.ok()) << reference.error().str()
                                     << " (GRASS_UPDATE_GOLDEN=1 writes the references)";
+        // Another implementation's alpha to coverage (see the top of this file).
+        const bool otherCoverage =
+            golden.technique != core::GrassTechnique::Blades && !gl::isSoftwareRenderer();
         const ImageDifference diff =
-            compareImages(image.pixels, reference->pixels, PIXEL_THRESHOLD);
-        std::printf("[ golden ] %-22s differing %.4f, mean abs %.3f, max %d\n",
-                    golden.name.c_str(), diff.differingShare, diff.meanAbs, diff.maxChannel);
-        const bool ok = diff.differingShare <= MAX_DIFFERING_SHARE && diff.meanAbs <= MAX_MEAN_ABS;
+            otherCoverage ? compareImages(downsample2x2(image.pixels, SIDE),
+                                          downsample2x2(reference->pixels, SIDE), PIXEL_THRESHOLD)
+                          : compareImages(image.pixels, reference->pixels, PIXEL_THRESHOLD);
+        std::printf("[ golden ] %-22s differing %.4f, mean abs %.3f, max %d%s\n",
+                    golden.name.c_str(), diff.differingShare, diff.meanAbs, diff.maxChannel,
+                    otherCoverage ? " (half resolution: another alpha to coverage)" : "");
+        const double maxMean = otherCoverage ? MAX_MEAN_ABS_OTHER_COVERAGE : MAX_MEAN_ABS;
+        const bool ok = diff.differingShare <= MAX_DIFFERING_SHARE && diff.meanAbs <= maxMean;
         if (!ok) {
             const auto actual = scratch / (golden.name + ".actual.png");
             EXPECT_TRUE(writeRgba8Image(actual, SIDE, SIDE, image.pixels).ok());
@@ -167,6 +185,32 @@ TEST_F(GoldenTest, RegressionIsCaught) {
         EXPECT_TRUE(diff.differingShare > 2.0 * MAX_DIFFERING_SHARE ||
                     diff.meanAbs > 2.0 * MAX_MEAN_ABS)
             << swap.reference;
+    }
+}
+
+// The looser comparison of the alpha-to-coverage cases on other implementations (half
+// resolution, mean up to MAX_MEAN_ABS_OTHER_COVERAGE) still catches a billboard pass drawn
+// wrong: lit by the simple model, or with the tufts' cross-fade to blades (the hybrid) where
+// billboards alone were expected.
+TEST_F(GoldenTest, ABillboardRegressionIsCaughtAtHalfResolutionToo) {
+    auto reference = readRgba8Image(goldenFile("billboards"));
+    ASSERT_TRUE(reference.ok()) << reference.error().str();
+    const std::vector<std::uint8_t> expected = downsample2x2(reference->pixels, SIDE);
+    const std::vector<GoldenCase> wrong{
+        {"", core::BladeShape::Triangle, core::LightingModel::Simple,
+         core::GrassTechnique::Billboards},
+        {"", core::BladeShape::Triangle, core::LightingModel::Grass, core::GrassTechnique::Hybrid},
+    };
+    for (const GoldenCase& golden : wrong) {
+        const ImageDifference diff = compareImages(
+            downsample2x2(renderCase(golden).pixels, SIDE), expected, PIXEL_THRESHOLD);
+        std::printf("[ golden ] wrong billboards at half resolution: differing %.4f, mean abs "
+                    "%.3f\n",
+                    diff.differingShare, diff.meanAbs);
+        // On llvmpipe: the simple model's mean 5.5 levels (1.8× the limit), the hybrid's 14 % of
+        // the pixels.
+        EXPECT_TRUE(diff.differingShare > MAX_DIFFERING_SHARE ||
+                    diff.meanAbs > MAX_MEAN_ABS_OTHER_COVERAGE);
     }
 }
 
