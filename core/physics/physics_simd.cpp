@@ -353,7 +353,8 @@ HWY_INLINE V3 SphereCorrection(D d, V3 p, V3 c, V radius, V3 up) {
 // spheres within reach, and an upright one ~80 that touch it), and such a sphere leaves the
 // blade as it is: no correction, η unchanged. Squared distances only, with a margin (10⁻⁴ of
 // R²) far beyond the rounding of the exact test in SphereCorrection, so a lane left out here is
-// one the exact test leaves unchanged and the results stay bit for bit the reference's.
+// one the exact test leaves unchanged: the step moves every blade bit for bit as it would
+// without this shortcut.
 HWY_INLINE M TipOrMidpointNear(D d, V3 c, V radius, V3 v0, V3 v1, V3 v2) {
     const V clear = pk::Mul(pk::Mul(radius, radius), pk::Set(d, 1.0f + 1e-4f));
     const V3 toTip = Sub3(c, v2);
