@@ -103,14 +103,6 @@ core::BladeDrawCommands FieldGpu::readCommands() const {
     return commands;
 }
 
-std::array<std::size_t, LOD_COUNT> FieldGpu::readDrawnCounts() const {
-    std::array<std::size_t, LOD_COUNT> drawn{};
-    const CommandArray commands = readCommands();
-    for (int lod = 0; lod < LOD_COUNT; ++lod)
-        drawn[lod] = core::drawnAtLod(commands, lod);
-    return drawn;
-}
-
 void FieldGpu::bindForDraw() const {
     mEmptyVertexArray.bind();
     glBindTextureUnit(core::BLADE_TEXELS_UNIT, mBladeTexels.id());

@@ -68,8 +68,6 @@ public:
     bool hasTipSnow() const { return mTipSnow.id() != 0; }
     // Binds the blade, patch-box, visible and command buffers for the cull dispatch.
     void bindForCull() const;
-    // The instance counts the cull pass wrote per LOD (waits for the GPU; statistics only).
-    std::array<std::size_t, LOD_COUNT> readDrawnCounts() const;
     // The indirect draw commands as the last cull pass left them (a read-back, for statistics).
     core::BladeDrawCommands readCommands() const;
 

@@ -49,25 +49,8 @@ static gl::TextureHandle uploadSurfaceTexture(const Rgba8Pixels& image, const co
 // it ~20 % more, so only the blades in a morph band are drawn with it; the tip snow's lookup
 // runs only while snow lies; a program holds one lighting model (docs/rendering.md).
 Result<gl::Program> SceneRenderer::loadBladeProgram(const BladeVariant& variant) {
-    std::vector<std::string> defines;
-    if (variant.lightPerVertex)
-        defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
-    if (variant.sunShadows)
-        defines.emplace_back("GRASS_SUN_SHADOWS");
-    if (variant.fadeOut)
-        defines.emplace_back("GRASS_BLADE_FADE_OUT");
-    if (variant.lodBlend)
-        defines.emplace_back("GRASS_LOD_BLEND");
-    if (variant.snowTips)
-        defines.emplace_back("GRASS_SNOW_TIPS");
-    if (variant.simpleLighting)
-        defines.emplace_back("GRASS_SIMPLE_LIGHTING");
-    const std::string label =
-        std::string(variant.tessellate ? "blade tessellation" : "blade strips") +
-        (variant.lightPerVertex ? " (lit per vertex)" : "") +
-        (variant.sunShadows ? " (sun shadows)" : "") + (variant.fadeOut ? " (fading out)" : "") +
-        (variant.lodBlend ? " (LOD blend)" : "") + (variant.snowTips ? " (snow tips)" : "") +
-        (variant.simpleLighting ? " (simple lighting)" : "");
+    const std::vector<std::string> defines = variant.defines();
+    const std::string label = variant.label();
     if (variant.tessellate)
         return gl::Program::load({{GL_VERTEX_SHADER, "blade_tess.vert"},
                                   {GL_TESS_CONTROL_SHADER, "blade.tesc"},

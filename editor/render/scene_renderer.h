@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "blade/blade_program_variant.h"
 #include "gl/gl_ref.h"
 #include "gl/program.h"
 #include "gl/texture.h"
@@ -91,26 +92,10 @@ private:
     static Opaque snowVariant(const RenderOptions& options) {
         return options.snowExposurePerVertex ? Opaque::SnowExposurePerVertex : Opaque::Snow;
     }
-    // A blade program's compile-time variant: geometry path, lit per vertex, the sun's shadows,
-    // the hybrid's fade-out, the blend towards the next LOD, the tip snow while snow lies, the
-    // simple lighting model instead of the grass lighting.
-    struct BladeVariant {
-        bool tessellate = false;
-        bool lightPerVertex = false;
-        bool sunShadows = false;
-        bool fadeOut = false;
-        bool lodBlend = false;
-        bool snowTips = false;
-        bool simpleLighting = false;
-        std::size_t index() const {
-            return std::size_t(tessellate) | std::size_t(lightPerVertex) << 1 |
-                   std::size_t(sunShadows) << 2 | std::size_t(fadeOut) << 3 |
-                   std::size_t(lodBlend) << 4 | std::size_t(snowTips) << 5 |
-                   std::size_t(simpleLighting) << 6;
-        }
-    };
+    // A blade program's compile-time variant (core/blade/blade_program_variant.h).
+    using BladeVariant = core::BladeProgramVariant;
     // By BladeVariant::index(); all but the plain ones load on first use.
-    std::array<gl::Program, 128> mBladePrograms;
+    std::array<gl::Program, core::BLADE_PROGRAM_VARIANTS> mBladePrograms;
     static Result<gl::Program> loadBladeProgram(const BladeVariant& variant);
     const gl::Program& bladeProgram(const BladeVariant& variant);
     // The passes of render(), in order (scene_renderer_opaque.cpp, scene_renderer_grass.cpp).

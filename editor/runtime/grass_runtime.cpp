@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "blade/blade_draw_commands.h"
+#include "blade/blade_program_variant.h"
 #include "physics/physics_step_inputs.h"
 #include "runtime/runtime_gl.h"
 #include "util/dispatch_chunks.h"
@@ -110,16 +111,14 @@ struct Field::State {
         GlProgram compiled[2][2];
         for (const bool perVertex : {false, true})
             for (const bool blend : {false, true}) {
-                std::vector<std::string> defines;
-                if (perVertex)
-                    defines.emplace_back("GRASS_LIGHT_PER_VERTEX");
-                if (blend)
-                    defines.emplace_back("GRASS_LOD_BLEND");
                 // The export's lighting model is fixed: its programs hold that one alone.
-                if (data.lighting.grassLighting == 0)
-                    defines.emplace_back("GRASS_SIMPLE_LIGHTING");
+                const core::BladeProgramVariant variant{
+                    .tessellate = path == GeometryPath::Tessellation,
+                    .lightPerVertex = perVertex,
+                    .lodBlend = blend,
+                    .simpleLighting = data.lighting.grassLighting == 0};
                 std::string log;
-                compiled[perVertex][blend] = GlProgram(stages, defines, log);
+                compiled[perVertex][blend] = GlProgram(stages, variant.defines(), log);
                 if (compiled[perVertex][blend].id() == 0) {
                     error = log;
                     return false;
