@@ -129,10 +129,15 @@ inline std::size_t visibleListStart(int lod, std::size_t slots, bool blending) {
     return blending ? first + slots - 1 : first;
 }
 
-// Blades drawn at `lod`, blending or not (the strips' and the patches' counts are the same).
+// Blades drawn at `lod` in its morph band, and blending or not (the strips' and the patches'
+// counts are the same).
+inline std::uint32_t blendingAtLod(const BladeDrawCommands& commands, int lod) {
+    return commands[stripCommandOffset(lod, true) / sizeof(DrawArraysIndirectCommand)]
+        .instanceCount;
+}
 inline std::uint32_t drawnAtLod(const BladeDrawCommands& commands, int lod) {
-    return commands[std::size_t(lod)].instanceCount +
-           commands[std::size_t(2 * LOD_COUNT + lod)].instanceCount;
+    return commands[stripCommandOffset(lod) / sizeof(DrawArraysIndirectCommand)].instanceCount +
+           blendingAtLod(commands, lod);
 }
 
 // The commands before the cull pass: no instances; each LOD's strip vertex count for

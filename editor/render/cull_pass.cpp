@@ -127,8 +127,7 @@ CullStats CullPass::readStats(const std::vector<FieldGpu>& fields) const {
             const std::size_t drawn = core::drawnAtLod(commands, lod);
             stats.drawnPerLod[lod] += drawn;
             stats.drawn += drawn;
-            stats.blendingPerLod[lod] +=
-                commands[std::size_t(2 * LOD_COUNT + lod)].instanceCount;
+            stats.blendingPerLod[lod] += core::blendingAtLod(commands, lod);
         }
     }
     return stats;

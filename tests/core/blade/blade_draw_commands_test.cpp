@@ -47,6 +47,7 @@ TEST(BladeDrawCommands, BlendingBladesHaveCommandsOfTheirOwn) {
         commands[plain].instanceCount = 10u + std::uint32_t(lod);
         commands[blending].instanceCount = 3u;
         EXPECT_EQ(drawnAtLod(commands, lod), 13u + std::uint32_t(lod));
+        EXPECT_EQ(blendingAtLod(commands, lod), 3u);
     }
     // LOD 1 of a 100-slot layer: its list is [100, 200); forwards from 100, backwards from 199.
     EXPECT_EQ(visibleListStart(1, 100, false), 100u);
