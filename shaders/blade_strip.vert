@@ -1,5 +1,6 @@
 #version 450 core
-// Instanced-strip path (SPEC §7): one instance per blade of this draw's level of detail. Up to
+// Instanced-strip path (SPEC §7): a blade's strip per level of detail, drawn STRIP_BATCH_BLADES
+// blades to an instance (below). Up to
 // FOLDED_LODS (lod.glsl) a triangle strip of 4·(uSegments + 1) vertices: the left half (u = 0,
 // ½) from root to tip, then the right half (u = 1, ½) from tip to root, so the midrib is a
 // vertex column and the V fold shows; the turn at the tip adds two zero-area triangles (all
@@ -32,24 +33,41 @@ out vec3 vLitColor;
 #endif
 flat out uint vBladeIndex;
 
+// Strip batches (core/blade/strip_batch.h): an instance draws STRIP_BATCH_BLADES blades of the
+// LOD's visible list as indexed triangles, vertex id b · (strip vertices) + j being vertex j of
+// the batch's blade b. The draw's survivors are its strip command's instance count, read from
+// the command buffer the cull pass filled (word uSurvivorWord, core::stripSurvivorWord); the
+// blades of the last batch beyond them draw nothing.
+#define STRIP_BATCH_BLADES 64
+layout(binding = 12) uniform usamplerBuffer uCommandTexels;  // the command buffer, R32UI
+uniform int uSurvivorWord;
+
 void main() {
-    uint bladeIndex = visibleBlade(gl_InstanceID);
+    bool folded = lodFolded(uLod);
+    int stripVertices = (folded ? 4 : 2) * (uSegments + 1);  // core::stripVertexCount
+    int batchBlade = gl_VertexID / stripVertices;
+    int stripVertex = gl_VertexID - batchBlade * stripVertices;
+    int drawIndex = gl_InstanceID * STRIP_BATCH_BLADES + batchBlade;
+    if (uint(drawIndex) >= texelFetch(uCommandTexels, uSurvivorWord).r) {
+        gl_Position = vec4(0.0, 0.0, 2.0, 1.0);  // beyond the far plane: clipped
+        return;
+    }
+    uint bladeIndex = visibleBlade(drawIndex);
     Blade blade = fetchBlade(bladeIndex);
     blade.v2W.w *= uWidthScale;
     int halfVertices = 2 * (uSegments + 1);
     int row;
     float u;
-    bool folded = lodFolded(uLod);
     if (!folded) {
         // Same winding as the folded halves: (row, u = 0), (row, u = 1), (row + 1, u = 0), …
-        row = gl_VertexID >> 1;
-        u = float(gl_VertexID & 1);
-    } else if (gl_VertexID < halfVertices) {
-        row = gl_VertexID >> 1;
-        u = (gl_VertexID & 1) != 0 ? 0.5 : 0.0;
+        row = stripVertex >> 1;
+        u = float(stripVertex & 1);
+    } else if (stripVertex < halfVertices) {
+        row = stripVertex >> 1;
+        u = (stripVertex & 1) != 0 ? 0.5 : 0.0;
     } else {
         // Winding stays counter-clockwise in (u, v): outer edge first on the way down.
-        int j = gl_VertexID - halfVertices;
+        int j = stripVertex - halfVertices;
         row = uSegments - (j >> 1);
         u = (j & 1) != 0 ? 0.5 : 1.0;
     }

@@ -29,9 +29,13 @@ layout(std430, binding = 5) writeonly buffer VisibleBuffer {
 };
 // DrawArraysIndirectCommand (count, instanceCount, first, baseInstance) per LOD: strips at
 // [4k .. 4k+3], tessellation patches at [4·LOD_COUNT + 4k ..], then the same for the blades in
-// the morph band from [8·LOD_COUNT] (core::BladeDrawCommands).
+// the morph band from [8·LOD_COUNT] (core::BladeDrawCommands). Then from STRIP_BATCH_WORDS one
+// DrawElementsIndirectCommand (count, instanceCount, firstIndex, baseVertex, baseInstance) per
+// draw class: the strip batches of STRIP_BATCH_BLADES blades (core/blade/strip_batch.h).
+#define STRIP_BATCH_WORDS (16 * LOD_COUNT)
+#define STRIP_BATCH_BLADES 64u
 layout(std430, binding = 6) buffer CommandBuffer {
-    uint commands[16 * LOD_COUNT];
+    uint commands[STRIP_BATCH_WORDS + 10 * LOD_COUNT];
 };
 // Statistics: blades in, culled by patch, orientation, frustum, distance, occlusion, snow.
 layout(std430, binding = 7) buffer CounterBuffer {
@@ -209,8 +213,16 @@ void main() {
     uint groupClass = gl_LocalInvocationIndex;
     if (groupClass < uint(2 * LOD_COUNT) && sSurvivors[groupClass] != 0u) {
         uint strip = groupClass < uint(LOD_COUNT) ? groupClass : groupClass + uint(LOD_COUNT);
-        sBase[groupClass] = atomicAdd(commands[4u * strip + 1u], sSurvivors[groupClass]);
+        uint base = atomicAdd(commands[4u * strip + 1u], sSurvivors[groupClass]);
+        sBase[groupClass] = base;
         atomicAdd(commands[4u * (strip + uint(LOD_COUNT)) + 1u], sSurvivors[groupClass]);
+        // The batches this group's range [base, end) begins (core::stripBatches); over all
+        // groups they add up to the batches of the class's survivors.
+        uint end = base + sSurvivors[groupClass];
+        uint batchesBegun = (end + STRIP_BATCH_BLADES - 1u) / STRIP_BATCH_BLADES -
+                            (base + STRIP_BATCH_BLADES - 1u) / STRIP_BATCH_BLADES;
+        if (batchesBegun != 0u)
+            atomicAdd(commands[STRIP_BATCH_WORDS + 5u * groupClass + 1u], batchesBegun);
     }
     if (uCollectStats != 0 && gl_LocalInvocationIndex < COUNTED_RESULTS &&
         sCounts[gl_LocalInvocationIndex] != 0u)

@@ -1,8 +1,9 @@
 // The levels of detail of the blades and the indirect draw commands the cull pass fills
 // (shaders/include/lod.glsl, shaders/cull.comp), GL-free and header-only so the editor's
 // renderer (render/field_gpu.h) and the reference runtime (editor/runtime) lay them out alike.
-// Per layer: one command per LOD for the instanced strips, then one per LOD for the
-// tessellation patches; the cull pass writes each one's instance count.
+// Per layer: one command per LOD for the strips, then one per LOD for the tessellation patches;
+// the cull pass writes each one's instance count (the strips' is the LOD's survivors: they are
+// drawn in batches by the commands that follow, core/blade/strip_batch.h).
 #pragma once
 
 #include <algorithm>
@@ -87,6 +88,9 @@ inline constexpr unsigned BLADE_TEXELS_UNIT = 8;
 inline constexpr unsigned VISIBLE_TEXELS_UNIT = 9;
 inline constexpr unsigned SHADING_TEXELS_UNIT = 10;
 inline constexpr unsigned TIP_SNOW_TEXELS_UNIT = 11;
+// The command buffer as 32-bit words (R32UI): the strip batches read their survivors there
+// (core/blade/strip_batch.h).
+inline constexpr unsigned COMMAND_TEXELS_UNIT = 12;
 
 // Matches GL's DrawArraysIndirectCommand.
 struct DrawArraysIndirectCommand {

@@ -129,6 +129,9 @@ CullStats CullPass::readStats(const std::vector<FieldGpu>& fields) const {
             stats.drawn += drawn;
             stats.blendingPerLod[lod] += core::blendingAtLod(commands, lod);
         }
+        const core::StripBatchCommands batches = field.readStripBatches();
+        for (std::size_t drawClass = 0; drawClass < batches.size(); ++drawClass)
+            stats.stripBatches[drawClass] += batches[drawClass].instanceCount;
     }
     return stats;
 }

@@ -67,6 +67,9 @@ struct CullStats {
     // Of drawnPerLod, the blades in the LOD's morph band, drawn by the blending program
     // (core::lodBlending).
     std::array<std::size_t, LOD_COUNT> blendingPerLod{};
+    // The strip batches each class is drawn in (core/blade/strip_batch.h): LOD k's blades before
+    // its morph band at [k], those in it at [LOD_COUNT + k], summed over the fields.
+    std::array<std::size_t, 2 * LOD_COUNT> stripBatches{};
     std::size_t culledTotal() const {
         return culledPatch + culledOrientation + culledFrustum + culledDistance + culledOcclusion +
                culledSnow;

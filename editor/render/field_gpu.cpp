@@ -33,14 +33,16 @@ FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
     mPatchBounds = gl::Buffer::fromVector(bounds, "patch bounds " + field.name);
     const std::vector<std::uint32_t> visible(LOD_COUNT * std::max<std::size_t>(mBladeCount, 1), 0);
     mVisible = gl::Buffer::fromVector(visible, "visible blades " + field.name);
-    const CommandArray commands = core::emptyBladeDrawCommands(1);
-    mCommands = gl::Buffer(std::as_bytes(std::span(commands)), "draw commands " + field.name);
+    const core::BladeCommandBuffer commands = core::emptyBladeCommandBuffer(1);
+    mCommands = gl::Buffer(std::as_bytes(std::span(&commands, 1)), "draw commands " + field.name);
     mEmptyVertexArray = gl::VertexArray("no vertices " + field.name);
     mBladeTexels = gl::makeBufferTexture(GL_RGBA32F, mBlades.id(), "blade texels " + field.name);
     mVisibleTexels =
         gl::makeBufferTexture(GL_R32UI, mVisible.id(), "visible blade texels " + field.name);
     mShadingTexels =
         gl::makeBufferTexture(GL_RGBA32F, mShading.id(), "blade shading texels " + field.name);
+    mCommandTexels =
+        gl::makeBufferTexture(GL_R32UI, mCommands.id(), "draw command texels " + field.name);
 }
 
 void FieldGpu::uploadPatches(std::span<const std::uint32_t> patches, bool withShading) {
@@ -65,8 +67,14 @@ void FieldGpu::uploadBlades(std::span<const core::Blade> blades) {
 
 void FieldGpu::resetCommands(int segments) {
     // A buffer update from the CPU, not a read-back: the frame never waits on the GPU.
-    const CommandArray commands = core::emptyBladeDrawCommands(segments);
-    mCommands.update(std::as_bytes(std::span(commands)), 0);
+    const core::BladeCommandBuffer commands = core::emptyBladeCommandBuffer(segments);
+    mCommands.update(std::as_bytes(std::span(&commands, 1)), 0);
+    if (segments != mStripElementSegments) {
+        mStripElements = gl::Buffer::fromVector(core::stripBatchElements(segments),
+                                                "strip batch indices " + mField->name);
+        mEmptyVertexArray.setElementBuffer(mStripElements);
+        mStripElementSegments = segments;
+    }
 }
 
 void FieldGpu::enableTipSnow() {
@@ -103,17 +111,28 @@ core::BladeDrawCommands FieldGpu::readCommands() const {
     return commands;
 }
 
+core::StripBatchCommands FieldGpu::readStripBatches() const {
+    core::StripBatchCommands batches{};
+    if (mBladeCount > 0)
+        glGetNamedBufferSubData(mCommands.id(), GLintptr(core::stripBatchCommandOffset(0)),
+                                sizeof batches, batches.data());
+    return batches;
+}
+
 void FieldGpu::bindForDraw() const {
     mEmptyVertexArray.bind();
     glBindTextureUnit(core::BLADE_TEXELS_UNIT, mBladeTexels.id());
     glBindTextureUnit(core::VISIBLE_TEXELS_UNIT, mVisibleTexels.id());
     glBindTextureUnit(core::SHADING_TEXELS_UNIT, mShadingTexels.id());
     glBindTextureUnit(core::TIP_SNOW_TEXELS_UNIT, mTipSnowTexels.id());
+    glBindTextureUnit(core::COMMAND_TEXELS_UNIT, mCommandTexels.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands.id());
 }
 
 void FieldGpu::drawStrips(const BladePrograms& programs, int segments) const {
-    if (mBladeCount == 0)
+    // The batch commands' counts are those of the last reset's segments: drawn with others'
+    // index lists the blades would tear.
+    if (mBladeCount == 0 || segments != mStripElementSegments)
         return;
     bindForDraw();
     for (const bool blending : {false, true})
@@ -123,8 +142,10 @@ void FieldGpu::drawStrips(const BladePrograms& programs, int segments) const {
             setVisibleList(program, lod, blending);
             program.set("uSegments", lodSegments(segments, lod));
             program.set("uLod", lod);
-            glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(
-                                                        core::stripCommandOffset(lod, blending)));
+            program.set("uSurvivorWord", core::stripSurvivorWord(lod, blending));
+            glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                                   reinterpret_cast<const void*>(
+                                       core::stripBatchCommandOffset(lod, blending)));
         }
 }
 

@@ -15,6 +15,7 @@
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
 #include "blade/blade_draw_commands.h"
+#include "blade/strip_batch.h"
 #include "scene/scene.h"
 
 namespace grass::render {
@@ -58,7 +59,8 @@ public:
     // layer after core::regrowLayerRegion changed them; the rest of the buffers stay.
     void uploadPatches(std::span<const std::uint32_t> patches, bool withShading);
 
-    // Before the cull dispatch: zero survivors, and each LOD's strip vertex count for `segments`.
+    // Before the cull dispatch: zero survivors and batches, each LOD's strip vertex count for
+    // `segments`, and the strip batches' index lists for `segments` (built when they change).
     void resetCommands(int segments);
     // Snow: allocates the per-slot tip-whiteness buffer (once); from then on the cull and the
     // draws bind it. A field never drawn with snow has none.
@@ -70,9 +72,13 @@ public:
     void bindForCull() const;
     // The indirect draw commands as the last cull pass left them (a read-back, for statistics).
     core::BladeDrawCommands readCommands() const;
+    // The strip batch commands as the last cull pass left them (tests).
+    core::StripBatchCommands readStripBatches() const;
 
     // Binds the blade and visible buffers and issues one indirect draw per LOD; the caller has
     // bound `program` and run the cull pass. Sets uVisibleOffset (and, for strips, uSegments).
+    // The strips are drawn in batches (core/blade/strip_batch.h) with the index lists of the
+    // segments the last resetCommands had, which must be `segments`.
     void drawStrips(const BladePrograms& programs, int segments) const;
     void drawTessellated(const BladePrograms& programs) const;
 
@@ -87,9 +93,13 @@ private:
     gl::Buffer mVisible;
     gl::Buffer mCommands;
     gl::Buffer mTipSnow;
-    // Texel views of mBlades, mVisible, mShading and mTipSnow for the draw stages.
-    gl::TextureHandle mBladeTexels, mVisibleTexels, mShadingTexels, mTipSnowTexels;
-    gl::VertexArray mEmptyVertexArray;  // core profile needs a VAO bound to draw
+    gl::Buffer mStripElements;  // core::stripBatchElements(mStripElementSegments)
+    int mStripElementSegments = 0;
+    // Texel views of mBlades, mVisible, mShading, mTipSnow and mCommands for the draw stages.
+    gl::TextureHandle mBladeTexels, mVisibleTexels, mShadingTexels, mTipSnowTexels,
+        mCommandTexels;
+    // No vertex attributes (the blades are read from texels); the strips' element buffer.
+    gl::VertexArray mEmptyVertexArray;
 };
 
 }  // namespace grass::render

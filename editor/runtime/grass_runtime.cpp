@@ -7,6 +7,7 @@
 
 #include "blade/blade_draw_commands.h"
 #include "blade/blade_program_variant.h"
+#include "blade/strip_batch.h"
 #include "physics/physics_step_inputs.h"
 #include "runtime/runtime_gl.h"
 #include "util/dispatch_chunks.h"
@@ -25,7 +26,7 @@ constexpr GLuint WORK_GROUP = 32;  // local_size_x of cull.comp and physics.comp
 constexpr int MAX_STEPS_PER_UPDATE = 8;
 
 using core::LOD_COUNT;
-using Commands = core::BladeDrawCommands;
+using Commands = core::BladeCommandBuffer;
 
 bool isSoftwareRenderer() {
     return core::isSoftwareRendererName(reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
@@ -33,7 +34,7 @@ bool isSoftwareRenderer() {
 
 struct LayerGpu {
     GlBuffer blades, shading, patchBounds, visible, commands, eta, restTips;
-    GlTexelView bladeTexels, shadingTexels, visibleTexels;
+    GlTexelView bladeTexels, shadingTexels, visibleTexels, commandTexels;
     std::size_t slots = 0;
 };
 
@@ -57,7 +58,9 @@ struct Field::State {
     std::vector<MeshGpu> meshes;
     GlBuffer lighting, counters;
     GlBuffer params, substeps, windSources, windCentres, colliders, colliderGroups;
-    GLuint emptyVertexArray = 0;
+    GLuint emptyVertexArray = 0;  // no attributes; the strip batches' element buffer
+    GlBuffer stripElements;       // core::stripBatchElements(stripElementSegments)
+    int stripElementSegments = 0;
     GeometryPath geometry = GeometryPath::Strips;
     bool softwareGl = false;  // the context's renderer, read once at load
     std::vector<std::optional<glm::vec3>> colliderOverride;
@@ -187,11 +190,12 @@ bool Field::load(ExportData data, std::string& error) {
         gpu.patchBounds = GlBuffer::of(layer.patchBounds);
         gpu.visible = GlBuffer::of(
             std::vector<std::uint32_t>(LOD_COUNT * std::max<std::size_t>(gpu.slots, 1), 0u));
-        const Commands commands = core::emptyBladeDrawCommands(1);
-        gpu.commands = GlBuffer(std::as_bytes(std::span(commands)));
+        const Commands commands = core::emptyBladeCommandBuffer(1);
+        gpu.commands = GlBuffer(std::as_bytes(std::span(&commands, 1)));
         gpu.bladeTexels = GlTexelView(gpu.blades, GL_RGBA32F);
         gpu.shadingTexels = GlTexelView(gpu.shading, GL_RGBA32F);
         gpu.visibleTexels = GlTexelView(gpu.visible, GL_R32UI);
+        gpu.commandTexels = GlTexelView(gpu.commands, GL_R32UI);
         // The physics starts as a grown field stands: at rest, η = 0 (core::restTipsAsGrown).
         std::vector<glm::vec4> tips;
         for (const glm::vec3 tip : core::restTipsAsGrown(layer.blades))
@@ -356,10 +360,10 @@ void Field::draw(const View& view) {
     cull.set("uLodBlend", core::LOD_BLEND);
     cull.set("uCollectStats", 0);
     s.counters.bindStorage(COUNTERS);
-    const Commands commands = core::emptyBladeDrawCommands(segments);
+    const Commands commands = core::emptyBladeCommandBuffer(segments);
     for (std::size_t i = 0; i < s.layers.size(); ++i) {
         const LayerGpu& layer = s.layers[i];
-        glNamedBufferSubData(layer.commands.id(), 0, sizeof commands, commands.data());
+        glNamedBufferSubData(layer.commands.id(), 0, sizeof commands, &commands);
         if (layer.slots == 0)
             continue;
         layer.blades.bindStorage(BLADES);
@@ -397,6 +401,12 @@ void Field::draw(const View& view) {
     const int pixelLitLods = core::defaultPixelLitLods(s.softwareGl, samples);
     const GLboolean cullFace = glIsEnabled(GL_CULL_FACE);
     glDisable(GL_CULL_FACE);  // blades are two-sided
+    if (!tessellate && segments != s.stripElementSegments) {
+        // The strips are drawn in batches (core/blade/strip_batch.h) of these index lists.
+        s.stripElements = GlBuffer::of(core::stripBatchElements(segments));
+        glVertexArrayElementBuffer(s.emptyVertexArray, s.stripElements.id());
+        s.stripElementSegments = segments;
+    }
     glBindVertexArray(s.emptyVertexArray);
     if (tessellate)
         glPatchParameteri(GL_PATCH_VERTICES, 1);
@@ -416,6 +426,7 @@ void Field::draw(const View& view) {
         }
         layer.bladeTexels.bind(core::BLADE_TEXELS_UNIT);
         layer.visibleTexels.bind(core::VISIBLE_TEXELS_UNIT);
+        layer.commandTexels.bind(core::COMMAND_TEXELS_UNIT);
         layer.shadingTexels.bind(core::SHADING_TEXELS_UNIT);
         glBindBuffer(GL_DRAW_INDIRECT_BUFFER, layer.commands.id());
         // Each LOD's blades before its morph band, then those in it (listed from the end of
@@ -427,14 +438,16 @@ void Field::draw(const View& view) {
                 program.set("uVisibleOffset",
                             unsigned(core::visibleListStart(lod, layer.slots, blending)));
                 program.set("uVisibleBackwards", blending ? 1 : 0);
-                const std::size_t offset = tessellate ? core::patchCommandOffset(lod, blending)
-                                                      : core::stripCommandOffset(lod, blending);
                 if (tessellate) {
-                    glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(offset));
+                    glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(
+                                                         core::patchCommandOffset(lod, blending)));
                 } else {
                     program.set("uSegments", core::lodSegments(segments, lod));
                     program.set("uLod", lod);
-                    glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(offset));
+                    program.set("uSurvivorWord", core::stripSurvivorWord(lod, blending));
+                    glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                                           reinterpret_cast<const void*>(
+                                               core::stripBatchCommandOffset(lod, blending)));
                 }
             }
     }
@@ -479,7 +492,7 @@ void Field::drawMeshes(const View& view) {
 DrawStats Field::readStats() const {
     DrawStats stats;
     for (const LayerGpu& layer : mState->layers) {
-        Commands commands{};
+        core::BladeDrawCommands commands{};
         glGetNamedBufferSubData(layer.commands.id(), 0, sizeof commands, commands.data());
         for (int lod = 0; lod < LOD_COUNT; ++lod)
             stats.bladesDrawn += core::drawnAtLod(commands, lod);

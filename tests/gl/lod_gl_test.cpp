@@ -11,6 +11,9 @@
 #include <cstdlib>
 
 #include "blade/blade.h"
+#include "blade/strip_batch.h"
+#include "gl/framebuffer.h"
+#include "render/scene_renderer.h"
 #include "gl_context_fixture.h"
 #include "render/offscreen_render.h"
 #include "scatter/patches.h"
@@ -116,6 +119,87 @@ TEST_F(LodTest, BladesInAMorphBandAreDrawnApartWithTheBlend) {
         EXPECT_GT(difference, 0.0) << "the blend moved nothing";
         EXPECT_LT(difference, 1.0);
     }
+}
+
+// The strips are drawn 64 blades to an instance (core/blade/strip_batch.h): the cull counts each
+// class's batches as it lists its blades, so every class of a field whose counts are no multiple
+// of 64 has ceil(blades / 64) batches, and the batches draw what the tessellation path draws
+// (one patch a blade) at every LOD, blending or not: a lost or doubled blade, a batch of the
+// wrong LOD's index list or a partial batch drawing its padding would change the picture.
+TEST_F(LodTest, StripBatchesDrawEveryListedBladeOnce) {
+    auto scene = core::buildScene(planeFieldProject({8.0f, 2, 80.0f, 0.3f, 0.5f}, sourceDir()));
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    const core::OrbitCamera camera = cameraAt(2.5f);
+    const auto strips = renderWith(*scene, camera, 2.0f, render::GeometryPath::Strips, 128);
+    const auto tess = renderWith(*scene, camera, 2.0f, render::GeometryPath::Tessellation, 128);
+    const render::CullStats& stats = strips.lastFrame.cull;
+    for (int lod = 0; lod < core::LOD_COUNT; ++lod) {
+        const std::size_t blending = stats.blendingPerLod[std::size_t(lod)];
+        const std::size_t before = stats.drawnPerLod[std::size_t(lod)] - blending;
+        std::printf("[ lod ] LOD %d: %zu blades in %zu batches, %zu blending in %zu\n", lod,
+                    before, stats.stripBatches[std::size_t(lod)], blending,
+                    stats.stripBatches[std::size_t(core::LOD_COUNT + lod)]);
+        EXPECT_EQ(stats.stripBatches[std::size_t(lod)],
+                  core::stripBatches(std::uint32_t(before)))
+            << lod;
+        EXPECT_EQ(stats.stripBatches[std::size_t(core::LOD_COUNT + lod)],
+                  core::stripBatches(std::uint32_t(blending)))
+            << lod;
+    }
+    EXPECT_GT(stats.stripBatches[1], 1u) << "several batches, or the test shows little";
+    EXPECT_GT(stats.stripBatches[2], 0u) << "the quarter LOD in view";
+    const ImageDifference difference = compareImages(strips.image.pixels, tess.image.pixels, 48);
+    std::printf("[ lod ] batched strips vs tessellation: %.4f of pixels differ, mean %.3f\n",
+                difference.differingShare, difference.meanAbs);
+    EXPECT_LT(difference.differingShare, 0.005);
+    EXPECT_LT(difference.meanAbs, 0.5);
+    EXPECT_EQ(stats.drawnPerLod, tess.lastFrame.cull.drawnPerLod);
+}
+
+// The last batch of a class is partly padding: its blades past the survivors must draw nothing,
+// whatever the visible list holds beyond them. One renderer draws a near view first (long lists),
+// then a far one, whose shorter lists leave the near view's entries behind them: the far picture
+// must be a fresh renderer's (an extra blade of the stale entries would show).
+TEST_F(LodTest, AStripBatchsPaddingDrawsNothing) {
+    core::LoadedProject loaded = planeFieldProject({8.0f, 2, 80.0f, 0.3f, 0.5f}, sourceDir());
+    auto scene = core::buildScene(loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    render::RenderOptions options = render::renderOptionsFor(loaded.project, true);
+    options.geometry = render::GeometryPath::Strips;
+    options.cull.orientation = options.cull.distance = options.cull.occlusion = false;
+    options.cull.collectStats = true;
+    options.cull.lodDistanceM = 2.0f;
+    const auto draw = [&](render::SceneRenderer& renderer, const core::OrbitCamera& camera) {
+        gl::Framebuffer framebuffer(128, 128, 0);
+        renderer.render(camera, 128, 128, framebuffer, options);
+        return std::make_pair(framebuffer.readPixels(), renderer.lastTimings().cull);
+    };
+    auto reused = render::SceneRenderer::create(*scene);
+    auto fresh = render::SceneRenderer::create(*scene);
+    ASSERT_TRUE(reused.ok() && fresh.ok());
+    const auto [nearImage, nearStats] = draw(**reused, cameraAt(1.0f));
+    const auto [farImage, farStats] = draw(**reused, cameraAt(2.5f));
+    const auto [freshImage, freshStats] = draw(**fresh, cameraAt(2.5f));
+    // Stale entries lie in a padding where a class's near list outran a far list that ends
+    // inside a batch.
+    int classesWithStalePadding = 0;
+    for (int lod = 0; lod < core::LOD_COUNT; ++lod) {
+        const std::size_t l = std::size_t(lod);
+        const std::array<std::size_t, 2> nearCounts{
+            nearStats.drawnPerLod[l] - nearStats.blendingPerLod[l], nearStats.blendingPerLod[l]};
+        const std::array<std::size_t, 2> farCounts{
+            farStats.drawnPerLod[l] - farStats.blendingPerLod[l], farStats.blendingPerLod[l]};
+        for (std::size_t c = 0; c < 2; ++c) {
+            std::printf("[ lod ] LOD %d%s: near view %zu blades, far view %zu\n", lod,
+                        c ? " blending" : "", nearCounts[c], farCounts[c]);
+            if (nearCounts[c] > farCounts[c] && farCounts[c] % core::STRIP_BATCH_BLADES != 0)
+                ++classesWithStalePadding;
+        }
+    }
+    ASSERT_GT(classesWithStalePadding, 0) << "the near view must leave entries in a padding";
+    EXPECT_EQ(farStats.drawnPerLod, freshStats.drawnPerLod);
+    const ImageDifference difference = compareImages(farImage.pixels, freshImage.pixels, 0);
+    EXPECT_EQ(difference.differingShare, 0.0) << "mean " << difference.meanAbs;
 }
 
 // The default LOD distance draws nearly what full detail draws: coarse segments only straighten
