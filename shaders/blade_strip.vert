@@ -39,7 +39,7 @@ flat out uint vBladeIndex;
 // the command buffer the cull pass filled (word uSurvivorWord, core::stripSurvivorWord); the
 // blades of the last batch beyond them draw nothing.
 #define STRIP_BATCH_BLADES 64
-layout(binding = 12) uniform usamplerBuffer uCommandTexels;  // the command buffer, R32UI
+layout(binding = 14) uniform usamplerBuffer uCommandTexels;  // the command buffer, R32UI
 uniform int uSurvivorWord;
 
 void main() {

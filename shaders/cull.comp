@@ -1,7 +1,8 @@
 #version 450 core
 // Per-blade culling (SPEC §6, Jahrmann §6). One invocation per blade slot; patches hold a
 // multiple of 32 blades and the buffer is patch-major, so a work-group lies in one patch.
-// Stage 1: the patch's box against the view frustum. Stage 2, per blade: uniform thinning (the
+// Stage 1, once per group before any blade is read: the patch's box against the view frustum (the
+// blades of a patch out of view cost no load). Stage 2, per blade: uniform thinning (the
 // editor's reduced picture while the user interacts, off otherwise), orientation, frustum,
 // distance, occlusion, burial under snow, in that order; a blade is counted by the first test that removes it.
 // Survivors append their index to the visible list of their level of detail (lod.glsl) and bump
@@ -9,7 +10,9 @@
 // its LOD's morph band (lodMorph > 0) is listed from the list's end, backwards, and counted in
 // the LOD's blending commands, drawn by the program that holds the blend
 // (core::lodBlending says why).
-#include "blade.glsl"
+// The blades are read through their texel view (blade_texels.glsl): llvmpipe loads an SSBO's
+// floats lane by lane, each behind a bounds check, and a texel fetch gathers a vec4 a lane.
+#include "blade_texels.glsl"
 #include "cull_rules.glsl"
 #include "lod.glsl"
 #ifdef GRASS_SNOW
@@ -93,6 +96,7 @@ const uint RESULT_SKIPPED = 7u;
 const uint COUNTED_RESULTS = 7u;
 
 shared uint sCounts[COUNTED_RESULTS];
+shared bool sPatchOutside;
 // Per draw class: LOD k's blades at [k], its blending ones at [LOD_COUNT + k].
 shared uint sSurvivors[2 * LOD_COUNT];
 shared uint sBase[2 * LOD_COUNT];
@@ -131,8 +135,20 @@ bool hiddenByOpaque(vec4 clip) {
     return clip.w > opaqueDistance + bias;
 }
 
-uint classify(uint index) {
-    Blade blade = blades[index];
+// A blade of a patch out of view is drawn in no case; only the statistics tell padding, thinned
+// and patch-culled blades apart, so only they read the blade's height.
+uint classifyOutOfView(uint index) {
+    if (uCollectStats == 0 || texelFetch(uBladeTexels, 4 * int(index) + 1).w <= 0.0)
+        return RESULT_SKIPPED;
+    if (uKeepEvery > 1 && index % uint(uKeepEvery) != 0u)
+        return RESULT_DISTANCE;
+    return RESULT_PATCH;
+}
+
+// The blade tests of a patch in view; `root` is the blade's v0 for the LOD.
+uint classify(uint index, out vec3 root) {
+    Blade blade = fetchBlade(index);
+    root = blade.v0Theta.xyz;
     if (blade.v1H.w <= 0.0)
         return RESULT_SKIPPED;
     if (uKeepEvery > 1 && index % uint(uKeepEvery) != 0u)
@@ -141,10 +157,6 @@ uint classify(uint index) {
     vec3 v1 = blade.v1H.xyz;
     vec3 v2 = blade.v2W.xyz;
     vec3 up = blade.upS.xyz;
-    uint patchIndex = index / uPatchSize;
-    if (uTestPatch != 0 &&
-        boxOutsideFrustum(patchBounds[2u * patchIndex].xyz, patchBounds[2u * patchIndex + 1u].xyz))
-        return RESULT_PATCH;
     // Orientation, distance: the formulas live in cull_rules.glsl, which a GL test runs against
     // their C++ twin (core/scene/cull_rules.h).
     vec3 toBlade = v0 - uCameraPosition;
@@ -186,12 +198,22 @@ void main() {
         sCounts[gl_LocalInvocationIndex] = 0u;
     if (gl_LocalInvocationIndex < uint(2 * LOD_COUNT))
         sSurvivors[gl_LocalInvocationIndex] = 0u;
+    if (gl_LocalInvocationIndex == 0u) {
+        uint groupFirst = uFirstBlade + gl_WorkGroupID.x * gl_WorkGroupSize.x;
+        uint patchIndex = groupFirst / uPatchSize;
+        sPatchOutside = uTestPatch != 0 && groupFirst < uBladeCount &&
+                        boxOutsideFrustum(patchBounds[2u * patchIndex].xyz,
+                                          patchBounds[2u * patchIndex + 1u].xyz);
+    }
     barrier();
-    uint result = index < uBladeCount ? classify(index) : RESULT_SKIPPED;
+    vec3 root = vec3(0.0);
+    uint result = index >= uBladeCount ? RESULT_SKIPPED
+                  : sPatchOutside      ? classifyOutOfView(index)
+                                       : classify(index, root);
     int lod = 0;
     bool blending = false;
     if (result == RESULT_VISIBLE) {
-        float eyeDistance = distance(blades[index].v0Theta.xyz, uCameraPosition);
+        float eyeDistance = distance(root, uCameraPosition);
         lod = bladeLod(eyeDistance, uLodDistance);
         blending = lodMorph(eyeDistance, uLodDistance, lod, uLodBlend) > 0.0;
     }

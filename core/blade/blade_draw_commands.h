@@ -89,8 +89,8 @@ inline constexpr unsigned VISIBLE_TEXELS_UNIT = 9;
 inline constexpr unsigned SHADING_TEXELS_UNIT = 10;
 inline constexpr unsigned TIP_SNOW_TEXELS_UNIT = 11;
 // The command buffer as 32-bit words (R32UI): the strip batches read their survivors there
-// (core/blade/strip_batch.h).
-inline constexpr unsigned COMMAND_TEXELS_UNIT = 12;
+// (core/blade/strip_batch.h). Units 12 and 13 hold the snow drift map and the sun's shadow map.
+inline constexpr unsigned COMMAND_TEXELS_UNIT = 14;
 
 // Matches GL's DrawArraysIndirectCommand.
 struct DrawArraysIndirectCommand {

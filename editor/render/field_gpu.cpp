@@ -97,6 +97,7 @@ std::vector<float> FieldGpu::readTipSnow() const {
 
 void FieldGpu::bindForCull() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mBlades.id());
+    glBindTextureUnit(core::BLADE_TEXELS_UNIT, mBladeTexels.id());  // what cull.comp reads
     if (mTipSnow.id() != 0)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, TIP_SNOW_BINDING, mTipSnow.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PATCH_BOUNDS_BINDING, mPatchBounds.id());

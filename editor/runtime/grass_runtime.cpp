@@ -367,6 +367,7 @@ void Field::draw(const View& view) {
         if (layer.slots == 0)
             continue;
         layer.blades.bindStorage(BLADES);
+        layer.bladeTexels.bind(core::BLADE_TEXELS_UNIT);  // cull.comp reads the blades there
         layer.patchBounds.bindStorage(PATCH_BOUNDS);
         layer.visible.bindStorage(VISIBLE);
         layer.commands.bindStorage(COMMANDS);

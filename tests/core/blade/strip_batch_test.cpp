@@ -136,6 +136,13 @@ TEST(StripBatch, TheShadersBatchAsManyBladesAsTheCommands) {
         ASSERT_NE(at, std::string::npos) << file;
         EXPECT_EQ(std::stoi(source.substr(at + define.size())), STRIP_BATCH_BLADES) << file;
     }
+    // blade_strip.vert reads its survivors from the command texels on COMMAND_TEXELS_UNIT.
+    std::ifstream in(test::sourceDir() / "shaders" / "blade_strip.vert");
+    std::ostringstream text;
+    text << in.rdbuf();
+    EXPECT_NE(text.str().find("layout(binding = " + std::to_string(COMMAND_TEXELS_UNIT) +
+                              ") uniform usamplerBuffer uCommandTexels;"),
+              std::string::npos);
 }
 
 }  // namespace
