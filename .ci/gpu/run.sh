@@ -82,7 +82,7 @@ step bench 150 "${G[@]}" bench --cases nature-100k,nature-100k-all,helicopter-10
     --frames 20 --frames-1m 10 --steps 50 --steps-1m 20 --out "$OUT/bench_gpu.json"
 step bench-1080p 60 "${G[@]}" bench --cases nature-1m,nature-1m-all --width 1920 --height 1080 --msaa 0 \
     --frames-1m 10 --steps-1m 20 --out "$OUT/bench_gpu_1080p.json"
-step bench-1080p-strips 40 "${G[@]}" bench --cases nature-1m-all --width 1920 --height 1080 --msaa 0 \
+step bench-1080p-strips 40 "${G[@]}" bench --cases nature-1m,nature-1m-all --width 1920 --height 1080 --msaa 0 \
     --geometry strips --frames-1m 10 --steps-1m 5 --out "$OUT/bench_gpu_1080p_strips.json"
 step bench-10m 120 "${G[@]}" bench --cases nature-10m --frames-1m 5 --steps-1m 10 --out "$OUT/bench_gpu_10m.json"
 
