@@ -3,9 +3,9 @@
 // instance of an instanced draw: Mesa's llvmpipe runs its vertex pipeline (fetch, vertex shader,
 // clipping) once per instance, on the application's thread (read in Mesa's draw module), and
 // GPU vendors advise against instances of a few vertices, which leave their vertex batches
-// mostly empty (not measured here yet); a far blade is 6 or 10 vertices. Drawn in batches, every blade of
-// projects/nature at quarter segments (398k blades, 4 triangles each, llvmpipe, no MSAA) took a
-// median 221 ms of grass pass instead of 249 ms (interleaved runs), with the same picture (0
+// mostly empty (not measured here yet); a far blade is 6 or 10 vertices. Drawn in batches, every
+// blade of projects/nature at quarter segments (398k blades, 4 triangles each, llvmpipe, no MSAA)
+// took a median 221 ms of grass pass instead of 249 ms (interleaved runs), with the same picture (0
 // differing pixels); docs/rendering.md, "Strip batches", has the figures.
 //
 // A batch instance draws vertices [0, STRIP_BATCH_BLADES · V) of one index list, V being a
