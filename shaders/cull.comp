@@ -135,24 +135,21 @@ bool hiddenByOpaque(vec4 clip) {
     return clip.w > opaqueDistance + bias;
 }
 
-// A blade of a patch out of view is drawn in no case; only the statistics tell padding, thinned
-// and patch-culled blades apart, so only they read the blade's height.
-uint classifyOutOfView(uint index) {
-    if (uCollectStats == 0 || texelFetch(uBladeTexels, 4 * int(index) + 1).w <= 0.0)
+// The blade tests, in order; `patchOutside` is the group's stage 1, `root` the blade's v0 for the
+// LOD. A blade of a patch out of view is drawn in no case: only the statistics tell padding,
+// thinned and patch-culled blades apart, so only while they are collected is such a blade read.
+uint classify(uint index, bool patchOutside, out vec3 root) {
+    root = vec3(0.0);
+    if (patchOutside && uCollectStats == 0)
         return RESULT_SKIPPED;
-    if (uKeepEvery > 1 && index % uint(uKeepEvery) != 0u)
-        return RESULT_DISTANCE;
-    return RESULT_PATCH;
-}
-
-// The blade tests of a patch in view; `root` is the blade's v0 for the LOD.
-uint classify(uint index, out vec3 root) {
     Blade blade = fetchBlade(index);
     root = blade.v0Theta.xyz;
     if (blade.v1H.w <= 0.0)
         return RESULT_SKIPPED;
     if (uKeepEvery > 1 && index % uint(uKeepEvery) != 0u)
         return RESULT_DISTANCE;
+    if (patchOutside)
+        return RESULT_PATCH;
     vec3 v0 = blade.v0Theta.xyz;
     vec3 v1 = blade.v1H.xyz;
     vec3 v2 = blade.v2W.xyz;
@@ -206,10 +203,8 @@ void main() {
                                           patchBounds[2u * patchIndex + 1u].xyz);
     }
     barrier();
-    vec3 root = vec3(0.0);
-    uint result = index >= uBladeCount ? RESULT_SKIPPED
-                  : sPatchOutside      ? classifyOutOfView(index)
-                                       : classify(index, root);
+    vec3 root;
+    uint result = index < uBladeCount ? classify(index, sPatchOutside, root) : RESULT_SKIPPED;
     int lod = 0;
     bool blending = false;
     if (result == RESULT_VISIBLE) {

@@ -130,11 +130,10 @@ void FieldGpu::bindForDraw() const {
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands.id());
 }
 
-void FieldGpu::drawStrips(const BladePrograms& programs, int segments) const {
-    // The batch commands' counts are those of the last reset's segments: drawn with others'
-    // index lists the blades would tear.
-    if (mBladeCount == 0 || segments != mStripElementSegments)
-        return;
+void FieldGpu::drawStrips(const BladePrograms& programs) const {
+    const int segments = mStripElementSegments;
+    if (mBladeCount == 0 || segments == 0)
+        return;  // never culled: nothing listed to draw
     bindForDraw();
     for (const bool blending : {false, true})
         for (int lod = 0; lod < LOD_COUNT; ++lod) {

@@ -77,9 +77,9 @@ public:
 
     // Binds the blade and visible buffers and issues one indirect draw per LOD; the caller has
     // bound `program` and run the cull pass. Sets uVisibleOffset (and, for strips, uSegments).
-    // The strips are drawn in batches (core/blade/strip_batch.h) with the index lists of the
-    // segments the last resetCommands had, which must be `segments`.
-    void drawStrips(const BladePrograms& programs, int segments) const;
+    // The strips are drawn in batches (core/blade/strip_batch.h) at the segments of the last
+    // resetCommands, which its commands and index lists were made for.
+    void drawStrips(const BladePrograms& programs) const;
     void drawTessellated(const BladePrograms& programs) const;
 
 private:
@@ -94,7 +94,7 @@ private:
     gl::Buffer mCommands;
     gl::Buffer mTipSnow;
     gl::Buffer mStripElements;  // core::stripBatchElements(mStripElementSegments)
-    int mStripElementSegments = 0;
+    int mStripElementSegments = 0;  // of the last resetCommands; 0: none yet
     // Texel views of mBlades, mVisible, mShading, mTipSnow and mCommands for the draw stages.
     gl::TextureHandle mBladeTexels, mVisibleTexels, mShadingTexels, mTipSnowTexels,
         mCommandTexels;

@@ -134,7 +134,7 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
         if (tessellate)
             field.drawTessellated(programs);
         else
-            field.drawStrips(programs, segments);
+            field.drawStrips(programs);
         mBladesDrawn += field.field().liveBlades;
     }
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
