@@ -31,6 +31,7 @@
 #include <string>
 
 #include "gl/headless_context.h"
+#include "util/contact_sheet.h"
 #include "gl_context_fixture.h"
 #include "render/offscreen_render.h"
 #include "support/image_compare.h"
@@ -48,6 +49,12 @@ constexpr double MAX_MEAN_ABS = 1.0;
 constexpr double MAX_MEAN_ABS_OTHER_COVERAGE = 3.0;
 
 using GoldenTest = GlTest;
+
+// A case's picture averaged over 2×2 pixels: what a screen-space dither of 2×2 pixels looks like
+// from twice as far.
+std::vector<std::uint8_t> halfResolution(const std::vector<std::uint8_t>& pixels) {
+    return boxDownscale(Rgba8Pixels{SIDE, SIDE, pixels}, SIDE / 2, SIDE / 2).pixels;
+}
 
 struct GoldenCase {
     std::string name;
@@ -144,8 +151,8 @@ TEST_F(GoldenTest, EveryCaseMatchesItsReference) {
         const bool otherCoverage =
             golden.technique != core::GrassTechnique::Blades && !gl::isSoftwareRenderer();
         const ImageDifference diff =
-            otherCoverage ? compareImages(downsample2x2(image.pixels, SIDE),
-                                          downsample2x2(reference->pixels, SIDE), PIXEL_THRESHOLD)
+            otherCoverage ? compareImages(halfResolution(image.pixels),
+                                          halfResolution(reference->pixels), PIXEL_THRESHOLD)
                           : compareImages(image.pixels, reference->pixels, PIXEL_THRESHOLD);
         std::printf("[ golden ] %-22s differing %.4f, mean abs %.3f, max %d%s\n",
                     golden.name.c_str(), diff.differingShare, diff.meanAbs, diff.maxChannel,
@@ -195,7 +202,7 @@ TEST_F(GoldenTest, RegressionIsCaught) {
 TEST_F(GoldenTest, ABillboardRegressionIsCaughtAtHalfResolutionToo) {
     auto reference = readRgba8Image(goldenFile("billboards"));
     ASSERT_TRUE(reference.ok()) << reference.error().str();
-    const std::vector<std::uint8_t> expected = downsample2x2(reference->pixels, SIDE);
+    const std::vector<std::uint8_t> expected = halfResolution(reference->pixels);
     const std::vector<GoldenCase> wrong{
         {"", core::BladeShape::Triangle, core::LightingModel::Simple,
          core::GrassTechnique::Billboards},
@@ -203,7 +210,7 @@ TEST_F(GoldenTest, ABillboardRegressionIsCaughtAtHalfResolutionToo) {
     };
     for (const GoldenCase& golden : wrong) {
         const ImageDifference diff = compareImages(
-            downsample2x2(renderCase(golden).pixels, SIDE), expected, PIXEL_THRESHOLD);
+            halfResolution(renderCase(golden).pixels), expected, PIXEL_THRESHOLD);
         std::printf("[ golden ] wrong billboards at half resolution: differing %.4f, mean abs "
                     "%.3f\n",
                     diff.differingShare, diff.meanAbs);

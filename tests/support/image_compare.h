@@ -44,23 +44,4 @@ inline ImageDifference compareImages(const std::vector<std::uint8_t>& a,
     return out;
 }
 
-// An RGBA8 image of side × side pixels averaged over 2×2 blocks (side even): what a
-// screen-space dither of 2×2 pixels looks like from twice as far.
-inline std::vector<std::uint8_t> downsample2x2(const std::vector<std::uint8_t>& image, int side) {
-    const int half = side / 2;
-    std::vector<std::uint8_t> out(std::size_t(half) * std::size_t(half) * 4);
-    for (int y = 0; y < half; ++y)
-        for (int x = 0; x < half; ++x)
-            for (int c = 0; c < 4; ++c) {
-                int sum = 0;
-                for (int dy = 0; dy < 2; ++dy)
-                    for (int dx = 0; dx < 2; ++dx)
-                        sum += image[(std::size_t(2 * y + dy) * std::size_t(side) +
-                                      std::size_t(2 * x + dx)) * 4 + std::size_t(c)];
-                out[(std::size_t(y) * std::size_t(half) + std::size_t(x)) * 4 + std::size_t(c)] =
-                    static_cast<std::uint8_t>((sum + 2) / 4);
-            }
-    return out;
-}
-
 }  // namespace grass::test
