@@ -3,7 +3,8 @@
 // with the same LOD steps the strips use (lod.glsl); across it (u) two segments put a vertex
 // column on the midrib for the V fold of SPEC §7; beyond FOLDED_LODS one segment, which tells the
 // evaluation shader to draw the blade flat, as the strips draw it by its edges alone. Padding
-// blades (h = 0) get level 0: discarded.
+// blades (h = 0) and the patches of a batch past the draw's survivors (index -1,
+// blade_tess.vert) get level 0: discarded.
 #include "blade_texels.glsl"
 #include "lod.glsl"
 
@@ -22,6 +23,12 @@ uniform float uLodBlend;  // 0: LODs switch hard
 void main() {
     int index = vBladeIndex[0];
     tcBladeIndex[gl_InvocationID] = index;
+    if (index < 0) {
+        tcLodMorph = vec2(0.0);
+        gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = 0.0;
+        gl_TessLevelOuter[3] = gl_TessLevelInner[0] = gl_TessLevelInner[1] = 0.0;
+        return;
+    }
     Blade blade = fetchBlade(uint(index));
     float toCamera = distance(blade.v0Theta.xyz, uCameraPosition);
     int lod = bladeLod(toCamera, uLodDistance);

@@ -35,12 +35,9 @@ flat out uint vBladeIndex;
 
 // Strip batches (core/blade/strip_batch.h): an instance draws STRIP_BATCH_BLADES blades of the
 // LOD's visible list as indexed triangles, vertex id b · (strip vertices) + j being vertex j of
-// the batch's blade b. The draw's survivors are its strip command's instance count, read from
-// the command buffer the cull pass filled (word uSurvivorWord, core::stripSurvivorWord); the
-// blades of the last batch beyond them draw nothing.
+// the batch's blade b. The blades of the last batch beyond the draw's survivors draw nothing
+// (blade_texels.glsl's listedInDraw).
 #define STRIP_BATCH_BLADES 64
-layout(binding = 14) uniform usamplerBuffer uCommandTexels;  // the command buffer, R32UI
-uniform int uSurvivorWord;
 
 void main() {
     bool folded = lodFolded(uLod);
@@ -48,7 +45,7 @@ void main() {
     int batchBlade = gl_VertexID / stripVertices;
     int stripVertex = gl_VertexID - batchBlade * stripVertices;
     int drawIndex = gl_InstanceID * STRIP_BATCH_BLADES + batchBlade;
-    if (uint(drawIndex) >= texelFetch(uCommandTexels, uSurvivorWord).r) {
+    if (!listedInDraw(drawIndex)) {
         gl_Position = vec4(0.0, 0.0, 2.0, 1.0);  // beyond the far plane: clipped
         return;
     }

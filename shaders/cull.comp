@@ -232,14 +232,16 @@ void main() {
         uint strip = groupClass < uint(LOD_COUNT) ? groupClass : groupClass + uint(LOD_COUNT);
         uint base = atomicAdd(commands[4u * strip + 1u], sSurvivors[groupClass]);
         sBase[groupClass] = base;
-        atomicAdd(commands[4u * (strip + uint(LOD_COUNT)) + 1u], sSurvivors[groupClass]);
         // The batches this group's range [base, end) begins (core::stripBatches); over all
-        // groups they add up to the batches of the class's survivors.
+        // groups they add up to the batches of the class's survivors. The patches are drawn in
+        // batches of the same size (core::PATCH_BATCH_BLADES).
         uint end = base + sSurvivors[groupClass];
         uint batchesBegun = (end + STRIP_BATCH_BLADES - 1u) / STRIP_BATCH_BLADES -
                             (base + STRIP_BATCH_BLADES - 1u) / STRIP_BATCH_BLADES;
-        if (batchesBegun != 0u)
+        if (batchesBegun != 0u) {
             atomicAdd(commands[STRIP_BATCH_WORDS + 5u * groupClass + 1u], batchesBegun);
+            atomicAdd(commands[4u * (strip + uint(LOD_COUNT)) + 1u], batchesBegun);
+        }
     }
     if (uCollectStats != 0 && gl_LocalInvocationIndex < COUNTED_RESULTS &&
         sCounts[gl_LocalInvocationIndex] != 0u)

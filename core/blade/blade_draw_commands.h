@@ -3,7 +3,8 @@
 // renderer (render/field_gpu.h) and the reference runtime (editor/runtime) lay them out alike.
 // Per layer: one command per LOD for the strips, then one per LOD for the tessellation patches;
 // the cull pass writes each one's instance count (the strips' is the LOD's survivors: they are
-// drawn in batches by the commands that follow, core/blade/strip_batch.h).
+// drawn in batches by the commands that follow, core/blade/strip_batch.h; the patches' is the
+// LOD's batches of PATCH_BATCH_BLADES patches).
 #pragma once
 
 #include <algorithm>
@@ -144,17 +145,33 @@ inline std::uint32_t drawnAtLod(const BladeDrawCommands& commands, int lod) {
            blendingAtLod(commands, lod);
 }
 
+// The tessellation path draws a LOD's blades in batches of PATCH_BATCH_BLADES single-vertex
+// patches an instance (shaders/blade_tess.vert), as the strips are drawn 64 to an instance
+// (core/blade/strip_batch.h), and for the same reason: an implementation pays for every instance
+// (llvmpipe runs its vertex pipeline once per instance; a GPU starts a vertex batch per instance,
+// and one instance per blade was ~40 ns a drawn blade on an H200 whatever its triangles). Not
+// one list of all survivors: llvmpipe drew patch lists beyond ~10k patches wrongly (docs/
+// rendering.md); 64 stay far below. The patches past the survivors in the last batch get
+// tessellation level 0 and are discarded (blade.tesc).
+inline constexpr int PATCH_BATCH_BLADES = 64;
+
+// Batches of PATCH_BATCH_BLADES patches that draw `blades` blades.
+inline std::uint32_t patchBatches(std::uint32_t blades) {
+    return (blades + PATCH_BATCH_BLADES - 1) / PATCH_BATCH_BLADES;
+}
+
 // The commands before the cull pass: no instances; each LOD's strip vertex count for
-// `segments`, one patch vertex per tessellated blade (blade_tess.vert says why).
+// `segments`, one patch vertex per tessellated blade in batches of PATCH_BATCH_BLADES.
 inline BladeDrawCommands emptyBladeDrawCommands(int segments) {
     BladeDrawCommands commands{};
     for (int lod = 0; lod < LOD_COUNT; ++lod) {
         const auto strip = static_cast<std::uint32_t>(
             stripVertexCount(lodSegments(segments, lod), lodFolded(lod)));
         commands[std::size_t(lod)] = {strip, 0, 0, 0};
-        commands[std::size_t(LOD_COUNT + lod)] = {1, 0, 0, 0};
+        const auto patches = static_cast<std::uint32_t>(PATCH_BATCH_BLADES);
+        commands[std::size_t(LOD_COUNT + lod)] = {patches, 0, 0, 0};
         commands[std::size_t(2 * LOD_COUNT + lod)] = {strip, 0, 0, 0};
-        commands[std::size_t(3 * LOD_COUNT + lod)] = {1, 0, 0, 0};
+        commands[std::size_t(3 * LOD_COUNT + lod)] = {patches, 0, 0, 0};
     }
     return commands;
 }

@@ -35,6 +35,8 @@ namespace grass::core {
 // folded: 260 vertices) stay within 16,640 vertex ids; at 2 to 4 segments a batch is 384 to 640
 // vertices, the size of a mesh rather than of a blade.
 inline constexpr int STRIP_BATCH_BLADES = 64;
+static_assert(STRIP_BATCH_BLADES == PATCH_BATCH_BLADES,
+              "cull.comp adds one count of batches begun to the strips' and the patches' commands");
 
 // Matches GL's DrawElementsIndirectCommand.
 struct DrawElementsIndirectCommand {

@@ -142,7 +142,6 @@ void FieldGpu::drawStrips(const BladePrograms& programs) const {
             setVisibleList(program, lod, blending);
             program.set("uSegments", lodSegments(segments, lod));
             program.set("uLod", lod);
-            program.set("uSurvivorWord", core::stripSurvivorWord(lod, blending));
             glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
                                    reinterpret_cast<const void*>(
                                        core::stripBatchCommandOffset(lod, blending)));
@@ -150,11 +149,13 @@ void FieldGpu::drawStrips(const BladePrograms& programs) const {
 }
 
 // LOD `lod`'s visible list as shaders/cull.comp wrote it: from its start, or for the blades in
-// its morph band from its end, backwards.
+// its morph band from its end, backwards; and where its length lies in the command buffer, which
+// tells the padding of the draw's last batch (blade_texels.glsl's listedInDraw).
 void FieldGpu::setVisibleList(const gl::Program& program, int lod, bool blending) const {
     program.set("uVisibleOffset",
                 static_cast<unsigned>(core::visibleListStart(lod, mBladeCount, blending)));
     program.set("uVisibleBackwards", blending ? 1 : 0);
+    program.set("uSurvivorWord", core::stripSurvivorWord(lod, blending));
 }
 
 void FieldGpu::drawTessellated(const BladePrograms& programs) const {

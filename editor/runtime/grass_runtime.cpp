@@ -439,13 +439,13 @@ void Field::draw(const View& view) {
                 program.set("uVisibleOffset",
                             unsigned(core::visibleListStart(lod, layer.slots, blending)));
                 program.set("uVisibleBackwards", blending ? 1 : 0);
+                program.set("uSurvivorWord", core::stripSurvivorWord(lod, blending));
                 if (tessellate) {
                     glDrawArraysIndirect(GL_PATCHES, reinterpret_cast<const void*>(
                                                          core::patchCommandOffset(lod, blending)));
                 } else {
                     program.set("uSegments", core::lodSegments(segments, lod));
                     program.set("uLod", lod);
-                    program.set("uSurvivorWord", core::stripSurvivorWord(lod, blending));
                     glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
                                            reinterpret_cast<const void*>(
                                                core::stripBatchCommandOffset(lod, blending)));

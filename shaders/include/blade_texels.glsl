@@ -32,6 +32,18 @@ uint visibleBlade(int drawIndex) {
                                                        : int(uVisibleOffset) + drawIndex).r;
 }
 
+// The blade draws go in batches of 64 blades an instance (strips: core/blade/strip_batch.h;
+// patches: core::PATCH_BATCH_BLADES), so the last batch of a draw runs past its survivors. Those
+// are its class's strip command's instance count, read from the command buffer the cull pass
+// filled (word uSurvivorWord, core::stripSurvivorWord): a draw index at or beyond it is padding
+// and draws nothing.
+layout(binding = 14) uniform usamplerBuffer uCommandTexels;  // the command buffer, R32UI
+uniform int uSurvivorWord;
+
+bool listedInDraw(int drawIndex) {
+    return uint(drawIndex) < texelFetch(uCommandTexels, uSurvivorWord).r;
+}
+
 // Per-blade lighting inputs baked when the scene is built (core/scene/blade_shading.h,
 // SPEC §10): the Gaussian-blurred terrain normal and the grass AO from neighbour density, and
 // the blade's water (young = wet). One entry per blade slot, same order as the blade buffer.

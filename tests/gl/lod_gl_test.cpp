@@ -124,8 +124,9 @@ TEST_F(LodTest, BladesInAMorphBandAreDrawnApartWithTheBlend) {
 // The strips are drawn 64 blades to an instance (core/blade/strip_batch.h): the cull counts each
 // class's batches as it lists its blades, so every class of a field whose counts are no multiple
 // of 64 has ceil(blades / 64) batches, and the batches draw what the tessellation path draws
-// (one patch a blade) at every LOD, blending or not: a lost or doubled blade, a batch of the
-// wrong LOD's index list or a partial batch drawing its padding would change the picture.
+// (in batches of 64 single-vertex patches) at every LOD, blending or not: a lost or doubled
+// blade, a batch of the wrong LOD's index list, a batch missing on either path or a partial batch
+// drawing its padding would change the picture.
 TEST_F(LodTest, StripBatchesDrawEveryListedBladeOnce) {
     auto scene = core::buildScene(planeFieldProject({8.0f, 2, 80.0f, 0.3f, 0.5f}, sourceDir()));
     ASSERT_TRUE(scene.ok()) << scene.error().str();
@@ -156,50 +157,56 @@ TEST_F(LodTest, StripBatchesDrawEveryListedBladeOnce) {
     EXPECT_EQ(stats.drawnPerLod, tess.lastFrame.cull.drawnPerLod);
 }
 
-// The last batch of a class is partly padding: its blades past the survivors must draw nothing,
-// whatever the visible list holds beyond them. One renderer draws a near view first (long lists),
-// then a far one, whose shorter lists leave the near view's entries behind them: the far picture
-// must be a fresh renderer's (an extra blade of the stale entries would show).
-TEST_F(LodTest, AStripBatchsPaddingDrawsNothing) {
+// The last batch of a class is partly padding, on both paths (64 blades of strips or 64
+// patches an instance): its blades past the survivors must draw nothing, whatever the visible
+// list holds beyond them. One renderer draws a near view first (long lists), then a far one,
+// whose shorter lists leave the near view's entries behind them: the far picture must be a fresh
+// renderer's (an extra blade of the stale entries would show).
+TEST_F(LodTest, ABatchsPaddingDrawsNothing) {
     core::LoadedProject loaded = planeFieldProject({8.0f, 2, 80.0f, 0.3f, 0.5f}, sourceDir());
     auto scene = core::buildScene(loaded);
     ASSERT_TRUE(scene.ok()) << scene.error().str();
-    render::RenderOptions options = render::renderOptionsFor(loaded.project, true);
-    options.geometry = render::GeometryPath::Strips;
-    options.cull.orientation = options.cull.distance = options.cull.occlusion = false;
-    options.cull.collectStats = true;
-    options.cull.lodDistanceM = 2.0f;
-    const auto draw = [&](render::SceneRenderer& renderer, const core::OrbitCamera& camera) {
-        gl::Framebuffer framebuffer(128, 128, 0);
-        renderer.render(camera, 128, 128, framebuffer, options);
-        return std::make_pair(framebuffer.readPixels(), renderer.lastTimings().cull);
-    };
-    auto reused = render::SceneRenderer::create(*scene);
-    auto fresh = render::SceneRenderer::create(*scene);
-    ASSERT_TRUE(reused.ok() && fresh.ok());
-    const auto [nearImage, nearStats] = draw(**reused, cameraAt(1.0f));
-    const auto [farImage, farStats] = draw(**reused, cameraAt(2.5f));
-    const auto [freshImage, freshStats] = draw(**fresh, cameraAt(2.5f));
-    // Stale entries lie in a padding where a class's near list outran a far list that ends
-    // inside a batch.
-    int classesWithStalePadding = 0;
-    for (int lod = 0; lod < core::LOD_COUNT; ++lod) {
-        const std::size_t l = std::size_t(lod);
-        const std::array<std::size_t, 2> nearCounts{
-            nearStats.drawnPerLod[l] - nearStats.blendingPerLod[l], nearStats.blendingPerLod[l]};
-        const std::array<std::size_t, 2> farCounts{
-            farStats.drawnPerLod[l] - farStats.blendingPerLod[l], farStats.blendingPerLod[l]};
-        for (std::size_t c = 0; c < 2; ++c) {
-            std::printf("[ lod ] LOD %d%s: near view %zu blades, far view %zu\n", lod,
-                        c ? " blending" : "", nearCounts[c], farCounts[c]);
-            if (nearCounts[c] > farCounts[c] && farCounts[c] % core::STRIP_BATCH_BLADES != 0)
-                ++classesWithStalePadding;
+    for (const auto path : {render::GeometryPath::Strips, render::GeometryPath::Tessellation}) {
+        SCOPED_TRACE(render::geometryPathLabel(path));
+        render::RenderOptions options = render::renderOptionsFor(loaded.project, true);
+        options.geometry = path;
+        options.cull.orientation = options.cull.distance = options.cull.occlusion = false;
+        options.cull.collectStats = true;
+        options.cull.lodDistanceM = 2.0f;
+        const auto draw = [&](render::SceneRenderer& renderer, const core::OrbitCamera& camera) {
+            gl::Framebuffer framebuffer(128, 128, 0);
+            renderer.render(camera, 128, 128, framebuffer, options);
+            return std::make_pair(framebuffer.readPixels(), renderer.lastTimings().cull);
+        };
+        auto reused = render::SceneRenderer::create(*scene);
+        auto fresh = render::SceneRenderer::create(*scene);
+        ASSERT_TRUE(reused.ok() && fresh.ok());
+        const auto [nearImage, nearStats] = draw(**reused, cameraAt(1.0f));
+        const auto [farImage, farStats] = draw(**reused, cameraAt(2.5f));
+        const auto [freshImage, freshStats] = draw(**fresh, cameraAt(2.5f));
+        // Stale entries lie in a padding where a class's near list outran a far list that ends
+        // inside a batch.
+        int classesWithStalePadding = 0;
+        for (int lod = 0; lod < core::LOD_COUNT; ++lod) {
+            const std::size_t l = std::size_t(lod);
+            const std::array<std::size_t, 2> nearCounts{
+                nearStats.drawnPerLod[l] - nearStats.blendingPerLod[l],
+                nearStats.blendingPerLod[l]};
+            const std::array<std::size_t, 2> farCounts{
+                farStats.drawnPerLod[l] - farStats.blendingPerLod[l], farStats.blendingPerLod[l]};
+            for (std::size_t c = 0; c < 2; ++c) {
+                std::printf("[ lod ] %s LOD %d%s: near view %zu blades, far view %zu\n",
+                            render::geometryPathLabel(path), lod, c ? " blending" : "",
+                            nearCounts[c], farCounts[c]);
+                if (nearCounts[c] > farCounts[c] && farCounts[c] % core::STRIP_BATCH_BLADES != 0)
+                    ++classesWithStalePadding;
+            }
         }
+        ASSERT_GT(classesWithStalePadding, 0) << "the near view must leave entries in a padding";
+        EXPECT_EQ(farStats.drawnPerLod, freshStats.drawnPerLod);
+        const ImageDifference difference = compareImages(farImage.pixels, freshImage.pixels, 0);
+        EXPECT_EQ(difference.differingShare, 0.0) << "mean " << difference.meanAbs;
     }
-    ASSERT_GT(classesWithStalePadding, 0) << "the near view must leave entries in a padding";
-    EXPECT_EQ(farStats.drawnPerLod, freshStats.drawnPerLod);
-    const ImageDifference difference = compareImages(farImage.pixels, freshImage.pixels, 0);
-    EXPECT_EQ(difference.differingShare, 0.0) << "mean " << difference.meanAbs;
 }
 
 // The default LOD distance draws nearly what full detail draws: coarse segments only straighten
@@ -316,8 +323,9 @@ namespace grass::test {
 namespace {
 
 // Regression: llvmpipe drew large non-instanced patch draws wrongly (whole regions missing,
-// streaks between far blades) beyond ~10k patches at level 8; the tessellation path now draws
-// one instanced patch per blade. On a 20k-blade field both paths must draw the same image
+// streaks between far blades) beyond ~10k patches at level 8; the tessellation path draws 64
+// patches an instance instead (core::PATCH_BATCH_BLADES). On a 20k-blade field both paths must
+// draw the same image
 // (the same curve and shape code; tolerance as the golden tests: 0.5 % of pixels may differ).
 TEST_F(LodTest, TessellationMatchesStripsOnALargeField) {
     auto scene = core::buildScene(planeFieldProject({4.0f, 2, 1250.0f, 0.15f, 0.25f}, sourceDir()));

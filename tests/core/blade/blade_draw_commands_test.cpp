@@ -23,7 +23,8 @@ TEST(BladeDrawCommands, NearStripsKeepTheMidribAndFarStripsDrawTheEdgesAlone) {
     EXPECT_EQ(commands[2].count, 6u);   // LOD 2: 2 segments, edges
     for (int lod = 0; lod < LOD_COUNT; ++lod) {
         EXPECT_EQ(commands[std::size_t(lod)].instanceCount, 0u) << "the cull pass fills these";
-        EXPECT_EQ(commands[std::size_t(LOD_COUNT + lod)].count, 1u) << "one patch vertex a blade";
+        // One single-vertex patch a blade, PATCH_BATCH_BLADES blades an instance.
+        EXPECT_EQ(commands[std::size_t(LOD_COUNT + lod)].count, 64u);
     }
     // A single segment never drops below one quad.
     EXPECT_EQ(emptyBladeDrawCommands(1)[2].count, 4u);
@@ -43,7 +44,9 @@ TEST(BladeDrawCommands, BlendingBladesHaveCommandsOfTheirOwn) {
         EXPECT_EQ(patchCommandOffset(lod, true) / sizeof(DrawArraysIndirectCommand),
                   std::size_t(3 * LOD_COUNT + lod));
         EXPECT_EQ(commands[blending].count, commands[plain].count) << lod;
-        EXPECT_EQ(commands[3 * LOD_COUNT + std::size_t(lod)].count, 1u) << lod;
+        EXPECT_EQ(commands[3 * LOD_COUNT + std::size_t(lod)].count,
+                  std::uint32_t(PATCH_BATCH_BLADES))
+            << lod;
         commands[plain].instanceCount = 10u + std::uint32_t(lod);
         commands[blending].instanceCount = 3u;
         EXPECT_EQ(drawnAtLod(commands, lod), 13u + std::uint32_t(lod));

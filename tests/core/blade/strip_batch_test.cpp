@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <random>
 #include <string>
+#include <utility>
 
 #include "blade/strip_batch.h"
 #include "support/test_paths.h"
@@ -125,20 +126,24 @@ TEST(StripBatch, GroupsCountingTheBatchesTheyBeginCountEveryBatchOnce) {
 }
 
 TEST(StripBatch, TheShadersBatchAsManyBladesAsTheCommands) {
-    for (const char* file : {"blade_strip.vert", "cull.comp"}) {
+    const std::pair<const char*, const char*> defines[] = {
+        {"blade_strip.vert", "#define STRIP_BATCH_BLADES "},
+        {"cull.comp", "#define STRIP_BATCH_BLADES "},
+        {"blade_tess.vert", "#define PATCH_BATCH_BLADES "}};
+    for (const auto& [file, define] : defines) {
         const auto source = readFile(test::sourceDir() / "shaders" / file);
         ASSERT_TRUE(source.ok()) << source.error().str();
-        const std::string define = "#define STRIP_BATCH_BLADES ";
         const std::size_t at = source->find(define);
         ASSERT_NE(at, std::string::npos) << file;
-        EXPECT_EQ(std::stoi(source->substr(at + define.size())), STRIP_BATCH_BLADES) << file;
-        // blade_strip.vert reads its survivors from the command texels on COMMAND_TEXELS_UNIT.
-        if (std::string(file) == "blade_strip.vert") {
-            EXPECT_NE(source->find("layout(binding = " + std::to_string(COMMAND_TEXELS_UNIT) +
-                                   ") uniform usamplerBuffer uCommandTexels;"),
-                      std::string::npos);
-        }
+        EXPECT_EQ(std::stoi(source->substr(at + std::string(define).size())), STRIP_BATCH_BLADES)
+            << file;
     }
+    // Both batch paths read their survivors from the command texels on COMMAND_TEXELS_UNIT.
+    const auto texels = readFile(test::sourceDir() / "shaders" / "include" / "blade_texels.glsl");
+    ASSERT_TRUE(texels.ok()) << texels.error().str();
+    EXPECT_NE(texels->find("layout(binding = " + std::to_string(COMMAND_TEXELS_UNIT) +
+                           ") uniform usamplerBuffer uCommandTexels;"),
+              std::string::npos);
 }
 
 }  // namespace
