@@ -1,6 +1,8 @@
 #include "mesh/gltf_loader.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 
@@ -27,7 +29,8 @@ struct MergeStats {
 // Adds one primitive placed by `world`. Vertices without a usable normal get a zero normal
 // and those without UV0 a NaN UV: both are filled in once the whole mesh exists.
 Result<void> addPrimitive(SurfaceMeshBuilder& builder, const PrimitiveData& data,
-                          const glm::dmat4& world, const std::string& meshName, MergeStats& stats) {
+                          const glm::dmat4& world, const glm::dvec3& origin,
+                          const std::string& meshName, MergeStats& stats) {
     const glm::dmat3 normalMatrix = gltf::normalMatrix(world);
     const double det = glm::determinant(glm::dmat3(world));
     const bool hasNormals = !data.normals.empty();
@@ -40,7 +43,7 @@ Result<void> addPrimitive(SurfaceMeshBuilder& builder, const PrimitiveData& data
         if (builder.mesh().n_vertices() >=
             static_cast<std::size_t>(std::numeric_limits<int>::max()))
             return makeError("", "has more vertices than grass can hold");
-        const glm::vec3 position(world * glm::dvec4(data.positions[i], 1.0));
+        const glm::vec3 position(glm::dvec3(world * glm::dvec4(data.positions[i], 1.0)) - origin);
         if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z))
             return makeError("", meshName +
                                      " has non-finite positions once its node transform "
@@ -117,13 +120,51 @@ void fillMissingUvs(SurfaceMesh& mesh) {
     }
 }
 
+// The bounds, in double precision, of every triangle's corners as the instances place them;
+// false when there is no triangle.
+bool tryWorldBounds(const std::vector<MeshInstance>& instances, gltf::DecodedMeshes& decoded,
+                    glm::dvec3& lo, glm::dvec3& hi) {
+    lo = glm::dvec3(std::numeric_limits<double>::infinity());
+    hi = -lo;
+    bool any = false;
+    for (const MeshInstance& instance : instances) {
+        const auto primitives = decoded.primitives(instance.mesh);
+        if (!primitives)
+            continue;  // reported when the primitives are added
+        for (const PrimitiveData& data : **primitives)
+            for (const auto& triangle : data.triangles)
+                for (const std::uint32_t i : triangle) {
+                    const glm::dvec3 p(instance.world * glm::dvec4(data.positions[i], 1.0));
+                    lo = glm::min(lo, p);
+                    hi = glm::max(hi, p);
+                    any = true;
+                }
+    }
+    return any && std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z);
+}
+
+std::string coordinates(const glm::dvec3& p) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.0f, %.0f, %.0f)", p.x, p.y, p.z);
+    return text;
+}
+
 std::string ofPrimitives(std::size_t lacking, std::size_t total) {
     return std::to_string(lacking) + " of " + std::to_string(total) + " primitives";
 }
 
 }  // namespace
 
-Result<GltfImport> loadGltf(const std::filesystem::path& file) {
+glm::dvec3 groundOrigin(const glm::dvec3& lo, const glm::dvec3& hi, double metresPerUnit) {
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    const double farthest = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
+    if (!(farthest * metresPerUnit > GROUND_RECENTRE_BEYOND_M))
+        return glm::dvec3(0.0);
+    return glm::round(centre);
+}
+
+Result<GltfImport> loadGltf(const std::filesystem::path& file, GltfPlacement placement,
+                            double metresPerUnit) {
     const std::string display = file.string();
     auto source = gltf::parseGltfFile(file);
     if (!source)
@@ -140,13 +181,34 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file) {
     SurfaceMeshBuilder builder;
     gltf::PartTable parts(model, source->materialNames);
     MergeStats stats;
+    glm::dvec3 lo, hi;
+    if (placement == GltfPlacement::GroundNearOrigin && tryWorldBounds(*instances, decoded, lo, hi)) {
+        result.origin = groundOrigin(lo, hi, metresPerUnit);
+        if (result.origin != glm::dvec3(0.0)) {
+            const double far = glm::length(0.5 * (lo + hi)) * metresPerUnit;
+            // The gap between neighbouring 32-bit floats at the mesh's largest coordinate.
+            const double largest = std::max({std::abs(result.origin.x), std::abs(result.origin.y),
+                                             std::abs(result.origin.z)});
+            char spacing[32], distance[48];
+            std::snprintf(spacing, sizeof spacing, "%.2g",
+                          std::ldexp(1.0, std::ilogb(largest) - 23) * metresPerUnit);
+            std::snprintf(distance, sizeof distance, "%.0f", far / 1000.0);
+            result.notes.push_back(
+                "lies " + std::string(distance) +
+                " km from the file's origin, where 32-bit positions are " + spacing +
+                " m apart: moved so that the file's point " + coordinates(result.origin) +
+                " is grass's origin (the project's cameras, colliders and wind are placed from "
+                "there; docs/meshes.md)");
+        }
+    }
     for (const MeshInstance& instance : *instances) {
         const auto primitives = decoded.primitives(instance.mesh);
         if (!primitives)
             return withPath(primitives.error());
         const std::string meshName = gltf::describeMesh(model, instance.mesh);
         for (const PrimitiveData& data : **primitives) {
-            const auto added = addPrimitive(builder, data, instance.world, meshName, stats);
+            const auto added =
+                addPrimitive(builder, data, instance.world, result.origin, meshName, stats);
             if (!added)
                 return withPath(added.error());
             parts.addFaces(instance.node, instance.mesh, data.material, builder.mesh().n_faces());

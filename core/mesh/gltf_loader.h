@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "mesh/surface_mesh.h"
 #include "util/result.h"
 
@@ -22,9 +24,35 @@ struct GltfImport {
     bool hasNormals = false;         // every merged primitive carried NORMAL
     bool hasUv = false;              // every merged primitive carried TEXCOORD_0
     std::vector<std::string> notes;  // things skipped or generated, one line each
+    // The point of the file (its units and axes) that the mesh's (0, 0, 0) stands for: zero,
+    // unless a ground mesh far from the file's origin was moved next to it (GltfPlacement).
+    glm::dvec3 origin{0.0};
 };
 
-Result<GltfImport> loadGltf(const std::filesystem::path& file);
+// A ground mesh (the surface the grass grows on) lying farther than this from its file's origin
+// is moved next to grass's origin. 32-bit floats are 2 to 4 mm apart at 32 km, a fraction of a
+// blade's width; a georeferenced terrain (UTM: 10^5 to 10^7 m) would have its blades snapped to
+// a grid of centimetres to a metre, in stripes, and the depth buffer too coarse for the
+// occlusion test. Game-world chunks within ±32 km stay where their file puts them.
+inline constexpr double GROUND_RECENTRE_BEYOND_M = 32768.0;
+
+enum class GltfPlacement {
+    AsInFile,  // props and colliders: placed by their own transforms in the project
+    // The project's ground mesh: when its bounds' centre lies beyond GROUND_RECENTRE_BEYOND_M of
+    // the origin (judged in metres with `metresPerUnit`), every vertex is moved by minus the
+    // centre rounded to whole file units, in double precision before it becomes a float, and
+    // GltfImport::origin says by how much (with a note). Deterministic: the same file always
+    // lands at the same place, so the project's cameras, colliders and wind stay put.
+    GroundNearOrigin,
+};
+
+Result<GltfImport> loadGltf(const std::filesystem::path& file,
+                            GltfPlacement placement = GltfPlacement::AsInFile,
+                            double metresPerUnit = 1.0);
+
+// The rule of GltfPlacement::GroundNearOrigin: zero, or the centre of the bounds [lo, hi] (file
+// units) rounded to whole units when it lies beyond GROUND_RECENTRE_BEYOND_M.
+glm::dvec3 groundOrigin(const glm::dvec3& lo, const glm::dvec3& hi, double metresPerUnit);
 
 // The files a .gltf names by relative URI (buffers and images; data: URIs and anything outside
 // its folder left out), as paths next to it. Empty for a .glb or a file that cannot be read.

@@ -114,7 +114,7 @@ Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std
     auto path = resolveAssetPath(loaded.folder, source.file, "/mesh/file");
     if (!path)
         return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
-    auto imported = loadGltf(*path);
+    auto imported = loadGltf(*path, GltfPlacement::GroundNearOrigin, source.metresPerUnit);
     if (!imported)
         return fromProjectField(loaded, "/mesh/file", imported.error());
     if (notes)

@@ -53,7 +53,8 @@ Result<void> copyAssetFiles(const fs::path& from, const fs::path& to) {
 }
 
 Result<core::LoadedProject> newProjectFromMesh(const fs::path& meshFile, std::size_t targetBlades) {
-    auto imported = core::loadGltf(meshFile);
+    // A new project's mesh is in metres (projectForMesh), the unit its placement is judged in.
+    auto imported = core::loadGltf(meshFile, core::GltfPlacement::GroundNearOrigin);
     if (!imported)
         return imported.error();
     auto loaded = core::projectForMesh(meshFile, imported->mesh, targetBlades);

@@ -57,12 +57,12 @@ Result<core::LoadedProject> loadMeshInput(const RenderArgs& args, core::Scene* s
         inputs.push_back({realPath(part), part, "--mesh file's " + part.filename().string()});
     if (auto refused = refuseOutputsOverInputs(args, inputs); !refused)
         return refused.error();
-    auto imported = core::loadGltf(args.mesh);
-    if (!imported)
-        return imported.error();
     // Checked by checkRenderArgs.
     const float metresPerUnit = core::parseMeshUnit(args.unit).value();
     const core::UpAxis up = core::parseUpAxis(args.up).value();
+    auto imported = core::loadGltf(args.mesh, core::GltfPlacement::GroundNearOrigin, metresPerUnit);
+    if (!imported)
+        return imported.error();
     core::applyMeshFrame(imported->mesh, metresPerUnit, up);
     auto loaded =
         core::projectForMesh(args.mesh, imported->mesh, static_cast<std::size_t>(args.blades));

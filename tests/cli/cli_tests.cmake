@@ -91,7 +91,8 @@ endif()
 grass_cli_test(mesh_info_gltf_json OK --no-stderr
     --stdout "^\\{\"vertices\":4,\"triangles\":2,\"area\":36(\\.0+)?,"
     --stdout "\"has_normals\":true,\"has_uv\":true,"
-    --stdout "\"bounds\":\\[\\[-2(\\.0+)?,0(\\.0+)?,-3(\\.0+)?\\],\\[4(\\.0+)?,0(\\.0+)?,3(\\.0+)?\\]\\]\\}$"
+    --stdout "\"bounds\":\\[\\[-2(\\.0+)?,0(\\.0+)?,-3(\\.0+)?\\],\\[4(\\.0+)?,0(\\.0+)?,3(\\.0+)?\\]\\],"
+    --stdout "\"ground_origin\":\\[0(\\.0+)?,0(\\.0+)?,0(\\.0+)?\\]\\}$"
     -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/quad.gltf --json)
 grass_cli_test(mesh_info_gltf_text OK --no-stderr
     --stdout "quad\\.gltf$" --stdout "^  vertices +4$" --stdout "^  triangles +2$"
@@ -115,9 +116,17 @@ grass_cli_test(mesh_info_meshopt OK --no-stderr
 grass_cli_test(mesh_info_glb_json OK --no-stderr
     --stdout "^\\{\"vertices\":8,\"triangles\":12,\"area\":6(\\.0+)?,"
     --stdout "\"has_normals\":false,\"has_uv\":false,"
-    --stdout "\"bounds\":\\[\\[-0\\.5,0\\.5,-0\\.5\\],\\[0\\.5,1\\.5,0\\.5\\]\\]\\}$"
+    --stdout "\"bounds\":\\[\\[-0\\.5,0\\.5,-0\\.5\\],\\[0\\.5,1\\.5,0\\.5\\]\\],"
+    --stdout "\"ground_origin\":\\[0(\\.0+)?,0(\\.0+)?,0(\\.0+)?\\]\\}$"
     -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/cube.glb --json)
 
+# far_quad.gltf: quad.gltf placed at map coordinates (512345, 120, 5412345). Its bounds stay in
+# the file's frame; as a ground it is moved next to grass's origin, which mesh-info names.
+grass_cli_test(mesh_info_far_ground OK
+    --stdout "^  bounds +\\[512342 120 5412342\\] \\.\\. \\[512348 120 5412348\\]$"
+    --stdout "^  origin +\\[512345 120 5412345\\] of the file is grass's origin as a ground$"
+    --stderr "^note: lies 5437 km from the file's origin, where 32-bit positions are 0\\.5 m apart: moved"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/far_quad.gltf)
 # --- render (GL) -----------------------------------------------------------------------------
 grass_cli_test(render_meadow GL OK --png ${GRASS_CLI_TMP}/meadow.png 160 90
     --stdout "^wrote .*meadow\\.png \\(160x90\\)$" --stdout "^  frames +1,"
@@ -136,6 +145,12 @@ grass_cli_test(render_egl_platform_bad ERROR "GRASS_EGL_PLATFORM" --also "auto, 
 grass_cli_test(render_mesh GL OK --png ${GRASS_CLI_TMP}/quad.png 128 128
     --stdout "^wrote .*quad\\.png \\(128x128\\)$" --stdout "^  scene +2 triangles, [1-9][0-9]* blades"
     -- ${GRASS_BIN} render --mesh ${GRASS_CLI_GLTF}/quad.gltf --out ${GRASS_CLI_TMP}/quad.png
+       --width 128 --height 128 --frames 1 --blades 2000)
+# The quad at map coordinates renders as the quad at the origin does, with the note.
+grass_cli_test(render_mesh_far GL OK --png ${GRASS_CLI_TMP}/far-quad.png 128 128
+    --stdout "^  scene +2 triangles, [1-9][0-9]* blades"
+    --stderr "^note: .*far_quad\\.gltf: lies 5437 km from the file's origin"
+    -- ${GRASS_BIN} render --mesh ${GRASS_CLI_GLTF}/far_quad.gltf --out ${GRASS_CLI_TMP}/far-quad.png
        --width 128 --height 128 --frames 1 --blades 2000)
 # A model in millimetres with +Z up: scaled and turned, a field still grows and renders.
 grass_cli_test(render_mesh_mm_zup GL OK --png ${GRASS_CLI_TMP}/quad-mm.png 96 64

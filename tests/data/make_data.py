@@ -74,6 +74,11 @@ def dump(doc):
 
 quad = dump(quad_doc())
 write("gltf/quad.gltf", quad)
+# The same quad placed at map coordinates (UTM-like: 512 km east, 5412 km north, 120 m up): as
+# a project's ground, grass moves it next to its origin (core::GltfPlacement).
+far_quad = quad_doc()
+far_quad["nodes"][0]["translation"] = [512345, 120, 5412345]
+write("gltf/far_quad.gltf", dump(far_quad))
 # Cut in the middle of the JSON.
 write("gltf/truncated.gltf", quad[: len(quad) // 2])
 # Index 7 in a primitive with 4 vertices.

@@ -23,7 +23,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             fuzz::writeBytes(fuzz::scratchDir() / "scene.bin", {nul + 1, data + size});
     }
     fuzz::writeBytes(file, bytes);
-    const auto imported = core::loadGltf(file);
+    // As a project's ground: the placement that also measures the bounds and may move them.
+    const auto imported = core::loadGltf(file, core::GltfPlacement::GroundNearOrigin);
     if (!imported) {
         fuzz::checkError(imported.error());
     } else {

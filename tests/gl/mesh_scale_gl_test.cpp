@@ -13,6 +13,7 @@
 #include "render/offscreen_render.h"
 #include "scene/scene.h"
 #include "support/gltf_writer.h"
+#include "support/image_compare.h"
 #include "support/test_paths.h"
 #include "util/image_file.h"
 
@@ -37,18 +38,21 @@ GltfPrimitive hillyTerrain(float size, bool zUp) {
     return p;
 }
 
-double grassShare(const fs::path& file, float metresPerUnit, core::UpAxis up) {
-    auto imported = core::loadGltf(file);
+// `grass render --mesh` of the file: the default field and camera, 320 × 180, written next to the
+// file for a look.
+gl::Rgba8Image renderMeshFile(const fs::path& file, float metresPerUnit, core::UpAxis up,
+                              core::GltfPlacement placement = core::GltfPlacement::GroundNearOrigin) {
+    auto imported = core::loadGltf(file, placement, metresPerUnit);
     EXPECT_TRUE(imported.ok()) << imported.error().str();
     if (!imported)
-        return 0.0;
+        return {};
     core::applyMeshFrame(imported->mesh, metresPerUnit, up);
     auto loaded = core::projectForMesh(file, imported->mesh, 20000);
     EXPECT_TRUE(loaded.ok()) << loaded.error().str();
     auto scene = core::buildSceneFromMesh(*loaded, std::move(imported->mesh), {});
     EXPECT_TRUE(scene.ok()) << scene.error().str();
     if (!loaded || !scene)
-        return 0.0;
+        return {};
     auto camera = render::projectCamera(loaded->project, "");
     render::OffscreenRequest request;
     request.width = 320;
@@ -58,13 +62,16 @@ double grassShare(const fs::path& file, float metresPerUnit, core::UpAxis up) {
     auto result = render::renderOffscreen(*scene, *camera, request);
     EXPECT_TRUE(result.ok()) << result.error().str();
     if (!result)
-        return 0.0;
-    // Next to the mesh for a look.
+        return {};
     fs::path picture = file;
     EXPECT_TRUE(writeRgba8Image(picture.replace_extension(".png"), result->image.width,
                                 result->image.height, result->image.pixels)
                     .ok());
-    return grassPixelShare(result->image.pixels);
+    return std::move(result->image);
+}
+
+double grassShare(const fs::path& file, float metresPerUnit, core::UpAxis up) {
+    return grassPixelShare(renderMeshFile(file, metresPerUnit, up).pixels);
 }
 
 TEST_F(MeshScaleTest, TheDefaultFieldShowsGrassAtEveryScale) {
@@ -85,6 +92,45 @@ TEST_F(MeshScaleTest, TheDefaultFieldShowsGrassAtEveryScale) {
     const double share = grassShare(cad, 0.001f, core::UpAxis::Z);
     std::printf("1 m terrain in mm, +Z up: grass covers %.3f\n", share);
     EXPECT_GT(share, 0.07);
+}
+
+}  // namespace
+}  // namespace grass::test
+
+namespace grass::test {
+namespace {
+
+// A georeferenced terrain (GIS exports place a tile at its map coordinates: here UTM-like,
+// 512 km east and 5412 km north, by its node's translation) draws as the same terrain at the
+// origin: the loader moves a ground that far out next to grass's origin in double precision
+// (core::GltfPlacement). Tolerance as the golden tests (0.5 % of pixels beyond 48 levels): the
+// two scenes differ only by the rounding of a translation. Left where the file puts it, 32-bit
+// floats are 0.5 m apart there: blades snap onto each other and bare patches show.
+TEST_F(MeshScaleTest, AGeoreferencedTerrainDrawsAsTheSameTerrainAtTheOrigin) {
+    const fs::path dir = scratchDir("mesh_far");
+    const fs::path near = dir / "terrain_here.glb";
+    const fs::path far = dir / "terrain_utm.glb";
+    writeGltf(near, singleMeshAsset(hillyTerrain(100.0f, false)), BufferStorage::Glb);
+    GltfAsset utm = singleMeshAsset(hillyTerrain(100.0f, false));
+    utm.nodes[0].translation = {512345.0f, 120.0f, 5412345.0f};
+    writeGltf(far, utm, BufferStorage::Glb);
+    const gl::Rgba8Image here = renderMeshFile(near, 1.0f, core::UpAxis::Y);
+    const gl::Rgba8Image moved = renderMeshFile(far, 1.0f, core::UpAxis::Y);
+    ASSERT_FALSE(here.pixels.empty() || moved.pixels.empty());
+    const ImageDifference difference = compareImages(here.pixels, moved.pixels, 48);
+    std::printf("georeferenced terrain moved to the origin against the same at the origin: "
+                "%.4f of pixels differ, mean %.3f\n",
+                difference.differingShare, difference.meanAbs);
+    EXPECT_LT(difference.differingShare, 0.005);
+    EXPECT_GT(grassPixelShare(moved.pixels), 0.07);
+    const gl::Rgba8Image asInFile =
+        renderMeshFile(far, 1.0f, core::UpAxis::Y, core::GltfPlacement::AsInFile);
+    const ImageDifference unmoved = compareImages(here.pixels, asInFile.pixels, 48);
+    std::printf("left at its map coordinates: %.4f of pixels differ, mean %.3f\n",
+                unmoved.differingShare, unmoved.meanAbs);
+    // Measured 1.5 % of pixels, mean 2.8 levels: bare patches where blades collapsed onto each
+    // other, three times what the tolerance above allows.
+    EXPECT_GT(unmoved.differingShare, 0.005) << "the precision loss this guards against";
 }
 
 }  // namespace

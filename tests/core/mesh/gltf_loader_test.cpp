@@ -133,6 +133,59 @@ GltfAsset hierarchyAsset() {
     return asset;
 }
 
+// A ground tile placed at map coordinates (UTM-like: 512 km east, 5412 km north) by its node,
+// over a grid of 1.3 cm cells. Loaded as a project's ground it is moved next to grass's origin
+// in double precision: every vertex keeps its cell to 1e-6 m and the origin is the centre
+// rounded to whole units. Loaded as it is (props), 32-bit floats are 0.5 m apart there and the
+// cells collapse. Within 32 km, or at 5.4 km (the same numbers in millimetres), nothing moves.
+TEST(GltfLoader, AGroundFarFromItsOriginIsMovedNextToGrasssOrigin) {
+    const fs::path dir = test::scratchDir("gltf_far");
+    const auto tileAt = [&](const std::string& name, glm::vec3 translation) {
+        GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(0.13f, 0.13f, 10));
+        asset.nodes[0].translation = translation;
+        test::writeGltf(dir / name, asset);
+        return dir / name;
+    };
+    const fs::path utm = tileAt("utm.gltf", {512345.0f, 120.0f, 5412345.0f});
+    const GltfImport here = loadOk(tileAt("here.gltf", glm::vec3(0.0f)));
+
+    const auto moved = loadGltf(utm, GltfPlacement::GroundNearOrigin, 1.0);
+    ASSERT_TRUE(moved.ok()) << moved.error().str();
+    EXPECT_EQ(moved->origin, glm::dvec3(512345.0, 120.0, 5412345.0));
+    EXPECT_TRUE(anyNoteContains(*moved, "5437 km from the file's origin"));
+    EXPECT_TRUE(anyNoteContains(*moved, "(512345, 120, 5412345)"));
+    ASSERT_EQ(moved->mesh.n_vertices(), here.mesh.n_vertices());
+    float worst = 0.0f;
+    for (const auto vh : here.mesh.vertices())
+        worst = std::max(worst, glm::length(point(moved->mesh, vh) - point(here.mesh, vh)));
+    EXPECT_LT(worst, 1e-6f);
+
+    const GltfImport asInFile = loadOk(utm);
+    EXPECT_EQ(asInFile.origin, glm::dvec3(0.0));
+    EXPECT_FALSE(anyNoteContains(asInFile, "km from the file's origin"));
+    const Bounds collapsed = meshBounds(asInFile.mesh);
+    EXPECT_EQ(collapsed.max.z - collapsed.min.z, 0.0f) << "0.13 m within one 0.5 m float step";
+
+    for (const auto& [file, metresPerUnit] :
+         {std::pair{tileAt("chunk.gltf", {30000.0f, 0.0f, -30000.0f}), 1.0},
+          std::pair{utm, 0.001}}) {
+        const auto kept = loadGltf(file, GltfPlacement::GroundNearOrigin, metresPerUnit);
+        ASSERT_TRUE(kept.ok()) << kept.error().str();
+        EXPECT_EQ(kept->origin, glm::dvec3(0.0)) << file;
+        EXPECT_EQ(meshBounds(kept->mesh), meshBounds(loadOk(file).mesh)) << file;
+    }
+}
+
+// The rule, at its edge: beyond 32 768 m along any axis (in metres), the centre rounded.
+TEST(GltfLoader, GroundOriginIsTheRoundedCentreBeyond32Km) {
+    EXPECT_EQ(groundOrigin(glm::dvec3(32760.0), glm::dvec3(32776.0), 1.0), glm::dvec3(0.0));
+    EXPECT_EQ(groundOrigin(glm::dvec3(32770.0), glm::dvec3(32776.0), 1.0), glm::dvec3(32773.0));
+    EXPECT_EQ(groundOrigin({-1.0, 0.0, -40000.4}, {1.0, 2.0, -40000.0}, 1.0),
+              glm::dvec3(0.0, 1.0, -40000.0));
+    EXPECT_EQ(groundOrigin(glm::dvec3(4e7), glm::dvec3(4e7 + 2.0), 0.001), glm::dvec3(4e7 + 1.0));
+    EXPECT_EQ(groundOrigin(glm::dvec3(4e6), glm::dvec3(4e6 + 2.0), 0.001), glm::dvec3(0.0));
+}
+
 TEST(GltfLoader, AppliesNodeHierarchyTransforms) {
     const fs::path file = test::scratchDir("gltf_hierarchy") / "scene.gltf";
     const GltfAsset asset = hierarchyAsset();
