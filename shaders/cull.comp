@@ -20,6 +20,8 @@
 #endif
 
 layout(local_size_x = 32) in;
+// After the group size, which dispatch_grid.glsl reads.
+#include "dispatch_grid.glsl"
 
 // Per patch: min (xyz, w unused) then max.
 layout(std430, binding = 1) readonly buffer PatchBoundsBuffer {
@@ -60,7 +62,6 @@ uniform float uProj22;
 uniform float uProj32;
 uniform uint uBladeCount;
 // Fields beyond 65535 work groups take several dispatches; each starts at this blade slot.
-uniform uint uFirstBlade;
 uniform uint uPatchSize;
 uniform int uTestPatch;
 uniform int uTestOrientation;
@@ -190,13 +191,13 @@ uint classify(uint index, bool patchOutside, out vec3 root) {
 }
 
 void main() {
-    uint index = uFirstBlade + gl_GlobalInvocationID.x;
+    uint index = invocationInPass();
     if (gl_LocalInvocationIndex < COUNTED_RESULTS)
         sCounts[gl_LocalInvocationIndex] = 0u;
     if (gl_LocalInvocationIndex < uint(2 * LOD_COUNT))
         sSurvivors[gl_LocalInvocationIndex] = 0u;
     if (gl_LocalInvocationIndex == 0u) {
-        uint groupFirst = uFirstBlade + gl_WorkGroupID.x * gl_WorkGroupSize.x;
+        uint groupFirst = workGroupInPass() * gl_WorkGroupSize.x;
         uint patchIndex = groupFirst / uPatchSize;
         sPatchOutside = uTestPatch != 0 && groupFirst < uBladeCount &&
                         boxOutsideFrustum(patchBounds[2u * patchIndex].xyz,

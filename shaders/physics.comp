@@ -5,10 +5,10 @@
 layout(local_size_x = 32) in;
 
 #include "blade.glsl"
+#include "dispatch_grid.glsl"
 #include "physics.glsl"
 
-// The blades of this dispatch are firstBlade + gl_GlobalInvocationID.x below bladeCount.
-uniform uint firstBlade;
+// One invocation per blade slot below bladeCount, dispatched as a grid (dispatch_grid.glsl).
 uniform uint bladeCount;
 // core::substepCount(params), computed on the CPU (see physics.glsl).
 uniform uint substepCount;
@@ -219,8 +219,8 @@ void stepBlade(inout Blade blade, inout float bladeEta, vec3 restTipIn, float ex
 }
 
 void main() {
-    uint index = firstBlade + gl_GlobalInvocationID.x;
-    if (gl_GlobalInvocationID.x >= bladeCount - min(firstBlade, bladeCount))
+    uint index = invocationInPass();
+    if (index >= bladeCount)
         return;
     const Blade original = physicsBlades[index];
     const float originalEta = eta[index];

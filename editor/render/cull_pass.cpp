@@ -6,7 +6,7 @@
 
 #include "gl/scoped_framebuffer.h"
 #include "util/assert.h"
-#include "util/dispatch_chunks.h"
+#include "util/dispatch_grid.h"
 
 namespace grass::render {
 
@@ -93,11 +93,8 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
         field.bindForCull();
         program.set("uBladeCount", static_cast<unsigned>(field.bladeCount()));
         program.set("uPatchSize", std::max(field.patchSize(), 1u));
-        core::forEachDispatchChunk(field.bladeCount(), WORK_GROUP_SIZE,
-                                   [&](std::size_t first, std::uint32_t groups) {
-                                       program.set("uFirstBlade", static_cast<unsigned>(first));
-                                       glDispatchCompute(groups, 1, 1);
-                                   });
+        const core::DispatchGrid grid = core::dispatchGrid(field.bladeCount(), WORK_GROUP_SIZE);
+        glDispatchCompute(grid.x, grid.y, 1);
     }
     glBindTextureUnit(0, 0);
     // The draws read the commands (indirect) and the visible lists and tip snow (texel fetches)

@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "util/assert.h"
-#include "util/dispatch_chunks.h"
+#include "util/dispatch_grid.h"
 
 namespace grass::render {
 namespace {
@@ -109,11 +109,8 @@ void PhysicsGpu::step(gl::BufferRef bladeBuffer, std::size_t bladeCount,
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, mColliderGroups.id());
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, mSubsteps.id());
-    core::forEachDispatchChunk(bladeCount, LOCAL_SIZE,
-                               [&](std::size_t first, std::uint32_t groups) {
-                                   mProgram.set("firstBlade", static_cast<unsigned>(first));
-                                   glDispatchCompute(groups, 1, 1);
-                               });
+    const core::DispatchGrid grid = core::dispatchGrid(bladeCount, LOCAL_SIZE);
+    glDispatchCompute(grid.x, grid.y, 1);
     // Blades feed the cull (SSBO reads), the draws (texel fetches) and read-backs; η feeds the
     // next step.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |

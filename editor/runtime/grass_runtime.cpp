@@ -10,7 +10,7 @@
 #include "blade/strip_batch.h"
 #include "physics/physics_step_inputs.h"
 #include "runtime/runtime_gl.h"
-#include "util/dispatch_chunks.h"
+#include "util/dispatch_grid.h"
 #include "util/software_renderer.h"
 
 namespace grass::runtime {
@@ -317,11 +317,8 @@ void Field::step() {
             layer.eta.bindStorage(ETA);
             layer.restTips.bindStorage(REST_TIPS);
             s.physics.set("bladeCount", unsigned(layer.slots));
-            core::forEachDispatchChunk(layer.slots, WORK_GROUP,
-                                       [&](std::size_t first, std::uint32_t groups) {
-                                           s.physics.set("firstBlade", unsigned(first));
-                                           glDispatchCompute(groups, 1, 1);
-                                       });
+            const core::DispatchGrid grid = core::dispatchGrid(layer.slots, WORK_GROUP);
+            glDispatchCompute(grid.x, grid.y, 1);
         }
         // The cull reads the blades as an SSBO, the draws through texel views.
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
@@ -373,11 +370,8 @@ void Field::draw(const View& view) {
         layer.commands.bindStorage(COMMANDS);
         cull.set("uBladeCount", unsigned(layer.slots));
         cull.set("uPatchSize", std::max(s.data.layers[i].patchSize, 1u));
-        core::forEachDispatchChunk(layer.slots, WORK_GROUP,
-                                   [&](std::size_t first, std::uint32_t groups) {
-                                       cull.set("uFirstBlade", unsigned(first));
-                                       glDispatchCompute(groups, 1, 1);
-                                   });
+        const core::DispatchGrid grid = core::dispatchGrid(layer.slots, WORK_GROUP);
+        glDispatchCompute(grid.x, grid.y, 1);
     }
     // The draws read the commands (indirect) and the visible lists (texel views).
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
