@@ -155,11 +155,6 @@ inline std::uint32_t drawnAtLod(const BladeDrawCommands& commands, int lod) {
 // tessellation level 0 and are discarded (blade.tesc).
 inline constexpr int PATCH_BATCH_BLADES = 64;
 
-// Batches of PATCH_BATCH_BLADES patches that draw `blades` blades.
-inline std::uint32_t patchBatches(std::uint32_t blades) {
-    return (blades + PATCH_BATCH_BLADES - 1) / PATCH_BATCH_BLADES;
-}
-
 // The commands before the cull pass: no instances; each LOD's strip vertex count for
 // `segments`, one patch vertex per tessellated blade in batches of PATCH_BATCH_BLADES.
 inline BladeDrawCommands emptyBladeDrawCommands(int segments) {
