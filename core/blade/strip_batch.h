@@ -85,6 +85,19 @@ inline int stripBatchTriangles(int segments, bool folded) {
     return (folded ? 4 : 2) * segments;
 }
 
+// Triangles the blades of a frame draw, `drawnPerLod` of them at each LOD of blades of `segments`
+// segments at full detail; the same on both paths (the tessellation's quads of lodSegments ×
+// (2 folded, 1 flat) cells make as many). `grass bench` reports them, so a frame's cost can be
+// read per triangle as well as per blade.
+inline std::uint64_t drawnBladeTriangles(const std::array<std::size_t, LOD_COUNT>& drawnPerLod,
+                                         int segments) {
+    std::uint64_t triangles = 0;
+    for (int lod = 0; lod < LOD_COUNT; ++lod)
+        triangles += std::uint64_t(drawnPerLod[std::size_t(lod)]) *
+                     std::uint64_t(stripBatchTriangles(lodSegments(segments, lod), lodFolded(lod)));
+    return triangles;
+}
+
 // The index list of one batch at `segments` segments and the given fold: each blade b's
 // triangles, its vertices numbered from b · stripVertexCount.
 inline std::vector<std::uint32_t> stripBatchIndices(int segments, bool folded) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "blade/strip_batch.h"
 #include "cli/bench_editor.h"
 #include "cli/commands.h"
 #include "gl/framebuffer.h"
@@ -122,6 +123,10 @@ void warmUp(render::SceneRenderer& renderer, const GrownCase& grown, const CaseC
     const render::FrameTimings warm = renderer.lastTimings();
     result.bladesIn = warm.cull.bladesIn;
     result.drawn = warm.cull.drawn;
+    result.bladeTriangles = core::drawnBladeTriangles(
+        warm.cull.drawnPerLod, options.geometry == render::GeometryPath::Tessellation
+                                   ? options.tessLevel
+                                   : options.stripSegments);
     result.culledShare = result.bladesIn > 0 ? static_cast<double>(result.bladesIn - result.drawn) /
                                                    static_cast<double>(result.bladesIn)
                                              : 0.0;

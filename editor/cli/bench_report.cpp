@@ -39,7 +39,7 @@ double valueOf(const Figure& figure, const BenchCaseResult& result) {
 
 // The order of the table's columns. Ratios of the ms columns below 1 mean faster; of
 // blade-steps/s above 1.
-constexpr std::array<Figure, 15> FIGURES = {{
+constexpr std::array<Figure, 16> FIGURES = {{
     {"blades in", "", "blades_in", 0, 1.0, nullptr, &BenchCaseResult::bladesIn},
     {"drawn", "", "drawn", 0, 1.0, nullptr, &BenchCaseResult::drawn},
     {"culled %", "", "culled_share", 1, 100.0, &BenchCaseResult::culledShare, nullptr},
@@ -58,6 +58,8 @@ constexpr std::array<Figure, 15> FIGURES = {{
     {"UI ms", "ms", "ui", 3, 1.0, &BenchCaseResult::uiMs, nullptr},
     {"build s", "", "build_s", 2, 1.0, &BenchCaseResult::buildS, nullptr, true},
     {"peak MB", "", "peak_rss_mb", 0, 1.0, &BenchCaseResult::peakRssMb, nullptr, true},
+    {"M blade tris", "", "blade_triangles", 2, 1e-6, nullptr, &BenchCaseResult::bladeTriangles,
+     true},
 }};
 
 int columnWidth(const Figure& figure) {

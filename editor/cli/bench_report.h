@@ -51,6 +51,9 @@ struct BenchCaseResult {
     // run so far: a case run alone gives its own).
     double buildS = 0.0;
     double peakRssMb = 0.0;
+    // Triangles of the blades the warm-up's last frame drew (core::drawnBladeTriangles); 0 in
+    // runs saved before 2026-12-05.
+    std::size_t bladeTriangles = 0;
     std::optional<EditorFigures> editor;  // the editor case only
 };
 

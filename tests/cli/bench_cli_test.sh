@@ -60,6 +60,11 @@ else
         # tests/data/projects/tiny: density 20 on a 2 m x 2 m plane.
         [ "$bladesIn" -ge 40 ] && [ "$bladesIn" -le 160 ] ||
             failures+=("blades in $bladesIn, expected about 80")
+        # Its camera is within the LOD distance: every drawn blade at full detail, 8 folded
+        # segments, 32 triangles (core::drawnBladeTriangles).
+        triangles=$(field blade_triangles)
+        [ "$triangles" = "$((32 * drawn))" ] ||
+            failures+=("blade_triangles '$triangles', expected 32 x drawn = $((32 * drawn))")
     else
         failures+=("blades_in '$bladesIn' or drawn '$drawn' is not an integer")
     fi

@@ -125,6 +125,14 @@ TEST(StripBatch, GroupsCountingTheBatchesTheyBeginCountEveryBatchOnce) {
     }
 }
 
+// A frame's blade triangles: 32 a folded blade of 8 segments at LOD 0, 8 and 4 at half and a
+// quarter of the segments without the fold, never below one quad of two.
+TEST(StripBatch, DrawnTrianglesFollowEachLodsSegmentsAndFold) {
+    EXPECT_EQ(drawnBladeTriangles({10, 20, 30}, 8), 10u * 32 + 20u * 8 + 30u * 4);
+    EXPECT_EQ(drawnBladeTriangles({0, 0, 5}, 1), 5u * 2);
+    EXPECT_EQ(drawnBladeTriangles({0, 0, 0}, 8), 0u);
+}
+
 TEST(StripBatch, TheShadersBatchAsManyBladesAsTheCommands) {
     const std::pair<const char*, const char*> defines[] = {
         {"blade_strip.vert", "#define STRIP_BATCH_BLADES "},
