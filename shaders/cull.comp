@@ -61,7 +61,6 @@ uniform vec3 uCameraPosition;
 uniform float uProj22;
 uniform float uProj32;
 uniform uint uBladeCount;
-// Fields beyond 65535 work groups take several dispatches; each starts at this blade slot.
 uniform uint uPatchSize;
 uniform int uTestPatch;
 uniform int uTestOrientation;

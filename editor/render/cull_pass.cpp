@@ -119,16 +119,15 @@ CullStats CullPass::readStats(const std::vector<FieldGpu>& fields) const {
     stats.culledOcclusion = counters[5];
     stats.culledSnow = counters[6];
     for (const FieldGpu& field : fields) {
-        const core::BladeDrawCommands commands = field.readCommands();
+        const core::BladeCommandBuffer commands = field.readCommands();
         for (int lod = 0; lod < LOD_COUNT; ++lod) {
-            const std::size_t drawn = core::drawnAtLod(commands, lod);
+            const std::size_t drawn = core::drawnAtLod(commands.draws, lod);
             stats.drawnPerLod[lod] += drawn;
             stats.drawn += drawn;
-            stats.blendingPerLod[lod] += core::blendingAtLod(commands, lod);
+            stats.blendingPerLod[lod] += core::blendingAtLod(commands.draws, lod);
         }
-        const core::StripBatchCommands batches = field.readStripBatches();
-        for (std::size_t drawClass = 0; drawClass < batches.size(); ++drawClass)
-            stats.stripBatches[drawClass] += batches[drawClass].instanceCount;
+        for (std::size_t drawClass = 0; drawClass < commands.stripBatches.size(); ++drawClass)
+            stats.stripBatches[drawClass] += commands.stripBatches[drawClass].instanceCount;
     }
     return stats;
 }

@@ -6,10 +6,6 @@
 
 namespace grass::render {
 
-namespace {
-using CommandArray = core::BladeDrawCommands;
-}  // namespace
-
 FieldGpu::FieldGpu(const core::LayerField& field) : mField(&field) {
     mBladeCount = field.patched.blades.size();
     mBlades = gl::Buffer::fromVector(field.patched.blades, "blades " + field.name);
@@ -96,7 +92,6 @@ std::vector<float> FieldGpu::readTipSnow() const {
 }
 
 void FieldGpu::bindForCull() const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mBlades.id());
     glBindTextureUnit(core::BLADE_TEXELS_UNIT, mBladeTexels.id());  // what cull.comp reads
     if (mTipSnow.id() != 0)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, TIP_SNOW_BINDING, mTipSnow.id());
@@ -105,19 +100,11 @@ void FieldGpu::bindForCull() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, COMMAND_BINDING, mCommands.id());
 }
 
-core::BladeDrawCommands FieldGpu::readCommands() const {
-    CommandArray commands{};
+core::BladeCommandBuffer FieldGpu::readCommands() const {
+    core::BladeCommandBuffer commands{};
     if (mBladeCount > 0)
-        glGetNamedBufferSubData(mCommands.id(), 0, sizeof commands, commands.data());
+        glGetNamedBufferSubData(mCommands.id(), 0, sizeof commands, &commands);
     return commands;
-}
-
-core::StripBatchCommands FieldGpu::readStripBatches() const {
-    core::StripBatchCommands batches{};
-    if (mBladeCount > 0)
-        glGetNamedBufferSubData(mCommands.id(), GLintptr(core::stripBatchCommandOffset(0)),
-                                sizeof batches, batches.data());
-    return batches;
 }
 
 void FieldGpu::bindForDraw() const {

@@ -68,12 +68,12 @@ public:
     // The tip whiteness of every slot as the last cull wrote it (empty without snow; tests).
     std::vector<float> readTipSnow() const;
     bool hasTipSnow() const { return mTipSnow.id() != 0; }
-    // Binds the blade, patch-box, visible and command buffers for the cull dispatch.
+    // Binds the blades' texel view and the patch-box, visible and command buffers for the cull
+    // dispatch.
     void bindForCull() const;
-    // The indirect draw commands as the last cull pass left them (a read-back, for statistics).
-    core::BladeDrawCommands readCommands() const;
-    // The strip batch commands as the last cull pass left them (tests).
-    core::StripBatchCommands readStripBatches() const;
+    // The indirect draw commands as the last cull pass left them, the per-LOD ones and the strip
+    // batches' (one read-back, for statistics).
+    core::BladeCommandBuffer readCommands() const;
 
     // Binds the blade and visible buffers and issues one indirect draw per LOD; the caller has
     // bound `program` and run the cull pass. Sets uVisibleOffset (and, for strips, uSegments).

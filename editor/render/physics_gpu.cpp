@@ -111,8 +111,8 @@ void PhysicsGpu::step(gl::BufferRef bladeBuffer, std::size_t bladeCount,
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, mSubsteps.id());
     const core::DispatchGrid grid = core::dispatchGrid(bladeCount, LOCAL_SIZE);
     glDispatchCompute(grid.x, grid.y, 1);
-    // Blades feed the cull (SSBO reads), the draws (texel fetches) and read-backs; η feeds the
-    // next step.
+    // Blades feed the cull and the draws (texel fetches) and read-backs; η feeds the next step
+    // (SSBO reads).
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
 }

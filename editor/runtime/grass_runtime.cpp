@@ -320,7 +320,7 @@ void Field::step() {
             const core::DispatchGrid grid = core::dispatchGrid(layer.slots, WORK_GROUP);
             glDispatchCompute(grid.x, grid.y, 1);
         }
-        // The cull reads the blades as an SSBO, the draws through texel views.
+        // The cull and the draws read the blades through texel views; read-backs as a buffer.
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
                         GL_TEXTURE_FETCH_BARRIER_BIT);
         glUseProgram(0);
@@ -363,7 +363,6 @@ void Field::draw(const View& view) {
         glNamedBufferSubData(layer.commands.id(), 0, sizeof commands, &commands);
         if (layer.slots == 0)
             continue;
-        layer.blades.bindStorage(BLADES);
         layer.bladeTexels.bind(core::BLADE_TEXELS_UNIT);  // cull.comp reads the blades there
         layer.patchBounds.bindStorage(PATCH_BOUNDS);
         layer.visible.bindStorage(VISIBLE);
