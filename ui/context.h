@@ -56,10 +56,14 @@ struct Modifiers {
     bool operator==(const Modifiers&) const = default;
 };
 
-// A key press or auto-repeat, with the modifiers held at the time.
+// A key press or auto-repeat, with the modifiers held at the time, and where it fell in the
+// frame's typed text: a slow frame gathers several keystrokes, and Ctrl+A, Backspace or an arrow
+// pressed between two characters must act between them (a text edit replays them in order).
 struct KeyEvent {
     Key key = Key::Escape;
     Modifiers modifiers;
+    // Bytes of Input::text typed before this key; npos: after all of it.
+    std::size_t textBefore = std::string::npos;
 };
 
 enum class PointerButton { Primary, Secondary, Middle };

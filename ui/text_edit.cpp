@@ -136,11 +136,22 @@ Response textEditImpl(Ui& ui, std::string_view idLabel, std::string& text, float
             st.anchor = st.cursor;
             *edited = true;
         };
-        insert(ctx.input().text);
+        // The frame's typed text and keys in the order they came (KeyEvent::textBefore): the
+        // text typed before each key goes in before the key acts.
+        const std::string& typed = ctx.input().text;
+        std::size_t typedIn = 0;
+        const auto insertTypedUpTo = [&](std::size_t end) {
+            end = std::min(end, typed.size());
+            if (end > typedIn) {
+                insert(std::string_view(typed).substr(typedIn, end - typedIn));
+                typedIn = end;
+            }
+        };
 
         // A copy: consumeKey below edits the input's key list.
         const std::vector<KeyEvent> keys = ctx.input().keys;
         for (const KeyEvent& e : keys) {
+            insertTypedUpTo(e.textBefore);
             const bool shift = e.modifiers.shift;
             const bool ctrl = e.modifiers.ctrl && !e.modifiers.alt;
             bool used = true;
@@ -232,6 +243,9 @@ Response textEditImpl(Ui& ui, std::string_view idLabel, std::string& text, float
             if (!st.editing) {
                 break;
             }
+        }
+        if (st.editing) {
+            insertTypedUpTo(typed.size());
         }
     }
 

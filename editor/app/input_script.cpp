@@ -81,7 +81,7 @@ bool pressKey(Player& p, std::string spec) {
         spec = " ";
     const auto key = keyNamed(spec);
     if (key)
-        p.now.keys.push_back(ui::KeyEvent{*key, mods});
+        p.now.keys.push_back(ui::KeyEvent{*key, mods, p.now.typed.size()});
     if (spec == "escape")
         p.now.escapePressed = true;
     if (spec.size() == 1 && !mods.ctrl) {

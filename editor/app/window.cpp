@@ -62,7 +62,7 @@ struct WindowCallbacks {
         input.modifiers = uiModifiers(mods);
         if (action != GLFW_RELEASE)
             if (const auto uiKey = uiKeyFor(key))
-                input.keys.push_back({*uiKey, input.modifiers});
+                input.keys.push_back({*uiKey, input.modifiers, input.typed.size()});
         if (action == GLFW_PRESS && key == GLFW_KEY_F)
             input.frameRequested = true;
         if (action == GLFW_PRESS && key >= GLFW_KEY_1 && key <= GLFW_KEY_4)

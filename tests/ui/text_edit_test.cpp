@@ -63,6 +63,39 @@ TEST(UiTextEdit, TypingInsertsTextAndReportsChanged) {
     EXPECT_TRUE(f.h.ctx.output().wantsKeyboard);
 }
 
+// A slow frame (1–3 fps on a software renderer) gathers several keystrokes: keys act where they
+// fell between the typed characters. Before, the frame's text went in first and the keys after
+// it, so Ctrl+A then "ut" selected "farut" and the next letter replaced it all (seen under Xvfb
+// with xdotool typing into a layer's name).
+TEST(UiTextEdit, KeysActBetweenTheCharactersTypedInTheSameFrame) {
+    TextEditFixture f;
+    f.text = "far";
+    f.focusAtEnd();
+    f.h.input.keys.push_back({Key::A, CTRL, 0});
+    f.h.input.text = "ut";
+    f.frame();
+    EXPECT_EQ(f.text, "ut");
+    f.type("m meadow");
+    EXPECT_EQ(f.text, "utm meadow");
+
+    // "ab", Backspace, "c" in one frame; then "x", Home, "y".
+    f.h.input.text = "abc";
+    f.h.input.keys.push_back({Key::Backspace, NONE, 2});
+    f.frame();
+    EXPECT_EQ(f.text, "utm meadowac");
+    f.h.input.text = "xy";
+    f.h.input.keys.push_back({Key::Home, NONE, 1});
+    f.frame();
+    EXPECT_EQ(f.text, "yutm meadowacx");
+
+    // What is typed after Enter in the same frame does not go into the committed text.
+    f.h.input.text = "!?";
+    f.h.input.keys.push_back({Key::Enter, NONE, 1});
+    f.frame();
+    EXPECT_TRUE(f.committed);
+    EXPECT_EQ(f.text, "y!utm meadowacx");
+}
+
 TEST(UiTextEdit, CursorMovesAndDeletesByCodePoints) {
     TextEditFixture f;
     f.text = "aé€b";
