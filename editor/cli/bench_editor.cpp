@@ -133,7 +133,10 @@ Result<EditorFigures> measureEditor(const fs::path& project, bool glDebug) {
     const fs::path log = scratch / "editor.log";
     const char* display = std::getenv("DISPLAY");
     const std::string prefix = display && *display ? "" : "xvfb-run -a -s '-screen 0 1920x1200x24' ";
-    const std::string command = prefix + "'" + editor->string() + "' '" +
+    // The session opens a copy that is deleted afterwards: its own configuration folder keeps
+    // it out of the user's File > Open Recent.
+    const std::string command = "XDG_CONFIG_HOME='" + (scratch / "config").string() + "' " +
+                                prefix + "'" + editor->string() + "' '" +
                                 (scratch / "project").string() + "' --script '" +
                                 (scratch / "session.txt").string() + "' --wall-clock" +
                                 (glDebug ? " --gl-debug" : "") + " 2> '" + log.string() + "'";

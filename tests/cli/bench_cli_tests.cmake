@@ -18,15 +18,19 @@ set_tests_properties(cli.bench_tiny_out_compare PROPERTIES LABELS "cli;gl" TIMEO
 
 # The editor case (issue 24): the real editor window (under xvfb-run when there is no display)
 # orbits, paints and plays the meadow at wall-clock time, and the run reports every figure of
-# cases[].editor. Behaviour only: the figures are printed, not judged. About 40 s.
+# cases[].editor. Behaviour only: the figures are printed, not judged. About 40 s. The session
+# opens a copy of the meadow that is deleted afterwards, which must not land in the user's
+# recent projects (the test's own configuration folder stays without a recent.json).
 if(TARGET grass-editor)
     grass_cli_test(bench_editor_case GL OK
+        --absent ${GRASS_CLI_TMP}/bench-editor-config/grass/recent.json
         --stdout "^editor-meadow \\(the editor window, wall clock\\): orbit median [0-9.]+ ms, p95 [0-9.]+ ms \\([1-9][0-9]* frames\\); paint median"
         --stdout "full picture [0-9.]+ s after input stops; physics at [0-9.]+ of real time"
         --file ${GRASS_CLI_TMP}/bench-editor.json "\"realtime_factor\": [0-9.]+"
         --file ${GRASS_CLI_TMP}/bench-editor.json "\"p95_ms\": [0-9.]+"
         -- ${GRASS_BIN} bench --cases editor-meadow --out ${GRASS_CLI_TMP}/bench-editor.json)
-    set_tests_properties(cli.bench_editor_case PROPERTIES TIMEOUT 300)
+    set_tests_properties(cli.bench_editor_case PROPERTIES TIMEOUT 300
+        ENVIRONMENT "XDG_CONFIG_HOME=${GRASS_CLI_TMP}/bench-editor-config")
 endif()
 
 # --compare files that are not a bench run: named in one line, exit non-zero, nothing measured.

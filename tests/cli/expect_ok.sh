@@ -11,6 +11,8 @@
 #                          (signature and IHDR chunk) and be W x H pixels
 #   --file FILE REGEX      FILE is removed before the run; afterwards some line of it matches
 #                          REGEX (grep -E); repeatable
+#   --absent FILE          FILE is removed before the run and must not exist afterwards (what
+#                          the command must leave alone); repeatable
 #
 # GRASS_CLI_TIMEOUT (seconds, default 120) bounds the run; a timeout fails the test.
 # Only bash and coreutils are used (no python, no `file`): CI has nothing else.
@@ -18,7 +20,7 @@ set -u
 
 usage() {
     echo "usage: expect_ok.sh [--stdout REGEX]... [--no-stderr] [--png FILE W H]" \
-        "[--file FILE REGEX]... -- COMMAND..." >&2
+        "[--file FILE REGEX]... [--absent FILE]... -- COMMAND..." >&2
     exit 2
 }
 
@@ -29,6 +31,7 @@ pngFile=""
 pngWidth=0
 pngHeight=0
 fileChecks=()
+absentFiles=()
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do
     case $1 in
         --stdout)
@@ -57,6 +60,11 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do
             fileChecks+=("$2" "$3")
             shift 3
             ;;
+        --absent)
+            [ $# -ge 2 ] || usage
+            absentFiles+=("$2")
+            shift 2
+            ;;
         *) echo "expect_ok.sh: unknown option $1" >&2; usage ;;
     esac
 done
@@ -69,6 +77,7 @@ if [ -n "$pngFile" ]; then
 fi
 
 for ((i = 0; i < ${#fileChecks[@]}; i += 2)); do rm -f -- "${fileChecks[i]}"; done
+for absent in ${absentFiles[@]+"${absentFiles[@]}"}; do rm -f -- "$absent"; done
 
 work=$(mktemp -d) || exit 2
 trap 'rm -rf -- "$work"' EXIT
@@ -100,6 +109,10 @@ for ((i = 0; i < ${#fileChecks[@]}; i += 2)); do
     elif ! grep -Eq -- "${fileChecks[i + 1]}" "$checked"; then
         failures+=("no line of $checked matches /${fileChecks[i + 1]}/")
     fi
+done
+
+for absent in ${absentFiles[@]+"${absentFiles[@]}"}; do
+    [ -e "$absent" ] && failures+=("$absent was written: the command must leave it alone")
 done
 
 if [ "$noStderr" -eq 1 ] && grep -qv '^note: ' "$work/stderr"; then
