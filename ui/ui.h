@@ -100,6 +100,9 @@ public:
 
     // Basic widgets (widgets_basic.cpp).
     Response label(std::string_view text);
+    // The text in as many lines as the available width needs (ui/text_wrap.h): for messages
+    // that must be read whole (a path, an error).
+    Response wrappedLabel(std::string_view text);
     Response coloredLabel(std::string_view text, Color32 color);
     Response button(std::string_view text);
     // "text##key" shows text; the whole label is the id (so "##a" and "##b" are two boxes).

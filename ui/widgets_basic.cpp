@@ -1,6 +1,9 @@
 // Basic widgets: text, buttons, toggles, separators, progress bars, images and tooltips.
 #include <algorithm>
+#include <string>
+#include <vector>
 
+#include "ui/text_wrap.h"
 #include "ui/ui.h"
 
 namespace grass::ui {
@@ -48,6 +51,17 @@ Response& Response::unite(const Response& o) {
 
 Response Ui::label(std::string_view text) {
     return coloredLabel(text, style().text);
+}
+
+Response Ui::wrappedLabel(std::string_view text) {
+    const std::vector<std::string> lines =
+        wrapText(mCtx->fonts(), style().textSizePt, text, std::max(availableWidth(), 1.0f));
+    if (lines.empty())
+        return label("");
+    Response whole = label(lines.front());
+    for (std::size_t i = 1; i < lines.size(); ++i)
+        whole.unite(label(lines[i]));
+    return whole;
 }
 
 Response Ui::coloredLabel(std::string_view text, Color32 color) {

@@ -48,11 +48,11 @@ std::string ExportJob::summary() const {
     std::size_t instances = 0;
     for (const core::ExportedLayer& layer : report.layers)
         instances += layer.instances;
-    char text[256];
-    std::snprintf(text, sizeof text, "exported %zu files (%.1f MB, %zu instances) to %s",
-                  report.files.size(), double(report.totalBytes()) / 1e6, instances,
-                  mOptions.outDir.string().c_str());
-    return text;
+    // The folder after the figures, whole: a path of any length.
+    char figures[128];
+    std::snprintf(figures, sizeof figures, "exported %zu files (%.1f MB, %zu instances) to ",
+                  report.files.size(), double(report.totalBytes()) / 1e6, instances);
+    return figures + mOptions.outDir.string();
 }
 
 }  // namespace grass::editor

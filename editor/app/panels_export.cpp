@@ -44,7 +44,7 @@ void exportWindow(ui::Context& ctx, EditorState& s) {
         ctx, "Export", &open,
         [&](ui::Ui& ui) {
             if (s.exportJob) {
-                ui.label(s.exportJob->done() ? s.exportJob->summary() : s.exportJob->stage());
+                ui.wrappedLabel(s.exportJob->done() ? s.exportJob->summary() : s.exportJob->stage());
                 ui.progressBar(s.exportJob->fraction());
                 if (s.exportJob->done() &&
                     ui.button("Close").onHoverText("Close this window").clicked()) {

@@ -9,47 +9,10 @@
 #include <vector>
 
 #include "app/panels.h"
+#include "ui/text_wrap.h"
 #include "ui/window.h"
 
 namespace grass::editor {
-
-namespace {
-
-// `text` broken at spaces (or anywhere, for a long path) into lines no wider than `width`.
-std::vector<std::string> wrapText(const ui::FontAtlas& fonts, float sizePt, std::string_view text,
-                                  float width) {
-    std::vector<std::string> lines;
-    std::string line;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        std::size_t end = text.find(' ', start);
-        const std::string word(text.substr(start, end == std::string_view::npos ? text.npos : end - start));
-        start = end == std::string_view::npos ? text.size() : end + 1;
-        const std::string joined = line.empty() ? word : line + " " + word;
-        if (fonts.textSize(joined, sizePt).x <= width || line.empty()) {
-            line = joined;
-        } else {
-            lines.push_back(line);
-            line = word;
-        }
-        // A single word wider than the line (a long path) is cut where it must be.
-        while (fonts.textSize(line, sizePt).x > width && line.size() > 1) {
-            std::size_t cut = line.size() - 1;
-            while (cut > 1 && fonts.textSize(std::string_view(line).substr(0, cut), sizePt).x > width)
-                --cut;
-            // Never inside a UTF-8 sequence.
-            while (cut > 1 && (static_cast<unsigned char>(line[cut]) & 0xC0) == 0x80)
-                --cut;
-            lines.push_back(line.substr(0, cut));
-            line.erase(0, cut);
-        }
-    }
-    if (!line.empty())
-        lines.push_back(line);
-    return lines;
-}
-
-}  // namespace
 
 void logMessage(EditorState& s, double timeS) {
     Transient& t = s.transient;
@@ -89,7 +52,7 @@ void messagesWindow(ui::Context& ctx, EditorState& s) {
                 for (std::size_t i = 0; i < log.size(); ++i) {
                     list.withId(i, [&](ui::Ui& item) {
                         for (const std::string& line :
-                             wrapText(ctx.fonts(), item.style().textSizePt, log[i], width))
+                             ui::wrapText(ctx.fonts(), item.style().textSizePt, log[i], width))
                             item.label(line);
                     });
                     list.separator();

@@ -1,0 +1,19 @@
+// Text broken into lines that fit a width: a long message (a path, an error naming a file) must
+// be read whole, and a label is cut off at its window's edge.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "font.h"
+
+namespace grass::ui {
+
+// `text` broken at spaces into lines no wider than `width` points at sizePt; a word wider than
+// a line (a long path) is cut where it must be, never inside a UTF-8 sequence. A line holds at
+// least one character, so any width makes progress. Empty text gives no lines.
+std::vector<std::string> wrapText(const FontAtlas& fonts, float sizePt, std::string_view text,
+                                  float width);
+
+}  // namespace grass::ui
