@@ -103,6 +103,7 @@ public:
     // The text in as many lines as the available width needs (ui/text_wrap.h): for messages
     // that must be read whole (a path, an error).
     Response wrappedLabel(std::string_view text);
+    Response wrappedColoredLabel(std::string_view text, Color32 color);
     Response coloredLabel(std::string_view text, Color32 color);
     Response button(std::string_view text);
     // "text##key" shows text; the whole label is the id (so "##a" and "##b" are two boxes).

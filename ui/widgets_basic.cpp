@@ -54,13 +54,17 @@ Response Ui::label(std::string_view text) {
 }
 
 Response Ui::wrappedLabel(std::string_view text) {
+    return wrappedColoredLabel(text, style().text);
+}
+
+Response Ui::wrappedColoredLabel(std::string_view text, Color32 color) {
     const std::vector<std::string> lines =
         wrapText(mCtx->fonts(), style().textSizePt, text, std::max(availableWidth(), 1.0f));
     if (lines.empty())
-        return label("");
-    Response whole = label(lines.front());
+        return coloredLabel("", color);
+    Response whole = coloredLabel(lines.front(), color);
     for (std::size_t i = 1; i < lines.size(); ++i)
-        whole.unite(label(lines[i]));
+        whole.unite(coloredLabel(lines[i], color));
     return whole;
 }
 

@@ -173,7 +173,7 @@ void fileBrowserWindow(ui::Context& ctx, EditorState& s) {
             const float listHeight = std::max(80.0f, ui.availableRect().height() - 96.0f);
             ui.scrollArea("entries", listHeight, [&](ui::Ui& list) {
                 if (!listing.error.empty())
-                    list.coloredLabel(listing.error, ui::Color32::rgb(255, 150, 60));
+                    list.wrappedColoredLabel(listing.error, ui::Color32::rgb(255, 150, 60));
                 else if (listing.entries.empty())
                     list.coloredLabel("(no folders or " + browseFilterText(purpose) + " here)",
                                       list.style().textWeak);
@@ -220,7 +220,7 @@ void fileBrowserWindow(ui::Context& ctx, EditorState& s) {
                 row.coloredLabel("Shows " + browseFilterText(purpose), row.style().textWeak);
             });
             if (!browser.message().empty())
-                ui.coloredLabel(browser.message(), ui::Color32::rgb(255, 150, 60));
+                ui.wrappedColoredLabel(browser.message(), ui::Color32::rgb(255, 150, 60));
         },
         defaultRect);
     if (chosen) {
