@@ -160,9 +160,12 @@ std::string packingCacheKey(std::string_view meshFileBytes, const SurfaceMesh& m
 
 Result<SpherePacking> loadOrPackSpheres(const fs::path& meshFile, const SurfaceMesh& mesh,
                                         const SpherePackingParams& params,
-                                        const fs::path& cacheFile, bool* fromCache) {
+                                        const fs::path& cacheFile, bool* fromCache,
+                                        std::string* cacheNote) {
     if (fromCache != nullptr)
         *fromCache = false;
+    if (cacheNote != nullptr)
+        cacheNote->clear();
     Result<std::string> meshBytes = readFile(meshFile);
     if (!meshBytes)
         return meshBytes.error();
@@ -188,16 +191,22 @@ Result<SpherePacking> loadOrPackSpheres(const fs::path& meshFile, const SurfaceM
             error.path = meshFile.string();
         return error;
     }
+    // The cache only saves the next load the packing: failing to write it costs time, not the
+    // scene.
+    std::string problem;
     if (cacheFile.has_parent_path()) {
         fs::create_directories(cacheFile.parent_path(), ec);
         if (ec)
-            return makeError(cacheFile.string(),
-                             "cannot create the sphere-packing cache folder: " + ec.message());
+            problem = "cannot create its folder: " + ec.message();
     }
-    if (Result<void> written = writeFileAtomic(cacheFile, cacheText(key, params, *packing));
-        !written)
-        return makeError(cacheFile.string(),
-                         "cannot write the sphere-packing cache: " + written.error().message);
+    if (problem.empty()) {
+        if (Result<void> written = writeFileAtomic(cacheFile, cacheText(key, params, *packing));
+            !written)
+            problem = written.error().message;
+    }
+    if (!problem.empty() && cacheNote != nullptr)
+        *cacheNote = "sphere-packing cache " + cacheFile.string() + " not written (" + problem +
+                     "): packed in memory, and packed again on the next load";
     return packing;
 }
 

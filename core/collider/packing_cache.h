@@ -25,13 +25,16 @@ std::string packingCacheKey(std::string_view meshFileBytes, const SurfaceMesh& m
 
 // Loads the packing from `cacheFile` when it exists, parses and its key matches; otherwise
 // packs and writes it atomically (creating its folder). A corrupt or mismatched cache file is
-// not an error: it is repacked and overwritten. Errors: the mesh file cannot be read, the
-// packing fails, or the cache file cannot be written (the error names it). `fromCache`, when
-// given, says whether the packing came from the file.
+// not an error: it is repacked and overwritten. Nor is a cache that cannot be written (a
+// read-only project folder: an example installed read-only, a shared or mounted drive): the
+// packing is returned all the same, and `cacheNote`, when given, says which file could not be
+// written and why (the next load packs again). Errors: the mesh file cannot be read or the
+// packing fails. `fromCache`, when given, says whether the packing came from the file.
 Result<SpherePacking> loadOrPackSpheres(const std::filesystem::path& meshFile,
                                         const SurfaceMesh& mesh, const SpherePackingParams& params,
                                         const std::filesystem::path& cacheFile,
-                                        bool* fromCache = nullptr);
+                                        bool* fromCache = nullptr,
+                                        std::string* cacheNote = nullptr);
 
 // <projectFolder>/.grass-cache/<mesh stem>.<sphereCount>-<resolution>.spheres.json
 std::filesystem::path packingCachePath(const std::filesystem::path& projectFolder,

@@ -100,18 +100,23 @@ Result<void> addMeshCollider(const LoadedProject& loaded, const ColliderDesc& co
     params.resolution = collider.packingResolution;
     const std::filesystem::path cache = packingCachePath(loaded.folder, file, params);
     bool fromCache = false;
-    auto packing = loadOrPackSpheres(file, mesh, params, cache, &fromCache);
+    std::string cacheNote;
+    auto packing = loadOrPackSpheres(file, mesh, params, cache, &fromCache, &cacheNote);
     if (!packing) {
         Error error = packing.error();
         if (error.path.empty())
             error.path = file.string();
         return error;
     }
+    const std::string source = fromCache            ? "cached in " + cache.string()
+                               : cacheNote.empty() ? "packed, cached in " + cache.string()
+                                                   : "packed";
     out.notes.push_back("collider " + collider.name + ": " + collider.file + " as " +
-                        std::to_string(packing->spheres.size()) + " spheres (" +
-                        (fromCache ? "cached in " : "packed, cached in ") + cache.string() +
+                        std::to_string(packing->spheres.size()) + " spheres (" + source +
                         "): " + formatPercent(packing->insideShare) + " of their volume inside, " +
                         formatPercent(packing->coverage) + " of the mesh covered");
+    if (!cacheNote.empty())
+        out.notes.push_back("collider " + collider.name + ": " + cacheNote);
     const std::size_t first = out.colliders.size();
     for (const PackedSphere& packed : packing->spheres) {
         SphereCollider sphere;

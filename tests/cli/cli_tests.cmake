@@ -228,6 +228,20 @@ set_tests_properties(cli.sim_rock_packs PROPERTIES FIXTURES_REQUIRED rock_copy
     FIXTURES_SETUP rock_packed)
 set_tests_properties(cli.sim_rock_cached PROPERTIES FIXTURES_REQUIRED "rock_copy;rock_packed"
     DEPENDS cli.sim_rock_packs)
+# A project whose cache cannot be written (a read-only folder: here a file where the cache
+# folder would go, which holds for root too) still simulates: the spheres are packed in memory,
+# with a note naming the cache.
+set(ROCK_UNWRITABLE ${GRASS_CLI_TMP}/rock-unwritable-cache)
+add_test(NAME cli.sim_rock_unwritable_setup
+         COMMAND ${GRASS_BASH} -c "rm -rf '${ROCK_UNWRITABLE}' && cp -r '${GRASS_CLI_PROJECTS}/rock' '${ROCK_UNWRITABLE}' && rm -rf '${ROCK_UNWRITABLE}/.grass-cache' && : > '${ROCK_UNWRITABLE}/.grass-cache'")
+set_tests_properties(cli.sim_rock_unwritable_setup PROPERTIES LABELS cli
+    FIXTURES_SETUP rock_unwritable)
+grass_cli_test(sim_rock_unwritable_cache OK
+    --stdout "^  scene .*16 collider sphere\\(s\\)$"
+    --stderr "^note: collider cube: cube.glb as 16 spheres \\(packed\\): 100\\.0 % of their volume inside"
+    --stderr "^note: collider cube: sphere-packing cache .*rock-unwritable-cache/\\.grass-cache/cube\\.16-24\\.spheres\\.json not written \\(.*\\): packed in memory"
+    -- ${GRASS_BIN} sim ${ROCK_UNWRITABLE} --seconds 0.2)
+set_tests_properties(cli.sim_rock_unwritable_cache PROPERTIES FIXTURES_REQUIRED rock_unwritable)
 grass_cli_test(sim_seconds_negative ERROR "--seconds" -- ${GRASS_BIN} sim ${WINDY} --seconds -1)
 grass_cli_test(sim_dt_zero ERROR "--dt" -- ${GRASS_BIN} sim ${WINDY} --dt 0)
 grass_cli_test(sim_dt_not_a_number ERROR "--dt" -- ${GRASS_BIN} sim ${WINDY} --dt fast)
