@@ -37,4 +37,25 @@ std::vector<std::string> wrapText(const FontAtlas& fonts, float sizePt, std::str
     return lines;
 }
 
+std::string elideText(const FontAtlas& fonts, float sizePt, std::string_view text, float width) {
+    if (fonts.textSize(text, sizePt).x <= width)
+        return std::string(text);
+    const std::string_view ellipsis = " \u2026";
+    // Widths grow with the prefix (no kerning: font.h), so the longest fitting one is found by
+    // bisection over byte lengths, then moved back to a character's start.
+    std::size_t fits = 0, tooLong = text.size();
+    while (tooLong - fits > 1) {
+        const std::size_t mid = (fits + tooLong) / 2;
+        if (fonts.textSize(std::string(text.substr(0, mid)) + std::string(ellipsis), sizePt).x <=
+            width)
+            fits = mid;
+        else
+            tooLong = mid;
+    }
+    while (fits > 0 && fits < text.size() &&
+           (static_cast<unsigned char>(text[fits]) & 0xC0) == 0x80)
+        --fits;
+    return std::string(text.substr(0, fits)) + std::string(ellipsis);
+}
+
 }  // namespace grass::ui

@@ -16,4 +16,9 @@ namespace grass::ui {
 std::vector<std::string> wrapText(const FontAtlas& fonts, float sizePt, std::string_view text,
                                   float width);
 
+// `text` whole when it is no wider than `width` points at sizePt, else its longest beginning
+// that fits with " …" after it (never cut inside a UTF-8 sequence): one line that must keep
+// its place, such as a status line.
+std::string elideText(const FontAtlas& fonts, float sizePt, std::string_view text, float width);
+
 }  // namespace grass::ui

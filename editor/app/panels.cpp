@@ -8,9 +8,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include "ui/menu.h"
 #include "ui/text_edit.h"
+#include "ui/text_wrap.h"
 #include "ui/ui.h"
 #include "ui/window.h"
 
@@ -197,7 +199,23 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
                   s.transient.status.fps);
     ui::Ui ui(ctx, {rect.min + ui::Vec2(8.0f, 2.0f), rect.max}, ui::Layer::Panels);
     ui.horizontal([&](ui::Ui& row) {
-        // The viewport draws less while the user interacts (adaptive quality): say what, first.
+        // The message first ("saved", "imported", a failed save in warning orange, so that it
+        // reads as something to act on): after the figures it lay past the window's edge at
+        // 1280 px whenever the picture was reduced, which is always while playing. Cut to half
+        // the bar so the figures stay; a click shows every message whole.
+        if (!s.transient.message.empty()) {
+            const std::string shownText = ui::elideText(ctx.fonts(), style.textSizePt,
+                                                        s.transient.message, 0.5f * rect.width());
+            const ui::Response shown = row.coloredLabel(shownText + "   ",
+                                                        s.transient.messageIsSaveError
+                                                            ? ui::Color32::rgb(255, 150, 60)
+                                                            : style.textWeak);
+            ui::Response click = row.interact(shown.rect(), row.makeId("message"),
+                                              ui::Sense::clickOnly());
+            if (click.onHoverText("Click to see every message in full").clicked())
+                s.transient.messagesWindow = true;
+        }
+        // The viewport draws less while the user interacts (adaptive quality): say what.
         if (!s.transient.status.reduced.empty())
             row.coloredLabel("moving: " + s.transient.status.reduced + "   ",
                              ui::Color32::rgb(120, 190, 255));
@@ -208,18 +226,6 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
             std::snprintf(behind, sizeof behind, "   physics behind: skipping %.1f s per s",
                           dropped);
             row.coloredLabel(behind, ui::Color32::rgb(255, 150, 60));
-        }
-        // A failed save in warning orange, so that it reads as something to act on. The line
-        // is cut at the window's edge: a click shows every message whole.
-        if (!s.transient.message.empty()) {
-            const ui::Response shown = row.coloredLabel("   " + s.transient.message,
-                                                        s.transient.messageIsSaveError
-                                                            ? ui::Color32::rgb(255, 150, 60)
-                                                            : style.textWeak);
-            ui::Response click = row.interact(shown.rect(), row.makeId("message"),
-                                              ui::Sense::clickOnly());
-            if (click.onHoverText("Click to see every message in full").clicked())
-                s.transient.messagesWindow = true;
         }
     });
 }
@@ -251,6 +257,13 @@ bool saveTo(EditorState& s, const std::string& file) {
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
     std::error_code ec;
     fs::create_directories(folder, ec);
+    // A refused save says what failed and the way out (a read-only folder, a full disk).
+    const auto refuse = [&](const Error& error) {
+        s.transient.message =
+            "not saved: " + error.str() + " (File > Save As... saves the project elsewhere)";
+        s.transient.messageIsSaveError = true;
+        return false;
+    };
     // Asset paths are relative to the project's folder: saved elsewhere, the project must take
     // its files along (mesh, maps, textures), or it would name files that are not there.
     // Files already at the destination are kept; the copy happens before project.json is
@@ -258,23 +271,14 @@ bool saveTo(EditorState& s, const std::string& file) {
     if (!s.doc.loaded.folder.empty() && !fs::equivalent(s.doc.loaded.folder, folder, ec)) {
         // A .gltf brings the buffers and images it names along (mesh_import.h).
         for (const std::string& asset : core::projectAssetPaths(s.doc.loaded.project)) {
-            if (auto copied = copyAssetFiles(s.doc.loaded.folder / asset, folder / asset); !copied) {
-                s.transient.message = "not saved: " + copied.error().str();
-                s.transient.messageIsSaveError = true;
-                return false;
-            }
+            if (auto copied = copyAssetFiles(s.doc.loaded.folder / asset, folder / asset); !copied)
+                return refuse(copied.error());
         }
     }
-    if (auto maps = savePaintedMaps(s, folder); !maps) {
-        s.transient.message = "not saved: " + maps.error().str();
-        s.transient.messageIsSaveError = true;
-        return false;
-    }
-    if (auto saved = core::saveProject(s.doc.loaded.project, path); !saved) {
-        s.transient.message = "not saved: " + saved.error().str();
-        s.transient.messageIsSaveError = true;
-        return false;
-    }
+    if (auto maps = savePaintedMaps(s, folder); !maps)
+        return refuse(maps.error());
+    if (auto saved = core::saveProject(s.doc.loaded.project, path); !saved)
+        return refuse(saved.error());
     // Saved: the autosave side files (of where the project was) have nothing left to recover.
     removeAutosave(s.doc.loaded);
     s.doc.loaded.file = path;

@@ -168,6 +168,7 @@ TEST(EditorPanels, AFailedSaveStaysInTheStatusBarUntilASaveSucceeds) {
     EXPECT_FALSE(editor::saveTo(editor.state, (folder.path() / "blocked/project.json").string()));
     const std::string failed = editor.state.transient.message;
     ASSERT_EQ(failed.rfind("not saved: ", 0), 0u) << failed;
+    EXPECT_NE(failed.find("Save As"), std::string::npos) << failed << ": the way out";
     EXPECT_TRUE(editor.state.transient.messageIsSaveError);
     editor::autosaveNow(editor.state);
     EXPECT_EQ(editor.state.transient.message, failed);
@@ -479,13 +480,30 @@ TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
     editor.frame();
     ASSERT_EQ(editor.state.transient.messageLog.size(), 2u);
     EXPECT_NE(editor.state.transient.messageLog[1].find(longMessage), std::string::npos);
-    editor.click("   " + longMessage);
+    // The status line shows the message first, left of the figures (after them it lay past the
+    // window's edge at 1280 px while the picture was reduced), cut to half the line.
+    std::optional<ui::TextShape> status, figures;
+    for (const ui::ClippedShape& shape : editor.frame().shapes) {
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape)) {
+            if (t->text.starts_with("cannot import /a/very"))
+                status = *t;
+            if (t->text.find(" blades \u00b7 ") != std::string::npos)
+                figures = *t;
+        }
+    }
+    ASSERT_TRUE(status && figures);
+    EXPECT_LT(status->pos.x, figures->pos.x);
+    EXPECT_NE(status->text.find("\u2026"), std::string::npos) << status->text;
+    EXPECT_EQ(status->text.find("the file is not glTF"), std::string::npos) << status->text;
+    EXPECT_LE(testFonts().textSize(status->text, status->sizePt).x,
+              0.5f * editor.input.screenRect.width());
+    editor.clickStartingWith("cannot import /a/very");
     ASSERT_TRUE(editor.state.transient.messagesWindow);
     // Wrapped to the window, the whole text is there, line by line.
     std::string joined;
     for (const ui::ClippedShape& shape : editor.frame().shapes)
-        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && !t->text.starts_with("   "))
-            joined += t->text + " ";  // the status line itself starts with three spaces
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && !t->text.ends_with("   "))
+            joined += t->text + " ";  // the status line's message ends with three spaces
     EXPECT_NE(joined.find("the file is not glTF"), std::string::npos) << joined;
 }
 

@@ -68,6 +68,26 @@ TEST(UiTextWrap, ANarrowerWidthThanOneCharacterStillMakesProgress) {
     EXPECT_TRUE(wrapText(testFonts(), SIZE_PT, "", 100.0f).empty());
 }
 
+TEST(UiTextWrap, ElidedTextKeepsTheLongestBeginningThatFits) {
+    const std::string text = "cannot save /home/artist/projects/meadow: permission denied";
+    EXPECT_EQ(elideText(testFonts(), SIZE_PT, text, widthOf(text)), text) << "fits: whole";
+    const float width = widthOf(text) * 0.5f;
+    const std::string elided = elideText(testFonts(), SIZE_PT, text, width);
+    ASSERT_TRUE(elided.ends_with(" \u2026")) << elided;
+    const std::string kept = elided.substr(0, elided.size() - std::string(" \u2026").size());
+    EXPECT_TRUE(text.starts_with(kept)) << elided;
+    EXPECT_LE(widthOf(elided), width);
+    EXPECT_GT(widthOf(text.substr(0, kept.size() + 1) + " \u2026"), width)
+        << "one character more would not fit";
+    // Multi-byte characters stay whole.
+    std::string wide;
+    for (int i = 0; i < 30; ++i)
+        wide += "\xE8\x8D\x89";
+    const std::string cut = elideText(testFonts(), SIZE_PT, wide, widthOf(wide) * 0.4f);
+    for (std::size_t pos = 0; pos < cut.size();)
+        EXPECT_NE(decodeUtf8(cut, pos), U'\uFFFD');
+}
+
 TEST(UiTextWrap, AWrappedLabelShowsTheWholeMessageInsideItsPanel) {
     UiHarness h({{10.0f, 20.0f}, {170.0f, 580.0f}});
     const std::string message =
