@@ -67,6 +67,17 @@ Result<void> writeAutosave(const EditorState& s) {
 }
 
 void autosaveNow(EditorState& state) {
+    // A project never saved (File > New, New from mesh) has no folder of its own to autosave
+    // next to: say so while there is work to lose, rather than nothing at all.
+    if (state.doc.loaded.file.empty()) {
+        if (state.doc.dirty && !state.transient.messageIsSaveError) {
+            state.transient.message =
+                "not autosaved: this project has never been saved (File > Save As... gives it a "
+                "folder, and autosaves then keep your work)";
+            state.transient.messageIsSaveError = true;
+        }
+        return;
+    }
     if (auto written = writeAutosave(state); !written)
         state.transient.message = "autosave failed: " + written.error().str();
     else if (!state.doc.loaded.file.empty() && !state.transient.messageIsSaveError)

@@ -26,7 +26,9 @@ std::optional<std::string> mapNameOfAutosave(const std::string& relative);
 // project has no file yet.
 Result<void> writeAutosave(const EditorState& state);
 // writeAutosave, with what happened in the status bar: a failure always, "autosaved to …" only
-// when it does not replace a failed save's message (that stays until a save succeeds).
+// when it does not replace a failed save's message (that stays until a save succeeds). A
+// project never saved is not autosaved (it has no folder): the status bar says so, in the
+// failed save's colour, while it has unsaved changes.
 void autosaveNow(EditorState& state);
 // Removes the side project and every side map it names.
 void removeAutosave(const core::LoadedProject& loaded);

@@ -277,6 +277,8 @@ bool Editor::adoptDocument(core::LoadedProject next, std::string_view what) {
     if (auto camera = render::projectCamera(mState.doc.loaded.project, ""))
         mCamera = *camera;
     resetTimeline();
+    // The previous document's failed save (or "not autosaved") is not this one's to keep.
+    mState.transient.messageIsSaveError = false;
     return true;
 }
 

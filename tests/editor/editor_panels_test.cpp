@@ -467,6 +467,25 @@ TEST(EditorPanels, TheSurfaceSectionSetsTheMeshUnit) {
     EXPECT_EQ(editor.state.doc.loaded.project.mesh.metresPerUnit, 1.0f);
 }
 
+// A project never saved (New, New from mesh) has no folder to autosave into: the autosave says
+// so, and how to fix it, instead of passing in silence while hours of painting go unguarded.
+TEST(EditorPanels, ANeverSavedProjectSaysItIsNotAutosaved) {
+    const ScratchFolder folder("editor-unsaved-autosave");
+    EditorDriver editor(folder.path());
+    editor.state.doc.loaded.file.clear();
+    editor.state.doc.dirty = false;
+    editor.state.transient.message.clear();
+    editor::autosaveNow(editor.state);
+    EXPECT_TRUE(editor.state.transient.message.empty()) << "nothing to lose yet";
+    editor.state.doc.dirty = true;
+    editor::autosaveNow(editor.state);
+    const std::string said = editor.state.transient.message;
+    EXPECT_EQ(said.rfind("not autosaved: ", 0), 0u) << said;
+    EXPECT_NE(said.find("Save As"), std::string::npos) << said;
+    EXPECT_TRUE(editor.state.transient.messageIsSaveError) << "shown in the warning colour";
+    EXPECT_TRUE(editor::autosavePath(editor.state.doc.loaded).empty());
+}
+
 // Issue 26 item 4: every status message is logged; a click on the status line shows them whole.
 TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
     const ScratchFolder folder("editor-messages");
