@@ -38,6 +38,10 @@ bool holdsProject(const fs::path& folder) {
 
 }  // namespace
 
+fs::path projectFileFor(const fs::path& path) {
+    return path.extension() == ".json" ? path : path / "project.json";
+}
+
 std::string_view browseTitle(BrowsePurpose purpose) {
     switch (purpose) {
         case BrowsePurpose::OpenProject: return "Open project";
@@ -204,7 +208,9 @@ std::optional<fs::path> FileBrowser::activateTyped() {
     mFocusPath = true;  // what follows a refusal or a move is more typing
     if (mTyped.empty()) {
         // A project folder being shown is what Open and Save mean with nothing typed.
-        if (projects && (mPurpose == BrowsePurpose::SaveProject || holdsProject(mFolder)))
+        if (mPurpose == BrowsePurpose::SaveProject)
+            return choose(mFolder);  // asks before replacing another project
+        if (projects && holdsProject(mFolder))
             return mFolder;
         mMessage = mPurpose == BrowsePurpose::OpenProject
                        ? "this folder holds no project.json: pick a project folder"
@@ -222,8 +228,22 @@ std::optional<fs::path> FileBrowser::activateTyped() {
 
 std::optional<fs::path> FileBrowser::choose(const fs::path& path) {
     switch (mPurpose) {
-        case BrowsePurpose::SaveProject:
-            return path;  // a new name is a new project folder (or .json file)
+        case BrowsePurpose::SaveProject: {
+            // A new name is a new project folder (or .json file). Another project's file would
+            // be overwritten, and its folder's files mixed with this project's (those already
+            // there are kept): asked first, confirmed by choosing it again.
+            const fs::path file = projectFileFor(path);
+            std::error_code ec;
+            const bool own = !mOwnProject.empty() && fs::equivalent(file, mOwnProject, ec);
+            if (isFile(file) && !own && mReplaceAsked != file) {
+                mReplaceAsked = file;
+                mMessage = file.string() +
+                           " is another project: choose it again (Save) to replace it, or type a "
+                           "new folder name";
+                return std::nullopt;
+            }
+            return path;
+        }
         case BrowsePurpose::ExportMap:
             if (isFolder(path)) {
                 mMessage = path.string() + " is a folder";

@@ -88,6 +88,10 @@ public:
     // or nothing when the browser only moved.
     std::optional<std::filesystem::path> activate(std::size_t index);
     std::optional<std::filesystem::path> activateTyped();
+    // Save As: the open project's own file, which a save may replace without asking. Any other
+    // project.json (a folder holding another project, an existing .json) is chosen only when
+    // the same path is chosen twice in a row: the first time says what would be replaced.
+    void setOwnProject(const std::filesystem::path& projectFile) { mOwnProject = projectFile; }
 
 private:
     std::optional<std::filesystem::path> choose(const std::filesystem::path& path);
@@ -99,6 +103,12 @@ private:
     std::optional<std::size_t> mSelected;
     std::string mMessage;
     bool mFocusPath = true;
+    std::filesystem::path mOwnProject;
+    std::filesystem::path mReplaceAsked;  // the other project a Save As asked about last
 };
+
+// The project file a chosen project path means: a folder, or a path not ending in .json, is
+// <path>/project.json (projects are folders).
+std::filesystem::path projectFileFor(const std::filesystem::path& path);
 
 }  // namespace grass::editor

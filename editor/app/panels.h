@@ -46,9 +46,6 @@ void saveOrAsk(EditorState& state);
 // while open; what it chooses goes where the menu item says.
 void openBrowser(EditorState& state, BrowsePurpose purpose);
 void fileBrowserWindow(ui::Context& ctx, EditorState& state);
-// The project file a chosen project path means: a folder, or a path not ending in .json, is
-// <path>/project.json (projects are folders).
-std::filesystem::path projectFileFor(const std::filesystem::path& path);
 // Files dropped on the window: a .gltf/.glb is imported as the surface, a picture as the brush's
 // map, a project folder or .json opened (asking first when there are unsaved changes); anything
 // else is refused in the status bar with what can be dropped. With several, the last of each

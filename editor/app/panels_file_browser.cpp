@@ -9,6 +9,7 @@
 #include "app/mesh_import.h"
 #include "app/panels.h"
 #include "ui/text_edit.h"
+#include "ui/text_wrap.h"
 #include "ui/window.h"
 #include "util/byte_size.h"
 
@@ -77,10 +78,6 @@ std::string entryText(const BrowserEntry& entry) {
 
 }  // namespace
 
-fs::path projectFileFor(const fs::path& path) {
-    return path.extension() == ".json" ? path : path / "project.json";
-}
-
 void routeDroppedFiles(EditorState& s, const std::vector<std::string>& paths) {
     for (const std::string& dropped : paths) {
         const fs::path path(dropped);
@@ -138,6 +135,8 @@ void openBrowser(EditorState& s, BrowsePurpose purpose) {
             break;
     }
     s.transient.browser.emplace(purpose, start, std::move(typed));
+    if (!s.doc.loaded.file.empty())
+        s.transient.browser->setOwnProject(s.doc.loaded.file);
 }
 
 void fileBrowserWindow(ui::Context& ctx, EditorState& s) {
@@ -170,7 +169,19 @@ void fileBrowserWindow(ui::Context& ctx, EditorState& s) {
             ui.separator();
             const FolderListing& listing = browser.listing();
             // The list takes what the rows below it leave of the window.
-            const float listHeight = std::max(80.0f, ui.availableRect().height() - 96.0f);
+            // A refusal or question below wraps to the window: its lines beyond the first are
+            // taken from the list too, so the message is never cut off at the bottom.
+            const std::size_t messageLines =
+                browser.message().empty()
+                    ? 1
+                    : ui::wrapText(ctx.fonts(), ui.style().textSizePt, browser.message(),
+                                   ui.availableWidth())
+                          .size();
+            const float messageExtra =
+                float(std::max<std::size_t>(messageLines, 1) - 1) *
+                (ctx.fonts().lineHeight(ui.style().textSizePt) + ui.style().itemSpacing.y);
+            const float listHeight =
+                std::max(80.0f, ui.availableRect().height() - 96.0f - messageExtra);
             ui.scrollArea("entries", listHeight, [&](ui::Ui& list) {
                 if (!listing.error.empty())
                     list.wrappedColoredLabel(listing.error, ui::Color32::rgb(255, 150, 60));

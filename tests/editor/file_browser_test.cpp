@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 
@@ -112,6 +113,38 @@ TEST(FileBrowser, AWrongKindOrAMissingFileIsRefusedWithTheReason) {
     FileBrowser save(BrowsePurpose::SaveProject, folder.path());
     save.typed() = "new-field";
     EXPECT_EQ(save.activateTyped(), std::optional<fs::path>(folder.path() / "new-field"));
+}
+
+// Save As onto another project would overwrite its project.json (and leave this project naming
+// that folder's files where names collide): the first choice says so, the same choice again
+// confirms. The open project's own file is saved over without asking (Save As where it is).
+TEST(FileBrowser, SavingOverAnotherProjectAsksFirst) {
+    const ScratchFolder folder("browser-replace");
+    makeFolder(folder.path());  // meadow/ holds a project.json
+    FileBrowser save(BrowsePurpose::SaveProject, folder.path());
+    save.typed() = "meadow";
+    EXPECT_FALSE(save.activateTyped().has_value());
+    EXPECT_NE(save.message().find("meadow/project.json is another project"), std::string::npos)
+        << save.message();
+    EXPECT_EQ(save.activateTyped(), std::optional<fs::path>(folder.path() / "meadow"))
+        << "chosen again: replace it";
+    // Browsed into (a double-click enters a folder) and saved with nothing typed: the same.
+    FileBrowser entered(BrowsePurpose::SaveProject, folder.path());
+    const auto& entries = entered.listing().entries;
+    const auto meadow = std::find_if(entries.begin(), entries.end(),
+                                     [](const auto& entry) { return entry.name == "meadow"; });
+    ASSERT_NE(meadow, entries.end());
+    EXPECT_FALSE(entered.activate(static_cast<std::size_t>(meadow - entries.begin())));
+    ASSERT_EQ(entered.folder(), folder.path() / "meadow");
+    EXPECT_FALSE(entered.activateTyped().has_value());
+    EXPECT_NE(entered.message().find("is another project"), std::string::npos);
+    EXPECT_EQ(entered.activateTyped(), std::optional<fs::path>(folder.path() / "meadow"));
+    // The open project's own folder: no question.
+    FileBrowser own(BrowsePurpose::SaveProject, folder.path());
+    own.setOwnProject(folder.path() / "meadow/project.json");
+    own.typed() = "meadow";
+    EXPECT_EQ(own.activateTyped(), std::optional<fs::path>(folder.path() / "meadow"));
+    EXPECT_TRUE(own.message().empty()) << own.message();
 }
 
 TEST(FileBrowser, StartsAtTheNearestFolderThatExists) {
