@@ -226,6 +226,15 @@ std::optional<fs::path> FileBrowser::activateTyped() {
     return choose(path);
 }
 
+bool FileBrowser::askReplace(const fs::path& file, std::string_view what) {
+    if (mReplaceAsked == file)
+        return false;  // the same choice twice in a row: replace it
+    mReplaceAsked = file;
+    mMessage = file.string() + " " + std::string(what) + ": choose it again (" +
+               std::string(browseButton(mPurpose)) + ") to replace it, or type a new name";
+    return true;
+}
+
 std::optional<fs::path> FileBrowser::choose(const fs::path& path) {
     switch (mPurpose) {
         case BrowsePurpose::SaveProject: {
@@ -235,13 +244,8 @@ std::optional<fs::path> FileBrowser::choose(const fs::path& path) {
             const fs::path file = projectFileFor(path);
             std::error_code ec;
             const bool own = !mOwnProject.empty() && fs::equivalent(file, mOwnProject, ec);
-            if (isFile(file) && !own && mReplaceAsked != file) {
-                mReplaceAsked = file;
-                mMessage = file.string() +
-                           " is another project: choose it again (Save) to replace it, or type a "
-                           "new folder name";
+            if (isFile(file) && !own && askReplace(file, "is another project"))
                 return std::nullopt;
-            }
             return path;
         }
         case BrowsePurpose::ExportMap:
@@ -253,7 +257,11 @@ std::optional<fs::path> FileBrowser::choose(const fs::path& path) {
                 mMessage = path.filename().string() + " is not one of " + browseFilterText(mPurpose);
                 return std::nullopt;
             }
-            return path;  // a new file or one to replace
+            // A picture already there (the artist's own texture, perhaps) is replaced only
+            // when chosen twice.
+            if (isFile(path) && askReplace(path, "already exists"))
+                return std::nullopt;
+            return path;
         case BrowsePurpose::OpenProject:
             if (isFolder(path) || isFile(path))
                 return path;

@@ -89,12 +89,16 @@ public:
     std::optional<std::filesystem::path> activate(std::size_t index);
     std::optional<std::filesystem::path> activateTyped();
     // Save As: the open project's own file, which a save may replace without asking. Any other
-    // project.json (a folder holding another project, an existing .json) is chosen only when
-    // the same path is chosen twice in a row: the first time says what would be replaced.
+    // project.json (a folder holding another project, an existing .json), and for a map export
+    // any existing file, is chosen only when the same path is chosen twice in a row: the first
+    // time says what would be replaced.
     void setOwnProject(const std::filesystem::path& projectFile) { mOwnProject = projectFile; }
 
 private:
     std::optional<std::filesystem::path> choose(const std::filesystem::path& path);
+    // Whether to hold back a choice that would replace `file`: true (with the question in
+    // message()) unless the same file was asked about by the last choice.
+    bool askReplace(const std::filesystem::path& file, std::string_view what);
 
     BrowsePurpose mPurpose = BrowsePurpose::OpenProject;
     std::filesystem::path mFolder;

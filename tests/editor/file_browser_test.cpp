@@ -147,6 +147,22 @@ TEST(FileBrowser, SavingOverAnotherProjectAsksFirst) {
     EXPECT_TRUE(own.message().empty()) << own.message();
 }
 
+// A painted map exported onto a picture already there (the artist's own texture, perhaps):
+// asked first, like Save As onto another project; a new name is taken at once.
+TEST(FileBrowser, ExportingAMapOverAnExistingPictureAsksFirst) {
+    const ScratchFolder folder("browser-export-map");
+    makeFolder(folder.path());  // moss.png exists
+    FileBrowser exporting(BrowsePurpose::ExportMap, folder.path());
+    exporting.typed() = "moss.png";
+    EXPECT_FALSE(exporting.activateTyped().has_value());
+    EXPECT_NE(exporting.message().find("moss.png already exists"), std::string::npos)
+        << exporting.message();
+    EXPECT_EQ(exporting.activateTyped(), std::optional<fs::path>(folder.path() / "moss.png"));
+    exporting.typed() = "grass-density.png";
+    EXPECT_EQ(exporting.activateTyped(),
+              std::optional<fs::path>(folder.path() / "grass-density.png"));
+}
+
 TEST(FileBrowser, StartsAtTheNearestFolderThatExists) {
     const ScratchFolder folder("browser-start");
     const FileBrowser browser(BrowsePurpose::OpenProject, folder.path() / "moved/away/project");
