@@ -51,8 +51,11 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     EditorState& state = e.mState;
     state.doc.loaded = std::move(*loaded);
     const core::Project& project = state.doc.loaded.project;
+    // A session someone works in fits the screen; a screenshot or a script keeps the exact
+    // size (tests compare it with `grass render`).
+    const bool interactive = e.mSettings.screenshot.empty() && e.mSettings.scriptFile.empty();
     auto window = Window::create(project.render.width, project.render.height,
-                                 "grass — " + project.name, e.mSettings.glDebug);
+                                 "grass — " + project.name, e.mSettings.glDebug, interactive);
     if (!window)
         return window.error();
     e.mWindow = std::move(*window);

@@ -1,7 +1,10 @@
 #include "app/window.h"
 
-#include "gl/debug_output.h"
+#include <algorithm>
+
 #include "app/editor_ui.h"
+#include "app/window_size.h"
+#include "gl/debug_output.h"
 
 #include <GLFW/glfw3.h>
 #include <epoxy/gl.h>
@@ -83,7 +86,7 @@ static void onGlfwError(int, const char*) {
 }
 
 Result<std::unique_ptr<Window>> Window::create(int width, int height, const std::string& title,
-                                               bool debugOutput) {
+                                               bool debugOutput, bool fitToScreen) {
     glfwSetErrorCallback(onGlfwError);
     if (!glfwInit())
         return makeError("grass-editor",
@@ -95,6 +98,16 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debugOutput ? GLFW_TRUE : GLFW_FALSE);
+    if (GLFWmonitor* monitor = fitToScreen ? glfwGetPrimaryMonitor() : nullptr) {
+        int areaX = 0, areaY = 0, areaWidth = 0, areaHeight = 0;
+        glfwGetMonitorWorkarea(monitor, &areaX, &areaY, &areaWidth, &areaHeight);
+        float scaleX = 1.0f, scaleY = 1.0f;
+        glfwGetMonitorContentScale(monitor, &scaleX, &scaleY);
+        const WindowSize fitted =
+            fitWindowSize({width, height}, areaWidth, areaHeight, std::max(scaleX, scaleY));
+        width = fitted.width;
+        height = fitted.height;
+    }
     GLFWwindow* handle = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!handle) {
         const char* why = nullptr;

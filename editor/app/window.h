@@ -49,9 +49,10 @@ struct InputState {
 class Window {
 public:
     // The error says there is no display and how to render without one. `debugOutput` asks for
-    // a debug context whose messages go to stderr (gl/debug_output.h).
+    // a debug context whose messages go to stderr (gl/debug_output.h). `fitToScreen` makes a
+    // window too large for the primary monitor's work area smaller (window_size.h).
     static Result<std::unique_ptr<Window>> create(int width, int height, const std::string& title,
-                                                  bool debugOutput);
+                                                  bool debugOutput, bool fitToScreen = false);
     ~Window();
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;
