@@ -28,8 +28,8 @@ inline WindowSize fitWindowSize(WindowSize requested, int areaWidth, int areaHei
     const float scale = contentScale > 0.0f ? contentScale : 1.0f;
     const float roomWidth = float(areaWidth - WINDOW_FRAME_ALLOWANCE / 4) / scale;
     const float roomHeight = float(areaHeight - WINDOW_FRAME_ALLOWANCE) / scale;
-    const float shrink = std::min({1.0f, roomWidth / float(requested.width),
-                                   roomHeight / float(requested.height)});
+    const float shrink =
+        std::min({1.0f, roomWidth / float(requested.width), roomHeight / float(requested.height)});
     if (shrink >= 1.0f)
         return requested;
     return {std::max(1, int(std::floor(float(requested.width) * shrink))),
