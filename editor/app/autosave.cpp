@@ -1,7 +1,13 @@
 #include "app/autosave.h"
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
 #include <system_error>
 
+#include "app/mesh_import.h"
 #include "maps/map_image.h"
 #include "ui/ui.h"
 #include "ui/window.h"
@@ -13,6 +19,39 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::string_view AUTOSAVE_TAG = ".autosave";
+// The side project in a never-saved project's slot.
+constexpr std::string_view UNSAVED_SIDE_PROJECT = "project.autosave.json";
+
+// The side project `file` and the side files of the painted maps, named relative to `folder`.
+Result<void> writeSideFiles(const EditorState& s, const fs::path& folder, const fs::path& file) {
+    if (!s.scene)
+        return {};
+    core::Project project = s.doc.loaded.project;
+    for (const auto& [index, map] : s.doc.paintedMaps) {
+        if (index >= project.layers.size() || index >= s.scene->layers.size())
+            continue;
+        core::GrassLayer& layer = project.layers[index];
+        std::string& field = core::layerMapFile(layer, map);
+        const std::string side =
+            autosaveMapName(field.empty() ? core::defaultMapFile(layer.name, core::layerMapName(map)) : field);
+        auto target = core::resolveAssetPath(folder, side, "autosave");
+        if (!target)
+            return target.error();
+        std::error_code ec;
+        fs::create_directories(target->parent_path(), ec);
+        if (auto saved = core::saveMapImage(
+                core::layerMap(s.scene->layers[index].source.maps, map), *target);
+            !saved)
+            return saved.error();
+        field = side;
+    }
+    return core::saveProject(project, file);
+}
+
+// Whether `pid` names a process that still runs (another editor's slot is its own).
+bool processRuns(long pid) {
+    return pid > 0 && pid != long(::getpid()) && (::kill(pid_t(pid), 0) == 0 || errno != ESRCH);
+}
 
 }  // namespace
 
@@ -42,39 +81,103 @@ std::optional<std::string> mapNameOfAutosave(const std::string& relative) {
 
 Result<void> writeAutosave(const EditorState& s) {
     const fs::path file = autosavePath(s.doc.loaded);
-    if (file.empty() || !s.scene)
+    if (file.empty())
         return {};
-    core::Project project = s.doc.loaded.project;
-    for (const auto& [index, map] : s.doc.paintedMaps) {
-        if (index >= project.layers.size() || index >= s.scene->layers.size())
-            continue;
-        core::GrassLayer& layer = project.layers[index];
-        std::string& field = core::layerMapFile(layer, map);
-        const std::string side =
-            autosaveMapName(field.empty() ? core::defaultMapFile(layer.name, core::layerMapName(map)) : field);
-        auto target = core::resolveAssetPath(s.doc.loaded.folder, side, "autosave");
-        if (!target)
-            return target.error();
-        std::error_code ec;
-        fs::create_directories(target->parent_path(), ec);
-        if (auto saved = core::saveMapImage(
-                core::layerMap(s.scene->layers[index].source.maps, map), *target);
-            !saved)
-            return saved.error();
-        field = side;
+    return writeSideFiles(s, s.doc.loaded.folder, file);
+}
+
+fs::path unsavedAutosaveRoot() {
+    if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state == '/')
+        return fs::path(state) / "grass" / "unsaved";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return fs::path(home) / ".local" / "state" / "grass" / "unsaved";
+    return {};
+}
+
+Result<void> writeUnsavedAutosave(EditorState& s) {
+    if (!s.scene)
+        return {};
+    // A slot holds the files of one folder: a project that took another folder (a mesh imported
+    // from elsewhere) starts a fresh slot, so no stale file of the same name is kept.
+    if (!s.doc.unsavedSlot.empty() && s.doc.unsavedSlotFrom != s.doc.loaded.folder &&
+        s.doc.unsavedSlot != s.doc.loaded.folder)
+        removeUnsavedSlot(s.doc.unsavedSlot);
+    if (s.doc.unsavedSlot.empty()) {
+        const fs::path root = unsavedAutosaveRoot();
+        if (root.empty())
+            return makeError("autosave", "there is no folder for it (neither XDG_STATE_HOME nor HOME is set)");
+        static int slots = 0;
+        s.doc.unsavedSlot = root / (std::to_string(::getpid()) + "-" + std::to_string(++slots));
+        s.doc.unsavedSlotFrom = s.doc.loaded.folder;
     }
-    return core::saveProject(project, file);
+    const fs::path& slot = s.doc.unsavedSlot;
+    std::error_code ec;
+    fs::create_directories(slot, ec);
+    if (ec)
+        return makeError(slot.string(), "cannot create the autosave folder: " + ec.message());
+    // The files the project names, copied once as Save As copies them (a recovered project's
+    // are in its slot already).
+    if (s.doc.loaded.folder != slot)
+        for (const std::string& asset : core::projectAssetPaths(s.doc.loaded.project))
+            if (auto copied = copyAssetFiles(s.doc.loaded.folder / asset, slot / asset); !copied)
+                return copied.error();
+    return writeSideFiles(s, slot, slot / UNSAVED_SIDE_PROJECT);
+}
+
+std::optional<core::LoadedProject> findUnsavedAutosave() {
+    const fs::path root = unsavedAutosaveRoot();
+    std::error_code ec;
+    if (root.empty() || !fs::is_directory(root, ec))
+        return std::nullopt;
+    std::optional<core::LoadedProject> newest;
+    fs::file_time_type newestTime{};
+    for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec)) {
+        const fs::path slot = it->path();
+        const fs::path side = slot / UNSAVED_SIDE_PROJECT;
+        if (processRuns(std::strtol(slot.filename().c_str(), nullptr, 10)) ||
+            !fs::is_regular_file(side, ec))
+            continue;
+        std::error_code timeError;
+        const fs::file_time_type time = fs::last_write_time(side, timeError);
+        if (timeError || (newest && time <= newestTime))
+            continue;
+        auto loaded = core::loadProject(side);
+        if (!loaded)
+            continue;  // half-written or damaged: nothing to offer
+        loaded->file.clear();  // never saved: Save asks where
+        loaded->folder = slot;
+        newest = std::move(*loaded);
+        newestTime = time;
+    }
+    return newest;
+}
+
+void removeUnsavedSlot(fs::path& slot) {
+    const fs::path root = unsavedAutosaveRoot();
+    std::error_code ec;
+    if (!slot.empty() && !root.empty() && slot.parent_path() == root)
+        fs::remove_all(slot, ec);
+    slot.clear();
 }
 
 void autosaveNow(EditorState& state) {
     // A project never saved (File > New, New from mesh) has no folder of its own to autosave
-    // next to: say so while there is work to lose, rather than nothing at all.
+    // next to: it goes to the user's unsaved folder, and when even that fails the status line
+    // says so, rather than nothing at all.
     if (state.doc.loaded.file.empty()) {
-        if (state.doc.dirty && !state.transient.messageIsSaveError) {
+        if (!state.doc.dirty)
+            return;
+        if (auto written = writeUnsavedAutosave(state); !written) {
+            if (!state.transient.messageIsSaveError) {
+                state.transient.message = "not autosaved: " + written.error().str() +
+                                          " (this project has never been saved: File > Save "
+                                          "As... gives it a folder)";
+                state.transient.messageIsSaveError = true;
+            }
+        } else if (!state.transient.messageIsSaveError) {
             state.transient.message =
-                "not autosaved: this project has never been saved (File > Save As... gives it a "
-                "folder, and autosaves then keep your work)";
-            state.transient.messageIsSaveError = true;
+                "autosaved to " + (state.doc.unsavedSlot / UNSAVED_SIDE_PROJECT).string() +
+                " (a new project: File > Save As... gives it a folder)";
         }
         return;
     }
@@ -140,13 +243,21 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
     ui::window(
         ctx, "Recover unsaved work?", &open,
         [&](ui::Ui& ui) {
+            // A never-saved project's autosave is offered whatever project the editor opened.
+            const bool unsaved = s.recoveryOffer->file.empty();
             ui.label("The editor did not close cleanly last time.");
-            ui.label("An autosave of this project has changes that were not saved.");
+            ui.label(unsaved ? "A new project that was never saved was autosaved."
+                             : "An autosave of this project has changes that were not saved.");
             ui.horizontal([&](ui::Ui& row) {
                 if (row.button("Recover").onHoverText("Open the autosaved work (it stays unsaved until you save)").clicked())
                     s.recoverRequested = true;
                 if (row.button("Discard").onHoverText("Delete the autosave and keep the project as saved").clicked()) {
-                    removeAutosave(s.doc.loaded);
+                    if (unsaved) {
+                        fs::path slot = s.recoveryOffer->folder;
+                        removeUnsavedSlot(slot);
+                    } else {
+                        removeAutosave(s.doc.loaded);
+                    }
                     s.recoveryOffer.reset();
                 }
             });

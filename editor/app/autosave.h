@@ -27,11 +27,26 @@ std::optional<std::string> mapNameOfAutosave(const std::string& relative);
 Result<void> writeAutosave(const EditorState& state);
 // writeAutosave, with what happened in the status bar: a failure always, "autosaved to …" only
 // when it does not replace a failed save's message (that stays until a save succeeds). A
-// project never saved is not autosaved (it has no folder): the status bar says so, in the
-// failed save's colour, while it has unsaved changes.
+// project never saved (File › New, New from mesh) autosaves into its slot of the user's
+// unsaved folder instead (below); where there is none, the status bar says it is not
+// autosaved, in the failed save's colour.
 void autosaveNow(EditorState& state);
 // Removes the side project and every side map it names.
 void removeAutosave(const core::LoadedProject& loaded);
+
+// A project never saved has no folder of its own to autosave next to. Its autosave goes to
+// <root>/<pid>-<n>/, root being $XDG_STATE_HOME/grass/unsaved (~/.local/state/grass/unsaved
+// when unset; empty when neither that nor HOME is set): a project of its own there, the files
+// it names copied along as Save As copies them, then the side project and side maps as above.
+std::filesystem::path unsavedAutosaveRoot();
+// Writes the never-saved document's autosave into its slot (chosen on the first call).
+Result<void> writeUnsavedAutosave(EditorState& state);
+// The newest autosave of a never-saved project whose editor is gone (its process ended without
+// a clean close): a never-saved document (file empty) whose folder is the slot, so the files
+// it names resolve there.
+std::optional<core::LoadedProject> findUnsavedAutosave();
+// Removes a slot of the unsaved folder (nothing outside it) and forgets it.
+void removeUnsavedSlot(std::filesystem::path& slot);
 
 // The autosaved project, if one is left from a session that did not close cleanly: the project
 // as the user had it, its map fields naming the side maps (and its file the real project's).

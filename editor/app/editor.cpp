@@ -91,6 +91,10 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
         rememberRecent(state, state.doc.loaded.file);
     }
     state.recoveryOffer = findAutosave(state.doc.loaded);
+    // A never-saved project's autosave, left by a session that ended without a clean close, is
+    // offered whatever project this session opens (it has no folder to be found by).
+    if (!state.recoveryOffer && !e.mReplay)
+        state.recoveryOffer = findUnsavedAutosave();
     state.recoverRequested = e.mSettings.recover && state.recoveryOffer.has_value();
     e.resetTimeline();
     std::fprintf(stderr, "grass-editor: %s, %zu blades, geometry %s\n",
@@ -190,6 +194,8 @@ bool Editor::closeRequested() {
         // A clean close leaves nothing to recover (an autosave still on offer stays).
         if (!mState.doc.dirty && !mState.recoveryOffer)
             removeAutosave(mState.doc.loaded);
+        if (!mState.doc.dirty)
+            removeUnsavedSlot(mState.doc.unsavedSlot);
         return true;
     }
     mWindow->cancelClose();  // ask first
@@ -203,6 +209,7 @@ bool Editor::applyRequests() {
     if (state.quitRequested) {
         if (!state.recoveryOffer)
             removeAutosave(state.doc.loaded);
+        removeUnsavedSlot(state.doc.unsavedSlot);  // saved or let go: nothing to recover
         return true;
     }
     // An export reads the scene on its worker: replacing or re-growing it waits.
@@ -277,6 +284,14 @@ bool Editor::adoptDocument(core::LoadedProject next, std::string_view what) {
     if (!replaceDocument(mState, mLive, std::move(next), !mSettings.noPhysics, what,
                          mSettings.physicsDevice))
         return false;
+    // The document left was saved or let go: its unsaved autosave has nothing to recover. A
+    // recovered never-saved project goes on autosaving into the slot it came from.
+    removeUnsavedSlot(mState.doc.unsavedSlot);
+    if (mState.doc.loaded.file.empty() && !mState.doc.loaded.folder.empty() &&
+        mState.doc.loaded.folder.parent_path() == unsavedAutosaveRoot()) {
+        mState.doc.unsavedSlot = mState.doc.loaded.folder;
+        mState.doc.unsavedSlotFrom = mState.doc.loaded.folder;
+    }
     if (auto camera = render::projectCamera(mState.doc.loaded.project, ""))
         mCamera = *camera;
     resetTimeline();

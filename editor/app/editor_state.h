@@ -46,6 +46,10 @@ struct Document {
     // Painted maps waiting, by layer name, for their layer to come (back): those of a removed
     // layer until an undo restores it, and those a duplicate starts from (edit_actions.h).
     std::map<std::pair<std::string, core::LayerMap>, core::MapImage> waitingMaps;
+    // A project never saved autosaves into a folder of the user's (autosave.h): its slot there,
+    // empty until the first autosave, and the folder whose files were copied into it.
+    std::filesystem::path unsavedSlot;
+    std::filesystem::path unsavedSlotFrom;
 
     const core::Project& project() const { return loaded.project; }
 };

@@ -279,8 +279,10 @@ bool saveTo(EditorState& s, const std::string& file) {
         return refuse(maps.error());
     if (auto saved = core::saveProject(s.doc.loaded.project, path); !saved)
         return refuse(saved.error());
-    // Saved: the autosave side files (of where the project was) have nothing left to recover.
+    // Saved: the autosave side files (of where the project was, or of a never-saved project in
+    // the user's unsaved folder) have nothing left to recover.
     removeAutosave(s.doc.loaded);
+    removeUnsavedSlot(s.doc.unsavedSlot);
     s.doc.loaded.file = path;
     s.doc.loaded.folder = folder;
     s.doc.dirty = false;

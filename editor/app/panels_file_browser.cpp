@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "app/autosave.h"
 #include "app/edit_actions.h"
 #include "app/mesh_import.h"
 #include "app/panels.h"
@@ -117,6 +118,11 @@ void openBrowser(EditorState& s, BrowsePurpose purpose) {
             if (!s.doc.loaded.file.empty()) {
                 start = projectFolder.parent_path();
                 typed = projectFolder.filename().string();
+            } else if (projectFolder.parent_path() == unsavedAutosaveRoot()) {
+                // A recovered never-saved project lives in its autosave slot: not a place to
+                // save it to.
+                std::error_code ec;
+                start = fs::current_path(ec);
             }
             break;
         case BrowsePurpose::ExportMap:

@@ -135,7 +135,8 @@ Result<EditorFigures> measureEditor(const fs::path& project, bool glDebug) {
     const std::string prefix = display && *display ? "" : "xvfb-run -a -s '-screen 0 1920x1200x24' ";
     // The session opens a copy that is deleted afterwards: its own configuration folder keeps
     // it out of the user's File > Open Recent.
-    const std::string command = "XDG_CONFIG_HOME='" + (scratch / "config").string() + "' " +
+    const std::string command = "XDG_CONFIG_HOME='" + (scratch / "config").string() +
+                                "' XDG_STATE_HOME='" + (scratch / "state").string() + "' " +
                                 prefix + "'" + editor->string() + "' '" +
                                 (scratch / "project").string() + "' --script '" +
                                 (scratch / "session.txt").string() + "' --wall-clock" +

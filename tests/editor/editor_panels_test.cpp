@@ -4,6 +4,7 @@
 // options; no GL context is used.)
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -467,23 +468,82 @@ TEST(EditorPanels, TheSurfaceSectionSetsTheMeshUnit) {
     EXPECT_EQ(editor.state.doc.loaded.project.mesh.metresPerUnit, 1.0f);
 }
 
-// A project never saved (New, New from mesh) has no folder to autosave into: the autosave says
-// so, and how to fix it, instead of passing in silence while hours of painting go unguarded.
-TEST(EditorPanels, ANeverSavedProjectSaysItIsNotAutosaved) {
+// The environment variable `name` set to `value` (unset when null) for one scope.
+class ScopedEnv {
+public:
+    ScopedEnv(const char* name, const char* value) : mName(name) {
+        if (const char* old = std::getenv(name))
+            mOld = old;
+        if (value)
+            ::setenv(name, value, 1);
+        else
+            ::unsetenv(name);
+    }
+    ~ScopedEnv() {
+        if (mOld)
+            ::setenv(mName, mOld->c_str(), 1);
+        else
+            ::unsetenv(mName);
+    }
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+private:
+    const char* mName;
+    std::optional<std::string> mOld;
+};
+
+// A project never saved (New, New from mesh) has no folder of its own: its autosave goes to the
+// user's unsaved folder as a project of its own, the files it names copied along, and is offered
+// back after a crash (not while another editor that owns it runs); a save removes it. Before,
+// such a project was never autosaved, in silence.
+TEST(EditorPanels, ANeverSavedProjectIsAutosavedIntoTheUsersFolderAndOfferedBack) {
     const ScratchFolder folder("editor-unsaved-autosave");
+    const ScratchFolder stateHome("editor-unsaved-state");
+    const ScopedEnv state("XDG_STATE_HOME", stateHome.path().c_str());
     EditorDriver editor(folder.path());
-    editor.state.doc.loaded.file.clear();
-    editor.state.doc.dirty = false;
-    editor.state.transient.message.clear();
+    editor.state.doc.loaded.file.clear();  // as File > New from mesh leaves it
+    editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
     editor::autosaveNow(editor.state);
-    EXPECT_TRUE(editor.state.transient.message.empty()) << "nothing to lose yet";
+    const fs::path slot = editor.state.doc.unsavedSlot;
+    ASSERT_FALSE(slot.empty());
+    EXPECT_EQ(slot.parent_path(), stateHome.path() / "grass/unsaved");
+    EXPECT_EQ(editor.state.transient.message.rfind("autosaved to ", 0), 0u)
+        << editor.state.transient.message;
+    EXPECT_FALSE(editor.state.transient.messageIsSaveError);
+    EXPECT_TRUE(fs::exists(slot / "project.autosave.json"));
+    EXPECT_TRUE(fs::exists(slot / "maps/soil.png")) << "the files it names, copied along";
+    EXPECT_TRUE(fs::exists(slot / "maps/soil.autosave.png")) << "the painted map";
+
+    // Another editor's slot (its process runs: pid 1) is not offered, though it is newer.
+    fs::create_directories(stateHome.path() / "grass/unsaved/1-1");
+    fs::copy_file(slot / "project.autosave.json",
+                  stateHome.path() / "grass/unsaved/1-1/project.autosave.json");
+    const auto offered = editor::findUnsavedAutosave();
+    ASSERT_TRUE(offered.has_value());
+    EXPECT_EQ(offered->folder, slot);
+    EXPECT_TRUE(offered->file.empty()) << "still never saved: Save asks where";
+    EXPECT_EQ(offered->project.layers.front().soilMap, "maps/soil.autosave.png");
+    EXPECT_TRUE(core::buildScene(*offered).ok()) << "it grows from the slot's files";
+
+    // Saved: nothing left to recover.
+    ASSERT_TRUE(editor::saveTo(editor.state, (folder.path() / "saved/project.json").string()));
+    EXPECT_FALSE(fs::exists(slot));
+    EXPECT_TRUE(editor.state.doc.unsavedSlot.empty());
+    EXPECT_TRUE(fs::exists(folder.path() / "saved/maps/soil.png"));
+
+    // With no folder for it at all, the status line says so and how to keep the work.
+    const ScopedEnv noState("XDG_STATE_HOME", nullptr);
+    const ScopedEnv noHome("HOME", nullptr);
+    EXPECT_TRUE(editor::unsavedAutosaveRoot().empty());
+    editor.state.doc.loaded.file.clear();
     editor.state.doc.dirty = true;
+    editor.state.transient.message.clear();
     editor::autosaveNow(editor.state);
     const std::string said = editor.state.transient.message;
     EXPECT_EQ(said.rfind("not autosaved: ", 0), 0u) << said;
     EXPECT_NE(said.find("Save As"), std::string::npos) << said;
     EXPECT_TRUE(editor.state.transient.messageIsSaveError) << "shown in the warning colour";
-    EXPECT_TRUE(editor::autosavePath(editor.state.doc.loaded).empty());
 }
 
 // Issue 26 item 4: every status message is logged; a click on the status line shows them whole.

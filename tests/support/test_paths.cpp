@@ -13,14 +13,16 @@ std::filesystem::path scratchRoot() {
                 : std::filesystem::temp_directory_path() / "grass-tests";
 }
 
-// No test writes into the configuration of the user who runs the suite. The editor keeps its
-// recent projects in $XDG_CONFIG_HOME/grass/recent.json, and the tests that run the real editor
-// on a project (screenshots, scripts, time) added their folders under build/test-tmp to the
-// developer's own File > Open Recent. Every test process, and every editor it starts, gets a
-// configuration folder of its own beside the scratch folders (tests/CMakeLists.txt does the
-// same for the command-line tests). A test that sets the variable itself still may.
-[[maybe_unused]] const bool CONFIG_HOME_IN_SCRATCH =
-    ::setenv("XDG_CONFIG_HOME", (scratchRoot() / "config").c_str(), 1) == 0;
+// No test writes into the configuration or state of the user who runs the suite. The editor
+// keeps its recent projects in $XDG_CONFIG_HOME/grass/recent.json, and the tests that run the
+// real editor on a project (screenshots, scripts, time) added their folders under
+// build/test-tmp to the developer's own File > Open Recent; never-saved projects autosave under
+// $XDG_STATE_HOME. Every test process, and every editor it starts, gets folders of its own
+// beside the scratch folders (tests/CMakeLists.txt does the same for the command-line tests).
+// A test that sets the variables itself still may.
+[[maybe_unused]] const bool HOMES_IN_SCRATCH =
+    ::setenv("XDG_CONFIG_HOME", (scratchRoot() / "config").c_str(), 1) == 0 &&
+    ::setenv("XDG_STATE_HOME", (scratchRoot() / "state").c_str(), 1) == 0;
 
 }  // namespace
 
