@@ -39,7 +39,12 @@ using GrowthGoldenTest = GlTest;
 // 1.6 m plane, 1000 blades 0.2–0.3 m at full growth, soil 0 at u = 0 to 1 at u = 1 (x grows
 // with u on the procedural plane), no light map (l = 1). density 0 gives the bare plane.
 core::Scene rampScene(float density) {
-    const std::filesystem::path folder = scratchDir("growth-golden");
+    // A folder of this test's own: CTest runs the cases side by side, and scratchDir empties
+    // the folder it returns.
+    const std::filesystem::path folder =
+        scratchDir("growth-golden-" +
+                   std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                   "-" + std::to_string(int(density)));
     core::MapImage ramp = core::makeConstantMap(64, 4, 0.0f);
     for (int y = 0; y < ramp.height; ++y)
         for (int x = 0; x < ramp.width; ++x)

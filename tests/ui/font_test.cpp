@@ -31,7 +31,7 @@ TEST(FontAtlas, MissingFileNamesFileAndProblem) {
 }
 
 TEST(FontAtlas, NonFontFileIsRejectedWithReason) {
-    const std::filesystem::path file = test::scratchDir("font") / "not-a-font.ttf";
+    const std::filesystem::path file = test::scratchDir("font-not-a-font") / "not-a-font.ttf";
     {
         std::ofstream out(file, std::ios::binary);
         out << "This is a text file pretending to be a font, long enough to have a header.\n";
@@ -49,7 +49,7 @@ TEST(FontAtlas, TruncatedFontIsRejected) {
     std::ifstream in(FontAtlas::defaultFontPath(), std::ios::binary);
     std::string bytes(4096, '\0');
     in.read(bytes.data(), std::streamsize(bytes.size()));
-    const std::filesystem::path file = test::scratchDir("font") / "truncated.ttf";
+    const std::filesystem::path file = test::scratchDir("font-truncated") / "truncated.ttf";
     std::ofstream(file, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
     std::string error;
     EXPECT_FALSE(FontAtlas::load(file, &error).has_value());
