@@ -1,5 +1,7 @@
 #include "util/atomic_file.h"
 
+#include "util/process_alive.h"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -48,7 +50,7 @@ std::size_t removeStaleTemporaries(const fs::path& folder) {
             continue;
         const pid_t owner = temporaryOwner(it->path().filename().string());
         // Alive (or not ours to ask about): its save may be under way.
-        if (owner <= 0 || owner == ::getpid() || ::kill(owner, 0) == 0 || errno != ESRCH)
+        if (owner <= 0 || owner == ::getpid() || processRunsElsewhere(owner))
             continue;
         std::error_code removeError;
         if (fs::remove(it->path(), removeError))

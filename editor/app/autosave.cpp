@@ -1,9 +1,7 @@
 #include "app/autosave.h"
 
-#include <signal.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <cstdlib>
 #include <system_error>
 
@@ -11,6 +9,7 @@
 #include "maps/map_image.h"
 #include "ui/ui.h"
 #include "ui/window.h"
+#include "util/process_alive.h"
 
 namespace grass::editor {
 
@@ -46,11 +45,6 @@ Result<void> writeSideFiles(const EditorState& s, const fs::path& folder, const 
         field = side;
     }
     return core::saveProject(project, file);
-}
-
-// Whether `pid` names a process that still runs (another editor's slot is its own).
-bool processRuns(long pid) {
-    return pid > 0 && pid != long(::getpid()) && (::kill(pid_t(pid), 0) == 0 || errno != ESRCH);
 }
 
 }  // namespace
@@ -134,8 +128,10 @@ std::optional<core::LoadedProject> findUnsavedAutosave() {
     for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec)) {
         const fs::path slot = it->path();
         const fs::path side = slot / UNSAVED_SIDE_PROJECT;
-        if (processRuns(std::strtol(slot.filename().c_str(), nullptr, 10)) ||
-            !fs::is_regular_file(side, ec))
+        // A slot whose editor still runs is that editor's own.
+        std::error_code sideError;
+        if (processRunsElsewhere(std::strtol(slot.filename().c_str(), nullptr, 10)) ||
+            !fs::is_regular_file(side, sideError))
             continue;
         std::error_code timeError;
         const fs::file_time_type time = fs::last_write_time(side, timeError);
