@@ -3,12 +3,14 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <system_error>
 
 #include "app/mesh_import.h"
 #include "maps/map_image.h"
 #include "ui/ui.h"
 #include "ui/window.h"
+#include "util/atomic_file.h"
 #include "util/process_alive.h"
 
 namespace grass::editor {
@@ -20,6 +22,9 @@ namespace fs = std::filesystem;
 constexpr std::string_view AUTOSAVE_TAG = ".autosave";
 // The side project in a never-saved project's slot.
 constexpr std::string_view UNSAVED_SIDE_PROJECT = "project.autosave.json";
+// In a slot that took a saved project's autosave (its own folder could not be written): the
+// project file it came from, one line.
+constexpr std::string_view UNSAVED_ORIGIN = "origin.txt";
 
 // The side project `file` and the side files of the painted maps, named relative to `folder`.
 Result<void> writeSideFiles(const EditorState& s, const fs::path& folder, const fs::path& file) {
@@ -156,6 +161,17 @@ void removeUnsavedSlot(fs::path& slot) {
     slot.clear();
 }
 
+Result<void> writeUnsavedOrigin(const fs::path& slot, const fs::path& projectFile) {
+    return writeFileAtomic(slot / UNSAVED_ORIGIN, projectFile.string() + "\n");
+}
+
+fs::path unsavedAutosaveOrigin(const fs::path& slot) {
+    std::ifstream in(slot / UNSAVED_ORIGIN);
+    std::string line;
+    std::getline(in, line);
+    return line;
+}
+
 void autosaveNow(EditorState& state) {
     // A project never saved (File > New, New from mesh) has no folder of its own to autosave
     // next to: it goes to the user's unsaved folder, and when even that fails the status line
@@ -177,10 +193,32 @@ void autosaveNow(EditorState& state) {
         }
         return;
     }
-    if (auto written = writeAutosave(state); !written)
-        state.transient.message = "autosave failed: " + written.error().str();
-    else if (!state.doc.loaded.file.empty() && !state.transient.messageIsSaveError)
-        state.transient.message = "autosaved to " + autosavePath(state.doc.loaded).string();
+    auto written = writeAutosave(state);
+    if (written) {
+        // The folder takes it (again): a slot that stood in for it has nothing left to recover.
+        removeUnsavedSlot(state.doc.unsavedSlot);
+        if (!state.transient.messageIsSaveError)
+            state.transient.message = "autosaved to " + autosavePath(state.doc.loaded).string();
+        return;
+    }
+    // A project whose folder cannot be written (read-only, full, gone) is autosaved where a
+    // never-saved one is, and offered back the same way: the work is kept, and the status line
+    // says where and how to save it for good.
+    auto kept = writeUnsavedAutosave(state);
+    if (kept)
+        kept = writeUnsavedOrigin(state.doc.unsavedSlot, state.doc.loaded.file);
+    if (!kept) {
+        state.transient.message = "autosave failed: " + written.error().str() + "; nor in " +
+                                  kept.error().str();
+        state.transient.messageIsSaveError = true;
+        return;
+    }
+    // Where the work is comes first: the status line shows the beginning of a long message.
+    state.transient.message = "the project's folder refused the autosave: kept in " +
+                              (state.doc.unsavedSlot / UNSAVED_SIDE_PROJECT).string() + " (" +
+                              written.error().str() +
+                              "; File > Save As... saves the project elsewhere)";
+    state.transient.messageIsSaveError = true;
 }
 
 void removeAutosave(const core::LoadedProject& loaded) {
@@ -235,15 +273,22 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
     if (!s.recoveryOffer)
         return;
     const ui::Rect screen = ctx.screenRect();
+    // A never-saved project's autosave is offered whatever project the editor opened, and so is
+    // a saved project's that its folder refused (it names that project).
+    const bool unsaved = s.recoveryOffer->file.empty();
+    const fs::path origin = unsaved ? unsavedAutosaveOrigin(s.recoveryOffer->folder) : fs::path();
     bool open = true;
     ui::window(
         ctx, "Recover unsaved work?", &open,
         [&](ui::Ui& ui) {
-            // A never-saved project's autosave is offered whatever project the editor opened.
-            const bool unsaved = s.recoveryOffer->file.empty();
             ui.label("The editor did not close cleanly last time.");
-            ui.label(unsaved ? "A new project that was never saved was autosaved."
-                             : "An autosave of this project has changes that were not saved.");
+            if (!origin.empty()) {
+                ui.wrappedLabel("An autosave of " + origin.string() +
+                                " was kept in your unsaved folder (the project's folder could not be written).");
+            } else {
+                ui.label(unsaved ? "A new project that was never saved was autosaved."
+                                 : "An autosave of this project has changes that were not saved.");
+            }
             ui.horizontal([&](ui::Ui& row) {
                 if (row.button("Recover").onHoverText("Open the autosaved work (it stays unsaved until you save)").clicked())
                     s.recoverRequested = true;
@@ -259,7 +304,7 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
             });
         },
         ui::Rect::fromMinSize({screen.centre().x - 220.0f, screen.centre().y - 60.0f},
-                              {440.0f, 110.0f}));
+                              {440.0f, origin.empty() ? 110.0f : 132.0f}));
     if (!open)
         s.recoveryOffer.reset();  // decided later: the side files stay until a save
 }

@@ -29,7 +29,8 @@ Result<void> writeAutosave(const EditorState& state);
 // when it does not replace a failed save's message (that stays until a save succeeds). A
 // project never saved (File › New, New from mesh) autosaves into its slot of the user's
 // unsaved folder instead (below); where there is none, the status bar says it is not
-// autosaved, in the failed save's colour.
+// autosaved, in the failed save's colour. A saved project whose folder refuses the side files
+// (read-only, full) is autosaved into such a slot as well, and the status bar says where.
 void autosaveNow(EditorState& state);
 // Removes the side project and every side map it names.
 void removeAutosave(const core::LoadedProject& loaded);
@@ -45,6 +46,11 @@ Result<void> writeUnsavedAutosave(EditorState& state);
 // a clean close): a never-saved document (file empty) whose folder is the slot, so the files
 // it names resolve there.
 std::optional<core::LoadedProject> findUnsavedAutosave();
+// A saved project whose folder cannot be written autosaves into a slot too (autosaveNow); the
+// slot records the project file it came from, which the recovery offer names.
+Result<void> writeUnsavedOrigin(const std::filesystem::path& slot, const std::filesystem::path& projectFile);
+// That project file; empty for a never-saved project's slot.
+std::filesystem::path unsavedAutosaveOrigin(const std::filesystem::path& slot);
 // Removes a slot of the unsaved folder (nothing outside it) and forgets it.
 void removeUnsavedSlot(std::filesystem::path& slot);
 

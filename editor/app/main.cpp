@@ -67,7 +67,8 @@ int main(int argc, char** argv) {
                   5.0, 10000.0, "80");
     parser.number("--autosave-s", "S",
                   "seconds between autosaves of unsaved changes to <project>.autosave.json (0: "
-                  "never)",
+                  "never); a project never saved, or whose folder cannot be written, autosaves "
+                  "into $XDG_STATE_HOME/grass/unsaved (~/.local/state when unset)",
                   &settings.autosaveS, 0.0, 86400.0, "180");
     parser.flag("--recover",
                 "take back an autosave left by a session that did not close cleanly without "

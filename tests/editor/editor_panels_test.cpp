@@ -546,6 +546,62 @@ TEST(EditorPanels, ANeverSavedProjectIsAutosavedIntoTheUsersFolderAndOfferedBack
     EXPECT_TRUE(editor.state.transient.messageIsSaveError) << "shown in the warning colour";
 }
 
+// A saved project whose folder refuses the autosave (read-only, full; here a folder stands where
+// the side project goes, so it holds as root too) is autosaved into the user's unsaved folder
+// and offered back naming the project it came from. Before, the status line said "autosave
+// failed" and the work was kept nowhere until the user found a folder for Save As.
+TEST(EditorPanels, AProjectWhoseFolderRefusesTheAutosaveIsAutosavedIntoTheUsersFolder) {
+    const ScratchFolder folder("editor-refused-autosave");
+    const ScratchFolder stateHome("editor-refused-state");
+    const ScopedEnv state("XDG_STATE_HOME", stateHome.path().c_str());
+    EditorDriver editor(folder.path());
+    editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
+    const fs::path blocked = editor::autosavePath(editor.state.doc.loaded);
+    ASSERT_FALSE(blocked.empty());
+    fs::create_directories(blocked);
+    editor::autosaveNow(editor.state);
+    const std::string said = editor.state.transient.message;
+    const fs::path slot = editor.state.doc.unsavedSlot;
+    ASSERT_FALSE(slot.empty()) << said;
+    EXPECT_EQ(slot.parent_path(), stateHome.path() / "grass/unsaved");
+    EXPECT_EQ(said.rfind("the project's folder refused the autosave: kept in ", 0), 0u) << said;
+    EXPECT_NE(said.find((slot / "project.autosave.json").string()), std::string::npos) << said;
+    EXPECT_NE(said.find("Save As"), std::string::npos) << said;
+    EXPECT_TRUE(editor.state.transient.messageIsSaveError) << "shown in the warning colour";
+    EXPECT_TRUE(fs::exists(slot / "maps/soil.autosave.png")) << "the painted map";
+    EXPECT_EQ(editor::unsavedAutosaveOrigin(slot), editor.state.doc.loaded.file);
+
+    // Offered back after a crash, naming the project it came from.
+    const auto offered = editor::findUnsavedAutosave();
+    ASSERT_TRUE(offered.has_value());
+    EXPECT_EQ(offered->folder, slot);
+    EXPECT_TRUE(core::buildScene(*offered).ok()) << "it grows from the slot's files";
+    editor.state.recoveryOffer = *offered;
+    // Wrapped: the path is a line of its own, after "An autosave of".
+    const std::set<std::string> shown = editor.shownTexts();
+    EXPECT_TRUE(shown.count("An autosave of"));
+    EXPECT_TRUE(shown.count(editor.state.doc.loaded.file.string() + " was")) << "the offer names the project";
+    editor.state.recoveryOffer.reset();
+
+    // Once the folder takes the autosave again, the stand-in slot has nothing left to recover.
+    fs::remove(blocked);
+    editor::autosaveNow(editor.state);
+    EXPECT_TRUE(fs::is_regular_file(blocked));
+    EXPECT_FALSE(fs::exists(slot));
+    EXPECT_TRUE(editor.state.doc.unsavedSlot.empty());
+    EXPECT_FALSE(editor::unsavedAutosaveOrigin(slot).has_filename());
+
+    // With neither place writable, the status line says both.
+    fs::remove(blocked);
+    fs::create_directories(blocked);
+    const ScopedEnv noState("XDG_STATE_HOME", nullptr);
+    const ScopedEnv noHome("HOME", nullptr);
+    editor::autosaveNow(editor.state);
+    EXPECT_EQ(editor.state.transient.message.rfind("autosave failed: ", 0), 0u)
+        << editor.state.transient.message;
+    EXPECT_TRUE(editor.state.transient.messageIsSaveError);
+}
+
 // Issue 26 item 4: every status message is logged; a click on the status line shows them whole.
 TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
     const ScratchFolder folder("editor-messages");
