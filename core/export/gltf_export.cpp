@@ -11,6 +11,7 @@
 #include "export/content_names.h"
 #include "export/gltf_builder.h"
 #include "export/merged_blades.h"
+#include "mesh/gltf_blade_nodes.h"
 #include "physics/physics.h"
 #include "util/assert.h"
 
@@ -230,6 +231,13 @@ struct DocumentParts {
         doc()["meshes"].push_back(std::move(mesh));
         return static_cast<int>(doc()["meshes"].size()) - 1;
     }
+    // The node grouping a layer's blades, marked so that an import of the export as a ground
+    // leaves them out (mesh/gltf_blade_nodes.h).
+    int addBladeGroup(const std::string& layerName, json children) {
+        return addNode({{"name", layerName + " blades"},
+                        {"children", std::move(children)},
+                        {"extras", {{std::string(gltf::BLADE_GROUP_EXTRAS_KEY), true}}}});
+    }
     void finishScene(const std::string& name, const json& runtime) {
         json sceneJson = {{"name", name}};
         if (!runtime.is_null())
@@ -374,7 +382,7 @@ std::size_t addLayerBlades(DocumentParts& parts, const LayerField& layer, int lo
              {"extensions",
               {{"EXT_mesh_gpu_instancing",
                 {{"attributes", instanceAttributes(builder, instances, group.members)}}}}}}));
-    parts.topNodes.push_back(parts.addNode({{"name", layer.name + " blades"}, {"children", children}}));
+    parts.topNodes.push_back(parts.addBladeGroup(layer.name, std::move(children)));
     parts.doc()["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
     return instances.size();
 }
@@ -402,7 +410,7 @@ std::size_t addLayerMergedBlades(DocumentParts& parts, const LayerField& layer, 
             {{"name", name}, {"primitives", {meshPrimitive(attributes, indices, material)}}});
         children.push_back(parts.addNode({{"name", name}, {"mesh", mesh}}));
     }
-    parts.topNodes.push_back(parts.addNode({{"name", layer.name + " blades"}, {"children", children}}));
+    parts.topNodes.push_back(parts.addBladeGroup(layer.name, std::move(children)));
     return blades;
 }
 

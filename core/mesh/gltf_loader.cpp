@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "mesh/gltf_accessors.h"
+#include "mesh/gltf_blade_nodes.h"
 #include "mesh/gltf_parts.h"
 #include "mesh/gltf_scene_walk.h"
 #include "mesh/gltf_source.h"
@@ -153,6 +154,20 @@ std::string ofPrimitives(std::size_t lacking, std::size_t total) {
     return std::to_string(lacking) + " of " + std::to_string(total) + " primitives";
 }
 
+// A grass export imported as ground: its terrain is the ground, its blades are not (gltf_blade_nodes.h).
+void dropExportedBlades(const tinygltf::Model& model, std::vector<MeshInstance>& instances,
+                        std::vector<std::string>& notes) {
+    const std::vector<char> blades = gltf::bladeGroupNodes(model);
+    const auto before = instances.size();
+    std::erase_if(instances, [&](const MeshInstance& instance) {
+        return instance.node >= 0 && blades[static_cast<std::size_t>(instance.node)];
+    });
+    if (instances.size() != before)
+        notes.push_back("a grass export: its blades left out (" +
+                        std::to_string(before - instances.size()) +
+                        " placements), its terrain is the ground");
+}
+
 }  // namespace
 
 glm::dvec3 groundOrigin(const glm::dvec3& lo, const glm::dvec3& hi, double metresPerUnit) {
@@ -174,9 +189,14 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file, GltfPlacement pla
     result.notes = std::move(source->notes);
     const auto withPath = [&](const Error& error) { return makeError(display, error.message); };
 
-    const auto instances = gltf::collectInstances(model, result.notes);
+    auto instances = gltf::collectInstances(model, result.notes);
     if (!instances)
         return withPath(instances.error());
+    if (!instances->empty()) {
+        dropExportedBlades(model, *instances, result.notes);
+        if (instances->empty())
+            return makeError(display, "holds only the blades of a grass export, no terrain to grow on");
+    }
     gltf::DecodedMeshes decoded(model, result.notes, false);
     SurfaceMeshBuilder builder;
     gltf::PartTable parts(model, source->materialNames);

@@ -22,6 +22,7 @@
 #include "export/raw_export.h"
 #include "export/source_material.h"
 #include "maps/map_image.h"
+#include "mesh/gltf_loader.h"
 #include "support/gltf_writer.h"
 #include "support/test_paths.h"
 #include "util/atomic_file.h"
@@ -313,15 +314,27 @@ TEST(Export, GlbHoldsEveryLayerOverOneTerrain) {
     std::map<std::string, std::size_t> instancesByLayer;
     for (const tinygltf::Node& node : model.nodes)
         for (const std::string layer : {"grass", "flowers"})
-            if (node.name == layer + " blades")
+            if (node.name == layer + " blades") {
+                EXPECT_TRUE(node.extras.Has("grass_blades") && node.extras.Get("grass_blades").Get<bool>())
+                    << "the blade group is marked for importers";
                 for (const int child : node.children) {
                     const tinygltf::Node& cell = model.nodes.at(std::size_t(child));
                     const int k = cell.extensions.at("EXT_mesh_gpu_instancing")
                                       .Get("attributes").Get("TRANSLATION").GetNumberAsInt();
                     instancesByLayer[layer] += model.accessors.at(std::size_t(k)).count;
                 }
+            }
     EXPECT_EQ(instancesByLayer["grass"], built.scene.layers[0].liveBlades);
     EXPECT_EQ(instancesByLayer["flowers"], built.scene.layers[1].liveBlades);
+    // Imported as a ground (New from mesh), the export is its terrain: the blade groups are marked.
+    std::size_t terrainTriangles = 0;
+    for (const tinygltf::Mesh& mesh : model.meshes)
+        if (mesh.name == "terrain")
+            for (const tinygltf::Primitive& primitive : mesh.primitives)
+                terrainTriangles += model.accessors.at(std::size_t(primitive.indices)).count / 3;
+    const auto ground = loadGltf(dir / "out/two_layers.glb");
+    ASSERT_TRUE(ground.ok()) << ground.error().str();
+    EXPECT_EQ(ground->mesh.n_faces(), terrainTriangles);
     ASSERT_EQ(report->layers.size(), 2u);
     EXPECT_EQ(report->layers[1].instances, built.scene.layers[1].liveBlades);
     // The grass layer's density map, embedded (no file next to the .glb).

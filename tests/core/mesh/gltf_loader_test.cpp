@@ -773,5 +773,58 @@ TEST(GltfLoader, ReportsFileWithoutTriangles) {
     EXPECT_TRUE(contains(loadError(file), "contains no triangles"));
 }
 
+
+// A grass export imported as ground (New from mesh, `grass render --mesh`): its terrain is the
+// ground, the blades under its blade group nodes are not. Before, grass grew on the exported
+// blades too, and meadow's export made a 902k-triangle ground of its 18k-triangle terrain.
+// The export marks the group (extras "grass_blades": true); older exports are known by the
+// scene's "grass_runtime" extras and a root named "<layer> blades".
+GltfAsset terrainAndBladeGroup() {
+    GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(4, 4, 2), "terrain");  // 8 triangles
+    asset.meshes.push_back({"unit blade", {test::gridPrimitive(0.1f, 0.1f, 1)}});   // 2 triangles
+    GltfNode cell;  // node 1
+    cell.name = "grass blades cell 0";
+    cell.mesh = 1;
+    cell.instances.resize(3);
+    asset.nodes.push_back(cell);
+    GltfNode group;  // node 2
+    group.name = "grass blades";
+    group.children = {1};
+    asset.nodes.push_back(group);
+    asset.sceneNodes = {0, 2};
+    return asset;
+}
+
+TEST(GltfLoader, AGrassExportsBladesAreLeftOutOfTheGround) {
+    const fs::path dir = test::scratchDir("gltf_grass_export");
+    const GltfAsset asset = terrainAndBladeGroup();
+
+    test::GltfDocument marked = test::buildGltf(asset);
+    marked.json["nodes"][2]["extras"] = {{"grass_blades", true}};
+    test::writeGltf(dir / "marked.gltf", marked);
+    const GltfImport ground = loadOk(dir / "marked.gltf");
+    EXPECT_EQ(ground.mesh.n_faces(), 8u);
+    EXPECT_TRUE(anyNoteContains(ground, "a grass export: its blades left out (3 placements)"));
+
+    test::GltfDocument older = test::buildGltf(asset);
+    older.json["scenes"][0]["extras"] = {{"grass_runtime", {{"version", 1}}}};
+    test::writeGltf(dir / "older.gltf", older);
+    EXPECT_EQ(loadOk(dir / "older.gltf").mesh.n_faces(), 8u);
+
+    // Without either sign it is somebody's scene with a node called "... blades": all of it.
+    test::writeGltf(dir / "plain.gltf", asset);
+    EXPECT_EQ(loadOk(dir / "plain.gltf").mesh.n_faces(), 8u + 3u * 2u);
+    test::GltfDocument unmarked = test::buildGltf(asset);
+    unmarked.json["nodes"][2]["extras"] = {{"grass_blades", false}};
+    test::writeGltf(dir / "unmarked.gltf", unmarked);
+    EXPECT_EQ(loadOk(dir / "unmarked.gltf").mesh.n_faces(), 8u + 3u * 2u);
+
+    // Blades alone are no ground, and the error says why.
+    test::GltfDocument bladesOnly = marked;
+    bladesOnly.json["scenes"][0]["nodes"] = {2};
+    test::writeGltf(dir / "blades-only.gltf", bladesOnly);
+    EXPECT_TRUE(contains(loadError(dir / "blades-only.gltf"), "only the blades of a grass export"));
+}
+
 }  // namespace
 }  // namespace grass::core
