@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdint>
 #include <exception>
 #include <fstream>
@@ -306,6 +307,8 @@ Result<void> checkRequiredExtensions(const Json& doc, const std::string& display
             name == "KHR_draco_mesh_compression" || name == "EXT_meshopt_compression" ||
             name == "KHR_meshopt_compression")
             continue;
+        if (name == "CESIUM_RTC")
+            continue;  // its centre only places the model on the globe (noteRtcCentre)
         const bool appearance =
             std::any_of(std::begin(APPEARANCE_PREFIXES), std::end(APPEARANCE_PREFIXES),
                         [&](std::string_view prefix) { return name.starts_with(prefix); });
@@ -316,6 +319,30 @@ Result<void> checkRequiredExtensions(const Json& doc, const std::string& display
         notes.push_back("required extension " + name + " concerns appearance only: ignored");
     }
     return {};
+}
+
+// CESIUM_RTC (3D Tiles' glTF): positions are relative to a centre in the tileset's Earth-fixed,
+// Z-up frame, meant to be added after the glTF's Y-up to Z-up turn. Adding it would put the
+// ground thousands of kilometres out only for the import to move it back near the origin
+// (docs/meshes.md), and would not change which way the vertices face: grass grows on the model
+// in its local frame, and the note says so.
+void noteRtcCentre(const Json& doc, std::vector<std::string>& notes) {
+    const Json* extensions = member(doc, "extensions");
+    const Json* rtc = extensions ? member(*extensions, "CESIUM_RTC") : nullptr;
+    if (!rtc)
+        return;
+    std::string centre = "(none given)";
+    if (const Json* c = member(*rtc, "center");
+        c && c->is_array() && c->size() == 3 &&
+        std::all_of(c->begin(), c->end(), [](const Json& v) { return v.is_number(); })) {
+        char text[96];
+        std::snprintf(text, sizeof text, "(%.1f, %.1f, %.1f)", (*c)[0].get<double>(),
+                      (*c)[1].get<double>(), (*c)[2].get<double>());
+        centre = text;
+    }
+    notes.push_back("CESIUM_RTC centre " + centre +
+                    " not applied: the model is grown in its local frame (the centre only "
+                    "places it on the globe)");
 }
 
 // Checks one buffer's source and rewrites its JSON so tinygltf reads it without surprises:
@@ -518,6 +545,7 @@ Result<GltfSource> parseGltfFile(const fs::path& file) {
     if (!version->get<std::string>().starts_with("2."))
         return makeError(display,
                          "is glTF " + version->get<std::string>() + "; only glTF 2.0 is supported");
+    noteRtcCentre(doc, source.notes);
     if (auto required = checkRequiredExtensions(doc, display, source.notes); !required)
         return required.error();
 

@@ -826,5 +826,22 @@ TEST(GltfLoader, AGrassExportsBladesAreLeftOutOfTheGround) {
     EXPECT_TRUE(contains(loadError(dir / "blades-only.gltf"), "only the blades of a grass export"));
 }
 
+
+// CESIUM_RTC (3D Tiles): the centre is not added (it would only be moved back), the model is
+// grown in its local frame, and the note says so; required, it is not refused as an unknown
+// extension that may change the geometry.
+TEST(GltfLoader, ACesiumRtcCentreIsNotedNotApplied) {
+    const fs::path file = test::scratchDir("gltf_cesium_rtc") / "tile.gltf";
+    test::GltfDocument doc = test::buildGltf(test::singleMeshAsset(test::gridPrimitive(4, 4, 2)));
+    doc.json["extensions"]["CESIUM_RTC"] = {{"center", {6378137.0, 0.0, 0.0}}};
+    doc.json["extensionsUsed"] = {"CESIUM_RTC"};
+    doc.json["extensionsRequired"] = {"CESIUM_RTC"};
+    test::writeGltf(file, doc);
+    const GltfImport tile = loadOk(file);
+    EXPECT_EQ(tile.mesh.n_faces(), 8u);
+    EXPECT_TRUE(anyNoteContains(tile, "CESIUM_RTC centre (6378137.0, 0.0, 0.0) not applied"));
+    EXPECT_EQ(tile.origin, glm::dvec3(0.0)) << "left where the file has it";
+}
+
 }  // namespace
 }  // namespace grass::core
