@@ -39,7 +39,9 @@ inline void expectMatchesGolden(const std::string& name, const gl::Rgba8Image& i
     std::printf("[ golden ] %s differing %.4f, mean abs %.3f, max %d\n", name.c_str(),
                 diff.differingShare, diff.meanAbs, diff.maxChannel);
     if (diff.differingShare > tolerance.maxDifferingShare || diff.meanAbs > tolerance.maxMeanAbs) {
-        const auto actual = scratchDir("golden") / (name + ".actual.png");
+        // Not scratchDir: it empties the folder, and golden tests run side by side would delete
+        // each other's failure pictures.
+        const auto actual = sharedDir("golden-actual") / (name + ".actual.png");
         EXPECT_TRUE(writeRgba8Image(actual, image.width, image.height, image.pixels).ok());
         ADD_FAILURE() << name << " differs from " << reference << ": share " << diff.differingShare
                       << ", mean " << diff.meanAbs << "; this render is in " << actual;

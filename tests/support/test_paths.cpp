@@ -37,4 +37,10 @@ std::filesystem::path scratchDir(const std::string& name) {
     return dir;
 }
 
+std::filesystem::path sharedDir(const std::string& name) {
+    const std::filesystem::path dir = scratchRoot() / name;
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
 }  // namespace grass::test
