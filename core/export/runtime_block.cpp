@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "mesh/mesh_frame.h"
 #include "mesh/surface_mesh.h"
 #include "scene/camera.h"
 #include "scene/frame_lighting.h"
@@ -206,7 +207,7 @@ json runtimeBlock(const LoadedProject& loaded, const Scene& scene, const ScenePh
                   {"near_m", orbit.nearPlane},
                   {"far_m", orbit.farPlane}};
     }
-    return {{"format", "grass-runtime"},
+    json block = {{"format", "grass-runtime"},
             {"version", RUNTIME_BLOCK_VERSION},
             {"units", "metres, seconds, radians; +Y up, right-handed; colours linear RGB"},
             {"physics", physicsJson(physics.params)},
@@ -226,6 +227,17 @@ json runtimeBlock(const LoadedProject& loaded, const Scene& scene, const ScenePh
               {"thinning_distance_m", render.thinningDistanceM}}},
             {"camera", camera},
             {"meshes", meshEntries}};
+    if (scene.groundOrigin != glm::dvec3(0.0)) {
+        // Where the field was in its ground's file, for hosts that place it there again
+        // (docs/runtime.md): a point p of the block is the file's `point` + R⁻¹(p) / m.
+        const MeshSource& source = project.mesh;
+        block["ground_origin"] = {
+            {"file", source.file},
+            {"point", {scene.groundOrigin.x, scene.groundOrigin.y, scene.groundOrigin.z}},
+            {"metres_per_unit", source.metresPerUnit},
+            {"up", std::string(upAxisText(source.up))}};
+    }
+    return block;
 }
 
 std::vector<std::string> runtimeBlockGaps(const LoadedProject& loaded, const Scene& scene) {

@@ -107,7 +107,7 @@ static Result<void> refuseHugeScene(const LoadedProject& loaded, double area) {
 }
 
 Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes,
-                                    SurfaceLook* look, PaintUvs* paintUvs) {
+                                    SurfaceLook* look, PaintUvs* paintUvs, glm::dvec3* groundOrigin) {
     const MeshSource& source = loaded.project.mesh;
     if (!source.isFile)
         return makeProceduralMesh(source.procedural);
@@ -149,6 +149,8 @@ Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std
     if (paintUvs)
         *paintUvs = std::move(uvs);
     applyMeshFrame(imported->mesh, source.metresPerUnit, source.up);
+    if (groundOrigin)
+        *groundOrigin = imported->origin;
     if (look) {
         *look = std::move(readLook());
         if (notes)
@@ -457,13 +459,15 @@ Result<Scene> buildScene(const LoadedProject& loaded) {
     std::vector<std::string> notes;
     SurfaceLook look;
     PaintUvs paintUvs;
-    auto mesh = loadProjectMesh(loaded, &notes, &look, &paintUvs);
+    glm::dvec3 groundOrigin{0.0};
+    auto mesh = loadProjectMesh(loaded, &notes, &look, &paintUvs, &groundOrigin);
     if (!mesh)
         return mesh.error();
     auto scene = buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes));
     if (scene) {
         scene->look = std::move(look);
         scene->paintUvs = std::move(paintUvs);
+        scene->groundOrigin = groundOrigin;
     }
     return scene;
 }

@@ -59,6 +59,10 @@ struct Scene {
     std::vector<std::string> notes;  // warnings from loading (mesh notes, map conversions)
     SurfaceLook look;                // the surface's own material (a glTF file's)
     PaintUvs paintUvs;               // how its UV0 became paintable (paint_uvs.h)
+    // The ground file's point (its units and axes) that the scene's (0, 0, 0) stands for: zero
+    // unless a ground far from its file's origin was moved next to grass's (GltfPlacement::
+    // GroundNearOrigin). Exports carry it, so a host can put the field back where the file was.
+    glm::dvec3 groundOrigin{0.0};
     std::size_t totalBlades() const;
 };
 
@@ -145,9 +149,11 @@ Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
 
 // The mesh of a project alone (no grass), for `render --mesh` and mesh-info. `look`, when given,
 // gets the surface's own material (surface_look.h; nothing for a procedural surface).
-// `paintUvs`, when given, gets how the surface's UVs were made paintable (paint_uvs.h).
+// `paintUvs`, when given, gets how the surface's UVs were made paintable (paint_uvs.h);
+// `groundOrigin` the file's point the mesh's origin stands for (Scene::groundOrigin).
 Result<SurfaceMesh> loadProjectMesh(const LoadedProject& project, std::vector<std::string>* notes,
-                                    SurfaceLook* look = nullptr, PaintUvs* paintUvs = nullptr);
+                                    SurfaceLook* look = nullptr, PaintUvs* paintUvs = nullptr,
+                                    glm::dvec3* groundOrigin = nullptr);
 
 // Grows the layers of `project` on a mesh already loaded (so a file is read once).
 Result<Scene> buildSceneFromMesh(const LoadedProject& project, SurfaceMesh mesh,

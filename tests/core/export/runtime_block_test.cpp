@@ -11,7 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "export/export.h"
+#include "mesh/gltf_loader.h"
 #include "scene/frame_lighting.h"
+#include "support/gltf_writer.h"
 #include "support/test_paths.h"
 #include "util/atomic_file.h"
 
@@ -166,6 +168,58 @@ TEST(RuntimeBlock, GltfCarriesTheBehaviourAndTheBakedShadingPerInstance) {
         }
     }
     EXPECT_EQ(checked, layer.liveBlades);
+}
+
+
+// A ground far from its file's origin is moved next to grass's (docs/meshes.md); its export says
+// by how much, with the unit and the up axis, so a host can put the field back on the map. A
+// point of the export maps back to the file's point it was grown on. Before, only a note at
+// load time said it.
+TEST(RuntimeBlock, AMovedGroundsOriginTravelsWithTheExport) {
+    const fs::path dir = test::scratchDir("runtime_block_far_ground");
+    test::GltfAsset tile = test::singleMeshAsset(test::gridPrimitive(40.0f, 40.0f, 4));
+    // +Z up in the file: the grid (in its x-z plane) stood up on its edge is a wall; turned to +Z
+    // up by the node, it lies flat again, placed at UTM-like coordinates.
+    tile.nodes[0].rotation = glm::angleAxis(glm::radians(90.0f), glm::vec3(1.0f, 0.0f, 0.0f));
+    tile.nodes[0].translation = {512345.0f, 5412345.0f, 120.0f};
+    test::writeGltf(dir / "tile.gltf", tile);
+    ASSERT_TRUE(writeFileAtomic(dir / "project.json", R"({"format": "grass-project", "version": 3, "name": "tile",
+        "mesh": {"file": "tile.gltf", "unit": "cm", "up": "+Z"},
+        "layers": [{"name": "grass", "density": 4.0}]})").ok());
+    auto loaded = loadProject(dir / "project.json");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+    auto scene = buildScene(*loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    const auto file = loadGltf(dir / "tile.gltf", GltfPlacement::GroundNearOrigin, 0.01);
+    ASSERT_TRUE(file.ok());
+    ASSERT_NE(file->origin, glm::dvec3(0.0)) << "the test's tile must be far enough to move";
+    EXPECT_EQ(scene->groundOrigin, file->origin);
+
+    const Windy moved{std::move(*loaded), std::move(*scene)};
+    exportAs(moved, ExportFormat::Raw, dir / "raw");
+    const json origin = readJson(dir / "raw/manifest.json")["runtime"]["ground_origin"];
+    ASSERT_TRUE(origin.is_object());
+    EXPECT_EQ(origin["file"], "tile.gltf");
+    EXPECT_EQ(origin["metres_per_unit"].get<float>(), 0.01f);
+    EXPECT_EQ(origin["up"], "+Z");
+    const glm::dvec3 point{origin["point"][0].get<double>(), origin["point"][1].get<double>(),
+                           origin["point"][2].get<double>()};
+    EXPECT_EQ(point, file->origin);
+    // The formula of docs/runtime.md takes the export's terrain back onto the file's: flat at
+    // z = 120, its corners at the node's translation ± 20 file units.
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const auto vertex : moved.scene.mesh.vertices()) {
+        const glm::vec3 p = toGlm(moved.scene.mesh.point(vertex));
+        const glm::dvec3 back = point + glm::dvec3(p.x, -p.z, p.y) / 0.01;
+        lo = glm::min(lo, back);
+        hi = glm::max(hi, back);
+    }
+    EXPECT_LT(glm::length(lo - glm::dvec3(512325.0, 5412325.0, 120.0)), 0.01) << lo.x << " " << lo.y << " " << lo.z;
+    EXPECT_LT(glm::length(hi - glm::dvec3(512365.0, 5412365.0, 120.0)), 0.01) << hi.x << " " << hi.y << " " << hi.z;
+
+    // A ground that stays where its file puts it carries no origin.
+    exportAs(buildWindy(), ExportFormat::Raw, dir / "near");
+    EXPECT_FALSE(readJson(dir / "near/manifest.json")["runtime"].contains("ground_origin"));
 }
 
 }  // namespace
