@@ -14,6 +14,8 @@
 #include "gl/debug_output.h"
 #include "app/document.h"
 #include "app/edit_actions.h"
+#include "app/file_browser.h"
+#include "app/mesh_import.h"
 #include "gl/headless_context.h"
 #include "render/offscreen_render.h"
 #include "render/scene_renderer.h"
@@ -45,7 +47,11 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     e.mAutosaveDueS = settings.autosaveS;
     e.mSettings = std::move(settings);
 
-    auto loaded = core::loadProject(e.mSettings.projectPath);
+    // A mesh given instead of a project starts a new project around it, as File › New from
+    // mesh does (a user who runs `grass-editor rock.glb` means that).
+    const std::filesystem::path start(e.mSettings.projectPath);
+    const bool fromMesh = browseAccepts(BrowsePurpose::NewFromMesh, start);
+    auto loaded = fromMesh ? newProjectFromMesh(start) : core::loadProject(start);
     if (!loaded)
         return loaded.error();
     EditorState& state = e.mState;
@@ -88,7 +94,12 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     if (!e.mReplay) {
         state.transient.recentFile = recentFilesPath();
         state.transient.recent = loadRecentFiles(state.transient.recentFile);
-        rememberRecent(state, state.doc.loaded.file);
+        if (!fromMesh)
+            rememberRecent(state, state.doc.loaded.file);
+    }
+    if (fromMesh) {
+        state.doc.dirty = true;  // exists only in memory until saved
+        state.transient.message = "new project from " + start.string() + " (not saved)";
     }
     state.recoveryOffer = findAutosave(state.doc.loaded);
     // A never-saved project's autosave, left by a session that ended without a clean close, is

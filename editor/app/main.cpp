@@ -31,14 +31,15 @@ int main(int argc, char** argv) {
     std::string physicsDevice = "auto";
     settings.projectPath = std::string(GRASS_SOURCE_DIR) + "/projects/meadow";
     settings.glDebug = gl::GL_DEBUG_BY_DEFAULT;
-    ArgParser parser("grass-editor [project-dir|project.json] [--screenshot F.png --frames N]",
-                     "Opens the grass editor on a project (default: projects/meadow): a File "
+    ArgParser parser("grass-editor [project-dir|project.json|mesh.glb] [--screenshot F.png --frames N]",
+                     "Opens the grass editor on a project (default: projects/meadow), or on a "
+                     "new unsaved project around a .gltf/.glb mesh (as File > New from mesh): a File "
                      "menu, a side panel with the layers, wind, colliders and render settings, "
                      "and the viewport. Drag to orbit, wheel to zoom, middle- or shift-drag to "
                      "pan, F to frame (Esc closes with --no-ui); keys 1-4 switch the "
                      "orientation, frustum, distance and occlusion culling, T cycles blades / "
                      "billboards / hybrid / growth (stem sets), L toggles the grass lighting.");
-    parser.positional("project", "a project folder (with project.json) or a .json file",
+    parser.positional("project", "a project folder (with project.json), a .json file, or a .gltf/.glb mesh to grow a new project on",
                       &settings.projectPath, false);
     parser.text("--screenshot", "FILE",
                 "save what the window shows after --frames frames, then exit",

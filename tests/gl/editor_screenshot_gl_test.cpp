@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <set>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -13,6 +15,7 @@
 #include "gl_context_fixture.h"
 #include "render/offscreen_render.h"
 #include "scene/scene_physics.h"
+#include "support/gltf_writer.h"
 #include "support/test_paths.h"
 #include "util/image_file.h"
 
@@ -123,6 +126,31 @@ TEST_F(EditorScreenshotTest, WindowShowsSidePanelAndGrassViewport) {
                         window->pixels.begin() + std::ptrdiff_t(i + 4));
         }
     EXPECT_GT(grassPixelShare(view), 0.2);
+}
+
+
+// `grass-editor rock.glb`: a mesh given instead of a project starts a new, unsaved project
+// around it, as File > New from mesh does; before, the editor refused it ("not a project").
+// Nothing is written next to the mesh until the user saves.
+TEST_F(EditorScreenshotTest, AMeshOnTheCommandLineStartsANewProjectAroundIt) {
+    const auto dir = scratchDir("editor_screenshot_mesh");
+    writeGltf(dir / "hill.glb", singleMeshAsset(gridPrimitive(6.0f, 6.0f, 8)), BufferStorage::Glb);
+    const std::string shot = (dir / "window.png").string();
+    const std::string command = "xvfb-run -a -s '-screen 0 1280x720x24' " +
+                                std::string(GRASS_EDITOR_EXE) + " --gl-debug " +
+                                (dir / "hill.glb").string() + " --no-ui --screenshot " + shot +
+                                " --frames 2 > " + (dir / "log.txt").string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    expectNoGlErrorLines(dir / "log.txt");
+    ASSERT_EQ(status, 0) << command << "\n(see " << (dir / "log.txt") << ")";
+    auto window = readRgba8Image(shot);
+    ASSERT_TRUE(window.ok()) << window.error().str();
+    EXPECT_GT(grassPixelShare(window->pixels), 0.05) << "the new field, framed";
+    std::set<std::string> files;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        files.insert(entry.path().filename().string());
+    EXPECT_EQ(files, (std::set<std::string>{"hill.glb", "log.txt", "window.png"}))
+        << "nothing saved beside the mesh";
 }
 
 }  // namespace
