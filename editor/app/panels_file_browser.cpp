@@ -109,6 +109,7 @@ void openBrowser(EditorState& s, BrowsePurpose purpose) {
     const fs::path projectFolder = s.doc.loaded.folder;
     fs::path start = projectFolder;
     std::string typed;
+    fs::path ownProject = s.doc.loaded.file;  // saved onto without the question of another's
     switch (purpose) {
         case BrowsePurpose::OpenProject:
             // The project's siblings: projects are folders side by side.
@@ -120,9 +121,16 @@ void openBrowser(EditorState& s, BrowsePurpose purpose) {
                 typed = projectFolder.filename().string();
             } else if (projectFolder.parent_path() == unsavedAutosaveRoot()) {
                 // A recovered never-saved project lives in its autosave slot: not a place to
-                // save it to.
-                std::error_code ec;
-                start = fs::current_path(ec);
+                // save it to. One that stood in for a project whose folder refused it goes back
+                // there, as that project's own Save As would.
+                if (const fs::path origin = unsavedAutosaveOrigin(projectFolder); !origin.empty()) {
+                    start = origin.parent_path().parent_path();
+                    typed = origin.parent_path().filename().string();
+                    ownProject = origin;
+                } else {
+                    std::error_code ec;
+                    start = fs::current_path(ec);
+                }
             }
             break;
         case BrowsePurpose::ExportMap:
@@ -141,8 +149,8 @@ void openBrowser(EditorState& s, BrowsePurpose purpose) {
             break;
     }
     s.transient.browser.emplace(purpose, start, std::move(typed));
-    if (!s.doc.loaded.file.empty())
-        s.transient.browser->setOwnProject(s.doc.loaded.file);
+    if (!ownProject.empty())
+        s.transient.browser->setOwnProject(ownProject);
 }
 
 void fileBrowserWindow(ui::Context& ctx, EditorState& s) {

@@ -583,6 +583,21 @@ TEST(EditorPanels, AProjectWhoseFolderRefusesTheAutosaveIsAutosavedIntoTheUsersF
     EXPECT_TRUE(shown.count(editor.state.doc.loaded.file.string() + " was")) << "the offer names the project";
     editor.state.recoveryOffer.reset();
 
+    // Recovered, its Save As starts where the project was, which it saves onto without asking
+    // (a never-saved project's starts in the working folder).
+    {
+        const ScratchFolder elsewhere("editor-refused-recovered");
+        EditorDriver recovered(elsewhere.path());
+        recovered.state.doc.loaded = *offered;
+        editor::openBrowser(recovered.state, editor::BrowsePurpose::SaveProject);
+        ASSERT_TRUE(recovered.state.transient.browser.has_value());
+        editor::FileBrowser& browser = *recovered.state.transient.browser;
+        EXPECT_EQ(browser.folder(), folder.path().parent_path());
+        EXPECT_EQ(browser.typed(), folder.path().filename().string());
+        EXPECT_EQ(browser.activateTyped(), std::optional<fs::path>(folder.path()));
+        EXPECT_TRUE(browser.message().empty()) << browser.message();
+    }
+
     // Once the folder takes the autosave again, the stand-in slot has nothing left to recover.
     fs::remove(blocked);
     editor::autosaveNow(editor.state);
