@@ -1,6 +1,7 @@
 #include "mesh/gltf_loader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -176,6 +177,13 @@ glm::dvec3 groundOrigin(const glm::dvec3& lo, const glm::dvec3& hi, double metre
     if (!(farthest * metresPerUnit > GROUND_RECENTRE_BEYOND_M))
         return glm::dvec3(0.0);
     return glm::round(centre);
+}
+
+bool isGltfPath(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension == ".gltf" || extension == ".glb";
 }
 
 Result<GltfImport> loadGltf(const std::filesystem::path& file, GltfPlacement placement,

@@ -54,6 +54,10 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file,
 // units) rounded to whole units when it lies beyond GROUND_RECENTRE_BEYOND_M.
 glm::dvec3 groundOrigin(const glm::dvec3& lo, const glm::dvec3& hi, double metresPerUnit);
 
+// Whether `path` names a glTF file by its extension (.gltf or .glb, any case): what a command
+// given a mesh where a project goes takes as the mesh.
+bool isGltfPath(const std::filesystem::path& path);
+
 // The files a .gltf names by relative URI (buffers and images; data: URIs and anything outside
 // its folder left out), as paths next to it. Empty for a .glb or a file that cannot be read.
 std::vector<std::filesystem::path> gltfExternalFiles(const std::filesystem::path& file);

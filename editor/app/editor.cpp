@@ -14,9 +14,9 @@
 #include "gl/debug_output.h"
 #include "app/document.h"
 #include "app/edit_actions.h"
-#include "app/file_browser.h"
 #include "app/mesh_import.h"
 #include "gl/headless_context.h"
+#include "mesh/gltf_loader.h"
 #include "render/offscreen_render.h"
 #include "render/scene_renderer.h"
 #include "render/turntable_files.h"
@@ -50,7 +50,7 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     // A mesh given instead of a project starts a new project around it, as File › New from
     // mesh does (a user who runs `grass-editor rock.glb` means that).
     const std::filesystem::path start(e.mSettings.projectPath);
-    const bool fromMesh = browseAccepts(BrowsePurpose::NewFromMesh, start);
+    const bool fromMesh = core::isGltfPath(start);
     auto loaded = fromMesh ? newProjectFromMesh(start) : core::loadProject(start);
     if (!loaded)
         return loaded.error();

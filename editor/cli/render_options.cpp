@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <utility>
 
 #include "cli/output_files.h"
 #include "cli/parse_arguments.h"
 #include "cli/preset_option.h"
 #include "gl/headless_context.h"
+#include "mesh/gltf_loader.h"
 #include "scene/turntable.h"
 #include "util/arg_parser.h"
 #include "util/image_file.h"
@@ -137,7 +139,7 @@ Result<render::CullSettings> parseCullList(const std::string& list) {
     return settings;
 }
 
-// Exactly one input: a project (not a glTF file by mistake) or --mesh.
+// Exactly one input: a project or --mesh (a glTF file given as the project is taken as --mesh).
 Result<void> checkInput(const RenderArgs& args) {
     if (args.project.empty() == args.mesh.empty())
         return makeError("", args.mesh.empty() ? "give a project folder or --mesh FILE (see --help)"
@@ -152,12 +154,6 @@ Result<void> checkInput(const RenderArgs& args) {
         return makeError("--unit", unit.error().message);
     if (const auto up = core::parseUpAxis(args.up); !up)
         return makeError("--up", up.error().message);
-    if (!args.project.empty()) {
-        const std::string extension = std::filesystem::path(args.project).extension().string();
-        if (extension == ".gltf" || extension == ".glb")
-            return makeError(args.project,
-                             "is a glTF mesh, not a project: use --mesh " + args.project);
-    }
     return {};
 }
 
@@ -207,11 +203,11 @@ void applyRenderOverrides(const RenderArgs& args, render::RenderOptions& options
 std::optional<int> parseRenderArgs(const std::vector<std::string>& argv, RenderArgs& args) {
     ArgParser parser(
         "grass render <project-dir|project.json> [--out F.png] [options]\n"
-        "       grass render --mesh M.gltf|M.glb [--out F.png] [options]",
+        "       grass render [--mesh] M.gltf|M.glb [--out F.png] [options]",
         "Grows the project's grass and renders it headless (EGL, no display needed) to an image "
         "through OpenImageIO; the format follows the extension (.png, .tif, .jpg, .exr). Prints "
-        "where it wrote the image and the frame timings. With --mesh, grows a default field on "
-        "any glTF file with a camera framing its bounds.");
+        "where it wrote the image and the frame timings. With --mesh (or a .gltf/.glb given as "
+        "the project), grows a default field on any glTF file with a camera framing its bounds.");
     addProjectArgument(parser, &args.project, false);
     parser.text("--mesh", "FILE", "render a default field on this glTF file instead of a project",
                 &args.mesh);
@@ -227,6 +223,10 @@ std::optional<int> parseRenderArgs(const std::vector<std::string>& argv, RenderA
         return exitCode;
     args.seedGiven = parser.given("--seed");
     args.lodDistanceGiven = parser.given("--lod-distance");
+    // `grass render rock.glb` means --mesh rock.glb, as `grass-editor rock.glb` opens a project
+    // around it.
+    if (args.mesh.empty() && core::isGltfPath(args.project))
+        args.mesh = std::exchange(args.project, {});
     return std::nullopt;
 }
 

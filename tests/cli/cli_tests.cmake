@@ -157,6 +157,11 @@ grass_cli_test(render_mesh_mm_zup GL OK --png ${GRASS_CLI_TMP}/quad-mm.png 96 64
     --stdout "^  scene +2 triangles, [1-9][0-9]* blades"
     -- ${GRASS_BIN} render --mesh ${GRASS_CLI_GLTF}/quad.gltf --unit mm --up +Z
        --out ${GRASS_CLI_TMP}/quad-mm.png --width 96 --height 64 --frames 1 --blades 2000)
+# A glTF file where the project goes is taken as --mesh (it used to be refused: "use --mesh").
+grass_cli_test(render_mesh_positional GL OK --png ${GRASS_CLI_TMP}/quad-positional.png 64 48
+    --stdout "^  scene +2 triangles, [1-9][0-9]* blades"
+    -- ${GRASS_BIN} render ${GRASS_CLI_GLTF}/quad.gltf
+       --out ${GRASS_CLI_TMP}/quad-positional.png --width 64 --height 48 --frames 1 --blades 2000)
 grass_cli_test(render_project_camera GL OK --png ${GRASS_CLI_TMP}/tiny-top.png 64 48
     --stdout "^wrote .*tiny-top\\.png \\(64x48\\)$"
     -- ${GRASS_BIN} render ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_CLI_TMP}/tiny-top.png
