@@ -80,7 +80,7 @@ step render-1080p 60 "${G[@]}" render projects/helicopter --width 1920 --height 
 # 2. grass bench at 720p, then the million drawn blades at 1080p, then ten million.
 step bench 150 "${G[@]}" bench --cases nature-100k,nature-100k-all,helicopter-100k,winter-100k,nature-1m,helicopter-1m,nature-1m-all \
     --frames 20 --frames-1m 10 --steps 50 --steps-1m 20 --out "$OUT/bench_gpu.json"
-step bench-1080p 60 "${G[@]}" bench --cases nature-1m,nature-1m-all --width 1920 --height 1080 --msaa 0 \
+step bench-1080p 60 "${G[@]}" bench --cases nature-1m,nature-1m-all,nature-1m-hybrid --width 1920 --height 1080 --msaa 0 \
     --frames-1m 10 --steps-1m 20 --out "$OUT/bench_gpu_1080p.json"
 step bench-1080p-strips 40 "${G[@]}" bench --cases nature-1m,nature-1m-all --width 1920 --height 1080 --msaa 0 \
     --geometry strips --frames-1m 10 --steps-1m 5 --out "$OUT/bench_gpu_1080p_strips.json"

@@ -89,6 +89,14 @@ Result<GrownCase> growCase(const BenchCase& c, const CaseContext& ctx) {
     if (c.targetBlades > 0.0)
         if (auto scaled = scaleToTarget(c, *loaded, *mesh); !scaled)
             return scaled.error();
+    if (c.technique) {
+        auto technique = core::parseGrassTechnique(c.technique);
+        if (!technique)
+            return makeError(c.name, technique.error().message);
+        loaded->project.render.technique = *technique;
+        std::fprintf(stderr, "%s: technique %s instead of the project's\n", ctx.progress.c_str(),
+                     c.technique);
+    }
     const auto buildStart = Clock::now();
     auto scene = core::buildSceneFromMesh(*loaded, std::move(*mesh), std::move(notes));
     if (!scene)

@@ -13,9 +13,12 @@ void describeOptions(ArgParser& parser, BenchArgs& args) {
                 "detail without MSAA: what a drawn blade costs), helicopter-100k, winter-100k "
                 "(snow on), "
                 "nature-1m, helicopter-1m, nature-1m-all (a million blades drawn in full), "
+                "nature-1m-hybrid (nature-1m as the hybrid technique: billboards beyond the "
+                "cross-fade), "
                 "nature-10m, editor-meadow (the editor window orbiting, painting "
                 "and playing the meadow at wall-clock time; needs a display or xvfb-run), tiny "
-                "(tests/data/projects/tiny, for tests); default all but tiny",
+                "and tiny-hybrid (tests/data/projects/tiny, for tests); default: every case "
+                "but tiny, tiny-hybrid, nature-1m-all, nature-1m-hybrid and nature-10m",
                 &args.cases);
     parser.flag("--quick", "only the cases of 100k blades or fewer", &args.quick);
     parser.integer("--frames", "timed frames per case, after the warm-up", &args.frames, 1, 1000);

@@ -33,6 +33,13 @@ if(TARGET grass-editor)
         ENVIRONMENT "XDG_CONFIG_HOME=${GRASS_CLI_TMP}/bench-editor-config")
 endif()
 
+# A case with a technique of its own (nature-1m-hybrid's, on the tiny project): the project is
+# grown and drawn as the hybrid technique, billboards and all, and measured like any case.
+grass_cli_test(bench_technique_case GL OK
+    --stderr "tiny-hybrid: technique hybrid instead of the project's"
+    --stdout "^tiny-hybrid +1 +[1-9][0-9]* "
+    -- ${GRASS_BIN} bench --cases tiny-hybrid --frames 1 --steps 1)
+
 # --compare files that are not a bench run: named in one line, exit non-zero, nothing measured.
 grass_cli_test(bench_compare_missing ERROR "no-such-run.json"
     -- ${GRASS_BIN} bench --cases tiny --compare ${GRASS_CLI_TMP}/no-such-run.json)
