@@ -4,9 +4,12 @@
 #include "app/edit_actions.h"
 #include "app/mesh_import.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -23,19 +26,6 @@ namespace {
 // Height of the status bar under the viewport, points.
 constexpr float STATUS_BAR_HEIGHT = 26.0f;
 constexpr float SIDE_PANEL_WIDTH = 330.0f;
-
-// <project folder>/<stem>-<n><extension> with the first n whose file (and turntable frames)
-// do not exist yet, so repeated shots never overwrite each other.
-std::string freshPath(const EditorState& s, const std::string& stem, const std::string& extension) {
-    namespace fs = std::filesystem;
-    const fs::path folder = s.doc.loaded.folder.empty() ? fs::current_path() : s.doc.loaded.folder;
-    for (int n = 1;; ++n) {
-        const std::string name = stem + "-" + std::to_string(n);
-        if (!fs::exists(folder / (name + extension)) &&
-            !fs::exists(folder / (name + "_0000" + extension)))
-            return (folder / (name + extension)).string();
-    }
-}
 
 // File › Open Recent: the projects opened or saved last, newest first; a project whose file
 // is gone is left out (opening it would only fail).
@@ -86,9 +76,9 @@ void fileMenu(ui::Ui& bar, EditorState& s) {
                 s.transient.exportDir = (s.doc.loaded.folder / "export").string();
         }
         if (ui::menuItem(m, "Save screenshot"))
-            s.screenshotRequested = freshPath(s, "screenshot", ".png");
+            s.screenshotRequested = freshPicturePath(s, "screenshot", ".png");
         if (ui::menuItem(m, "Save turntable (24 views)"))
-            s.turntableRequested = freshPath(s, "turntable", ".png");
+            s.turntableRequested = freshPicturePath(s, "turntable", ".png");
         m.separator();
         if (ui::menuItem(m, "Quit"))
             askQuit(s);
@@ -231,6 +221,35 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
 }
 
 }  // namespace
+
+std::filesystem::path pictureFolder(const EditorState& s) {
+    namespace fs = std::filesystem;
+    std::vector<fs::path> candidates;
+    // A recovered never-saved project's folder is its autosave slot, hidden and removed on save.
+    if (!s.doc.loaded.folder.empty() && s.doc.loaded.folder.parent_path() != unsavedAutosaveRoot())
+        candidates.push_back(s.doc.loaded.folder);
+    std::error_code ec;
+    if (fs::path working = fs::current_path(ec); !ec)
+        candidates.push_back(working);
+    if (const char* home = std::getenv("HOME"); home && *home == '/')
+        candidates.push_back(home);
+    for (const fs::path& folder : candidates)
+        if (fs::is_directory(folder, ec) && ::access(folder.c_str(), W_OK) == 0)
+            return folder;
+    return candidates.empty() ? fs::path(".") : candidates.front();  // its error says why
+}
+
+std::string freshPicturePath(const EditorState& s, const std::string& stem, const std::string& extension) {
+    namespace fs = std::filesystem;
+    const fs::path folder = pictureFolder(s);
+    for (int n = 1;; ++n) {
+        const std::string name = stem + "-" + std::to_string(n);
+        if (!fs::exists(folder / (name + extension)) &&
+            !fs::exists(folder / (name + "_0000" + extension)))
+            return (folder / (name + extension)).string();
+    }
+}
+
 
 render::RenderOptions viewRenderOptions(const EditorState& s) {
     render::RenderOptions options = render::renderOptionsFor(s.doc.loaded.project, s.view.softwareRenderer);

@@ -45,6 +45,15 @@ void saveOrAsk(EditorState& state);
 // project's folder, its parent for Open, the last mesh's folder for meshes), drawn each frame
 // while open; what it chooses goes where the menu item says.
 void openBrowser(EditorState& state, BrowsePurpose purpose);
+
+// Where File › Save screenshot and Save turntable write: the project's folder, else (not
+// writable, gone, or a recovered project's autosave slot) the working folder, else HOME; a
+// read-only project still gets its pictures.
+std::filesystem::path pictureFolder(const EditorState& state);
+// <pictureFolder>/<stem>-<n><extension> with the first n whose file (and turntable frames) do
+// not exist yet, so repeated shots never overwrite each other.
+std::string freshPicturePath(const EditorState& state, const std::string& stem,
+                             const std::string& extension);
 void fileBrowserWindow(ui::Context& ctx, EditorState& state);
 // Files dropped on the window: a .gltf/.glb is imported as the surface, a picture as the brush's
 // map, a project folder or .json opened (asking first when there are unsaved changes); anything
