@@ -73,7 +73,7 @@ void fileMenu(ui::Ui& bar, EditorState& s) {
         if (ui::menuItem(m, "Export…")) {
             s.transient.exportDialog = true;
             if (s.transient.exportDir.empty())
-                s.transient.exportDir = (s.doc.loaded.folder / "export").string();
+                s.transient.exportDir = (outputFolder(s) / "export").string();
         }
         if (ui::menuItem(m, "Save screenshot"))
             s.screenshotRequested = freshPicturePath(s, "screenshot", ".png");
@@ -222,7 +222,7 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
 
 }  // namespace
 
-std::filesystem::path pictureFolder(const EditorState& s) {
+std::filesystem::path outputFolder(const EditorState& s) {
     namespace fs = std::filesystem;
     std::vector<fs::path> candidates;
     // A recovered never-saved project's folder is its autosave slot, hidden and removed on save.
@@ -241,7 +241,7 @@ std::filesystem::path pictureFolder(const EditorState& s) {
 
 std::string freshPicturePath(const EditorState& s, const std::string& stem, const std::string& extension) {
     namespace fs = std::filesystem;
-    const fs::path folder = pictureFolder(s);
+    const fs::path folder = outputFolder(s);
     for (int n = 1;; ++n) {
         const std::string name = stem + "-" + std::to_string(n);
         if (!fs::exists(folder / (name + extension)) &&

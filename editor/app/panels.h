@@ -46,11 +46,11 @@ void saveOrAsk(EditorState& state);
 // while open; what it chooses goes where the menu item says.
 void openBrowser(EditorState& state, BrowsePurpose purpose);
 
-// Where File › Save screenshot and Save turntable write: the project's folder, else (not
-// writable, gone, or a recovered project's autosave slot) the working folder, else HOME; a
-// read-only project still gets its pictures.
-std::filesystem::path pictureFolder(const EditorState& state);
-// <pictureFolder>/<stem>-<n><extension> with the first n whose file (and turntable frames) do
+// Where File › Save screenshot, Save turntable and Export… (its default folder, export/) write:
+// the project's folder, else (not writable, gone, or a recovered project's autosave slot) the
+// working folder, else HOME; a read-only project still gets its pictures and exports.
+std::filesystem::path outputFolder(const EditorState& state);
+// <outputFolder>/<stem>-<n><extension> with the first n whose file (and turntable frames) do
 // not exist yet, so repeated shots never overwrite each other.
 std::string freshPicturePath(const EditorState& state, const std::string& stem,
                              const std::string& extension);

@@ -618,14 +618,14 @@ TEST(EditorPanels, AProjectWhoseFolderRefusesTheAutosaveIsAutosavedIntoTheUsersF
     EXPECT_TRUE(editor.state.transient.messageIsSaveError);
 }
 
-// File › Save screenshot and Save turntable write beside the project; where they cannot (the
+// File › Save screenshot, Save turntable and Export… write beside the project; where they cannot (the
 // folder gone, read-only, or the autosave slot a recovered project lives in) they go to the
 // working folder instead of failing ("screenshot not saved: … cannot write", found on a
 // read-only copy of the meadow).
-TEST(EditorPanels, PicturesGoWhereTheyCanBeWritten) {
+TEST(EditorPanels, PicturesAndExportsGoWhereTheyCanBeWritten) {
     const ScratchFolder folder("editor-pictures");
     EditorDriver editor(folder.path());
-    EXPECT_EQ(editor::pictureFolder(editor.state), folder.path());
+    EXPECT_EQ(editor::outputFolder(editor.state), folder.path());
     EXPECT_EQ(fs::path(editor::freshPicturePath(editor.state, "screenshot", ".png")),
               folder.path() / "screenshot-1.png");
     std::ofstream(folder.path() / "screenshot-1.png") << "taken";
@@ -633,12 +633,16 @@ TEST(EditorPanels, PicturesGoWhereTheyCanBeWritten) {
               folder.path() / "screenshot-2.png");
 
     editor.state.doc.loaded.folder = folder.path() / "gone";
-    EXPECT_EQ(editor::pictureFolder(editor.state), fs::current_path());
+    EXPECT_EQ(editor::outputFolder(editor.state), fs::current_path());
     const ScratchFolder stateHome("editor-pictures-state");
     const ScopedEnv state("XDG_STATE_HOME", stateHome.path().c_str());
     editor.state.doc.loaded.folder = editor::unsavedAutosaveRoot() / "1-1";
     fs::create_directories(editor.state.doc.loaded.folder);
-    EXPECT_EQ(editor::pictureFolder(editor.state), fs::current_path()) << "not the hidden slot";
+    EXPECT_EQ(editor::outputFolder(editor.state), fs::current_path()) << "not the hidden slot";
+    editor.click("File");
+    editor.click("Export…");
+    EXPECT_EQ(fs::path(editor.state.transient.exportDir), fs::current_path() / "export")
+        << "the export window's default folder follows the same rule";
 }
 
 // Issue 26 item 4: every status message is logged; a click on the status line shows them whole.
