@@ -208,8 +208,8 @@ void autosaveNow(EditorState& state) {
     if (kept)
         kept = writeUnsavedOrigin(state.doc.unsavedSlot, state.doc.loaded.file);
     if (!kept) {
-        state.transient.message = "autosave failed: " + written.error().str() + "; nor in " +
-                                  kept.error().str();
+        state.transient.message = "autosave failed: " + written.error().str() +
+                                  "; not kept elsewhere either: " + kept.error().str();
         state.transient.messageIsSaveError = true;
         return;
     }

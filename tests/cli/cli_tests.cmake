@@ -305,8 +305,10 @@ grass_cli_test(unknown_top_level_option ERROR "--frobnicate"
 # --- render: bad projects --------------------------------------------------------------------
 grass_cli_test(render_project_missing ERROR "no-such-project" --absent ${OUT}
     -- ${GRASS_BIN} render ${GRASS_CLI_TMP}/no-such-project --out ${OUT})
-grass_cli_test(render_gltf_as_project ERROR "quad.gltf" --absent ${OUT}
-    -- ${GRASS_BIN} render ${GRASS_CLI_GLTF}/quad.gltf --out ${OUT})
+# A glTF file as the project is taken as --mesh (render_mesh_positional); with --mesh as well it
+# is one input too many.
+grass_cli_test(render_gltf_as_project ERROR "not both" --absent ${OUT}
+    -- ${GRASS_BIN} render ${GRASS_CLI_GLTF}/quad.gltf --mesh ${GRASS_CLI_GLTF}/quad.gltf --out ${OUT})
 grass_cli_test(render_folder_without_project ERROR "project.json" --absent ${OUT}
     -- ${GRASS_BIN} render ${GRASS_CLI_GLTF} --out ${OUT})
 grass_cli_test(render_project_unknown_format ERROR "/format" --absent ${OUT}
