@@ -6,6 +6,7 @@
 #include <cctype>
 #include <system_error>
 
+#include "mesh/gltf_loader.h"
 #include "project/json_reader.h"
 #include "util/atomic_file.h"
 #include "util/path_inside.h"
@@ -71,7 +72,13 @@ Result<LoadedProject> loadProject(const fs::path& path) {
     } else {
         if (path.extension() != ".json")
             return makeError(path.string(),
-                             "not a project: give a project folder or its .json file");
+                             isGltfPath(path)
+                                 ? "is a glTF mesh, not a project: `grass-editor " +
+                                       path.filename().string() +
+                                       "` makes a project around it (save it, then give its "
+                                       "folder), `grass render " +
+                                       path.filename().string() + "` draws a field on it"
+                                 : std::string("not a project: give a project folder or its .json file"));
         loaded.file = path;
         loaded.folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
     }

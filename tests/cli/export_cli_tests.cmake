@@ -28,6 +28,11 @@ grass_cli_test(export_tiny_raw OK
 grass_cli_test(export_unknown_format ERROR "--format: unknown format \"fbx\" (gltf, raw, glb, mesh)"
     --absent ${GRASS_EXPORT_TMP}/fbx
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/fbx --format fbx)
+# A mesh where the project goes: the error says which commands take a mesh.
+grass_cli_test(export_mesh_as_project ERROR "cube.glb: is a glTF mesh, not a project"
+    --also "grass-editor cube.glb" --also "grass render cube.glb"
+    --absent ${GRASS_EXPORT_TMP}/from-mesh
+    -- ${GRASS_BIN} export ${GRASS_CLI_GLTF}/cube.glb --out ${GRASS_EXPORT_TMP}/from-mesh)
 grass_cli_test(export_lod_out_of_range ERROR "--lod" --also "99"
     --absent ${GRASS_EXPORT_TMP}/lod99
     -- ${GRASS_BIN} export ${GRASS_CLI_PROJECTS}/tiny --out ${GRASS_EXPORT_TMP}/lod99 --lod 99)
