@@ -10,6 +10,7 @@
 
 #include "util/assert.h"
 #include "util/atomic_file.h"
+#include "util/file_extension.h"
 #include "util/image_file.h"
 #include "util/image_header.h"
 
@@ -35,13 +36,6 @@ std::string firstLine(std::string text) {
     while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
         text.pop_back();
     return text.empty() ? "unknown reason" : text;
-}
-
-std::string lowerExtension(const fs::path& file) {
-    std::string ext = file.extension().string();
-    for (char& c : ext)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
 }
 
 // Folds `channels` interleaved floats per pixel into one value per pixel, appended to `out`.

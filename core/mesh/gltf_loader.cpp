@@ -1,7 +1,6 @@
 #include "mesh/gltf_loader.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -12,6 +11,7 @@
 #include "mesh/gltf_parts.h"
 #include "mesh/gltf_scene_walk.h"
 #include "mesh/gltf_source.h"
+#include "util/file_extension.h"
 
 namespace grass::core {
 namespace {
@@ -180,9 +180,7 @@ glm::dvec3 groundOrigin(const glm::dvec3& lo, const glm::dvec3& hi, double metre
 }
 
 bool isGltfPath(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = lowerExtension(path);
     return extension == ".gltf" || extension == ".glb";
 }
 

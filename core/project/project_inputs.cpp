@@ -1,6 +1,7 @@
 #include "project/project_inputs.h"
 
 #include "mesh/gltf_loader.h"
+#include "util/file_extension.h"
 #include "util/path_inside.h"
 
 namespace grass::core {
@@ -10,10 +11,7 @@ namespace fs = std::filesystem;
 namespace {
 
 bool isGltfText(const fs::path& file) {
-    std::string ext = file.extension().string();
-    for (char& c : ext)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext == ".gltf";
+    return lowerExtension(file) == ".gltf";
 }
 
 }  // namespace

@@ -153,10 +153,14 @@ std::optional<core::LoadedProject> findUnsavedAutosave() {
     return newest;
 }
 
-void removeUnsavedSlot(fs::path& slot) {
+bool isUnsavedSlot(const fs::path& folder) {
     const fs::path root = unsavedAutosaveRoot();
+    return !folder.empty() && !root.empty() && folder.parent_path() == root;
+}
+
+void removeUnsavedSlot(fs::path& slot) {
     std::error_code ec;
-    if (!slot.empty() && !root.empty() && slot.parent_path() == root)
+    if (isUnsavedSlot(slot))
         fs::remove_all(slot, ec);
     slot.clear();
 }

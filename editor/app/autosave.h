@@ -51,6 +51,8 @@ std::optional<core::LoadedProject> findUnsavedAutosave();
 Result<void> writeUnsavedOrigin(const std::filesystem::path& slot, const std::filesystem::path& projectFile);
 // That project file; empty for a never-saved project's slot.
 std::filesystem::path unsavedAutosaveOrigin(const std::filesystem::path& slot);
+// Whether `folder` is a slot of the unsaved folder (where a recovered project lives until saved).
+bool isUnsavedSlot(const std::filesystem::path& folder);
 // Removes a slot of the unsaved folder (nothing outside it) and forgets it.
 void removeUnsavedSlot(std::filesystem::path& slot);
 

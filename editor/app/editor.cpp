@@ -97,10 +97,8 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
         if (!fromMesh)
             rememberRecent(state, state.doc.loaded.file);
     }
-    if (fromMesh) {
-        state.doc.dirty = true;  // exists only in memory until saved
-        state.transient.message = "new project from " + start.string() + " (not saved)";
-    }
+    if (fromMesh)
+        markNewFromMesh(state, start);
     state.recoveryOffer = findAutosave(state.doc.loaded);
     // A never-saved project's autosave, left by a session that ended without a clean close, is
     // offered whatever project this session opens (it has no folder to be found by).
@@ -298,8 +296,7 @@ bool Editor::adoptDocument(core::LoadedProject next, std::string_view what) {
     // The document left was saved or let go: its unsaved autosave has nothing to recover. A
     // recovered never-saved project goes on autosaving into the slot it came from.
     removeUnsavedSlot(mState.doc.unsavedSlot);
-    if (mState.doc.loaded.file.empty() && !mState.doc.loaded.folder.empty() &&
-        mState.doc.loaded.folder.parent_path() == unsavedAutosaveRoot()) {
+    if (mState.doc.loaded.file.empty() && isUnsavedSlot(mState.doc.loaded.folder)) {
         mState.doc.unsavedSlot = mState.doc.loaded.folder;
         mState.doc.unsavedSlotFrom = mState.doc.loaded.folder;
     }

@@ -23,8 +23,7 @@ void Editor::applyImports() {
         if (auto next = newProjectFromMesh(file); !next) {
             s.transient.message = what + ": " + next.error().str();
         } else if (adoptDocument(std::move(*next), what)) {
-            s.doc.dirty = true;  // exists only in memory until saved
-            s.transient.message = "new project from " + file.string() + " (not saved)";
+            markNewFromMesh(s, file);
         }
     }
     if (!s.importMeshRequested.empty()) {

@@ -1,9 +1,10 @@
 #include "app/file_browser.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdlib>
 #include <system_error>
+
+#include "util/file_extension.h"
 
 namespace grass::editor {
 
@@ -11,14 +12,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string lowerCase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
-
 bool hasExtension(const fs::path& path, const std::vector<std::string>& extensions) {
-    const std::string extension = lowerCase(path.extension().string());
+    const std::string extension = lowerExtension(path);
     return std::find(extensions.begin(), extensions.end(), extension) != extensions.end();
 }
 
@@ -132,7 +127,7 @@ FolderListing listFolder(const fs::path& folder, const std::vector<std::string>&
               [](const BrowserEntry& a, const BrowserEntry& b) {
                   if (a.isFolder != b.isFolder)
                       return a.isFolder;
-                  const std::string la = lowerCase(a.name), lb = lowerCase(b.name);
+                  const std::string la = asciiLowerCase(a.name), lb = asciiLowerCase(b.name);
                   return la != lb ? la < lb : a.name < b.name;
               });
     return listing;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <system_error>
 
+#include "app/editor_state.h"
 #include "mesh/gltf_loader.h"
 #include "mesh/mesh_frame.h"
 #include "scene/scene.h"
@@ -62,6 +63,11 @@ Result<core::LoadedProject> newProjectFromMesh(const fs::path& meshFile, std::si
         return loaded.error();
     loaded->file.clear();  // not saved yet: Save asks where
     return loaded;
+}
+
+void markNewFromMesh(EditorState& state, const fs::path& meshFile) {
+    state.doc.dirty = true;
+    state.transient.message = "new project from " + meshFile.string() + " (not saved)";
 }
 
 Result<core::LoadedProject> projectWithImportedMesh(const core::LoadedProject& loaded,

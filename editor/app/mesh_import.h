@@ -15,6 +15,8 @@
 
 namespace grass::editor {
 
+struct EditorState;
+
 // Blades a new project from a mesh grows (about the meadow's: interactive on llvmpipe).
 inline constexpr std::size_t NEW_MESH_PROJECT_BLADES = 40000;
 
@@ -29,6 +31,9 @@ Result<void> copyAssetFiles(const std::filesystem::path& from, const std::filesy
 // until it is saved elsewhere). The error names the file and why it cannot be read.
 Result<core::LoadedProject> newProjectFromMesh(const std::filesystem::path& meshFile,
                                                std::size_t targetBlades = NEW_MESH_PROJECT_BLADES);
+// Once the editor holds that project (File › New from mesh, or `grass-editor rock.glb`): it is
+// unsaved, existing only in memory, and the status line says where it came from.
+void markNewFromMesh(EditorState& state, const std::filesystem::path& meshFile);
 
 // The open project with `meshFile` as its surface. A mesh inside the project's folder is named
 // where it is; one from elsewhere is copied to meshes/<name>/ (a fresh folder each time); a

@@ -226,7 +226,7 @@ std::filesystem::path outputFolder(const EditorState& s) {
     namespace fs = std::filesystem;
     std::vector<fs::path> candidates;
     // A recovered never-saved project's folder is its autosave slot, hidden and removed on save.
-    if (!s.doc.loaded.folder.empty() && s.doc.loaded.folder.parent_path() != unsavedAutosaveRoot())
+    if (!s.doc.loaded.folder.empty() && !isUnsavedSlot(s.doc.loaded.folder))
         candidates.push_back(s.doc.loaded.folder);
     std::error_code ec;
     if (fs::path working = fs::current_path(ec); !ec)
@@ -249,7 +249,6 @@ std::string freshPicturePath(const EditorState& s, const std::string& stem, cons
             return (folder / (name + extension)).string();
     }
 }
-
 
 render::RenderOptions viewRenderOptions(const EditorState& s) {
     render::RenderOptions options = render::renderOptionsFor(s.doc.loaded.project, s.view.softwareRenderer);

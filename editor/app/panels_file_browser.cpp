@@ -119,7 +119,7 @@ void openBrowser(EditorState& s, BrowsePurpose purpose) {
             if (!s.doc.loaded.file.empty()) {
                 start = projectFolder.parent_path();
                 typed = projectFolder.filename().string();
-            } else if (projectFolder.parent_path() == unsavedAutosaveRoot()) {
+            } else if (isUnsavedSlot(projectFolder)) {
                 // A recovered never-saved project lives in its autosave slot: not a place to
                 // save it to. One that stood in for a project whose folder refused it goes back
                 // there, as that project's own Save As would.

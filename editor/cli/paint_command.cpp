@@ -17,6 +17,7 @@
 #include "project/project.h"
 #include "scene/scene.h"
 #include "tools/ms_since.h"
+#include "util/file_extension.h"
 
 namespace grass::cli {
 
@@ -50,9 +51,7 @@ struct PaintSurface {
 // The formats saveMapImage writes at full precision. Checked before any work, so a typo in
 // --file fails at once instead of after the scene is grown.
 bool isMapFormat(const fs::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = lowerExtension(file);
     return extension == ".png" || extension == ".tif" || extension == ".tiff" ||
            extension == ".exr";
 }
