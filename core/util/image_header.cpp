@@ -24,6 +24,28 @@ constexpr std::uint32_t MULTI_PART_FLAG = 0x1000;
 constexpr std::size_t LONG_NAME_MAX = 255;
 constexpr std::size_t SHORT_NAME_MAX = 31;
 
+// The attribute types whose value has one size (OpenEXR file layout, "Attribute types", and
+// the double-precision types OpenEXR 3 adds). OpenEXR reads that many bytes whatever the
+// attribute's size field says, so a size that differs parts its walk from ours: a damaged
+// dataWindow of "65 bytes" made OpenEXR 3.1 read on 49 bytes early and take a later string's
+// bytes for a size field this walk never saw (1.7 GB allocated for a 429-byte file).
+std::int64_t fixedAttributeSize(const std::string& type) {
+    static constexpr std::pair<const char*, std::int64_t> SIZES[] = {
+        {"box2i", 16}, {"box2f", 16},         {"chromaticities", 32},
+        {"compression", 1}, {"deepImageState", 1}, {"double", 8},
+        {"envmap", 1},  {"float", 4},          {"int", 4},
+        {"keycode", 28}, {"lineOrder", 1},     {"m33f", 36},
+        {"m33d", 72},   {"m44f", 64},          {"m44d", 128},
+        {"rational", 8}, {"tiledesc", 9},      {"timecode", 8},
+        {"v2i", 8},     {"v2f", 8},            {"v2d", 16},
+        {"v3i", 12},    {"v3f", 12},           {"v3d", 24},
+    };
+    for (const auto& [name, size] : SIZES)
+        if (type == name)
+            return size;
+    return -1;
+}
+
 // OpenEXR stores integers little-endian.
 std::int64_t littleEndian32(const unsigned char* bytes, bool isSigned) {
     const std::uint32_t v =
@@ -158,7 +180,11 @@ Result<void> checkExrHeader(const fs::path& file, int maxSide) {
                 return damaged("attribute " + printableName(attribute) + " claims " +
                                std::to_string(size) + " bytes, the file has " +
                                std::to_string(left) + " left");
-            if (attribute == "dataWindow" && type == "box2i" && size == 16) {
+            if (const std::int64_t fixed = fixedAttributeSize(type); fixed >= 0 && size != fixed)
+                return damaged("attribute " + printableName(attribute) + " of type " +
+                               printableName(type) + " claims " + std::to_string(size) +
+                               " bytes, a " + type + " is " + std::to_string(fixed));
+            if (attribute == "dataWindow" && type == "box2i") {
                 std::array<unsigned char, 16> box{};
                 in.read(reinterpret_cast<char*>(box.data()), box.size());
                 const std::int64_t width =

@@ -175,6 +175,55 @@ TEST(ExrHeader, ADataWindowOverTheMapLimitIsRefusedBeforeDecoding) {
     EXPECT_TRUE(checkExrHeader(fits.write("fits"), MAX_SIDE));
 }
 
+// The map_exr fuzz target's finding (tests/fuzz/regressions/map_exr/data-window-of-65-bytes.exr):
+// a dataWindow whose size field said 65. OpenEXR reads a box2i's 16 bytes whatever the field
+// says, so it read on 49 bytes before this walk and took a string's bytes for a size this walk
+// never saw: 1.7 GB allocated for a 429-byte file. A fixed-size type of another size is damaged.
+TEST(ExrHeader, AFixedSizeAttributeOfAnotherSizeIsRefused) {
+    ExrBytes exr;
+    exr.u32(2).attribute("dataWindow", "box2i", 65);
+    for (const std::int32_t v : {0, 0, 65649, 0})
+        exr.u32(static_cast<std::uint32_t>(v));
+    exr.bytes += std::string(49, 'x');
+    exr.name("");
+    const auto file = exr.write("fixed_size");
+    auto checked = checkExrHeader(file, MAX_SIDE);
+    ASSERT_FALSE(checked);
+    const std::string message = checked.error().str();
+    EXPECT_NE(message.find("map.exr"), std::string::npos) << message;
+    EXPECT_NE(message.find("attribute \"dataWindow\" of type \"box2i\" claims 65 bytes, a box2i "
+                           "is 16"),
+              std::string::npos)
+        << message;
+    auto loaded = loadMapImage(file);
+    ASSERT_FALSE(loaded);
+    EXPECT_EQ(loaded.error().str(), message);
+
+    // Every fixed-size type is held to its size, one byte short or long alike; a type of no one
+    // size (a string, a channel list, a type OpenEXR does not know) is not.
+    for (const auto& [type, size] : {std::pair<std::string, std::uint32_t>{"int", 4},
+                                     {"tiledesc", 9}, {"compression", 1}, {"m44d", 128}}) {
+        for (const std::uint32_t claimed : {size - 1, size + 1}) {
+            ExrBytes wrong;
+            wrong.u32(2).attribute("custom", type, claimed);
+            wrong.bytes += std::string(claimed, '\0');
+            wrong.name("");
+            EXPECT_FALSE(checkExrHeader(wrong.write("wrong_" + type), MAX_SIDE))
+                << type << " of " << claimed << " bytes";
+        }
+        ExrBytes right;
+        right.u32(2).attribute("custom", type, size);
+        right.bytes += std::string(size, '\0');
+        right.name("");
+        EXPECT_TRUE(checkExrHeader(right.write("right_" + type), MAX_SIDE)) << type;
+    }
+    ExrBytes text;
+    text.u32(2).attribute("owner", "string", 5).name("abcd").attribute("odd", "myType", 3);
+    text.bytes += "xyz";
+    text.name("");
+    EXPECT_TRUE(checkExrHeader(text.write("variable"), MAX_SIDE));
+}
+
 // A multi-part file (version bit 12) is a list of headers ended by an empty one: each part is
 // checked, and a list without its end is cut short.
 TEST(ExrHeader, EveryPartOfAMultiPartFileIsChecked) {
