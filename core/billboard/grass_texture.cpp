@@ -9,6 +9,7 @@
 
 #include "util/assert.h"
 #include "util/image_header.h"
+#include "util/image_open.h"
 #include "util/rng.h"
 
 namespace grass::core {
@@ -157,10 +158,10 @@ Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file) {
     // colours as stored (unassociated, as PNG defines them), not premultiplied by alpha.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(file.string(), &config);
-    if (!in)
-        return makeError(file.string(),
-                         "grass texture is not a readable image: " + oneLine(OIIO::geterror()));
+    auto opened = openImageInput(file.string(), &config);
+    if (!opened)
+        return makeError(file.string(), "grass texture: " + opened.error().message);
+    auto& in = *opened;
     const OIIO::ImageSpec& spec = in->spec();
     if (auto fits = checkImageSize(file.string(), spec.width, spec.height, MAX_IMAGE_SIDE); !fits)
         return fits.error();

@@ -12,6 +12,7 @@
 #include "util/atomic_file.h"
 #include "util/file_extension.h"
 #include "util/image_file.h"
+#include "util/image_open.h"
 #include "util/image_header.h"
 
 namespace grass::core {
@@ -61,9 +62,10 @@ Result<MapImage> readMap(const fs::path& file) {
     // The stored values, not colour premultiplied by alpha: alpha is not density.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(name, &config);
-    if (!in)
-        return makeError(name, "not an image OpenImageIO can read: " + firstLine(OIIO::geterror()));
+    auto opened = openImageInput(name, &config);
+    if (!opened)
+        return opened.error();
+    auto& in = *opened;
     const OIIO::ImageSpec spec = in->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
         return makeError(name, "the image has zero size (" + std::to_string(spec.width) + "×" +

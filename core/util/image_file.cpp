@@ -5,6 +5,7 @@
 
 #include "util/atomic_file.h"
 #include "util/image_header.h"
+#include "util/image_open.h"
 
 namespace grass {
 
@@ -121,20 +122,20 @@ Result<Rgba8Pixels> readRgba8Image(const fs::path& file) {
         return makeError(file.string(), "file not found");
     if (auto header = core::checkImageHeader(file, core::MAX_IMAGE_SIDE); !header)
         return header.error();
-    auto in = OIIO::ImageInput::open(file.string());
+    auto in = core::openImageInput(file.string());
     if (!in)
-        return makeError(file.string(), "not a readable image: " + oneLine(OIIO::geterror()));
-    return readOpenImage(*in, file.string(), core::MAX_IMAGE_SIDE);
+        return in.error();
+    return readOpenImage(**in, file.string(), core::MAX_IMAGE_SIDE);
 }
 
 Result<Rgba8Pixels> decodeRgba8Image(std::string_view bytes, const std::string& name,
                                      std::string_view extension, int maxSide) {
     OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
     // The extension picks the decoder; the name is only for messages.
-    auto in = OIIO::ImageInput::open("memory" + std::string(extension), nullptr, &memory);
+    auto in = core::openImageInput("memory" + std::string(extension), nullptr, &memory);
     if (!in)
-        return makeError(name, "not a readable image: " + oneLine(OIIO::geterror()));
-    return readOpenImage(*in, name, maxSide);
+        return makeError(name, in.error().message);
+    return readOpenImage(**in, name, maxSide);
 }
 
 }  // namespace grass

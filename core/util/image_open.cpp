@@ -1,0 +1,104 @@
+#include "util/image_open.h"
+
+#include <array>
+#include <cstdint>
+#include <fstream>
+#include <utility>
+
+#include "util/file_extension.h"
+#include "util/image_file.h"
+
+namespace grass::core {
+
+namespace {
+
+// The first bytes every reader below needs to decide: the longest signature (Radiance's
+// "#?RADIANCE") and WebP's "WEBP" at offset 8.
+constexpr std::size_t HEAD_BYTES = 16;
+
+// TGA header (Truevision TGA 2.0, "Image Type"): 1 uncompressed and 9 run-length colour-mapped.
+constexpr unsigned char TGA_COLOUR_MAPPED = 1;
+constexpr unsigned char TGA_COLOUR_MAPPED_RLE = 9;
+
+bool startsWith(std::string_view head, std::string_view prefix) {
+    return head.substr(0, prefix.size()) == prefix;
+}
+
+std::string readHead(const std::string& name, OIIO::Filesystem::IOProxy* proxy) {
+    std::string head(HEAD_BYTES, '\0');
+    std::size_t got = 0;
+    if (proxy) {
+        got = proxy->pread(head.data(), head.size(), 0);
+    } else {
+        std::ifstream in(name, std::ios::binary);
+        in.read(head.data(), static_cast<std::streamsize>(head.size()));
+        got = static_cast<std::size_t>(in.gcount());
+    }
+    head.resize(got);
+    return head;
+}
+
+}  // namespace
+
+std::string imageFormatBySignature(std::string_view head) {
+    using namespace std::string_view_literals;
+    static const std::array<std::pair<std::string_view, const char*>, 11> SIGNATURES{{
+        {"\x89PNG\r\n\x1a\n"sv, "png"},
+        {"\xff\xd8\xff"sv, "jpeg"},
+        {"\x76\x2f\x31\x01"sv, "openexr"},
+        {"II*\0"sv, "tiff"},
+        {"MM\0*"sv, "tiff"},
+        {"GIF87a"sv, "gif"},
+        {"GIF89a"sv, "gif"},
+        {"#?RADIANCE"sv, "hdr"},
+        {"#?RGBE"sv, "hdr"},
+        {"8BPS"sv, "psd"},
+        {"DDS "sv, "dds"},
+    }};
+    for (const auto& [signature, format] : SIGNATURES)
+        if (startsWith(head, signature))
+            return format;
+    if (startsWith(head, "RIFF") && head.size() >= 12 && head.substr(8, 4) == "WEBP")
+        return "webp";
+    // BMP's "BM" is two letters a text file may start with; its header's reserved bytes (6–9)
+    // are zero.
+    if (startsWith(head, "BM") && head.size() >= 10 && head.substr(6, 4) == std::string(4, '\0'))
+        return "bmp";
+    return "";
+}
+
+Result<OIIO::ImageInput::unique_ptr> openImageInput(const std::string& name,
+                                                    const OIIO::ImageSpec* config,
+                                                    OIIO::Filesystem::IOProxy* proxy) {
+    const std::string head = readHead(name, proxy);
+    const std::string bySignature = imageFormatBySignature(head);
+    // A format name or a bare extension makes OpenImageIO create that reader without looking
+    // at the file (given a whole file name, create() tries the file on every reader until one
+    // takes it, the trial this avoids).
+    const std::string extension = lowerExtension(name);
+    if (bySignature.empty() && extension.size() < 2)
+        return makeError(name,
+                         "not an image OpenImageIO can read: no known signature and no "
+                         "extension to choose a reader by");
+    auto in = OIIO::ImageInput::create(bySignature.empty() ? extension.substr(1) : bySignature);
+    if (!in)
+        return makeError(name, "not an image OpenImageIO can read: no reader for \"" + extension +
+                                   "\" files, and no known signature");
+    if (std::string(in->format_name()) == "targa" && head.size() >= 3 &&
+        (head[2] == TGA_COLOUR_MAPPED || head[2] == TGA_COLOUR_MAPPED_RLE))
+        return makeError(name,
+                         "a colour-mapped (palette) TGA is not read: OpenImageIO 2.4 "
+                         "looks its pixels up in the palette without checking them, and a "
+                         "damaged one crashes it; save the image as greyscale or "
+                         "true-colour TGA, or as PNG");
+    if (proxy && !in->set_ioproxy(proxy))
+        return makeError(
+            name, std::string("the ") + in->format_name() + " reader cannot read from memory");
+    OIIO::ImageSpec spec;
+    const bool opened = config ? in->open(name, spec, *config) : in->open(name, spec);
+    if (!opened)
+        return makeError(name, "not an image OpenImageIO can read: " + oneLine(in->geterror()));
+    return in;
+}
+
+}  // namespace grass::core

@@ -1,0 +1,32 @@
+// Opening an image file (or encoded bytes in memory) with one OpenImageIO reader chosen on
+// purpose. OpenImageIO's own ImageInput::open tries the reader the extension names and, when
+// that one fails, every other reader in turn: a damaged .exr map that OpenEXR refused was then
+// taken by the TGA reader, which has no magic number to refuse it by, and OpenImageIO 2.4's TGA
+// reader indexes a colour map without checking the index (a 141-byte file crashed the map
+// loader; found by the map_exr fuzz target). Here the reader is the one the file's first bytes
+// name (PNG, JPEG, OpenEXR, TIFF, BMP, GIF, WebP, Radiance HDR, PSD, DDS), else the one its
+// extension names, and no other; a colour-mapped TGA is refused before OpenImageIO reads it.
+#pragma once
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <string>
+
+#include "util/result.h"
+
+namespace grass::core {
+
+// The OpenImageIO format name for the signature at the start of `head` ("png", "openexr", …),
+// or "" when no known signature starts it.
+std::string imageFormatBySignature(std::string_view head);
+
+// Opens `name` for reading (through `proxy` when given: `name` then only picks the extension
+// and names the image in messages; the proxy must outlive the reader). The error, without the
+// name, says why no reader took it: "not an image OpenImageIO can read: …" and the reader's
+// own message, or why a TGA is refused.
+Result<OIIO::ImageInput::unique_ptr> openImageInput(const std::string& name,
+                                                    const OIIO::ImageSpec* config = nullptr,
+                                                    OIIO::Filesystem::IOProxy* proxy = nullptr);
+
+}  // namespace grass::core

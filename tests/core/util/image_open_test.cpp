@@ -1,0 +1,141 @@
+// One reader per image (core/util/image_open.h): the one the first bytes name, else the one the
+// extension names; never OpenImageIO's trial of every reader, and no colour-mapped TGA.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "maps/map_image.h"
+#include "support/test_paths.h"
+#include "util/image_file.h"
+#include "util/image_open.h"
+
+namespace grass::core {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readBytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void writeBytes(const fs::path& file, const std::string& bytes) {
+    std::ofstream(file, std::ios::binary) << bytes;
+}
+
+// A 2×2 TGA (Truevision TGA 2.0): an 18-byte header, then the pixels bottom row first.
+std::string tgaBytes(unsigned char imageType, unsigned char colourMapType,
+                     std::uint16_t colourMapLength, unsigned char bitsPerPixel,
+                     const std::string& pixels) {
+    std::string bytes(18, '\0');
+    bytes[1] = static_cast<char>(colourMapType);
+    bytes[2] = static_cast<char>(imageType);
+    bytes[5] = static_cast<char>(colourMapLength & 0xff);
+    bytes[6] = static_cast<char>(colourMapLength >> 8);
+    bytes[7] = static_cast<char>(colourMapType ? 24 : 0);
+    bytes[12] = 2;  // width
+    bytes[14] = 2;  // height
+    bytes[16] = static_cast<char>(bitsPerPixel);
+    return bytes + std::string(static_cast<std::size_t>(colourMapLength) * 3, '\x80') + pixels;
+}
+
+TEST(ImageOpen, SignaturesNameTheirReaders) {
+    EXPECT_EQ(imageFormatBySignature("\x89PNG\r\n\x1a\nrest"), "png");
+    EXPECT_EQ(imageFormatBySignature("\xff\xd8\xff\xe0"), "jpeg");
+    EXPECT_EQ(imageFormatBySignature(std::string("\x76\x2f\x31\x01\x02\0\0\0", 8)), "openexr");
+    EXPECT_EQ(imageFormatBySignature(std::string("II*\0", 4)), "tiff");
+    EXPECT_EQ(imageFormatBySignature(std::string("MM\0*", 4)), "tiff");
+    EXPECT_EQ(imageFormatBySignature(std::string("RIFF\x10\0\0\0WEBPVP8 ", 16)), "webp");
+    EXPECT_EQ(imageFormatBySignature("#?RADIANCE\n"), "hdr");
+    EXPECT_EQ(imageFormatBySignature(std::string("BM\x36\0\0\0\0\0\0\0\x36\0", 12)), "bmp");
+    // Text that happens to start with BM, a RIFF that is not WebP, a cut-short signature, a
+    // TGA (which has none), nothing at all.
+    EXPECT_EQ(imageFormatBySignature("BMW owners' notes"), "");
+    EXPECT_EQ(imageFormatBySignature(std::string("RIFF\x10\0\0\0WAVEfmt ", 16)), "");
+    EXPECT_EQ(imageFormatBySignature("\x89PN"), "");
+    EXPECT_EQ(imageFormatBySignature(tgaBytes(3, 0, 0, 8, "abcd")), "");
+    EXPECT_EQ(imageFormatBySignature(""), "");
+}
+
+// The map_exr fuzz target's finding
+// (tests/fuzz/regressions/map_exr/tga-taken-for-a-damaged-exr.exr): 141 bytes under a .exr name
+// that OpenEXR refused; OpenImageIO then tried its other readers, the TGA reader took the bytes as
+// a colour-mapped image with an empty palette and read past it (AddressSanitizer: SEGV in
+// TGAInput::decode_pixel). Now only OpenEXR is asked.
+TEST(ImageOpen, ADamagedExrIsNotHandedToAnotherReader) {
+    const fs::path source = fs::path(GRASS_SOURCE_DIR) / "tests/fuzz/regressions/map_exr" /
+                            "tga-taken-for-a-damaged-exr.exr";
+    const auto file = test::scratchDir("image_open_exr") / "density.exr";
+    writeBytes(file, readBytes(source));
+    ASSERT_GT(fs::file_size(file), 100u);
+    auto map = loadMapImage(file);
+    ASSERT_FALSE(map);
+    const std::string message = map.error().str();
+    EXPECT_NE(message.find("density.exr"), std::string::npos) << message;
+    EXPECT_NE(message.find("OpenEXR"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    // The same bytes named .tga reach the TGA reader, whose colour maps are refused.
+    const auto tga = test::scratchDir("image_open_exr") / "density.tga";
+    writeBytes(tga, readBytes(source));
+    map = loadMapImage(tga);
+    ASSERT_FALSE(map);
+    EXPECT_NE(map.error().str().find("colour-mapped (palette) TGA is not read"), std::string::npos)
+        << map.error().str();
+}
+
+TEST(ImageOpen, TgaMapsAreReadUnlessColourMapped) {
+    const auto dir = test::scratchDir("image_open_tga");
+    // Greyscale (type 3), 8 bits: rows bottom first, so the top row is 200, 200.
+    const auto grey = dir / "grey.tga";
+    writeBytes(grey, tgaBytes(3, 0, 0, 8, std::string("\x40\x40\xc8\xc8")));
+    auto map = loadMapImage(grey);
+    ASSERT_TRUE(map) << map.error().str();
+    ASSERT_EQ(map->width, 2);
+    ASSERT_EQ(map->height, 2);
+    EXPECT_NEAR(map->texels[0], 200.0f / 255.0f, 1e-6f);
+    EXPECT_NEAR(map->texels[3], 64.0f / 255.0f, 1e-6f);
+
+    // Colour-mapped (type 1, and 9 run-length): refused by name, even a valid one.
+    for (const unsigned char type :
+         {static_cast<unsigned char>(1), static_cast<unsigned char>(9)}) {
+        const auto paletted = dir / ("paletted-" + std::to_string(type) + ".tga");
+        writeBytes(paletted, tgaBytes(type, 1, 2, 8, std::string("\x00\x01\x00\x01", 4)));
+        auto refused = loadMapImage(paletted);
+        ASSERT_FALSE(refused) << int{type};
+        const std::string message = refused.error().str();
+        EXPECT_NE(message.find("paletted-"), std::string::npos) << message;
+        EXPECT_NE(message.find("save the image as greyscale or true-colour TGA"), std::string::npos)
+            << message;
+    }
+}
+
+// The first bytes win over the extension: a PNG saved as .jpg (common for downloads) loads, as
+// does an encoded PNG in memory under a JPEG mime type.
+TEST(ImageOpen, AMisnamedImageIsReadByItsSignature) {
+    const auto dir = test::scratchDir("image_open_misnamed");
+    const auto png = dir / "density.png";
+    ASSERT_TRUE(saveMapImage(makeConstantMap(6, 4, 0.5f), png, MapSampleFormat::Auto));
+    const auto jpg = dir / "density.jpg";
+    writeBytes(jpg, readBytes(png));
+    auto map = loadMapImage(jpg);
+    ASSERT_TRUE(map) << map.error().str();
+    EXPECT_EQ(map->width, 6);
+    EXPECT_NEAR(map->texels[5], 0.5f, 1.0f / 255.0f);
+
+    const std::string bytes = readBytes(png);
+    auto decoded = decodeRgba8Image(bytes, "image 0", ".jpg", 64);
+    ASSERT_TRUE(decoded) << decoded.error().str();
+    EXPECT_EQ(decoded->width, 6);
+    EXPECT_EQ(decoded->height, 4);
+    // Bytes no reader takes are refused by the name given.
+    auto refused = decodeRgba8Image("not an image at all", "image 1", ".png", 64);
+    ASSERT_FALSE(refused);
+    EXPECT_EQ(refused.error().path, "image 1");
+}
+
+}  // namespace
+}  // namespace grass::core
