@@ -17,6 +17,8 @@ namespace {
 
 constexpr std::array<unsigned char, 4> EXR_MAGIC{0x76, 0x2f, 0x31, 0x01};
 constexpr std::array<unsigned char, 8> PNG_SIGNATURE{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+constexpr std::array<unsigned char, 6> GIF87_SIGNATURE{'G', 'I', 'F', '8', '7', 'a'};
+constexpr std::array<unsigned char, 6> GIF89_SIGNATURE{'G', 'I', 'F', '8', '9', 'a'};
 constexpr std::int64_t PNG_MAX_CHUNK_LENGTH = 0x7fffffff;
 // Version field flags (OpenEXR file layout): names of up to 255 characters, several parts.
 constexpr std::uint32_t LONG_NAMES_FLAG = 0x400;
@@ -244,6 +246,17 @@ Result<void> checkPngChunks(const fs::path& file, int maxSide) {
     }
 }
 
+Result<void> checkGifScreen(const fs::path& file, int maxSide) {
+    HeaderFile gif(file, "GIF");
+    std::array<unsigned char, 10> head{};
+    if (gif.bytes < 0 || !gif.in.read(reinterpret_cast<char*>(head.data()), head.size()))
+        return gif.damaged("the file ends inside its logical screen size");
+    // GIF89a §18: the logical screen's width and height, unsigned 16-bit little-endian.
+    const std::int64_t width = head[6] | head[7] << 8;
+    const std::int64_t height = head[8] | head[9] << 8;
+    return checkImageSize(gif.name, width, height, maxSide);
+}
+
 Result<void> checkImageHeader(const fs::path& file, int maxSide) {
     // OpenImageIO would block on a FIFO and read /dev/zero for ever: regular files only.
     if (auto regular = checkRegularFile(file); !regular)
@@ -252,6 +265,8 @@ Result<void> checkImageHeader(const fs::path& file, int maxSide) {
         return checkExrHeader(file, maxSide);
     if (startsWith(file, PNG_SIGNATURE))
         return checkPngChunks(file, maxSide);
+    if (startsWith(file, GIF87_SIGNATURE) || startsWith(file, GIF89_SIGNATURE))
+        return checkGifScreen(file, maxSide);
     return {};
 }
 

@@ -34,7 +34,12 @@ bool startsWithPngSignature(const std::filesystem::path& file);
 // than maxSide. CRCs are left to libpng.
 Result<void> checkPngChunks(const std::filesystem::path& file, int maxSide);
 
-// checkExrHeader or checkPngChunks by the file's first bytes; other files pass unchecked.
+// For a file with a GIF signature: fails when the logical screen (GIF89a §18), the canvas
+// OpenImageIO's GIF reader allocates on open, is wider or taller than maxSide.
+Result<void> checkGifScreen(const std::filesystem::path& file, int maxSide);
+
+// checkExrHeader, checkPngChunks or checkGifScreen by the file's first bytes; other files pass
+// unchecked.
 Result<void> checkImageHeader(const std::filesystem::path& file, int maxSide);
 
 // For a file with the OpenEXR magic number: walks every header (one, or the parts of a

@@ -12,9 +12,8 @@ namespace grass::core {
 
 namespace {
 
-// The first bytes every reader below needs to decide: the longest signature (Radiance's
-// "#?RADIANCE") and WebP's "WEBP" at offset 8.
-constexpr std::size_t HEAD_BYTES = 16;
+// Enough for the longest signature (PNG's 8 bytes) and the TGA header's image type (byte 2).
+constexpr std::size_t HEAD_BYTES = 8;
 
 // TGA header (Truevision TGA 2.0, "Image Type"): 1 uncompressed and 9 run-length colour-mapped.
 constexpr unsigned char TGA_COLOUR_MAPPED = 1;
@@ -42,28 +41,16 @@ std::string readHead(const std::string& name, OIIO::Filesystem::IOProxy* proxy) 
 
 std::string imageFormatBySignature(std::string_view head) {
     using namespace std::string_view_literals;
-    static const std::array<std::pair<std::string_view, const char*>, 11> SIGNATURES{{
+    static const std::array<std::pair<std::string_view, const char*>, 5> SIGNATURES{{
         {"\x89PNG\r\n\x1a\n"sv, "png"},
         {"\xff\xd8\xff"sv, "jpeg"},
         {"\x76\x2f\x31\x01"sv, "openexr"},
         {"II*\0"sv, "tiff"},
         {"MM\0*"sv, "tiff"},
-        {"GIF87a"sv, "gif"},
-        {"GIF89a"sv, "gif"},
-        {"#?RADIANCE"sv, "hdr"},
-        {"#?RGBE"sv, "hdr"},
-        {"8BPS"sv, "psd"},
-        {"DDS "sv, "dds"},
     }};
     for (const auto& [signature, format] : SIGNATURES)
         if (startsWith(head, signature))
             return format;
-    if (startsWith(head, "RIFF") && head.size() >= 12 && head.substr(8, 4) == "WEBP")
-        return "webp";
-    // BMP's "BM" is two letters a text file may start with; its header's reserved bytes (6–9)
-    // are zero.
-    if (startsWith(head, "BM") && head.size() >= 10 && head.substr(6, 4) == std::string(4, '\0'))
-        return "bmp";
     return "";
 }
 

@@ -298,6 +298,31 @@ TEST(PngChunks, TheHeaderMustComeFirstAndFitTheLimit) {
     EXPECT_TRUE(checkPngChunks(fits.write("fits"), MAX_SIDE));
 }
 
+// Found by the map_png and grass_texture fuzz targets: a 45-byte GIF (named .png then) whose
+// logical screen is 41794×11683; OpenImageIO's GIF reader allocated that canvas on open, 1.5 GB,
+// before its size could be refused.
+TEST(ImageHeader, AGifScreenOverTheLimitIsRefusedBeforeDecoding) {
+    const auto dir = test::scratchDir("gif_header");
+    const auto wide = dir / "wide.gif";
+    std::ofstream(wide, std::ios::binary) << std::string("GIF87aB\xa3\xa3-\0\0\0", 13);
+    auto checked = checkImageHeader(wide, MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("41794×11683"), std::string::npos)
+        << checked.error().str();
+    auto map = loadMapImage(wide);
+    ASSERT_FALSE(map);
+    EXPECT_EQ(map.error().str(), checked.error().str());
+
+    const auto small = dir / "small.gif";
+    std::ofstream(small, std::ios::binary) << std::string("GIF89a\x10\0\x08\0\0\0\0", 13);
+    EXPECT_TRUE(checkImageHeader(small, MAX_SIDE));
+    const auto cut = dir / "cut.gif";
+    std::ofstream(cut, std::ios::binary) << "GIF89a\x10";
+    checked = checkImageHeader(cut, MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("a damaged GIF"), std::string::npos);
+}
+
 TEST(ImageHeader, OtherFilesPassUnchecked) {
     const auto file = test::scratchDir("image_header_other") / "map.tif";
     ASSERT_TRUE(saveMapImage(makeConstantMap(4, 4, 0.5f), file, MapSampleFormat::Auto));
