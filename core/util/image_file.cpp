@@ -130,6 +130,8 @@ Result<Rgba8Pixels> readRgba8Image(const fs::path& file) {
 
 Result<Rgba8Pixels> decodeRgba8Image(std::string_view bytes, const std::string& name,
                                      std::string_view extension, int maxSide) {
+    if (auto header = core::checkImageHeaderBytes(bytes, name, maxSide); !header)
+        return header.error();
     OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
     // The extension picks the decoder; the name is only for messages.
     auto in = core::openImageInput("memory" + std::string(extension), nullptr, &memory);

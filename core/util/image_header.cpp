@@ -2,7 +2,10 @@
 
 #include <array>
 #include <cstdint>
+#include <algorithm>
 #include <fstream>
+#include <memory>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -106,23 +109,34 @@ std::string printableName(const std::string& name) {
     return out + "\"";
 }
 
-// An image file opened for a look at its header, with what its errors say.
+// An image opened for a look at its header (a file, or encoded bytes in memory), with what its
+// errors say.
 struct HeaderFile {
     HeaderFile(const fs::path& file, std::string what)
-        : name(file.string()), kind(std::move(what)), in(file, std::ios::binary) {
+        : name(file.string()), kind(std::move(what)),
+          in(std::make_unique<std::ifstream>(file, std::ios::binary)) {
         std::error_code ec;
         const auto size = fs::file_size(file, ec);
         bytes = ec ? -1 : static_cast<std::int64_t>(size);
     }
+    // A copy of the bytes: a texture of a few MB, next to its decoding.
+    HeaderFile(std::string_view memory, std::string image, std::string what)
+        : name(std::move(image)), kind(std::move(what)),
+          in(std::make_unique<std::istringstream>(std::string(memory), std::ios::binary)),
+          bytes(static_cast<std::int64_t>(memory.size())) {}
     Error damaged(const std::string& what) const {
         return makeError(name, "a damaged " + kind + ": " + what);
     }
-    std::int64_t left() { return bytes - static_cast<std::int64_t>(in.tellg()); }
+    std::int64_t left() { return bytes - static_cast<std::int64_t>(in->tellg()); }
 
     std::string name, kind;
-    std::ifstream in;
+    std::unique_ptr<std::istream> in;
     std::int64_t bytes = -1;
 };
+
+Result<void> checkExr(HeaderFile& exr, int maxSide);
+Result<void> checkPng(HeaderFile& png, int maxSide);
+Result<void> checkGif(HeaderFile& gif, int maxSide);
 
 }  // namespace
 
@@ -150,9 +164,15 @@ bool startsWithPngSignature(const fs::path& file) {
 
 Result<void> checkExrHeader(const fs::path& file, int maxSide) {
     HeaderFile exr(file, "OpenEXR header");
-    if (exr.bytes < 0 || !exr.in)
+    return checkExr(exr, maxSide);
+}
+
+namespace {
+
+Result<void> checkExr(HeaderFile& exr, int maxSide) {
+    if (exr.bytes < 0 || !*exr.in)
         return makeError(exr.name, "cannot read the file");
-    std::ifstream& in = exr.in;
+    std::istream& in = *exr.in;
     const auto damaged = [&](const std::string& what) { return exr.damaged(what); };
     std::array<unsigned char, 8> start{};
     if (!in.read(reinterpret_cast<char*>(start.data()), start.size()))
@@ -207,11 +227,10 @@ Result<void> checkExrHeader(const fs::path& file, int maxSide) {
     }
 }
 
-Result<void> checkPngChunks(const fs::path& file, int maxSide) {
-    HeaderFile png(file, "PNG");
-    if (png.bytes < 0 || !png.in)
+Result<void> checkPng(HeaderFile& png, int maxSide) {
+    if (png.bytes < 0 || !*png.in)
         return makeError(png.name, "cannot read the file");
-    std::ifstream& in = png.in;
+    std::istream& in = *png.in;
     const auto damaged = [&](const std::string& what) { return png.damaged(what); };
     in.seekg(static_cast<std::streamoff>(PNG_SIGNATURE.size()));
     for (bool first = true;; first = false) {
@@ -246,10 +265,9 @@ Result<void> checkPngChunks(const fs::path& file, int maxSide) {
     }
 }
 
-Result<void> checkGifScreen(const fs::path& file, int maxSide) {
-    HeaderFile gif(file, "GIF");
+Result<void> checkGif(HeaderFile& gif, int maxSide) {
     std::array<unsigned char, 10> head{};
-    if (gif.bytes < 0 || !gif.in.read(reinterpret_cast<char*>(head.data()), head.size()))
+    if (gif.bytes < 0 || !gif.in->read(reinterpret_cast<char*>(head.data()), head.size()))
         return gif.damaged("the file ends inside its logical screen size");
     // GIF89a §18: the logical screen's width and height, unsigned 16-bit little-endian.
     const std::int64_t width = head[6] | head[7] << 8;
@@ -257,17 +275,59 @@ Result<void> checkGifScreen(const fs::path& file, int maxSide) {
     return checkImageSize(gif.name, width, height, maxSide);
 }
 
+template <std::size_t N>
+bool startsWith(std::string_view bytes, const std::array<unsigned char, N>& magic) {
+    return bytes.size() >= N && std::equal(magic.begin(), magic.end(), bytes.begin(),
+                                           [](unsigned char m, char b) {
+                                               return m == static_cast<unsigned char>(b);
+                                           });
+}
+
+// The look each signature calls for, or none.
+Result<void> checkByKind(HeaderFile& image, std::string_view head, int maxSide) {
+    if (startsWith(head, EXR_MAGIC)) {
+        image.kind = "OpenEXR header";
+        return checkExr(image, maxSide);
+    }
+    if (startsWith(head, PNG_SIGNATURE)) {
+        image.kind = "PNG";
+        return checkPng(image, maxSide);
+    }
+    if (startsWith(head, GIF87_SIGNATURE) || startsWith(head, GIF89_SIGNATURE)) {
+        image.kind = "GIF";
+        return checkGif(image, maxSide);
+    }
+    return {};
+}
+
+}  // namespace
+
+Result<void> checkPngChunks(const fs::path& file, int maxSide) {
+    HeaderFile png(file, "PNG");
+    return checkPng(png, maxSide);
+}
+
+Result<void> checkGifScreen(const fs::path& file, int maxSide) {
+    HeaderFile gif(file, "GIF");
+    return checkGif(gif, maxSide);
+}
+
 Result<void> checkImageHeader(const fs::path& file, int maxSide) {
     // OpenImageIO would block on a FIFO and read /dev/zero for ever: regular files only.
     if (auto regular = checkRegularFile(file); !regular)
         return regular;
-    if (startsWith(file, EXR_MAGIC))
-        return checkExrHeader(file, maxSide);
-    if (startsWith(file, PNG_SIGNATURE))
-        return checkPngChunks(file, maxSide);
-    if (startsWith(file, GIF87_SIGNATURE) || startsWith(file, GIF89_SIGNATURE))
-        return checkGifScreen(file, maxSide);
-    return {};
+    HeaderFile image(file, "image");
+    std::string head(8, '\0');
+    image.in->read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(image.in->gcount()));
+    image.in->clear();
+    image.in->seekg(0);
+    return checkByKind(image, head, maxSide);
+}
+
+Result<void> checkImageHeaderBytes(std::string_view bytes, const std::string& name, int maxSide) {
+    HeaderFile image(bytes, name, "image");
+    return checkByKind(image, bytes.substr(0, 8), maxSide);
 }
 
 }  // namespace grass::core

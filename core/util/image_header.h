@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include "util/result.h"
 
@@ -41,6 +42,10 @@ Result<void> checkGifScreen(const std::filesystem::path& file, int maxSide);
 // checkExrHeader, checkPngChunks or checkGifScreen by the file's first bytes; other files pass
 // unchecked.
 Result<void> checkImageHeader(const std::filesystem::path& file, int maxSide);
+
+// The same look at an encoded image in memory (a texture inside a .glb); `name` is what errors
+// call it.
+Result<void> checkImageHeaderBytes(std::string_view bytes, const std::string& name, int maxSide);
 
 // For a file with the OpenEXR magic number: walks every header (one, or the parts of a
 // multi-part file; OpenEXR file layout: name\0 type\0 int32 size, value; a header ends with an

@@ -129,6 +129,16 @@ TEST(ImageOpen, AMisnamedImageIsReadByItsSignature) {
     ASSERT_TRUE(decoded) << decoded.error().str();
     EXPECT_EQ(decoded->width, 6);
     EXPECT_EQ(decoded->height, 4);
+    // A PNG in memory gets the look a PNG file gets: a chunk claiming more than the bytes hold
+    // is refused before libpng allocates it.
+    std::string claims = bytes.substr(0, 33);
+    claims += std::string("\x6e\x67\x02\x16tEXt", 8) + std::string(64, 'x');
+    auto damaged = decodeRgba8Image(claims, "image 2", ".png", 64);
+    ASSERT_FALSE(damaged);
+    EXPECT_EQ(damaged.error().path, "image 2");
+    EXPECT_NE(damaged.error().message.find("chunk \"tEXt\" claims 1852244502 bytes"),
+              std::string::npos)
+        << damaged.error().str();
     // Bytes no reader takes are refused by the name given.
     auto refused = decodeRgba8Image("not an image at all", "image 1", ".png", 64);
     ASSERT_FALSE(refused);
