@@ -10,6 +10,9 @@
 // util/image_header.h), so that a damaged file of another name reaches no reader that does.
 // GIF and WebP are left to their extension: OpenImageIO's GIF reader allocated a 41794×11683
 // canvas claimed by a 45-byte file named .png (1.5 GB) before its size could be refused.
+// Only the readers of formats artists keep maps and textures in are used (PNG, JPEG, TIFF,
+// OpenEXR, TGA, BMP, GIF, WebP, Radiance HDR, PNM); an .ico, a camera raw, a DICOM file or a
+// video is refused by its format's name.
 #pragma once
 
 #include <OpenImageIO/filesystem.h>

@@ -111,6 +111,27 @@ TEST(ImageOpen, TgaMapsAreReadUnlessColourMapped) {
     }
 }
 
+// Formats outside the list are refused by name before their reader opens the file: an ICO
+// from image-rs's regression inputs (tests/regression/ico) made OpenImageIO 2.4's ICO reader
+// divide by zero on open (SIGFPE); these bytes are its first 32.
+TEST(ImageOpen, FormatsOutsideTheListAreRefusedByName) {
+    const auto dir = test::scratchDir("image_open_formats");
+    const auto icon = dir / "density.ico";
+    writeBytes(icon,
+               std::string("\0\0\1\0\1\0  \0\0\1\0 \0|\2\0\0\x16\0\0\0\x89PNG\r\n\x1a\n", 30));
+    auto map = loadMapImage(icon);
+    ASSERT_FALSE(map);
+    EXPECT_NE(map.error().str().find("density.ico: an image in OpenImageIO's \"ico\" format, "
+                                     "which grass does not read: use PNG, JPEG, TIFF"),
+              std::string::npos)
+        << map.error().str();
+    const auto video = dir / "density.mp4";
+    writeBytes(video, std::string(64, '\0'));
+    map = loadMapImage(video);
+    ASSERT_FALSE(map);
+    EXPECT_NE(map.error().str().find("density.mp4: "), std::string::npos) << map.error().str();
+}
+
 // The first bytes win over the extension: a PNG saved as .jpg (common for downloads) loads, as
 // does an encoded PNG in memory under a JPEG mime type.
 TEST(ImageOpen, AMisnamedImageIsReadByItsSignature) {
