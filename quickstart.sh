@@ -77,7 +77,7 @@ ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600 || status=1
 
 # Every file reader under libFuzzer (tests/fuzz/README.md): core built again with clang, ASan,
 # UBSan and coverage in build-fuzz/; the kept regression inputs and seeds run once, then each
-# target is fuzzed for GRASS_FUZZ_SECONDS (default 20 s: 10 targets, $jobs at a time). Any
+# target is fuzzed for GRASS_FUZZ_SECONDS (default 20 s: 11 targets, $jobs at a time). Any
 # crash, leak, hang or sanitizer report fails the suite. The same build then runs the unit tests.
 fuzz_seconds="${GRASS_FUZZ_SECONDS:-20}"
 echo "== fuzzing the file readers (build-fuzz/, clang, ${fuzz_seconds} s per target)"

@@ -1,7 +1,7 @@
 // Fuzz target: a density, soil or light map through loadMapImageAt, as a scene loads a layer's
 // maps (resampled to the layer's map resolution). Built once per format the maps are kept in:
-// GRASS_FUZZ_MAP_EXTENSION ".png", ".tif" or ".exr" names the file, and OpenImageIO picks its
-// reader by the extension first.
+// GRASS_FUZZ_MAP_EXTENSION ".png", ".tif", ".exr" or ".tga" names the file; the reader is the one
+// its first bytes name, else the extension's (core/util/image_open.h).
 #include <cmath>
 #include <string>
 

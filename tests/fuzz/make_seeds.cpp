@@ -75,6 +75,7 @@ void writeMaps(const fs::path& corpus) {
     const auto pixels = rgbaPixels();
     for (const auto& [target, name] : {std::pair{"map_png", "rgba8.png"},
                                        {"map_tiff", "rgba8.tif"}, {"map_exr", "rgba.exr"},
+                                       {"map_tga", "rgba8.tga"},
                                        {"grass_texture", "rgba8.png"}}) {
         fs::create_directories(corpus / target);
         check(writeRgba8Image(corpus / target / name, WIDTH, HEIGHT, pixels));
