@@ -6,6 +6,7 @@
 #include <cctype>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace grass {
 
@@ -17,6 +18,15 @@ inline std::string asciiLowerCase(std::string text) {
 
 inline std::string lowerExtension(const std::filesystem::path& file) {
     return asciiLowerCase(file.extension().string());
+}
+
+// The extensions of the image formats maps and textures are read from (util/image_open.h: PNG,
+// JPEG, TIFF, OpenEXR, TGA, BMP, GIF, WebP, Radiance HDR, PNM): what a file browser offers.
+inline const std::vector<std::string>& readableImageExtensions() {
+    static const std::vector<std::string> EXTENSIONS{
+        ".png", ".jpg", ".jpeg", ".tif", ".tiff", ".exr", ".tga", ".bmp",
+        ".gif", ".webp", ".hdr", ".pgm", ".ppm", ".pbm", ".pnm"};
+    return EXTENSIONS;
 }
 
 }  // namespace grass

@@ -64,8 +64,8 @@ std::string_view browseButton(BrowsePurpose purpose) {
 const std::vector<std::string>& browseExtensions(BrowsePurpose purpose) {
     static const std::vector<std::string> project{".json"};
     static const std::vector<std::string> mesh{".gltf", ".glb"};
-    // What core/util/image_file reads through OpenImageIO for a map.
-    static const std::vector<std::string> image{".png", ".exr", ".jpg", ".jpeg", ".tif", ".tiff"};
+    // What a map is read from (core/util/image_open.h).
+    static const std::vector<std::string>& image = readableImageExtensions();
     // What a map is written to without loss (16-bit PNG and TIFF, float EXR: saveMapImage).
     static const std::vector<std::string> exported{".png", ".exr", ".tif", ".tiff"};
     switch (purpose) {

@@ -21,7 +21,7 @@ using editor::FileBrowser;
 // folder, a plain folder, a hidden file.
 void makeFolder(const fs::path& root) {
     for (const char* name : {"Terrain.GLB", "rock.gltf", "rock.bin", "notes.txt", "moss.png",
-                             ".hidden.glb"})
+                             "soil.TGA", "icon.ico", ".hidden.glb"})
         std::ofstream(root / name) << "x";
     fs::create_directories(root / "meadow");
     std::ofstream(root / "meadow/project.json") << "{}";
@@ -44,7 +44,7 @@ TEST(FileBrowser, ListsFoldersFirstThenTheFilesThePurposeTakesInAnyCase) {
     EXPECT_FALSE(meshes.entries[0].isProject);
     EXPECT_EQ(meshes.entries[2].bytes, 1u);
     const auto images = editor::listFolder(folder.path(), editor::browseExtensions(BrowsePurpose::ImportMap));
-    EXPECT_EQ(names(images), (std::vector<std::string>{"Assets", "meadow", "moss.png"}));
+    EXPECT_EQ(names(images), (std::vector<std::string>{"Assets", "meadow", "moss.png", "soil.TGA"}));
 }
 
 TEST(FileBrowser, AnUnreadableFolderSaysSoInsteadOfThrowing) {
