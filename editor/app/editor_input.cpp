@@ -122,7 +122,9 @@ void Editor::runInput(InputState input, int width, int height) {
     mInteracting = (mCameraDrag && anyDown) || (input.scrollSteps != 0.0 && !uiPointer) ||
                    mToolDrag || mState.view.toolDragActive ||
                    (mUi && mUi->context().activeId().value != 0);
-    if (!uiKeyboard)
+    // The file browser is a dialog: while it is open no key reaches the viewport behind it (a
+    // Delete there would remove the selected collider, a T change the technique).
+    if (!uiKeyboard && !mState.transient.browser)
         applyKeys(input);
 }
 

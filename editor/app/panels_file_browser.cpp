@@ -229,6 +229,14 @@ void fileBrowserWindow(ui::Context& ctx, EditorState& s) {
                 // Asked before the field runs: a focus it does not see this frame is dropped.
                 if (browser.takeFocusRequest())
                     ctx.requestFocus(row.makeId("##path"));
+                // Typing while nothing has the keyboard (after a click in the list, say) types a
+                // new name into the field. It went to the viewport's shortcuts behind the window
+                // before: "maps/ctc24.tga" chose the gizmo (g), switched the frustum cull (2) and
+                // the technique (t), and the name was lost.
+                if (ctx.focusedId().value == 0 && !ctx.input().text.empty()) {
+                    browser.typed().clear();
+                    ctx.requestFocus(row.makeId("##path"));
+                }
                 ui::textEdit(row, "##path", browser.typed(), row.availableWidth() - 8.0f,
                              &committed)
                     .onHoverText("A name in this folder, a relative or absolute path, or ~/...; Enter");
@@ -242,8 +250,9 @@ void fileBrowserWindow(ui::Context& ctx, EditorState& s) {
                     chosen = browser.activateTyped();
                 if (row.button("Cancel").onHoverText("Close the browser (nothing changes)").clicked())
                     open = false;
-                row.coloredLabel("Shows " + browseFilterText(purpose), row.style().textWeak);
             });
+            // Its own line, wrapped: the list of image extensions is wider than the buttons' row.
+            ui.wrappedColoredLabel("Shows " + browseFilterText(purpose), ui.style().textWeak);
             if (!browser.message().empty())
                 ui.wrappedColoredLabel(browser.message(), ui::Color32::rgb(255, 150, 60));
         },

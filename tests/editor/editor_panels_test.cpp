@@ -200,6 +200,28 @@ TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
     EXPECT_TRUE(editor.state.doc.dirty) << "if the open fails, the edits still count as unsaved";
 }
 
+// Typing in the file browser while no field has the keyboard (after a click in its list) types
+// a new name into its field: under Xvfb at the editor's 1–2 fps the keys of "maps/ctc24.tga" went
+// to the viewport's shortcuts behind the window instead (the gizmo, a cull test, the technique).
+TEST(EditorPanels, TypingInTheBrowserWithNoFieldFocusedTypesAName) {
+    const ScratchFolder folder("editor-browser-typing");
+    EditorDriver editor(folder.path());
+    editor.click("File");
+    editor.click("Import map image…");
+    ASSERT_TRUE(editor.state.transient.browser.has_value());
+    editor.state.transient.browser->enter(folder.path());
+    editor.clickStartingWith("maps/");
+    ASSERT_EQ(editor.ctx.focusedId().value, 0u) << "the click in the list left a field focused";
+    editor.input.text = "maps/soil.png";
+    EXPECT_TRUE(editor.frame().wantsKeyboard) << "the keys would reach the viewport";
+    ASSERT_TRUE(editor.state.transient.browser.has_value());
+    EXPECT_EQ(editor.state.transient.browser->typed(), "maps/soil.png");
+    editor.input.keys.push_back({ui::Key::Enter, {}});
+    editor.frame();
+    EXPECT_FALSE(editor.state.transient.browser.has_value());
+    EXPECT_EQ(fs::path(editor.state.importMapRequested), folder.path() / "maps/soil.png");
+}
+
 // Issue 26 item 1: File › Import mesh… browses to a mesh; a double-click on it in the list asks
 // the Editor to import it (the list shows folders and glTF files only).
 TEST(EditorPanels, ImportMeshByDoubleClickInTheBrowser) {
