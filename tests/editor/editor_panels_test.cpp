@@ -70,6 +70,13 @@ struct EditorDriver {
         return shown;
     }
 
+    // File › `item`, which opens the file browser.
+    void browseFrom(std::string_view item) {
+        click("File");
+        click(item);
+        ASSERT_TRUE(state.transient.browser.has_value()) << item << " opened no browser";
+    }
+
     // Clicks the topmost text shape reading exactly `text` (hover, press, release).
     void click(std::string_view text) {
         clickWhere([&](std::string_view shown) { return shown == text; }, text);
@@ -185,9 +192,7 @@ TEST(EditorPanels, AFailedSaveStaysInTheStatusBarUntilASaveSucceeds) {
 TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
     const ScratchFolder folder("editor-open");
     EditorDriver editor(folder.path());
-    editor.click("File");
-    editor.click("Open…");
-    ASSERT_TRUE(editor.state.transient.browser.has_value());
+    ASSERT_NO_FATAL_FAILURE(editor.browseFrom("Open…"));
     EXPECT_EQ(editor.state.transient.browser->purpose(), editor::BrowsePurpose::OpenProject);
     const fs::path meadow = sourceDir() / "projects/meadow";
     editor.typePathAndEnter(meadow.string());
@@ -206,9 +211,7 @@ TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
 TEST(EditorPanels, TypingInTheBrowserWithNoFieldFocusedTypesAName) {
     const ScratchFolder folder("editor-browser-typing");
     EditorDriver editor(folder.path());
-    editor.click("File");
-    editor.click("Import map image…");
-    ASSERT_TRUE(editor.state.transient.browser.has_value());
+    ASSERT_NO_FATAL_FAILURE(editor.browseFrom("Import map image…"));
     editor.state.transient.browser->enter(folder.path());
     editor.clickStartingWith("maps/");
     ASSERT_EQ(editor.ctx.focusedId().value, 0u) << "the click in the list left a field focused";
