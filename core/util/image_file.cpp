@@ -39,9 +39,10 @@ Result<void> verifyWrittenImage(const fs::path& written, const std::string& name
             return makeError(name, failed + png.error().message);
         return {};
     }
-    auto in = OIIO::ImageInput::open(written.string());
-    if (!in)
-        return makeError(name, failed + oneLine(OIIO::geterror()));
+    auto opened = core::openImageInput(written.string());
+    if (!opened)
+        return makeError(name, failed + opened.error().message);
+    auto& in = *opened;
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width != width || spec.height != height)
         return makeError(name, failed + "it holds " + std::to_string(spec.width) + "×" +
