@@ -299,7 +299,7 @@ std::uint64_t ExportReport::totalBytes() const {
 static Result<json> stageRuntimeBlock(StagedFiles& staged, const LoadedProject& loaded,
                                       const Scene& scene, bool withMeshes,
                                       std::vector<std::string>& notes) {
-    auto physics = buildScenePhysics(loaded);
+    auto physics = buildScenePhysics(loaded, scene.groundOrigin);
     if (!physics)
         return physics.error();
     const std::vector<RuntimeMeshFile> meshes =

@@ -185,7 +185,7 @@ bool isGltfPath(const std::filesystem::path& path) {
 }
 
 Result<GltfImport> loadGltf(const std::filesystem::path& file, GltfPlacement placement,
-                            double metresPerUnit) {
+                            double metresPerUnit, glm::dvec3 groundOrigin) {
     const std::string display = file.string();
     auto source = gltf::parseGltfFile(file);
     if (!source)
@@ -208,8 +208,28 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file, GltfPlacement pla
     gltf::PartTable parts(model, source->materialNames);
     MergeStats stats;
     glm::dvec3 lo, hi;
+    if (placement == GltfPlacement::InGroundFrame && tryWorldBounds(*instances, decoded, lo, hi) &&
+        core::groundOrigin(lo, hi, metresPerUnit) != glm::dvec3(0.0)) {
+        char distance[48];
+        std::snprintf(distance, sizeof distance, "%.0f",
+                      glm::length(0.5 * (lo + hi)) * metresPerUnit / 1000.0);
+        if (groundOrigin != glm::dvec3(0.0)) {
+            result.origin = groundOrigin;
+            result.placementNote = "lies " + std::string(distance) +
+                                   " km from the file's origin, as the ground does: placed in "
+                                   "the ground's frame (the file's point " +
+                                   coordinates(groundOrigin) +
+                                   " is grass's origin, in the ground's unit and up axis)";
+        } else {
+            result.placementNote = "lies " + std::string(distance) +
+                                   " km from the file's origin, out of the field's reach: the "
+                                   "ground is not that far from its own origin, so this mesh "
+                                   "is not in its frame (docs/meshes.md)";
+        }
+        result.notes.push_back(result.placementNote);
+    }
     if (placement == GltfPlacement::GroundNearOrigin && tryWorldBounds(*instances, decoded, lo, hi)) {
-        result.origin = groundOrigin(lo, hi, metresPerUnit);
+        result.origin = core::groundOrigin(lo, hi, metresPerUnit);
         if (result.origin != glm::dvec3(0.0)) {
             const double far = glm::length(0.5 * (lo + hi)) * metresPerUnit;
             // The gap between neighbouring 32-bit floats at the mesh's largest coordinate.

@@ -25,8 +25,12 @@ struct GltfImport {
     bool hasUv = false;              // every merged primitive carried TEXCOORD_0
     std::vector<std::string> notes;  // things skipped or generated, one line each
     // The point of the file (its units and axes) that the mesh's (0, 0, 0) stands for: zero,
-    // unless a ground mesh far from the file's origin was moved next to it (GltfPlacement).
+    // unless a ground mesh far from the file's origin was moved next to it, or a collider with
+    // it (GltfPlacement).
     glm::dvec3 origin{0.0};
+    // For GltfPlacement::InGroundFrame: what was done with a mesh far from its file's origin
+    // (also among `notes`); empty for a near one.
+    std::string placementNote;
 };
 
 // A ground mesh (the surface the grass grows on) lying farther than this from its file's origin
@@ -44,11 +48,18 @@ enum class GltfPlacement {
     // GltfImport::origin says by how much (with a note). Deterministic: the same file always
     // lands at the same place, so the project's cameras, colliders and wind stay put.
     GroundNearOrigin,
+    // A collider in the ground's frame: a mesh whose bounds' centre lies beyond
+    // GROUND_RECENTRE_BEYOND_M of its file's origin (in metres with `metresPerUnit`, the
+    // ground's unit) shares the ground's georeferenced frame, and is moved by minus
+    // `groundOrigin` (the ground's GltfImport::origin) in double precision, with a note; origin
+    // then says by how much. Nearer meshes stay as in their file (AsInFile). With no ground
+    // moved (groundOrigin zero) a far mesh stays too, noted as out of the field's reach.
+    InGroundFrame,
 };
 
 Result<GltfImport> loadGltf(const std::filesystem::path& file,
                             GltfPlacement placement = GltfPlacement::AsInFile,
-                            double metresPerUnit = 1.0);
+                            double metresPerUnit = 1.0, glm::dvec3 groundOrigin = glm::dvec3(0.0));
 
 // The rule of GltfPlacement::GroundNearOrigin: zero, or the centre of the bounds [lo, hi] (file
 // units) rounded to whole units when it lies beyond GROUND_RECENTRE_BEYOND_M.

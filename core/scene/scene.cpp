@@ -178,8 +178,9 @@ static RuleWorld ruleWorldOf(const Project& project, const std::vector<SceneProp
 }
 
 Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
-                                 std::vector<std::string> notes) {
+                                 std::vector<std::string> notes, glm::dvec3 groundOrigin) {
     Scene scene;
+    scene.groundOrigin = groundOrigin;
     scene.mesh = std::move(mesh);
     scene.bounds = meshBounds(scene.mesh);
     scene.area = surfaceArea(scene.mesh);
@@ -187,7 +188,7 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
     const Project& project = loaded.project;
     if (auto refused = refuseHugeScene(loaded, scene.area); !refused)
         return refused.error();
-    auto props = loadSceneProps(loaded);
+    auto props = loadSceneProps(loaded, groundOrigin);
     if (!props)
         return props.error();
     scene.props = std::move(*props);
@@ -455,6 +456,17 @@ Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
     return report;
 }
 
+glm::dvec3 groundOriginOf(const LoadedProject& loaded) {
+    const auto& colliders = loaded.project.colliders;
+    const bool meshCollider = std::any_of(colliders.begin(), colliders.end(), [](const auto& c) {
+        return c.shape == ColliderShape::Mesh;
+    });
+    glm::dvec3 origin{0.0};
+    if (loaded.project.mesh.isFile && meshCollider)
+        (void)loadProjectMesh(loaded, nullptr, nullptr, nullptr, &origin);
+    return origin;
+}
+
 Result<Scene> buildScene(const LoadedProject& loaded) {
     std::vector<std::string> notes;
     SurfaceLook look;
@@ -463,11 +475,10 @@ Result<Scene> buildScene(const LoadedProject& loaded) {
     auto mesh = loadProjectMesh(loaded, &notes, &look, &paintUvs, &groundOrigin);
     if (!mesh)
         return mesh.error();
-    auto scene = buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes));
+    auto scene = buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes), groundOrigin);
     if (scene) {
         scene->look = std::move(look);
         scene->paintUvs = std::move(paintUvs);
-        scene->groundOrigin = groundOrigin;
     }
     return scene;
 }

@@ -155,9 +155,15 @@ Result<SurfaceMesh> loadProjectMesh(const LoadedProject& project, std::vector<st
                                     SurfaceLook* look = nullptr, PaintUvs* paintUvs = nullptr,
                                     glm::dvec3* groundOrigin = nullptr);
 
-// Grows the layers of `project` on a mesh already loaded (so a file is read once).
+// The ground origin buildScene would find (Scene::groundOrigin), for a command that builds the
+// physics before its scene: the ground file is loaded only when a mesh collider may need it.
+glm::dvec3 groundOriginOf(const LoadedProject& project);
+
+// Grows the layers of `project` on a mesh already loaded (so a file is read once);
+// `groundOrigin` is loadProjectMesh's (the mesh colliders in a moved ground's frame follow it).
 Result<Scene> buildSceneFromMesh(const LoadedProject& project, SurfaceMesh mesh,
-                                 std::vector<std::string> notes);
+                                 std::vector<std::string> notes,
+                                 glm::dvec3 groundOrigin = glm::dvec3(0.0));
 
 // A default project growing grass on a loaded glTF file: density scaled so the field has about
 // `targetBlades` blades whatever the file's units, blade size relative to the mesh, and a

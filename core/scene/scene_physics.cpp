@@ -89,10 +89,13 @@ void addMeshBroadPhase(std::span<SphereCollider> group) {
 // The packed spheres of one mesh collider, placed in the world: centre = position + scale·c,
 // radius scale·r; a path moves every sphere by the same offset.
 Result<void> addMeshCollider(const LoadedProject& loaded, const ColliderDesc& collider,
-                             std::size_t index, ScenePhysics& out) {
-    auto colliderMesh = loadColliderMesh(loaded, collider, index);
+                             std::size_t index, glm::dvec3 groundOrigin, ScenePhysics& out) {
+    auto colliderMesh = loadColliderMesh(loaded, collider, index, groundOrigin);
     if (!colliderMesh)
         return colliderMesh.error();
+    if (!colliderMesh->imported.placementNote.empty())
+        out.notes.push_back("collider " + collider.name + ": " + collider.file + " " +
+                            colliderMesh->imported.placementNote);
     const std::filesystem::path& file = colliderMesh->file;
     const SurfaceMesh& mesh = colliderMesh->imported.mesh;
     SpherePackingParams params;
@@ -135,7 +138,7 @@ Result<void> addMeshCollider(const LoadedProject& loaded, const ColliderDesc& co
 
 }  // namespace
 
-Result<ScenePhysics> buildScenePhysics(const LoadedProject& loaded) {
+Result<ScenePhysics> buildScenePhysics(const LoadedProject& loaded, glm::dvec3 groundOrigin) {
     const Project& project = loaded.project;
     ScenePhysics out;
     out.params = project.physics;
@@ -149,7 +152,7 @@ Result<ScenePhysics> buildScenePhysics(const LoadedProject& loaded) {
                 SphereCollider{collider.position, collider.radiusM, collider.path});
             continue;
         }
-        if (auto added = addMeshCollider(loaded, collider, i, out); !added)
+        if (auto added = addMeshCollider(loaded, collider, i, groundOrigin, out); !added)
             return added.error();
     }
     return out;

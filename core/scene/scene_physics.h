@@ -30,8 +30,10 @@ struct ScenePhysics {
 };
 
 // Reads mesh collider files and packs (or loads the cached packing of) each. Errors name the
-// mesh file or the project field.
-Result<ScenePhysics> buildScenePhysics(const LoadedProject& project);
+// mesh file or the project field. `groundOrigin` is the scene's (Scene::groundOrigin): a mesh
+// collider in a moved ground's georeferenced frame is moved with it (loadColliderMesh).
+Result<ScenePhysics> buildScenePhysics(const LoadedProject& project,
+                                       glm::dvec3 groundOrigin = glm::dvec3(0.0));
 
 // The CPU state of a simulated scene: η and rest tips per layer, parallel to the layer's blades.
 class SceneSimulation {

@@ -2,6 +2,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "mesh/mesh_frame.h"
 #include "mesh/procedural.h"
 
 namespace grass::core {
@@ -19,18 +20,24 @@ glm::mat4 SceneProp::modelAt(float timeS) const {
 }
 
 Result<ColliderMesh> loadColliderMesh(const LoadedProject& loaded, const ColliderDesc& collider,
-                                      std::size_t index) {
+                                      std::size_t index, glm::dvec3 groundOrigin) {
     const std::string field = "/colliders/" + std::to_string(index) + "/file";
     auto file = resolveAssetPath(loaded.folder, collider.file, field);
     if (!file)
         return Error{loaded.file.string(), file.error().str()};
-    auto imported = loadGltf(*file);
+    const MeshSource& ground = loaded.project.mesh;
+    const double groundMetresPerUnit = ground.isFile ? ground.metresPerUnit : 1.0;
+    auto imported =
+        loadGltf(*file, GltfPlacement::InGroundFrame, groundMetresPerUnit, groundOrigin);
     if (!imported)
         return imported.error();
+    if (imported->origin != glm::dvec3(0.0))
+        applyMeshFrame(imported->mesh, ground.metresPerUnit, ground.up);
     return ColliderMesh{std::move(*file), std::move(*imported)};
 }
 
-Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded) {
+Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded,
+                                              glm::dvec3 groundOrigin) {
     std::vector<SceneProp> props;
     ProceduralMeshParams sphere;
     sphere.shape = ProceduralShape::Sphere;
@@ -48,7 +55,7 @@ Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded) {
             prop.scale = collider.radiusM;
             prop.albedo = collider.color.value_or(SPHERE_ALBEDO);
         } else {
-            auto loadedMesh = loadColliderMesh(loaded, collider, i);
+            auto loadedMesh = loadColliderMesh(loaded, collider, i, groundOrigin);
             if (!loadedMesh)
                 return loadedMesh.error();
             prop.mesh = std::move(loadedMesh->imported.mesh);

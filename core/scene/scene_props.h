@@ -30,15 +30,20 @@ struct SceneProp {
 };
 
 // The glTF file of mesh collider `index` (its path resolved in the project folder) and its mesh:
-// what the props draw and the physics packs. Errors name the project field or the file.
+// what the props draw and the physics packs. Errors name the project field or the file. A mesh
+// far from its file's origin is taken to share a moved ground's georeferenced frame
+// (GltfPlacement::InGroundFrame): moved by minus `groundOrigin` (Scene::groundOrigin) and given
+// the ground's unit and up axis, as the ground was; its collider's position and scale apply
+// after that.
 struct ColliderMesh {
     std::filesystem::path file;
     GltfImport imported;
 };
 Result<ColliderMesh> loadColliderMesh(const LoadedProject& loaded, const ColliderDesc& collider,
-                                      std::size_t index);
+                                      std::size_t index, glm::dvec3 groundOrigin = glm::dvec3(0.0));
 
 // One prop per collider, in project order; errors name the collider's file or field.
-Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded);
+Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded,
+                                              glm::dvec3 groundOrigin = glm::dvec3(0.0));
 
 }  // namespace grass::core

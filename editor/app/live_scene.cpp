@@ -80,7 +80,7 @@ Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
         return renderer.error();
     live.renderer = std::move(*renderer);
     if (withPhysics) {
-        auto built = core::buildScenePhysics(loaded);
+        auto built = core::buildScenePhysics(loaded, live.scene->groundOrigin);
         if (!built)
             return built.error();
         for (const auto& note : built->notes)

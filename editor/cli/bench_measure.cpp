@@ -83,7 +83,8 @@ Result<GrownCase> growCase(const BenchCase& c, const CaseContext& ctx) {
     if (!loaded)
         return loaded.error();
     std::vector<std::string> notes;
-    auto mesh = core::loadProjectMesh(*loaded, &notes);
+    glm::dvec3 groundOrigin{0.0};
+    auto mesh = core::loadProjectMesh(*loaded, &notes, nullptr, nullptr, &groundOrigin);
     if (!mesh)
         return mesh.error();
     if (c.targetBlades > 0.0)
@@ -98,7 +99,8 @@ Result<GrownCase> growCase(const BenchCase& c, const CaseContext& ctx) {
                      c.technique);
     }
     const auto buildStart = Clock::now();
-    auto scene = core::buildSceneFromMesh(*loaded, std::move(*mesh), std::move(notes));
+    auto scene =
+        core::buildSceneFromMesh(*loaded, std::move(*mesh), std::move(notes), groundOrigin);
     if (!scene)
         return scene.error();
     const double buildS = msSince(buildStart) / 1000.0;
@@ -194,7 +196,7 @@ Result<void> measurePhysics(GrownCase& grown, const CaseContext& ctx, int steps,
                             BenchCaseResult& result) {
     std::fprintf(stderr, "%s: physics, 1 warm-up + %d timed step(s) on the compute shader\n",
                  ctx.progress.c_str(), steps);
-    auto physics = core::buildScenePhysics(grown.loaded);
+    auto physics = core::buildScenePhysics(grown.loaded, grown.scene.groundOrigin);
     if (!physics)
         return physics.error();
     core::SceneSimulation simulation(grown.scene, std::move(*physics));

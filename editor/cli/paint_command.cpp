@@ -45,6 +45,7 @@ struct PaintSurface {
     core::SurfaceMesh mesh;
     core::PaintUvs uvs;  // a generated atlas is kept with the map painted in it
     std::vector<std::string> notes;
+    glm::dvec3 groundOrigin{0.0};  // Scene::groundOrigin
     std::unique_ptr<core::TexelSurface> texels;
 };
 
@@ -180,7 +181,8 @@ Result<core::MapImage> loadStartingMap(const PaintArgs& args, const core::Loaded
 
 Result<PaintSurface> loadSurface(const core::LoadedProject& loaded, glm::ivec2 size) {
     PaintSurface surface;
-    auto mesh = core::loadProjectMesh(loaded, &surface.notes, nullptr, &surface.uvs);
+    auto mesh = core::loadProjectMesh(loaded, &surface.notes, nullptr, &surface.uvs,
+                                      &surface.groundOrigin);
     if (!mesh)
         return mesh.error();
     surface.mesh = std::move(*mesh);
@@ -198,7 +200,8 @@ Result<core::Scene> growScene(const PaintArgs& args, const core::LoadedProject& 
     std::printf("growing layer \"%s\" of %s ...\n", layer.name.c_str(), loaded.file.c_str());
     std::fflush(stdout);
     auto scene =
-        core::buildSceneFromMesh(loaded, std::move(surface.mesh), std::move(surface.notes));
+        core::buildSceneFromMesh(loaded, std::move(surface.mesh), std::move(surface.notes),
+                                 surface.groundOrigin);
     if (!scene)
         return scene.error();
     for (const auto& note : scene->notes)

@@ -120,7 +120,7 @@ Result<double> simulateBeforeRender(const RenderArgs& args, const core::LoadedPr
     // Cut blades have grown back for T seconds (issue 30 item 10) before the physics takes them.
     for (core::LayerField& layer : scene.layers)
         (void)core::regrowCut(layer, static_cast<float>(args.timeS));
-    auto physics = core::buildScenePhysics(loaded);
+    auto physics = core::buildScenePhysics(loaded, scene.groundOrigin);
     if (!physics)
         return physics.error();
     printNotes(physics->notes);

@@ -99,7 +99,7 @@ Result<SimField> growField(const core::LoadedProject& loaded) {
     auto scene = core::buildScene(loaded);
     if (!scene)
         return scene.error();
-    auto physics = core::buildScenePhysics(loaded);
+    auto physics = core::buildScenePhysics(loaded, scene->groundOrigin);
     if (!physics)
         return physics.error();
     printNotes(scene->notes);

@@ -191,7 +191,7 @@ int runSoak(const std::vector<std::string>& argv) {
         return reportFailure("soak", loaded.error(), EXIT_FAILED);
     if (auto applied = applyArgs(args, *loaded); !applied)
         return reportFailure("soak", applied.error(), EXIT_USAGE);
-    auto physics = core::buildScenePhysics(*loaded);
+    auto physics = core::buildScenePhysics(*loaded, core::groundOriginOf(*loaded));
     if (!physics)
         return reportFailure("soak", physics.error(), EXIT_FAILED);
     printNotes(physics->notes);

@@ -308,7 +308,7 @@ Result<TradeoffReport> runTradeoffSweep(const core::LoadedProject& loaded,
     auto grown = core::buildScene(loaded);
     if (!grown)
         return grown.error();
-    auto physics = core::buildScenePhysics(loaded);
+    auto physics = core::buildScenePhysics(loaded, grown->groundOrigin);
     if (!physics)
         return physics.error();
     auto camera = projectCamera(project, options.camera);

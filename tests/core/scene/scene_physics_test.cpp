@@ -8,10 +8,14 @@
 #include <cmath>
 #include <filesystem>
 
+#include "mesh/gltf_loader.h"
 #include "physics/physics.h"
 #include "physics/physics_simd.h"
+#include "scene/scene_props.h"
+#include "support/gltf_writer.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"
+#include "util/atomic_file.h"
 
 namespace grass::core {
 namespace {
@@ -35,6 +39,75 @@ struct BandStats {
     std::size_t count = 0;
     std::size_t withEta = 0;
 };
+
+// A georeferenced ground (a 40 m tile at UTM-like coordinates, centimetres, +Z up) is moved next
+// to grass's origin (docs/meshes.md); a rock exported from the same map frame is moved with it,
+// in the ground's unit and up axis, so its spheres stand on the field where the map has them.
+// Before, the rock stayed at its file's coordinates, 5,400 km away, and touched no blade.
+TEST(ScenePhysics, AMeshColliderInAMovedGroundsFrameMovesWithIt) {
+    const std::filesystem::path dir = test::scratchDir("scene_physics_georeferenced");
+    test::GltfAsset tile = test::singleMeshAsset(test::gridPrimitive(4000.0f, 4000.0f, 4));
+    // The grid lies in its x-z plane; turned a quarter about x it lies in x-y, flat for +Z up.
+    tile.nodes[0].rotation = glm::angleAxis(glm::radians(90.0f), glm::vec3(1.0f, 0.0f, 0.0f));
+    tile.nodes[0].translation = {512345.0f, 5412345.0f, 120.0f};
+    test::writeGltf(dir / "tile.gltf", tile);
+    // A 2 m × 1 m × 1 m block (file units: cm, +Z up) 5 m east and 3 m north of the tile's
+    // centre, standing on it.
+    test::writeGltf(dir / "rock.gltf",
+                    test::singleMeshAsset(test::boxPrimitive({512745.0f, 5412595.0f, 120.0f},
+                                                             {512945.0f, 5412695.0f, 220.0f})));
+    ASSERT_TRUE(writeFileAtomic(dir / "project.json", R"({"format": "grass-project", "version": 3,
+        "name": "tile", "mesh": {"file": "tile.gltf", "unit": "cm", "up": "+Z"},
+        "layers": [{"name": "grass", "density": 4.0}],
+        "colliders": [{"name": "rock", "shape": "mesh", "file": "rock.gltf", "spheres": 24}]})")
+                    .ok());
+    auto loaded = loadProject(dir / "project.json");
+    ASSERT_TRUE(loaded) << loaded.error().str();
+    auto scene = buildScene(*loaded);
+    ASSERT_TRUE(scene) << scene.error().str();
+    ASSERT_NE(scene->groundOrigin, glm::dvec3(0.0)) << "the tile must be far enough to move";
+    EXPECT_EQ(groundOriginOf(*loaded), scene->groundOrigin);
+    // Where the map puts the rock's centre, in grass's frame: (east, up, -north) in metres from
+    // the ground's origin.
+    const glm::dvec3 rockCentre{512845.0, 5412645.0, 170.0};
+    const glm::dvec3 offset = (rockCentre - scene->groundOrigin) * 0.01;
+    const glm::vec3 expected(offset.x, offset.z, -offset.y);
+    ASSERT_LT(glm::length(expected), 20.0f) << "the rock lies on the tile";
+
+    auto physics = buildScenePhysics(*loaded, scene->groundOrigin);
+    ASSERT_TRUE(physics) << physics.error().str();
+    ASSERT_FALSE(physics->colliders.empty());
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const SphereCollider& sphere : physics->colliders) {
+        lo = glm::min(lo, sphere.centre - glm::vec3(sphere.radiusM));
+        hi = glm::max(hi, sphere.centre + glm::vec3(sphere.radiusM));
+    }
+    // The spheres' bounds cover the block (2 m east-west, 1 m up, 1 m north-south) around
+    // where the map has it, within the packing's slack.
+    EXPECT_LT(glm::length(0.5f * (lo + hi) - expected), 0.15f)
+        << lo.x << " " << lo.y << " " << lo.z << " / " << hi.x << " " << hi.y << " " << hi.z;
+    EXPECT_NEAR(hi.x - lo.x, 2.0f, 0.2f);
+    EXPECT_NEAR(hi.y - lo.y, 1.0f, 0.2f);
+    EXPECT_NEAR(hi.z - lo.z, 1.0f, 0.2f);
+    EXPECT_TRUE(std::any_of(physics->notes.begin(), physics->notes.end(), [](const std::string& n) {
+        return n.find("collider rock: rock.gltf lies") != std::string::npos &&
+               n.find("placed in the ground's frame") != std::string::npos;
+    }));
+    // The drawn rock (a prop) stands in the same place.
+    ASSERT_EQ(scene->props.size(), 1u);
+    const Bounds drawn = meshBounds(scene->props[0].mesh);
+    EXPECT_LT(glm::length(0.5f * (drawn.min + drawn.max) - expected), 1e-3f);
+
+    // A ground that was not moved leaves a far rock where its file has it, and says so.
+    auto nearGround = *loaded;
+    nearGround.project.mesh = MeshSource{};
+    auto unmoved = buildScenePhysics(nearGround, glm::dvec3(0.0));
+    ASSERT_TRUE(unmoved) << unmoved.error().str();
+    EXPECT_GT(glm::length(unmoved->colliders[0].centre), 1e6f);
+    EXPECT_TRUE(std::any_of(unmoved->notes.begin(), unmoved->notes.end(), [](const std::string& n) {
+        return n.find("out of the field's reach") != std::string::npos;
+    }));
+}
 
 TEST(ScenePhysics, RollingBallLeavesATrail) {
     const LoadedProject loaded = rollingBallProject();
