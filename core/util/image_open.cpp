@@ -79,9 +79,11 @@ Result<OIIO::ImageInput::unique_ptr> openImageInput(const std::string& name,
                          "not an image OpenImageIO can read: no known signature and no "
                          "extension to choose a reader by");
     auto in = OIIO::ImageInput::create(bySignature.empty() ? extension.substr(1) : bySignature);
-    if (!in)
+    if (!in) {
+        (void)OIIO::geterror();  // taken, so that no later message of this thread repeats it
         return makeError(name, "not an image OpenImageIO can read: no reader for \"" + extension +
                                    "\" files, and no known signature");
+    }
     if (!isReadFormat(in->format_name()))
         return makeError(name, std::string("an image in OpenImageIO's \"") + in->format_name() +
                                    "\" format, which grass does not read: use PNG, JPEG, TIFF, "
