@@ -28,6 +28,9 @@ constexpr std::uint32_t LONG_NAMES_FLAG = 0x400;
 constexpr std::uint32_t MULTI_PART_FLAG = 0x1000;
 constexpr std::size_t LONG_NAME_MAX = 255;
 constexpr std::size_t SHORT_NAME_MAX = 31;
+// A channel of a chlist after its name: pixel type (int32), pLinear (1), reserved (3), x and y
+// sampling (int32 each).
+constexpr std::streamoff CHANNEL_BYTES = 16;
 
 // The attribute types whose value has one size (OpenEXR file layout, "Attribute types", and
 // the double-precision types OpenEXR 3 adds). OpenEXR reads that many bytes whatever the
@@ -206,7 +209,35 @@ Result<void> checkExr(HeaderFile& exr, int maxSide) {
                 return damaged("attribute " + printableName(attribute) + " of type " +
                                printableName(type) + " claims " + std::to_string(size) +
                                " bytes, a " + type + " is " + std::to_string(fixed));
-            if (attribute == "dataWindow" && type == "box2i") {
+            // A floatvector is read as size / 4 floats: another size leaves bytes unread.
+            if (type == "floatvector" && size % 4 != 0)
+                return damaged("attribute " + printableName(attribute) +
+                               " of type \"floatvector\" claims " + std::to_string(size) +
+                               " bytes, not a whole number of floats");
+            if (type == "chlist") {
+                // OpenEXR reads a channel list to its empty name whatever the size field says
+                // (a channel's 16 bytes of type, linearity and sampling after its name), so the
+                // list must end where the field says.
+                const std::int64_t listStart = static_cast<std::int64_t>(in.tellg());
+                std::string channel;
+                for (;;) {
+                    if (!readName(in, LONG_NAME_MAX, channel))
+                        return damaged("attribute " + printableName(attribute) +
+                                       "'s channel list is cut short or has a name longer "
+                                       "than 255 characters");
+                    if (channel.empty())
+                        break;
+                    in.seekg(CHANNEL_BYTES, std::ios::cur);
+                    if (!in || exr.left() < 0)
+                        return damaged("attribute " + printableName(attribute) +
+                                       "'s channel list is cut short");
+                }
+                const std::int64_t walked = static_cast<std::int64_t>(in.tellg()) - listStart;
+                if (walked != size)
+                    return damaged("attribute " + printableName(attribute) +
+                                   " of type \"chlist\" claims " + std::to_string(size) +
+                                   " bytes, its channel list holds " + std::to_string(walked));
+            } else if (attribute == "dataWindow" && type == "box2i") {
                 std::array<unsigned char, 16> box{};
                 in.read(reinterpret_cast<char*>(box.data()), box.size());
                 const std::int64_t width =

@@ -51,9 +51,10 @@ Result<void> checkImageHeaderBytes(std::string_view bytes, const std::string& na
 // multi-part file; OpenEXR file layout: name\0 type\0 int32 size, value; a header ends with an
 // empty name) and fails, naming the file and the attribute, when a name runs past 255
 // characters, an attribute's size is negative or beyond the end of the file, an attribute of a
-// fixed-size type (box2i, int, tiledesc, …) has another size (OpenEXR would read on from
-// elsewhere than this walk), the header is cut short, or a dataWindow (box2i) is empty or wider
-// or taller than maxSide.
+// fixed-size type (box2i, int, tiledesc, …) has another size, a channel list (chlist) does not
+// end where its size says or a floatvector is not whole floats (in each case OpenEXR would read
+// on from elsewhere than this walk), the header is cut short, or a dataWindow (box2i) is empty
+// or wider or taller than maxSide.
 Result<void> checkExrHeader(const std::filesystem::path& file, int maxSide);
 
 }  // namespace grass::core

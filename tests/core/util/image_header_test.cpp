@@ -224,6 +224,52 @@ TEST(ExrHeader, AFixedSizeAttributeOfAnotherSizeIsRefused) {
     EXPECT_TRUE(checkExrHeader(text.write("variable"), MAX_SIDE));
 }
 
+// The fresh-clone fuzz run's finding (tests/fuzz/regressions/map_exr/
+// channel-list-longer-than-its-size.exr): OpenEXR reads a channel list to its empty name
+// whatever its size field says; a list of 37 bytes under a size of 19 parted the two walks
+// again, and a string's bytes claimed 1.8 GB. A list must end where its size says, and a
+// floatvector (read as size / 4 floats) must be whole floats.
+TEST(ExrHeader, VariableSizedAttributesMustEndWhereTheirSizeSays) {
+    const auto channel = [](ExrBytes& exr, const std::string& name) {
+        exr.name(name).u32(1).u32(0).u32(1).u32(1);  // half, linear 0, sampling 1 × 1
+    };
+    ExrBytes longer;
+    longer.u32(2).attribute("channels", "chlist", 19);
+    channel(longer, "Y");
+    channel(longer, "\x02");
+    longer.name("").name("");
+    auto checked = checkExrHeader(longer.write("chlist_longer"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("attribute \"channels\" of type \"chlist\" claims 19 "
+                                         "bytes, its channel list holds 37"),
+              std::string::npos)
+        << checked.error().str();
+
+    ExrBytes cut;
+    cut.u32(2).attribute("channels", "chlist", 19);
+    cut.name("Y").u32(1);
+    EXPECT_FALSE(checkExrHeader(cut.write("chlist_cut"), MAX_SIDE));
+
+    ExrBytes whole;
+    whole.u32(2).attribute("channels", "chlist", 37);
+    channel(whole, "R");
+    channel(whole, "G");
+    whole.name("").name("");
+    EXPECT_TRUE(checkExrHeader(whole.write("chlist_whole"), MAX_SIDE))
+        << checkExrHeader(whole.write("chlist_whole"), MAX_SIDE).error().str();
+
+    ExrBytes partFloat;
+    partFloat.u32(2).attribute("weights", "floatvector", 6).u32(0);
+    partFloat.bytes += std::string(2, '\0');
+    partFloat.name("");
+    checked = checkExrHeader(partFloat.write("floatvector_6"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("not a whole number of floats"), std::string::npos);
+    ExrBytes floats;
+    floats.u32(2).attribute("weights", "floatvector", 8).u32(0).u32(0).name("");
+    EXPECT_TRUE(checkExrHeader(floats.write("floatvector_8"), MAX_SIDE));
+}
+
 // A multi-part file (version bit 12) is a list of headers ended by an empty one: each part is
 // checked, and a list without its end is cut short.
 TEST(ExrHeader, EveryPartOfAMultiPartFileIsChecked) {
