@@ -22,6 +22,9 @@ constexpr std::array<unsigned char, 4> EXR_MAGIC{0x76, 0x2f, 0x31, 0x01};
 constexpr std::array<unsigned char, 8> PNG_SIGNATURE{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 constexpr std::array<unsigned char, 6> GIF87_SIGNATURE{'G', 'I', 'F', '8', '7', 'a'};
 constexpr std::array<unsigned char, 6> GIF89_SIGNATURE{'G', 'I', 'F', '8', '9', 'a'};
+constexpr std::array<unsigned char, 3> JPEG_SIGNATURE{0xff, 0xd8, 0xff};
+constexpr std::array<unsigned char, 4> TIFF_LITTLE_ENDIAN{'I', 'I', '*', 0};
+constexpr std::array<unsigned char, 4> TIFF_BIG_ENDIAN{'M', 'M', 0, '*'};
 constexpr std::int64_t PNG_MAX_CHUNK_LENGTH = 0x7fffffff;
 // Version field flags (OpenEXR file layout): names of up to 255 characters, several parts.
 constexpr std::uint32_t LONG_NAMES_FLAG = 0x400;
@@ -69,11 +72,26 @@ std::int64_t bigEndian32(const unsigned char* bytes) {
         static_cast<std::uint32_t>(bytes[2]) << 8 | static_cast<std::uint32_t>(bytes[3]));
 }
 
+// The first `count` bytes of a file (fewer when it is shorter or cannot be read).
+std::string fileHead(const fs::path& file, std::size_t count) {
+    std::string head(count, '\0');
+    std::ifstream in(file, std::ios::binary);
+    in.read(head.data(), static_cast<std::streamsize>(count));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    return head;
+}
+
+template <std::size_t N>
+bool startsWith(std::string_view bytes, const std::array<unsigned char, N>& magic) {
+    return bytes.size() >= N && std::equal(magic.begin(), magic.end(), bytes.begin(),
+                                           [](unsigned char m, char b) {
+                                               return m == static_cast<unsigned char>(b);
+                                           });
+}
+
 template <std::size_t N>
 bool startsWith(const fs::path& file, const std::array<unsigned char, N>& magic) {
-    std::ifstream in(file, std::ios::binary);
-    std::array<unsigned char, N> start{};
-    return in.read(reinterpret_cast<char*>(start.data()), start.size()) && start == magic;
+    return startsWith(std::string_view(fileHead(file, N)), magic);
 }
 
 std::string sizeText(std::int64_t width, std::int64_t height) {
@@ -155,6 +173,18 @@ Result<void> checkImageSize(const std::string& name, std::int64_t width, std::in
                                "most " +
                                sizeText(maxSide, maxSide) + " pixels (" + bytes(maxSide, maxSide) +
                                "); refused before decoding");
+}
+
+std::string imageFormatBySignature(std::string_view head) {
+    if (startsWith(head, PNG_SIGNATURE))
+        return "png";
+    if (startsWith(head, JPEG_SIGNATURE))
+        return "jpeg";
+    if (startsWith(head, EXR_MAGIC))
+        return "openexr";
+    if (startsWith(head, TIFF_LITTLE_ENDIAN) || startsWith(head, TIFF_BIG_ENDIAN))
+        return "tiff";
+    return "";
 }
 
 bool hasExrMagic(const fs::path& file) {
@@ -306,14 +336,6 @@ Result<void> checkGif(HeaderFile& gif, int maxSide) {
     return checkImageSize(gif.name, width, height, maxSide);
 }
 
-template <std::size_t N>
-bool startsWith(std::string_view bytes, const std::array<unsigned char, N>& magic) {
-    return bytes.size() >= N && std::equal(magic.begin(), magic.end(), bytes.begin(),
-                                           [](unsigned char m, char b) {
-                                               return m == static_cast<unsigned char>(b);
-                                           });
-}
-
 // The look each signature calls for, or none.
 Result<void> checkByKind(HeaderFile& image, std::string_view head, int maxSide) {
     if (startsWith(head, EXR_MAGIC)) {
@@ -348,12 +370,7 @@ Result<void> checkImageHeader(const fs::path& file, int maxSide) {
     if (auto regular = checkRegularFile(file); !regular)
         return regular;
     HeaderFile image(file, "image");
-    std::string head(8, '\0');
-    image.in->read(head.data(), static_cast<std::streamsize>(head.size()));
-    head.resize(static_cast<std::size_t>(image.in->gcount()));
-    image.in->clear();
-    image.in->seekg(0);
-    return checkByKind(image, head, maxSide);
+    return checkByKind(image, fileHead(file, PNG_SIGNATURE.size()), maxSide);
 }
 
 Result<void> checkImageHeaderBytes(std::string_view bytes, const std::string& name, int maxSide) {

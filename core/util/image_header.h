@@ -23,6 +23,11 @@ inline constexpr int MAX_IMAGE_SIDE = 16384;
 Result<void> checkImageSize(const std::string& name, std::int64_t width, std::int64_t height,
                             int maxSide);
 
+// The OpenImageIO format name for the signature at the start of `head` ("png", "jpeg",
+// "openexr", "tiff"), or "" for any other start: the formats whose readers allocate no pixels
+// on open (util/image_open.h chooses a reader by it).
+std::string imageFormatBySignature(std::string_view head);
+
 // True when the file starts with the OpenEXR magic number (76 2f 31 01); false when not or
 // when it cannot be read.
 bool hasExrMagic(const std::filesystem::path& file);

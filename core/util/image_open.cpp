@@ -20,10 +20,6 @@ constexpr std::size_t HEAD_BYTES = 8;
 constexpr unsigned char TGA_COLOUR_MAPPED = 1;
 constexpr unsigned char TGA_COLOUR_MAPPED_RLE = 9;
 
-bool startsWith(std::string_view head, std::string_view prefix) {
-    return head.substr(0, prefix.size()) == prefix;
-}
-
 std::string readHead(const std::string& name, OIIO::Filesystem::IOProxy* proxy) {
     std::string head(HEAD_BYTES, '\0');
     std::size_t got = 0;
@@ -38,32 +34,7 @@ std::string readHead(const std::string& name, OIIO::Filesystem::IOProxy* proxy) 
     return head;
 }
 
-// The readers grass hands files to: the formats artists paint maps and textures in. OpenImageIO
-// 2.4 also reads icons, camera raws, DICOM, video frames (FFmpeg), OpenVDB volumes and more,
-// whose readers see few such files and no fuzzing here: its ICO reader divides by zero
-// (SIGFPE) on image-rs's regression inputs, for one.
-bool isReadFormat(std::string_view format) {
-    static constexpr std::array<std::string_view, 10> FORMATS{
-        "png", "jpeg", "tiff", "openexr", "targa", "bmp", "gif", "webp", "hdr", "pnm"};
-    return std::find(FORMATS.begin(), FORMATS.end(), format) != FORMATS.end();
-}
-
 }  // namespace
-
-std::string imageFormatBySignature(std::string_view head) {
-    using namespace std::string_view_literals;
-    static const std::array<std::pair<std::string_view, const char*>, 5> SIGNATURES{{
-        {"\x89PNG\r\n\x1a\n"sv, "png"},
-        {"\xff\xd8\xff"sv, "jpeg"},
-        {"\x76\x2f\x31\x01"sv, "openexr"},
-        {"II*\0"sv, "tiff"},
-        {"MM\0*"sv, "tiff"},
-    }};
-    for (const auto& [signature, format] : SIGNATURES)
-        if (startsWith(head, signature))
-            return format;
-    return "";
-}
 
 Result<OIIO::ImageInput::unique_ptr> openImageInput(const std::string& name,
                                                     const OIIO::ImageSpec* config,
@@ -84,7 +55,13 @@ Result<OIIO::ImageInput::unique_ptr> openImageInput(const std::string& name,
         return makeError(name, "not an image OpenImageIO can read: no reader for \"" + extension +
                                    "\" files, and no known signature");
     }
-    if (!isReadFormat(in->format_name()))
+    // The formats maps and textures are kept in (util/file_extension.h). OpenImageIO 2.4 also
+    // reads icons, camera raws, DICOM, video frames (FFmpeg), OpenVDB volumes and more, whose
+    // readers see few such files and no fuzzing here: its ICO reader divides by zero (SIGFPE)
+    // on image-rs's regression inputs, for one. The signatures name readable formats only.
+    const auto& readable = readableImageExtensions();
+    if (bySignature.empty() &&
+        std::find(readable.begin(), readable.end(), extension) == readable.end())
         return makeError(name, std::string("an image in OpenImageIO's \"") + in->format_name() +
                                    "\" format, which grass does not read: use PNG, JPEG, TIFF, "
                                    "OpenEXR, TGA, BMP, GIF, WebP, Radiance HDR or PNM");

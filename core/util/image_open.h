@@ -20,13 +20,10 @@
 
 #include <string>
 
+#include "util/image_header.h"
 #include "util/result.h"
 
 namespace grass::core {
-
-// The OpenImageIO format name for the signature at the start of `head` ("png", "openexr", …),
-// or "" when no known signature starts it.
-std::string imageFormatBySignature(std::string_view head);
 
 // Opens `name` for reading (through `proxy` when given: `name` then only picks the extension
 // and names the image in messages; the proxy must outlive the reader). The error, without the
