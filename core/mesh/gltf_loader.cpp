@@ -169,6 +169,14 @@ void dropExportedBlades(const tinygltf::Model& model, std::vector<MeshInstance>&
                         " placements), its terrain is the ground");
 }
 
+// How far the centre of the bounds [lo, hi] (file units) lies from the file's origin, in whole
+// kilometres, for the notes of a mesh moved (or left) far from it.
+std::string kilometresAway(const glm::dvec3& lo, const glm::dvec3& hi, double metresPerUnit) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.0f", glm::length(0.5 * (lo + hi)) * metresPerUnit / 1000.0);
+    return text;
+}
+
 }  // namespace
 
 glm::dvec3 groundOrigin(const glm::dvec3& lo, const glm::dvec3& hi, double metresPerUnit) {
@@ -210,18 +218,16 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file, GltfPlacement pla
     glm::dvec3 lo, hi;
     if (placement == GltfPlacement::InGroundFrame && tryWorldBounds(*instances, decoded, lo, hi) &&
         core::groundOrigin(lo, hi, metresPerUnit) != glm::dvec3(0.0)) {
-        char distance[48];
-        std::snprintf(distance, sizeof distance, "%.0f",
-                      glm::length(0.5 * (lo + hi)) * metresPerUnit / 1000.0);
+        const std::string distance = kilometresAway(lo, hi, metresPerUnit);
         if (groundOrigin != glm::dvec3(0.0)) {
             result.origin = groundOrigin;
-            result.placementNote = "lies " + std::string(distance) +
+            result.placementNote = "lies " + distance +
                                    " km from the file's origin, as the ground does: placed in "
                                    "the ground's frame (the file's point " +
                                    coordinates(groundOrigin) +
                                    " is grass's origin, in the ground's unit and up axis)";
         } else {
-            result.placementNote = "lies " + std::string(distance) +
+            result.placementNote = "lies " + distance +
                                    " km from the file's origin, out of the field's reach: the "
                                    "ground is not that far from its own origin, so this mesh "
                                    "is not in its frame (docs/meshes.md)";
@@ -231,16 +237,15 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file, GltfPlacement pla
     if (placement == GltfPlacement::GroundNearOrigin && tryWorldBounds(*instances, decoded, lo, hi)) {
         result.origin = core::groundOrigin(lo, hi, metresPerUnit);
         if (result.origin != glm::dvec3(0.0)) {
-            const double far = glm::length(0.5 * (lo + hi)) * metresPerUnit;
             // The gap between neighbouring 32-bit floats at the mesh's largest coordinate.
             const double largest = std::max({std::abs(result.origin.x), std::abs(result.origin.y),
                                              std::abs(result.origin.z)});
-            char spacing[32], distance[48];
+            char spacing[32];
             std::snprintf(spacing, sizeof spacing, "%.2g",
                           std::ldexp(1.0, std::ilogb(largest) - 23) * metresPerUnit);
-            std::snprintf(distance, sizeof distance, "%.0f", far / 1000.0);
+            const std::string distance = kilometresAway(lo, hi, metresPerUnit);
             result.notes.push_back(
-                "lies " + std::string(distance) +
+                "lies " + distance +
                 " km from the file's origin, where 32-bit positions are " + spacing +
                 " m apart: moved so that the file's point " + coordinates(result.origin) +
                 " is grass's origin (the project's cameras, colliders and wind are placed from "
