@@ -7,6 +7,12 @@
 # unchanged. A crash, a leak, a hang (an input over 10 s), an input using over 2 GB, a sanitizer
 # report or a failed check fails the run: it prints the log's report and the input libFuzzer
 # kept, under BUILD_DIR/fuzz-run/artifacts/<target>/, and exits 1.
+#
+# GRASS_FUZZ_SEED (default 1) seeds libFuzzer's mutations. With a fixed seed the same build
+# starts down the same path of inputs each run, so CI's short run retraces much of what a run here
+# tried (not all: coverage feedback from the libraries' threads differs a little between runs,
+# two runs of map_png's 20,000 inputs kept 57 and 59), instead of a fresh draw each time.
+# GRASS_FUZZ_SEED=0 draws a new seed for each target, for exploring; the seed drawn is printed.
 set -uo pipefail
 
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -22,6 +28,12 @@ fi
 build="$(cd "$1" && pwd)" || exit 2
 seconds="$2"
 shift 2
+fuzz_seed="${GRASS_FUZZ_SEED:-1}"
+if ! [[ "$fuzz_seed" =~ ^[0-9]+$ ]] || ((${#fuzz_seed} > 9)); then
+  echo "GRASS_FUZZ_SEED must be a number from 0 to 999999999 (0: a new seed each run), not '$fuzz_seed'" >&2
+  exit 2
+fi
+fuzz_seed=$((10#$fuzz_seed)) # 010 is ten, not octal eight
 targets=("$@")
 if ((${#targets[@]} == 0)); then
   targets=(project gltf glb map_png map_tiff map_exr map_tga grass_texture packing_cache raw_export
@@ -86,7 +98,12 @@ if ((seconds == 0)); then
   exit "$failed"
 fi
 
-echo "== fuzzing ${#targets[@]} targets for ${seconds} s each, $jobs at a time"
+if ((fuzz_seed == 0)); then
+  seed_note="a new seed each target (GRASS_FUZZ_SEED=0)"
+else
+  seed_note="seed $fuzz_seed (GRASS_FUZZ_SEED)"
+fi
+echo "== fuzzing ${#targets[@]} targets for ${seconds} s each, $jobs at a time, $seed_note"
 fuzz_one() {
   local t="$1"
   mkdir -p "$run/work/$t" "$run/artifacts/$t" "$run/tmp/$t"
@@ -94,9 +111,16 @@ fuzz_one() {
   local dict=()
   [ -f "$here/dict/$t.dict" ] && dict=(-dict="$here/dict/$t.dict")
   TMPDIR="$run/tmp/$t" "$build/bin/fuzz_$t" "${common[@]}" "${dict[@]}" \
-    -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$run/artifacts/$t/" \
+    -seed="$fuzz_seed" -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$run/artifacts/$t/" \
     "$run/work/$t" >"$run/logs/$t.log" 2>&1
   echo $? >"$run/logs/$t.rc"
+}
+# The seed libFuzzer used, when it drew one (GRASS_FUZZ_SEED=0): to replay the run.
+drawn_seed() {
+  ((fuzz_seed == 0)) || return 0
+  local seed
+  seed="$(sed -n 's/.*Seed: \([0-9]*\).*/\1/p' "$1" | head -1)"
+  [ -n "$seed" ] && echo ", seed $seed"
 }
 running=0
 for t in "${targets[@]}"; do
@@ -116,12 +140,12 @@ for t in "${targets[@]}"; do
   corpus="$(find "$run/work/$t" -type f | wc -l)"
   artifacts="$(find "$run/artifacts/$t" -type f)"
   if [ "$rc" != 0 ] || grep -Eq "$report_pattern" "$log"; then
-    fail "$t" "$log" "exit status $rc after ${execs:-?} executions"
+    fail "$t" "$log" "exit status $rc after ${execs:-?} executions$(drawn_seed "$log")"
     for a in $artifacts; do echo "    input: $a"; done
   elif [ -z "$execs" ]; then
     fail "$t" "$log" "no final statistics: libFuzzer did not finish"
   else
-    echo "  ok $t: $execs executions in ${seconds} s, corpus $corpus inputs"
+    echo "  ok $t: $execs executions in ${seconds} s, corpus $corpus inputs$(drawn_seed "$log")"
   fi
 done
 exit "$failed"
