@@ -94,6 +94,20 @@ vec3 sphereCorrection(vec3 p, vec3 c, float radiusM, vec3 up) {
     return (dist - radiusM) * n;
 }
 
+// Whether the tip or the midpoint may lie inside the sphere (c, √clearSquared).
+bool tipOrMidpointWithin(vec3 c, float clearSquared, vec3 v0, Blade blade) {
+    vec3 toTip = c - blade.v2W.xyz;
+    vec3 toMid = c - (0.25 * v0 + 0.5 * blade.v1H.xyz + 0.25 * blade.v2W.xyz);
+    return !(dot(toTip, toTip) > clearSquared) || !(dot(toMid, toMid) > clearSquared);
+}
+
+// core/physics/physics_simd.cpp, TipOrMidpointNearBound: a group's bound with its margin.
+bool tipOrMidpointNearBound(vec3 b, float radiusM, float h, vec3 v0, Blade blade) {
+    vec3 a = abs(b);
+    float reach = radiusM * (1.0 + 1e-3) + 1e-6 * max(a.x, max(a.y, a.z)) + 1e-3 * h;
+    return tipOrMidpointWithin(b, reach * reach, v0, blade);
+}
+
 // Collisions with every sphere at substep i's t + τ; true when the blade was hit.
 bool collide(inout Blade blade, inout float bladeEta, uint substep) {
     vec3 v0 = blade.v0Theta.xyz, up = blade.upS.xyz;
@@ -103,9 +117,14 @@ bool collide(inout Blade blade, inout float bladeEta, uint substep) {
         vec4 sphere = colliderSpheres[substep * colliderCount + j];
         ColliderGroup group = colliderGroups[j];
         if (group.size.x > 1u) {
-            vec3 toBound = sphere.xyz + group.boundOffsetRadius.xyz - v0;
+            vec3 bound = sphere.xyz + group.boundOffsetRadius.xyz;
+            vec3 toBound = bound - v0;
             float boundReach = group.boundOffsetRadius.w + 1.01 * h;
-            if (dot(toBound, toBound) > boundReach * boundReach) {
+            // Out of reach of the root, or the tip and midpoint clearly outside the bound (so
+            // outside every sphere of the group: core/physics/physics_simd.cpp,
+            // TipOrMidpointNearBound, with its margin): the group leaves the blade as it is.
+            if (dot(toBound, toBound) > boundReach * boundReach ||
+                !tipOrMidpointNearBound(bound, group.boundOffsetRadius.w, h, v0, blade)) {
                 j += group.size.x - 1u;
                 continue;
             }
@@ -120,18 +139,15 @@ bool collide(inout Blade blade, inout float bladeEta, uint substep) {
         vec3 rel = c - v0;
         if (dot(rel, rel) > reach * reach)
             continue;
-        vec3 v2 = blade.v2W.xyz;
         // Most spheres within reach touch neither the tip nor the midpoint, and leave the blade
         // as it is: skipped on squared distances, with a margin (1e-4 of R²) far beyond the
         // rounding of the exact tests below (core/physics/physics_simd.cpp, TipOrMidpointNear).
         // Under projects/nature's bunny a blade has up to ~730 spheres within reach, ~80 of
         // which touch it; the walk is a serial chain, and this takes the square roots and
         // divisions out of most of its links.
-        float clear = radiusM * radiusM * (1.0 + 1e-4);
-        vec3 toTip = c - v2;
-        vec3 toMid = c - (0.25 * v0 + 0.5 * blade.v1H.xyz + 0.25 * v2);
-        if (dot(toTip, toTip) > clear && dot(toMid, toMid) > clear)
+        if (!tipOrMidpointWithin(c, radiusM * radiusM * (1.0 + 1e-4), v0, blade))
             continue;
+        vec3 v2 = blade.v2W.xyz;
         vec3 dTip = sphereCorrection(v2, c, radiusM, up);
         v2 += dTip;
         vec3 m = 0.25 * v0 + 0.5 * blade.v1H.xyz + 0.25 * v2;

@@ -355,14 +355,34 @@ HWY_INLINE V3 SphereCorrection(D d, V3 p, V3 c, V radius, V3 up) {
 // R²) far beyond the rounding of the exact test in SphereCorrection, so a lane left out here is
 // one the exact test leaves unchanged: the step moves every blade bit for bit as it would
 // without this shortcut.
-HWY_INLINE M TipOrMidpointNear(D d, V3 c, V radius, V3 v0, V3 v1, V3 v2) {
-    const V clear = pk::Mul(pk::Mul(radius, radius), pk::Set(d, 1.0f + 1e-4f));
+HWY_INLINE M TipOrMidpointWithin(D d, V3 c, V clearSquared, V3 v0, V3 v1, V3 v2) {
     const V3 toTip = Sub3(c, v2);
     const V3 m = Add3(Add3(Scale3(v0, pk::Set(d, 0.25f)), Scale3(v1, pk::Set(d, 0.5f))),
                       Scale3(v2, pk::Set(d, 0.25f)));
     const V3 toMid = Sub3(c, m);
-    return pk::Or(pk::Not(pk::Gt(Dot3(toTip, toTip), clear)),
-                  pk::Not(pk::Gt(Dot3(toMid, toMid), clear)));
+    return pk::Or(pk::Not(pk::Gt(Dot3(toTip, toTip), clearSquared)),
+                  pk::Not(pk::Gt(Dot3(toMid, toMid), clearSquared)));
+}
+
+HWY_INLINE M TipOrMidpointNear(D d, V3 c, V radius, V3 v0, V3 v1, V3 v2) {
+    return TipOrMidpointWithin(d, c, pk::Mul(pk::Mul(radius, radius), pk::Set(d, 1.0f + 1e-4f)),
+                               v0, v1, v2);
+}
+
+// The same for a whole group: lanes whose tip or midpoint may lie inside the group's bound
+// (centre b, radius R ⊇ every sphere of the group). A point farther than R from b is outside
+// every sphere of the group, so the group leaves that blade as it is and is skipped, bit for bit
+// as testing its spheres would (the blade does not move while its group is walked unless a
+// sphere touches it). The margin covers the rounding of the moved centres and of the distances:
+// 10⁻³ of R + h, and 10⁻⁶ of the bound's largest coordinate (float rounding grows with distance
+// from the origin). Under projects/nature's bunny the chunk bounds then keep a blade's walk to
+// the chunks near its tip and midpoint instead of every chunk within reach of its root
+// (docs/physics.md, Colliders).
+HWY_INLINE M TipOrMidpointNearBound(D d, glm::vec3 b, float radiusM, V h, V3 v0, V3 v1, V3 v2) {
+    const float largest = std::max({std::abs(b.x), std::abs(b.y), std::abs(b.z)});
+    const V reach = pk::Add(pk::Set(d, radiusM * (1.0f + 1e-3f) + 1e-6f * largest),
+                            pk::Mul(pk::Set(d, 1e-3f), h));
+    return TipOrMidpointWithin(d, Splat3(d, b), pk::Mul(reach, reach), v0, v1, v2);
 }
 
 // core's collide() at the substep's t + τ; the mask of lanes that were hit.
@@ -385,7 +405,10 @@ HWY_INLINE M Collide(D d, const Job& job, std::uint32_t substep, V3 v0, V3 up, V
             const V3 toBound = Sub3(Splat3(d, job.bounds[base + j]), v0);
             const V boundReach = pk::Add(pk::Set(d, sphere.boundRadiusM), reachH);
             // NaN bounds fail the comparison and fall through to the exact tests.
-            group = pk::Not(pk::Gt(Dot3(toBound, toBound), pk::Mul(boundReach, boundReach)));
+            group = pk::And(
+                pk::Not(pk::Gt(Dot3(toBound, toBound), pk::Mul(boundReach, boundReach))),
+                TipOrMidpointNearBound(d, job.bounds[base + j], sphere.boundRadiusM, h, v0, v1,
+                                       v2));
             groupEnd = j + sphere.groupSize;
             if (pk::AllFalse(d, group)) {
                 j = groupEnd - 1;

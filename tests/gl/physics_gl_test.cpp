@@ -131,11 +131,8 @@ TEST_F(PhysicsGpuTest, MatchesCpuReferenceWithAVortexAndCentreGravity) {
     expectCpuAndGpuAgree(params, {vortex}, movingColliders(), STEP_COUNT / 2);
 }
 
-// The shader skips a sphere on squared distances when the blade's tip and midpoint are clearly
-// outside it; with surfaces a hair from the points (physics_cases.h), the blades inside must
-// still be corrected and those outside left alone, as the CPU reference does.
-TEST_F(PhysicsGpuTest, SpheresAHairFromTheTipOrMidpointDecideAsTheReference) {
-    const SphereEdgeField field = sphereEdgeField();
+// One GPU step of the sphere-edge field (physics_cases.h): η > 0 exactly on the blades inside.
+void expectSphereEdgeDecidedAsTheReference(const SphereEdgeField& field) {
     const core::PhysicsParams params = sphereEdgeParams();
     auto physics = render::PhysicsGpu::load();
     ASSERT_TRUE(physics.ok()) << physics.error().str();
@@ -147,6 +144,17 @@ TEST_F(PhysicsGpuTest, SpheresAHairFromTheTipOrMidpointDecideAsTheReference) {
     for (std::size_t i = 0; i < eta.size(); ++i)
         EXPECT_EQ(eta[i] > 0.0f, field.deltas[i] < 0.0f)
             << "blade " << i << ", surface " << field.deltas[i] << " m away, eta " << eta[i];
+}
+
+// The shader skips a sphere on squared distances when the blade's tip and midpoint are clearly
+// outside it, and a packed group when they are clearly outside its bound; with surfaces a hair
+// from the points (physics_cases.h, single spheres and groups), the blades inside must still be
+// corrected and those outside left alone, as the CPU reference does.
+TEST_F(PhysicsGpuTest, SpheresAHairFromTheTipOrMidpointDecideAsTheReference) {
+    for (const bool grouped : {false, true}) {
+        SCOPED_TRACE(grouped ? "grouped spheres" : "single spheres");
+        expectSphereEdgeDecidedAsTheReference(sphereEdgeField(grouped));
+    }
 }
 
 // The snow load (core::GravityLoad, SPEC §11): extra gravity per blade, growing over time as snow

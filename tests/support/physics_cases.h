@@ -273,9 +273,15 @@ inline std::vector<core::Blade> degenerateBlades() {
 // sphere of radius 1 m whose centre lies (1 + δ) m from the tip, or from the midpoint,
 // horizontally. Inside (δ < 0) the exact test corrects the blade, so η > 0 after a step; outside
 // it leaves the blade as it is, η = 0. The outside δ lie both within the shortcut's margin
-// (√(1 + 1e-4) − 1 ≈ 5e-5) and beyond it; the smallest, 1e-5 m, is ~10 float steps of the
-// coordinates (every site lies within 6 m of the origin). Sites 3 m apart, out of each other's
+// (√(1 + 1e-4) − 1 ≈ 5e-5) and beyond it; the smallest, 1e-5 m, is ~20 float steps of the
+// coordinates (every site lies within 8 m of the origin). Sites 3 m apart, out of each other's
 // reach; 16 equal blades a site, so every block of SIMD lanes (4, 8 or 16) holds one case.
+//
+// `grouped`: each sphere heads a group of two (a packed mesh's broad phase, SphereCollider::
+// groupSize) with a small sphere on its far side, and the group's bound touches the sphere where
+// it is nearest the tip or midpoint: the bound's surface passes the same hair from the point, for
+// the shortcut that skips a whole group (TipOrMidpointNearBound). Its margin (~1.6e-3 m here) is
+// wider than the per-sphere one: the 1e-2 and 1e-1 m sites lie beyond it, the rest within.
 struct SphereEdgeField {
     std::vector<core::Blade> blades;
     std::vector<float> deltas;  // per blade: its site's δ
@@ -293,9 +299,9 @@ inline core::PhysicsParams sphereEdgeParams() {
     return params;
 }
 
-inline SphereEdgeField sphereEdgeField() {
-    constexpr std::array<float, 10> DELTAS{-1e-3f, -1e-4f, -2e-5f, -1e-5f, 1e-5f,
-                                           2e-5f,  4e-5f,  6e-5f,  1e-4f,  1e-3f};
+inline SphereEdgeField sphereEdgeField(bool grouped = false) {
+    constexpr std::array<float, 12> DELTAS{-1e-3f, -1e-4f, -2e-5f, -1e-5f, 1e-5f, 2e-5f,
+                                           4e-5f,  6e-5f,  1e-4f,  1e-3f,  1e-2f, 1e-1f};
     constexpr float H = 0.5f, RADIUS = 1.0f;
     constexpr std::size_t BLADES_PER_SITE = 16;
     const glm::vec3 up(0.0f, 1.0f, 0.0f);
@@ -312,6 +318,19 @@ inline SphereEdgeField sphereEdgeField() {
             sphere.centre = point + glm::vec3(RADIUS * (1.0f + delta), 0.0f, 0.0f);
             sphere.radiusM = RADIUS;
             field.colliders.push_back(sphere);
+            if (grouped) {
+                // A 0.05 m sphere 1.2 m beyond the centre: the bound spans x from the centre −1
+                // to +1.25, so it is centred 0.125 m beyond the centre with a radius of 1.125 m
+                // (both exact in float) and touches the big sphere at the point's side.
+                core::SphereCollider& head = field.colliders.back();
+                head.groupSize = 2;
+                head.boundOffset = glm::vec3(0.125f, 0.0f, 0.0f);
+                head.boundRadiusM = 1.125f;
+                core::SphereCollider far;
+                far.centre = sphere.centre + glm::vec3(1.2f, 0.0f, 0.0f);
+                far.radiusM = 0.05f;
+                field.colliders.push_back(far);
+            }
             for (std::size_t i = 0; i < BLADES_PER_SITE; ++i) {
                 field.blades.push_back(blade);
                 field.deltas.push_back(delta);

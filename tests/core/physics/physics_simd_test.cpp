@@ -170,11 +170,14 @@ TEST(PhysicsSimd, DegenerateBladesTakeTheReferenceStepExactly) {
 }
 
 // The SIMD collision loop skips a sphere on squared distances when no lane's tip or midpoint
-// can be inside it; with surfaces a hair from the points (physics_cases.h), the blades inside
-// must still be corrected and those outside left alone, on every compiled instruction set, as
-// the reference does.
-TEST(PhysicsSimd, SpheresAHairFromTheTipOrMidpointDecideAsTheReference) {
-    const SphereEdgeField field = sphereEdgeField();
+// can be inside it, and a packed group when none can be inside its bound; with surfaces a hair
+// from the points (physics_cases.h, single spheres and groups whose bound passes the same hair
+// away), the blades inside must still be corrected and those outside left alone, on every
+// compiled instruction set, as the reference does.
+class SphereEdge : public ::testing::TestWithParam<bool> {};
+
+TEST_P(SphereEdge, SpheresAHairFromTheTipOrMidpointDecideAsTheReference) {
+    const SphereEdgeField field = sphereEdgeField(GetParam());
     const core::PhysicsParams params = sphereEdgeParams();
     const std::vector<glm::vec3> tips = core::restTips(field.blades);
     const auto expectInsideCorrected = [&](const std::vector<float>& eta, const char* what) {
@@ -198,6 +201,11 @@ TEST(PhysicsSimd, SpheresAHairFromTheTipOrMidpointDecideAsTheReference) {
     hwy::SetSupportedTargetsForTest(0);
     hwy::GetChosenTarget().Update(hwy::SupportedTargets());
 }
+
+INSTANTIATE_TEST_SUITE_P(PhysicsSimd, SphereEdge, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& param) {
+                             return param.param ? "GroupedSpheres" : "SingleSpheres";
+                         });
 
 // Nothing acts on a field at rest: both executions leave it bit for bit as it was.
 TEST(PhysicsSimd, AFieldAtRestStaysBitIdentical) {
