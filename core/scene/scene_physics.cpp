@@ -58,12 +58,30 @@ std::uint32_t mortonCode(glm::uvec3 cell) {
     return code;
 }
 
-// A packed mesh's two-level broad phase. The spheres are put in Morton order and cut into chunks
-// of about √N neighbours; the first sphere holds the bound of the whole mesh, the first of every
-// later chunk the bound of its chunk (the same SphereCollider fields, which the physics' loops
-// read wherever they meet them). A blade within the mesh's reach then tests √N chunk bounds and
-// the spheres of the chunks it reaches instead of all N (projects/nature's 1000-sphere bunny:
-// the colliding blades' loops ~10× shorter). A bound only skips spheres that could not touch the
+// Nested bounds over spheres in Morton order: the span is cut into `fanOut` runs of neighbours,
+// each run cut again the same way until a run holds at most `fanOut` spheres, and the first
+// sphere of every run but the first holds its run's bound (the first run's head is the span's
+// own, which holds the larger bound).
+void addNestedBounds(std::span<SphereCollider> spheres, std::size_t fanOut) {
+    if (spheres.size() <= fanOut)
+        return;
+    const std::size_t run = (spheres.size() + fanOut - 1) / fanOut;
+    for (std::size_t first = 0; first < spheres.size(); first += run) {
+        const auto part = spheres.subspan(first, std::min(run, spheres.size() - first));
+        addNestedBounds(part, fanOut);
+        if (first > 0)
+            addBroadPhase(part);
+    }
+}
+
+// A packed mesh's broad phase, three levels deep. The spheres are put in Morton order; the first
+// sphere holds the bound of the whole mesh, and the mesh is cut into runs of neighbours, each
+// cut again, ∛N runs a level (addNestedBounds; the same SphereCollider fields, which the
+// physics' loops read wherever they meet them). A blade within the mesh's reach then tests the
+// bounds of the runs it reaches instead of every sphere: under projects/nature's 1000-sphere
+// bunny, with the groups skipped on the tip and midpoint (physics_simd.cpp
+// TipOrMidpointNearBound), the longest walk is ~1/4 of the 931 links of testing √N chunks and
+// their spheres (docs/physics.md, Colliders). A bound only skips spheres that could not touch the
 // blade, so the results are those of testing every sphere in this order.
 void addMeshBroadPhase(std::span<SphereCollider> group) {
     if (group.size() < 2)
@@ -80,9 +98,9 @@ void addMeshBroadPhase(std::span<SphereCollider> group) {
         sorted.push_back(std::move(group[i]));
     std::move(sorted.begin(), sorted.end(), group.begin());
 
-    const auto chunk = static_cast<std::size_t>(std::ceil(std::sqrt(double(group.size()))));
-    for (std::size_t first = chunk; first < group.size(); first += chunk)
-        addBroadPhase(group.subspan(first, std::min(chunk, group.size() - first)));
+    const auto fanOut = std::max<std::size_t>(
+        2, static_cast<std::size_t>(std::ceil(std::cbrt(double(group.size())) - 1e-9)));
+    addNestedBounds(group, fanOut);
     addBroadPhase(group);  // last: the first sphere's bound is the whole mesh's
 }
 

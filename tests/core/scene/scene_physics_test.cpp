@@ -227,10 +227,11 @@ TEST(ScenePhysics, MeshColliderIsPlacedPackedSpheres) {
     EXPECT_NE(again->notes[0].find("(cached in"), std::string::npos) << again->notes[0];
 }
 
-// A packed mesh's broad phase has two levels: the first sphere bounds the whole mesh, the first
-// of each later chunk of ~√N spheres (in Morton order) bounds its chunk. Every bound holds its
-// spheres, and the blades step bit for bit as with no bounds at all, on the reference and the
-// SIMD step: a bound only skips spheres that could not touch the blade.
+// A packed mesh's broad phase is nested three levels deep: the first sphere bounds the whole
+// mesh, which is cut into ∛N runs of neighbours (in Morton order), each cut again; the first
+// sphere of every later run bounds its run. Every bound holds its spheres, runs nest inside the
+// run they start in, and the blades step bit for bit as with no bounds at all, on the reference
+// and the SIMD step: a bound only skips spheres that could not touch the blade.
 TEST(ScenePhysics, MeshColliderBoundsItsSpheresInChunks) {
     ColliderDesc rock;
     rock.sphereCount = 40;
@@ -241,30 +242,34 @@ TEST(ScenePhysics, MeshColliderBoundsItsSpheresInChunks) {
     ASSERT_TRUE(physics) << physics.error().str();
     const std::vector<SphereCollider>& spheres = physics->colliders;
     const std::size_t n = spheres.size();
-    ASSERT_GE(n, 20u);
-    const auto chunk = static_cast<std::size_t>(std::ceil(std::sqrt(double(n))));
-    const auto holds = [&](std::size_t head, std::size_t first, std::size_t count) {
-        const glm::vec3 bound = spheres[head].centre + spheres[head].boundOffset;
-        for (std::size_t i = first; i < first + count; ++i)
-            EXPECT_LE(glm::length(spheres[i].centre - bound) + spheres[i].radiusM,
-                      spheres[head].boundRadiusM)
-                << "sphere " << i << " outside the bound on " << head;
-    };
+    ASSERT_GE(n, 27u);  // enough for three levels of three
     EXPECT_EQ(spheres[0].groupSize, n);
-    holds(0, 0, n);
-    std::size_t heads = 0;
-    for (std::size_t i = 1; i < n; ++i) {
-        if (i % chunk != 0) {
-            EXPECT_EQ(spheres[i].groupSize, 1u) << i;
+    // The run each sphere lies in at each depth: ends[d] is where the run at depth d ends.
+    std::vector<std::size_t> ends{n};
+    std::size_t deepest = 0, bounds = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        while (i >= ends.back())
+            ends.pop_back();
+        const SphereCollider& head = spheres[i];
+        if (head.groupSize <= 1)
             continue;
+        ++bounds;
+        const std::size_t end = i + head.groupSize;
+        EXPECT_LE(end, ends.back()) << "the run at " << i << " leaves the run it starts in";
+        const glm::vec3 bound = head.centre + head.boundOffset;
+        for (std::size_t k = i; k < std::min(end, n); ++k)
+            EXPECT_LE(glm::length(spheres[k].centre - bound) + spheres[k].radiusM,
+                      head.boundRadiusM)
+                << "sphere " << k << " outside the bound on " << i;
+        if (i > 0) {
+            ends.push_back(end);
+            deepest = std::max(deepest, ends.size() - 1);
+            // Morton order keeps a run compact: its bound is well inside the mesh's.
+            EXPECT_LT(head.boundRadiusM, spheres[0].boundRadiusM) << i;
         }
-        ++heads;
-        EXPECT_EQ(spheres[i].groupSize, std::min(chunk, n - i)) << i;
-        holds(i, i, spheres[i].groupSize);
-        // Morton order keeps a chunk compact: its bound is well inside the mesh's.
-        EXPECT_LT(spheres[i].boundRadiusM, spheres[0].boundRadiusM) << i;
     }
-    EXPECT_EQ(heads, (n - 1) / chunk);
+    EXPECT_EQ(deepest, 2u) << "runs and runs within runs below the mesh's bound";
+    EXPECT_GE(bounds, 6u);
 
     std::vector<SphereCollider> unbounded = spheres;
     for (SphereCollider& sphere : unbounded)
