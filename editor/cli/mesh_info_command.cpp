@@ -44,6 +44,9 @@ int runMeshInfo(const std::vector<std::string>& args) {
     const glm::dvec3 origin = imported->origin;
     const glm::dvec3 lo = glm::dvec3(local.min) + origin, hi = glm::dvec3(local.max) + origin;
     const double area = core::surfaceArea(mesh);
+    // Named as render's notes are, so that notes of several files checked in a row stay apart.
+    for (std::string& note : imported->notes)
+        note = file + ": " + note;
     printNotes(imported->notes);
     const bool moved = origin != glm::dvec3(0.0);
     if (json) {
