@@ -9,7 +9,8 @@
 namespace grass::core {
 
 // Per axis, the area-weighted quantiles `outside`/2 and 1 − `outside`/2 of the triangles'
-// centroids, widened by the mean triangle size so a box of one flat layer keeps its thickness;
+// corners (a third of each triangle's area at each corner), widened by the mean triangle size so
+// a box of one flat layer keeps its thickness;
 // clamped to meshBounds. An empty mesh gives meshBounds.
 Bounds surfaceBulkBounds(const SurfaceMesh& mesh, double outside = 0.04);
 

@@ -74,5 +74,25 @@ TEST(SurfaceBulk, LeavesOutSmallFarPartsButKeepsTheField) {
     EXPECT_GT(bulk.max.z, 14.0f);
 }
 
+// A wall of few, large triangles (Khronos' TextureSettingsTest: 72 triangles, 10 m wide): its area
+// stands at the triangles' corners, so the bulk reaches the wall's edges. With the area at the
+// centroids, eight 1.25 × 10 m columns of two triangles each lost 0.83 m at the top and at the
+// bottom, and the first camera, framing that box, cut the wall off.
+TEST(SurfaceBulk, AWallOfLargeTrianglesKeepsItsEdges) {
+    SurfaceMesh mesh;
+    for (int column = 0; column < 8; ++column) {
+        const float x0 = 1.25f * float(column), x1 = x0 + 1.25f;
+        const auto a = mesh.add_vertex({x0, 0.0f, 0.0f}), b = mesh.add_vertex({x1, 0.0f, 0.0f}),
+                   c = mesh.add_vertex({x1, 10.0f, 0.0f}), d = mesh.add_vertex({x0, 10.0f, 0.0f});
+        mesh.add_face(a, b, c);
+        mesh.add_face(a, c, d);
+    }
+    const Bounds bulk = surfaceBulkBounds(mesh);
+    EXPECT_LT(bulk.min.y, 0.05f);
+    EXPECT_GT(bulk.max.y, 9.95f);
+    EXPECT_LT(bulk.min.x, 0.05f);
+    EXPECT_GT(bulk.max.x, 9.95f);
+}
+
 }  // namespace
 }  // namespace grass::core
