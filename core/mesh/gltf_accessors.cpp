@@ -12,7 +12,19 @@ namespace grass::core::gltf {
 namespace {
 
 // What a primitive reads, and so which accessor types it accepts.
-enum class Semantic { Position, Normal, TexCoord, Indices, Translation, Rotation, Scale, Color };
+enum class Semantic {
+    Position,
+    Normal,
+    TexCoord,
+    Indices,
+    Translation,
+    Rotation,
+    Scale,
+    Color,
+    Joints,
+    Weights,
+    InverseBindMatrices
+};
 
 // An accessor without a bufferView is all zeros; its count is not bounded by any data, so a
 // corrupt count must not turn into a multi-gigabyte allocation.
@@ -38,6 +50,12 @@ const char* semanticName(Semantic semantic) {
             return "SCALE";
         case Semantic::Color:
             return "COLOR_0";
+        case Semantic::Joints:
+            return "JOINTS";
+        case Semantic::Weights:
+            return "WEIGHTS";
+        case Semantic::InverseBindMatrices:
+            return "inverseBindMatrices";
     }
     return "?";
 }
@@ -53,16 +71,21 @@ int semanticComponents(Semantic semantic) {
         case Semantic::TexCoord:
             return 2;
         case Semantic::Rotation:
+        case Semantic::Joints:
+        case Semantic::Weights:
             return 4;
         case Semantic::Indices:
             return 1;
+        case Semantic::InverseBindMatrices:
+            return 16;
     }
     return 0;
 }
 
 // glTF 2.0 §3.7.2.1 (core), KHR_mesh_quantization's integer POSITION, NORMAL, TEXCOORD_0, and
 // EXT_mesh_gpu_instancing's TRANSLATION, ROTATION, SCALE; COLOR_0 (and the per-instance _COLOR_0
-// of the same convention).
+// of the same convention); JOINTS_n, WEIGHTS_n and inverseBindMatrices (§3.7.3). Morph target
+// deltas are read as POSITION and NORMAL.
 bool acceptsComponent(Semantic semantic, int componentType) {
     const bool isFloat = componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
     const bool isSigned = componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
@@ -82,7 +105,12 @@ bool acceptsComponent(Semantic semantic, int componentType) {
         case Semantic::Indices:
             return isUnsigned || componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
         case Semantic::Color:
+        case Semantic::Weights:
             return isFloat || isUnsigned;
+        case Semantic::Joints:
+            return isUnsigned;
+        case Semantic::InverseBindMatrices:
+            return isFloat;
     }
     return false;
 }
@@ -106,6 +134,12 @@ const char* expectedTypes(Semantic semantic) {
             return "VEC4 of FLOAT, or of normalized BYTE/SHORT";
         case Semantic::Color:
             return "VEC3 or VEC4 of FLOAT, or of normalized UNSIGNED_BYTE/UNSIGNED_SHORT";
+        case Semantic::Joints:
+            return "VEC4 of UNSIGNED_BYTE or UNSIGNED_SHORT";
+        case Semantic::Weights:
+            return "VEC4 of FLOAT, or of normalized UNSIGNED_BYTE/UNSIGNED_SHORT";
+        case Semantic::InverseBindMatrices:
+            return "MAT4 of FLOAT";
     }
     return "?";
 }
@@ -155,12 +189,17 @@ int typeComponents(int type) {
             return 3;
         case TINYGLTF_TYPE_VEC4:
             return 4;
+        // Only a skin's inverse bind matrices; MAT4 of FLOAT has no column padding (§3.6.2.4).
+        case TINYGLTF_TYPE_MAT4:
+            return 16;
         default:
-            return 0;  // matrices: never a mesh attribute we read
+            return 0;  // MAT2, MAT3: never read
     }
 }
 
 std::string typeName(int type) {
+    if (type == TINYGLTF_TYPE_MAT4)
+        return "MAT4";
     const int n = typeComponents(type);
     if (n == 1)
         return "SCALAR";
@@ -368,8 +407,10 @@ Result<std::vector<T>> readAccessor(const tinygltf::Model& model, int index, Sem
     }
     std::vector<T> out(count * static_cast<std::uint64_t>(components), T{});
     // Without a bufferView the accessor starts as zeros (spec §3.6.2.3).
-    // Integer colours are normalized by the spec; a file that forgot the flag still means it.
-    const bool normalized = accessor.normalized || semantic == Semantic::Color;
+    // Integer colours and joint weights are normalized by the spec; a file that forgot the flag
+    // still means it.
+    const bool normalized =
+        accessor.normalized || semantic == Semantic::Color || semantic == Semantic::Weights;
     if (base)
         decode(accessor.componentType, base, stride, count, components, normalized, out.data());
     if (accessor.sparse.isSparse) {
@@ -394,6 +435,39 @@ Result<std::vector<glm::vec4>> readColors(const tinygltf::Model& model, int inde
         colors[i] = {c[0], c[1], c[2], rgba ? c[3] : 1.0f};
     }
     return colors;
+}
+
+// Refuses, before any read, an accessor whose count is not `expected` (what `expectedWhat`
+// names): a corrupt count then cannot allocate more than the data it must match. An index out
+// of range is left to readAccessor's message.
+Result<void> expectCount(const tinygltf::Model& model, int index, Semantic semantic,
+                         std::uint64_t expected, const std::string& expectedWhat,
+                         const std::string& where) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size())
+        return {};
+    const std::uint64_t count = model.accessors[static_cast<std::size_t>(index)].count;
+    if (count == expected)
+        return {};
+    return makeError("", accessorLabel(index, semantic, where) + " has " + std::to_string(count) +
+                             " elements, but " + expectedWhat + " has " + std::to_string(expected));
+}
+
+// Reads a VEC3 or VEC4 accessor of exactly `vertexCount` elements.
+template <class Vec, class T = typename Vec::value_type>
+Result<std::vector<Vec>> readPerVertex(const tinygltf::Model& model, int index, Semantic semantic,
+                                       std::size_t vertexCount, const std::string& where) {
+    if (auto counted = expectCount(model, index, semantic, vertexCount, "POSITION", where);
+        !counted)
+        return counted.error();
+    const auto flat = readAccessor<T>(model, index, semantic, where);
+    if (!flat)
+        return flat.error();
+    constexpr auto n = static_cast<std::size_t>(Vec::length());
+    std::vector<Vec> out(flat->size() / n);
+    for (std::size_t i = 0; i < out.size(); ++i)
+        for (std::size_t c = 0; c < n; ++c)
+            out[i][static_cast<glm::length_t>(c)] = (*flat)[n * i + c];
+    return out;
 }
 
 int attributeAccessor(const tinygltf::Primitive& primitive, const char* name) {
@@ -573,6 +647,51 @@ Result<std::vector<glm::vec4>> readInstanceColors(const tinygltf::Model& model,
     if (!index.IsNumber())
         return makeError("", where + ": EXT_mesh_gpu_instancing _COLOR_0 is not an accessor index");
     return readColors(model, index.GetNumberAsInt(), where + " _COLOR_0");
+}
+
+Result<std::vector<glm::vec3>> readMorphDeltas(const tinygltf::Model& model, int index,
+                                               bool normals, std::size_t vertexCount,
+                                               const std::string& where) {
+    return readPerVertex<glm::vec3>(model, index, normals ? Semantic::Normal : Semantic::Position,
+                                    vertexCount, where);
+}
+
+Result<std::vector<glm::uvec4>> readJoints(const tinygltf::Model& model, int index,
+                                           std::size_t vertexCount, const std::string& where) {
+    return readPerVertex<glm::uvec4>(model, index, Semantic::Joints, vertexCount, where);
+}
+
+Result<std::vector<glm::vec4>> readJointWeights(const tinygltf::Model& model, int index,
+                                                std::size_t vertexCount,
+                                                const std::string& where) {
+    return readPerVertex<glm::vec4>(model, index, Semantic::Weights, vertexCount, where);
+}
+
+Result<std::vector<glm::dmat4>> readInverseBindMatrices(const tinygltf::Model& model, int index,
+                                                        std::size_t jointCount,
+                                                        const std::string& where) {
+    if (index >= 0 && static_cast<std::size_t>(index) < model.accessors.size()) {
+        const auto& accessor = model.accessors[static_cast<std::size_t>(index)];
+        const std::string label = accessorLabel(index, Semantic::InverseBindMatrices, where);
+        // Spec §3.7.3.1: at least one matrix per joint; the rest are unused.
+        if (accessor.count < jointCount)
+            return makeError("", label + " holds " + std::to_string(accessor.count) +
+                                     " matrices for " + std::to_string(jointCount) + " joints");
+        // Zeros with sparse overrides could claim any count; only the joints' are needed.
+        if (accessor.bufferView < 0 && accessor.count > jointCount)
+            return makeError("", label + " has no bufferView and " +
+                                     std::to_string(accessor.count) + " matrices for " +
+                                     std::to_string(jointCount) + " joints");
+    }
+    const auto flat = readAccessor<float>(model, index, Semantic::InverseBindMatrices, where);
+    if (!flat)
+        return flat.error();
+    std::vector<glm::dmat4> matrices(jointCount);
+    for (std::size_t j = 0; j < jointCount; ++j)
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                matrices[j][c][r] = (*flat)[16 * j + static_cast<std::size_t>(4 * c + r)];
+    return matrices;
 }
 
 }  // namespace grass::core::gltf

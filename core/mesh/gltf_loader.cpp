@@ -8,6 +8,7 @@
 
 #include "mesh/gltf_accessors.h"
 #include "mesh/gltf_blade_nodes.h"
+#include "mesh/gltf_decoded_meshes.h"
 #include "mesh/gltf_parts.h"
 #include "mesh/gltf_scene_walk.h"
 #include "mesh/gltf_source.h"
@@ -130,7 +131,7 @@ bool tryWorldBounds(const std::vector<MeshInstance>& instances, gltf::DecodedMes
     hi = -lo;
     bool any = false;
     for (const MeshInstance& instance : instances) {
-        const auto primitives = decoded.primitives(instance.mesh);
+        const auto primitives = decoded.primitives(instance);
         if (!primitives)
             continue;  // reported when the primitives are added
         for (const PrimitiveData& data : **primitives)
@@ -253,7 +254,7 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file, GltfPlacement pla
         }
     }
     for (const MeshInstance& instance : *instances) {
-        const auto primitives = decoded.primitives(instance.mesh);
+        const auto primitives = decoded.primitives(instance);
         if (!primitives)
             return withPath(primitives.error());
         const std::string meshName = gltf::describeMesh(model, instance.mesh);

@@ -11,6 +11,8 @@ namespace {
 // the walk when such nodes are stacked into an exponential lattice.
 constexpr std::size_t MAX_NODE_VISITS = 1'000'000;
 
+}  // namespace
+
 std::string describeNode(const tinygltf::Model& model, std::size_t index) {
     const std::string& name = model.nodes[index].name;
     return "node " + std::to_string(index) + (name.empty() ? "" : " \"" + name + "\"");
@@ -24,8 +26,7 @@ bool isFinite(const glm::dmat4& m) {
     return true;
 }
 
-// The node's local transform: `matrix` (column-major) or T * R * S (spec §3.5.3).
-Result<glm::dmat4> localTransform(const tinygltf::Model& model, std::size_t index) {
+Result<glm::dmat4> nodeLocalTransform(const tinygltf::Model& model, std::size_t index) {
     const tinygltf::Node& node = model.nodes[index];
     const auto bad = [&](const std::string& why) {
         return makeError("", describeNode(model, index) + " has " + why);
@@ -53,8 +54,6 @@ Result<glm::dmat4> localTransform(const tinygltf::Model& model, std::size_t inde
         return bad("a non-finite transform");
     return local;
 }
-
-}  // namespace
 
 glm::dmat3 normalMatrix(const glm::dmat4& world) {
     const glm::dmat3 linear(world);
@@ -92,7 +91,6 @@ Result<std::vector<MeshInstance>> collectInstances(const tinygltf::Model& model,
         stack.push_back({*it, -1, glm::dmat4(1.0), false});
     std::vector<char> onPath(model.nodes.size(), 0);
     std::vector<std::size_t> visits(model.nodes.size(), 0);
-    std::vector<char> skinNoted(model.meshes.size(), 0);
     std::size_t totalVisits = 0;
     bool sharedNoted = false;
     while (!stack.empty()) {
@@ -121,7 +119,7 @@ Result<std::vector<MeshInstance>> collectInstances(const tinygltf::Model& model,
         if (++totalVisits > MAX_NODE_VISITS)
             return makeError("", "the node hierarchy expands to more than " +
                                      std::to_string(MAX_NODE_VISITS) + " node instances");
-        const auto local = localTransform(model, index);
+        const auto local = nodeLocalTransform(model, index);
         if (!local)
             return local.error();
         const glm::dmat4 world = frame.parentWorld * *local;
@@ -132,17 +130,17 @@ Result<std::vector<MeshInstance>> collectInstances(const tinygltf::Model& model,
                 return makeError("", describeNode(model, index) + " refers to mesh " +
                                          std::to_string(node.mesh) + ", but the file has " +
                                          std::to_string(model.meshes.size()) + " meshes");
-            // Spec §3.7.3: a skinned mesh ignores its node's transform; without the joints,
-            // its bind pose is the mesh as stored.
-            if (node.skin >= 0 && !skinNoted[mesh]) {
-                notes.push_back(describeMesh(model, mesh) +
-                                " is skinned: placed in its bind pose");
-                skinNoted[mesh] = 1;
-            }
-            const glm::dmat4 meshWorld = node.skin >= 0 ? glm::dmat4(1.0) : world;
+            if (node.skin >= 0 && static_cast<std::size_t>(node.skin) >= model.skins.size())
+                return makeError("", describeNode(model, index) + " refers to skin " +
+                                         std::to_string(node.skin) + ", but the file has " +
+                                         std::to_string(model.skins.size()) + " skins");
+            // Spec §3.7.3: a skinned mesh ignores its node's transform; its joints place it.
+            const int skin = node.skin >= 0 ? node.skin : -1;
+            const glm::dmat4 meshWorld = skin >= 0 ? glm::dmat4(1.0) : world;
             const auto gpuInstancing = node.extensions.find("EXT_mesh_gpu_instancing");
             if (gpuInstancing == node.extensions.end()) {
-                instances.push_back({mesh, meshWorld, glm::vec4(1.0f), static_cast<int>(index)});
+                instances.push_back(
+                    {mesh, meshWorld, glm::vec4(1.0f), static_cast<int>(index), skin});
             } else {
                 // Instances replace the plain mesh; each goes node world * instance (T R S).
                 const auto transforms = readInstanceTransforms(model, gpuInstancing->second,
@@ -163,7 +161,7 @@ Result<std::vector<MeshInstance>> collectInstances(const tinygltf::Model& model,
                 for (std::size_t i = 0; i < transforms->size(); ++i)
                     instances.push_back({mesh, meshWorld * (*transforms)[i],
                                          colors->empty() ? glm::vec4(1.0f) : (*colors)[i],
-                                         static_cast<int>(index)});
+                                         static_cast<int>(index), skin});
             }
         }
         onPath[index] = 1;
@@ -181,7 +179,6 @@ Result<std::vector<PrimitiveData>> decodeMesh(const tinygltf::Model& model, std:
     std::vector<PrimitiveData> primitives;
     const auto& mesh = model.meshes[meshIndex];
     const std::string meshName = describeMesh(model, meshIndex);
-    bool morphNoted = false;
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
         const auto& primitive = mesh.primitives[p];
         const std::string where = meshName + " primitive " + std::to_string(p);
@@ -209,10 +206,6 @@ Result<std::vector<PrimitiveData>> decodeMesh(const tinygltf::Model& model, std:
             notes.push_back(where + ": no POSITION, skipped");
             continue;
         }
-        if (!primitive.targets.empty() && !morphNoted) {
-            notes.push_back(meshName + ": morph targets ignored (base shape used)");
-            morphNoted = true;
-        }
         // Draco data wins over any uncompressed copy the file also carries (the extension's
         // advice to loaders that decode it).
         const auto draco = primitive.extensions.find("KHR_draco_mesh_compression");
@@ -221,6 +214,7 @@ Result<std::vector<PrimitiveData>> decodeMesh(const tinygltf::Model& model, std:
                         : readTrianglePrimitive(model, primitive, where, withColors);
         if (!data)
             return data.error();
+        data->primitive = p;
         primitives.push_back(std::move(*data));
     }
     return primitives;

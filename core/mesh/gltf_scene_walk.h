@@ -7,7 +7,6 @@
 #include <tiny_gltf.h>
 #include <cstddef>
 #include <glm/glm.hpp>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,7 +22,20 @@ struct MeshInstance {
     glm::dmat4 world{1.0};
     glm::vec4 color{1.0f};  // the instance's _COLOR_0; white for plain nodes
     int node = -1;          // the node that placed it; -1 for a file without scenes
+    // The node's skin; `world` is then the identity, as the skin's joints place the mesh
+    // (spec §3.7.3, gltf_skin_pose.h).
+    int skin = -1;
 };
+
+// "node 3 "Hips"" when the node has a name, else "node 3": how messages name a node.
+std::string describeNode(const tinygltf::Model& model, std::size_t index);
+
+// The node's local transform: `matrix` (column-major) or T * R * S (spec §3.5.3). Errors: the
+// wrong number of values, a non-finite result.
+Result<glm::dmat4> nodeLocalTransform(const tinygltf::Model& model, std::size_t index);
+
+// Whether every entry of `m` is finite.
+bool isFinite(const glm::dmat4& m);
 
 // Normals go by the inverse-transpose of `world`'s linear part, whose columns are the cross
 // products of its columns over its determinant; only the direction matters, so this divides by
@@ -33,40 +45,18 @@ glm::dmat3 normalMatrix(const glm::dmat4& world);
 
 // Every mesh the default scene (else scene 0) places, with its world transform. A file without
 // scenes places each mesh once, untransformed (noted). Errors: a node index out of range, a
-// cycle, more than a million node visits, a bad transform or instancing attribute. Instance
+// cycle, more than a million node visits, a bad transform or instancing attribute, a skin
+// index out of range. Instance
 // colours are read only `withColors`.
 Result<std::vector<MeshInstance>> collectInstances(const tinygltf::Model& model,
                                                    std::vector<std::string>& notes,
                                                    bool withColors = false);
 
-// The triangle primitives of one mesh; points, lines and primitives without POSITION are
-// skipped with a note, morph targets ignored (noted). COLOR_0 is decoded only `withColors`.
+// The triangle primitives of one mesh in its base shape (no morph target, no skin: see
+// gltf_decoded_meshes.h); points, lines and primitives without POSITION are skipped with a
+// note. COLOR_0 is decoded only `withColors`.
 Result<std::vector<PrimitiveData>> decodeMesh(const tinygltf::Model& model, std::size_t meshIndex,
                                               std::vector<std::string>& notes,
                                               bool withColors = false);
-
-// Each mesh decoded once (decodeMesh), shared by every node and GPU instance that places it.
-class DecodedMeshes {
-public:
-    DecodedMeshes(const tinygltf::Model& model, std::vector<std::string>& notes, bool withColors)
-        : mModel(model), mNotes(notes), mWithColors(withColors), mDecoded(model.meshes.size()) {}
-    // `mesh` < model.meshes.size() (collectInstances checks it).
-    Result<const std::vector<PrimitiveData>*> primitives(std::size_t mesh) {
-        auto& decoded = mDecoded[mesh];
-        if (!decoded) {
-            auto read = decodeMesh(mModel, mesh, mNotes, mWithColors);
-            if (!read)
-                return read.error();
-            decoded = std::move(*read);
-        }
-        return &*decoded;
-    }
-
-private:
-    const tinygltf::Model& mModel;
-    std::vector<std::string>& mNotes;
-    bool mWithColors;
-    std::vector<std::optional<std::vector<PrimitiveData>>> mDecoded;
-};
 
 }  // namespace grass::core::gltf

@@ -566,8 +566,8 @@ Result<GltfSource> parseGltfFile(const fs::path& file) {
     source.materialNames = materialNamesOf(doc);
     moveDracoIndices(doc);
     // Geometry needs none of these; left in, a broken texture or animation could fail the load.
-    for (const char* key :
-         {"images", "textures", "samplers", "materials", "animations", "skins", "cameras"})
+    // Skins stay: they pose their meshes (gltf_skin_pose.h).
+    for (const char* key : {"images", "textures", "samplers", "materials", "animations", "cameras"})
         doc.erase(key);
     const std::string json = doc.dump(-1, ' ', false, Json::error_handler_t::replace);
     const std::string input = binary ? glbBytes(json, chunks) : json;

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 
+#include "mesh/gltf_decoded_meshes.h"
 #include "mesh/gltf_scene_walk.h"
 #include "mesh/gltf_source.h"
 
@@ -52,7 +53,7 @@ Result<GltfView> loadGltfView(const std::filesystem::path& file, std::size_t max
         return makeError(display, instances.error().message);
     gltf::DecodedMeshes decoded(model, view.notes, true);
     for (const gltf::MeshInstance& instance : *instances) {
-        const auto primitives = decoded.primitives(instance.mesh);
+        const auto primitives = decoded.primitives(instance);
         if (!primitives)
             return makeError(display, primitives.error().message);
         for (const gltf::PrimitiveData& data : **primitives) {

@@ -106,6 +106,15 @@ grass_cli_test(mesh_info_draco OK --no-stderr
     --stdout "^  vertices +24$" --stdout "^  triangles +12$" --stdout "^  area +52(\\.00[0-9]*)?$"
     --stdout "^  normals +from file$" --stdout "^  uv0 +from file$"
     -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/box_draco.glb)
+# skinned_morphed.gltf: a triangle stored Z-up with its apex at z = 1, a morph target raising
+# the apex by 1 at mesh weight 0.5, and a skin whose root joint turns Z-up to Y-up (written by
+# hand for the glTF seeds of tests/fuzz): viewers show it upright, the apex at y = 1.5.
+grass_cli_test(mesh_info_skinned_morphed OK
+    --stdout "^  area +0\\.75$"
+    --stdout "^  bounds +\\[0 0 -?[0-9.e-]+\\] \\.\\. \\[1 1\\.5 0\\]$"
+    --stderr "^note: .*skinned_morphed\\.gltf: mesh \"Leaf\": morph targets applied at their default weights$"
+    --stderr "^note: .*skinned_morphed\\.gltf: mesh \"Leaf\" is skinned: placed in its skeleton's rest pose \\(skin \"Armature\"\\)$"
+    -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/skinned_morphed.gltf)
 grass_cli_test(mesh_info_meshopt OK --no-stderr
     --stdout "^  vertices +24$" --stdout "^  triangles +12$" --stdout "^  area +52$"
     --stdout "^  bounds +\\[1 -0\\.5 2\\] \\.\\. \\[5 1\\.5 5\\]$"

@@ -4,7 +4,8 @@
 # e.g. tests/fuzz/make_seeds.sh build-fuzz build/bin/grass. Sources of the seeds:
 #   project        the projects/ and tests/data/projects/ files that load, and every field at
 #                  its default (fuzz_make_seeds)
-#   gltf, glb      tests/data/gltf/quad.gltf, cube.glb and the Draco and meshopt boxes, and a `grass export` of
+#   gltf, glb      tests/data/gltf/quad.gltf, skinned_morphed.gltf (a skin and a morph target),
+#                  cube.glb and the Draco and meshopt boxes, and a `grass export` of
 #                  tests/data/projects/tiny read back: its .gltf with the .bin after a NUL (the
 #                  fuzz_gltf input format), and the same packed into one .glb
 #   map_*, grass_texture, packing_cache, raw_export   written by fuzz_make_seeds with the
@@ -27,7 +28,7 @@ for p in projects/*/project.json tests/data/projects/{tiny,windy,rock,growth_tin
   cp "$p" "$corpus/project/$name.json"
 done
 
-cp tests/data/gltf/quad.gltf "$corpus/gltf/"
+cp tests/data/gltf/quad.gltf tests/data/gltf/skinned_morphed.gltf "$corpus/gltf/"
 cp tests/data/gltf/cube.glb tests/data/gltf/box_draco.glb tests/data/gltf/box_meshopt.glb "$corpus/glb/"
 "$grass" export tests/data/projects/tiny --out "$scratch/export" --lod 3 >/dev/null 2>&1
 "$grass" export tests/data/projects/tiny --out "$scratch/raw" --format raw >/dev/null 2>&1

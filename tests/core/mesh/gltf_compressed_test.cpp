@@ -9,6 +9,7 @@
 #include "mesh/gltf_loader.h"
 #include "mesh/gltf_view.h"
 #include "support/compressed_gltf.h"
+#include "support/gltf_load_expect.h"
 #include "support/test_paths.h"
 
 namespace grass::core {
@@ -16,20 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-GltfImport load(const fs::path& file) {
-    auto result = loadGltf(file);
-    EXPECT_TRUE(result.ok()) << result.error().str();
-    return result.ok() ? std::move(result).value() : GltfImport{};
-}
+GltfImport load(const fs::path& file) { return test::loadGltfExpectingSuccess(file); }
 
-std::string loadError(const fs::path& file) {
-    const auto result = loadGltf(file);
-    EXPECT_FALSE(result.ok()) << file << " loaded, but should not have";
-    if (result.ok())
-        return {};
-    EXPECT_NE(result.error().str().find(file.filename().string()), std::string::npos) << result.error().str();
-    return result.error().str();
-}
+std::string loadError(const fs::path& file) { return test::loadGltfError(file); }
 
 struct Corner {
     glm::vec3 position, normal;
