@@ -7,7 +7,8 @@
 #   gltf, glb      tests/data/gltf/quad.gltf, skinned_morphed.gltf (a skin and a morph target),
 #                  cube.glb and the Draco and meshopt boxes, and a `grass export` of
 #                  tests/data/projects/tiny read back: its .gltf with the .bin after a NUL (the
-#                  fuzz_gltf input format), and the same packed into one .glb
+#                  fuzz_gltf input format), and the same packed into one .glb, as is
+#                  skinned_morphed.gltf
 #   map_*, grass_texture, packing_cache, raw_export   written by fuzz_make_seeds with the
 #                  application's writers; raw_export also gets the export's patch table
 set -euo pipefail
@@ -34,8 +35,19 @@ cp tests/data/gltf/cube.glb tests/data/gltf/box_draco.glb tests/data/gltf/box_me
 "$grass" export tests/data/projects/tiny --out "$scratch/raw" --format raw >/dev/null 2>&1
 cp "$scratch"/raw/grass.patches*.bin "$corpus/raw_export/export.patches.bin"
 python3 - "$scratch/export" "$corpus" <<'PY'
-import glob, json, struct, sys
+import base64, glob, json, struct, sys
 folder, corpus = sys.argv[1], sys.argv[2]
+
+def write_glb(gltf, binary, path):
+    """gltf (its one buffer without a uri) and binary as one GLB (glTF 2.0 §4.4): JSON and BIN
+    chunks padded to 4 bytes."""
+    text = json.dumps(gltf, separators=(",", ":")).encode()
+    text += b" " * (-len(text) % 4)
+    binary += b"\0" * (-len(binary) % 4)
+    chunks = (struct.pack("<II", len(text), 0x4E4F534A) + text +
+              struct.pack("<II", len(binary), 0x004E4942) + binary)
+    open(path, "wb").write(struct.pack("<III", 0x46546C67, 2, 12 + len(chunks)) + chunks)
+
 gltf = json.load(open(glob.glob(folder + "/*.gltf")[0]))
 (buffer,) = gltf["buffers"]
 binary = open(folder + "/" + buffer["uri"], "rb").read()
@@ -43,14 +55,12 @@ binary = open(folder + "/" + buffer["uri"], "rb").read()
 buffer["uri"] = "scene.bin"
 text = json.dumps(gltf, separators=(",", ":")).encode()
 open(corpus + "/gltf/export.gltf", "wb").write(text + b"\0" + binary)
-# The same export as one GLB (glTF 2.0 §4.4): JSON and BIN chunks padded to 4 bytes.
 del buffer["uri"]
-text = json.dumps(gltf, separators=(",", ":")).encode()
-text += b" " * (-len(text) % 4)
-binary += b"\0" * (-len(binary) % 4)
-chunks = (struct.pack("<II", len(text), 0x4E4F534A) + text +
-          struct.pack("<II", len(binary), 0x004E4942) + binary)
-open(corpus + "/glb/export.glb", "wb").write(
-    struct.pack("<III", 0x46546C67, 2, 12 + len(chunks)) + chunks)
+write_glb(gltf, binary, corpus + "/glb/export.glb")
+# The skinned, morphed triangle too, its data: URI buffer moved into the BIN chunk.
+gltf = json.load(open("tests/data/gltf/skinned_morphed.gltf"))
+(buffer,) = gltf["buffers"]
+binary = base64.b64decode(buffer.pop("uri").split(",", 1)[1])
+write_glb(gltf, binary, corpus + "/glb/skinned_morphed.glb")
 PY
 du -sh "$corpus"
