@@ -9,6 +9,7 @@
 #                  tests/data/projects/tiny read back: its .gltf with the .bin after a NUL (the
 #                  fuzz_gltf input format), and the same packed into one .glb, as is
 #                  skinned_morphed.gltf
+#   export_cleanup an export's .gltf and a raw export's manifest.json
 #   map_*, grass_texture, packing_cache, raw_export   written by fuzz_make_seeds with the
 #                  application's writers; raw_export also gets the export's patch table
 set -euo pipefail
@@ -21,7 +22,7 @@ trap 'rm -rf "$scratch"' EXIT
 cd "$root"
 
 rm -rf "$corpus"
-mkdir -p "$corpus"/{project,gltf,glb}
+mkdir -p "$corpus"/{project,gltf,glb,export_cleanup}
 "$build/bin/fuzz_make_seeds" "$corpus"
 
 for p in projects/*/project.json tests/data/projects/{tiny,windy,rock,growth_tiny}/project.json; do
@@ -34,6 +35,11 @@ cp tests/data/gltf/cube.glb tests/data/gltf/box_draco.glb tests/data/gltf/box_me
 "$grass" export tests/data/projects/tiny --out "$scratch/export" --lod 3 >/dev/null 2>&1
 "$grass" export tests/data/projects/tiny --out "$scratch/raw" --format raw >/dev/null 2>&1
 cp "$scratch"/raw/grass.patches*.bin "$corpus/raw_export/export.patches.bin"
+# export_cleanup: an export's .gltf, and a small raw-export manifest.json (the shape the
+# clean-up reads: layers naming blade and map files; fuzz_export_cleanup.cpp).
+cp "$scratch"/export/*.gltf "$corpus/export_cleanup/export.gltf"
+printf '%s\n' '{"format":"grass-raw-export","version":1,"layers":[{"blades":{"file":"grass.blades-0123456789abcdef.bin"},"maps":[{"file":"grass-fedcba9876543210.bin"}]}]}' \
+  >"$corpus/export_cleanup/manifest.json"
 python3 - "$scratch/export" "$corpus" <<'PY'
 import base64, glob, json, struct, sys
 folder, corpus = sys.argv[1], sys.argv[2]
