@@ -60,23 +60,4 @@ Result<std::vector<glm::vec4>> readInstanceColors(const tinygltf::Model& model,
                                                   const tinygltf::Value& extension,
                                                   const std::string& where);
 
-// What poses a primitive (gltf_morph.h, gltf_skin_pose.h), read with the same checks as its
-// own attributes. Each per-vertex accessor must hold exactly `vertexCount` elements, checked
-// before anything is read or allocated. `where` names the owner in messages.
-// A morph target's POSITION or (`normals`) NORMAL displacements; types as POSITION and NORMAL.
-Result<std::vector<glm::vec3>> readMorphDeltas(const tinygltf::Model& model, int index,
-                                               bool normals, std::size_t vertexCount,
-                                               const std::string& where);
-// JOINTS_n: VEC4 of UNSIGNED_BYTE or UNSIGNED_SHORT, indices into the skin's joints.
-Result<std::vector<glm::uvec4>> readJoints(const tinygltf::Model& model, int index,
-                                           std::size_t vertexCount, const std::string& where);
-// WEIGHTS_n: VEC4 of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT.
-Result<std::vector<glm::vec4>> readJointWeights(const tinygltf::Model& model, int index,
-                                                std::size_t vertexCount, const std::string& where);
-// A skin's inverseBindMatrices (MAT4 of FLOAT, column-major): the first `jointCount`. Errors
-// also: fewer matrices than joints.
-Result<std::vector<glm::dmat4>> readInverseBindMatrices(const tinygltf::Model& model, int index,
-                                                        std::size_t jointCount,
-                                                        const std::string& where);
-
 }  // namespace grass::core::gltf

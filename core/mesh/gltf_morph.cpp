@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "mesh/gltf_pose_accessors.h"
 #include "util/assert.h"
 
 namespace grass::core::gltf {

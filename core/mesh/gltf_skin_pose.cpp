@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "mesh/gltf_scene_walk.h"
+#include "mesh/gltf_pose_accessors.h"
 
 namespace grass::core::gltf {
 namespace {
