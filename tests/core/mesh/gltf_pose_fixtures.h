@@ -3,6 +3,8 @@
 // gltf_skin_pose_test.cpp and gltf_morph_test.cpp.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cstring>
 #include <vector>
 
@@ -50,10 +52,15 @@ inline int addVec3Accessor(GltfDocument& doc, const std::vector<glm::vec3>& valu
     return addAccessor(doc, values, FLOAT, "VEC3", values.size());
 }
 
-// `doc` written as <scratch folder `folder`>/<name>.gltf, its buffer inline (a data: URI).
+// `doc` written as <scratch folder>/<name>.gltf, its buffer inline (a data: URI).
+// The folder is the test's own (named after the running test and `name`): ctest runs the tests
+// of one suite in parallel processes, and a folder shared by the suite was emptied under a
+// neighbour's feet.
 inline std::filesystem::path writeDataUriGltf(const GltfDocument& doc, const std::string& folder,
                                               const std::string& name) {
-    const std::filesystem::path file = scratchDir(folder) / (name + ".gltf");
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const std::filesystem::path file =
+        scratchDir(folder + "/" + test + "/" + name) / (name + ".gltf");
     writeGltf(file, doc, BufferStorage::DataUri);
     return file;
 }
