@@ -409,6 +409,11 @@ Result<std::vector<T>> readAccessor(const tinygltf::Model& model, int index, Sem
     return out;
 }
 
+int attributeAccessor(const tinygltf::Primitive& primitive, const std::string& name) {
+    const auto it = primitive.attributes.find(name);
+    return it == primitive.attributes.end() ? -1 : it->second;
+}
+
 template Result<std::vector<float>> readAccessor<float>(const tinygltf::Model&, int, Semantic,
                                                         const std::string&);
 template Result<std::vector<std::uint32_t>> readAccessor<std::uint32_t>(const tinygltf::Model&, int,

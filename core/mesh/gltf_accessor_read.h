@@ -37,6 +37,9 @@ inline constexpr std::uint64_t MAX_VERTICES =
 // Components of an accessor type: SCALAR 1 … VEC4 4, MAT4 16; 0 for MAT2 and MAT3 (never read).
 int typeComponents(int type);
 
+// The accessor a primitive's attribute `name` uses; -1 when it has none.
+int attributeAccessor(const tinygltf::Primitive& primitive, const std::string& name);
+
 // "accessor 3 (POSITION of mesh "Leaf" primitive 0)": how messages name an accessor.
 std::string accessorLabel(int index, Semantic semantic, const std::string& where);
 

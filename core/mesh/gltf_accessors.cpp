@@ -26,11 +26,6 @@ Result<std::vector<glm::vec4>> readColors(const tinygltf::Model& model, int inde
     return colors;
 }
 
-int attributeAccessor(const tinygltf::Primitive& primitive, const char* name) {
-    const auto it = primitive.attributes.find(name);
-    return it == primitive.attributes.end() ? -1 : it->second;
-}
-
 }  // namespace
 
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "mesh/gltf_scene_walk.h"
+#include "mesh/gltf_accessor_read.h"
 #include "mesh/gltf_pose_accessors.h"
 
 namespace grass::core::gltf {
@@ -13,11 +14,6 @@ struct InfluenceSet {
     std::vector<glm::uvec4> joints;
     std::vector<glm::vec4> weights;
 };
-
-int attributeAccessor(const tinygltf::Primitive& primitive, const std::string& name) {
-    const auto it = primitive.attributes.find(name);
-    return it == primitive.attributes.end() ? -1 : it->second;
-}
 
 // Every JOINTS_n / WEIGHTS_n pair of the primitive, n = 0, 1, ... until one is missing.
 Result<std::vector<InfluenceSet>> readInfluences(const tinygltf::Model& model,

@@ -18,16 +18,17 @@ inline core::GltfImport loadGltfExpectingSuccess(const std::filesystem::path& fi
     return result.ok() ? std::move(result).value() : core::GltfImport{};
 }
 
-// The error's text, which must name the file (every load error does); empty, after a test
-// failure, when the file loaded.
+// The error's text, which must name the file and fit on one line (as every load error does);
+// empty, after a test failure, when the file loaded.
 inline std::string loadGltfError(const std::filesystem::path& file) {
     const auto result = core::loadGltf(file);
     EXPECT_FALSE(result.ok()) << file << " loaded, but should not have";
     if (result.ok())
         return {};
-    EXPECT_NE(result.error().str().find(file.filename().string()), std::string::npos)
-        << result.error().str();
-    return result.error().str();
+    const std::string message = result.error().str();
+    EXPECT_NE(message.find(file.filename().string()), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    return message;
 }
 
 }  // namespace grass::test

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <limits>
 
+#include "support/gltf_load_expect.h"
 #include "support/gltf_writer.h"
 #include "support/test_paths.h"
 
@@ -35,22 +36,9 @@ bool anyNoteContains(const GltfImport& import, const std::string& part) {
 }
 
 // The error of a load that must fail; it must name the file.
-std::string loadError(const fs::path& file) {
-    const auto result = loadGltf(file);
-    EXPECT_FALSE(result.ok()) << file << " loaded, but should not have";
-    if (result.ok())
-        return {};
-    const std::string message = result.error().str();
-    EXPECT_TRUE(contains(message, file.filename().string()));
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    return message;
-}
+std::string loadError(const fs::path& file) { return test::loadGltfError(file); }
 
-GltfImport loadOk(const fs::path& file) {
-    auto result = loadGltf(file);
-    EXPECT_TRUE(result.ok()) << result.error().str();
-    return result.ok() ? std::move(result).value() : GltfImport{};
-}
+GltfImport loadOk(const fs::path& file) { return test::loadGltfExpectingSuccess(file); }
 
 glm::vec3 point(const SurfaceMesh& mesh, SurfaceMesh::VertexHandle vh) {
     return toGlm(mesh.point(vh));
