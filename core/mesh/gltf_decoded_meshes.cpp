@@ -26,7 +26,12 @@ Result<const std::vector<PrimitiveData>*> DecodedMeshes::primitives(const MeshIn
         std::make_tuple(instance.mesh, instance.skin, morphs ? weights : std::vector<double>{});
     if (const auto known = mPosed.find(key); known != mPosed.end())
         return &known->second;
-    auto shape = posed(instance.mesh, instance.skin, std::get<2>(key));
+    const bool nodeWeights =
+        instance.node >= 0 && !mModel.nodes[static_cast<std::size_t>(instance.node)].weights.empty();
+    auto shape =
+        posed(instance.mesh, instance.skin, std::get<2>(key),
+              nodeWeights ? describeNode(mModel, static_cast<std::size_t>(instance.node)) + "'s"
+                          : std::string("the mesh's"));
     if (!shape)
         return shape.error();
     return &mPosed.emplace(std::move(key), std::move(*shape)).first->second;
@@ -45,7 +50,8 @@ Result<const std::vector<PrimitiveData>*> DecodedMeshes::baseShape(std::size_t m
 
 // Morphing comes before skinning (spec §3.7.2.2): the targets move the bind-pose vertices.
 Result<std::vector<PrimitiveData>> DecodedMeshes::posed(std::size_t mesh, int skin,
-                                                        const std::vector<double>& weights) {
+                                                        const std::vector<double>& weights,
+                                                        const std::string& weightsOwner) {
     const auto base = baseShape(mesh);
     if (!base)
         return base.error();
@@ -80,8 +86,8 @@ Result<std::vector<PrimitiveData>> DecodedMeshes::posed(std::size_t mesh, int sk
             // The geometry is sound, only its weights are not: the base shape, with a note,
             // serves a user better than refusing the file.
             noteOnce(mMorphRefusedNoted, mesh,
-                     where + " has " + std::to_string(weights.size()) + " default weights for " +
-                         std::to_string(primitive.targets.size()) +
+                     where + " has " + std::to_string(weights.size()) + " default weights (" +
+                         weightsOwner + ") for " + std::to_string(primitive.targets.size()) +
                          " morph targets: its base shape used");
         } else if (morphs) {
             if (auto applied = applyMorphTargets(mModel, primitive, weights, where, data); !applied)

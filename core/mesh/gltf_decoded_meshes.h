@@ -33,8 +33,11 @@ public:
 
 private:
     Result<const std::vector<PrimitiveData>*> baseShape(std::size_t mesh);
+    // `weightsOwner` names where the weights came from ("node 3 \"Leg\"" or "the mesh"), for
+    // the note on weights that do not fit the targets.
     Result<std::vector<PrimitiveData>> posed(std::size_t mesh, int skin,
-                                             const std::vector<double>& weights);
+                                             const std::vector<double>& weights,
+                                             const std::string& weightsOwner);
     void noteOnce(std::vector<char>& noted, std::size_t mesh, std::string note);
 
     const tinygltf::Model& mModel;

@@ -108,8 +108,20 @@ TEST(GltfMorph, MoreWeightsThanTargetsKeepTheBaseShapeWithANote) {
     const GltfImport import = loadOk(write(morphedTriangle({0.5, 0.5, 0.5}), "three_weights"));
     EXPECT_NEAR(apex(import.mesh).y, 0.5f, 1e-6f);
     EXPECT_TRUE(anyNoteContains(import.notes,
-                                "mesh \"Tri\" primitive 0 has 3 default weights "
-                                "for 2 morph targets: its base shape used"));
+                                "mesh \"Tri\" primitive 0 has 3 default weights (the "
+                                "mesh's) for 2 morph targets: its base shape used"));
+}
+
+// Where the wrong weights came from is named, so the user knows what to fix.
+TEST(GltfMorph, WrongWeightsOfANodeNameTheNode) {
+    GltfDocument doc = morphedTriangle({});
+    doc.json["nodes"][0]["name"] = "Leaf";
+    doc.json["nodes"][0]["weights"] = {1.0};
+    const GltfImport import = loadOk(write(doc, "node_wrong_weights"));
+    EXPECT_NEAR(apex(import.mesh).y, 0.5f, 1e-6f);
+    EXPECT_TRUE(anyNoteContains(import.notes, "has 1 default weights (node 0 \"Leaf\"'s) for 2 "
+                                              "morph targets: its base shape used"))
+        << (import.notes.empty() ? std::string("no notes") : import.notes.front());
 }
 
 // Target data that does not match the vertices is corrupt, like any attribute of the wrong
