@@ -9,6 +9,7 @@
 
 #include "util/assert.h"
 #include "util/image_header.h"
+#include "util/image_layout.h"
 #include "util/image_open.h"
 #include "util/rng.h"
 
@@ -166,30 +167,52 @@ Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file) {
     if (auto fits = checkImageSize(file.string(), spec.width, spec.height, MAX_IMAGE_SIDE); !fits)
         return fits.error();
     const int channels = spec.nchannels;
-    const bool hasAlpha = spec.alpha_channel >= 0 || channels == 4 || channels == 2;
+    const bool hasAlpha = alphaChannelOf(spec) >= 0 || channels == 4 || channels == 2;
     if (!hasAlpha)
         return makeError(file.string(), "grass texture has no alpha channel (" +
                                             std::to_string(channels) +
                                             " channels); billboards need RGBA with transparent "
                                             "gaps between the blades");
-    const int alphaChannel = spec.alpha_channel >= 0 ? spec.alpha_channel : channels - 1;
+    const int alphaChannel = alphaChannelOf(spec) >= 0 ? alphaChannelOf(spec) : channels - 1;
     const auto count = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
     std::vector<std::uint8_t> raw(count * static_cast<std::size_t>(channels));
     if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
         return makeError(file.string(), "cannot read grass texture: " + oneLine(in->geterror()));
+    // As a viewer shows it: turned by its orientation tag, its data window in its display window.
+    const ImageLayout layout = imageLayout(spec);
     Rgba8Pixels image;
     image.width = spec.width;
     image.height = spec.height;
-    image.pixels.resize(count * 4);
+    if (layout.windowed() || layout.orientation != 1) {
+        if (auto fits = checkImageSize(file.string(), layout.shownWidth(), layout.shownHeight(),
+                                       MAX_IMAGE_SIDE);
+            !fits)
+            return fits.error();
+        raw = showImage(raw, static_cast<std::size_t>(channels), layout);
+        image.width = layout.shownWidth();
+        image.height = layout.shownHeight();
+    }
+    const auto shown =
+        static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+    image.pixels.resize(shown * 4);
+    // OpenImageIO 2.4's WebP reader hands out colour multiplied by alpha whatever
+    // oiio:UnassociatedAlpha says: divided back out, as the colours are stored.
+    const bool premultiplied = std::string(in->format_name()) == "webp";
     bool anyTransparent = false;
-    for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t i = 0; i < shown; ++i) {
         const std::uint8_t* p = raw.data() + i * static_cast<std::size_t>(channels);
         const bool grey = channels < 3;
-        image.pixels[4 * i + 0] = p[0];
-        image.pixels[4 * i + 1] = grey ? p[0] : p[1];
-        image.pixels[4 * i + 2] = grey ? p[0] : p[2];
-        image.pixels[4 * i + 3] = p[alphaChannel];
-        anyTransparent = anyTransparent || p[alphaChannel] < 255;
+        const std::uint8_t alpha = p[alphaChannel];
+        const auto stored = [&](std::uint8_t value) {
+            if (!premultiplied || alpha == 0 || alpha == 255)
+                return value;
+            return static_cast<std::uint8_t>(std::min(255L, std::lround(value * 255.0 / alpha)));
+        };
+        image.pixels[4 * i + 0] = stored(p[0]);
+        image.pixels[4 * i + 1] = stored(grey ? p[0] : p[1]);
+        image.pixels[4 * i + 2] = stored(grey ? p[0] : p[2]);
+        image.pixels[4 * i + 3] = alpha;
+        anyTransparent = anyTransparent || alpha < 255;
     }
     if (!anyTransparent)
         return makeError(file.string(),

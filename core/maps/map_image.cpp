@@ -3,16 +3,15 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <exception>
 #include <string>
 
+#include "maps/map_file_read.h"
 #include "util/assert.h"
 #include "util/atomic_file.h"
 #include "util/file_extension.h"
 #include "util/image_file.h"
-#include "util/image_open.h"
 #include "util/image_header.h"
 
 namespace grass::core {
@@ -20,122 +19,6 @@ namespace grass::core {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Past this, a "map" is a mistake (a 16k² float map is already 1 GiB); refused before any
-// pixel is allocated.
-constexpr int MAX_MAP_SIDE = MAX_IMAGE_SIDE;
-// Rows read at a time from scanline files, so an RGBA file never needs its whole float copy.
-constexpr int ROWS_PER_BAND = 256;
-// Rec. 709 luma weights.
-constexpr float LUMA_R = 0.2126f, LUMA_G = 0.7152f, LUMA_B = 0.0722f;
-
-// OIIO's messages can span lines; our errors are one line (STYLE.md §4).
-std::string firstLine(std::string text) {
-    const auto end = text.find_first_of("\r\n");
-    if (end != std::string::npos)
-        text.resize(end);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-        text.pop_back();
-    return text.empty() ? "unknown reason" : text;
-}
-
-// Folds `channels` interleaved floats per pixel into one value per pixel, appended to `out`.
-void appendGrey(const std::vector<float>& pixels, int channels, std::vector<float>& out) {
-    const auto stride = static_cast<std::size_t>(channels);
-    for (std::size_t i = 0; i + stride <= pixels.size(); i += stride) {
-        out.push_back(channels >= 3
-                          ? LUMA_R * pixels[i] + LUMA_G * pixels[i + 1] + LUMA_B * pixels[i + 2]
-                          : pixels[i]);
-    }
-}
-
-Result<MapImage> readMap(const fs::path& file) {
-    const std::string name = file.string();
-    std::error_code ec;
-    if (!fs::exists(file, ec))
-        return makeError(name, "file not found");
-    if (fs::is_directory(file, ec))
-        return makeError(name, "is a folder, not an image");
-    // OpenEXR and libpng allocate what a damaged header claims before reading it: look first.
-    if (auto header = checkImageHeader(file, MAX_MAP_SIDE); !header)
-        return header.error();
-    // The stored values, not colour premultiplied by alpha: alpha is not density.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto opened = openImageInput(name, &config);
-    if (!opened)
-        return opened.error();
-    auto& in = *opened;
-    const OIIO::ImageSpec spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-        return makeError(name, "the image has zero size (" + std::to_string(spec.width) + "×" +
-                                   std::to_string(spec.height) + ", " +
-                                   std::to_string(spec.nchannels) + " channels)");
-    if (auto fits = checkImageSize(name, spec.width, spec.height, MAX_MAP_SIDE); !fits)
-        return fits.error();
-    if (spec.depth > 1)
-        return makeError(name, "a volume image cannot be a map");
-
-    MapImage map;
-    map.width = spec.width;
-    map.height = spec.height;
-    // Only the channels we use: grey, or R, G, B for luminance. Alpha is coverage, not density,
-    // so it never counts. Every conversion is reported: a user who painted in colour should
-    // learn that we read brightness.
-    const int channels = spec.nchannels >= 3 ? 3 : 1;
-    const std::string luminance = "converted to luminance (Rec. 709 weights on the stored values)";
-    if (spec.nchannels == 2)
-        map.warnings.push_back(name + ": 2 channels (grey + alpha): using grey, alpha ignored");
-    else if (spec.nchannels == 3)
-        map.warnings.push_back(name + ": RGB " + luminance);
-    else if (spec.nchannels == 4)
-        map.warnings.push_back(name + ": RGBA " + luminance + "; alpha ignored");
-    else if (spec.nchannels > 4)
-        map.warnings.push_back(name + ": " + std::to_string(spec.nchannels) +
-                               " channels: the first 3 " + luminance + "; channels 4 to " +
-                               std::to_string(spec.nchannels) + " ignored");
-    const auto rowFloats =
-        static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(channels);
-    map.texels.reserve(static_cast<std::size_t>(spec.width) *
-                       static_cast<std::size_t>(spec.height));
-    std::vector<float> band;
-    if (spec.tile_width == 0) {
-        for (int row = 0; row < spec.height; row += ROWS_PER_BAND) {
-            const int rows = std::min(ROWS_PER_BAND, spec.height - row);
-            band.assign(rowFloats * static_cast<std::size_t>(rows), 0.0f);
-            if (!in->read_scanlines(0, 0, spec.y + row, spec.y + row + rows, 0, 0, channels,
-                                    OIIO::TypeDesc::FLOAT, band.data()))
-                return makeError(name, "cannot read the pixels: " + firstLine(in->geterror()));
-            appendGrey(band, channels, map.texels);
-        }
-    } else {
-        band.assign(rowFloats * static_cast<std::size_t>(spec.height), 0.0f);
-        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, band.data()))
-            return makeError(name, "cannot read the pixels: " + firstLine(in->geterror()));
-        appendGrey(band, channels, map.texels);
-    }
-    in->close();
-
-    bool clamped = false;
-    for (std::size_t i = 0; i < map.texels.size(); ++i) {
-        float& t = map.texels[i];
-        if (!std::isfinite(t)) {
-            const std::size_t x = i % static_cast<std::size_t>(map.width);
-            const std::size_t y = i / static_cast<std::size_t>(map.width);
-            return makeError(name, std::string("texel (") + std::to_string(x) + ", " +
-                                       std::to_string(y) + ") is " +
-                                       (std::isnan(t) ? "NaN" : "infinite") +
-                                       "; maps must hold finite values in [0, 1]");
-        }
-        if (t < 0.0f || t > 1.0f) {
-            clamped = true;
-            t = std::clamp(t, 0.0f, 1.0f);
-        }
-    }
-    if (clamped)
-        map.warnings.push_back(name + ": values outside [0, 1] were clamped");
-    return map;
-}
 
 Result<void> writeMap(const MapImage& map, const fs::path& file, MapSampleFormat format) {
     const std::string name = file.string();
@@ -169,7 +52,7 @@ Result<void> writeMap(const MapImage& map, const fs::path& file, MapSampleFormat
     auto out = OIIO::ImageOutput::create(name);
     if (!out)
         return makeError(name, "cannot write this image format (use .png, .tif or .exr): " +
-                                   firstLine(OIIO::geterror()));
+                                   oneLine(OIIO::geterror()));
     OIIO::ImageSpec spec(map.width, map.height, 1, type);
     // The texels are data (density, soil, light), not colour: no transfer curve.
     spec.attribute("oiio:ColorSpace", "Linear");
@@ -177,7 +60,7 @@ Result<void> writeMap(const MapImage& map, const fs::path& file, MapSampleFormat
         spec.attribute("compression", "zip");
     if (!out->open(temporary.string(), spec)) {
         fs::remove(temporary, ec);
-        return makeError(name, "cannot write: " + firstLine(out->geterror()));
+        return makeError(name, "cannot write: " + oneLine(out->geterror()));
     }
     // Clamp on the way out so the integer formats never wrap or saturate unexpectedly.
     std::vector<float> clamped(map.texels.size());
@@ -188,7 +71,7 @@ Result<void> writeMap(const MapImage& map, const fs::path& file, MapSampleFormat
     const bool written = out->write_image(OIIO::TypeDesc::FLOAT, clamped.data());
     const bool closed = out->close();
     if (!written || !closed) {
-        const std::string reason = firstLine(out->geterror());
+        const std::string reason = oneLine(out->geterror());
         out.reset();
         fs::remove(temporary, ec);
         return makeError(name, "write failed: " + reason);
@@ -340,7 +223,7 @@ MapImage resampleMap(const MapImage& map, int width, int height) {
 Result<MapImage> loadMapImage(const fs::path& file) {
     // OIIO and the standard library may throw (bad_alloc, filesystem errors); nothing escapes.
     try {
-        return readMap(file);
+        return readMapFile(file);
     } catch (const std::exception& e) {
         return makeError(file.string(), std::string("cannot read the map: ") + e.what());
     }
@@ -348,10 +231,10 @@ Result<MapImage> loadMapImage(const fs::path& file) {
 
 Result<MapImage> loadMapImageAt(const fs::path& file, int width, int height) {
     const auto sizeText = [](int w, int h) { return std::to_string(w) + "×" + std::to_string(h); };
-    if (width < 1 || height < 1 || width > MAX_MAP_SIDE || height > MAX_MAP_SIDE)
+    if (width < 1 || height < 1 || width > MAX_IMAGE_SIDE || height > MAX_IMAGE_SIDE)
         return makeError(file.string(), "cannot load the map at " + sizeText(width, height) +
                                             "; the size must be 1 to " +
-                                            std::to_string(MAX_MAP_SIDE) + " texels a side");
+                                            std::to_string(MAX_IMAGE_SIDE) + " texels a side");
     Result<MapImage> loaded = loadMapImage(file);
     if (!loaded || (loaded->width == width && loaded->height == height))
         return loaded;

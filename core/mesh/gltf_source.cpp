@@ -17,6 +17,7 @@
 #include "util/atomic_file.h"
 #include "util/json_text.h"
 #include "util/path_inside.h"
+#include "util/printable_text.h"
 
 namespace grass::core::gltf {
 namespace {
@@ -457,19 +458,7 @@ namespace {
 
 // tinygltf's multi-line messages as one line.
 std::string oneLine(const std::string& text) {
-    std::string out;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        std::size_t end = text.find('\n', start);
-        if (end == std::string::npos)
-            end = text.size();
-        std::string line = text.substr(start, end - start);
-        line.erase(0, line.find_first_not_of(" \t\r"));
-        line.erase(line.find_last_not_of(" \t\r") + 1);
-        if (!line.empty())
-            out += (out.empty() ? "" : "; ") + line;
-        start = end + 1;
-    }
+    std::string out = joinedLines(text);
     constexpr std::size_t MAX_CHARS = 300;  // tinygltf may quote a whole data: URI
     if (out.size() > MAX_CHARS)
         out = out.substr(0, MAX_CHARS) + "...";

@@ -25,7 +25,7 @@ inline std::string lowerExtension(const std::filesystem::path& file) {
 inline const std::vector<std::string>& readableImageExtensions() {
     static const std::vector<std::string> EXTENSIONS{
         ".png", ".jpg", ".jpeg", ".tif", ".tiff", ".exr", ".tga", ".bmp",
-        ".gif", ".webp", ".hdr", ".pgm", ".ppm", ".pbm", ".pnm"};
+        ".gif", ".webp", ".hdr", ".pgm", ".ppm", ".pbm", ".pnm", ".pfm"};
     return EXTENSIONS;
 }
 

@@ -6,18 +6,17 @@
 #include "util/atomic_file.h"
 #include "util/image_header.h"
 #include "util/image_open.h"
+#include "util/printable_text.h"
 
 namespace grass {
 
 namespace fs = std::filesystem;
 
 std::string oneLine(std::string text) {
-    for (char& c : text)
-        if (c == '\n' || c == '\r')
-            c = ' ';
-    while (!text.empty() && text.back() == ' ')
-        text.pop_back();
-    return text;
+    const std::string joined = joinedLines(text);
+    return joined.empty() ? "the reader gave no reason (a damaged file, or a kind of it the "
+                            "reader does not know)"
+                          : joined;
 }
 
 Result<void> checkImageWritable(const fs::path& file) {

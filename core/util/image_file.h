@@ -32,7 +32,8 @@ struct Rgba8Pixels {
 Result<void> verifyWrittenImage(const std::filesystem::path& written, const std::string& name,
                                 int width, int height);
 
-// OpenImageIO's error text on one line (its messages may hold newlines and trailing spaces).
+// OpenImageIO's error text on one line (its messages may hold newlines, trailing spaces and the
+// same line twice), or a sentence saying it gave none.
 std::string oneLine(std::string text);
 
 // Reads any image as RGBA8 (grey → RGB, no alpha → 255). For tests and goldens.

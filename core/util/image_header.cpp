@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "util/atomic_file.h"
+#include "util/bmp_header.h"
 #include "util/byte_size.h"
 
 namespace grass::core {
@@ -22,6 +23,7 @@ constexpr std::array<unsigned char, 4> EXR_MAGIC{0x76, 0x2f, 0x31, 0x01};
 constexpr std::array<unsigned char, 8> PNG_SIGNATURE{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 constexpr std::array<unsigned char, 6> GIF87_SIGNATURE{'G', 'I', 'F', '8', '7', 'a'};
 constexpr std::array<unsigned char, 6> GIF89_SIGNATURE{'G', 'I', 'F', '8', '9', 'a'};
+constexpr std::array<unsigned char, 2> BMP_SIGNATURE{'B', 'M'};
 constexpr std::array<unsigned char, 3> JPEG_SIGNATURE{0xff, 0xd8, 0xff};
 constexpr std::array<unsigned char, 4> TIFF_LITTLE_ENDIAN{'I', 'I', '*', 0};
 constexpr std::array<unsigned char, 4> TIFF_BIG_ENDIAN{'M', 'M', 0, '*'};
@@ -349,6 +351,12 @@ Result<void> checkByKind(HeaderFile& image, std::string_view head, int maxSide) 
     if (startsWith(head, GIF87_SIGNATURE) || startsWith(head, GIF89_SIGNATURE)) {
         image.kind = "GIF";
         return checkGif(image, maxSide);
+    }
+    if (startsWith(head, BMP_SIGNATURE)) {
+        std::string bmp(BMP_HEAD_BYTES, '\0');
+        image.in->read(bmp.data(), static_cast<std::streamsize>(bmp.size()));
+        bmp.resize(static_cast<std::size_t>(std::max<std::streamsize>(image.in->gcount(), 0)));
+        return checkBmpHeader(bmp, image.name, maxSide);
     }
     return {};
 }

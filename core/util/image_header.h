@@ -44,8 +44,8 @@ Result<void> checkPngChunks(const std::filesystem::path& file, int maxSide);
 // OpenImageIO's GIF reader allocates on open, is wider or taller than maxSide.
 Result<void> checkGifScreen(const std::filesystem::path& file, int maxSide);
 
-// checkExrHeader, checkPngChunks or checkGifScreen by the file's first bytes; other files pass
-// unchecked.
+// checkExrHeader, checkPngChunks, checkGifScreen or checkBmpHeader (util/bmp_header.h) by the
+// file's first bytes; other files pass unchecked.
 Result<void> checkImageHeader(const std::filesystem::path& file, int maxSide);
 
 // The same look at an encoded image in memory (a texture inside a .glb); `name` is what errors

@@ -19,6 +19,8 @@ constexpr std::size_t HEAD_BYTES = 8;
 // TGA header (Truevision TGA 2.0, "Image Type"): 1 uncompressed and 9 run-length colour-mapped.
 constexpr unsigned char TGA_COLOUR_MAPPED = 1;
 constexpr unsigned char TGA_COLOUR_MAPPED_RLE = 9;
+// TIFF 6.0's PhotometricInterpretation 5: separated (CMYK).
+constexpr int TIFF_PHOTOMETRIC_SEPARATED = 5;
 
 std::string readHead(const std::string& name, OIIO::Filesystem::IOProxy* proxy) {
     std::string head(HEAD_BYTES, '\0');
@@ -79,6 +81,17 @@ Result<OIIO::ImageInput::unique_ptr> openImageInput(const std::string& name,
     const bool opened = config ? in->open(name, spec, *config) : in->open(name, spec);
     if (!opened)
         return makeError(name, "not an image OpenImageIO can read: " + oneLine(in->geterror()));
+    // CMYK ("separated") TIFF in tiles: OpenImageIO 2.4 converts each tile to RGB in a buffer
+    // sized for fewer channels than libtiff writes into it (a heap overrun, a crash; found with a
+    // real JPEG-compressed file, and LZW does it too). In strips it reads them.
+    const OIIO::ImageSpec& openedSpec = in->spec();
+    if (std::string(in->format_name()) == "tiff" && openedSpec.tile_width > 0 &&
+        openedSpec.get_int_attribute("tiff:PhotometricInterpretation", -1) ==
+            TIFF_PHOTOMETRIC_SEPARATED)
+        return makeError(name,
+                         "a tiled CMYK TIFF is not read: OpenImageIO 2.4 writes past its tile "
+                         "buffer on it (a crash); save the image as RGB, or with strips instead "
+                         "of tiles, or as PNG");
     return in;
 }
 

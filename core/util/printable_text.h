@@ -3,8 +3,10 @@
 // doing what it says.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace grass {
 
@@ -14,6 +16,29 @@ inline std::string printableText(std::string_view text) {
         if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
             c = ' ';
     return out;
+}
+
+// A library's multi-line message as one line: its lines trimmed of spaces, tabs and returns,
+// empty lines and repeats dropped (a reader that fails twice on the same thing says so twice),
+// joined by "; ". Empty when no line holds anything.
+inline std::string joinedLines(std::string_view text) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find_first_of("\r\n", start);
+        if (end == std::string_view::npos)
+            end = text.size();
+        std::string line(text.substr(start, end - start));
+        line.erase(0, line.find_first_not_of(" \t"));
+        line.erase(line.find_last_not_of(" \t") + 1);
+        if (!line.empty() && std::find(lines.begin(), lines.end(), line) == lines.end())
+            lines.push_back(std::move(line));
+        start = end + 1;
+    }
+    std::string joined;
+    for (const std::string& line : lines)
+        joined += (joined.empty() ? "" : "; ") + line;
+    return joined;
 }
 
 }  // namespace grass

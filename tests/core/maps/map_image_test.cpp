@@ -172,7 +172,7 @@ TEST(MapImage, EveryChannelCountIsReadWithAWarningSayingHow) {
         Case{"ga.tif", 2, {0.6f, 0.2f}, 0.6f, {"grey", "alpha ignored"}},
         Case{"rgb.tif", 3, {0, 1, 0}, 0.7152f, {"RGB", "luminance"}},
         Case{"rgba.tif", 4, {0, 1, 0, 0.25f}, 0.7152f, {"RGBA", "luminance", "alpha ignored"}},
-        Case{"five.tif", 5, {0, 1, 0, 0.25f, 0.9f}, 0.7152f, {"first 3", "4 to 5 ignored"}},
+        Case{"five.tif", 5, {0, 1, 0, 0.25f, 0.9f}, 0.7152f, {"R, G, B", "A, channel4 ignored"}},
     };
     for (const Case& c : cases) {
         writeWithOiio(dir / c.name, 1, 1, c.channels, c.pixel, OIIO::TypeDesc::FLOAT);

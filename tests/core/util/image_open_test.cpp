@@ -168,3 +168,19 @@ TEST(ImageOpen, AMisnamedImageIsReadByItsSignature) {
 
 }  // namespace
 }  // namespace grass::core
+
+namespace grass {
+namespace {
+
+// A reader's message is one line, each of its lines once (OpenEXR's subsampled-channel error
+// came twice), and never empty: a PAM file gave "not an image OpenImageIO can read: ".
+TEST(ImageOpen, ReaderMessagesComeOnOneLineOnceAndNeverEmpty) {
+    EXPECT_EQ(oneLine("Subsampled channels\nSubsampled channels \r\nline 2\n"),
+              "Subsampled channels; line 2");
+    EXPECT_EQ(oneLine("plain"), "plain");
+    EXPECT_NE(oneLine("").find("the reader gave no reason"), std::string::npos);
+    EXPECT_NE(oneLine(" \n\n").find("the reader gave no reason"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace grass

@@ -1,0 +1,172 @@
+#include "maps/map_file_read.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "maps/map_channels.h"
+#include "util/image_file.h"
+#include "util/image_header.h"
+#include "util/image_layout.h"
+#include "util/image_open.h"
+
+namespace grass::core {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Past this, a "map" is a mistake (a 16k² float map is already 1 GiB); refused before any
+// pixel is allocated.
+constexpr int MAX_MAP_SIDE = MAX_IMAGE_SIDE;
+// Rows read at a time from scanline files, so an RGBA file never needs its whole float copy.
+constexpr int ROWS_PER_BAND = 256;
+// What a user can do about a file the reader cannot decode (a rare compression or layout).
+constexpr const char* RESAVE_HINT =
+    " (saving it again as PNG, TIFF or scanline OpenEXR in another program usually helps)";
+
+}  // namespace
+
+Result<MapImage> readMapFile(const fs::path& file) {
+    const std::string name = file.string();
+    std::error_code ec;
+    if (!fs::exists(file, ec))
+        return makeError(name, "file not found");
+    if (fs::is_directory(file, ec))
+        return makeError(name, "is a folder, not an image");
+    // OpenEXR and libpng allocate what a damaged header claims before reading it: look first.
+    if (auto header = checkImageHeader(file, MAX_MAP_SIDE); !header)
+        return header.error();
+    // The stored values, not colour premultiplied by alpha: alpha is not density.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto opened = openImageInput(name, &config);
+    if (!opened)
+        return opened.error();
+    auto& in = *opened;
+    const OIIO::ImageSpec spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+        return makeError(name, "the image has zero size (" + std::to_string(spec.width) + "×" +
+                                   std::to_string(spec.height) + ", " +
+                                   std::to_string(spec.nchannels) + " channels)");
+    if (auto fits = checkImageSize(name, spec.width, spec.height, MAX_MAP_SIDE); !fits)
+        return fits.error();
+    if (spec.depth > 1)
+        return makeError(name, "a volume image cannot be a map");
+
+    if (spec.deep)
+        return makeError(name,
+                         "a deep image (several samples a pixel) cannot be a map: flatten "
+                         "it (e.g. oiiotool --flatten) and save it again");
+    const ImageLayout layout = imageLayout(spec);
+    if (auto fits = checkImageSize(name, layout.shownWidth(), layout.shownHeight(), MAX_MAP_SIDE);
+        !fits)
+        return fits.error();
+
+    MapImage map;
+    map.width = spec.width;
+    map.height = spec.height;
+    // Every conversion is reported: a user who painted in colour should learn that we read
+    // brightness.
+    const MapChannels chosen = chooseMapChannels(spec);
+    if (!chosen.note.empty())
+        map.warnings.push_back(name + ": " + chosen.note);
+    const bool several = in->seek_subimage(1, 0);
+    (void)in->geterror();  // a reader that has no second image may say so: not this file's error
+    if (several)
+        map.warnings.push_back(name +
+                               ": holds several images (parts, pages or frames): the "
+                               "first read");
+    if (!in->seek_subimage(0, 0))
+        return makeError(name, "cannot read the pixels: " + oneLine(in->geterror()));
+    // Alpha is read too, never as the value: OpenImageIO 2.4's WebP reader multiplies the colour
+    // by it whatever oiio:UnassociatedAlpha says (divided back out here), and its GIF reader
+    // makes transparent pixels 0 (said in a note).
+    const std::string format = in->format_name();
+    const int alpha = format == "webp" || format == "gif" ? alphaChannelOf(spec) : -1;
+    const int begin = alpha >= 0 ? std::min(chosen.begin, alpha) : chosen.begin;
+    const int end = alpha >= 0 ? std::max(chosen.end, alpha + 1) : chosen.end;
+    const int channels = end - begin;
+    const auto rowFloats =
+        static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(channels);
+    map.texels.reserve(static_cast<std::size_t>(spec.width) *
+                       static_cast<std::size_t>(spec.height));
+    std::size_t transparent = 0;
+    const auto fold = [&](const std::vector<float>& pixels) {
+        const auto stride = static_cast<std::size_t>(channels);
+        for (std::size_t i = 0; i + stride <= pixels.size(); i += stride) {
+            float value = 0.0f;
+            for (const auto& [c, weight] : chosen.weights)
+                value += weight * pixels[i + static_cast<std::size_t>(c - begin)];
+            if (alpha >= 0) {
+                const float coverage = pixels[i + static_cast<std::size_t>(alpha - begin)];
+                if (coverage <= 0.0f)
+                    ++transparent;
+                else if (format == "webp")
+                    value /= coverage;
+            }
+            map.texels.push_back(value);
+        }
+    };
+    std::vector<float> band;
+    // Bands keep an RGBA file from needing its whole float copy; libtiff reads the planes of a
+    // separate-plane TIFF (one plane after another, compressed) only from the top, whole.
+    const bool wholeOnly =
+        spec.tile_width != 0 || spec.get_string_attribute("planarconfig") == "separate";
+    if (!wholeOnly) {
+        for (int row = 0; row < spec.height; row += ROWS_PER_BAND) {
+            const int rows = std::min(ROWS_PER_BAND, spec.height - row);
+            band.assign(rowFloats * static_cast<std::size_t>(rows), 0.0f);
+            if (!in->read_scanlines(0, 0, spec.y + row, spec.y + row + rows, 0, begin, end,
+                                    OIIO::TypeDesc::FLOAT, band.data()))
+                return makeError(
+                    name, "cannot read the pixels: " + oneLine(in->geterror()) + RESAVE_HINT);
+            fold(band);
+        }
+    } else {
+        band.assign(rowFloats * static_cast<std::size_t>(spec.height), 0.0f);
+        if (!in->read_image(0, 0, begin, end, OIIO::TypeDesc::FLOAT, band.data()))
+            return makeError(name,
+                             "cannot read the pixels: " + oneLine(in->geterror()) + RESAVE_HINT);
+        fold(band);
+    }
+    in->close();
+    if (transparent > 0)
+        map.warnings.push_back(
+            name + ": " + std::to_string(transparent) + " transparent texels read as 0 (" +
+            (format == "gif" ? "the GIF reader keeps no colour for them"
+                             : "the WebP reader keeps their colour multiplied by 0") +
+            "); save the map without transparency to keep their values");
+    if (layout.windowed() || layout.orientation != 1) {
+        map.texels = showImage(map.texels, 1, layout);
+        map.width = layout.shownWidth();
+        map.height = layout.shownHeight();
+        for (const std::string& note : imageLayoutNotes(layout))
+            map.warnings.push_back(name + ": " + note);
+    }
+
+    bool clamped = false;
+    for (std::size_t i = 0; i < map.texels.size(); ++i) {
+        float& t = map.texels[i];
+        if (!std::isfinite(t)) {
+            const std::size_t x = i % static_cast<std::size_t>(map.width);
+            const std::size_t y = i / static_cast<std::size_t>(map.width);
+            return makeError(name, std::string("texel (") + std::to_string(x) + ", " +
+                                       std::to_string(y) + ") is " +
+                                       (std::isnan(t) ? "NaN" : "infinite") +
+                                       "; maps must hold finite values in [0, 1]");
+        }
+        if (t < 0.0f || t > 1.0f) {
+            clamped = true;
+            t = std::clamp(t, 0.0f, 1.0f);
+        }
+    }
+    if (clamped)
+        map.warnings.push_back(name + ": values outside [0, 1] were clamped");
+    return map;
+}
+
+}  // namespace grass::core
