@@ -12,6 +12,8 @@
 #include "util/atomic_file.h"
 #include "util/bmp_header.h"
 #include "util/byte_size.h"
+#include "util/png_chunks.h"
+#include "util/printable_text.h"
 
 namespace grass::core {
 
@@ -27,7 +29,6 @@ constexpr std::array<unsigned char, 2> BMP_SIGNATURE{'B', 'M'};
 constexpr std::array<unsigned char, 3> JPEG_SIGNATURE{0xff, 0xd8, 0xff};
 constexpr std::array<unsigned char, 4> TIFF_LITTLE_ENDIAN{'I', 'I', '*', 0};
 constexpr std::array<unsigned char, 4> TIFF_BIG_ENDIAN{'M', 'M', 0, '*'};
-constexpr std::int64_t PNG_MAX_CHUNK_LENGTH = 0x7fffffff;
 // Version field flags (OpenEXR file layout): names of up to 255 characters, several parts.
 constexpr std::uint32_t LONG_NAMES_FLAG = 0x400;
 constexpr std::uint32_t MULTI_PART_FLAG = 0x1000;
@@ -68,12 +69,6 @@ std::int64_t littleEndian32(const unsigned char* bytes, bool isSigned) {
                     : static_cast<std::int64_t>(v);
 }
 
-std::int64_t bigEndian32(const unsigned char* bytes) {
-    return static_cast<std::int64_t>(
-        static_cast<std::uint32_t>(bytes[0]) << 24 | static_cast<std::uint32_t>(bytes[1]) << 16 |
-        static_cast<std::uint32_t>(bytes[2]) << 8 | static_cast<std::uint32_t>(bytes[3]));
-}
-
 // The first `count` bytes of a file (fewer when it is shorter or cannot be read).
 std::string fileHead(const fs::path& file, std::size_t count) {
     std::string head(count, '\0');
@@ -112,24 +107,6 @@ bool readName(std::istream& in, std::size_t maxLength, std::string& out) {
         out.push_back(c);
     }
     return false;
-}
-
-// A name read from the file as our one-line errors may show it: bytes outside printable ASCII
-// (a newline, say) as \xNN.
-std::string printableName(const std::string& name) {
-    std::string out = "\"";
-    for (const char c : name) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte >= 0x20 && byte < 0x7f && c != '"' && c != '\\') {
-            out.push_back(c);
-        } else {
-            constexpr char HEX[] = "0123456789abcdef";
-            out += "\\x";
-            out.push_back(HEX[byte >> 4]);
-            out.push_back(HEX[byte & 0xf]);
-        }
-    }
-    return out + "\"";
 }
 
 // An image opened for a look at its header (a file, or encoded bytes in memory), with what its
@@ -230,20 +207,20 @@ Result<void> checkExr(HeaderFile& exr, int maxSide) {
             std::array<unsigned char, 4> sizeBytes{};
             if (!readName(in, maxName, type) ||
                 !in.read(reinterpret_cast<char*>(sizeBytes.data()), sizeBytes.size()))
-                return damaged("attribute " + printableName(attribute) + " is cut short");
+                return damaged("attribute " + quotedName(attribute) + " is cut short");
             const std::int64_t size = littleEndian32(sizeBytes.data(), true);
             const std::int64_t left = exr.left();
             if (size < 0 || size > left)
-                return damaged("attribute " + printableName(attribute) + " claims " +
+                return damaged("attribute " + quotedName(attribute) + " claims " +
                                std::to_string(size) + " bytes, the file has " +
                                std::to_string(left) + " left");
             if (const std::int64_t fixed = fixedAttributeSize(type); fixed >= 0 && size != fixed)
-                return damaged("attribute " + printableName(attribute) + " of type " +
-                               printableName(type) + " claims " + std::to_string(size) +
+                return damaged("attribute " + quotedName(attribute) + " of type " +
+                               quotedName(type) + " claims " + std::to_string(size) +
                                " bytes, a " + type + " is " + std::to_string(fixed));
             // A floatvector is read as size / 4 floats: another size leaves bytes unread.
             if (type == "floatvector" && size % 4 != 0)
-                return damaged("attribute " + printableName(attribute) +
+                return damaged("attribute " + quotedName(attribute) +
                                " of type \"floatvector\" claims " + std::to_string(size) +
                                " bytes, not a whole number of floats");
             if (type == "chlist") {
@@ -254,19 +231,19 @@ Result<void> checkExr(HeaderFile& exr, int maxSide) {
                 std::string channel;
                 for (;;) {
                     if (!readName(in, LONG_NAME_MAX, channel))
-                        return damaged("attribute " + printableName(attribute) +
+                        return damaged("attribute " + quotedName(attribute) +
                                        "'s channel list is cut short or has a name longer "
                                        "than 255 characters");
                     if (channel.empty())
                         break;
                     in.seekg(CHANNEL_BYTES, std::ios::cur);
                     if (!in || exr.left() < 0)
-                        return damaged("attribute " + printableName(attribute) +
+                        return damaged("attribute " + quotedName(attribute) +
                                        "'s channel list is cut short");
                 }
                 const std::int64_t walked = static_cast<std::int64_t>(in.tellg()) - listStart;
                 if (walked != size)
-                    return damaged("attribute " + printableName(attribute) +
+                    return damaged("attribute " + quotedName(attribute) +
                                    " of type \"chlist\" claims " + std::to_string(size) +
                                    " bytes, its channel list holds " + std::to_string(walked));
             } else if (attribute == "dataWindow" && type == "box2i") {
@@ -293,39 +270,8 @@ Result<void> checkExr(HeaderFile& exr, int maxSide) {
 Result<void> checkPng(HeaderFile& png, int maxSide) {
     if (png.bytes < 0 || !*png.in)
         return makeError(png.name, "cannot read the file");
-    std::istream& in = *png.in;
-    const auto damaged = [&](const std::string& what) { return png.damaged(what); };
-    in.seekg(static_cast<std::streamoff>(PNG_SIGNATURE.size()));
-    for (bool first = true;; first = false) {
-        std::array<unsigned char, 8> head{};
-        if (!in.read(reinterpret_cast<char*>(head.data()), head.size()))
-            return damaged("the file ends before the IEND chunk");
-        const std::int64_t length = bigEndian32(head.data());
-        std::string type(reinterpret_cast<const char*>(head.data() + 4), 4);
-        const std::int64_t left = png.left();
-        if (length > PNG_MAX_CHUNK_LENGTH || length + 4 > left)
-            return damaged("chunk " + printableName(type) + " claims " + std::to_string(length) +
-                           " bytes and a 4-byte CRC, the file has " + std::to_string(left) +
-                           " left");
-        if (first) {
-            if (type != "IHDR" || length < 8)
-                return damaged("the first chunk is " + printableName(type) + ", not IHDR");
-            std::array<unsigned char, 8> size{};
-            in.read(reinterpret_cast<char*>(size.data()), size.size());
-            const std::int64_t width = bigEndian32(size.data());
-            const std::int64_t height = bigEndian32(size.data() + 4);
-            if (width < 1 || height < 1)
-                return makeError(png.name,
-                                 "the image has a " + sizeText(width, height) + " header");
-            if (auto fits = checkImageSize(png.name, width, height, maxSide); !fits)
-                return fits;
-            in.seekg(length - 8 + 4, std::ios::cur);
-        } else {
-            in.seekg(length + 4, std::ios::cur);
-        }
-        if (type == "IEND")
-            return {};
-    }
+    png.in->seekg(static_cast<std::streamoff>(PNG_SIGNATURE.size()));
+    return checkPngChunks(*png.in, png.bytes, png.name, maxSide);
 }
 
 Result<void> checkGif(HeaderFile& gif, int maxSide) {

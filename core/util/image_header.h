@@ -34,10 +34,8 @@ bool hasExrMagic(const std::filesystem::path& file);
 // The same for the PNG signature (89 50 4E 47 0D 0A 1A 0A).
 bool startsWithPngSignature(const std::filesystem::path& file);
 
-// For a file with the PNG signature: walks the chunks (PNG spec §5.3: big-endian length, type,
-// data, CRC) up to IEND and fails, naming the file and the chunk, when a length exceeds
-// 2^31 − 1 or the bytes left, the file ends inside a chunk, or IHDR is empty or wider or taller
-// than maxSide. CRCs are left to libpng.
+// For a file with the PNG signature: util/png_chunks.h's look at its chunks (lengths against
+// the bytes left, IHDR, critical chunks' CRCs, PLTE and IDAT before IEND).
 Result<void> checkPngChunks(const std::filesystem::path& file, int maxSide);
 
 // For a file with a GIF signature: fails when the logical screen (GIF89a §18), the canvas

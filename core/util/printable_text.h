@@ -18,6 +18,24 @@ inline std::string printableText(std::string_view text) {
     return out;
 }
 
+// A name read from a file (an attribute, a chunk type) as a one-line error may show it: in
+// double quotes, bytes outside printable ASCII (a newline, say) and quotes as \xNN.
+inline std::string quotedName(std::string_view name) {
+    std::string out = "\"";
+    for (const char c : name) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7f && c != '"' && c != '\\') {
+            out.push_back(c);
+        } else {
+            constexpr char HEX[] = "0123456789abcdef";
+            out += "\\x";
+            out.push_back(HEX[byte >> 4]);
+            out.push_back(HEX[byte & 0xf]);
+        }
+    }
+    return out + "\"";
+}
+
 // A library's multi-line message as one line: its lines trimmed of spaces, tabs and returns,
 // empty lines and repeats dropped (a reader that fails twice on the same thing says so twice),
 // joined by "; ". Empty when no line holds anything.

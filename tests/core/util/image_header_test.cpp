@@ -4,12 +4,14 @@
 
 #include <cstdint>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "maps/map_image.h"
 #include "support/test_paths.h"
 #include "util/image_header.h"
+#include "util/png_chunks.h"
 
 namespace grass::core {
 namespace {
@@ -55,16 +57,25 @@ struct PngBytes {
             bytes.push_back(static_cast<char>((v >> (8 * i)) & 0xffu));
         return *this;
     }
-    PngBytes& chunk(const std::string& type, const std::string& data) {
+    // A chunk with its CRC (pngCrc, checked against a known CRC in PngChunks.TheCrcIsPngsCrc32),
+    // or with `crc` in its place.
+    PngBytes& chunk(const std::string& type, const std::string& data,
+                    std::optional<std::uint32_t> crc = std::nullopt) {
         u32(static_cast<std::uint32_t>(data.size()));
-        bytes += type + data;
-        return u32(0);
+        const std::string typed = type + data;
+        bytes += typed;
+        return u32(crc ? *crc
+                       : pngCrc(0, reinterpret_cast<const unsigned char*>(typed.data()),
+                                typed.size()));
     }
-    PngBytes& header(std::uint32_t width, std::uint32_t height) {
+    PngBytes& header(std::uint32_t width, std::uint32_t height, int depth = 8,
+                     int colourType = 0) {
         PngBytes ihdr;
         ihdr.bytes.clear();
         ihdr.u32(width).u32(height);
-        ihdr.bytes += std::string("\x08\x00\x00\x00\x00", 5);
+        ihdr.bytes.push_back(static_cast<char>(depth));
+        ihdr.bytes.push_back(static_cast<char>(colourType));
+        ihdr.bytes += std::string("\x00\x00\x00", 3);
         return chunk("IHDR", ihdr.bytes);
     }
     std::filesystem::path write(const std::string& test) const {
@@ -321,7 +332,7 @@ TEST(PngChunks, AChunkClaimingMoreThanTheFileIsRefusedByName) {
 
 TEST(PngChunks, TheHeaderMustComeFirstAndFitTheLimit) {
     PngBytes wide;
-    wide.header(65536, 2).chunk("IEND", "");
+    wide.header(65536, 2).chunk("IDAT", "xx").chunk("IEND", "");
     auto checked = checkPngChunks(wide.write("wide"), MAX_SIDE);
     ASSERT_FALSE(checked);
     EXPECT_NE(checked.error().str().find("65536×2"), std::string::npos) << checked.error().str();
@@ -331,7 +342,9 @@ TEST(PngChunks, TheHeaderMustComeFirstAndFitTheLimit) {
     noHeader.chunk("IDAT", "xx").chunk("IEND", "");
     checked = checkPngChunks(noHeader.write("no_header"), MAX_SIDE);
     ASSERT_FALSE(checked);
-    EXPECT_NE(checked.error().str().find("not IHDR"), std::string::npos);
+    EXPECT_NE(checked.error().str().find("the first chunk is \"IDAT\" of 2 bytes, not a 13-byte IHDR"),
+              std::string::npos)
+        << checked.error().str();
 
     PngBytes noEnd;
     noEnd.header(4, 4).chunk("IDAT", "xx");
@@ -342,6 +355,73 @@ TEST(PngChunks, TheHeaderMustComeFirstAndFitTheLimit) {
     PngBytes fits;
     fits.header(4, 4).chunk("IDAT", "xx").chunk("IEND", "");
     EXPECT_TRUE(checkPngChunks(fits.write("fits"), MAX_SIDE));
+}
+
+// Every PNG ends with the same 12 bytes: IEND, empty, CRC ae 42 60 82.
+TEST(PngChunks, TheCrcIsPngsCrc32) {
+    const std::string iend = "IEND";
+    EXPECT_EQ(pngCrc(0, reinterpret_cast<const unsigned char*>(iend.data()), 4), 0xae426082u);
+    // Continuing a CRC is the CRC of the whole.
+    const std::string text = "tEXtComment";
+    const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
+    EXPECT_EQ(pngCrc(pngCrc(0, bytes, 4), bytes + 4, text.size() - 4),
+              pngCrc(0, bytes, text.size()));
+}
+
+// PngSuite's corrupt files (xcsn0g01: IDAT CRC, xhdn0g08: IHDR CRC) made libpng print its own
+// "libpng error: …" line before ours; now one line names the chunk. An ancillary chunk with a
+// bad CRC is left to libpng, which drops it with a warning and reads the image.
+TEST(PngChunks, ACriticalChunkWithABadCrcIsRefusedAnAncillaryOneIsNot) {
+    PngBytes badData;
+    badData.header(4, 4).chunk("IDAT", "xx", 0x12345678u).chunk("IEND", "");
+    auto checked = checkPngChunks(badData.write("bad_idat_crc"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("chunk \"IDAT\" fails its CRC check"), std::string::npos)
+        << checked.error().str();
+
+    PngBytes badText;
+    badText.header(4, 4).chunk("tEXt", "a\0b", 0x12345678u).chunk("IDAT", "xx").chunk("IEND", "");
+    EXPECT_TRUE(checkPngChunks(badText.write("bad_text_crc"), MAX_SIDE));
+}
+
+TEST(PngChunks, TheHeaderMustDescribeAPngAndThePixelsMustCome) {
+    const std::pair<int, int> undefined[] = {{8, 9}, {3, 2}, {16, 3}, {4, 6}, {2, 2}};
+    for (const auto& [depth, colourType] : undefined) {
+        PngBytes png;
+        png.header(4, 4, depth, colourType).chunk("IDAT", "xx").chunk("IEND", "");
+        auto checked = checkPngChunks(png.write("undefined"), MAX_SIDE);
+        ASSERT_FALSE(checked) << depth << " " << colourType;
+        EXPECT_NE(checked.error().str().find("colour type " + std::to_string(colourType) +
+                                             " at bit depth " + std::to_string(depth)),
+                  std::string::npos)
+            << checked.error().str();
+    }
+    for (const auto& [depth, colourType] : {std::pair{16, 0}, {1, 3}, {16, 6}, {8, 4}}) {
+        PngBytes png;
+        png.header(4, 4, depth, colourType);
+        if (colourType == 3)
+            png.chunk("PLTE", std::string(6, '\0'));
+        png.chunk("IDAT", "xx").chunk("IEND", "");
+        EXPECT_TRUE(checkPngChunks(png.write("defined"), MAX_SIDE)) << depth << " " << colourType;
+    }
+
+    PngBytes noPalette;
+    noPalette.header(4, 4, 8, 3).chunk("IDAT", "xx").chunk("IEND", "");
+    auto checked = checkPngChunks(noPalette.write("no_palette"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("without a PLTE"), std::string::npos);
+
+    PngBytes noPixels;  // PngSuite's xdtn0g01
+    noPixels.header(4, 4).chunk("IEND", "");
+    checked = checkPngChunks(noPixels.write("no_pixels"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("IEND comes before any IDAT"), std::string::npos);
+
+    PngBytes shortHeader;
+    shortHeader.chunk("IHDR", std::string(12, '\1')).chunk("IDAT", "xx").chunk("IEND", "");
+    checked = checkPngChunks(shortHeader.write("short_header"), MAX_SIDE);
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().str().find("not a 13-byte IHDR"), std::string::npos);
 }
 
 // Found by the map_png and grass_texture fuzz targets: a 45-byte GIF (named .png then) whose
