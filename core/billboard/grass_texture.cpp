@@ -12,6 +12,7 @@
 #include "util/image_layout.h"
 #include "util/image_open.h"
 #include "util/rng.h"
+#include "util/tga_palette.h"
 
 namespace grass::core {
 
@@ -146,6 +147,23 @@ void fillTransparentColour(Rgba8Pixels& image) {
     }
 }
 
+Error noAlpha(const std::filesystem::path& file, const std::string& what) {
+    return makeError(file.string(), "grass texture has no alpha channel (" + what +
+                                        "); billboards need RGBA with transparent gaps between "
+                                        "the blades");
+}
+
+// The texture once read: refused when nothing is transparent, its gaps given the blades' colour.
+Result<Rgba8Pixels> withGaps(const std::filesystem::path& file, Rgba8Pixels image,
+                             bool anyTransparent) {
+    if (!anyTransparent)
+        return makeError(file.string(),
+                         "grass texture's alpha is opaque everywhere; billboards need "
+                         "transparent gaps between the blades");
+    fillTransparentColour(image);
+    return image;
+}
+
 }  // namespace
 
 Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file) {
@@ -154,6 +172,18 @@ Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file) {
         return makeError(file.string(), "grass texture not found");
     if (auto header = checkImageHeader(file, MAX_IMAGE_SIDE); !header)
         return header.error();
+    if (isColourMappedTga(file)) {
+        // Decoded here (util/tga_palette.h): OpenImageIO 2.4 reads such palettes unchecked.
+        auto decoded = readColourMappedTga(file, MAX_IMAGE_SIDE);
+        if (!decoded)
+            return makeError(file.string(), "grass texture: " + decoded.error().message);
+        if (!decoded->alpha)
+            return noAlpha(file, "a colour-mapped TGA whose palette has none");
+        bool anyTransparent = false;
+        for (std::size_t i = 3; i < decoded->pixels.pixels.size(); i += 4)
+            anyTransparent = anyTransparent || decoded->pixels.pixels[i] < 255;
+        return withGaps(file, std::move(decoded->pixels), anyTransparent);
+    }
     // Read through OpenImageIO directly rather than readRgba8Image: we need to know whether the
     // file has an alpha channel at all (readRgba8Image fills a missing one with 255), and the
     // colours as stored (unassociated, as PNG defines them), not premultiplied by alpha.
@@ -169,10 +199,7 @@ Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file) {
     const int channels = spec.nchannels;
     const bool hasAlpha = alphaChannelOf(spec) >= 0 || channels == 4 || channels == 2;
     if (!hasAlpha)
-        return makeError(file.string(), "grass texture has no alpha channel (" +
-                                            std::to_string(channels) +
-                                            " channels); billboards need RGBA with transparent "
-                                            "gaps between the blades");
+        return noAlpha(file, std::to_string(channels) + " channels");
     const int alphaChannel = alphaChannelOf(spec) >= 0 ? alphaChannelOf(spec) : channels - 1;
     const auto count = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
     std::vector<std::uint8_t> raw(count * static_cast<std::size_t>(channels));
@@ -214,12 +241,7 @@ Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file) {
         image.pixels[4 * i + 3] = alpha;
         anyTransparent = anyTransparent || alpha < 255;
     }
-    if (!anyTransparent)
-        return makeError(file.string(),
-                         "grass texture's alpha is opaque everywhere; billboards need "
-                         "transparent gaps between the blades");
-    fillTransparentColour(image);
-    return image;
+    return withGaps(file, std::move(image), anyTransparent);
 }
 
 glm::vec3 meanGrassColour(const Rgba8Pixels& texture) {

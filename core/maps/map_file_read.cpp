@@ -12,6 +12,7 @@
 #include "util/image_header.h"
 #include "util/image_layout.h"
 #include "util/image_open.h"
+#include "util/tga_palette.h"
 
 namespace grass::core {
 
@@ -28,6 +29,33 @@ constexpr int ROWS_PER_BAND = 256;
 constexpr const char* RESAVE_HINT =
     " (saving it again as PNG, TIFF or scanline OpenEXR in another program usually helps)";
 
+// A colour-mapped TGA, decoded here (util/tga_palette.h; OpenImageIO 2.4's reader would look
+// its indices up unchecked): its palette colours read as an RGBA image's.
+Result<MapImage> readColourMappedTgaMap(const fs::path& file) {
+    auto decoded = readColourMappedTga(file, MAX_MAP_SIDE);
+    if (!decoded)
+        return decoded.error();
+    const Rgba8Pixels& image = decoded->pixels;
+    const OIIO::ImageSpec rgba(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+    const MapChannels chosen = chooseMapChannels(rgba);
+    MapImage map;
+    map.width = image.width;
+    map.height = image.height;
+    map.warnings.push_back(file.string() +
+                           ": a colour-mapped TGA: its palette's colours converted to luminance "
+                           "(Rec. 709 weights on the stored values)" +
+                           (decoded->alpha ? "; alpha ignored" : ""));
+    map.texels.reserve(image.pixels.size() / 4);
+    for (std::size_t i = 0; i + 4 <= image.pixels.size(); i += 4) {
+        float value = 0.0f;
+        for (const auto& [c, weight] : chosen.weights)
+            value += weight * static_cast<float>(image.pixels[i + static_cast<std::size_t>(c)]) /
+                     255.0f;
+        map.texels.push_back(std::clamp(value, 0.0f, 1.0f));
+    }
+    return map;
+}
+
 }  // namespace
 
 Result<MapImage> readMapFile(const fs::path& file) {
@@ -40,6 +68,8 @@ Result<MapImage> readMapFile(const fs::path& file) {
     // OpenEXR and libpng allocate what a damaged header claims before reading it: look first.
     if (auto header = checkImageHeader(file, MAX_MAP_SIDE); !header)
         return header.error();
+    if (isColourMappedTga(file))
+        return readColourMappedTgaMap(file);
     // The stored values, not colour premultiplied by alpha: alpha is not density.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);

@@ -5,7 +5,7 @@
 // reader indexes a colour map without checking the index (a 141-byte file crashed the map
 // loader; found by the map_exr fuzz target). Here the reader is the one the file's first bytes
 // name, else the one its extension names, and no other; a colour-mapped TGA is refused before
-// OpenImageIO reads it, and a tiled CMYK TIFF after its header is read (OpenImageIO 2.4 writes
+// OpenImageIO reads it (maps and grass textures decode those themselves: util/tga_palette.h), and a tiled CMYK TIFF after its header is read (OpenImageIO 2.4 writes
 // past its tile buffer on one: a crash). The signatures known are those of PNG, JPEG, OpenEXR and TIFF: readers
 // whose open reads a header and allocates no pixels (PNG and EXR headers are looked at first,
 // util/image_header.h), so that a damaged file of another name reaches no reader that does.

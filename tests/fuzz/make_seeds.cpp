@@ -80,6 +80,22 @@ void writeMaps(const fs::path& corpus) {
         fs::create_directories(corpus / target);
         check(writeRgba8Image(corpus / target / name, WIDTH, HEIGHT, pixels));
     }
+    // Colour-mapped TGAs (decoded by grass, util/tga_palette.h), 4×3 with four entries: raw
+    // (type 1) with 24-bit entries, bottom-left; run-length (type 9) with 16-bit entries and an
+    // alpha bit, top-left, a run crossing a row.
+    const auto tga = [](char type, char entryBits, char descriptor, const std::string& rest) {
+        std::string bytes = {'\0', '\1', type, '\0', '\0', '\4', '\0', entryBits, '\0', '\0',
+                             '\0', '\0', '\4', '\0', '\3', '\0', '\x08', descriptor};
+        return bytes + rest;
+    };
+    writeText(corpus / "map_tga" / "palette_raw.tga",
+              tga('\1', '\x18', '\0',
+                  std::string("\0\0\xff\0\xff\0\xff\0\0\x80\x80\x80"
+                              "\0\1\2\3\3\2\1\0\1\1\2\2",
+                              24)));
+    writeText(corpus / "map_tga" / "palette_rle.tga",
+              tga('\x09', '\x10', '\x21',
+                  std::string("\x00\xfc\xe0\x83\x1f\x00\x10\xc2\x83\0\x01\1\2\x85\3", 15)));
 }
 
 void writePackingCache(const fs::path& corpus) {

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "maps/map_image.h"
 #include "support/test_paths.h"
@@ -76,13 +78,20 @@ TEST(ImageOpen, ADamagedExrIsNotHandedToAnotherReader) {
     EXPECT_NE(message.find("density.exr"), std::string::npos) << message;
     EXPECT_NE(message.find("OpenEXR"), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    // The same bytes named .tga reach the TGA reader, whose colour maps are refused.
+    // The same bytes named .tga are a colour-mapped TGA with an empty palette: grass's own
+    // decoder (util/tga_palette.h) refuses them, and OpenImageIO's TGA reader never sees them.
     const auto tga = test::scratchDir("image_open_exr") / "density.tga";
     writeBytes(tga, readBytes(source));
     map = loadMapImage(tga);
     ASSERT_FALSE(map);
-    EXPECT_NE(map.error().str().find("colour-mapped (palette) TGA is not read"), std::string::npos)
+    EXPECT_NE(map.error().str().find("a damaged colour-mapped TGA: it has no colour map"),
+              std::string::npos)
         << map.error().str();
+    auto pixels = readRgba8Image(tga);
+    ASSERT_FALSE(pixels);
+    EXPECT_NE(pixels.error().str().find("colour-mapped (palette) TGA is not read"),
+              std::string::npos)
+        << pixels.error().str();
 }
 
 TEST(ImageOpen, TgaMapsAreReadUnlessColourMapped) {
@@ -97,12 +106,19 @@ TEST(ImageOpen, TgaMapsAreReadUnlessColourMapped) {
     EXPECT_NEAR(map->texels[0], 200.0f / 255.0f, 1e-6f);
     EXPECT_NEAR(map->texels[3], 64.0f / 255.0f, 1e-6f);
 
-    // Colour-mapped (type 1, and 9 run-length): refused by name, even a valid one.
-    for (const unsigned char type :
-         {static_cast<unsigned char>(1), static_cast<unsigned char>(9)}) {
-        const auto paletted = dir / ("paletted-" + std::to_string(type) + ".tga");
-        writeBytes(paletted, tgaBytes(type, 1, 2, 8, std::string("\x00\x01\x00\x01", 4)));
-        auto refused = loadMapImage(paletted);
+    // Colour-mapped (type 1, and 9 run-length): maps decode them themselves
+    // (util/tga_palette.h); both palette entries are grey 128. OpenImageIO's reader, which looks
+    // indices up unchecked, is never handed one: readRgba8Image refuses them by name.
+    const std::pair<unsigned char, std::string> paletted[] = {
+        {static_cast<unsigned char>(1), std::string("\x00\x01\x00\x01", 4)},
+        {static_cast<unsigned char>(9), std::string("\x83\x01", 2)}};  // a run of 4 × entry 1
+    for (const auto& [type, pixels] : paletted) {
+        const auto file = dir / ("paletted-" + std::to_string(type) + ".tga");
+        writeBytes(file, tgaBytes(type, 1, 2, 8, pixels));
+        auto read = loadMapImage(file);
+        ASSERT_TRUE(read) << read.error().str();
+        EXPECT_EQ(read->texels, std::vector<float>(4, 128.0f / 255.0f)) << int{type};
+        auto refused = readRgba8Image(file);
         ASSERT_FALSE(refused) << int{type};
         const std::string message = refused.error().str();
         EXPECT_NE(message.find("paletted-"), std::string::npos) << message;
