@@ -78,7 +78,11 @@ ImageLayout imageLayout(const OIIO::ImageSpec& spec) {
     layout.orientation = orientation >= 1 && orientation <= 8 ? orientation : 1;
     layout.dataWidth = std::max(spec.width, 0);
     layout.dataHeight = std::max(spec.height, 0);
-    if (spec.full_width > 0 && spec.full_height > 0) {
+    // An OpenEXR environment map's display window is one face of its cube (six stacked in the
+    // data window): the whole data is the picture.
+    const bool environment =
+        spec.get_string_attribute("textureformat").find("Environment") != std::string::npos;
+    if (spec.full_width > 0 && spec.full_height > 0 && !environment) {
         layout.fullWidth = spec.full_width;
         layout.fullHeight = spec.full_height;
         layout.dataX = std::int64_t{spec.x} - spec.full_x;

@@ -37,7 +37,7 @@ struct ImageLayout {
 int alphaChannelOf(const OIIO::ImageSpec& spec);
 
 // The layout `spec` describes. An orientation outside 1–8 reads as 1 (as stored); an empty
-// display window as the data window. The data window may lie partly or wholly outside the display
+// display window, or an environment map's (one face of a cube), as the data window. The data window may lie partly or wholly outside the display
 // window: what lies outside is not shown. The caller checks the shown size before showImage
 // allocates it.
 ImageLayout imageLayout(const OIIO::ImageSpec& spec);

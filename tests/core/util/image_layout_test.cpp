@@ -84,6 +84,19 @@ TEST(ImageLayout, TheDataWindowSitsInTheDisplayWindowWithBlackAround) {
               (std::vector<float>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
 }
 
+// OpenEXR's cube environment maps stack six faces in the data window under a display window of
+// one face (OpenEXR's own "WavyCube" sample: 256×1536 under 256×256): all six are the picture.
+TEST(ImageLayout, AnEnvironmentMapIsItsWholeDataWindow) {
+    OIIO::ImageSpec spec(4, 24, 1, OIIO::TypeDesc::HALF);
+    spec.full_width = 4;
+    spec.full_height = 4;
+    EXPECT_TRUE(imageLayout(spec).windowed());
+    spec.attribute("textureformat", "CubeFace Environment");
+    const ImageLayout layout = imageLayout(spec);
+    EXPECT_FALSE(layout.windowed());
+    EXPECT_EQ(layout.shownHeight(), 24);
+}
+
 TEST(ImageLayout, AnUnknownOrientationIsShownAsStoredAndAnEmptyDisplayWindowIsTheData) {
     OIIO::ImageSpec spec(3, 2, 1, OIIO::TypeDesc::FLOAT);
     spec.attribute("Orientation", 9);
