@@ -206,7 +206,7 @@ Result<Rgba8Pixels> loadGrassTexture(const std::filesystem::path& file) {
     if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
         return makeError(file.string(), "cannot read grass texture: " + oneLine(in->geterror()));
     // As a viewer shows it: turned by its orientation tag, its data window in its display window.
-    const ImageLayout layout = imageLayout(spec);
+    const ImageLayout layout = imageLayout(spec, in->format_name());
     Rgba8Pixels image;
     image.width = spec.width;
     image.height = spec.height;

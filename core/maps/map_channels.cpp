@@ -42,16 +42,7 @@ std::string others(const OIIO::ImageSpec& spec, const std::vector<int>& used) {
 }
 
 MapChannels weighted(std::vector<std::pair<int, float>> weights, std::string note) {
-    MapChannels chosen;
-    chosen.begin = weights.front().first;
-    chosen.end = chosen.begin + 1;
-    for (const auto& [c, weight] : weights) {
-        chosen.begin = std::min(chosen.begin, c);
-        chosen.end = std::max(chosen.end, c + 1);
-    }
-    chosen.weights = std::move(weights);
-    chosen.note = std::move(note);
-    return chosen;
+    return {std::move(weights), std::move(note)};
 }
 
 }  // namespace

@@ -12,8 +12,7 @@
 namespace grass::core {
 
 struct MapChannels {
-    // The channels read ([begin, end) of the file's) and the weight of each one used.
-    int begin = 0, end = 1;
+    // The channels used (the file's index) and the weight of each.
     std::vector<std::pair<int, float>> weights;
     std::string note;  // what was done, for the user; empty for one plain grey channel
 };

@@ -91,7 +91,7 @@ Result<MapImage> readMapFile(const fs::path& file) {
         return makeError(name,
                          "a deep image (several samples a pixel) cannot be a map: flatten "
                          "it (e.g. oiiotool --flatten) and save it again");
-    const ImageLayout layout = imageLayout(spec);
+    const ImageLayout layout = imageLayout(spec, in->format_name());
     if (auto fits = checkImageSize(name, layout.shownWidth(), layout.shownHeight(), MAX_MAP_SIDE);
         !fits)
         return fits.error();
@@ -117,8 +117,14 @@ Result<MapImage> readMapFile(const fs::path& file) {
     // makes transparent pixels 0 (said in a note).
     const std::string format = in->format_name();
     const int alpha = format == "webp" || format == "gif" ? alphaChannelOf(spec) : -1;
-    const int begin = alpha >= 0 ? std::min(chosen.begin, alpha) : chosen.begin;
-    const int end = alpha >= 0 ? std::max(chosen.end, alpha + 1) : chosen.end;
+    // One read of the channels from the first used to the last: OpenImageIO hands R, G, B, A
+    // (and Z) out first whatever the file's order (OpenEXR sorts channels by name), so this span
+    // is at most four channels.
+    int begin = alpha >= 0 ? alpha : chosen.weights.front().first, end = begin + 1;
+    for (const auto& weighted : chosen.weights) {
+        begin = std::min(begin, weighted.first);
+        end = std::max(end, weighted.first + 1);
+    }
     const int channels = end - begin;
     const auto rowFloats =
         static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(channels);

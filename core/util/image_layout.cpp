@@ -72,7 +72,7 @@ int alphaChannelOf(const OIIO::ImageSpec& spec) {
     return -1;
 }
 
-ImageLayout imageLayout(const OIIO::ImageSpec& spec) {
+ImageLayout imageLayout(const OIIO::ImageSpec& spec, std::string_view format) {
     ImageLayout layout;
     const int orientation = spec.get_int_attribute("Orientation", 1);
     layout.orientation = orientation >= 1 && orientation <= 8 ? orientation : 1;
@@ -82,7 +82,7 @@ ImageLayout imageLayout(const OIIO::ImageSpec& spec) {
     // data window): the whole data is the picture.
     const bool environment =
         spec.get_string_attribute("textureformat").find("Environment") != std::string::npos;
-    if (spec.full_width > 0 && spec.full_height > 0 && !environment) {
+    if (format == "openexr" && spec.full_width > 0 && spec.full_height > 0 && !environment) {
         layout.fullWidth = spec.full_width;
         layout.fullHeight = spec.full_height;
         layout.dataX = std::int64_t{spec.x} - spec.full_x;

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace grass::core {
@@ -36,11 +37,14 @@ struct ImageLayout {
 // channel 4 of 4), else the one named A or Alpha; -1 when there is none.
 int alphaChannelOf(const OIIO::ImageSpec& spec);
 
-// The layout `spec` describes. An orientation outside 1–8 reads as 1 (as stored); an empty
-// display window, or an environment map's (one face of a cube), as the data window. The data window may lie partly or wholly outside the display
+// The layout `spec` describes, read by OpenImageIO's `format` reader. Windows count for OpenEXR
+// only: OpenImageIO also puts a PNG's oFFs chunk (written by a crop that kept its page offset)
+// in the data window's origin, which viewers ignore, as grass does. An orientation outside 1–8
+// reads as 1 (as stored); an empty display window, or an environment map's (one face of a
+// cube), as the data window. The data window may lie partly or wholly outside the display
 // window: what lies outside is not shown. The caller checks the shown size before showImage
 // allocates it.
-ImageLayout imageLayout(const OIIO::ImageSpec& spec);
+ImageLayout imageLayout(const OIIO::ImageSpec& spec, std::string_view format);
 
 // What a user should be told about `layout` ("turned 90° clockwise by its EXIF orientation",
 // "its data window 315×100 at (1012, 1097) placed in its 1920×1920 display window, black

@@ -1,5 +1,6 @@
 #include "util/png_chunks.h"
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -12,8 +13,9 @@ namespace grass::core {
 namespace {
 
 constexpr std::int64_t MAX_CHUNK_LENGTH = 0x7fffffff;
-constexpr std::int64_t IHDR_LENGTH = 13;
+constexpr std::size_t IHDR_LENGTH = 13;
 constexpr int COLOUR_TYPE_PALETTE = 3;
+constexpr std::size_t BLOCK_BYTES = 64 * 1024;
 
 std::uint32_t bigEndian32(const unsigned char* bytes) {
     return static_cast<std::uint32_t>(bytes[0]) << 24 | static_cast<std::uint32_t>(bytes[1]) << 16 |
@@ -67,7 +69,7 @@ Result<void> checkPngChunks(std::istream& in, std::int64_t bytes, const std::str
     };
     int colourType = -1;
     bool palette = false, data = false;
-    std::vector<unsigned char> chunk;
+    std::vector<unsigned char> chunk, block;  // IHDR's data; a block of a chunk read
     for (bool first = true;; first = false) {
         std::array<unsigned char, 8> head{};
         if (!in.read(reinterpret_cast<char*>(head.data()), head.size()))
@@ -80,24 +82,32 @@ Result<void> checkPngChunks(std::istream& in, std::int64_t bytes, const std::str
                            " bytes and a 4-byte CRC, the file has " + std::to_string(left) +
                            " left");
         // Bit 5 of the first byte: an ancillary chunk, which libpng drops if its CRC is bad.
+        // Critical chunks are read in blocks for their CRC (an IDAT may be hundreds of MB); the
+        // header's data is kept.
         const bool critical = (head[4] & 0x20u) == 0;
-        const std::int64_t kept = critical || first ? length : 0;
-        chunk.resize(static_cast<std::size_t>(kept) + 4);
-        in.read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(kept));
-        if (kept < length)
-            in.seekg(length - kept, std::ios::cur);
-        in.read(reinterpret_cast<char*>(chunk.data() + kept), 4);
-        if (!in)
-            return damaged("the file ends inside chunk " + quotedName(type));
-        if (critical) {
-            const std::uint32_t crc = pngCrc(pngCrc(0, head.data() + 4, 4), chunk.data(),
-                                             static_cast<std::size_t>(length));
-            if (crc != bigEndian32(chunk.data() + kept))
-                return damaged("chunk " + quotedName(type) +
-                               " fails its CRC check (the file is corrupt)");
+        std::uint32_t crc = pngCrc(0, head.data() + 4, 4);
+        if (!critical && !first)
+            in.seekg(length, std::ios::cur);
+        for (std::int64_t done = 0; (critical || first) && done < length;) {
+            const auto step = static_cast<std::size_t>(
+                std::min<std::int64_t>(length - done, static_cast<std::int64_t>(BLOCK_BYTES)));
+            block.resize(step);
+            if (!in.read(reinterpret_cast<char*>(block.data()), static_cast<std::streamsize>(step)))
+                return damaged("the file ends inside chunk " + quotedName(type));
+            crc = pngCrc(crc, block.data(), step);
+            if (first && done == 0)
+                chunk.assign(block.begin(),
+                             block.begin() + std::min<std::size_t>(step, IHDR_LENGTH));
+            done += static_cast<std::int64_t>(step);
         }
+        std::array<unsigned char, 4> stored{};
+        if (!in.read(reinterpret_cast<char*>(stored.data()), 4))
+            return damaged("the file ends inside chunk " + quotedName(type));
+        if (critical && crc != bigEndian32(stored.data()))
+            return damaged("chunk " + quotedName(type) +
+                           " fails its CRC check (the file is corrupt)");
         if (first) {
-            if (type != "IHDR" || length != IHDR_LENGTH)
+            if (type != "IHDR" || length != static_cast<std::int64_t>(IHDR_LENGTH))
                 return damaged("the first chunk is " + quotedName(type) + " of " +
                                std::to_string(length) + " bytes, not a 13-byte IHDR");
             const std::int64_t width = bigEndian32(chunk.data());

@@ -125,6 +125,15 @@ Result<PalettedImage> decodeColourMappedTga(std::string_view bytes, const std::s
                                   h.entryBits, image.alpha);
 
     const auto count = static_cast<std::size_t>(h.width) * static_cast<std::size_t>(h.height);
+    // The fewest bytes the pixels can take (run-length: one full run packet per 128 pixels):
+    // a header that claims more pixels than the file can hold allocates nothing.
+    const std::size_t fewest = h.imageType == COLOUR_MAPPED
+                                   ? count * h.indexBytes()
+                                   : (count + 127) / 128 * (1 + h.indexBytes());
+    if (bytes.size() - mapAt - h.mapBytes() < fewest)
+        return damaged("the file holds " + std::to_string(bytes.size() - mapAt - h.mapBytes()) +
+                       " bytes of pixel data, fewer than " + std::to_string(count) +
+                       " pixels take");
     image.pixels.width = h.width;
     image.pixels.height = h.height;
     image.pixels.pixels.resize(count * 4);

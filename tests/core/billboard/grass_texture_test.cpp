@@ -29,16 +29,18 @@ TEST(GrassTextureFile, AWebpKeepsItsStoredColours) {
     EXPECT_EQ(texture->pixels[7], 0);
 }
 
-// Orientation 3 (turned 180°): stored left to right red, green: shown green, red.
+// Orientation 3 (turned 180°) of a 2×2 texture: stored red, green / blue, clear; shown clear,
+// blue / green, red (a mirror alone, orientation 2 or 4, would not give this).
 TEST(GrassTextureFile, AnOrientationTagTurnsTheTexture) {
     const fs::path file = test::scratchDir("grass_texture_orientation") / "turned.tif";
     {
         auto out = OIIO::ImageOutput::create(file.string());
         ASSERT_TRUE(out);
-        OIIO::ImageSpec spec(2, 1, 4, OIIO::TypeDesc::UINT8);
+        OIIO::ImageSpec spec(2, 2, 4, OIIO::TypeDesc::UINT8);
         spec.attribute("oiio:UnassociatedAlpha", 1);
         spec.attribute("Orientation", 3);
-        const std::vector<std::uint8_t> pixels = {255, 0, 0, 255, 0, 255, 0, 0};
+        const std::vector<std::uint8_t> pixels = {255, 0, 0,   255, 0, 255, 0, 255,
+                                                  0,   0, 255, 255, 9, 9,   9, 0};
         ASSERT_TRUE(out->open(file.string(), spec));
         ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
         ASSERT_TRUE(out->close());
@@ -46,9 +48,13 @@ TEST(GrassTextureFile, AnOrientationTagTurnsTheTexture) {
     const auto texture = loadGrassTexture(file);
     ASSERT_TRUE(texture.ok()) << texture.error().str();
     ASSERT_EQ(texture->width, 2);
-    EXPECT_EQ(texture->pixels[3], 0);    // the transparent green, now on the left
-    EXPECT_EQ(texture->pixels[4], 255);  // the opaque red, now on the right
-    EXPECT_EQ(texture->pixels[7], 255);
+    ASSERT_EQ(texture->height, 2);
+    const auto& p = texture->pixels;
+    EXPECT_EQ(p[3], 0);     // top left: the clear texel
+    EXPECT_EQ(p[6], 255);   // top right: blue
+    EXPECT_EQ(p[9], 255);   // bottom left: green
+    EXPECT_EQ(p[12], 255);  // bottom right: red
+    EXPECT_EQ(p[13] + p[14], 0);
 }
 
 }  // namespace

@@ -90,8 +90,6 @@ TEST(MapLayout, ChannelsAreChosenByTheirNames) {
     sorted.channelnames = {"A", "B", "G", "R"};
     sorted.alpha_channel = 0;
     const MapChannels rgb = chooseMapChannels(sorted);
-    EXPECT_EQ(rgb.begin, 1);
-    EXPECT_EQ(rgb.end, 4);
     ASSERT_EQ(rgb.weights.size(), 3u);
     EXPECT_EQ(rgb.weights[0], (std::pair<int, float>{3, 0.2126f}));  // R
     EXPECT_EQ(rgb.weights[2], (std::pair<int, float>{1, 0.0722f}));  // B
@@ -125,6 +123,46 @@ TEST(MapLayout, ChannelsAreChosenByTheirNames) {
     EXPECT_EQ(a->texels, (std::vector<float>{0.2f, 0.9f}));
     EXPECT_TRUE(anyWarning(*a, "its only channel is alpha (A): read as the value"))
         << allWarnings(*a);
+}
+
+// A render's OpenEXR keeps its channels sorted by name (A, B, G, N.x, P.x, R, Z); OpenImageIO
+// hands R, G, B, A, Z out first, and the map reads the luminance of R, G and B.
+TEST(MapLayout, ARendersChannelsReadTheirLuminance) {
+    const ScratchFolder dir("map-render");
+    OIIO::ImageSpec spec(1, 1, 7, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"A", "B", "G", "N.x", "P.x", "R", "Z"};
+    spec.alpha_channel = 0;
+    writeSpec(dir / "render.exr", spec, {0.5f, 0.0f, 0.0f, 9.0f, 9.0f, 1.0f, 9.0f});
+    {
+        auto in = OIIO::ImageInput::open((dir / "render.exr").string());
+        ASSERT_TRUE(in);
+        ASSERT_EQ(in->spec().channelnames.front(), "R");
+    }
+    const auto map = loadMapImage(dir / "render.exr");
+    ASSERT_TRUE(map.ok()) << map.error().str();
+    EXPECT_NEAR(map->texels[0], 0.2126f, 1e-6f);
+    EXPECT_TRUE(anyWarning(*map, "A, Z, N.x, P.x ignored")) << allWarnings(*map);
+}
+
+// A PNG cropped by a tool that keeps the page offset (an oFFs chunk; OpenImageIO reads it as the
+// data window's origin) is read as stored, as viewers show it.
+TEST(MapLayout, APngOffsetIsNotAWindow) {
+    const ScratchFolder dir("map-png-offset");
+    OIIO::ImageSpec spec(3, 1, 1, OIIO::TypeDesc::UINT8);
+    spec.x = 100;
+    spec.y = 50;
+    writeSpec(dir / "cropped.png", spec, {0.0f, 0.4f, 1.0f});
+    {
+        auto in = OIIO::ImageInput::open((dir / "cropped.png").string());
+        ASSERT_TRUE(in);
+        ASSERT_EQ(in->spec().x, 100);  // the offset is in the file
+    }
+    const auto map = loadMapImage(dir / "cropped.png");
+    ASSERT_TRUE(map.ok()) << map.error().str();
+    ASSERT_EQ(map->width, 3);
+    ASSERT_EQ(map->height, 1);
+    EXPECT_NEAR(map->texels[1], 0.4f, 0.5f / 255.0f);
+    EXPECT_FALSE(anyWarning(*map, "window")) << allWarnings(*map);
 }
 
 // libtiff reads a compressed separate-plane TIFF only from the top, whole: a read in bands of

@@ -62,7 +62,7 @@ TEST(ImageLayout, TheDataWindowSitsInTheDisplayWindowWithBlackAround) {
     spec.full_y = 0;
     spec.full_width = 4;
     spec.full_height = 3;
-    const ImageLayout layout = imageLayout(spec);
+    const ImageLayout layout = imageLayout(spec, "openexr");
     ASSERT_TRUE(layout.windowed());
     EXPECT_EQ(showImage(std::vector<float>{7, 8}, 1, layout),
               (std::vector<float>{0, 0, 0, 0, 0, 7, 8, 0, 0, 0, 0, 0}));
@@ -74,25 +74,36 @@ TEST(ImageLayout, TheDataWindowSitsInTheDisplayWindowWithBlackAround) {
     // Partly outside the display window: what lies outside is dropped, nothing is written out
     // of bounds.
     spec.x = 5;  // column 3 of the display, and one beyond it
-    EXPECT_EQ(showImage(std::vector<float>{7, 8}, 1, imageLayout(spec)),
+    EXPECT_EQ(showImage(std::vector<float>{7, 8}, 1, imageLayout(spec, "openexr")),
               (std::vector<float>{0, 0, 0, 0, 0, 0, 0, 7, 0, 0, 0, 0}));
     spec.x = 6;  // wholly beyond
-    EXPECT_EQ(showImage(std::vector<float>{7, 8}, 1, imageLayout(spec)),
+    EXPECT_EQ(showImage(std::vector<float>{7, 8}, 1, imageLayout(spec, "openexr")),
               (std::vector<float>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
     spec.x = -2147483647;  // far to the left: no offset overflows
-    EXPECT_EQ(showImage(std::vector<float>{7, 8}, 1, imageLayout(spec)),
+    EXPECT_EQ(showImage(std::vector<float>{7, 8}, 1, imageLayout(spec, "openexr")),
               (std::vector<float>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
 }
 
 // OpenEXR's cube environment maps stack six faces in the data window under a display window of
 // one face (OpenEXR's own "WavyCube" sample: 256×1536 under 256×256): all six are the picture.
+// OpenImageIO puts a PNG's oFFs offset (ImageMagick writes one after a crop that keeps its
+// page) in the data window's origin; viewers ignore it, and so do maps.
+TEST(ImageLayout, OnlyOpenExrWindowsCount) {
+    OIIO::ImageSpec spec(3, 2, 1, OIIO::TypeDesc::UINT8);
+    spec.x = 100;
+    spec.y = 50;
+    EXPECT_TRUE(imageLayout(spec, "openexr").windowed());
+    EXPECT_FALSE(imageLayout(spec, "png").windowed());
+    EXPECT_EQ(showImage(STORED, 1, imageLayout(spec, "png")), STORED);
+}
+
 TEST(ImageLayout, AnEnvironmentMapIsItsWholeDataWindow) {
     OIIO::ImageSpec spec(4, 24, 1, OIIO::TypeDesc::HALF);
     spec.full_width = 4;
     spec.full_height = 4;
-    EXPECT_TRUE(imageLayout(spec).windowed());
+    EXPECT_TRUE(imageLayout(spec, "openexr").windowed());
     spec.attribute("textureformat", "CubeFace Environment");
-    const ImageLayout layout = imageLayout(spec);
+    const ImageLayout layout = imageLayout(spec, "openexr");
     EXPECT_FALSE(layout.windowed());
     EXPECT_EQ(layout.shownHeight(), 24);
 }
@@ -101,12 +112,12 @@ TEST(ImageLayout, AnUnknownOrientationIsShownAsStoredAndAnEmptyDisplayWindowIsTh
     OIIO::ImageSpec spec(3, 2, 1, OIIO::TypeDesc::FLOAT);
     spec.attribute("Orientation", 9);
     spec.full_width = 0;
-    const ImageLayout layout = imageLayout(spec);
+    const ImageLayout layout = imageLayout(spec, "openexr");
     EXPECT_EQ(layout.orientation, 1);
     EXPECT_FALSE(layout.windowed());
     EXPECT_TRUE(imageLayoutNotes(layout).empty());
     spec.attribute("Orientation", 8);
-    const std::vector<std::string> notes = imageLayoutNotes(imageLayout(spec));
+    const std::vector<std::string> notes = imageLayoutNotes(imageLayout(spec, "openexr"));
     ASSERT_EQ(notes.size(), 1u);
     EXPECT_NE(notes[0].find("turned 90° anticlockwise"), std::string::npos) << notes[0];
 }

@@ -128,11 +128,18 @@ TEST(TgaPalette, DamagedFilesAreRefusedSayingWhat) {
     tga.pixels = std::string("\x00\x01", 2);
     refused = decodeColourMappedTga(tga.bytes(3), "bad.tga", 64);
     ASSERT_FALSE(refused);
-    EXPECT_NE(refused.error().str().find("ends after 2 of 4 pixels"), std::string::npos);
+    EXPECT_NE(refused.error().str().find("holds 2 bytes of pixel data, fewer than 4 pixels take"),
+              std::string::npos)
+        << refused.error().str();
 
     tga.type = 9;
     tga.pixels = std::string("\x85", 1);  // a run whose value is missing
     EXPECT_FALSE(decodeColourMappedTga(tga.bytes(3), "bad.tga", 64));
+    tga.pixels = std::string("\x00\x01", 2);  // one raw pixel, then nothing
+    refused = decodeColourMappedTga(tga.bytes(3), "bad.tga", 64);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().str().find("ends after 1 of 4 pixels"), std::string::npos)
+        << refused.error().str();
 
     tga.type = 1;
     tga.pixels.clear();
@@ -152,7 +159,7 @@ TEST(TgaPalette, DamagedFilesAreRefusedSayingWhat) {
     tga.pixels = std::string(130, '\0');
     refused = decodeColourMappedTga(tga.bytes(3), "bad.tga", 64);
     ASSERT_FALSE(refused);
-    EXPECT_NE(refused.error().str().find("64"), std::string::npos) << refused.error().str();
+    EXPECT_NE(refused.error().str().find("65×2"), std::string::npos) << refused.error().str();
     EXPECT_FALSE(decodeColourMappedTga(tga.bytes(3).substr(0, 10), "bad.tga", 64));
 }
 
