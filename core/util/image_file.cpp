@@ -13,7 +13,10 @@ namespace grass {
 namespace fs = std::filesystem;
 
 std::string oneLine(std::string text) {
-    const std::string joined = joinedLines(text);
+    // A reader that fails on every strip says so for each (200 lines for one damaged TIFF):
+    // the first three are the message.
+    constexpr std::size_t MOST_LINES = 3;
+    const std::string joined = joinedLines(text, MOST_LINES);
     return joined.empty() ? "the reader gave no reason (a damaged file, or a kind of it the "
                             "reader does not know)"
                           : joined;

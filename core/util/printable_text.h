@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -38,8 +39,9 @@ inline std::string quotedName(std::string_view name) {
 
 // A library's multi-line message as one line: its lines trimmed of spaces, tabs and returns,
 // empty lines and repeats dropped (a reader that fails twice on the same thing says so twice),
-// joined by "; ". Empty when no line holds anything.
-inline std::string joinedLines(std::string_view text) {
+// joined by "; "; past `most` lines, "; … (N more)". Empty when no line holds anything.
+inline std::string joinedLines(std::string_view text,
+                               std::size_t most = std::numeric_limits<std::size_t>::max()) {
     std::vector<std::string> lines;
     std::size_t start = 0;
     while (start <= text.size()) {
@@ -54,8 +56,10 @@ inline std::string joinedLines(std::string_view text) {
         start = end + 1;
     }
     std::string joined;
-    for (const std::string& line : lines)
-        joined += (joined.empty() ? "" : "; ") + line;
+    for (std::size_t i = 0; i < lines.size() && i < most; ++i)
+        joined += (joined.empty() ? "" : "; ") + lines[i];
+    if (lines.size() > most)
+        joined += "; … (" + std::to_string(lines.size() - most) + " more)";
     return joined;
 }
 

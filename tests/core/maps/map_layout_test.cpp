@@ -239,5 +239,19 @@ TEST(MapLayout, TiledCmykTiffsAreRefusedBeforeTheyCrash) {
     }
 }
 
+// Found by the map_tiff fuzz target (tests/fuzz/README.md): channels R, A, B and strips that end
+// early. Asking OpenImageIO 2.4 for channel R alone made its TIFF reader free memory it had not
+// allocated (an abort); all channels are read now, and the error is one short line.
+TEST(MapLayout, ADamagedTiffIsReadWithAllItsChannels) {
+    const fs::path file =
+        test::sourceDir() / "tests/fuzz/regressions/map_tiff/some-channels-of-a-damaged-strip.tif";
+    const auto map = loadMapImage(file);
+    ASSERT_FALSE(map.ok());
+    const std::string message = map.error().str();
+    EXPECT_NE(message.find("cannot read the pixels"), std::string::npos) << message;
+    EXPECT_NE(message.find("more)"), std::string::npos) << message;
+    EXPECT_LT(message.size(), 600u) << message;
+}
+
 }  // namespace
 }  // namespace grass::core

@@ -194,6 +194,8 @@ TEST(ImageOpen, ReaderMessagesComeOnOneLineOnceAndNeverEmpty) {
     EXPECT_EQ(oneLine("Subsampled channels\nSubsampled channels \r\nline 2\n"),
               "Subsampled channels; line 2");
     EXPECT_EQ(oneLine("plain"), "plain");
+    EXPECT_EQ(oneLine("strip 0\nstrip 1\nstrip 2\nstrip 3\nstrip 4\n"),
+              "strip 0; strip 1; strip 2; … (2 more)");
     EXPECT_NE(oneLine("").find("the reader gave no reason"), std::string::npos);
     EXPECT_NE(oneLine(" \n\n").find("the reader gave no reason"), std::string::npos);
 }
