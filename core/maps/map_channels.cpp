@@ -9,9 +9,6 @@ namespace grass::core {
 
 namespace {
 
-// Rec. 709 luma weights.
-constexpr float LUMA_R = 0.2126f, LUMA_G = 0.7152f, LUMA_B = 0.0722f;
-
 const std::string LUMINANCE = "converted to luminance (Rec. 709 weights on the stored values)";
 
 std::string channelName(const OIIO::ImageSpec& spec, int c) {

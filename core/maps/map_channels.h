@@ -11,6 +11,9 @@
 
 namespace grass::core {
 
+// Rec. 709 luma weights: a colour's value is their sum over its stored R, G and B.
+inline constexpr float LUMA_R = 0.2126f, LUMA_G = 0.7152f, LUMA_B = 0.0722f;
+
 struct MapChannels {
     // The channels used (the file's index) and the weight of each.
     std::vector<std::pair<int, float>> weights;

@@ -40,8 +40,6 @@ Result<MapImage> readColourMappedTgaMap(const fs::path& file) {
     if (!decoded)
         return decoded.error();
     const Rgba8Pixels& image = decoded->pixels;
-    const OIIO::ImageSpec rgba(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
-    const MapChannels chosen = chooseMapChannels(rgba);
     MapImage map;
     map.width = image.width;
     map.height = image.height;
@@ -51,11 +49,9 @@ Result<MapImage> readColourMappedTgaMap(const fs::path& file) {
                            (decoded->alpha ? "; alpha ignored" : ""));
     map.texels.reserve(image.pixels.size() / 4);
     for (std::size_t i = 0; i + 4 <= image.pixels.size(); i += 4) {
-        float value = 0.0f;
-        for (const auto& [c, weight] : chosen.weights)
-            value += weight * static_cast<float>(image.pixels[i + static_cast<std::size_t>(c)]) /
-                     255.0f;
-        map.texels.push_back(std::clamp(value, 0.0f, 1.0f));
+        const float value =
+            LUMA_R * image.pixels[i] + LUMA_G * image.pixels[i + 1] + LUMA_B * image.pixels[i + 2];
+        map.texels.push_back(std::clamp(value / 255.0f, 0.0f, 1.0f));
     }
     return map;
 }
@@ -169,28 +165,24 @@ Result<MapImage> readMapFile(const fs::path& file) {
     // separate-plane TIFF (one plane after another, compressed) only from the top, whole.
     const bool wholeOnly =
         spec.tile_width != 0 || spec.get_string_attribute("planarconfig") == "separate";
-    const std::size_t wholeBytes = rowFloats * static_cast<std::size_t>(spec.height) * sizeof(float);
+    const std::size_t wholeBytes =
+        rowFloats * static_cast<std::size_t>(spec.height) * sizeof(float);
     if (wholeOnly && wholeBytes > MAX_WHOLE_READ_BYTES)
-        return makeError(name, "a tiled or separate-plane image of " +
-                                   std::to_string(spec.width) + "×" +
-                                   std::to_string(spec.height) + " pixels and " +
+        return makeError(name, "a tiled or separate-plane image of " + std::to_string(spec.width) +
+                                   "×" + std::to_string(spec.height) + " pixels and " +
                                    std::to_string(channels) + " channels needs " +
                                    std::to_string(wholeBytes >> 30) +
                                    " GiB to read, more than a map may take: save it with strips "
                                    "(scanlines) or fewer channels");
-    if (!wholeOnly) {
-        for (int row = 0; row < spec.height; row += ROWS_PER_BAND) {
-            const int rows = std::min(ROWS_PER_BAND, spec.height - row);
-            band.assign(rowFloats * static_cast<std::size_t>(rows), 0.0f);
-            if (!in->read_scanlines(0, 0, spec.y + row, spec.y + row + rows, 0, begin, end,
-                                    OIIO::TypeDesc::FLOAT, band.data()))
-                return makeError(
-                    name, "cannot read the pixels: " + oneLine(in->geterror()) + RESAVE_HINT);
-            fold(band);
-        }
-    } else {
-        band.assign(rowFloats * static_cast<std::size_t>(spec.height), 0.0f);
-        if (!in->read_image(0, 0, begin, end, OIIO::TypeDesc::FLOAT, band.data()))
+    for (int row = 0, bandRows = wholeOnly ? spec.height : ROWS_PER_BAND; row < spec.height;
+         row += bandRows) {
+        const int rows = std::min(bandRows, spec.height - row);
+        band.assign(rowFloats * static_cast<std::size_t>(rows), 0.0f);
+        const bool read = wholeOnly
+                              ? in->read_image(0, 0, begin, end, OIIO::TypeDesc::FLOAT, band.data())
+                              : in->read_scanlines(0, 0, spec.y + row, spec.y + row + rows, 0,
+                                                   begin, end, OIIO::TypeDesc::FLOAT, band.data());
+        if (!read)
             return makeError(name,
                              "cannot read the pixels: " + oneLine(in->geterror()) + RESAVE_HINT);
         fold(band);

@@ -8,6 +8,7 @@
 
 #include "util/file_extension.h"
 #include "util/image_file.h"
+#include "util/tga_palette.h"
 
 namespace grass::core {
 
@@ -16,9 +17,6 @@ namespace {
 // Enough for the longest signature (PNG's 8 bytes) and the TGA header's image type (byte 2).
 constexpr std::size_t HEAD_BYTES = 8;
 
-// TGA header (Truevision TGA 2.0, "Image Type"): 1 uncompressed and 9 run-length colour-mapped.
-constexpr unsigned char TGA_COLOUR_MAPPED = 1;
-constexpr unsigned char TGA_COLOUR_MAPPED_RLE = 9;
 // TIFF 6.0's PhotometricInterpretation 5: separated (CMYK).
 constexpr int TIFF_PHOTOMETRIC_SEPARATED = 5;
 
@@ -67,8 +65,7 @@ Result<OIIO::ImageInput::unique_ptr> openImageInput(const std::string& name,
         return makeError(name, std::string("an image in OpenImageIO's \"") + in->format_name() +
                                    "\" format, which grass does not read: use PNG, JPEG, TIFF, "
                                    "OpenEXR, TGA, BMP, GIF, WebP, Radiance HDR or PNM");
-    if (std::string(in->format_name()) == "targa" && head.size() >= 3 &&
-        (head[2] == TGA_COLOUR_MAPPED || head[2] == TGA_COLOUR_MAPPED_RLE))
+    if (isColourMappedTga(name, head))
         return makeError(name,
                          "a colour-mapped (palette) TGA is not read: OpenImageIO 2.4 "
                          "looks its pixels up in the palette without checking them, and a "

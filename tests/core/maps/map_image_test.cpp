@@ -16,6 +16,7 @@
 #include "util/rng.h"
 
 #include "support/scratch_folder.h"
+#include "support/spec_on_disk.h"
 
 namespace grass::core {
 namespace {
@@ -23,6 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 
 using test::ScratchFolder;
+using test::specOnDisk;
 
 MapImage randomMap(int width, int height, std::uint64_t seed) {
     MapImage map = makeConstantMap(width, height, 0.0f);
@@ -53,16 +55,6 @@ void writeWithOiio(const fs::path& file, int width, int height, int channels,
     ASSERT_TRUE(out->open(file.string(), spec));
     ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
     ASSERT_TRUE(out->close());
-}
-
-// The sample type and channel count stored in the file, as OIIO's reader reports them.
-OIIO::ImageSpec specOnDisk(const fs::path& file) {
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in)
-        return {};
-    OIIO::ImageSpec spec = in->spec();
-    in->close();
-    return spec;
 }
 
 void expectOneLineErrorNaming(const Result<MapImage>& result, const std::string& file,

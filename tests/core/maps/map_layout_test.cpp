@@ -12,6 +12,7 @@
 #include "maps/map_channels.h"
 #include "maps/map_image.h"
 #include "support/scratch_folder.h"
+#include "support/spec_on_disk.h"
 #include "support/test_paths.h"
 #include "util/image_file.h"
 
@@ -133,11 +134,7 @@ TEST(MapLayout, ARendersChannelsReadTheirLuminance) {
     spec.channelnames = {"A", "B", "G", "N.x", "P.x", "R", "Z"};
     spec.alpha_channel = 0;
     writeSpec(dir / "render.exr", spec, {0.5f, 0.0f, 0.0f, 9.0f, 9.0f, 1.0f, 9.0f});
-    {
-        auto in = OIIO::ImageInput::open((dir / "render.exr").string());
-        ASSERT_TRUE(in);
-        ASSERT_EQ(in->spec().channelnames.front(), "R");
-    }
+    ASSERT_EQ(test::specOnDisk(dir / "render.exr").channel_name(0), "R");
     const auto map = loadMapImage(dir / "render.exr");
     ASSERT_TRUE(map.ok()) << map.error().str();
     EXPECT_NEAR(map->texels[0], 0.2126f, 1e-6f);
@@ -152,11 +149,7 @@ TEST(MapLayout, APngOffsetIsNotAWindow) {
     spec.x = 100;
     spec.y = 50;
     writeSpec(dir / "cropped.png", spec, {0.0f, 0.4f, 1.0f});
-    {
-        auto in = OIIO::ImageInput::open((dir / "cropped.png").string());
-        ASSERT_TRUE(in);
-        ASSERT_EQ(in->spec().x, 100);  // the offset is in the file
-    }
+    ASSERT_EQ(test::specOnDisk(dir / "cropped.png").x, 100);  // the offset is in the file
     const auto map = loadMapImage(dir / "cropped.png");
     ASSERT_TRUE(map.ok()) << map.error().str();
     ASSERT_EQ(map->width, 3);
@@ -172,12 +165,9 @@ TEST(MapLayout, APngOffsetIsNotAWindow) {
 // G = 255 − R, B = 128.
 TEST(MapLayout, ASeparatePlaneTiffTallerThanABandIsRead) {
     const fs::path file = test::sourceDir() / "tests/data/maps/separate_planes.tif";
-    {
-        auto in = OIIO::ImageInput::open(file.string());
-        ASSERT_TRUE(in);
-        ASSERT_EQ(in->spec().get_string_attribute("planarconfig"), "separate");
-        ASSERT_EQ(in->spec().get_int_attribute("tiff:RowsPerStrip"), 29);
-    }
+    const OIIO::ImageSpec stored = test::specOnDisk(file);
+    ASSERT_EQ(stored.get_string_attribute("planarconfig"), "separate");
+    ASSERT_EQ(stored.get_int_attribute("tiff:RowsPerStrip"), 29);
     const auto map = loadMapImage(file);
     ASSERT_TRUE(map.ok()) << map.error().str();
     ASSERT_EQ(map->width, 3);
