@@ -20,7 +20,7 @@
 namespace grass::core {
 
 struct GltfImport {
-    SurfaceMesh mesh;
+    MovableSurfaceMesh mesh;
     bool hasNormals = false;         // every merged primitive carried NORMAL
     bool hasUv = false;              // every merged primitive carried TEXCOORD_0
     std::vector<std::string> notes;  // things skipped or generated, one line each

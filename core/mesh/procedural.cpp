@@ -153,7 +153,7 @@ void addOrientedTriangle(SurfaceMeshBuilder& builder, const std::vector<SurfaceP
 
 // collapseV0/collapseV1: the v = 0 / v = 1 row is a single point (a sphere's pole); the quads
 // touching it become one triangle each instead of a degenerate pair.
-SurfaceMesh buildGrid(int nu, int nv, const Parametrisation& surface, bool collapseV0 = false,
+MovableSurfaceMesh buildGrid(int nu, int nv, const Parametrisation& surface, bool collapseV0 = false,
                       bool collapseV1 = false) {
     SurfaceMeshBuilder builder;
     std::vector<SurfacePoint> points;
@@ -232,7 +232,7 @@ float hillsHeight(const ProceduralMeshParams& params, float x, float z) {
     return static_cast<float>(hillsNoise(params, x, z).value);
 }
 
-SurfaceMesh makeProceduralMesh(const ProceduralMeshParams& params) {
+MovableSurfaceMesh makeProceduralMesh(const ProceduralMeshParams& params) {
     const double size = static_cast<double>(params.size);
     const double minor = static_cast<double>(params.minorSize);
     const int res = std::clamp(params.resolution, 1, MAX_RESOLUTION);
@@ -286,7 +286,7 @@ SurfaceMesh makeProceduralMesh(const ProceduralMeshParams& params) {
                 return SurfacePoint{glm::vec3(p), safeNormalize(glm::cross(dPhi, dT), {0, 1, 0})};
             });
     }
-    return SurfaceMesh{};
+    return MovableSurfaceMesh{};
 }
 
 }  // namespace grass::core

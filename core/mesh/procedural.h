@@ -31,7 +31,7 @@ Result<ProceduralShape> parseProceduralShape(std::string_view name);
 std::string_view proceduralShapeName(ProceduralShape shape);
 std::vector<std::string_view> proceduralShapeNames();
 
-SurfaceMesh makeProceduralMesh(const ProceduralMeshParams& params);
+MovableSurfaceMesh makeProceduralMesh(const ProceduralMeshParams& params);
 
 // Height of the hills terrain at (x, z), so tests and cameras can use the same function.
 float hillsHeight(const ProceduralMeshParams& params, float x, float z);

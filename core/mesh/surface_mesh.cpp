@@ -16,9 +16,9 @@ glm::vec2 toGlm(const OpenMesh::Vec2f& v) {
 }
 
 std::uint32_t SurfaceMeshBuilder::addVertex(glm::vec3 position, glm::vec3 normal, glm::vec2 uv) {
-    const auto vh = mMesh.add_vertex(OpenMesh::Vec3f(position.x, position.y, position.z));
-    mMesh.set_normal(vh, OpenMesh::Vec3f(normal.x, normal.y, normal.z));
-    mMesh.set_texcoord2D(vh, OpenMesh::Vec2f(uv.x, uv.y));
+    const auto vh = mMesh->add_vertex(OpenMesh::Vec3f(position.x, position.y, position.z));
+    mMesh->set_normal(vh, OpenMesh::Vec3f(normal.x, normal.y, normal.z));
+    mMesh->set_texcoord2D(vh, OpenMesh::Vec2f(uv.x, uv.y));
     return static_cast<std::uint32_t>(vh.idx());
 }
 
@@ -27,27 +27,27 @@ void SurfaceMeshBuilder::addTriangle(std::uint32_t a, std::uint32_t b, std::uint
         ++mDegenerate;
         return;
     }
-    const SurfaceMesh::VertexHandle handles[3] = {mMesh.vertex_handle(static_cast<int>(a)),
-                                                  mMesh.vertex_handle(static_cast<int>(b)),
-                                                  mMesh.vertex_handle(static_cast<int>(c))};
+    const SurfaceMesh::VertexHandle handles[3] = {mMesh->vertex_handle(static_cast<int>(a)),
+                                                  mMesh->vertex_handle(static_cast<int>(b)),
+                                                  mMesh->vertex_handle(static_cast<int>(c))};
     // OpenMesh logs "complex edge" when it refuses a face; the refusal is handled below, so
     // the log line would only alarm the user.
     omerr().disable();
-    const bool added = mMesh.add_face(handles[0], handles[1], handles[2]).is_valid();
+    const bool added = mMesh->add_face(handles[0], handles[1], handles[2]).is_valid();
     omerr().enable();
     if (added)
         return;
     SurfaceMesh::VertexHandle copies[3];
     for (int i = 0; i < 3; ++i) {
         // Copies, not references: add_vertex may reallocate the arrays they point into.
-        const OpenMesh::Vec3f point = mMesh.point(handles[i]);
-        const OpenMesh::Vec3f normal = mMesh.normal(handles[i]);
-        const OpenMesh::Vec2f uv = mMesh.texcoord2D(handles[i]);
-        copies[i] = mMesh.add_vertex(point);
-        mMesh.set_normal(copies[i], normal);
-        mMesh.set_texcoord2D(copies[i], uv);
+        const OpenMesh::Vec3f point = mMesh->point(handles[i]);
+        const OpenMesh::Vec3f normal = mMesh->normal(handles[i]);
+        const OpenMesh::Vec2f uv = mMesh->texcoord2D(handles[i]);
+        copies[i] = mMesh->add_vertex(point);
+        mMesh->set_normal(copies[i], normal);
+        mMesh->set_texcoord2D(copies[i], uv);
     }
-    mMesh.add_face(copies[0], copies[1], copies[2]);
+    mMesh->add_face(copies[0], copies[1], copies[2]);
     ++mDuplicated;
 }
 

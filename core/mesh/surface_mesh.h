@@ -7,7 +7,10 @@
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <memory>
 #include <vector>
+
+#include "util/assert.h"
 
 namespace grass::core {
 
@@ -19,6 +22,43 @@ struct SurfaceMeshTraits : public OpenMesh::DefaultTraits {
 };
 
 using SurfaceMesh = OpenMesh::TriMesh_ArrayKernelT<SurfaceMeshTraits>;
+
+// A SurfaceMesh that moves. OpenMesh's kernels declare destructors, so C++ gives them no move
+// constructor or move assignment: std::move on a SurfaceMesh copies every vertex, face and
+// property. An 8-million-triangle ground took three such copies between the glTF reader and
+// the built scene (about a second and a gigabyte each). This holds the mesh on the heap, so a
+// move hands the pointer over; a copy is still a deep copy. It converts to SurfaceMesh& where a
+// function takes one; members are reached with ->. A moved-from one may only be assigned to or
+// destroyed.
+class MovableSurfaceMesh {
+public:
+    MovableSurfaceMesh() : mMesh(std::make_unique<SurfaceMesh>()) {}
+    MovableSurfaceMesh(const MovableSurfaceMesh& other)
+        : mMesh(std::make_unique<SurfaceMesh>(*other)) {}
+    MovableSurfaceMesh(MovableSurfaceMesh&&) noexcept = default;
+    MovableSurfaceMesh& operator=(const MovableSurfaceMesh& other) {
+        if (this != &other)
+            mMesh = std::make_unique<SurfaceMesh>(*other);
+        return *this;
+    }
+    MovableSurfaceMesh& operator=(MovableSurfaceMesh&&) noexcept = default;
+
+    SurfaceMesh& operator*() {
+        GRASS_ASSERT(mMesh);  // a moved-from one was used
+        return *mMesh;
+    }
+    const SurfaceMesh& operator*() const {
+        GRASS_ASSERT(mMesh);
+        return *mMesh;
+    }
+    SurfaceMesh* operator->() { return &**this; }
+    const SurfaceMesh* operator->() const { return &**this; }
+    operator SurfaceMesh&() { return **this; }
+    operator const SurfaceMesh&() const { return **this; }
+
+private:
+    std::unique_ptr<SurfaceMesh> mMesh;
+};
 
 struct Bounds {
     glm::vec3 min{0.0f};
@@ -47,11 +87,11 @@ public:
     void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
     std::size_t degenerateTriangles() const { return mDegenerate; }
     std::size_t duplicatedForManifold() const { return mDuplicated; }
-    SurfaceMesh& mesh() { return mMesh; }
-    SurfaceMesh take() { return std::move(mMesh); }
+    SurfaceMesh& mesh() { return *mMesh; }
+    MovableSurfaceMesh take() { return std::move(mMesh); }
 
 private:
-    SurfaceMesh mMesh;
+    MovableSurfaceMesh mMesh;
     std::size_t mDegenerate = 0;
     std::size_t mDuplicated = 0;
 };

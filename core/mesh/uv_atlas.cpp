@@ -77,7 +77,7 @@ CornerUvs generateUvAtlas(const SurfaceMesh& mesh, const AtlasParams& params, At
     return uvs;
 }
 
-SurfaceMesh withCornerUvs(const SurfaceMesh& mesh, const CornerUvs& uvs) {
+MovableSurfaceMesh withCornerUvs(const SurfaceMesh& mesh, const CornerUvs& uvs) {
     GRASS_ASSERT(uvs.size() == mesh.n_faces());
     constexpr std::uint32_t NONE = UINT32_MAX;
     SurfaceMeshBuilder builder;
@@ -109,10 +109,10 @@ SurfaceMesh withCornerUvs(const SurfaceMesh& mesh, const CornerUvs& uvs) {
         }
         builder.addTriangle(index[0], index[1], index[2]);
     }
-    SurfaceMesh out = builder.take();
+    MovableSurfaceMesh out = builder.take();
     // The builder gives a refused face its own vertices rather than dropping it, and source
     // faces never repeat a vertex, so every face arrives, in order.
-    GRASS_ASSERT(out.n_faces() == mesh.n_faces());
+    GRASS_ASSERT(out->n_faces() == mesh.n_faces());
     return out;
 }
 

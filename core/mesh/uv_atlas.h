@@ -89,6 +89,6 @@ CornerUvs generateUvAtlas(const SurfaceMesh& mesh, const AtlasParams& params,
 // A copy of `mesh` whose UV0 is `uvs`: a vertex used by corners with different UVs is split into
 // copies (position and normal kept); face i of the result is face i of `mesh`, which other
 // per-face data relies on. Vertices no face uses are left out.
-SurfaceMesh withCornerUvs(const SurfaceMesh& mesh, const CornerUvs& uvs);
+MovableSurfaceMesh withCornerUvs(const SurfaceMesh& mesh, const CornerUvs& uvs);
 
 }  // namespace grass::core

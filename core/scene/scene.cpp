@@ -106,7 +106,7 @@ static Result<void> refuseHugeScene(const LoadedProject& loaded, double area) {
     return {};
 }
 
-Result<SurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes,
+Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes,
                                     SurfaceLook* look, PaintUvs* paintUvs, glm::dvec3* groundOrigin) {
     const MeshSource& source = loaded.project.mesh;
     if (!source.isFile)
@@ -167,7 +167,7 @@ static RuleWorld ruleWorldOf(const Project& project, const std::vector<SceneProp
     world.gravityMode = project.physics.gravityMode;
     for (const SceneProp& prop : props) {
         const glm::mat4 model = prop.modelAt(0.0f);
-        for (const auto fh : prop.mesh.faces()) {
+        for (const auto fh : prop.mesh->faces()) {
             auto corners = facePositions(prop.mesh, fh);
             for (glm::vec3& corner : corners)
                 corner = glm::vec3(model * glm::vec4(corner, 1.0f));
@@ -177,7 +177,7 @@ static RuleWorld ruleWorldOf(const Project& project, const std::vector<SceneProp
     return world;
 }
 
-Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, SurfaceMesh mesh,
+Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh mesh,
                                  std::vector<std::string> notes, glm::dvec3 groundOrigin) {
     Scene scene;
     scene.groundOrigin = groundOrigin;

@@ -50,7 +50,7 @@ struct BillboardLayer {
 };
 
 struct Scene {
-    SurfaceMesh mesh;
+    MovableSurfaceMesh mesh;
     Bounds bounds;
     double area = 0.0;
     std::vector<LayerField> layers;
@@ -151,7 +151,7 @@ Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
 // gets the surface's own material (surface_look.h; nothing for a procedural surface).
 // `paintUvs`, when given, gets how the surface's UVs were made paintable (paint_uvs.h);
 // `groundOrigin` the file's point the mesh's origin stands for (Scene::groundOrigin).
-Result<SurfaceMesh> loadProjectMesh(const LoadedProject& project, std::vector<std::string>* notes,
+Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& project, std::vector<std::string>* notes,
                                     SurfaceLook* look = nullptr, PaintUvs* paintUvs = nullptr,
                                     glm::dvec3* groundOrigin = nullptr);
 
@@ -161,7 +161,7 @@ glm::dvec3 groundOriginOf(const LoadedProject& project);
 
 // Grows the layers of `project` on a mesh already loaded (so a file is read once);
 // `groundOrigin` is loadProjectMesh's (the mesh colliders in a moved ground's frame follow it).
-Result<Scene> buildSceneFromMesh(const LoadedProject& project, SurfaceMesh mesh,
+Result<Scene> buildSceneFromMesh(const LoadedProject& project, MovableSurfaceMesh mesh,
                                  std::vector<std::string> notes,
                                  glm::dvec3 groundOrigin = glm::dvec3(0.0));
 

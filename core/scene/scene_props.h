@@ -18,7 +18,7 @@ namespace grass::core {
 
 struct SceneProp {
     std::string name;
-    SurfaceMesh mesh;           // in the prop's own frame: unit sphere or the file's coordinates
+    MovableSurfaceMesh mesh;    // in the prop's own frame: unit sphere or the file's coordinates
     glm::vec3 position{0.0f};   // origin (sphere centre, mesh origin) when there is no path
     float scale = 1.0f;         // sphere radius, or the mesh collider's scale
     std::vector<PathKey> path;  // moves the origin over time, as the physics does

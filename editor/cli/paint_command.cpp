@@ -42,7 +42,7 @@ struct PaintTarget {
 // The mesh with the texel positions of the map on it, built before the field: --uv points and
 // the default radius need them.
 struct PaintSurface {
-    core::SurfaceMesh mesh;
+    core::MovableSurfaceMesh mesh;
     core::PaintUvs uvs;  // a generated atlas is kept with the map painted in it
     std::vector<std::string> notes;
     glm::dvec3 groundOrigin{0.0};  // Scene::groundOrigin

@@ -72,7 +72,7 @@ void printRenderSummary(const std::string& out, const core::Scene& scene, double
     const render::FrameTimings& last = rendered.lastFrame;
     std::printf("wrote %s (%dx%d)\n", out.c_str(), request.width, request.height);
     std::printf("  scene      %zu triangles, %zu blades in %zu layer(s), built in %.1f ms\n",
-                scene.mesh.n_faces(), scene.totalBlades(), scene.layers.size(), buildMs);
+                scene.mesh->n_faces(), scene.totalBlades(), scene.layers.size(), buildMs);
     std::printf("  renderer   %s, geometry %s, %dx MSAA\n", gl::rendererDescription().c_str(),
                 render::geometryPathLabel(request.options.geometry), request.msaaSamples);
     std::printf("  frames     %zu, wall ms: first %.1f, median %.1f, min %.1f\n",

@@ -343,7 +343,7 @@ int main(int argc, char** argv) {
     const FloatTarget target = makeFloatTarget();
     const std::string device = gl::rendererDescription();
     std::fprintf(stderr, "GL: %s\nproject: %s, %zu triangles, %zu props\n", device.c_str(),
-                 loaded->file.string().c_str(), scene->mesh.n_faces(), scene->props.size());
+                 loaded->file.string().c_str(), scene->mesh->n_faces(), scene->props.size());
 
     Bench bench{**renderer, *camera,
                 target,     render::renderOptionsFor(loaded->project, gl::isSoftwareRenderer()),

@@ -209,7 +209,7 @@ void expectReimportMatches(const Built& built, const fs::path& dir, const std::s
     EXPECT_EQ(gltf.model.meshes[0].name, "terrain");
     const int positions = gltf.model.meshes[0].primitives[0].attributes.at("POSITION");
     EXPECT_EQ(gltf.model.accessors[static_cast<std::size_t>(positions)].count,
-              built.scene.mesh.n_vertices());
+              built.scene.mesh->n_vertices());
 }
 
 TEST(Export, GltfReimportsEveryLiveBladeAsAnInstance) {
@@ -334,7 +334,7 @@ TEST(Export, GlbHoldsEveryLayerOverOneTerrain) {
                 terrainTriangles += model.accessors.at(std::size_t(primitive.indices)).count / 3;
     const auto ground = loadGltf(dir / "out/two_layers.glb");
     ASSERT_TRUE(ground.ok()) << ground.error().str();
-    EXPECT_EQ(ground->mesh.n_faces(), terrainTriangles);
+    EXPECT_EQ(ground->mesh->n_faces(), terrainTriangles);
     ASSERT_EQ(report->layers.size(), 2u);
     EXPECT_EQ(report->layers[1].instances, built.scene.layers[1].liveBlades);
     // The grass layer's density map, embedded (no file next to the .glb).

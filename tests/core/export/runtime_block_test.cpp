@@ -97,10 +97,10 @@ TEST(RuntimeBlock, TheRawExportCarriesTheProjectsBehaviour) {
     // The meshes: the terrain with every vertex and triangle, then the ball's prop.
     ASSERT_EQ(runtime["meshes"].size(), 2u);
     const json& terrain = runtime["meshes"][0];
-    EXPECT_EQ(terrain["vertex_count"], windy.scene.mesh.n_vertices());
-    EXPECT_EQ(terrain["index_count"], 3 * windy.scene.mesh.n_faces());
+    EXPECT_EQ(terrain["vertex_count"], windy.scene.mesh->n_vertices());
+    EXPECT_EQ(terrain["index_count"], 3 * windy.scene.mesh->n_faces());
     EXPECT_EQ(fs::file_size(dir / terrain["file"].get<std::string>()),
-              32 * windy.scene.mesh.n_vertices() + 12 * windy.scene.mesh.n_faces());
+              32 * windy.scene.mesh->n_vertices() + 12 * windy.scene.mesh->n_faces());
     EXPECT_EQ(ball["mesh"], 1);
 
     // The baked shading, slot for slot as the renderer uploads it.
@@ -208,8 +208,8 @@ TEST(RuntimeBlock, AMovedGroundsOriginTravelsWithTheExport) {
     // The formula of docs/runtime.md takes the export's terrain back onto the file's: flat at
     // z = 120, its corners at the node's translation ± 20 file units.
     glm::dvec3 lo(1e300), hi(-1e300);
-    for (const auto vertex : moved.scene.mesh.vertices()) {
-        const glm::vec3 p = toGlm(moved.scene.mesh.point(vertex));
+    for (const auto vertex : moved.scene.mesh->vertices()) {
+        const glm::vec3 p = toGlm(moved.scene.mesh->point(vertex));
         const glm::dvec3 back = point + glm::dvec3(p.x, -p.z, p.y) / 0.01;
         lo = glm::min(lo, back);
         hi = glm::max(hi, back);

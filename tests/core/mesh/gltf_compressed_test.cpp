@@ -103,7 +103,7 @@ TEST(GltfCompressed, MeshoptDecodesToTheSameTriangles) {
     // The stock viewer's reader decodes the same way.
     auto view = loadGltfView(dir / "meshopt.glb", 1000);
     ASSERT_TRUE(view.ok()) << view.error().str();
-    EXPECT_EQ(view->indices.size(), 3 * plain.mesh.n_faces());
+    EXPECT_EQ(view->indices.size(), 3 * plain.mesh->n_faces());
 }
 
 TEST(GltfCompressed, BrokenDracoIsRefusedByName) {

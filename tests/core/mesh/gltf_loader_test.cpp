@@ -78,12 +78,12 @@ void expectOutwardFacesAndNormals(const SurfaceMesh& mesh, glm::vec3 centre) {
 }
 
 void expectSameMesh(const GltfImport& a, const GltfImport& b) {
-    ASSERT_EQ(a.mesh.n_vertices(), b.mesh.n_vertices());
-    ASSERT_EQ(a.mesh.n_faces(), b.mesh.n_faces());
-    for (const auto vh : a.mesh.vertices()) {
-        EXPECT_EQ(a.mesh.point(vh), b.mesh.point(vh)) << "vertex " << vh.idx();
-        EXPECT_EQ(a.mesh.normal(vh), b.mesh.normal(vh)) << "vertex " << vh.idx();
-        EXPECT_EQ(a.mesh.texcoord2D(vh), b.mesh.texcoord2D(vh)) << "vertex " << vh.idx();
+    ASSERT_EQ(a.mesh->n_vertices(), b.mesh->n_vertices());
+    ASSERT_EQ(a.mesh->n_faces(), b.mesh->n_faces());
+    for (const auto vh : a.mesh->vertices()) {
+        EXPECT_EQ(a.mesh->point(vh), b.mesh->point(vh)) << "vertex " << vh.idx();
+        EXPECT_EQ(a.mesh->normal(vh), b.mesh->normal(vh)) << "vertex " << vh.idx();
+        EXPECT_EQ(a.mesh->texcoord2D(vh), b.mesh->texcoord2D(vh)) << "vertex " << vh.idx();
     }
     EXPECT_EQ(triangleIndices(a.mesh), triangleIndices(b.mesh));
 }
@@ -142,9 +142,9 @@ TEST(GltfLoader, AGroundFarFromItsOriginIsMovedNextToGrasssOrigin) {
     EXPECT_EQ(moved->origin, glm::dvec3(512345.0, 120.0, 5412345.0));
     EXPECT_TRUE(anyNoteContains(*moved, "5437 km from the file's origin"));
     EXPECT_TRUE(anyNoteContains(*moved, "(512345, 120, 5412345)"));
-    ASSERT_EQ(moved->mesh.n_vertices(), here.mesh.n_vertices());
+    ASSERT_EQ(moved->mesh->n_vertices(), here.mesh->n_vertices());
     float worst = 0.0f;
-    for (const auto vh : here.mesh.vertices())
+    for (const auto vh : here.mesh->vertices())
         worst = std::max(worst, glm::length(point(moved->mesh, vh) - point(here.mesh, vh)));
     EXPECT_LT(worst, 1e-6f);
 
@@ -184,8 +184,8 @@ TEST(GltfLoader, AppliesNodeHierarchyTransforms) {
     const glm::mat4 worlds[] = {parent, parent * trs(asset.nodes[1]), *asset.nodes[2].matrix};
     const std::size_t gridVertices = asset.meshes[0].primitives[0].positions.size();
     const std::size_t gridTriangles = asset.meshes[0].primitives[0].indices.size() / 3;
-    EXPECT_EQ(import.mesh.n_vertices(), 3 * gridVertices);
-    EXPECT_EQ(import.mesh.n_faces(), 3 * gridTriangles);
+    EXPECT_EQ(import.mesh->n_vertices(), 3 * gridVertices);
+    EXPECT_EQ(import.mesh->n_faces(), 3 * gridTriangles);
 
     Bounds expected{glm::vec3(std::numeric_limits<float>::max()),
                     glm::vec3(std::numeric_limits<float>::lowest())};
@@ -207,9 +207,9 @@ TEST(GltfLoader, AppliesNodeHierarchyTransforms) {
     EXPECT_NEAR(surfaceArea(import.mesh), expectedArea, 1e-4 * expectedArea);
     // A flat grid's transformed normal (inverse-transpose) is its transformed plane's normal,
     // so every vertex normal must match its face's winding even under non-uniform scale.
-    for (const auto fh : import.mesh.faces())
-        for (const auto vh : import.mesh.fv_range(fh))
-            EXPECT_GT(glm::dot(toGlm(import.mesh.normal(vh)), windingNormal(import.mesh, fh)),
+    for (const auto fh : import.mesh->faces())
+        for (const auto vh : import.mesh->fv_range(fh))
+            EXPECT_GT(glm::dot(toGlm(import.mesh->normal(vh)), windingNormal(import.mesh, fh)),
                       0.9999f);
     EXPECT_TRUE(import.hasNormals);
     EXPECT_TRUE(import.hasUv);
@@ -229,7 +229,7 @@ TEST(GltfLoader, PlacesEveryGpuInstanceOfANode) {
     asset.extensionsRequired = {"EXT_mesh_gpu_instancing"};
     test::writeGltf(file, asset);
     const GltfImport import = loadOk(file);
-    EXPECT_EQ(import.mesh.n_faces(), 2u * node.instances.size()) << "the plain mesh is not drawn";
+    EXPECT_EQ(import.mesh->n_faces(), 2u * node.instances.size()) << "the plain mesh is not drawn";
 
     Bounds expected{glm::vec3(std::numeric_limits<float>::max()),
                     glm::vec3(std::numeric_limits<float>::lowest())};
@@ -278,7 +278,7 @@ TEST(GltfLoader, NegativeScaleKeepsOutwardWindingAndNormals) {
         const fs::path file = dir / "mirror.gltf";
         test::writeGltf(file, asset);
         const GltfImport import = loadOk(file);
-        ASSERT_EQ(import.mesh.n_faces(), 12u);
+        ASSERT_EQ(import.mesh->n_faces(), 12u);
         SCOPED_TRACE("scale " + std::to_string(scale.x) + " " + std::to_string(scale.y) + " " +
                      std::to_string(scale.z));
         expectOutwardFacesAndNormals(import.mesh, glm::vec3(4.0f, 0.0f, 0.0f));
@@ -295,8 +295,8 @@ TEST(GltfLoader, ComputedNormalsStayFiniteForHugeCoordinates) {
     test::writeGltf(file, test::singleMeshAsset(triangle));
     const GltfImport import = loadOk(file);
     ASSERT_FALSE(import.hasNormals);
-    for (const auto vh : import.mesh.vertices()) {
-        const auto normal = import.mesh.normal(vh);
+    for (const auto vh : import.mesh->vertices()) {
+        const auto normal = import.mesh->normal(vh);
         EXPECT_NEAR(normal[0], 0.0f, 1e-6f);
         EXPECT_NEAR(normal[1], 1.0f, 1e-6f);
         EXPECT_NEAR(normal[2], 0.0f, 1e-6f);
@@ -342,7 +342,7 @@ TEST(GltfLoader, DecodesPercentEncodedBufferUri) {
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     ASSERT_TRUE(contains(text, "my%20buffer%2B1.bin"));
     const GltfImport import = loadOk(dir / "scene.gltf");
-    EXPECT_EQ(import.mesh.n_faces(), asset.meshes[0].primitives[0].indices.size() / 3);
+    EXPECT_EQ(import.mesh->n_faces(), asset.meshes[0].primitives[0].indices.size() / 3);
 }
 
 TEST(GltfLoader, ReadsInterleavedAttributesWithByteStride) {
@@ -378,7 +378,7 @@ TEST(GltfLoader, AppliesSparseAccessorOverZerosWithoutBufferView) {
     triangle.sparsePositions = {{1, {0.0f, 0.0f, 2.0f}}, {2, {3.0f, 0.0f, 0.0f}}};
     test::writeGltf(file, test::singleMeshAsset(triangle));
     const GltfImport import = loadOk(file);
-    ASSERT_EQ(import.mesh.n_faces(), 1u);
+    ASSERT_EQ(import.mesh->n_faces(), 1u);
     EXPECT_NEAR(surfaceArea(import.mesh), 0.5 * 2.0 * 3.0, 1e-6);
     EXPECT_EQ(meshBounds(import.mesh).min, glm::vec3(0.0f));
 }
@@ -393,8 +393,8 @@ TEST(GltfLoader, ComputesOutwardNormalsWhenMissing) {
     EXPECT_TRUE(import.hasUv);
     EXPECT_TRUE(anyNoteContains(import, "normals computed"));
     expectOutwardFacesAndNormals(import.mesh, glm::vec3(0.0f));
-    for (const auto vh : import.mesh.vertices())
-        EXPECT_NEAR(glm::length(toGlm(import.mesh.normal(vh))), 1.0f, 1e-5f);
+    for (const auto vh : import.mesh->vertices())
+        EXPECT_NEAR(glm::length(toGlm(import.mesh->normal(vh))), 1.0f, 1e-5f);
 }
 
 TEST(GltfLoader, KeepsFileNormalsAndUvsOfPrimitivesThatHaveThem) {
@@ -413,12 +413,12 @@ TEST(GltfLoader, KeepsFileNormalsAndUvsOfPrimitivesThatHaveThem) {
     const GltfImport import = loadOk(file);
     EXPECT_FALSE(import.hasNormals);
     EXPECT_FALSE(import.hasUv);
-    for (const auto vh : import.mesh.vertices()) {
+    for (const auto vh : import.mesh->vertices()) {
         const glm::vec3 p = point(import.mesh, vh);
         const bool fromFile = p.y < 1.0f;
-        expectNear(toGlm(import.mesh.normal(vh)), fromFile ? tilt : glm::vec3(0, 1, 0), 1e-5f,
+        expectNear(toGlm(import.mesh->normal(vh)), fromFile ? tilt : glm::vec3(0, 1, 0), 1e-5f,
                    "normal");
-        const glm::vec2 uv = toGlm(import.mesh.texcoord2D(vh));
+        const glm::vec2 uv = toGlm(import.mesh->texcoord2D(vh));
         EXPECT_TRUE(std::isfinite(uv.x) && std::isfinite(uv.y));
         // The grid's own UV is its position remapped to [0, 1]².
         if (fromFile) {
@@ -438,8 +438,8 @@ TEST(GltfLoader, GeneratesUvsInUnitSquareWhenMissing) {
     EXPECT_TRUE(import.hasNormals);
     EXPECT_TRUE(anyNoteContains(import, "UVs generated"));
     glm::vec2 lo(1e9f), hi(-1e9f);
-    for (const auto vh : import.mesh.vertices()) {
-        const glm::vec2 uv = toGlm(import.mesh.texcoord2D(vh));
+    for (const auto vh : import.mesh->vertices()) {
+        const glm::vec2 uv = toGlm(import.mesh->texcoord2D(vh));
         lo = glm::min(lo, uv);
         hi = glm::max(hi, uv);
     }
@@ -462,9 +462,9 @@ TEST(GltfLoader, DecodesNormalizedIntegerUvs) {
         const float step =
             type == test::ComponentEncoding::UnsignedByte ? 1.0f / 255 : 1.0f / 65535;
         // The grid's UV is its position remapped to [0, 1]².
-        for (const auto vh : import.mesh.vertices()) {
+        for (const auto vh : import.mesh->vertices()) {
             const glm::vec3 p = point(import.mesh, vh);
-            const glm::vec2 uv = toGlm(import.mesh.texcoord2D(vh));
+            const glm::vec2 uv = toGlm(import.mesh->texcoord2D(vh));
             EXPECT_NEAR(uv.x, p.x + 0.5f, step);
             EXPECT_NEAR(uv.y, p.z + 0.5f, step);
         }
@@ -498,9 +498,9 @@ TEST(GltfLoader, LoadsNonIndexedTriangles) {
     }
     test::writeGltf(file, test::singleMeshAsset(soup));
     const GltfImport import = loadOk(file);
-    EXPECT_EQ(import.mesh.n_faces(), grid.indices.size() / 3);
+    EXPECT_EQ(import.mesh->n_faces(), grid.indices.size() / 3);
     EXPECT_NEAR(surfaceArea(import.mesh), 2.0 * 3.0, 1e-5);
-    for (const auto fh : import.mesh.faces())
+    for (const auto fh : import.mesh->faces())
         expectNear(windingNormal(import.mesh, fh), {0, 1, 0}, 1e-5f, "face normal");
 }
 
@@ -516,7 +516,7 @@ TEST(GltfLoader, KeepsNonManifoldTriangles) {
     pages.indices = {0, 1, 2, 0, 3, 1, 4, 6, 5, 1, 0, 7};
     test::writeGltf(file, test::singleMeshAsset(pages));
     const GltfImport import = loadOk(file);
-    EXPECT_EQ(import.mesh.n_faces(), 4u);
+    EXPECT_EQ(import.mesh->n_faces(), 4u);
     EXPECT_NEAR(surfaceArea(import.mesh), 4 * 0.5, 1e-6);
     expectNear(meshBounds(import.mesh).min, {-1, 0, 0}, 0.0f, "min");
     expectNear(meshBounds(import.mesh).max, {6, 1, 1}, 0.0f, "max");
@@ -534,9 +534,9 @@ TEST(GltfLoader, UnrollsTriangleStripsWithAlternatingWinding) {
             strip.positions.push_back({float(i), 0.0f, z});
     test::writeGltf(file, test::singleMeshAsset(strip));
     const GltfImport import = loadOk(file);
-    EXPECT_EQ(import.mesh.n_faces(), strip.positions.size() - 2);
+    EXPECT_EQ(import.mesh->n_faces(), strip.positions.size() - 2);
     EXPECT_NEAR(surfaceArea(import.mesh), double(length), 1e-5);
-    for (const auto fh : import.mesh.faces())
+    for (const auto fh : import.mesh->faces())
         expectNear(windingNormal(import.mesh, fh), {0, 1, 0}, 1e-5f, "face normal");
 }
 
@@ -559,9 +559,9 @@ TEST(GltfLoader, UnrollsIndexedTriangleFans) {
     fan.indexType = test::IndexType::UnsignedByte;
     test::writeGltf(file, test::singleMeshAsset(fan));
     const GltfImport import = loadOk(file);
-    EXPECT_EQ(import.mesh.n_faces(), std::size_t(spokes - 1));
+    EXPECT_EQ(import.mesh->n_faces(), std::size_t(spokes - 1));
     EXPECT_NEAR(surfaceArea(import.mesh), (spokes - 1) * 0.5 * std::sin(double(step)), 1e-5);
-    for (const auto fh : import.mesh.faces())
+    for (const auto fh : import.mesh->faces())
         expectNear(windingNormal(import.mesh, fh), {0, 1, 0}, 1e-5f, "face normal");
 }
 
@@ -578,7 +578,7 @@ TEST(GltfLoader, IgnoresLinesAndPointsWithANote) {
     asset.meshes[0].primitives.push_back(points);
     test::writeGltf(file, asset);
     const GltfImport import = loadOk(file);
-    EXPECT_EQ(import.mesh.n_faces(), grid.indices.size() / 3);
+    EXPECT_EQ(import.mesh->n_faces(), grid.indices.size() / 3);
     EXPECT_LT(meshBounds(import.mesh).max.y, 1.0f) << "line vertices must not enter the mesh";
     EXPECT_TRUE(anyNoteContains(import, "mesh \"Fence\" primitive 1: lines ignored"));
     EXPECT_TRUE(anyNoteContains(import, "mesh \"Fence\" primitive 2: points ignored"));
@@ -592,7 +592,7 @@ TEST(GltfLoader, PlacesEveryMeshOnceWhenTheFileHasNoScene) {
     asset.withScene = false;
     test::writeGltf(file, asset);
     const GltfImport import = loadOk(file);
-    EXPECT_EQ(import.mesh.n_faces(), 2u + 8u);
+    EXPECT_EQ(import.mesh->n_faces(), 2u + 8u);
     EXPECT_TRUE(anyNoteContains(import, "no scenes"));
 }
 
@@ -605,7 +605,7 @@ TEST(GltfLoader, IgnoresMissingAndBrokenTextures) {
     doc.json["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
     doc.json["meshes"][0]["primitives"][0]["material"] = 0;
     test::writeGltf(file, doc);
-    EXPECT_EQ(loadOk(file).mesh.n_faces(), 2u);
+    EXPECT_EQ(loadOk(file).mesh->n_faces(), 2u);
 }
 
 TEST(GltfLoader, IgnoresAppearanceOnlyRequiredExtensionsWithANote) {
@@ -791,21 +791,21 @@ TEST(GltfLoader, AGrassExportsBladesAreLeftOutOfTheGround) {
     marked.json["nodes"][2]["extras"] = {{"grass_blades", true}};
     test::writeGltf(dir / "marked.gltf", marked);
     const GltfImport ground = loadOk(dir / "marked.gltf");
-    EXPECT_EQ(ground.mesh.n_faces(), 8u);
+    EXPECT_EQ(ground.mesh->n_faces(), 8u);
     EXPECT_TRUE(anyNoteContains(ground, "a grass export: its blades left out (3 placements)"));
 
     test::GltfDocument older = test::buildGltf(asset);
     older.json["scenes"][0]["extras"] = {{"grass_runtime", {{"version", 1}}}};
     test::writeGltf(dir / "older.gltf", older);
-    EXPECT_EQ(loadOk(dir / "older.gltf").mesh.n_faces(), 8u);
+    EXPECT_EQ(loadOk(dir / "older.gltf").mesh->n_faces(), 8u);
 
     // Without either sign it is somebody's scene with a node called "... blades": all of it.
     test::writeGltf(dir / "plain.gltf", asset);
-    EXPECT_EQ(loadOk(dir / "plain.gltf").mesh.n_faces(), 8u + 3u * 2u);
+    EXPECT_EQ(loadOk(dir / "plain.gltf").mesh->n_faces(), 8u + 3u * 2u);
     test::GltfDocument unmarked = test::buildGltf(asset);
     unmarked.json["nodes"][2]["extras"] = {{"grass_blades", false}};
     test::writeGltf(dir / "unmarked.gltf", unmarked);
-    EXPECT_EQ(loadOk(dir / "unmarked.gltf").mesh.n_faces(), 8u + 3u * 2u);
+    EXPECT_EQ(loadOk(dir / "unmarked.gltf").mesh->n_faces(), 8u + 3u * 2u);
 
     // Blades alone are no ground, and the error says why.
     test::GltfDocument bladesOnly = marked;
@@ -826,7 +826,7 @@ TEST(GltfLoader, ACesiumRtcCentreIsNotedNotApplied) {
     doc.json["extensionsRequired"] = {"CESIUM_RTC"};
     test::writeGltf(file, doc);
     const GltfImport tile = loadOk(file);
-    EXPECT_EQ(tile.mesh.n_faces(), 8u);
+    EXPECT_EQ(tile.mesh->n_faces(), 8u);
     EXPECT_TRUE(anyNoteContains(tile, "CESIUM_RTC centre (6378137.0, 0.0, 0.0) not applied"));
     EXPECT_EQ(tile.origin, glm::dvec3(0.0)) << "left where the file has it";
 }

@@ -35,7 +35,7 @@ TEST(SurfaceMesh, DegenerateTrianglesAreSkippedAndCounted) {
     const auto b = builder.addVertex({1, 0, 0}, {0, 1, 0}, {1, 0});
     builder.addTriangle(a, a, b);
     EXPECT_EQ(builder.degenerateTriangles(), 1u);
-    EXPECT_EQ(builder.take().n_faces(), 0u);
+    EXPECT_EQ(builder.take()->n_faces(), 0u);
 }
 
 TEST(SurfaceMesh, ComputedNormalsAreAreaWeighted) {

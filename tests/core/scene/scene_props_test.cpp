@@ -38,7 +38,7 @@ TEST(SceneProps, MeshColliderLoadsItsFileAndTheSceneCarriesIt) {
     ASSERT_TRUE(scene.ok()) << scene.error().str();
     ASSERT_EQ(scene->props.size(), loaded->project.colliders.size());
     const SceneProp& cube = scene->props.front();
-    EXPECT_GT(cube.mesh.n_faces(), 0u);
+    EXPECT_GT(cube.mesh->n_faces(), 0u);
     EXPECT_EQ(cube.scale, loaded->project.colliders.front().scale);
 }
 
