@@ -4,6 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <utility>
+#include <vector>
+
 #include "mesh/procedural.h"
 #include "mesh/surface_bulk.h"
 
@@ -92,6 +98,69 @@ TEST(SurfaceBulk, AWallOfLargeTrianglesKeepsItsEdges) {
     EXPECT_GT(bulk.max.y, 9.95f);
     EXPECT_LT(bulk.min.x, 0.05f);
     EXPECT_GT(bulk.max.x, 9.95f);
+}
+
+// The definition the selection must keep: every corner of every triangle with a third of its area,
+// sorted along the axis, and the first coordinate at which the running sum reaches the share.
+float sortedCornerQuantile(const SurfaceMesh& mesh, int axis, double share) {
+    std::vector<std::pair<float, double>> corners;
+    double total = 0.0;
+    for (const auto fh : mesh.faces()) {
+        const auto p = facePositions(mesh, fh);
+        const double area = 0.5 * double(glm::length(glm::cross(p[1] - p[0], p[2] - p[0])));
+        for (const glm::vec3& corner : p)
+            corners.emplace_back(corner[axis], area / 3.0);
+        total += area;
+    }
+    std::sort(corners.begin(), corners.end());
+    double sum = 0.0;
+    for (const auto& [coordinate, weight] : corners)
+        if ((sum += weight) >= share * total)
+            return coordinate;
+    return corners.back().first;
+}
+
+// A hilly grid whose vertices its triangles share, plus loose triangles strewn far off: the
+// bulk (before its margin) lies on the quantiles of the sorted corners, whichever way they are
+// found.
+TEST(SurfaceBulk, QuantilesAreThoseOfTheSortedCorners) {
+    ProceduralMeshParams ground;
+    ground.shape = ProceduralShape::Plane;
+    ground.size = 40.0f;
+    ground.resolution = 48;
+    SurfaceMesh mesh = makeProceduralMesh(ground);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> jitter(-0.4f, 0.4f), far(-300.0f, 300.0f);
+    for (const auto vh : mesh.vertices()) {
+        auto point = mesh.point(vh);
+        point[1] += jitter(random) * 5.0f;
+        mesh.set_point(vh, point);
+    }
+    for (int i = 0; i < 40; ++i) {
+        const OpenMesh::Vec3f at(far(random), far(random), far(random));
+        const auto a = mesh.add_vertex(at), b = mesh.add_vertex(at + OpenMesh::Vec3f(2.0f, jitter(random), 0.0f)),
+                   c = mesh.add_vertex(at + OpenMesh::Vec3f(0.0f, jitter(random), 2.0f));
+        mesh.add_face(a, c, b);
+    }
+    // The margin: the mean of the triangles' square-rooted areas.
+    double edges = 0.0;
+    for (const auto fh : mesh.faces()) {
+        const auto p = facePositions(mesh, fh);
+        edges += std::sqrt(0.5 * double(glm::length(glm::cross(p[1] - p[0], p[2] - p[0]))));
+    }
+    const float margin = float(edges / double(mesh.n_faces()));
+    const Bounds whole = meshBounds(mesh);
+    for (const double outside : {0.04, 0.3}) {
+        const Bounds bulk = surfaceBulkBounds(mesh, outside);
+        for (int axis = 0; axis < 3; ++axis) {
+            const float low = sortedCornerQuantile(mesh, axis, 0.5 * outside);
+            const float high = sortedCornerQuantile(mesh, axis, 1.0 - 0.5 * outside);
+            EXPECT_NEAR(bulk.min[axis], std::max(whole.min[axis], low - margin), 1e-4f)
+                << "axis " << axis << ", outside " << outside;
+            EXPECT_NEAR(bulk.max[axis], std::min(whole.max[axis], high + margin), 1e-4f)
+                << "axis " << axis << ", outside " << outside;
+        }
+    }
 }
 
 }  // namespace
