@@ -29,6 +29,33 @@ TEST(SurfaceMesh, NonManifoldFacesKeepTheirGeometry) {
     EXPECT_NEAR(surfaceArea(mesh), 0.5 * 203, 1e-6);
 }
 
+// A move hands the mesh over (the same vertices in memory, nothing copied); a copy is a deep one
+// that the original's later edits do not reach.
+TEST(SurfaceMesh, AMovableMeshMovesWithoutCopyingAndCopiesDeeply) {
+    SurfaceMeshBuilder builder;
+    const auto a = builder.addVertex({0, 0, 0}, {0, 1, 0}, {0, 0});
+    const auto b = builder.addVertex({1, 0, 0}, {0, 1, 0}, {1, 0});
+    const auto c = builder.addVertex({0, 0, 1}, {0, 1, 0}, {0, 1});
+    builder.addTriangle(a, b, c);
+    MovableSurfaceMesh mesh = builder.take();
+    const SurfaceMesh* held = &*mesh;
+    const OpenMesh::Vec3f* points = held->points();
+    MovableSurfaceMesh moved = std::move(mesh);
+    EXPECT_EQ(&*moved, held);
+    EXPECT_EQ(moved->points(), points) << "the vertex array itself was handed over";
+    MovableSurfaceMesh assigned;
+    assigned = std::move(moved);
+    EXPECT_EQ(assigned->points(), points);
+
+    MovableSurfaceMesh copy = assigned;
+    EXPECT_NE(copy->points(), points);
+    assigned->set_point(assigned->vertex_handle(0), OpenMesh::Vec3f(5, 5, 5));
+    EXPECT_EQ(copy->point(copy->vertex_handle(0)), OpenMesh::Vec3f(0, 0, 0));
+    EXPECT_EQ(copy->n_faces(), 1u);
+    const SurfaceMesh& asMesh = copy;  // converts where a SurfaceMesh& is taken
+    EXPECT_EQ(meshBounds(asMesh).max, glm::vec3(1, 0, 1));
+}
+
 TEST(SurfaceMesh, DegenerateTrianglesAreSkippedAndCounted) {
     SurfaceMeshBuilder builder;
     const auto a = builder.addVertex({0, 0, 0}, {0, 1, 0}, {0, 0});
