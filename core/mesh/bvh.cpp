@@ -71,16 +71,21 @@ struct TriangleBvh::Candidate {
     std::uint32_t source = 0;
 };
 
-TriangleBvh::TriangleBvh(const SurfaceMesh& mesh) {
-    mSoup.positions.reserve(mesh.n_vertices());
-    mSoup.normals.reserve(mesh.n_vertices());
-    mSoup.uvs.reserve(mesh.n_vertices());
+TriangleSoup triangleSoupOf(const SurfaceMesh& mesh) {
+    TriangleSoup soup;
+    soup.positions.reserve(mesh.n_vertices());
+    soup.normals.reserve(mesh.n_vertices());
+    soup.uvs.reserve(mesh.n_vertices());
     for (const auto vh : mesh.vertices()) {
-        mSoup.positions.push_back(toGlm(mesh.point(vh)));
-        mSoup.normals.push_back(toGlm(mesh.normal(vh)));
-        mSoup.uvs.push_back(toGlm(mesh.texcoord2D(vh)));
+        soup.positions.push_back(toGlm(mesh.point(vh)));
+        soup.normals.push_back(toGlm(mesh.normal(vh)));
+        soup.uvs.push_back(toGlm(mesh.texcoord2D(vh)));
     }
-    mSoup.triangles = triangleIndices(mesh);
+    soup.triangles = triangleIndices(mesh);
+    return soup;
+}
+
+TriangleBvh::TriangleBvh(const SurfaceMesh& mesh) : mSoup(triangleSoupOf(mesh)) {
     build();
 }
 

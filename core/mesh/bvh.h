@@ -47,6 +47,10 @@ struct TriangleSoup {
     std::vector<glm::vec2> uvs;
 };
 
+// The mesh's vertices (position, normal, UV0) and faces, in the mesh's order: what a BVH of it
+// is built from, taken apart from the mesh so the build can run on another thread.
+TriangleSoup triangleSoupOf(const SurfaceMesh& mesh);
+
 class TriangleBvh {
 public:
     // An empty BVH: every ray misses.

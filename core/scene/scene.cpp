@@ -107,14 +107,17 @@ static Result<void> refuseHugeScene(const LoadedProject& loaded, double area) {
 }
 
 Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes,
-                                    SurfaceLook* look, PaintUvs* paintUvs, glm::dvec3* groundOrigin) {
+                                           SurfaceLook* look, PaintUvs* paintUvs,
+                                           glm::dvec3* groundOrigin, GltfImport* alreadyRead) {
     const MeshSource& source = loaded.project.mesh;
     if (!source.isFile)
         return makeProceduralMesh(source.procedural);
     auto path = resolveAssetPath(loaded.folder, source.file, "/mesh/file");
     if (!path)
         return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
-    auto imported = loadGltf(*path, GltfPlacement::GroundNearOrigin, source.metresPerUnit);
+    auto imported = alreadyRead != nullptr
+                        ? Result<GltfImport>(std::move(*alreadyRead))
+                        : loadGltf(*path, GltfPlacement::GroundNearOrigin, source.metresPerUnit);
     if (!imported)
         return fromProjectField(loaded, "/mesh/file", imported.error());
     if (notes)
@@ -467,12 +470,12 @@ glm::dvec3 groundOriginOf(const LoadedProject& loaded) {
     return origin;
 }
 
-Result<Scene> buildScene(const LoadedProject& loaded) {
+Result<Scene> buildScene(const LoadedProject& loaded, GltfImport* alreadyRead) {
     std::vector<std::string> notes;
     SurfaceLook look;
     PaintUvs paintUvs;
     glm::dvec3 groundOrigin{0.0};
-    auto mesh = loadProjectMesh(loaded, &notes, &look, &paintUvs, &groundOrigin);
+    auto mesh = loadProjectMesh(loaded, &notes, &look, &paintUvs, &groundOrigin, alreadyRead);
     if (!mesh)
         return mesh.error();
     auto scene = buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes), groundOrigin);

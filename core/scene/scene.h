@@ -95,8 +95,8 @@ BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting);
 
 // Loads the mesh (file or procedural), each layer's density map, scatters, patches and bakes
 // the per-blade lighting inputs.
-// Errors name the file (mesh, map) or the project field.
-Result<Scene> buildScene(const LoadedProject& project);
+// Errors name the file (mesh, map) or the project field. `alreadyRead`: as loadProjectMesh's.
+Result<Scene> buildScene(const LoadedProject& project, GltfImport* alreadyRead = nullptr);
 
 // What a repaint re-grew: the patches whose slots changed (renderers re-upload those) and the
 // patches whose shading changed (the regrown ones, whose wilt moved, and, when blades were
@@ -151,9 +151,14 @@ Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
 // gets the surface's own material (surface_look.h; nothing for a procedural surface).
 // `paintUvs`, when given, gets how the surface's UVs were made paintable (paint_uvs.h);
 // `groundOrigin` the file's point the mesh's origin stands for (Scene::groundOrigin).
+// `alreadyRead`, when given, is the project's mesh file as loadGltf read it for the project
+// (GltfPlacement::GroundNearOrigin, the project's unit): taken instead of reading the file again
+// (a new project around a mesh has just read it to size the field; an 8-million-triangle ground
+// takes seconds to read).
 Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& project, std::vector<std::string>* notes,
-                                    SurfaceLook* look = nullptr, PaintUvs* paintUvs = nullptr,
-                                    glm::dvec3* groundOrigin = nullptr);
+                                           SurfaceLook* look = nullptr, PaintUvs* paintUvs = nullptr,
+                                           glm::dvec3* groundOrigin = nullptr,
+                                           GltfImport* alreadyRead = nullptr);
 
 // The ground origin buildScene would find (Scene::groundOrigin), for a command that builds the
 // physics before its scene: the ground file is loaded only when a mesh collider may need it.

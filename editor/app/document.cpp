@@ -7,8 +7,8 @@
 namespace grass::editor {
 
 bool replaceDocument(EditorState& state, Live& live, core::LoadedProject next, bool withPhysics,
-                     std::string_view what, PhysicsDevice device) {
-    auto built = buildLive(next, withPhysics, {}, device);
+                     std::string_view what, PhysicsDevice device, core::GltfImport* alreadyRead) {
+    auto built = buildLive(next, withPhysics, {}, device, alreadyRead);
     if (!built) {
         state.transient.message = std::string(what) + ": " + built.error().str();
         return false;

@@ -14,8 +14,9 @@ namespace grass::editor {
 
 // Grows `next` into a live field and, on success, makes it the document: state.doc.loaded, the
 // scene and tools pointers, a fresh history. `what` names the action in the message on failure
-// ("cannot open"). True when replaced.
+// ("cannot open"). True when replaced. `alreadyRead`: buildLive's.
 bool replaceDocument(EditorState& state, Live& live, core::LoadedProject next, bool withPhysics,
-                     std::string_view what, PhysicsDevice device = PhysicsDevice::Auto);
+                     std::string_view what, PhysicsDevice device = PhysicsDevice::Auto,
+                     core::GltfImport* alreadyRead = nullptr);
 
 }  // namespace grass::editor

@@ -51,7 +51,9 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     // mesh does (a user who runs `grass-editor rock.glb` means that).
     const std::filesystem::path start(e.mSettings.projectPath);
     const bool fromMesh = core::isGltfPath(start);
-    auto loaded = fromMesh ? newProjectFromMesh(start) : core::loadProject(start);
+    core::GltfImport meshRead;  // the mesh a new project was sized on, grown on below
+    auto loaded = fromMesh ? newProjectFromMesh(start, NEW_MESH_PROJECT_BLADES, &meshRead)
+                           : core::loadProject(start);
     if (!loaded)
         return loaded.error();
     EditorState& state = e.mState;
@@ -69,7 +71,8 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     if (!camera)
         return camera.error();
     e.mCamera = *camera;
-    auto built = buildLive(state.doc.loaded, !e.mSettings.noPhysics, {}, e.mSettings.physicsDevice);
+    auto built = buildLive(state.doc.loaded, !e.mSettings.noPhysics, {}, e.mSettings.physicsDevice,
+                           fromMesh ? &meshRead : nullptr);
     if (!built)
         return built.error();
     e.mLive = std::move(*built);
@@ -289,9 +292,10 @@ void Editor::adoptLive(Live next) {
 }
 
 // New, Open, Recover: the document is replaced only once its field is grown.
-bool Editor::adoptDocument(core::LoadedProject next, std::string_view what) {
+bool Editor::adoptDocument(core::LoadedProject next, std::string_view what,
+                           core::GltfImport* alreadyRead) {
     if (!replaceDocument(mState, mLive, std::move(next), !mSettings.noPhysics, what,
-                         mSettings.physicsDevice))
+                         mSettings.physicsDevice, alreadyRead))
         return false;
     // The document left was saved or let go: its unsaved autosave has nothing to recover. A
     // recovered never-saved project goes on autosaving into the slot it came from.

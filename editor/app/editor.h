@@ -82,7 +82,9 @@ private:
     void adoptLive(Live next);
     // The view framed on the live surface (after a new mesh, unit or up axis).
     void frameLiveSurface();
-    bool adoptDocument(core::LoadedProject next, std::string_view what);
+    // `alreadyRead`: replaceDocument's.
+    bool adoptDocument(core::LoadedProject next, std::string_view what,
+                       core::GltfImport* alreadyRead = nullptr);
     // New from mesh, Import mesh and Import map image (editor_imports.cpp).
     void applyImports();
     void resetTimeline();

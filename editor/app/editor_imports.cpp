@@ -20,9 +20,10 @@ void Editor::applyImports() {
     if (!s.newFromMeshRequested.empty()) {
         const fs::path file = std::exchange(s.newFromMeshRequested, {});
         const std::string what = "cannot make a project from " + file.filename().string();
-        if (auto next = newProjectFromMesh(file); !next) {
+        core::GltfImport read;
+        if (auto next = newProjectFromMesh(file, NEW_MESH_PROJECT_BLADES, &read); !next) {
             s.transient.message = what + ": " + next.error().str();
-        } else if (adoptDocument(std::move(*next), what)) {
+        } else if (adoptDocument(std::move(*next), what, &read)) {
             markNewFromMesh(s, file);
         }
     }

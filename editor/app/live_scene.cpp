@@ -63,8 +63,8 @@ static bool physicsOnCpu(PhysicsDevice device, const core::ScenePhysics& physics
 // `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
 Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
                        const std::function<Result<void>(core::Scene&)>& prepare,
-                       PhysicsDevice device) {
-    auto scene = core::buildScene(loaded);
+                       PhysicsDevice device, core::GltfImport* alreadyRead) {
+    auto scene = core::buildScene(loaded, alreadyRead);
     if (!scene)
         return scene.error();
     for (const auto& note : scene->notes)

@@ -64,9 +64,11 @@ struct Live {
 };
 
 // `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
+// `alreadyRead`: the project's mesh as newProjectFromMesh read it (core::buildScene's).
 Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
                        const std::function<Result<void>(core::Scene&)>& prepare = {},
-                       PhysicsDevice device = PhysicsDevice::Auto);
+                       PhysicsDevice device = PhysicsDevice::Auto,
+                       core::GltfImport* alreadyRead = nullptr);
 
 // Puts every layer's blades back at rest on the GPU and restarts the simulation from there
 // (keeping its step count).

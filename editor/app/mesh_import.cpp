@@ -53,7 +53,8 @@ Result<void> copyAssetFiles(const fs::path& from, const fs::path& to) {
     return {};
 }
 
-Result<core::LoadedProject> newProjectFromMesh(const fs::path& meshFile, std::size_t targetBlades) {
+Result<core::LoadedProject> newProjectFromMesh(const fs::path& meshFile, std::size_t targetBlades,
+                                               core::GltfImport* read) {
     // A new project's mesh is in metres (projectForMesh), the unit its placement is judged in.
     auto imported = core::loadGltf(meshFile, core::GltfPlacement::GroundNearOrigin);
     if (!imported)
@@ -62,6 +63,8 @@ Result<core::LoadedProject> newProjectFromMesh(const fs::path& meshFile, std::si
     if (!loaded)
         return loaded.error();
     loaded->file.clear();  // not saved yet: Save asks where
+    if (read)
+        *read = std::move(*imported);
     return loaded;
 }
 

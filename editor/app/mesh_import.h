@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/gltf_loader.h"
 #include "project/project.h"
 #include "util/result.h"
 
@@ -28,9 +29,11 @@ std::vector<std::filesystem::path> assetFileSet(const std::filesystem::path& fil
 Result<void> copyAssetFiles(const std::filesystem::path& from, const std::filesystem::path& to);
 
 // A new, unsaved project around `meshFile` (its folder is the mesh's, so the mesh needs no copy
-// until it is saved elsewhere). The error names the file and why it cannot be read.
+// until it is saved elsewhere). The error names the file and why it cannot be read. `read`, when
+// given, receives the mesh as read, for buildLive to grow on instead of reading the file again.
 Result<core::LoadedProject> newProjectFromMesh(const std::filesystem::path& meshFile,
-                                               std::size_t targetBlades = NEW_MESH_PROJECT_BLADES);
+                                               std::size_t targetBlades = NEW_MESH_PROJECT_BLADES,
+                                               core::GltfImport* read = nullptr);
 // Once the editor holds that project (File › New from mesh, or `grass-editor rock.glb`): it is
 // unsaved, existing only in memory, and the status line says where it came from.
 void markNewFromMesh(EditorState& state, const std::filesystem::path& meshFile);

@@ -288,11 +288,21 @@ ui::Color32 handleColor(core::GizmoHandle handle, bool hot) {
 }  // namespace
 
 SceneTools::SceneTools(core::Scene& scene, const core::GrassLightingDesc& lighting)
-    : bvh(scene.mesh), painter(scene, lighting) {}
+    : painter(scene, lighting),
+      mBuilding(std::async(std::launch::async,
+                           [soup = core::triangleSoupOf(scene.mesh)]() mutable {
+                               return core::TriangleBvh(std::move(soup));
+                           })) {}
+
+const core::TriangleBvh& SceneTools::bvh() const {
+    if (!mBvh)
+        mBvh.emplace(mBuilding.get());
+    return *mBvh;
+}
 
 std::optional<core::RayHit> pickSurface(const SceneTools& tools, const core::OrbitCamera& camera,
                                         const ViewportPointer& pointer) {
-    return tools.bvh.intersect(core::cameraRay(camera, pointer.pixel, pointer.viewportSize));
+    return tools.bvh().intersect(core::cameraRay(camera, pointer.pixel, pointer.viewportSize));
 }
 
 std::optional<core::Bounds> selectionBounds(const EditorState& state, float timeS) {
@@ -395,7 +405,7 @@ void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const Edito
                                      : DEFAULT_RADIUS_SHARE * glm::length(s.scene->bounds.size());
             std::vector<ui::Vec2> points;
             for (const glm::vec3 p :
-                 core::surfacePointsOnRing(s.tools->bvh, hit->posWorld, hit->normal, radius, RING_POINTS))
+                 core::surfacePointsOnRing(s.tools->bvh(), hit->posWorld, hit->normal, radius, RING_POINTS))
                 if (auto px = core::projectToPixel(camera, p, pointer.viewportSize))
                     points.push_back(toPoints(*px));
             // What a stroke now would do, Ctrl included: a red ring and a minus sign when it

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <future>
 #include <optional>
 #include <string_view>
 
@@ -60,10 +61,18 @@ struct PlaceToolSettings {
 };
 
 // What the tools work on, rebuilt with the live scene: the mesh's BVH for picking and the brush.
+// The BVH is built on a worker thread from a copy of the mesh's triangles (an 8-million-triangle
+// ground took 4 s, all of it before the window could draw), so the field shows at once; the
+// first pick waits for the rest of the build.
 struct SceneTools {
     SceneTools(core::Scene& scene, const core::GrassLightingDesc& lighting);
-    core::TriangleBvh bvh;
+    // Waits for the build the first time.
+    const core::TriangleBvh& bvh() const;
     core::ScenePainter painter;
+
+private:
+    mutable std::future<core::TriangleBvh> mBuilding;
+    mutable std::optional<core::TriangleBvh> mBvh;
 };
 
 // Where the mouse meets the mesh (for the brush cursor), if it does.

@@ -33,6 +33,32 @@ TEST(MeshImport, NewFromMeshIsAnUnsavedProjectAroundTheMeshThatGrows) {
     EXPECT_LT(blades, 1.2 * editor::NEW_MESH_PROJECT_BLADES);
 }
 
+// The mesh a new project was sized on is the one it grows on: the file is read once, and the
+// field, the surface's texture and its paintable UVs are those of a second reading.
+TEST(MeshImport, TheMeshReadForANewProjectGrowsTheSameFieldAsTheFile) {
+    const fs::path mesh = sourceDir() / STONE;
+    core::GltfImport read;
+    auto loaded = editor::newProjectFromMesh(mesh, 2000, &read);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+    const std::size_t faces = read.mesh->n_faces();
+    EXPECT_GT(faces, 0u);
+    auto fromFile = core::buildScene(*loaded);
+    auto fromRead = core::buildScene(*loaded, &read);
+    ASSERT_TRUE(fromFile.ok()) << fromFile.error().str();
+    ASSERT_TRUE(fromRead.ok()) << fromRead.error().str();
+    EXPECT_EQ(fromRead->mesh->n_faces(), faces);
+    EXPECT_EQ(fromRead->bounds, fromFile->bounds);
+    EXPECT_EQ(fromRead->look.baseTexture.pixels, fromFile->look.baseTexture.pixels);
+    EXPECT_FALSE(fromRead->look.baseTexture.pixels.empty()) << "the stone is textured";
+    EXPECT_EQ(fromRead->paintUvs.fingerprint, fromFile->paintUvs.fingerprint);
+    const auto& blades = fromRead->layers.at(0).patched.blades;
+    const auto& bladesFromFile = fromFile->layers.at(0).patched.blades;
+    ASSERT_EQ(blades.size(), bladesFromFile.size());
+    ASSERT_GT(fromRead->totalBlades(), 1000u);
+    for (std::size_t i = 0; i < blades.size(); ++i)
+        ASSERT_EQ(blades[i].v0Theta, bladesFromFile[i].v0Theta) << "blade " << i;
+}
+
 TEST(MeshImport, ABrokenMeshIsRefusedNamingTheFileAndCopiesNothing) {
     const ScratchFolder project("import-broken");
     core::LoadedProject loaded{core::Project{}, project.path(), project.path() / "project.json"};
