@@ -51,26 +51,46 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     // mesh does (a user who runs `grass-editor rock.glb` means that).
     const std::filesystem::path start(e.mSettings.projectPath);
     const bool fromMesh = core::isGltfPath(start);
-    core::GltfImport meshRead;  // the mesh a new project was sized on, grown on below
-    auto loaded = fromMesh ? newProjectFromMesh(start, NEW_MESH_PROJECT_BLADES, &meshRead)
-                           : core::loadProject(start);
+    // The window opens before anything large is read, so the seconds a large mesh takes to read
+    // and grow pass in front of a window that says what it is doing. A new project around a mesh
+    // is named after the file and has the default picture size, known before the file is read.
+    auto loaded = fromMesh ? Result<core::LoadedProject>(core::LoadedProject{}) : core::loadProject(start);
     if (!loaded)
         return loaded.error();
-    EditorState& state = e.mState;
-    state.doc.loaded = std::move(*loaded);
-    const core::Project& project = state.doc.loaded.project;
+    const std::string name = fromMesh ? start.stem().string() : loaded->project.name;
     // A session someone works in fits the screen; a screenshot or a script keeps the exact
     // size (tests compare it with `grass render`).
     const bool interactive = e.mSettings.screenshot.empty() && e.mSettings.scriptFile.empty();
-    auto window = Window::create(project.render.width, project.render.height,
-                                 "grass — " + project.name, e.mSettings.glDebug, interactive);
+    auto window = Window::create(loaded->project.render.width, loaded->project.render.height,
+                                 "grass — " + name, e.mSettings.glDebug, interactive);
     if (!window)
         return window.error();
     e.mWindow = std::move(*window);
+    if (!e.mSettings.noUi) {
+        auto created = EditorUi::create();
+        if (!created)
+            return created.error();
+        e.mUi = std::move(*created);
+    }
+    const auto notice = [&](const std::string& text) {
+        if (e.mUi && interactive)
+            e.mUi->showNotice(*e.mWindow, text);
+    };
+    core::GltfImport meshRead;  // the mesh a new project was sized on, grown on below
+    if (fromMesh) {
+        notice("reading " + start.filename().string() + " …");
+        loaded = newProjectFromMesh(start, NEW_MESH_PROJECT_BLADES, &meshRead);
+        if (!loaded)
+            return loaded.error();
+    }
+    EditorState& state = e.mState;
+    state.doc.loaded = std::move(*loaded);
+    const core::Project& project = state.doc.loaded.project;
     auto camera = render::projectCamera(project, "");
     if (!camera)
         return camera.error();
     e.mCamera = *camera;
+    notice("growing " + project.name + " …");
     auto built = buildLive(state.doc.loaded, !e.mSettings.noPhysics, {}, e.mSettings.physicsDevice,
                            fromMesh ? &meshRead : nullptr);
     if (!built)
@@ -112,12 +132,6 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     std::fprintf(stderr, "grass-editor: %s, %zu blades, geometry %s\n",
                  gl::rendererDescription().c_str(), e.mLive.scene->totalBlades(),
                  render::geometryPathLabel(state.view.options.geometry));
-    if (!e.mSettings.noUi) {
-        auto created = EditorUi::create();
-        if (!created)
-            return created.error();
-        e.mUi = std::move(*created);
-    }
     e.mStartTime = e.mLastStatus = e.mLastTick = Clock::now();
     e.mTimelineStartS = state.view.timeline.timeS();
     return editor;

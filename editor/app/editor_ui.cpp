@@ -1,5 +1,7 @@
 #include "app/editor_ui.h"
 
+#include <epoxy/gl.h>
+
 #include <GLFW/glfw3.h>
 
 #include "ui/tessellator.h"
@@ -125,6 +127,28 @@ const ui::Output& EditorUi::endFrame(Window& window) {
 
 void EditorUi::draw(int framebufferWidth, int framebufferHeight) {
     mRenderer->draw(mMeshes, *mFonts, {framebufferWidth, framebufferHeight}, mPixelsPerPoint);
+}
+
+void EditorUi::showNotice(Window& window, std::string_view text) {
+    int fbW = 0, fbH = 0;
+    window.framebufferSize(&fbW, &fbH);
+    if (fbW <= 0 || fbH <= 0)
+        return;
+    ui::Input in;
+    in.pixelsPerPoint = window.contentScale();
+    in.screenRect = {{0.0f, 0.0f}, {float(fbW) / in.pixelsPerPoint, float(fbH) / in.pixelsPerPoint}};
+    in.hasPointer = false;
+    const ui::Rect screen = in.screenRect;
+    beginFrame(std::move(in));
+    mContext->painter(ui::Layer::Foreground, screen)
+        .text(screen.centre(), text, 16.0f, ui::Color32::rgb(220, 220, 220), ui::Vec2(0.5f));
+    endFrame(window);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(0.106f, 0.106f, 0.106f, 1.0f);  // the panels' grey (Editor::render)
+    glClear(GL_COLOR_BUFFER_BIT);
+    draw(fbW, fbH);
+    window.swapBuffers();
 }
 
 }  // namespace grass::editor

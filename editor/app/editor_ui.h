@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ui/context.h"
@@ -46,6 +47,10 @@ public:
     const ui::Output& endFrame(Window& window);
     // Draws the last frame's meshes over whatever the bound (default) framebuffer holds.
     void draw(int framebufferWidth, int framebufferHeight);
+    // One frame of the window with `text` in its middle and nothing else, shown at once: what
+    // the window says while the field grows, before the editor's first frame (a large mesh
+    // takes seconds, which a black window left the user to guess at).
+    void showNotice(Window& window, std::string_view text);
 
 private:
     EditorUi() = default;
