@@ -106,6 +106,14 @@ static Result<void> refuseHugeScene(const LoadedProject& loaded, double area) {
     return {};
 }
 
+// The side a generated UV atlas keeps its gutters for: the coarsest map of any layer.
+static int coarsestMapSide(const Project& project) {
+    int coarsest = MAX_MAP_RESOLUTION;
+    for (const GrassLayer& layer : project.layers)
+        coarsest = std::min({coarsest, layer.mapResolution.x, layer.mapResolution.y});
+    return coarsest;
+}
+
 Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes,
                                            SurfaceLook* look, PaintUvs* paintUvs,
                                            glm::dvec3* groundOrigin, GltfImport* alreadyRead) {
@@ -139,13 +147,10 @@ Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vec
                          resolved.error().message};
         atlasFile = *resolved;
     }
-    int coarsestMap = MAX_MAP_RESOLUTION;
-    for (const GrassLayer& layer : loaded.project.layers)
-        coarsestMap = std::min({coarsestMap, layer.mapResolution.x, layer.mapResolution.y});
     std::vector<std::string> uvNotes;
     PaintUvs uvs = makeUvsPaintable(
         imported->mesh, imported->hasUv, [&] { return !readLook().baseTexture.pixels.empty(); },
-        atlasFile, coarsestMap, uvNotes);
+        atlasFile, coarsestMapSide(loaded.project), uvNotes);
     if (notes)
         for (auto& note : uvNotes)
             notes->push_back(path->string() + ": " + note);
@@ -482,6 +487,20 @@ Result<Scene> buildScene(const LoadedProject& loaded, GltfImport* alreadyRead) {
     if (scene) {
         scene->look = std::move(look);
         scene->paintUvs = std::move(paintUvs);
+    }
+    return scene;
+}
+
+bool sameSurface(const LoadedProject& built, const LoadedProject& next) {
+    return built.folder == next.folder && built.project.mesh == next.project.mesh &&
+           coarsestMapSide(built.project) == coarsestMapSide(next.project);
+}
+
+Result<Scene> regrowOnSameSurface(const LoadedProject& loaded, const Scene& previous) {
+    auto scene = buildSceneFromMesh(loaded, previous.mesh, {}, previous.groundOrigin);
+    if (scene) {
+        scene->look = previous.look;
+        scene->paintUvs = previous.paintUvs;
     }
     return scene;
 }

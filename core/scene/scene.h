@@ -170,6 +170,17 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& project, MovableSurfaceMes
                                  std::vector<std::string> notes,
                                  glm::dvec3 groundOrigin = glm::dvec3(0.0));
 
+// Whether `next` grows on the surface the scene of `built` stands on: the same folder, mesh
+// source (file, unit, up axis, kept UV atlas, or procedural shape) and coarsest layer map (the
+// side a generated UV atlas keeps its gutters for).
+bool sameSurface(const LoadedProject& built, const LoadedProject& next);
+
+// Grows `project` on the surface of `previous` (built from a project of the sameSurface): what
+// buildScene gives, without reading the mesh again. The mesh is copied, its material, paintable
+// UVs and ground origin carried over; the mesh's notes are not repeated. The editor re-grows so
+// after each edit of the layers: an 8-million-triangle ground took seconds to read each time.
+Result<Scene> regrowOnSameSurface(const LoadedProject& project, const Scene& previous);
+
 // A default project growing grass on a loaded glTF file: density scaled so the field has about
 // `targetBlades` blades whatever the file's units, blade size relative to the mesh, and a
 // camera framing its bounds (issue 3: `grass render --mesh`). Null when the mesh has no area.

@@ -278,10 +278,15 @@ bool Editor::applyRequests() {
 // Re-grows the live field from the open project (after an edit that needs it), keeping the maps
 // painted since the last save; on failure the old field stays.
 void Editor::regrowLive() {
+    // An edit of the layers keeps the surface: the field grows on the mesh at hand, not on the
+    // file read again (seconds for a large mesh, each edit).
+    const core::Scene* sameSurface =
+        mLive.scene && core::sameSurface(mLive.builtFrom, mState.doc.loaded) ? mLive.scene.get()
+                                                                             : nullptr;
     auto next = buildLive(
         mState.doc.loaded, !mSettings.noPhysics,
         [&](core::Scene& grown) { return carryPaintedMaps(mState, *mLive.scene, grown); },
-        mSettings.physicsDevice);
+        mSettings.physicsDevice, nullptr, sameSurface);
     if (!next) {
         mState.transient.message = "cannot grow the field: " + next.error().str();
         return;

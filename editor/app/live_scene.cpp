@@ -63,8 +63,10 @@ static bool physicsOnCpu(PhysicsDevice device, const core::ScenePhysics& physics
 // `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
 Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
                        const std::function<Result<void>(core::Scene&)>& prepare,
-                       PhysicsDevice device, core::GltfImport* alreadyRead) {
-    auto scene = core::buildScene(loaded, alreadyRead);
+                       PhysicsDevice device, core::GltfImport* alreadyRead,
+                       const core::Scene* grownOn) {
+    auto scene = grownOn != nullptr ? core::regrowOnSameSurface(loaded, *grownOn)
+                                    : core::buildScene(loaded, alreadyRead);
     if (!scene)
         return scene.error();
     for (const auto& note : scene->notes)
@@ -73,6 +75,7 @@ Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
         if (auto prepared = prepare(*scene); !prepared)
             return prepared.error();
     Live live;
+    live.builtFrom = loaded;
     live.scene = std::make_unique<core::Scene>(std::move(*scene));
     live.tools = std::make_unique<SceneTools>(*live.scene, loaded.project.lighting);
     auto renderer = render::SceneRenderer::create(*live.scene);

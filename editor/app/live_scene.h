@@ -57,6 +57,7 @@ struct LivePhysics {
 // Members are destroyed in reverse order: the physics (which steps the renderer's buffers)
 // before the renderer, the renderer (which points at the scene) before the scene.
 struct Live {
+    core::LoadedProject builtFrom;  // the project `scene` was grown from (core::sameSurface)
     std::unique_ptr<core::Scene> scene;
     std::unique_ptr<SceneTools> tools;  // picks and paints `scene`
     std::unique_ptr<render::SceneRenderer> renderer;
@@ -65,10 +66,13 @@ struct Live {
 
 // `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
 // `alreadyRead`: the project's mesh as newProjectFromMesh read it (core::buildScene's).
+// `grownOn`: a scene of a project with the same surface (core::sameSurface), whose mesh the
+// field grows on instead of the file's (core::regrowOnSameSurface).
 Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
                        const std::function<Result<void>(core::Scene&)>& prepare = {},
                        PhysicsDevice device = PhysicsDevice::Auto,
-                       core::GltfImport* alreadyRead = nullptr);
+                       core::GltfImport* alreadyRead = nullptr,
+                       const core::Scene* grownOn = nullptr);
 
 // Puts every layer's blades back at rest on the GPU and restarts the simulation from there
 // (keeping its step count).

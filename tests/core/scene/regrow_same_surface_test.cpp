@@ -1,0 +1,97 @@
+// Re-growing on the surface at hand (core::regrowOnSameSurface): the editor's re-grow after an
+// edit of the layers grows what reading the mesh again would, without reading it; a change of
+// the surface itself (file, unit, up axis, folder, the coarsest map a generated atlas is made
+// for) reads it again.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "scene/scene.h"
+#include "support/rules_terrain.h"
+#include "support/scratch_folder.h"
+
+namespace grass::core {
+namespace {
+
+// A terrain without UVs, so its paintable UVs are a generated atlas the re-grow must carry.
+const std::string PROJECT = R"({"format": "grass-project", "version": 3, "name": "regrow",
+  "mesh": {"file": "terrain.glb"},
+  "layers": [{"name": "grass", "density": 20, "map_resolution": [256, 256]}]})";
+
+LoadedProject writeProject(const test::ScratchFolder& folder) {
+    test::writeRulesTerrain(folder / "terrain.glb");
+    std::ofstream(folder / "project.json") << PROJECT;
+    auto loaded = loadProject(folder.path());
+    EXPECT_TRUE(loaded) << loaded.error().str();
+    return std::move(*loaded);
+}
+
+TEST(RegrowOnSameSurface, GrowsWhatTheFileWouldWithoutReadingIt) {
+    const test::ScratchFolder folder("regrow-same-surface");
+    const LoadedProject loaded = writeProject(folder);
+    auto first = buildScene(loaded);
+    ASSERT_TRUE(first) << first.error().str();
+    ASSERT_TRUE(first->paintUvs.generated) << "the terrain has no UVs of its own";
+
+    LoadedProject next = loaded;
+    next.project.layers.at(0).scatter.density = 35.0f;
+    next.project.seed = 7;
+    ASSERT_TRUE(sameSurface(loaded, next));
+    auto expected = buildScene(next);
+    ASSERT_TRUE(expected) << expected.error().str();
+
+    std::filesystem::remove(folder / "terrain.glb");
+    ASSERT_FALSE(buildScene(next)) << "the file is gone: only the mesh at hand can grow the field";
+    auto regrown = regrowOnSameSurface(next, *first);
+    ASSERT_TRUE(regrown) << regrown.error().str();
+
+    EXPECT_EQ(regrown->mesh->n_faces(), expected->mesh->n_faces());
+    EXPECT_EQ(regrown->mesh->n_vertices(), expected->mesh->n_vertices());
+    EXPECT_EQ(regrown->bounds, expected->bounds);
+    EXPECT_EQ(regrown->area, expected->area);
+    EXPECT_EQ(regrown->groundOrigin, expected->groundOrigin);
+    EXPECT_TRUE(regrown->paintUvs.generated);
+    EXPECT_EQ(regrown->paintUvs.fingerprint, expected->paintUvs.fingerprint);
+    EXPECT_EQ(regrown->paintUvs.corners.size(), expected->paintUvs.corners.size());
+    ASSERT_GT(expected->totalBlades(), first->totalBlades()) << "the edit grew more blades";
+    EXPECT_EQ(regrown->totalBlades(), expected->totalBlades());
+    const auto& blades = regrown->layers.at(0).patched.blades;
+    const auto& bladesExpected = expected->layers.at(0).patched.blades;
+    ASSERT_EQ(blades.size(), bladesExpected.size());
+    for (std::size_t i = 0; i < blades.size(); ++i) {
+        ASSERT_EQ(blades[i].v0Theta, bladesExpected[i].v0Theta) << "blade " << i;
+        ASSERT_EQ(blades[i].v2W, bladesExpected[i].v2W) << "blade " << i;
+    }
+    EXPECT_EQ(regrown->billboards.placed.size(), expected->billboards.placed.size());
+    // The first scene gave a copy of its mesh, not the mesh itself.
+    EXPECT_EQ(first->mesh->n_faces(), regrown->mesh->n_faces());
+    EXPECT_NE(&*first->mesh, &*regrown->mesh);
+}
+
+TEST(RegrowOnSameSurface, AnotherSurfaceIsReadAgain) {
+    const test::ScratchFolder folder("regrow-other-surface");
+    const LoadedProject loaded = writeProject(folder);
+    const auto differs = [&](auto change) {
+        LoadedProject next = loaded;
+        change(next);
+        return !sameSurface(loaded, next);
+    };
+    EXPECT_TRUE(differs([](LoadedProject& p) { p.project.mesh.file = "other.glb"; }));
+    EXPECT_TRUE(differs([](LoadedProject& p) { p.project.mesh.metresPerUnit = 0.01f; }));
+    EXPECT_TRUE(differs([](LoadedProject& p) { p.project.mesh.up = UpAxis::Z; }));
+    EXPECT_TRUE(differs([](LoadedProject& p) { p.project.mesh.uvAtlas = "terrain.uvatlas"; }));
+    EXPECT_TRUE(differs([](LoadedProject& p) { p.folder = p.folder / "elsewhere"; }));
+    EXPECT_TRUE(differs([](LoadedProject& p) {
+        p.project.layers.at(0).mapResolution = {128, 256};  // the atlas keeps gutters for 128
+    }));
+    EXPECT_FALSE(differs([](LoadedProject& p) {
+        p.project.layers.at(0).mapResolution = {512, 512};  // the coarsest is still 256
+        p.project.layers.push_back(p.project.layers.at(0));
+        p.project.layers.back().mapResolution = {256, 1024};
+    }));
+    EXPECT_FALSE(differs([](LoadedProject& p) { p.project.layers.at(0).scatter.density = 1.0f; }));
+}
+
+}  // namespace
+}  // namespace grass::core
