@@ -1,7 +1,10 @@
 #include "support/rules_terrain.h"
 
 #include <cmath>
+#include <fstream>
 #include <glm/gtc/quaternion.hpp>
+
+#include <gtest/gtest.h>
 
 #include "support/gltf_writer.h"
 
@@ -76,6 +79,15 @@ void writeRulesTerrain(const std::filesystem::path& file) {
     tree.translation = RULES_TREE_BASE;
     asset.nodes = {node("Ground", 0), cliff, cloud, tree, node("Trunk", 3), node("Canopy", 4)};
     writeGltf(file, asset, BufferStorage::Glb);
+}
+
+core::LoadedProject writeRulesTerrainProject(const std::filesystem::path& folder,
+                                             const std::string& projectJson) {
+    writeRulesTerrain(folder / "terrain.glb");
+    std::ofstream(folder / "project.json") << projectJson;
+    auto loaded = core::loadProject(folder);
+    EXPECT_TRUE(loaded) << loaded.error().str();
+    return loaded ? std::move(*loaded) : core::LoadedProject{};
 }
 
 }  // namespace grass::test

@@ -5,7 +5,11 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+
 #include <glm/glm.hpp>
+
+#include "project/project.h"
 
 namespace grass::test {
 
@@ -16,5 +20,10 @@ inline constexpr float RULES_CLOUD_RADIUS = 1.5f;
 inline constexpr glm::vec3 RULES_TREE_BASE{3.0f, 0.0f, 4.0f};
 
 void writeRulesTerrain(const std::filesystem::path& file);
+
+// `folder`/terrain.glb (the terrain above) and `folder`/project.json holding `projectJson`,
+// loaded (a test failure when it does not load).
+core::LoadedProject writeRulesTerrainProject(const std::filesystem::path& folder,
+                                             const std::string& projectJson);
 
 }  // namespace grass::test

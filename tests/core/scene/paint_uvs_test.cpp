@@ -22,11 +22,7 @@ const std::string PROJECT = R"({"format": "grass-project", "version": 2, "name":
   "layers": [{"name": "grass", "density": 20, "map_resolution": [256, 256]}]})";
 
 LoadedProject writeProject(const test::ScratchFolder& folder) {
-    test::writeRulesTerrain(folder / "terrain.glb");
-    std::ofstream(folder / "project.json") << PROJECT;
-    auto loaded = loadProject(folder.path());
-    EXPECT_TRUE(loaded) << loaded.error().str();
-    return std::move(*loaded);
+    return test::writeRulesTerrainProject(folder.path(), PROJECT);
 }
 
 // Which candidates of layer 0 live, and which stand on the ground.

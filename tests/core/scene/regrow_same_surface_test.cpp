@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 
 #include "scene/scene.h"
 #include "support/rules_terrain.h"
@@ -20,11 +19,7 @@ const std::string PROJECT = R"({"format": "grass-project", "version": 3, "name":
   "layers": [{"name": "grass", "density": 20, "map_resolution": [256, 256]}]})";
 
 LoadedProject writeProject(const test::ScratchFolder& folder) {
-    test::writeRulesTerrain(folder / "terrain.glb");
-    std::ofstream(folder / "project.json") << PROJECT;
-    auto loaded = loadProject(folder.path());
-    EXPECT_TRUE(loaded) << loaded.error().str();
-    return std::move(*loaded);
+    return test::writeRulesTerrainProject(folder.path(), PROJECT);
 }
 
 TEST(RegrowOnSameSurface, GrowsWhatTheFileWouldWithoutReadingIt) {
