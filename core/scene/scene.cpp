@@ -61,8 +61,11 @@ static std::string number(double value) {
     return text;
 }
 
+static Result<void> refuseHugeBillboards(const std::string& projectFile, float density, double area);
+
 // Up front, before a blade or billboard is allocated: a typo'd density (or a 100 km mesh) is
-// refused with what it would have needed, instead of running the machine out of memory.
+// refused with what it would have needed, instead of running the machine out of memory. The
+// billboards count only when the technique draws them (placeBillboards checks them then).
 static Result<void> refuseHugeScene(const LoadedProject& loaded, double area) {
     const Project& project = loaded.project;
     if (!std::isfinite(area))
@@ -91,17 +94,22 @@ static Result<void> refuseHugeScene(const LoadedProject& loaded, double area) {
                 "): lower density, raise clump_spacing, lower blades_per_clump or shrink the "
                 "/mesh"};
     }
-    const float density = project.billboards.placement.density;
+    if (drawsBillboards(project.render.technique))
+        return refuseHugeBillboards(loaded.file.string(), project.billboards.placement.density, area);
+    return {};
+}
+
+static Result<void> refuseHugeBillboards(const std::string& projectFile, float density, double area) {
     const double objects = static_cast<double>(density) * area;
     if (!(objects <= MAX_SCENE_BILLBOARDS)) {
         const auto perObject = static_cast<double>(sceneBytesPerBillboard());
-        return Error{loaded.file.string(),
+        return Error{projectFile,
                      "/billboards/density: " + number(density) + " /m² on " + number(area) +
                          " m² of surface asks for about " + number(objects) + " billboards, " +
                          byteSizeText(objects * perObject) + "; the limit is " +
                          number(MAX_SCENE_BILLBOARDS / 1e6) + " million per scene (" +
                          byteSizeText(MAX_SCENE_BILLBOARDS * perObject) +
-                         "): lower it (0 when the technique draws no billboards)"};
+                         "): lower it, or draw the field by blades (render technique), which places none"};
     }
     return {};
 }
@@ -185,6 +193,18 @@ static RuleWorld ruleWorldOf(const Project& project, const std::vector<SceneProp
     return world;
 }
 
+namespace {
+// Texels of a generated billboard texture and the blades drawn in it: at 128² a tuft 0.4 m tall
+// keeps 3 mm texels, finer than any pixel it covers beyond a metre.
+constexpr int BILLBOARD_TEXTURE_SIDE = 128;
+constexpr int BILLBOARD_TEXTURE_BLADES = 9;
+
+// The billboards' own random stream, apart from the layers'.
+std::uint64_t billboardSeed(const Project& project) {
+    return Rng::splitMix(project.seed ^ 0xB111B0A2D5ULL);
+}
+}  // namespace
+
 Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh mesh,
                                  std::vector<std::string> notes, glm::dvec3 groundOrigin) {
     Scene scene;
@@ -263,49 +283,68 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh
             field.shading[slot].waterAge.z = field.wilt[slot];
         scene.layers.push_back(std::move(field));
     }
-    auto billboards = buildBillboards(loaded, scene.mesh);
-    if (!billboards)
-        return billboards.error();
-    scene.billboards = std::move(*billboards);
-    std::vector<PlacementRules> rules;
+    auto texture = billboardTexture(loaded);
+    if (!texture)
+        return texture.error();
+    scene.billboards.texture = std::move(*texture);
+    BillboardRecipe recipe{.placement = project.billboards.placement,
+                           .seed = billboardSeed(project),
+                           .rules = {},
+                           .world = ruleWorld,
+                           .projectFile = loaded.file.string()};
     for (const GrassLayer& layer : project.layers)
-        rules.push_back(layer.rules);
-    scene.billboards.follow =
-        billboardFollow(scene.billboards.placed, scene.layers, rules, scene.mesh, ruleWorld,
-                        meanGrassColour(scene.billboards.texture));
-    refreshBillboards(scene);
+        recipe.rules.push_back(layer.rules);
+    scene.billboards.unplaced = std::move(recipe);
+    if (drawsBillboards(project.render.technique))
+        if (auto placed = placeBillboards(scene); !placed)
+            return placed.error();
     return scene;
 }
 
-namespace {
-// Texels of a generated billboard texture and the blades drawn in it: at 128² a tuft 0.4 m tall
-// keeps 3 mm texels, finer than any pixel it covers beyond a metre.
-constexpr int BILLBOARD_TEXTURE_SIDE = 128;
-constexpr int BILLBOARD_TEXTURE_BLADES = 9;
-}  // namespace
 
-Result<BillboardLayer> buildBillboards(const LoadedProject& loaded, const SurfaceMesh& mesh) {
+bool drawsBillboards(GrassTechnique technique) {
+    return technique == GrassTechnique::Billboards || technique == GrassTechnique::Hybrid;
+}
+
+Result<Rgba8Pixels> billboardTexture(const LoadedProject& loaded) {
     const BillboardDesc& desc = loaded.project.billboards;
-    const std::uint64_t seed = Rng::splitMix(loaded.project.seed ^ 0xB111B0A2D5ULL);
-    BillboardLayer layer;
-    layer.placed = placeGrassObjects(mesh, desc.placement, seed);
-    layer.objects = layer.placed;
     if (!desc.texture.empty()) {
         auto path = resolveAssetPath(loaded.folder, desc.texture, "/billboards/texture");
         if (!path)
             return Error{loaded.file.string(), path.error().str()};
-        auto texture = loadGrassTexture(*path);
-        if (!texture)
-            return texture.error();
-        layer.texture = std::move(*texture);
-    } else {
-        const GrassLayer colours =
-            loaded.project.layers.empty() ? GrassLayer{} : loaded.project.layers.front();
-        layer.texture = generateGrassTexture(BILLBOARD_TEXTURE_SIDE, BILLBOARD_TEXTURE_SIDE,
-                                             BILLBOARD_TEXTURE_BLADES, seed, colours.rootColor,
-                                             colours.tipColor);
+        return loadGrassTexture(*path);
     }
-    return layer;
+    const GrassLayer colours =
+        loaded.project.layers.empty() ? GrassLayer{} : loaded.project.layers.front();
+    return generateGrassTexture(BILLBOARD_TEXTURE_SIDE, BILLBOARD_TEXTURE_SIDE,
+                                BILLBOARD_TEXTURE_BLADES, billboardSeed(loaded.project),
+                                colours.rootColor, colours.tipColor);
+}
+
+Result<BillboardLayer> placedBillboards(const Scene& scene) {
+    if (!scene.billboards.unplaced)
+        return scene.billboards;
+    const BillboardRecipe& recipe = *scene.billboards.unplaced;
+    if (auto refused = refuseHugeBillboards(recipe.projectFile, recipe.placement.density, scene.area);
+        !refused)
+        return refused.error();
+    BillboardLayer billboards;
+    billboards.texture = scene.billboards.texture;
+    billboards.placed = placeGrassObjects(scene.mesh, recipe.placement, recipe.seed);
+    billboards.follow = billboardFollow(billboards.placed, scene.layers, recipe.rules, scene.mesh,
+                                        recipe.world, meanGrassColour(billboards.texture));
+    billboards.objects = followLayers(billboards.placed, billboards.follow, scene.layers);
+    return billboards;
+}
+
+Result<void> placeBillboards(Scene& scene) {
+    if (!scene.billboards.unplaced)
+        return {};
+    auto placed = placedBillboards(scene);
+    if (!placed)
+        return placed.error();
+    scene.billboards = std::move(*placed);
+    return {};
 }
 
 void refreshBillboards(Scene& scene) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,19 @@ struct LayerField : GrownField {
     std::vector<BladeShading> shading;
 };
 
+// What placing the billboards takes besides the scene's mesh and layers: kept by a scene whose
+// technique does not draw them, so they are placed only once something draws them
+// (placeBillboards). A field drawn by blades alone paid for a sampler pass over its mesh and
+// ~100 bytes a billboard it never drew; a 1 km² terrain at the default density asked for 30
+// million and was refused for them.
+struct BillboardRecipe {
+    StarBillboardParams placement;
+    std::uint64_t seed = 0;
+    std::vector<PlacementRules> rules;  // the layers', in order
+    RuleWorld world;
+    std::string projectFile;  // names the project in a refusal
+};
+
 // The star billboard grass objects of SPEC §8 and their texture: the billboard technique and
 // the hybrid's far field (project "billboards").
 struct BillboardLayer {
@@ -47,6 +61,7 @@ struct BillboardLayer {
     BillboardFollow follow;            // what of the layers does not change with painting
     std::vector<GrassObject> objects;  // the ones drawn: followLayers(placed, follow, layers)
     Rgba8Pixels texture;
+    std::optional<BillboardRecipe> unplaced;  // until placeBillboards has placed them
 };
 
 struct Scene {
@@ -81,10 +96,20 @@ std::size_t sceneBytesPerBillboard();
 // clumps, the densest Poisson-disk packing (hexagonal, 2/(√3·spacing²) centres per m²).
 double estimateLayerBlades(const ScatterParams& params, double area);
 
-// The project's billboards placed on `mesh` with their texture (loaded, or generated from the
-// first layer's colours); errors name the texture file. Every placed object is drawn: buildScene
-// then makes them follow the layers (billboard_follow.h).
-Result<BillboardLayer> buildBillboards(const LoadedProject& loaded, const SurfaceMesh& mesh);
+// Whether a technique draws the star billboards (the billboard technique, the hybrid's far field).
+bool drawsBillboards(GrassTechnique technique);
+
+// The texture of the project's billboards: its file, or one generated from the first layer's
+// colours; errors name the file.
+Result<Rgba8Pixels> billboardTexture(const LoadedProject& loaded);
+
+// The billboards a scene kept unplaced (BillboardLayer::unplaced), placed on its mesh and
+// following its layers (billboard_follow.h), with its texture; the scene's own when they are
+// placed already. More than MAX_SCENE_BILLBOARDS are refused, naming the project's
+// /billboards/density. A renderer asked to draw billboards a scene kept unplaced places them so.
+Result<BillboardLayer> placedBillboards(const Scene& scene);
+// The same, into the scene: buildScene does it at once when the project's technique draws them.
+Result<void> placeBillboards(Scene& scene);
 
 // After a layer's maps changed (a repaint, an undo): which billboards live, how tall and how
 // tinted, from the layers' maps now (billboard_follow.h). The placements and rule factors stay.

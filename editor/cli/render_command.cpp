@@ -51,6 +51,15 @@ Result<void> refuseOutputsOverInputs(const RenderArgs& args,
 }
 
 // --mesh: a default project around the glTF file, grown to about --blades blades.
+// --technique draws the scene, and the scene places the billboards only for a technique that
+// draws them (core::placeBillboards): the project is grown with the technique it is drawn with.
+void applyTechniqueOption(const RenderArgs& args, core::Project& project) {
+    if (args.technique == "project")
+        return;
+    if (auto technique = core::parseGrassTechnique(args.technique))
+        project.render.technique = *technique;
+}
+
 Result<core::LoadedProject> loadMeshInput(const RenderArgs& args, core::Scene* scene) {
     std::vector<core::ProjectInput> inputs{{realPath(args.mesh), args.mesh, "--mesh file"}};
     for (const auto& part : core::gltfExternalFiles(args.mesh))
@@ -71,6 +80,7 @@ Result<core::LoadedProject> loadMeshInput(const RenderArgs& args, core::Scene* s
     loaded->project.mesh.metresPerUnit = metresPerUnit;
     loaded->project.mesh.up = up;
     applyPresetOption(args.preset, loaded->project);
+    applyTechniqueOption(args, loaded->project);
     if (auto fits = checkFramebuffer(args, loaded->project.render); !fits)
         return fits.error();
     std::vector<std::string> notes;
@@ -102,6 +112,7 @@ Result<core::LoadedProject> loadProjectInput(RenderArgs& args, core::Scene* scen
     if (args.seedGiven)
         loaded->project.seed = args.seed;
     applyPresetOption(args.preset, loaded->project);
+    applyTechniqueOption(args, loaded->project);
     if (auto fits = checkFramebuffer(args, loaded->project.render); !fits)
         return fits.error();
     auto built = core::buildScene(*loaded);

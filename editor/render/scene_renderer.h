@@ -130,6 +130,10 @@ private:
     void drawOccluders(const gl::Program& program, float timeS);
     void runSunShadowPass(const RenderOptions& options, LightingBlock& block);
     std::unique_ptr<BillboardField> mBillboards;
+    // Billboards this renderer placed for a scene that kept them unplaced (billboardLayer()).
+    std::unique_ptr<core::BillboardLayer> mPlacedHere;
+    bool mBillboardsRefused = false;
+    const core::BillboardLayer* billboardLayer();
     bool mBillboardsStale = false;  // a repaint since they were last made to follow the layers
     BillboardField* billboardField();
     std::vector<StemSetField> mStemSets;

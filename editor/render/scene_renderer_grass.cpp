@@ -3,6 +3,7 @@
 #include "render/scene_renderer.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <utility>
 
 #include "util/assert.h"
@@ -142,11 +143,32 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
     mGrassTimer.end();
 }
 
+// The scene's billboards; placed here, once, when the scene kept them unplaced (its project's
+// technique drew none: core::placedBillboards). Null when they cannot be placed (too many: said
+// once on stderr).
+const core::BillboardLayer* SceneRenderer::billboardLayer() {
+    if (!mScene->billboards.unplaced)
+        return &mScene->billboards;
+    if (!mPlacedHere && !mBillboardsRefused) {
+        auto placed = core::placedBillboards(*mScene);
+        if (placed) {
+            mPlacedHere = std::make_unique<core::BillboardLayer>(std::move(*placed));
+        } else {
+            mBillboardsRefused = true;
+            std::fprintf(stderr, "note: billboards not drawn: %s\n", placed.error().str().c_str());
+        }
+    }
+    return mPlacedHere.get();
+}
+
 // The billboard clusters, uploaded on the first frame that draws them: a scene drawn by blades
 // alone allocates none. Null when the scene has no billboards (scenes assembled by hand). After a
 // repaint they follow the layers' maps again (core/scene/billboard_follow.h) before they draw.
 BillboardField* SceneRenderer::billboardField() {
-    const core::BillboardLayer& billboards = mScene->billboards;
+    const core::BillboardLayer* layer = billboardLayer();
+    if (!layer)
+        return nullptr;
+    const core::BillboardLayer& billboards = *layer;
     if (!mBillboards && !billboards.placed.empty()) {
         auto made = BillboardField::create(billboards.objects, billboards.texture);
         GRASS_ASSERT(made.ok());  // the shaders ship with the program; a failure is a bug
@@ -170,7 +192,8 @@ void SceneRenderer::drawBillboards(const core::OrbitCamera& camera, const glm::m
     params.mode = options.billboards.animation;
     params.wind = options.billboards.wind;
     params.sceneWind = options.wind;
-    params.stiffness = mScene->billboards.follow.stiffness;
+    const core::BillboardLayer* layer = billboardLayer();
+    params.stiffness = layer ? layer->follow.stiffness : mScene->billboards.follow.stiffness;
     params.sunShadows = options.sun.shadows;
     if (options.technique == core::GrassTechnique::Hybrid)
         params.fade = {options.billboards.crossFadeM.x, options.billboards.crossFadeM.y, 1.0e30f,

@@ -70,10 +70,43 @@ TEST(ProjectBillboards, NamesParseBack) {
 TEST(ProjectBillboards, SceneGrowsObjectsAndGeneratesATexture) {
     LoadedProject loaded = test::planeFieldProject({2.0f, 2, 10.0f}, test::sourceDir());
     loaded.project.billboards.placement.density = 20.0f;
+    loaded.project.render.technique = GrassTechnique::Billboards;
     auto scene = buildScene(loaded);
     ASSERT_TRUE(scene.ok()) << scene.error().str();
+    EXPECT_FALSE(scene->billboards.unplaced.has_value());
     EXPECT_NEAR(static_cast<double>(scene->billboards.objects.size()), 80.0, 1.0);
     EXPECT_GT(scene->billboards.texture.width, 0);
+}
+
+// A scene its technique draws by blades alone places no billboards (a pass over the mesh and
+// ~100 bytes each, for nothing drawn); they are placed, the same ones, once something draws them.
+TEST(ProjectBillboards, ABladesSceneKeepsItsBillboardsUnplacedUntilTheyAreDrawn) {
+    LoadedProject loaded = test::planeFieldProject({2.0f, 2, 10.0f}, test::sourceDir());
+    loaded.project.billboards.placement.density = 20.0f;
+    ASSERT_EQ(loaded.project.render.technique, GrassTechnique::Blades);
+    auto blades = buildScene(loaded);
+    ASSERT_TRUE(blades.ok()) << blades.error().str();
+    EXPECT_TRUE(blades->billboards.placed.empty());
+    EXPECT_TRUE(blades->billboards.objects.empty());
+    ASSERT_TRUE(blades->billboards.unplaced.has_value());
+    EXPECT_GT(blades->billboards.texture.width, 0) << "the texture is read at once: its errors too";
+
+    loaded.project.render.technique = GrassTechnique::Hybrid;
+    auto hybrid = buildScene(loaded);
+    ASSERT_TRUE(hybrid.ok()) << hybrid.error().str();
+    const auto placed = placedBillboards(*blades);
+    ASSERT_TRUE(placed.ok()) << placed.error().str();
+    ASSERT_EQ(placed->placed.size(), hybrid->billboards.placed.size());
+    ASSERT_GT(placed->placed.size(), 60u);
+    for (std::size_t i = 0; i < placed->placed.size(); ++i) {
+        EXPECT_EQ(placed->placed[i].centre, hybrid->billboards.placed[i].centre) << i;
+        EXPECT_EQ(placed->placed[i].cluster, hybrid->billboards.placed[i].cluster) << i;
+    }
+    ASSERT_EQ(placed->objects.size(), hybrid->billboards.objects.size());
+    EXPECT_EQ(placed->follow.stiffness, hybrid->billboards.follow.stiffness);
+    ASSERT_TRUE(placeBillboards(*blades).ok());
+    EXPECT_FALSE(blades->billboards.unplaced.has_value());
+    EXPECT_EQ(blades->billboards.objects.size(), hybrid->billboards.objects.size());
 }
 
 TEST(ProjectBillboards, MissingTextureFileIsNamed) {

@@ -15,9 +15,11 @@
 namespace grass::core {
 namespace {
 
-// A 6 m plane with one layer and 20 billboards a square metre (720 placed).
+// A 6 m plane with one layer and 20 billboards a square metre (720 placed), drawn by the hybrid
+// technique (a scene of blades alone places none: placeBillboards).
 Scene fieldScene(LoadedProject loaded = test::planeFieldProject({6.0f, 4, 40.0f})) {
     loaded.project.billboards.placement.density = 20.0f;
+    loaded.project.render.technique = GrassTechnique::Hybrid;
     auto scene = buildScene(loaded);
     EXPECT_TRUE(scene.ok()) << scene.error().str();
     return std::move(*scene);

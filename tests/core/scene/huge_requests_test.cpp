@@ -54,10 +54,26 @@ TEST(HugeRequests, TenMillionBillboardsAreRefusedBeforePlacing) {
     // No blades at all: the billboards' own density × area is what is too much.
     LoadedProject loaded = test::planeFieldProject({100.0f, 4, 0.0f});
     loaded.project.billboards.placement.density = 1000.0f;
+    loaded.project.render.technique = GrassTechnique::Hybrid;
     const auto scene = buildScene(loaded);
     ASSERT_FALSE(scene.ok());
     expectMentions(scene.error().str(),
                    {"/billboards/density", "1e+07 billboards", "GiB", "limit is 2 million"});
+}
+
+// The same billboards do not stop a field its technique draws by blades alone (a 1 km² terrain
+// at the default billboard density was refused for 30 million billboards it never drew); placing
+// them later, for a renderer asked to draw them, is refused in the same words.
+TEST(HugeRequests, BillboardsNotDrawnAreNotCounted) {
+    LoadedProject loaded = test::planeFieldProject({100.0f, 4, 0.0f});
+    loaded.project.billboards.placement.density = 1000.0f;
+    auto scene = buildScene(loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    const auto placed = placeBillboards(*scene);
+    ASSERT_FALSE(placed.ok());
+    expectMentions(placed.error().str(),
+                   {"/billboards/density", "1e+07 billboards", "GiB", "limit is 2 million"});
+    EXPECT_TRUE(scene->billboards.placed.empty());
 }
 
 // The largest plane a project may ask for (3e38 m, within float range): its area is finite in
