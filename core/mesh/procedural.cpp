@@ -153,8 +153,8 @@ void addOrientedTriangle(SurfaceMeshBuilder& builder, const std::vector<SurfaceP
 
 // collapseV0/collapseV1: the v = 0 / v = 1 row is a single point (a sphere's pole); the quads
 // touching it become one triangle each instead of a degenerate pair.
-MovableSurfaceMesh buildGrid(int nu, int nv, const Parametrisation& surface, bool collapseV0 = false,
-                      bool collapseV1 = false) {
+MovableSurfaceMesh buildGrid(int nu, int nv, const Parametrisation& surface,
+                             bool collapseV0 = false, bool collapseV1 = false) {
     SurfaceMeshBuilder builder;
     std::vector<SurfacePoint> points;
     points.reserve(static_cast<std::size_t>((nu + 1) * (nv + 1)));

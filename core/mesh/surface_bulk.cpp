@@ -24,7 +24,8 @@ float weightedQuantile(std::vector<WeightedCoordinate>& entries, double target) 
     std::size_t lo = 0, hi = entries.size();  // the answer lies in [lo, hi)
     while (hi - lo > 1) {
         const std::size_t mid = lo + (hi - lo) / 2;
-        std::nth_element(entries.begin() + std::ptrdiff_t(lo), entries.begin() + std::ptrdiff_t(mid),
+        std::nth_element(entries.begin() + std::ptrdiff_t(lo),
+                         entries.begin() + std::ptrdiff_t(mid),
                          entries.begin() + std::ptrdiff_t(hi), byCoordinate);
         double below = 0.0;  // everything in [lo, mid) sorts before entries[mid]
         for (std::size_t i = lo; i < mid; ++i)

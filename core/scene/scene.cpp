@@ -61,7 +61,8 @@ static std::string number(double value) {
     return text;
 }
 
-static Result<void> refuseHugeBillboards(const std::string& projectFile, float density, double area);
+static Result<void> refuseHugeBillboards(const std::string& projectFile, float density,
+                                         double area);
 
 // Up front, before a blade or billboard is allocated: a typo'd density (or a 100 km mesh) is
 // refused with what it would have needed, instead of running the machine out of memory. The
@@ -95,21 +96,24 @@ static Result<void> refuseHugeScene(const LoadedProject& loaded, double area) {
                 "/mesh"};
     }
     if (drawsBillboards(project.render.technique))
-        return refuseHugeBillboards(loaded.file.string(), project.billboards.placement.density, area);
+        return refuseHugeBillboards(loaded.file.string(), project.billboards.placement.density,
+                                    area);
     return {};
 }
 
-static Result<void> refuseHugeBillboards(const std::string& projectFile, float density, double area) {
+static Result<void> refuseHugeBillboards(const std::string& projectFile, float density,
+                                         double area) {
     const double objects = static_cast<double>(density) * area;
     if (!(objects <= MAX_SCENE_BILLBOARDS)) {
         const auto perObject = static_cast<double>(sceneBytesPerBillboard());
-        return Error{projectFile,
-                     "/billboards/density: " + number(density) + " /m² on " + number(area) +
-                         " m² of surface asks for about " + number(objects) + " billboards, " +
-                         byteSizeText(objects * perObject) + "; the limit is " +
-                         number(MAX_SCENE_BILLBOARDS / 1e6) + " million per scene (" +
-                         byteSizeText(MAX_SCENE_BILLBOARDS * perObject) +
-                         "): lower it, or draw the field by blades (render technique), which places none"};
+        return Error{
+            projectFile,
+            "/billboards/density: " + number(density) + " /m² on " + number(area) +
+                " m² of surface asks for about " + number(objects) + " billboards, " +
+                byteSizeText(objects * perObject) + "; the limit is " +
+                number(MAX_SCENE_BILLBOARDS / 1e6) + " million per scene (" +
+                byteSizeText(MAX_SCENE_BILLBOARDS * perObject) +
+                "): lower it, or draw the field by blades (render technique), which places none"};
     }
     return {};
 }
@@ -122,9 +126,10 @@ static int coarsestMapSide(const Project& project) {
     return coarsest;
 }
 
-Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded, std::vector<std::string>* notes,
-                                           SurfaceLook* look, PaintUvs* paintUvs,
-                                           glm::dvec3* groundOrigin, GltfImport* alreadyRead) {
+Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded,
+                                           std::vector<std::string>* notes, SurfaceLook* look,
+                                           PaintUvs* paintUvs, glm::dvec3* groundOrigin,
+                                           GltfImport* alreadyRead) {
     const MeshSource& source = loaded.project.mesh;
     if (!source.isFile)
         return makeProceduralMesh(source.procedural);
@@ -301,7 +306,6 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh
     return scene;
 }
 
-
 bool drawsBillboards(GrassTechnique technique) {
     return technique == GrassTechnique::Billboards || technique == GrassTechnique::Hybrid;
 }
@@ -325,7 +329,8 @@ Result<BillboardLayer> placedBillboards(const Scene& scene) {
     if (!scene.billboards.unplaced)
         return scene.billboards;
     const BillboardRecipe& recipe = *scene.billboards.unplaced;
-    if (auto refused = refuseHugeBillboards(recipe.projectFile, recipe.placement.density, scene.area);
+    if (auto refused =
+            refuseHugeBillboards(recipe.projectFile, recipe.placement.density, scene.area);
         !refused)
         return refused.error();
     BillboardLayer billboards;

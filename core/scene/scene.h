@@ -180,8 +180,10 @@ Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
 // (GltfPlacement::GroundNearOrigin, the project's unit): taken instead of reading the file again
 // (a new project around a mesh has just read it to size the field; an 8-million-triangle ground
 // takes seconds to read).
-Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& project, std::vector<std::string>* notes,
-                                           SurfaceLook* look = nullptr, PaintUvs* paintUvs = nullptr,
+Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& project,
+                                           std::vector<std::string>* notes,
+                                           SurfaceLook* look = nullptr,
+                                           PaintUvs* paintUvs = nullptr,
                                            glm::dvec3* groundOrigin = nullptr,
                                            GltfImport* alreadyRead = nullptr);
 

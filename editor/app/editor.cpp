@@ -54,7 +54,8 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     // The window opens before anything large is read, so the seconds a large mesh takes to read
     // and grow pass in front of a window that says what it is doing. A new project around a mesh
     // is named after the file and has the default picture size, known before the file is read.
-    auto loaded = fromMesh ? Result<core::LoadedProject>(core::LoadedProject{}) : core::loadProject(start);
+    auto loaded =
+        fromMesh ? Result<core::LoadedProject>(core::LoadedProject{}) : core::loadProject(start);
     if (!loaded)
         return loaded.error();
     const std::string name = fromMesh ? start.stem().string() : loaded->project.name;

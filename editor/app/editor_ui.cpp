@@ -136,7 +136,8 @@ void EditorUi::showNotice(Window& window, std::string_view text) {
         return;
     ui::Input in;
     in.pixelsPerPoint = window.contentScale();
-    in.screenRect = {{0.0f, 0.0f}, {float(fbW) / in.pixelsPerPoint, float(fbH) / in.pixelsPerPoint}};
+    in.screenRect = {{0.0f, 0.0f},
+                     {float(fbW) / in.pixelsPerPoint, float(fbH) / in.pixelsPerPoint}};
     in.hasPointer = false;
     const ui::Rect screen = in.screenRect;
     beginFrame(std::move(in));

@@ -289,10 +289,9 @@ ui::Color32 handleColor(core::GizmoHandle handle, bool hot) {
 
 SceneTools::SceneTools(core::Scene& scene, const core::GrassLightingDesc& lighting)
     : painter(scene, lighting),
-      mBuilding(std::async(std::launch::async,
-                           [soup = core::triangleSoupOf(scene.mesh)]() mutable {
-                               return core::TriangleBvh(std::move(soup));
-                           })) {}
+      mBuilding(std::async(std::launch::async, [soup = core::triangleSoupOf(scene.mesh)]() mutable {
+          return core::TriangleBvh(std::move(soup));
+      })) {}
 
 const core::TriangleBvh& SceneTools::bvh() const {
     if (!mBvh)
@@ -404,8 +403,8 @@ void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const Edito
                                      ? s.view.paint.brush.radiusM
                                      : DEFAULT_RADIUS_SHARE * glm::length(s.scene->bounds.size());
             std::vector<ui::Vec2> points;
-            for (const glm::vec3 p :
-                 core::surfacePointsOnRing(s.tools->bvh(), hit->posWorld, hit->normal, radius, RING_POINTS))
+            for (const glm::vec3 p : core::surfacePointsOnRing(s.tools->bvh(), hit->posWorld,
+                                                               hit->normal, radius, RING_POINTS))
                 if (auto px = core::projectToPixel(camera, p, pointer.viewportSize))
                     points.push_back(toPoints(*px));
             // What a stroke now would do, Ctrl included: a red ring and a minus sign when it

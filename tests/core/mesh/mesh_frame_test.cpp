@@ -138,7 +138,8 @@ TEST(SurfaceBulk, QuantilesAreThoseOfTheSortedCorners) {
     }
     for (int i = 0; i < 40; ++i) {
         const OpenMesh::Vec3f at(far(random), far(random), far(random));
-        const auto a = mesh.add_vertex(at), b = mesh.add_vertex(at + OpenMesh::Vec3f(2.0f, jitter(random), 0.0f)),
+        const auto a = mesh.add_vertex(at),
+                   b = mesh.add_vertex(at + OpenMesh::Vec3f(2.0f, jitter(random), 0.0f)),
                    c = mesh.add_vertex(at + OpenMesh::Vec3f(0.0f, jitter(random), 2.0f));
         mesh.add_face(a, c, b);
     }
