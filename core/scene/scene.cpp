@@ -61,8 +61,23 @@ static std::string number(double value) {
     return text;
 }
 
+// Too many billboards for one scene, refused naming the project's /billboards/density.
 static Result<void> refuseHugeBillboards(const std::string& projectFile, float density,
-                                         double area);
+                                         double area) {
+    const double objects = static_cast<double>(density) * area;
+    if (!(objects <= MAX_SCENE_BILLBOARDS)) {
+        const auto perObject = static_cast<double>(sceneBytesPerBillboard());
+        return Error{
+            projectFile,
+            "/billboards/density: " + number(density) + " /m² on " + number(area) +
+                " m² of surface asks for about " + number(objects) + " billboards, " +
+                byteSizeText(objects * perObject) + "; the limit is " +
+                number(MAX_SCENE_BILLBOARDS / 1e6) + " million per scene (" +
+                byteSizeText(MAX_SCENE_BILLBOARDS * perObject) +
+                "): lower it, or draw the field by blades (render technique), which places none"};
+    }
+    return {};
+}
 
 // Up front, before a blade or billboard is allocated: a typo'd density (or a 100 km mesh) is
 // refused with what it would have needed, instead of running the machine out of memory. The
@@ -98,23 +113,6 @@ static Result<void> refuseHugeScene(const LoadedProject& loaded, double area) {
     if (drawsBillboards(project.render.technique))
         return refuseHugeBillboards(loaded.file.string(), project.billboards.placement.density,
                                     area);
-    return {};
-}
-
-static Result<void> refuseHugeBillboards(const std::string& projectFile, float density,
-                                         double area) {
-    const double objects = static_cast<double>(density) * area;
-    if (!(objects <= MAX_SCENE_BILLBOARDS)) {
-        const auto perObject = static_cast<double>(sceneBytesPerBillboard());
-        return Error{
-            projectFile,
-            "/billboards/density: " + number(density) + " /m² on " + number(area) +
-                " m² of surface asks for about " + number(objects) + " billboards, " +
-                byteSizeText(objects * perObject) + "; the limit is " +
-                number(MAX_SCENE_BILLBOARDS / 1e6) + " million per scene (" +
-                byteSizeText(MAX_SCENE_BILLBOARDS * perObject) +
-                "): lower it, or draw the field by blades (render technique), which places none"};
-    }
     return {};
 }
 

@@ -281,9 +281,8 @@ bool Editor::applyRequests() {
 void Editor::regrowLive() {
     // An edit of the layers keeps the surface: the field grows on the mesh at hand, not on the
     // file read again (seconds for a large mesh, each edit).
-    const core::Scene* sameSurface =
-        mLive.scene && core::sameSurface(mLive.builtFrom, mState.doc.loaded) ? mLive.scene.get()
-                                                                             : nullptr;
+    const Live* sameSurface =
+        mLive.scene && core::sameSurface(mLive.builtFrom, mState.doc.loaded) ? &mLive : nullptr;
     auto next = buildLive(
         mState.doc.loaded, !mSettings.noPhysics,
         [&](core::Scene& grown) { return carryPaintedMaps(mState, *mLive.scene, grown); },

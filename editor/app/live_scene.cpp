@@ -64,8 +64,8 @@ static bool physicsOnCpu(PhysicsDevice device, const core::ScenePhysics& physics
 Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
                        const std::function<Result<void>(core::Scene&)>& prepare,
                        PhysicsDevice device, core::GltfImport* alreadyRead,
-                       const core::Scene* grownOn) {
-    auto scene = grownOn != nullptr ? core::regrowOnSameSurface(loaded, *grownOn)
+                       const Live* grownOn) {
+    auto scene = grownOn != nullptr ? core::regrowOnSameSurface(loaded, *grownOn->scene)
                                     : core::buildScene(loaded, alreadyRead);
     if (!scene)
         return scene.error();
@@ -77,7 +77,8 @@ Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
     Live live;
     live.builtFrom = loaded;
     live.scene = std::make_unique<core::Scene>(std::move(*scene));
-    live.tools = std::make_unique<SceneTools>(*live.scene, loaded.project.lighting);
+    live.tools = std::make_unique<SceneTools>(*live.scene, loaded.project.lighting,
+                                              grownOn != nullptr ? grownOn->tools.get() : nullptr);
     auto renderer = render::SceneRenderer::create(*live.scene);
     if (!renderer)
         return renderer.error();

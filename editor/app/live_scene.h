@@ -66,13 +66,13 @@ struct Live {
 
 // `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
 // `alreadyRead`: the project's mesh as newProjectFromMesh read it (core::buildScene's).
-// `grownOn`: a scene of a project with the same surface (core::sameSurface), whose mesh the
-// field grows on instead of the file's (core::regrowOnSameSurface).
+// `grownOn`: a live field of a project with the same surface (core::sameSurface), whose mesh the
+// field grows on instead of the file's (core::regrowOnSameSurface) and whose picking BVH it shares.
 Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
                        const std::function<Result<void>(core::Scene&)>& prepare = {},
                        PhysicsDevice device = PhysicsDevice::Auto,
                        core::GltfImport* alreadyRead = nullptr,
-                       const core::Scene* grownOn = nullptr);
+                       const Live* grownOn = nullptr);
 
 // Puts every layer's blades back at rest on the GPU and restarts the simulation from there
 // (keeping its step count).

@@ -287,17 +287,16 @@ ui::Color32 handleColor(core::GizmoHandle handle, bool hot) {
 
 }  // namespace
 
-SceneTools::SceneTools(core::Scene& scene, const core::GrassLightingDesc& lighting)
+SceneTools::SceneTools(core::Scene& scene, const core::GrassLightingDesc& lighting,
+                       const SceneTools* sameSurface)
     : painter(scene, lighting),
-      mBuilding(std::async(std::launch::async, [soup = core::triangleSoupOf(scene.mesh)]() mutable {
-          return core::TriangleBvh(std::move(soup));
-      })) {}
-
-const core::TriangleBvh& SceneTools::bvh() const {
-    if (!mBvh)
-        mBvh.emplace(mBuilding.get());
-    return *mBvh;
-}
+      mBvh(sameSurface != nullptr
+               ? sameSurface->mBvh
+               : std::async(std::launch::async,
+                            [soup = core::triangleSoupOf(scene.mesh)]() mutable {
+                                return core::TriangleBvh(std::move(soup));
+                            })
+                     .share()) {}
 
 std::optional<core::RayHit> pickSurface(const SceneTools& tools, const core::OrbitCamera& camera,
                                         const ViewportPointer& pointer) {

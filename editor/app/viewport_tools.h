@@ -63,16 +63,17 @@ struct PlaceToolSettings {
 // What the tools work on, rebuilt with the live scene: the mesh's BVH for picking and the brush.
 // The BVH is built on a worker thread from a copy of the mesh's triangles (an 8-million-triangle
 // ground took 4 s, all of it before the window could draw), so the field shows at once; the
-// first pick waits for the rest of the build.
+// first pick waits for the rest of the build. Tools for a field re-grown on the same surface
+// (core::regrowOnSameSurface) share the BVH of the tools before them instead of building it again.
 struct SceneTools {
-    SceneTools(core::Scene& scene, const core::GrassLightingDesc& lighting);
+    SceneTools(core::Scene& scene, const core::GrassLightingDesc& lighting,
+               const SceneTools* sameSurface = nullptr);
     // Waits for the build the first time.
-    const core::TriangleBvh& bvh() const;
+    const core::TriangleBvh& bvh() const { return mBvh.get(); }
     core::ScenePainter painter;
 
 private:
-    mutable std::future<core::TriangleBvh> mBuilding;
-    mutable std::optional<core::TriangleBvh> mBvh;
+    std::shared_future<core::TriangleBvh> mBvh;
 };
 
 // Where the mouse meets the mesh (for the brush cursor), if it does.

@@ -139,6 +139,21 @@ TEST(ViewportTools, AStrokeOfPointerEventsErasesTheTexelsUnderItAndUndoRestoresT
     EXPECT_EQ(d.scene.layers[0].patched.blades, paintedBlades);
 }
 
+// Tools for a field re-grown on the same surface share the BVH of the tools before them (built
+// once, on its worker); tools for another field build their own. Both pick the same surface.
+TEST(ViewportTools, ToolsOfTheSameSurfaceShareOnePickingBvh) {
+    ToolDriver d;
+    const editor::SceneTools same(d.scene, d.state.doc.loaded.project.lighting, &*d.tools);
+    const editor::SceneTools own(d.scene, d.state.doc.loaded.project.lighting);
+    EXPECT_EQ(&same.bvh(), &d.tools->bvh());
+    EXPECT_NE(&own.bvh(), &d.tools->bvh());
+    const core::Ray down{{0.3f, 2.0f, -0.4f}, {0.0f, -1.0f, 0.0f}};
+    const auto hit = same.bvh().intersect(down);
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_EQ(own.bvh().intersect(down), hit);
+    EXPECT_NEAR(hit->posWorld.y, 0.0f, 1e-5f);
+}
+
 TEST(ViewportTools, APressOffTheMeshPaintsNothing) {
     ToolDriver d;
     d.state.view.tool = editor::ViewportTool::Paint;

@@ -16,6 +16,15 @@
 namespace grass::core {
 namespace {
 
+// A square plane of `size` in the XZ plane, `resolution` quads a side.
+SurfaceMesh planeMesh(float size, int resolution) {
+    ProceduralMeshParams params;
+    params.shape = ProceduralShape::Plane;
+    params.size = size;
+    params.resolution = resolution;
+    return *makeProceduralMesh(params);
+}
+
 TEST(MeshFrame, UnitsParseByNameOrNumberAndRefuseTheRest) {
     EXPECT_EQ(parseMeshUnit("mm").value(), 0.001f);
     EXPECT_EQ(parseMeshUnit("in").value(), 0.0254f);
@@ -33,11 +42,8 @@ TEST(MeshFrame, UnitsParseByNameOrNumberAndRefuseTheRest) {
 }
 
 TEST(MeshFrame, MillimetresWithZUpBecomeMetresWithYUp) {
-    ProceduralMeshParams params;
-    params.shape = ProceduralShape::Plane;
-    params.size = 2000.0f;  // 2000 mm, lying in the file's XZ plane: standing up once Z is up
-    params.resolution = 2;
-    SurfaceMesh mesh = makeProceduralMesh(params);
+    // 2000 mm, lying in the file's XZ plane: standing up once Z is up.
+    SurfaceMesh mesh = planeMesh(2000.0f, 2);
     applyMeshFrame(mesh, 0.001f, UpAxis::Z);
     const Bounds bounds = meshBounds(mesh);
     EXPECT_NEAR(bounds.size().x, 2.0f, 1e-5f);
@@ -59,11 +65,7 @@ TEST(MeshFrame, MillimetresWithZUpBecomeMetresWithYUp) {
 }
 
 TEST(SurfaceBulk, LeavesOutSmallFarPartsButKeepsTheField) {
-    ProceduralMeshParams ground;
-    ground.shape = ProceduralShape::Plane;
-    ground.size = 30.0f;
-    ground.resolution = 30;
-    SurfaceMesh mesh = makeProceduralMesh(ground);
+    SurfaceMesh mesh = planeMesh(30.0f, 30);
     // A 1 m "cloud" 400 m up and 300 m off to the side: 0.1 % of the area.
     const auto a = mesh.add_vertex({300.0f, 400.0f, 0.0f}), b = mesh.add_vertex({301.0f, 400.0f, 0.0f}),
                c = mesh.add_vertex({300.0f, 400.0f, 1.0f});
@@ -124,11 +126,7 @@ float sortedCornerQuantile(const SurfaceMesh& mesh, int axis, double share) {
 // bulk (before its margin) lies on the quantiles of the sorted corners, whichever way they are
 // found.
 TEST(SurfaceBulk, QuantilesAreThoseOfTheSortedCorners) {
-    ProceduralMeshParams ground;
-    ground.shape = ProceduralShape::Plane;
-    ground.size = 40.0f;
-    ground.resolution = 48;
-    SurfaceMesh mesh = makeProceduralMesh(ground);
+    SurfaceMesh mesh = planeMesh(40.0f, 48);
     std::mt19937 random(7);
     std::uniform_real_distribution<float> jitter(-0.4f, 0.4f), far(-300.0f, 300.0f);
     for (const auto vh : mesh.vertices()) {

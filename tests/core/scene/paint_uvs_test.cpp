@@ -21,9 +21,6 @@ const std::string PROJECT = R"({"format": "grass-project", "version": 2, "name":
   "mesh": {"file": "terrain.glb"},
   "layers": [{"name": "grass", "density": 20, "map_resolution": [256, 256]}]})";
 
-LoadedProject writeProject(const test::ScratchFolder& folder) {
-    return test::writeRulesTerrainProject(folder.path(), PROJECT);
-}
 
 // Which candidates of layer 0 live, and which stand on the ground.
 std::vector<char> liveCandidates(const Scene& scene) {
@@ -67,7 +64,7 @@ std::pair<std::size_t, std::size_t> strokeAt(Scene& scene, glm::vec3 at) {
 
 TEST(PaintUvs, AMeshWithoutUvsGetsAnAtlasAndAStrokeStaysOnItsSurface) {
     const test::ScratchFolder folder("paint-uvs-atlas");
-    const LoadedProject loaded = writeProject(folder);
+    const LoadedProject loaded = test::writeRulesTerrainProject(folder.path(), PROJECT);
     auto scene = buildScene(loaded);
     ASSERT_TRUE(scene) << scene.error().str();
     EXPECT_TRUE(scene->paintUvs.generated);
@@ -83,7 +80,7 @@ TEST(PaintUvs, AMeshWithoutUvsGetsAnAtlasAndAStrokeStaysOnItsSurface) {
 TEST(PaintUvs, WithThePlanarProjectionTheSameStrokeReachedTheGround) {
     // What the atlas fixes, shown on the loader's planar UVs (the mesh as imported).
     const test::ScratchFolder folder("paint-uvs-planar");
-    const LoadedProject loaded = writeProject(folder);
+    const LoadedProject loaded = test::writeRulesTerrainProject(folder.path(), PROJECT);
     auto imported = loadGltf(folder / "terrain.glb");
     ASSERT_TRUE(imported);
     EXPECT_FALSE(findUvOverlaps(cornerUvsOf(imported->mesh), imported->mesh).paintable());
@@ -98,7 +95,7 @@ TEST(PaintUvs, WithThePlanarProjectionTheSameStrokeReachedTheGround) {
 
 TEST(PaintUvs, AKeptAtlasIsWhatTheNextOpenPaintsIn) {
     const test::ScratchFolder folder("paint-uvs-kept");
-    LoadedProject loaded = writeProject(folder);
+    LoadedProject loaded = test::writeRulesTerrainProject(folder.path(), PROJECT);
     auto first = buildScene(loaded);
     ASSERT_TRUE(first) << first.error().str();
     ASSERT_TRUE(first->paintUvs.generated);

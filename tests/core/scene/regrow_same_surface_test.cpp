@@ -18,13 +18,10 @@ const std::string PROJECT = R"({"format": "grass-project", "version": 3, "name":
   "mesh": {"file": "terrain.glb"},
   "layers": [{"name": "grass", "density": 20, "map_resolution": [256, 256]}]})";
 
-LoadedProject writeProject(const test::ScratchFolder& folder) {
-    return test::writeRulesTerrainProject(folder.path(), PROJECT);
-}
 
 TEST(RegrowOnSameSurface, GrowsWhatTheFileWouldWithoutReadingIt) {
     const test::ScratchFolder folder("regrow-same-surface");
-    const LoadedProject loaded = writeProject(folder);
+    const LoadedProject loaded = test::writeRulesTerrainProject(folder.path(), PROJECT);
     auto first = buildScene(loaded);
     ASSERT_TRUE(first) << first.error().str();
     ASSERT_TRUE(first->paintUvs.generated) << "the terrain has no UVs of its own";
@@ -66,7 +63,7 @@ TEST(RegrowOnSameSurface, GrowsWhatTheFileWouldWithoutReadingIt) {
 
 TEST(RegrowOnSameSurface, AnotherSurfaceIsReadAgain) {
     const test::ScratchFolder folder("regrow-other-surface");
-    const LoadedProject loaded = writeProject(folder);
+    const LoadedProject loaded = test::writeRulesTerrainProject(folder.path(), PROJECT);
     const auto differs = [&](auto change) {
         LoadedProject next = loaded;
         change(next);
