@@ -8,7 +8,17 @@ namespace grass::editor {
 
 bool replaceDocument(EditorState& state, Live& live, core::LoadedProject next, bool withPhysics,
                      std::string_view what, PhysicsDevice device, core::GltfImport* alreadyRead) {
-    auto built = buildLive(next, withPhysics, {}, device, alreadyRead);
+    auto grown = growField(std::move(next), withPhysics, alreadyRead);
+    if (!grown) {
+        state.transient.message = std::string(what) + ": " + grown.error().str();
+        return false;
+    }
+    return replaceDocument(state, live, std::move(*grown), what, device);
+}
+
+bool replaceDocument(EditorState& state, Live& live, GrownField next, std::string_view what,
+                     PhysicsDevice device) {
+    auto built = bringUpLive(std::move(next), {}, device);
     if (!built) {
         state.transient.message = std::string(what) + ": " + built.error().str();
         return false;
@@ -18,7 +28,7 @@ bool replaceDocument(EditorState& state, Live& live, core::LoadedProject next, b
     ++state.mapsChanged;  // the map overlay goes to the new renderer
     if (live.physics)
         live.physics->steps = steps;  // the field starts from rest, the clock goes on
-    state.doc.loaded = std::move(next);
+    state.doc.loaded = live.builtFrom;
     state.scene = live.scene.get();
     state.tools = live.tools.get();
     resetHistory(state);

@@ -18,5 +18,9 @@ namespace grass::editor {
 bool replaceDocument(EditorState& state, Live& live, core::LoadedProject next, bool withPhysics,
                      std::string_view what, PhysicsDevice device = PhysicsDevice::Auto,
                      core::GltfImport* alreadyRead = nullptr);
+// The same with the field already grown (on a worker, document_job.h): brought up on the GPU
+// here, then made the document.
+bool replaceDocument(EditorState& state, Live& live, GrownField next, std::string_view what,
+                     PhysicsDevice device = PhysicsDevice::Auto);
 
 }  // namespace grass::editor

@@ -29,6 +29,8 @@ namespace {
 
 // File → Save turntable: a 15° step, smooth enough to read as a turn on the contact sheet.
 constexpr int TURNTABLE_VIEWS = 24;
+// While a field grows on a worker: five frames a second at most (Editor::frame).
+constexpr int LOADING_FRAME_MS = 200;
 
 }  // namespace
 
@@ -201,14 +203,17 @@ Result<bool> Editor::frame() {
         return more;
     // The frame's slowness (--frame-delay-ms), spent gathering events as they come: a slow
     // frame must not stretch the time between two clicks of a double-click.
-    if (mSettings.frameDelayMs > 0) {
-        const Clock::time_point until =
-            Clock::now() + std::chrono::milliseconds(mSettings.frameDelayMs);
-        while (Clock::now() < until) {
-            std::this_thread::sleep_for(
-                std::min<Clock::duration>(std::chrono::milliseconds(5), until - Clock::now()));
-            mWindow->gatherEvents();
-        }
+    // While a document job grows its field, frames come at most every LOADING_FRAME_MS, so the
+    // worker gets the cores the renderer would take (llvmpipe draws on every core): the window
+    // still answers, and the load is not slowed by frames nobody needs.
+    Clock::time_point until = Clock::now() + std::chrono::milliseconds(mSettings.frameDelayMs);
+    if (mState.loading() && !mReplay)
+        until = std::max(until, tick + std::chrono::milliseconds(LOADING_FRAME_MS));
+    const bool waitingForJob = mState.loading();
+    while (Clock::now() < until && !(waitingForJob && mState.documentJob->done())) {
+        std::this_thread::sleep_for(
+            std::min<Clock::duration>(std::chrono::milliseconds(5), until - Clock::now()));
+        mWindow->gatherEvents();
     }
     mWindow->gatherEvents();  // what came in while the frame rendered: stamped before the swap
     mWindow->swapBuffers();
@@ -239,33 +244,30 @@ bool Editor::applyRequests() {
         removeUnsavedSlot(state.doc.unsavedSlot);  // saved or let go: nothing to recover
         return true;
     }
-    // An export reads the scene on its worker: replacing or re-growing it waits.
+    finishDocumentJob();
+    // An export reads the scene on its worker, a load replaces it: requests wait for them.
     if (state.newRequested && !state.busy()) {
         state.newRequested = false;
-        if (adoptDocument(core::LoadedProject{core::Project{}, std::filesystem::current_path(), {}},
-                          "cannot start a new project")) {
-            state.doc.dirty = true;  // exists only in memory until saved
-            state.transient.message = "new project (not saved)";
-        }
+        startDocumentJob(DocumentAction::New, {},
+                         [folder = std::filesystem::current_path()](OptionalMesh&, std::string&) {
+                             return Result<core::LoadedProject>(
+                                 core::LoadedProject{core::Project{}, folder, {}});
+                         });
     }
     if (!state.openRequested.empty() && !state.busy()) {
-        auto opened = core::loadProject(state.openRequested);
-        state.openRequested.clear();
-        if (!opened) {
-            state.transient.message = "cannot open: " + opened.error().str();
-        } else if (adoptDocument(std::move(*opened), "cannot open")) {
-            state.doc.dirty = false;
-            state.transient.message = "opened " + state.doc.loaded.file.string();
-            rememberRecent(state, state.doc.loaded.file);
-        }
+        const std::filesystem::path file = std::exchange(state.openRequested, {});
+        startDocumentJob(DocumentAction::Open, file,
+                         [file](OptionalMesh&, std::string&) { return core::loadProject(file); });
     }
     applyImports();
     if (state.recoverRequested && !state.busy()) {
         state.recoverRequested = false;
-        core::LoadedProject recovered = std::move(*state.recoveryOffer);
+        startDocumentJob(
+            DocumentAction::Recover, {},
+            [recovered = std::move(*state.recoveryOffer)](OptionalMesh&, std::string&) {
+                return Result<core::LoadedProject>(recovered);
+            });
         state.recoveryOffer.reset();
-        if (adoptDocument(std::move(recovered), "cannot recover the autosave"))
-            markRecoveredMaps(state);
     }
     // Re-grow once the edit has ended, not on every frame of a drag.
     if (state.rebuildPending && !state.view.toolDragActive && !state.busy() &&
@@ -310,11 +312,88 @@ void Editor::adoptLive(Live next) {
         mLive.physics->steps = steps;  // the field restarts from rest, the clock goes on
 }
 
+void Editor::startDocumentJob(DocumentAction action, std::filesystem::path file,
+                              ReadDocument read) {
+    const std::string name = shownFileName(file);
+    std::string stage = action == DocumentAction::New       ? "starting a new project"
+                        : action == DocumentAction::Recover ? "recovering the autosave"
+                                                            : "reading " + name;
+    const bool withPhysics = !mSettings.noPhysics;
+    const bool importing = action == DocumentAction::ImportMesh;
+    auto work = [read = std::move(read), withPhysics, importing,
+                 name](DocumentJob& job) -> Result<GrownDocument> {
+        OptionalMesh meshRead;
+        GrownDocument grown;
+        auto loaded = read(meshRead, grown.note);
+        if (!loaded)
+            return loaded.error();
+        job.setStage(importing ? "growing the grass on " + name
+                               : "growing " + loaded->project.name);
+        auto field = growField(std::move(*loaded), withPhysics, meshRead ? &*meshRead : nullptr);
+        if (!field)
+            return field.error();
+        grown.field = std::move(*field);
+        return grown;
+    };
+    mState.documentJob =
+        std::make_unique<DocumentJob>(action, std::move(file), std::move(stage), std::move(work),
+                                      std::chrono::milliseconds(mSettings.loadDelayMs));
+    if (mReplay) {
+        mState.documentJob->wait();
+        finishDocumentJob();
+    }
+}
+
+void Editor::finishDocumentJob() {
+    EditorState& state = mState;
+    std::erase_if(state.cancelledJobs, [](const auto& job) { return job->done(); });
+    if (!state.documentJob || !state.documentJob->done())
+        return;
+    const std::unique_ptr<DocumentJob> job = std::move(state.documentJob);
+    const std::filesystem::path& file = job->file();
+    const DocumentAction action = job->action();
+    const std::string what = action == DocumentAction::New       ? "cannot start a new project"
+                             : action == DocumentAction::Open    ? "cannot open"
+                             : action == DocumentAction::Recover ? "cannot recover the autosave"
+                             : action == DocumentAction::NewFromMesh
+                                 ? "cannot make a project from " + file.filename().string()
+                                 : "cannot import " + file.string();
+    auto grown = job->take();
+    std::fprintf(stderr, "grass-editor: %s: %.1f s\n", job->title().c_str(), job->elapsedS());
+    if (!grown) {
+        state.transient.message = what + ": " + grown.error().str();
+        return;
+    }
+    if (action == DocumentAction::ImportMesh) {
+        adoptImportedMesh(std::move(*grown), file);
+        return;
+    }
+    if (!adoptDocument(std::move(grown->field), what))
+        return;
+    switch (action) {
+        case DocumentAction::New:
+            state.doc.dirty = true;  // exists only in memory until saved
+            state.transient.message = "new project (not saved)";
+            break;
+        case DocumentAction::Open:
+            state.doc.dirty = false;
+            state.transient.message = "opened " + state.doc.loaded.file.string();
+            rememberRecent(state, state.doc.loaded.file);
+            break;
+        case DocumentAction::NewFromMesh:
+            markNewFromMesh(state, file);
+            break;
+        case DocumentAction::Recover:
+            markRecoveredMaps(state);
+            break;
+        case DocumentAction::ImportMesh:
+            break;
+    }
+}
+
 // New, Open, Recover: the document is replaced only once its field is grown.
-bool Editor::adoptDocument(core::LoadedProject next, std::string_view what,
-                           core::GltfImport* alreadyRead) {
-    if (!replaceDocument(mState, mLive, std::move(next), !mSettings.noPhysics, what,
-                         mSettings.physicsDevice, alreadyRead))
+bool Editor::adoptDocument(GrownField next, std::string_view what) {
+    if (!replaceDocument(mState, mLive, std::move(next), what, mSettings.physicsDevice))
         return false;
     // The document left was saved or let go: its unsaved autosave has nothing to recover. A
     // recovered never-saved project goes on autosaving into the slot it came from.

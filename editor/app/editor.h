@@ -13,21 +13,24 @@
 #pragma once
 
 #include <chrono>
+#include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "app/document_job.h"
 #include "app/editor_ui.h"
-#include "gl/framebuffer.h"
 #include "app/input_script.h"
 #include "app/live_scene.h"
 #include "app/panels.h"
 #include "app/session_stats.h"
+#include "app/window.h"
+#include "gl/framebuffer.h"
 #include "scene/camera.h"
 #include "util/result.h"
-#include "app/window.h"
 
 namespace grass::editor {
 
@@ -48,6 +51,9 @@ struct EditorSettings {
     // delay added to every frame to stand for a slow machine.
     bool wallClock = false;
     int frameDelayMs = 0;
+    // Tests of a slow load: a delay before every New, Open, import or recovery grows its field,
+    // standing for a large file (document_job.h).
+    int loadDelayMs = 0;
     // The viewport's adaptive quality (core/quality/interaction_quality.h).
     bool adaptive = true;
     double frameBudgetMs = 80.0;
@@ -82,10 +88,20 @@ private:
     void adoptLive(Live next);
     // The view framed on the live surface (after a new mesh, unit or up axis).
     void frameLiveSurface();
-    // `alreadyRead`: replaceDocument's.
-    bool adoptDocument(core::LoadedProject next, std::string_view what,
-                       core::GltfImport* alreadyRead = nullptr);
-    // New from mesh, Import mesh and Import map image (editor_imports.cpp).
+    // The grown field becomes the document (replaceDocument), the view goes to its camera.
+    bool adoptDocument(GrownField next, std::string_view what);
+    // New, Open, New from mesh, Import mesh, Recover: `read` makes the project (and may read its
+    // mesh) on a worker, which then grows its field (document_job.h). A replayed script waits
+    // for it in this frame, so its pictures do not depend on the machine's speed.
+    using OptionalMesh = std::optional<core::GltfImport>;
+    using ReadDocument =
+        std::function<Result<core::LoadedProject>(OptionalMesh& meshRead, std::string& note)>;
+    void startDocumentJob(DocumentAction action, std::filesystem::path file, ReadDocument read);
+    // Once the job is done: its field replaces the document, or the message says why not.
+    void finishDocumentJob();
+    // What the finished job does with its field besides (editor_imports.cpp: the imports).
+    void adoptImportedMesh(GrownDocument imported, const std::filesystem::path& file);
+    // New from mesh, Import mesh and Import map image requests (editor_imports.cpp).
     void applyImports();
     void resetTimeline();
     void autosaveWhenDue();

@@ -14,44 +14,50 @@ namespace fs = std::filesystem;
 
 void Editor::applyImports() {
     EditorState& s = mState;
-    // An export reads the scene on its worker: replacing it waits.
+    // An export reads the scene on its worker, a load replaces it: imports wait for them.
     if (s.busy())
         return;
     if (!s.newFromMeshRequested.empty()) {
         const fs::path file = std::exchange(s.newFromMeshRequested, {});
-        const std::string what = "cannot make a project from " + file.filename().string();
-        core::GltfImport read;
-        if (auto next = newProjectFromMesh(file, NEW_MESH_PROJECT_BLADES, &read); !next) {
-            s.transient.message = what + ": " + next.error().str();
-        } else if (adoptDocument(std::move(*next), what, &read)) {
-            markNewFromMesh(s, file);
-        }
+        startDocumentJob(
+            DocumentAction::NewFromMesh, file, [file](OptionalMesh& read, std::string&) {
+                return newProjectFromMesh(file, NEW_MESH_PROJECT_BLADES, &read.emplace());
+            });
+        return;
     }
     if (!s.importMeshRequested.empty()) {
         const fs::path file = std::exchange(s.importMeshRequested, {});
-        std::string note;
-        auto next = projectWithImportedMesh(s.doc.loaded, file, &note);
-        // Grown whole before anything changes: a mesh that cannot grow leaves the project as it was.
-        auto live = next ? buildLive(
-                               *next, !mSettings.noPhysics,
-                               [&](core::Scene& grown) {
-                                   return carryPaintedMaps(s, *mLive.scene, grown);
-                               },
-                               mSettings.physicsDevice)
-                         : Result<Live>(next.error());
-        if (!live) {
-            s.transient.message = "cannot import " + file.string() + ": " + live.error().str();
-        } else {
-            s.doc.loaded.folder = next->folder;
-            apply(s, EditProject{.after = std::move(next->project), .label = "import mesh"});
-            adoptLive(std::move(*live));
-            // Another surface, another place and size: the view moves to it.
-            frameLiveSurface();
-            s.transient.message = "imported " + file.string() + (note.empty() ? "" : "; " + note);
-        }
+        // The worker reads and grows from a copy of the project: the document waits meanwhile.
+        startDocumentJob(DocumentAction::ImportMesh, file,
+                         [file, loaded = s.doc.loaded](OptionalMesh& read, std::string& note) {
+                             return projectWithImportedMesh(loaded, file, &note, &read.emplace());
+                         });
+        return;
     }
     if (!s.importMapRequested.empty())
         importMapImage(s, std::exchange(s.importMapRequested, {}));
+}
+
+void Editor::adoptImportedMesh(GrownDocument imported, const fs::path& file) {
+    EditorState& s = mState;
+    const core::LoadedProject next = imported.field.loaded;
+    // Brought up whole before anything changes: a mesh that cannot grow leaves the project as it
+    // was. The maps painted on the old surface go on to the new one.
+    auto live = bringUpLive(
+        std::move(imported.field),
+        [&](core::Scene& grown) { return carryPaintedMaps(s, *mLive.scene, grown); },
+        mSettings.physicsDevice);
+    if (!live) {
+        s.transient.message = "cannot import " + file.string() + ": " + live.error().str();
+        return;
+    }
+    s.doc.loaded.folder = next.folder;
+    apply(s, EditProject{.after = next.project, .label = "import mesh"});
+    adoptLive(std::move(*live));
+    // Another surface, another place and size: the view moves to it.
+    frameLiveSurface();
+    s.transient.message =
+        "imported " + file.string() + (imported.note.empty() ? "" : "; " + imported.note);
 }
 
 }  // namespace grass::editor

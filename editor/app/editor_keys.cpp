@@ -41,6 +41,10 @@ std::string applyRenderKeys(const InputState& input, EditorState& state) {
 }  // namespace
 
 std::string applyEditorKeys(EditorState& state, const InputState& input, bool withUi) {
+    // While a New, Open or import grows its field the document stays as it is: the keys that
+    // edit, save or replace it wait with the panels (the camera still moves).
+    if (state.loading())
+        return {};
     std::string changed = applyRenderKeys(input, state);
     applyToolKeys(state, input.typed);
     // Space plays and pauses the timeline, as in Blender and most players.

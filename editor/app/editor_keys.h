@@ -12,6 +12,7 @@
 namespace grass::editor {
 
 // Applies this frame's keys; returns what a render key changed, for the console (or empty).
+// None while a document job runs (EditorState::loading()).
 std::string applyEditorKeys(EditorState& state, const InputState& input, bool withUi);
 
 }  // namespace grass::editor

@@ -18,6 +18,7 @@
 #include <vector>
 #include <utility>
 
+#include "app/document_job.h"
 #include "app/export_job.h"
 #include "app/file_browser.h"
 #include "app/recent_files.h"
@@ -28,8 +29,8 @@
 #include "project/project.h"
 #include "quality/interaction_quality.h"
 #include "render/scene_renderer.h"
-#include "scene/scene.h"
 #include "scene/camera.h"
+#include "scene/scene.h"
 
 namespace grass::editor {
 
@@ -178,7 +179,14 @@ struct EditorState {
     // The running (or last) export. While it runs the scene must stay as it is: tools, undo and
     // re-grows wait (busy()).
     std::shared_ptr<ExportJob> exportJob;
-    bool busy() const { return exportJob && !exportJob->done(); }
+    // The New, Open, New from mesh, Import mesh or Recover whose field grows on a worker
+    // (document_job.h). Meanwhile the document stays as it is: the panels and the editing keys
+    // wait, and so do tools, undo, re-grows, autosaves and further requests (busy()).
+    std::unique_ptr<DocumentJob> documentJob;
+    // Jobs the user cancelled: left to finish on their own, their fields dropped.
+    std::vector<std::unique_ptr<DocumentJob>> cancelledJobs;
+    bool loading() const { return documentJob != nullptr; }
+    bool busy() const { return (exportJob && !exportJob->done()) || loading(); }
     // An autosave left by a session that did not close cleanly, offered back at start; the
     // Editor adopts it when the user picks Recover.
     std::optional<core::LoadedProject> recoveryOffer;

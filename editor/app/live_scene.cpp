@@ -60,37 +60,45 @@ static bool physicsOnCpu(PhysicsDevice device, const core::ScenePhysics& physics
     return gl::isSoftwareRenderer() && !core::snowLoadsBlades(physics.snow);
 }
 
-// `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
-Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
-                       const std::function<Result<void>(core::Scene&)>& prepare,
-                       PhysicsDevice device, core::GltfImport* alreadyRead,
-                       const Live* grownOn) {
-    auto scene = grownOn != nullptr ? core::regrowOnSameSurface(loaded, *grownOn->scene)
-                                    : core::buildScene(loaded, alreadyRead);
+Result<GrownField> growField(core::LoadedProject loaded, bool withPhysics,
+                             core::GltfImport* alreadyRead, const core::Scene* sameSurface) {
+    auto scene = sameSurface != nullptr ? core::regrowOnSameSurface(loaded, *sameSurface)
+                                        : core::buildScene(loaded, alreadyRead);
     if (!scene)
         return scene.error();
-    for (const auto& note : scene->notes)
+    GrownField grown;
+    grown.scene = std::make_unique<core::Scene>(std::move(*scene));
+    if (withPhysics) {
+        auto built = core::buildScenePhysics(loaded, grown.scene->groundOrigin);
+        if (!built)
+            return built.error();
+        grown.physics.emplace(std::move(*built));
+    }
+    grown.loaded = std::move(loaded);
+    return grown;
+}
+
+Result<Live> bringUpLive(GrownField grown, const std::function<Result<void>(core::Scene&)>& prepare,
+                         PhysicsDevice device, const Live* grownOn) {
+    for (const auto& note : grown.scene->notes)
         std::fprintf(stderr, "note: %s\n", note.c_str());
     if (prepare)
-        if (auto prepared = prepare(*scene); !prepared)
+        if (auto prepared = prepare(*grown.scene); !prepared)
             return prepared.error();
     Live live;
-    live.builtFrom = loaded;
-    live.scene = std::make_unique<core::Scene>(std::move(*scene));
-    live.tools = std::make_unique<SceneTools>(*live.scene, loaded.project.lighting,
+    live.builtFrom = std::move(grown.loaded);
+    live.scene = std::move(grown.scene);
+    live.tools = std::make_unique<SceneTools>(*live.scene, live.builtFrom.project.lighting,
                                               grownOn != nullptr ? grownOn->tools.get() : nullptr);
     auto renderer = render::SceneRenderer::create(*live.scene);
     if (!renderer)
         return renderer.error();
     live.renderer = std::move(*renderer);
-    if (withPhysics) {
-        auto built = core::buildScenePhysics(loaded, live.scene->groundOrigin);
-        if (!built)
-            return built.error();
-        for (const auto& note : built->notes)
+    if (grown.physics) {
+        for (const auto& note : grown.physics->notes)
             std::fprintf(stderr, "note: %s\n", note.c_str());
         LivePhysics physics;
-        physics.scene = std::move(*built);
+        physics.scene = std::move(*grown.physics);
         physics.renderer = live.renderer.get();
         if (physicsOnCpu(device, physics.scene)) {
             physics.cpu.emplace(*live.scene);
@@ -104,6 +112,16 @@ Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
         live.physics.emplace(std::move(physics));
     }
     return live;
+}
+
+Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
+                       const std::function<Result<void>(core::Scene&)>& prepare,
+                       PhysicsDevice device, core::GltfImport* alreadyRead, const Live* grownOn) {
+    auto grown = growField(loaded, withPhysics, alreadyRead,
+                           grownOn != nullptr ? grownOn->scene.get() : nullptr);
+    if (!grown)
+        return grown.error();
+    return bringUpLive(std::move(*grown), prepare, device, grownOn);
 }
 
 // Puts every layer's blades back at rest on the GPU and restarts the simulation from there

@@ -64,10 +64,31 @@ struct Live {
     std::optional<LivePhysics> physics;
 };
 
+// What growing a project makes before the GPU sees it: nothing here touches GL, so a worker
+// thread may grow it while the window goes on drawing the field before it (document_job.h).
+struct GrownField {
+    core::LoadedProject loaded;  // what it was grown from
+    std::unique_ptr<core::Scene> scene;
+    std::optional<core::ScenePhysics> physics;  // when grown with physics
+};
+
+// The project's field and, `withPhysics`, its physics scene. `alreadyRead`: the project's mesh
+// as newProjectFromMesh or projectWithImportedMesh read it (core::buildScene's). `sameSurface`:
+// the scene of a project with the same surface (core::sameSurface), whose mesh the field grows
+// on instead of the file's (core::regrowOnSameSurface).
+Result<GrownField> growField(core::LoadedProject loaded, bool withPhysics,
+                             core::GltfImport* alreadyRead = nullptr,
+                             const core::Scene* sameSurface = nullptr);
+
+// The grown field on the GPU (renderer, tools, physics): on the thread that owns the GL context.
 // `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
-// `alreadyRead`: the project's mesh as newProjectFromMesh read it (core::buildScene's).
-// `grownOn`: a live field of a project with the same surface (core::sameSurface), whose mesh the
-// field grows on instead of the file's (core::regrowOnSameSurface) and whose picking BVH it shares.
+// `grownOn`: a live field of the same surface, whose picking BVH the tools share.
+Result<Live> bringUpLive(GrownField grown,
+                         const std::function<Result<void>(core::Scene&)>& prepare = {},
+                         PhysicsDevice device = PhysicsDevice::Auto, const Live* grownOn = nullptr);
+
+// growField then bringUpLive, on this thread. `grownOn`: a live field of a project with the
+// same surface (core::sameSurface), whose mesh the field grows on and whose BVH it shares.
 Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
                        const std::function<Result<void>(core::Scene&)>& prepare = {},
                        PhysicsDevice device = PhysicsDevice::Auto,

@@ -58,6 +58,10 @@ int main(int argc, char** argv) {
     parser.integer("--frame-delay-ms", "add N ms to every frame, as a slower machine would "
                    "(for tests of time)",
                    &settings.frameDelayMs, 0, 10000);
+    parser.integer("--load-delay-ms",
+                   "add N ms to every New, Open, import and recovery made "
+                   "in the window, as a large file would (for tests of time)",
+                   &settings.loadDelayMs, 0, 60000);
     parser.flag("--no-adaptive",
                 "draw every frame at full quality (by default the viewport lowers MSAA, blade "
                 "count, segments and resolution while you orbit, paint, drag or play, to keep "

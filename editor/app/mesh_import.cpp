@@ -74,15 +74,20 @@ void markNewFromMesh(EditorState& state, const fs::path& meshFile) {
 }
 
 Result<core::LoadedProject> projectWithImportedMesh(const core::LoadedProject& loaded,
-                                                    const fs::path& meshFile, std::string* note) {
-    if (auto imported = core::loadGltf(meshFile); !imported)
-        return imported.error();
+                                                    const fs::path& meshFile, std::string* note,
+                                                    core::GltfImport* read) {
     core::LoadedProject next = loaded;
     core::MeshSource& mesh = next.project.mesh;
     if (!mesh.isFile) {
         mesh.metresPerUnit = 1.0f;
         mesh.up = core::UpAxis::Y;
     }
+    // Read as the project will read it (its placement and unit), so the field grows on this
+    // reading instead of the file's second one.
+    auto imported =
+        core::loadGltf(meshFile, core::GltfPlacement::GroundNearOrigin, mesh.metresPerUnit);
+    if (!imported)
+        return imported.error();
     mesh.isFile = true;
     const fs::path absolute = fs::absolute(meshFile).lexically_normal();
     core::Project withoutMesh = loaded.project;
@@ -102,6 +107,8 @@ Result<core::LoadedProject> projectWithImportedMesh(const core::LoadedProject& l
         if (note)
             *note = "copied " + absolute.filename().string() + " into " + (loaded.folder / folder).string();
     }
+    if (read)
+        *read = std::move(*imported);
     return next;
 }
 

@@ -42,9 +42,11 @@ void markNewFromMesh(EditorState& state, const std::filesystem::path& meshFile);
 // where it is; one from elsewhere is copied to meshes/<name>/ (a fresh folder each time); a
 // project never saved and naming no file takes the mesh's folder as its own instead. The unit
 // and up axis of a previous glTF surface are kept (a re-exported model keeps its units).
-// `note` says what was copied. The mesh is read first: a broken file copies nothing.
+// `note` says what was copied. The mesh is read first: a broken file copies nothing. `read`,
+// when given, receives the mesh as read, for growField to grow on instead of reading it again.
 Result<core::LoadedProject> projectWithImportedMesh(const core::LoadedProject& loaded,
                                                     const std::filesystem::path& meshFile,
-                                                    std::string* note);
+                                                    std::string* note,
+                                                    core::GltfImport* read = nullptr);
 
 }  // namespace grass::editor

@@ -385,6 +385,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
     const ui::Rect strip{{central.min.x, bar.min.y - TIMELINE_STRIP_HEIGHT}, {central.max.x, bar.min.y}};
     timelineStrip(ctx, strip, s);
     central.max.y = strip.min.y;
+    loadingWindow(ctx, central, s);
     fileBrowserWindow(ctx, s);
     quitDialogWindow(ctx, s);
     exportWindow(ctx, s);

@@ -67,6 +67,10 @@ void messagesWindow(ui::Context& ctx, EditorState& state);
 // Puts a project just opened or saved first in File › Open Recent (and its file, when kept).
 void rememberRecent(EditorState& state, const std::filesystem::path& projectFile);
 
+// While a document job grows its field (panels_loading.cpp): the panels around `viewport` wait
+// under a veil, and a box says what is read or grown, with Cancel.
+void loadingWindow(ui::Context& ctx, ui::Rect viewport, EditorState& state);
+
 // File → Export… (panels_export.cpp): the dialog, and the progress window while the job runs.
 void exportWindow(ui::Context& ctx, EditorState& state);
 

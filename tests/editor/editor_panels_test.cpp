@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <future>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -307,6 +309,45 @@ TEST(EditorPanels, CtrlOAndCtrlN) {
     input.keys = {{ui::Key::N, {false, true, false}}};
     editor::applyEditorKeys(editor.state, input, true);
     EXPECT_TRUE(editor.state.newRequested);
+}
+
+// While Open grows the next field on its worker (app/document_job.h), the panels wait: a click
+// on the menu opens nothing and the editing keys do nothing; the box says what is being read,
+// and Cancel gives the window back at once with the document as it was.
+TEST(EditorPanels, WhileAFieldGrowsThePanelsWaitAndCancelGivesThemBack) {
+    const ScratchFolder folder("editor-loading");
+    EditorDriver editor(folder.path());
+    editor.state.doc.dirty = false;
+    std::promise<void> release;
+    std::shared_future<void> released = release.get_future().share();
+    editor.state.documentJob = std::make_unique<editor::DocumentJob>(
+        editor::DocumentAction::Open, "elsewhere/meadow/project.json", "reading project.json",
+        [released](editor::DocumentJob&) -> Result<editor::GrownDocument> {
+            released.wait();
+            return makeError("meadow", "not wanted");
+        });
+    const std::set<std::string> shown = editor.shownTexts();
+    EXPECT_TRUE(shown.contains("Opening meadow"));
+    EXPECT_TRUE(shown.contains("reading project.json … 0 s"));
+    editor.click("File");
+    EXPECT_FALSE(editor.shownTexts().contains("Quit")) << "the menu opened under the veil";
+    editor.click("brush (b)");
+    EXPECT_EQ(editor.state.view.tool, editor::ViewportTool::Camera) << "a click went through";
+    editor::InputState keys;
+    keys.keys.push_back({ui::Key::O, {false, true, false}});
+    keys.nextTechnique = true;  // T: the technique, an edit of the project
+    editor::applyEditorKeys(editor.state, keys, true);
+    EXPECT_FALSE(editor.state.transient.browser.has_value());
+    EXPECT_FALSE(editor.state.doc.dirty);
+    editor.click("Cancel");
+    EXPECT_FALSE(editor.state.loading());
+    ASSERT_EQ(editor.state.cancelledJobs.size(), 1u);
+    EXPECT_EQ(editor.state.transient.message, "cancelled: Opening meadow");
+    editor.click("brush (b)");
+    EXPECT_EQ(editor.state.view.tool, editor::ViewportTool::Paint) << "the panels are free again";
+    editor.click("File");
+    EXPECT_TRUE(editor.shownTexts().contains("Quit"));
+    release.set_value();
 }
 
 TEST(EditorPanels, QuitWithUnsavedChangesAsksFirst) {

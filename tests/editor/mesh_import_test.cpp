@@ -33,17 +33,13 @@ TEST(MeshImport, NewFromMeshIsAnUnsavedProjectAroundTheMeshThatGrows) {
     EXPECT_LT(blades, 1.2 * editor::NEW_MESH_PROJECT_BLADES);
 }
 
-// The mesh a new project was sized on is the one it grows on: the file is read once, and the
-// field, the surface's texture and its paintable UVs are those of a second reading.
-TEST(MeshImport, TheMeshReadForANewProjectGrowsTheSameFieldAsTheFile) {
-    const fs::path mesh = sourceDir() / STONE;
-    core::GltfImport read;
-    auto loaded = editor::newProjectFromMesh(mesh, 2000, &read);
-    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+// A project grown on the mesh `read` for it equals the project grown on its file read again:
+// the field, the surface's texture and its paintable UVs.
+void expectTheReadMeshGrowsTheFilesField(const core::LoadedProject& loaded, core::GltfImport read) {
     const std::size_t faces = read.mesh->n_faces();
     EXPECT_GT(faces, 0u);
-    auto fromFile = core::buildScene(*loaded);
-    auto fromRead = core::buildScene(*loaded, &read);
+    auto fromFile = core::buildScene(loaded);
+    auto fromRead = core::buildScene(loaded, &read);
     ASSERT_TRUE(fromFile.ok()) << fromFile.error().str();
     ASSERT_TRUE(fromRead.ok()) << fromRead.error().str();
     EXPECT_EQ(fromRead->mesh->n_faces(), faces);
@@ -57,6 +53,30 @@ TEST(MeshImport, TheMeshReadForANewProjectGrowsTheSameFieldAsTheFile) {
     ASSERT_GT(fromRead->totalBlades(), 1000u);
     for (std::size_t i = 0; i < blades.size(); ++i)
         ASSERT_EQ(blades[i].v0Theta, bladesFromFile[i].v0Theta) << "blade " << i;
+}
+
+// The mesh a new project was sized on is the one it grows on: the file is read once.
+TEST(MeshImport, TheMeshReadForANewProjectGrowsTheSameFieldAsTheFile) {
+    core::GltfImport read;
+    auto loaded = editor::newProjectFromMesh(sourceDir() / STONE, 2000, &read);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+    expectTheReadMeshGrowsTheFilesField(*loaded, std::move(read));
+}
+
+// The mesh Import mesh… checks is the one the field grows on: the file is read once (here in
+// centimetres, the unit the project keeps from its previous glTF surface).
+TEST(MeshImport, TheMeshReadForAnImportGrowsTheSameFieldAsTheFile) {
+    const ScratchFolder project("import-read-once");
+    core::LoadedProject loaded{core::Project{}, project.path(), project.path() / "project.json"};
+    loaded.project.mesh.isFile = true;
+    loaded.project.mesh.file = "old.glb";
+    loaded.project.mesh.metresPerUnit = 0.01f;
+    loaded.project.layers.front().scatter.density = 4e6f;  // the stone is a few centimetres
+    core::GltfImport read;
+    auto next = editor::projectWithImportedMesh(loaded, sourceDir() / STONE, nullptr, &read);
+    ASSERT_TRUE(next.ok()) << next.error().str();
+    EXPECT_EQ(next->project.mesh.metresPerUnit, 0.01f);
+    expectTheReadMeshGrowsTheFilesField(*next, std::move(read));
 }
 
 TEST(MeshImport, ABrokenMeshIsRefusedNamingTheFileAndCopiesNothing) {

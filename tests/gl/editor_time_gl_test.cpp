@@ -11,21 +11,27 @@
 #include <string>
 
 #include "gl_context_fixture.h"
+#include "project/project.h"
 #include "support/test_paths.h"
 
 namespace grass::test {
 namespace {
 
-constexpr const char* PROJECT = R"({
-  "format": "grass-project", "version": 2, "name": "tiny",
+// A 2 m plane of sparse grass in `folder` (created), named `name`, the window `width` wide.
+void writeTinyProject(const std::filesystem::path& folder, const std::string& name = "tiny",
+                      int width = 480, int height = 320) {
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "project.json")
+        << R"({"format": "grass-project", "version": 2, "name": ")" << name << R"(",
   "mesh": {"procedural": "plane", "size": 2, "resolution": 2},
   "layers": [{"name": "grass", "density": 20}],
-  "render": {"width": 480, "height": 320, "geometry": "strips", "msaa": 0}
-})";
+  "render": {"width": )" << width << ", \"height\": " << height
+        << R"(, "geometry": "strips", "msaa": 0}})";
+}
 
 TEST(EditorTime, TenSecondsOfSlowFramesMoveTheTimelineTenSecondsAndAutosave) {
     const auto dir = scratchDir("editor_time");
-    std::ofstream(dir / "project.json") << PROJECT;
+    writeTinyProject(dir);
     // T makes an unsaved edit (an autosave is due); then ten seconds with no input.
     std::ofstream(dir / "script.txt") << "key t\nwait-s 10\n";
     const std::string command =
@@ -78,7 +84,7 @@ std::string runEditor(const std::filesystem::path& dir, const std::string& scrip
 // input stops" counts those returns.
 TEST(EditorTime, PlaybackKeepsTheReducedPictureUntilPaused) {
     const auto dir = scratchDir("editor_playback_quality");
-    std::ofstream(dir / "project.json") << PROJECT;
+    writeTinyProject(dir);
     const std::string returned = "full quality after input stops:";
     const std::string playing = runEditor(dir, "wait-s 3\n", "--frame-budget-ms 5");
     EXPECT_EQ(playing.find(returned), std::string::npos)
@@ -89,6 +95,60 @@ TEST(EditorTime, PlaybackKeepsTheReducedPictureUntilPaused) {
     // Without adaptive quality nothing is ever reduced, so nothing returns.
     const std::string off = runEditor(dir, "wait-s 3\n", "--no-adaptive");
     EXPECT_EQ(off.find(returned), std::string::npos) << off;
+}
+
+// The frames of a script phase, from the --wall-clock summary ("frames NAME: N, median …").
+int framesOfPhase(const std::string& log, const std::string& phase) {
+    const std::string head = "frames " + phase + ": ";
+    const std::size_t at = log.find(head);
+    return at == std::string::npos ? 0 : std::atoi(log.c_str() + at + head.size());
+}
+
+// The technique a project file names (none: the default, as our test projects are written).
+std::string savedTechnique(const std::filesystem::path& projectFile) {
+    auto loaded = core::loadProject(projectFile);
+    EXPECT_TRUE(loaded.ok()) << loaded.error().str();
+    return loaded.ok() ? std::string(core::grassTechniqueName(loaded->project.render.technique))
+                       : std::string();
+}
+
+// File › Open grows the next field on a worker (app/document_job.h): held back 1.5 s here
+// (--load-delay-ms, standing for a large mesh), the window goes on drawing frames meanwhile and
+// the opened project is the one a later edit and Ctrl+S change. Cancel, clicked while it loads,
+// keeps the project that was open. Before, the window stood still on its last frame for the whole
+// load, with no way back.
+TEST(EditorTime, AnOpenGrowsWhileTheWindowGoesOnAndCancelKeepsTheProject) {
+    // The viewport wide enough for the loading box beside the side panel.
+    const auto project = [](const std::filesystem::path& folder, const std::string& name) {
+        writeTinyProject(folder, name, 900, 560);
+    };
+    // T (the technique, a project edit) then Ctrl+S mark the project open at the end.
+    const std::string openScript =
+        "phase before\nwait 2\ndrop other\nphase loading\nwait-s 1.5\nphase after\n"
+        "wait-s 1.5\nkey t\nkey ctrl+s\nwait 2\n";
+    {
+        const auto dir = scratchDir("editor_open_async");
+        project(dir, "first");
+        project(dir / "other", "other");
+        const std::string log = runEditor(dir, openScript, "--no-physics --load-delay-ms 1500");
+        // 1.5 s of a 2-point field: tens of frames at llvmpipe's speed; one if the load blocked.
+        EXPECT_GE(framesOfPhase(log, "loading"), 4) << log;
+        EXPECT_EQ(savedTechnique(dir / "other/project.json"), "billboards") << log;
+        EXPECT_EQ(savedTechnique(dir / "project.json"), "blades") << log;
+    }
+    {
+        // The box's Cancel at the viewport's centre (the window is 900 × 560).
+        const auto dir = scratchDir("editor_open_cancelled");
+        project(dir, "first");
+        project(dir / "other", "other");
+        const std::string log =
+            runEditor(dir,
+                      "wait 2\ndrop other\nwait-s 0.5\nclick 464 265\nwait-s 2\nkey t\nkey ctrl+s\n"
+                      "wait 2\n",
+                      "--no-physics --load-delay-ms 1500");
+        EXPECT_EQ(savedTechnique(dir / "project.json"), "billboards") << log;
+        EXPECT_EQ(savedTechnique(dir / "other/project.json"), "blades") << log;
+    }
 }
 
 }  // namespace

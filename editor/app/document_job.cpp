@@ -1,0 +1,80 @@
+#include "app/document_job.h"
+
+#include <utility>
+
+#include "util/assert.h"
+
+namespace grass::editor {
+
+std::string shownFileName(const std::filesystem::path& file) {
+    return file.filename() == "project.json" ? file.parent_path().filename().string()
+                                             : file.filename().string();
+}
+
+DocumentJob::DocumentJob(DocumentAction action, std::filesystem::path file, std::string stage,
+                         Work work, std::chrono::milliseconds delay)
+    : mAction(action),
+      mFile(std::move(file)),
+      mStart(std::chrono::steady_clock::now()),
+      mStage(std::move(stage)) {
+    mWorker = std::thread([this, work = std::move(work), delay] {
+        if (delay.count() > 0)
+            std::this_thread::sleep_for(delay);
+        auto result = work(*this);
+        {
+            std::lock_guard lock(mMutex);
+            mResult.emplace(std::move(result));
+        }
+        mDone.store(true);
+    });
+}
+
+DocumentJob::~DocumentJob() {
+    wait();
+}
+
+void DocumentJob::wait() {
+    if (mWorker.joinable())
+        mWorker.join();
+}
+
+std::string DocumentJob::title() const {
+    const std::string name = shownFileName(mFile);
+    switch (mAction) {
+        case DocumentAction::New:
+            return "New project";
+        case DocumentAction::Open:
+            return "Opening " + name;
+        case DocumentAction::NewFromMesh:
+            return "New project from " + name;
+        case DocumentAction::ImportMesh:
+            return "Importing " + name;
+        case DocumentAction::Recover:
+            return "Recovering the autosave";
+    }
+    return {};
+}
+
+std::string DocumentJob::stage() const {
+    std::lock_guard lock(mMutex);
+    return mStage;
+}
+
+double DocumentJob::elapsedS() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - mStart).count();
+}
+
+void DocumentJob::setStage(std::string stage) {
+    std::lock_guard lock(mMutex);
+    mStage = std::move(stage);
+}
+
+Result<GrownDocument> DocumentJob::take() {
+    std::lock_guard lock(mMutex);
+    GRASS_ASSERT(mResult.has_value());
+    Result<GrownDocument> result = std::move(*mResult);
+    mResult.reset();
+    return result;
+}
+
+}  // namespace grass::editor

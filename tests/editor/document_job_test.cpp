@@ -1,0 +1,106 @@
+// New, Open and the imports grow their field on a worker (app/document_job.h): the window goes
+// on drawing meanwhile, the job says what it does, and what it grew, or why it could not, comes
+// back whole once it is done.
+#include "app/document_job.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <future>
+#include <thread>
+
+#include "scene/scene.h"
+
+namespace grass::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+// A 2 m plane of grass: grows in milliseconds, without GL.
+core::LoadedProject tinyPlane() {
+    core::LoadedProject loaded;
+    loaded.project.name = "tiny";
+    loaded.project.mesh.procedural.size = 2.0f;
+    loaded.project.layers.front().scatter.density = 200.0f;
+    return loaded;
+}
+
+TEST(DocumentJob, GrowsOnAWorkerAndHandsBackTheField) {
+    std::promise<void> release;
+    std::shared_future<void> released = release.get_future().share();
+    editor::DocumentJob job(editor::DocumentAction::Open, "somewhere/project.json",
+                            "reading project.json",
+                            [released](editor::DocumentJob& self) -> Result<editor::GrownDocument> {
+                                released.wait();
+                                self.setStage("growing tiny");
+                                auto field = editor::growField(tinyPlane(), true);
+                                if (!field)
+                                    return field.error();
+                                return editor::GrownDocument{std::move(*field), "note"};
+                            });
+    // The work waits for the test: the caller's thread is free, and told what the job does.
+    std::this_thread::sleep_for(20ms);
+    EXPECT_FALSE(job.done());
+    EXPECT_EQ(job.stage(), "reading project.json");
+    EXPECT_EQ(job.action(), editor::DocumentAction::Open);
+    release.set_value();
+    job.wait();
+    ASSERT_TRUE(job.done());
+    EXPECT_EQ(job.stage(), "growing tiny");
+    auto grown = job.take();
+    ASSERT_TRUE(grown.ok()) << grown.error().str();
+    EXPECT_EQ(grown->note, "note");
+    EXPECT_EQ(grown->field.loaded.project.name, "tiny");
+    ASSERT_TRUE(grown->field.physics.has_value());
+    // The same field as a build on this thread.
+    auto here = core::buildScene(tinyPlane());
+    ASSERT_TRUE(here.ok());
+    ASSERT_GT(here->totalBlades(), 100u);
+    EXPECT_EQ(grown->field.scene->totalBlades(), here->totalBlades());
+}
+
+TEST(DocumentJob, AFailureComesBackAsItsError) {
+    editor::DocumentJob job(editor::DocumentAction::ImportMesh, "rock.glb", "reading rock.glb",
+                            [](editor::DocumentJob&) -> Result<editor::GrownDocument> {
+                                return makeError("rock.glb", "not a glTF file");
+                            });
+    job.wait();
+    auto grown = job.take();
+    ASSERT_FALSE(grown.ok());
+    EXPECT_EQ(grown.error().str(), "rock.glb: not a glTF file");
+}
+
+// A job left unfinished (the window closed while a large mesh loads) is waited for, never cut
+// off while its worker still writes into it.
+TEST(DocumentJob, AnUnfinishedJobIsWaitedForWhenDropped) {
+    std::atomic<bool> finished{false};
+    {
+        editor::DocumentJob job(editor::DocumentAction::New, {}, "starting a new project",
+                                [&finished](editor::DocumentJob&) -> Result<editor::GrownDocument> {
+                                    std::this_thread::sleep_for(50ms);
+                                    finished = true;
+                                    return makeError("new project", "stopped");
+                                });
+        EXPECT_FALSE(job.done());
+    }
+    EXPECT_TRUE(finished.load());
+}
+
+// --load-delay-ms (tests of a slow load) holds the work back by that much.
+TEST(DocumentJob, TheDelayHoldsTheWorkBack) {
+    const auto start = std::chrono::steady_clock::now();
+    std::chrono::steady_clock::time_point began;
+    editor::DocumentJob job(
+        editor::DocumentAction::New, {}, "starting a new project",
+        [&began](editor::DocumentJob&) -> Result<editor::GrownDocument> {
+            began = std::chrono::steady_clock::now();
+            return makeError("new project", "stopped");
+        },
+        60ms);
+    job.wait();
+    EXPECT_GE(began - start, 60ms);
+}
+
+}  // namespace
+}  // namespace grass::test
