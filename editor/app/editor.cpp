@@ -528,6 +528,8 @@ void Editor::render(int width, int height) {
         mTarget = std::make_unique<gl::Framebuffer>(w, h, samples);
     syncMapOverlay();
     mLive.renderer->render(mCamera, w, h, *mTarget, mState.view.options);
+    for (std::string& note : mLive.renderer->takeNotes())
+        mState.transient.message = std::move(note);  // e.g. billboards refused after T
     if (!mUi) {
         mTarget->blitTo(0, width, height);
         return;

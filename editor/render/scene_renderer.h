@@ -11,6 +11,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "blade/blade_program_variant.h"
@@ -66,6 +67,9 @@ public:
     // texels shows 1 everywhere), uploaded now; null: no overlay. The editor calls it when the
     // painted map or the choice of map changes.
     void setMapOverlay(const core::MapImage* map);
+    // What the user is to be told about the frames drawn so far, each once (the editor shows it
+    // in the status bar): billboards it could not place for a technique that draws them.
+    std::vector<std::string> takeNotes() { return std::exchange(mNotes, {}); }
     // Snow read-backs for tests and tools (wait for the GPU): the depth pass of the last frame
     // with snow (null before one), and the tip whiteness the cull wrote for layer `layer`.
     const SnowPass* snowPass() const { return mSnow.get(); }
@@ -133,6 +137,7 @@ private:
     // Billboards this renderer placed for a scene that kept them unplaced (billboardLayer()).
     std::unique_ptr<core::BillboardLayer> mPlacedHere;
     bool mBillboardsRefused = false;
+    std::vector<std::string> mNotes;  // takeNotes()
     const core::BillboardLayer* billboardLayer();
     bool mBillboardsStale = false;  // a repaint since they were last made to follow the layers
     BillboardField* billboardField();

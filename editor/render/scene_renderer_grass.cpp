@@ -155,7 +155,8 @@ const core::BillboardLayer* SceneRenderer::billboardLayer() {
             mPlacedHere = std::make_unique<core::BillboardLayer>(std::move(*placed));
         } else {
             mBillboardsRefused = true;
-            std::fprintf(stderr, "note: billboards not drawn: %s\n", placed.error().str().c_str());
+            mNotes.push_back("billboards not drawn: " + placed.error().str());
+            std::fprintf(stderr, "note: %s\n", mNotes.back().c_str());
         }
     }
     return mPlacedHere.get();

@@ -117,5 +117,26 @@ TEST_F(RegrowGlTest, UploadingRegrownPatchesDrawsWhatAFreshRendererDraws) {
     EXPECT_GT(farPainted.differingShare, 0.02);
 }
 
+// Billboards too many to place (10 million asked for by the billboard density) for a field
+// drawn by blades: the scene keeps them unplaced, and a renderer switched to billboards draws
+// none and says why once, for the status bar (before, only on stderr).
+TEST_F(RegrowGlTest, ARendererThatCannotPlaceBillboardsSaysWhyOnce) {
+    core::LoadedProject loaded = planeFieldProject({100.0f, 4, 0.0f}, sourceDir());
+    loaded.project.billboards.placement.density = 1000.0f;
+    auto scene = core::buildScene(loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    auto renderer = render::SceneRenderer::create(*scene);
+    ASSERT_TRUE(renderer.ok()) << renderer.error().str();
+    draw(**renderer, core::GrassTechnique::Blades);
+    EXPECT_TRUE((*renderer)->takeNotes().empty()) << "blades need no billboards";
+    draw(**renderer, core::GrassTechnique::Billboards);
+    const std::vector<std::string> notes = (*renderer)->takeNotes();
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_NE(notes.front().find("billboards not drawn"), std::string::npos) << notes.front();
+    EXPECT_NE(notes.front().find("/billboards/density"), std::string::npos) << notes.front();
+    draw(**renderer, core::GrassTechnique::Billboards);
+    EXPECT_TRUE((*renderer)->takeNotes().empty()) << "said once, not every frame";
+}
+
 }  // namespace
 }  // namespace grass::test
