@@ -24,6 +24,9 @@ uniform vec2 uWindDirection;
 uniform float uWindAmplitude;
 uniform float uWindFrequency;
 uniform vec4 uFade;  // fade-in start, end, fade-out start, end (metres)
+// The editor's reduced picture draws one object in n, each √n wider about its centre (the
+// ground's normal through the object's centre is the axis), so the field keeps its cover.
+uniform float uWidthScale = 1.0;
 
 out vec2 vUv;
 out vec3 vNormal;  // animated (listing 7-1)
@@ -33,8 +36,12 @@ out float vFade;
 out vec3 vTint;
 
 void main() {
+    const vec3 up = normalize(aNormal);
+    const vec3 offset = aPosition - aObjectCentre;
+    const float along = dot(offset, up);
+    const vec3 position = aObjectCentre + along * up + (offset - along * up) * uWidthScale;
     StarVertexMotion motion = billboardVertexMotion(
-        aPosition, aNormal, aObjectCentre, aSway, aObjectHeight, uWindMode, uClusterOffset,
+        position, aNormal, aObjectCentre, aSway, aObjectHeight, uWindMode, uClusterOffset,
         uClusterWind, uTime, uWindDirection, uWindAmplitude, uWindFrequency, uStiffness);
     // By the object's centre, so a whole object fades together.
     vFade = billboardFade(distance(uCameraPos, aObjectCentre), uFade);

@@ -156,16 +156,27 @@ StarMesh buildStarVertices(const std::vector<GrassObject>& objects) {
     return mesh;
 }
 
-std::vector<std::uint32_t> starQuadIndices(std::size_t objectCount) {
+std::vector<std::uint32_t> starQuadIndices(std::size_t objectCount, std::uint32_t keepEvery) {
+    const std::size_t every = std::max<std::uint32_t>(keepEvery, 1);
+    const std::size_t kept = (objectCount + every - 1) / every;
     std::vector<std::uint32_t> indices;
-    indices.reserve(objectCount * STAR_INDICES_PER_OBJECT);
-    const std::size_t quads = objectCount * STAR_QUADS;
-    for (std::size_t q = 0; q < quads; ++q) {
-        const auto base = static_cast<std::uint32_t>(4 * q);
-        for (const std::uint32_t corner : {0u, 1u, 2u, 0u, 2u, 3u})
-            indices.push_back(base + corner);
-    }
+    indices.reserve(kept * STAR_INDICES_PER_OBJECT);
+    for (std::size_t j = 0; j < kept; ++j)
+        for (std::size_t q = j * every * STAR_QUADS; q < (j * every + 1) * STAR_QUADS; ++q) {
+            const auto base = static_cast<std::uint32_t>(4 * q);
+            for (const std::uint32_t corner : {0u, 1u, 2u, 0u, 2u, 3u})
+                indices.push_back(base + corner);
+        }
     return indices;
+}
+
+KeptObjects keptObjects(std::uint32_t first, std::uint32_t count, std::uint32_t keepEvery) {
+    const std::uint64_t every = std::max<std::uint32_t>(keepEvery, 1);
+    // The multiples of `every` in [first, first + count): j from ⌈first / every⌉ to
+    // ⌈(first + count) / every⌉, exclusive.
+    const std::uint64_t begin = (first + every - 1) / every;
+    const std::uint64_t end = (std::uint64_t(first) + count + every - 1) / every;
+    return {static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end - begin)};
 }
 
 glm::vec3 billboardWindOffset(glm::vec3 p, float timeS, const BillboardWind& wind) {

@@ -93,7 +93,18 @@ struct StarMesh {
 StarMesh buildStarVertices(const std::vector<GrassObject>& objects);
 
 // Triangle indices for `objectCount` consecutive objects of buildStarVertices' layout, 32-bit.
-std::vector<std::uint32_t> starQuadIndices(std::size_t objectCount);
+// With `keepEvery` n > 1, those of objects 0, n, 2n, … only (the editor's reduced picture while
+// the user interacts, as blades keep one in n): entry j of the list is object j·n.
+std::vector<std::uint32_t> starQuadIndices(std::size_t objectCount, std::uint32_t keepEvery = 1);
+
+// Where the objects [first, first + count) that keepEvery keeps lie in starQuadIndices(…,
+// keepEvery)'s list, in objects: every object whose index is a multiple of keepEvery, a
+// contiguous run of that list.
+struct KeptObjects {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+};
+KeptObjects keptObjects(std::uint32_t first, std::uint32_t count, std::uint32_t keepEvery);
 
 // The animation modes of GPU Gems ch. 7 (values are the shader's uWindMode).
 enum class BillboardWindMode : int {

@@ -24,14 +24,19 @@ using gl::ScopedCapability;
 constexpr float ALPHA_CUTOFF_MULTISAMPLED = 0.02f;
 constexpr float ALPHA_CUTOFF_SINGLE_SAMPLED = 0.5f;
 
-// A cluster's range in the index buffer: 18 indices for the 12 vertices of each object.
-GLsizei clusterIndexCount(const core::StarCluster& cluster) {
-    return static_cast<GLsizei>(cluster.vertexCount / core::STAR_VERTICES_PER_OBJECT *
+// A cluster's objects in the index buffer of one object in `keepEvery` (all of them for 1).
+core::KeptObjects clusterObjects(const core::StarCluster& cluster, std::uint32_t keepEvery) {
+    return core::keptObjects(cluster.firstVertex / core::STAR_VERTICES_PER_OBJECT,
+                             cluster.vertexCount / core::STAR_VERTICES_PER_OBJECT, keepEvery);
+}
+// Its range there: 18 indices for the 12 vertices of each object.
+GLsizei clusterIndexCount(const core::StarCluster& cluster, std::uint32_t keepEvery) {
+    return static_cast<GLsizei>(clusterObjects(cluster, keepEvery).count *
                                 core::STAR_INDICES_PER_OBJECT);
 }
-const void* clusterIndexOffset(const core::StarCluster& cluster) {
+const void* clusterIndexOffset(const core::StarCluster& cluster, std::uint32_t keepEvery) {
     const std::size_t first =
-        cluster.firstVertex / core::STAR_VERTICES_PER_OBJECT * core::STAR_INDICES_PER_OBJECT;
+        std::size_t(clusterObjects(cluster, keepEvery).first) * core::STAR_INDICES_PER_OBJECT;
     return reinterpret_cast<const void*>(first * sizeof(std::uint32_t));
 }
 
@@ -97,8 +102,20 @@ void BillboardField::setObjects(const std::vector<core::GrassObject>& objects) {
         mTallestObjectM = std::max(mTallestObjectM, object.height);
     mVertices = gl::Buffer::fromVector(mesh.vertices, mLabel + " vertices", 0);
     mIndices = gl::Buffer::fromVector(core::starQuadIndices(mObjectCount), mLabel + " indices", 0);
+    mThinnedIndices.clear();
     mVertexArray.setVertexBuffer(mVertices, sizeof(core::StarVertex));
     mVertexArray.setElementBuffer(mIndices);
+}
+
+const gl::Buffer& BillboardField::indicesKeeping(std::uint32_t keepEvery) {
+    if (keepEvery <= 1)
+        return mIndices;
+    auto [it, made] = mThinnedIndices.try_emplace(keepEvery);
+    if (made)
+        it->second =
+            gl::Buffer::fromVector(core::starQuadIndices(mObjectCount, keepEvery),
+                                   mLabel + " indices 1 in " + std::to_string(keepEvery), 0);
+    return it->second;
 }
 
 // Clusters that may hold a visible object, back to front (ties by index, so the order is
@@ -170,7 +187,9 @@ void BillboardField::bindForDraw(const BillboardDrawParams& params, bool multisa
                                     params.fade.outEndM));
     program.set("uAlphaCutoff",
                  multisampled ? ALPHA_CUTOFF_MULTISAMPLED : ALPHA_CUTOFF_SINGLE_SAMPLED);
+    program.set("uWidthScale", params.widthScale);
     glBindTextureUnit(BILLBOARD_TEXTURE_UNIT, mTexture.id());
+    mVertexArray.setElementBuffer(indicesKeeping(params.keepEvery));
     mVertexArray.bind();
 }
 
@@ -186,21 +205,22 @@ void BillboardField::drawEachCluster(const std::vector<std::uint32_t>& order,
         if (!params.sceneWind.empty())
             program.set("uClusterWind",
                          core::windAt(params.sceneWind, cluster.centre, params.timeS));
-        glDrawElements(GL_TRIANGLES, clusterIndexCount(cluster), GL_UNSIGNED_INT,
-                       clusterIndexOffset(cluster));
+        glDrawElements(GL_TRIANGLES, clusterIndexCount(cluster, params.keepEvery), GL_UNSIGNED_INT,
+                       clusterIndexOffset(cluster, params.keepEvery));
         ++mDrawCalls;
     }
 }
 
 // Wind in the vertex shader: every cluster in one glMultiDrawElements, in `order`.
-void BillboardField::drawClustersAtOnce(const std::vector<std::uint32_t>& order) {
+void BillboardField::drawClustersAtOnce(const std::vector<std::uint32_t>& order,
+                                        std::uint32_t keepEvery) {
     std::vector<GLsizei> counts;
     std::vector<const void*> offsets;
     counts.reserve(order.size());
     offsets.reserve(order.size());
     for (const std::uint32_t c : order) {
-        counts.push_back(clusterIndexCount(mClusters[c]));
-        offsets.push_back(clusterIndexOffset(mClusters[c]));
+        counts.push_back(clusterIndexCount(mClusters[c], keepEvery));
+        offsets.push_back(clusterIndexOffset(mClusters[c], keepEvery));
     }
     glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(),
                         static_cast<GLsizei>(counts.size()));
@@ -225,11 +245,11 @@ void BillboardField::draw(const BillboardDrawParams& params) {
 
     bindForDraw(params, sampleBuffers > 0);
     for (const std::uint32_t c : order)
-        mDrawnObjects += mClusters[c].vertexCount / core::STAR_VERTICES_PER_OBJECT;
+        mDrawnObjects += clusterObjects(mClusters[c], params.keepEvery).count;
     if (params.mode == BillboardWindMode::PerCluster)
         drawEachCluster(order, params);
     else
-        drawClustersAtOnce(order);
+        drawClustersAtOnce(order, params.keepEvery);
     glBindVertexArray(0);
     glDepthMask(depthMask);
 }

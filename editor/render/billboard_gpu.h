@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -53,6 +54,11 @@ struct BillboardDrawParams {
     bool sunShadows = false;
     // Skips clusters whose bounding sphere lies outside the view frustum of viewProj.
     bool frustumCull = true;
+    // The editor's reduced picture while the user interacts (RenderOptions::cull.keepEvery and
+    // widthScale): one object in keepEvery is drawn, its stars widened by widthScale about the
+    // object's centre so the field keeps its cover.
+    std::uint32_t keepEvery = 1;
+    float widthScale = 1.0f;
 };
 
 class BillboardField {
@@ -86,12 +92,15 @@ private:
     void uploadSceneWind(const BillboardDrawParams& params);
     void drawEachCluster(const std::vector<std::uint32_t>& order,
                          const BillboardDrawParams& params);
-    void drawClustersAtOnce(const std::vector<std::uint32_t>& order);
+    void drawClustersAtOnce(const std::vector<std::uint32_t>& order, std::uint32_t keepEvery);
+    // The index buffer of one object in `keepEvery` (core::starQuadIndices), made on first use.
+    const gl::Buffer& indicesKeeping(std::uint32_t keepEvery);
 
     gl::Program mPrograms[2];  // [sun shadows]
     std::string mLabel;
     gl::Buffer mVertices;
     gl::Buffer mIndices;
+    std::map<std::uint32_t, gl::Buffer> mThinnedIndices;  // by keepEvery > 1
     gl::VertexArray mVertexArray;
     gl::TextureHandle mTexture;
     // The scene's wind sources and their centres, re-made when the source count grows.

@@ -196,6 +196,9 @@ void SceneRenderer::drawBillboards(const core::OrbitCamera& camera, const glm::m
     const core::BillboardLayer* layer = billboardLayer();
     params.stiffness = layer ? layer->follow.stiffness : mScene->billboards.follow.stiffness;
     params.sunShadows = options.sun.shadows;
+    // The editor's reduced picture thins and widens billboards as it does blades.
+    params.keepEvery = static_cast<std::uint32_t>(std::max(options.cull.keepEvery, 1));
+    params.widthScale = options.widthScale;
     if (options.technique == core::GrassTechnique::Hybrid)
         params.fade = {options.billboards.crossFadeM.x, options.billboards.crossFadeM.y, 1.0e30f,
                        1.0e30f};

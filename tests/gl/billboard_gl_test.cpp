@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <optional>
 
@@ -173,6 +174,43 @@ TEST_F(BillboardRender, BillboardsCoverPixelsWithGrassColour) {
     EXPECT_LT(share, 0.9) << "gaps between blades must stay transparent";
     EXPECT_EQ(field.drawnObjects(), objects.size());
     EXPECT_EQ(field.drawCalls(), 1u);
+}
+
+// The editor's reduced picture (RenderOptions::cull.keepEvery, widthScale): one object in 4 is
+// drawn, in every wind mode, and widened by √4 = 2 the field covers about what it did (blades
+// do the same); narrow, the thinned field shows its gaps. Billboards were not reduced before: a
+// 41,000 m² terrain switched to billboards kept 8 s frames while the user orbited.
+TEST_F(BillboardRender, TheReducedPictureDrawsOneObjectInNWidened) {
+    const auto objects = fieldObjects();
+    auto fieldMade = makeField(objects);
+    ASSERT_TRUE(fieldMade);
+    BillboardField& field = *fieldMade;
+    BillboardDrawParams params = drawParams(BillboardWindMode::PerObject, 0, 0);
+    const double full = grassPixelShare(render(field, params).pixels);
+    params.keepEvery = 4;
+    const double narrow = grassPixelShare(render(field, params).pixels);
+    const std::size_t kept = field.drawnObjects();
+    // A quarter of each cluster's objects, rounded up or down per cluster (16 clusters).
+    EXPECT_NEAR(double(kept), double(objects.size()) / 4.0, 16.0);
+    EXPECT_LT(kept, objects.size() / 3);
+    params.widthScale = 2.0f;
+    const double wide = grassPixelShare(render(field, params).pixels);
+    RecordProperty(
+        "shares", std::to_string(full) + " " + std::to_string(narrow) + " " + std::to_string(wide));
+    std::printf("[ billboards ] grass share: all %.3f, 1 in 4 %.3f, 1 in 4 twice as wide %.3f\n",
+                full, narrow, wide);
+    EXPECT_LT(narrow, 0.7 * full);
+    EXPECT_GT(wide, 0.7 * full);
+    EXPECT_LT(wide, 1.4 * full);
+    for (const BillboardWindMode mode : MODES) {
+        BillboardDrawParams thinned = drawParams(mode, 0.05f, 1.0f);
+        thinned.keepEvery = 4;
+        render(field, thinned);
+        EXPECT_EQ(field.drawnObjects(), kept) << int(mode);
+    }
+    // Back to every object: the full index list again.
+    render(field, drawParams(BillboardWindMode::PerObject, 0, 0));
+    EXPECT_EQ(field.drawnObjects(), objects.size());
 }
 
 TEST_F(BillboardRender, WindlessModesDrawIdenticalImages) {
