@@ -1,5 +1,7 @@
 #include "util/atomic_file.h"
 
+#include <atomic>
+
 #include "util/process_alive.h"
 
 #include <fcntl.h>
@@ -18,9 +20,13 @@ namespace grass {
 namespace fs = std::filesystem;
 
 fs::path temporaryPathFor(const fs::path& target) {
+    // Numbered within the process: two threads writing one target (the editor's worker growing
+    // a project while a cancelled one still packs the same collider cache) must not write into
+    // one temporary.
+    static std::atomic<std::uint64_t> written{0};
     const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    return dir / ("." + target.stem().string() + ".tmp-" + std::to_string(::getpid()) +
-                  target.extension().string());
+    return dir / ("." + target.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                  std::to_string(written.fetch_add(1) + 1) + target.extension().string());
 }
 
 // The pid of a temporaryPathFor name, or 0 when the name is not one.
@@ -36,8 +42,14 @@ static pid_t temporaryOwner(const std::string& name) {
         pid = pid * 10 + (name[end] - '0');
         ++end;
     }
-    // Digits, then the end of the name or the target's extension.
-    if (end == tag + 5 || (end < name.size() && name[end] != '.'))
+    if (end == tag + 5)
+        return 0;
+    // The number within the process ("-12"; names before it had none).
+    if (end + 1 < name.size() && name[end] == '-' && name[end + 1] >= '0' && name[end + 1] <= '9')
+        for (++end; end < name.size() && name[end] >= '0' && name[end] <= '9';)
+            ++end;
+    // Then the end of the name or the target's extension.
+    if (end < name.size() && name[end] != '.')
         return 0;
     return static_cast<pid_t>(pid);
 }

@@ -12,13 +12,13 @@
 namespace grass {
 
 // A temporary name next to `target`, keeping its extension (image writers pick the format by
-// extension): "dir/.name.tmp-<pid>.ext".
+// extension), and unique within the process: "dir/.name.tmp-<pid>-<n>.ext".
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 
 // Writes `bytes` to `target` atomically.
 Result<void> writeFileAtomic(const std::filesystem::path& target, std::string_view bytes);
 
-// Removes the temporaries (temporaryPathFor's ".name.tmp-<pid>[.ext]") in `folder` (not its
+// Removes the temporaries (temporaryPathFor's ".name.tmp-<pid>[-<n>][.ext]") in `folder` (not its
 // subfolders) whose process no longer runs: what a save killed mid-write (SIGKILL, power loss)
 // left. The target files themselves are never touched. Returns how many were removed; a folder
 // that cannot be read removes nothing.

@@ -6,6 +6,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "support/test_paths.h"
 #include "util/atomic_file.h"
@@ -33,15 +37,18 @@ TEST(AtomicFile, StaleTemporariesOfDeadProcessesAreRemovedAndNothingElse) {
     const fs::path dir = test::scratchDir("atomic-stale");
     const std::string dead = std::to_string(deadPid());
     const std::string alive = std::to_string(::getpid());
-    const std::vector<std::string> removed = {".project.tmp-" + dead + ".json",
-                                              ".grass-density.tmp-" + dead + ".png",
-                                              ".bin.tmp-" + dead};
+    const std::vector<std::string> removed = {
+        ".project.tmp-" + dead + ".json", ".grass-density.tmp-" + dead + ".png", ".bin.tmp-" + dead,
+        ".project.tmp-" + dead + "-12.json", ".bin.tmp-" + dead + "-3"};
     const std::vector<std::string> kept = {
-        "project.json",                    // the file itself
+        "project.json",                     // the file itself
         ".project.tmp-" + alive + ".json",  // a save under way (this process)
-        ".project.tmp-abc.json",           // not a pid
+        ".project.tmp-abc.json",            // not a pid
         "project.tmp-" + dead + ".json",    // not hidden: not ours
         ".project.tmp-" + dead + "x.json",  // digits must end the tag
+        ".project.tmp-" + dead + "-.json",  // a number after the dash
+        ".project.tmp-" + dead + "-2x.json",
+        ".project.tmp-" + alive + "-4.json",  // this process's, numbered
     };
     for (const auto& name : removed)
         touch(dir / name);
@@ -57,6 +64,33 @@ TEST(AtomicFile, StaleTemporariesOfDeadProcessesAreRemovedAndNothingElse) {
         EXPECT_TRUE(fs::exists(dir / name)) << name;
     EXPECT_TRUE(fs::exists(dir / "sub" / (".map.tmp-" + dead + ".png")));
     EXPECT_EQ(removeStaleTemporaries(dir / "no-such-folder"), 0u);
+}
+
+// Two writers of one target in this process (the editor's worker threads) never share a
+// temporary; each is still this process's.
+TEST(AtomicFile, EachWriteHasATemporaryOfItsOwn) {
+    const fs::path dir = test::scratchDir("atomic-unique");
+    const fs::path first = temporaryPathFor(dir / "cache.json");
+    const fs::path second = temporaryPathFor(dir / "cache.json");
+    EXPECT_NE(first, second);
+    EXPECT_EQ(first.extension(), ".json");
+    touch(first);
+    touch(second);
+    EXPECT_EQ(removeStaleTemporaries(dir), 0u) << "this process's own are never stale";
+    std::vector<std::thread> writers;
+    for (int i = 0; i < 4; ++i)
+        writers.emplace_back([&dir, i] {
+            const std::string text(200000, char('a' + i));
+            for (int k = 0; k < 5; ++k)
+                EXPECT_TRUE(writeFileAtomic(dir / "shared.json", text).ok());
+        });
+    for (std::thread& writer : writers)
+        writer.join();
+    // One writer's bytes whole, never a mix.
+    std::ifstream in(dir / "shared.json", std::ios::binary);
+    const std::string written((std::istreambuf_iterator<char>(in)), {});
+    ASSERT_EQ(written.size(), 200000u);
+    EXPECT_EQ(written, std::string(200000, written.front()));
 }
 
 TEST(AtomicFile, TemporaryNamesAreFoundAgain) {
