@@ -44,7 +44,8 @@ void ThreadPool::run(std::size_t count, std::size_t tasks,
                      const std::function<void(std::size_t, std::size_t)>& fn) {
     tasks = std::max<std::size_t>(std::min(tasks, std::max<std::size_t>(count, 1)), 1);
     const auto range = [count, tasks](std::size_t task) { return taskRange(count, tasks, task); };
-    if (tasks == 1 || mWorkers.empty()) {
+    std::unique_lock running(mRunning, std::try_to_lock);
+    if (tasks == 1 || mWorkers.empty() || !running.owns_lock()) {
         for (std::size_t task = 0; task < tasks; ++task) {
             const auto [begin, end] = range(task);
             fn(begin, end);

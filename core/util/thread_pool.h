@@ -1,7 +1,9 @@
 // ThreadPool: worker threads started once and reused for every parallel loop (the CPU physics
 // runs one loop per step, 60 a second: starting threads each step cost more than small fields'
 // work). run() splits [0, count) into `tasks` contiguous ranges, runs them on the workers and the
-// calling thread, and returns when all are done. One run at a time per pool.
+// calling thread, and returns when all are done. One run at a time per pool: a run called while
+// another thread's run holds the workers (the editor's worker growing a field while the frame
+// steps the CPU physics) does its tasks on its own thread instead of waiting.
 #pragma once
 
 #include <condition_variable>
@@ -39,6 +41,7 @@ private:
     void workerLoop();
     bool takeTask(std::size_t& task);
     std::vector<std::thread> mWorkers;
+    std::mutex mRunning;  // held by the run that has the workers
     std::mutex mMutex;
     std::condition_variable mWake;
     std::condition_variable mDone;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <thread>
 #include <vector>
 
 #include "util/thread_pool.h"
@@ -47,6 +48,22 @@ TEST(ThreadPool, IsReusedRunAfterRun) {
                 sum.fetch_add(long(i));
         });
     EXPECT_EQ(sum.load(), 2000L * (63L * 64L / 2L));
+}
+
+// Two threads running loops on one pool at once (the editor's worker growing a field, whose
+// bending cues use the shared pool, while the frame steps the CPU physics on it): every run
+// still visits each of its indices once. Before, the second run took over the first one's tasks
+// half way and the runs lost or repeated ranges, or waited for ever.
+TEST(ThreadPool, RunsFromTwoThreadsAtOnceEachVisitTheirIndicesOnce) {
+    ThreadPool pool(2);
+    std::vector<std::thread> callers;
+    for (int caller = 0; caller < 2; ++caller)
+        callers.emplace_back([&pool] {
+            for (int run = 0; run < 300; ++run)
+                expectEachIndexOnce(pool, 1000, 4);
+        });
+    for (std::thread& caller : callers)
+        caller.join();
 }
 
 }  // namespace
