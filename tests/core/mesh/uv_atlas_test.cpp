@@ -11,6 +11,7 @@
 
 #include "mesh/gltf_loader.h"
 #include "mesh/procedural.h"
+#include "mesh/uv_atlas_detail.h"
 #include "mesh/uv_atlas_file.h"
 #include "support/scratch_folder.h"
 #include "support/test_paths.h"
@@ -358,6 +359,36 @@ AtlasCheck checkAtlas(const SurfaceMesh& mesh, const std::string& name,
     EXPECT_GT(covered, 0.25) << name;
     EXPECT_NEAR(check.stats.uvCoverage, covered, 1e-4) << name;
     return check;
+}
+
+// Large inputs search on the shared pool's threads in runs (atlas::countOverlaps); the pairs
+// come out as one thread finds them, and the cap cuts them where one thread stops. 300,000
+// triangles in a grid of cells, each cell's two triangles laid on the same UVs: exactly the
+// pairs (2i, 2i + 1) overlap.
+TEST(UvOverlaps, ALargeSearchOnThreadsFindsThePairsInTheSerialOrder) {
+    constexpr std::uint32_t PAIRS = 150'000, SIDE = 388;  // 388² cells ≥ PAIRS
+    std::vector<atlas::Triangle2> triangles;
+    triangles.reserve(2 * PAIRS);
+    for (std::uint32_t i = 0; i < PAIRS; ++i) {
+        const glm::dvec2 cell(double(i % SIDE) / SIDE, double(i / SIDE) / SIDE);
+        const double h = 0.8 / SIDE;
+        const atlas::Triangle2 t{cell, cell + glm::dvec2(h, 0.0), cell + glm::dvec2(0.0, h)};
+        triangles.push_back(t);
+        triangles.push_back(t);
+    }
+    const std::vector<char> active(triangles.size(), 1);
+    std::vector<atlas::OverlapPair> pairs;
+    EXPECT_EQ(atlas::countOverlaps(triangles, active, 1e-9, UV_OVERLAP_CAP, &pairs), PAIRS);
+    ASSERT_EQ(pairs.size(), PAIRS);
+    for (std::uint32_t i = 0; i < PAIRS; ++i) {
+        ASSERT_EQ(pairs[i].a, 2 * i) << "pair " << i;
+        ASSERT_EQ(pairs[i].b, 2 * i + 1) << "pair " << i;
+    }
+    // Capped: the first pairs, as a single thread would stop, whichever run found them.
+    std::vector<atlas::OverlapPair> first;
+    EXPECT_EQ(atlas::countOverlaps(triangles, active, 1e-9, 100'000, &first), 100'000u);
+    ASSERT_EQ(first.size(), 100'000u);
+    EXPECT_EQ(first.back().a, 2u * 99'999u);
 }
 
 // ---- findUvOverlaps ----
