@@ -222,6 +222,9 @@ Result<bool> Editor::frame() {
 }
 
 bool Editor::closeRequested() {
+    // Closing the window stops a load first, so that the question about unsaved changes is
+    // asked (and answered) with the panels free.
+    cancelDocumentJob(mState);
     if (!mUi || !mState.doc.dirty || mReplay) {
         // A clean close leaves nothing to recover (an autosave still on offer stays).
         if (!mState.doc.dirty && !mState.recoveryOffer)

@@ -70,6 +70,9 @@ void rememberRecent(EditorState& state, const std::filesystem::path& projectFile
 // While a document job grows its field (panels_loading.cpp): the panels around `viewport` wait
 // under a veil, and a box says what is read or grown, with Cancel.
 void loadingWindow(ui::Context& ctx, ui::Rect viewport, EditorState& state);
+// Its Cancel (and the window's close button while it runs): the panels are the user's again
+// at once, the document as it was; the worker's field is dropped when it is done.
+void cancelDocumentJob(EditorState& state);
 
 // File → Export… (panels_export.cpp): the dialog, and the progress window while the job runs.
 void exportWindow(ui::Context& ctx, EditorState& state);

@@ -80,6 +80,13 @@ std::string entryText(const BrowserEntry& entry) {
 }  // namespace
 
 void routeDroppedFiles(EditorState& s, const std::vector<std::string>& paths) {
+    // While a field grows the document waits, and so do files dropped on it: said, not queued
+    // behind a load the user may cancel.
+    if (s.documentJob && !paths.empty()) {
+        s.transient.message = "not taken: " + paths.front() + " (" + s.documentJob->title() +
+                              " … drop it again once it is open)";
+        return;
+    }
     for (const std::string& dropped : paths) {
         const fs::path path(dropped);
         std::error_code ec;

@@ -48,18 +48,23 @@ void loadingWindow(ui::Context& ctx, ui::Rect viewport, EditorState& s) {
     ctx.interact(box, screen, ui::Layer::Foreground, id.with("box"), ui::Sense::hover());
     ctx.registerArea(box);
     ui::Ui ui(ctx, box.expand(-10.0f), ui::Layer::Foreground);
-    const std::string title = s.documentJob->title();
-    ui.coloredLabel(title, style.textStrong);
+    ui.coloredLabel(s.documentJob->title(), style.textStrong);
     char elapsed[32];
     std::snprintf(elapsed, sizeof elapsed, " … %.0f s", s.documentJob->elapsedS());
     ui.coloredLabel(s.documentJob->stage() + elapsed, style.text);
     if (ui.button("Cancel")
             .onHoverText("Stop waiting and go on with the project as it is")
             .clicked()) {
-        // The worker cannot be stopped halfway: it finishes on its own and its field is dropped.
-        s.transient.message = "cancelled: " + title;
-        s.cancelledJobs.push_back(std::move(s.documentJob));
+        cancelDocumentJob(s);
     }
+}
+
+void cancelDocumentJob(EditorState& s) {
+    if (!s.documentJob)
+        return;
+    // The worker cannot be stopped halfway: it finishes on its own and its field is dropped.
+    s.transient.message = "cancelled: " + s.documentJob->title();
+    s.cancelledJobs.push_back(std::move(s.documentJob));
 }
 
 }  // namespace grass::editor

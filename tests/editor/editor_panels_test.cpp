@@ -339,6 +339,11 @@ TEST(EditorPanels, WhileAFieldGrowsThePanelsWaitAndCancelGivesThemBack) {
     editor::applyEditorKeys(editor.state, keys, true);
     EXPECT_FALSE(editor.state.transient.browser.has_value());
     EXPECT_FALSE(editor.state.doc.dirty);
+    // A file dropped meanwhile is refused in words, not queued behind the load.
+    editor::routeDroppedFiles(editor.state, {(sourceDir() / "tests/data/gltf/cube.glb").string()});
+    EXPECT_TRUE(editor.state.importMeshRequested.empty());
+    EXPECT_TRUE(editor.state.transient.message.starts_with("not taken: "))
+        << editor.state.transient.message;
     editor.click("Cancel");
     EXPECT_FALSE(editor.state.loading());
     ASSERT_EQ(editor.state.cancelledJobs.size(), 1u);
