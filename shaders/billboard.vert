@@ -1,16 +1,15 @@
 #version 450 core
-// Star billboard grass objects (SPEC §8, GPU Gems 1 ch. 7): only the upper vertices (aSway = 1)
+// Star billboard grass objects (SPEC §8, GPU Gems 1 ch. 7): only the upper vertices (sway = 1)
 // move, with the book's sine sway and the scene's wind sources, and their normals turn with them;
 // the roots stay on the surface.
 #include "billboard_wind.glsl"
+#include "star_vertex.glsl"
 
-layout(location = 0) in vec3 aPosition;
-layout(location = 1) in vec2 aUv;
-layout(location = 2) in vec3 aNormal;
-layout(location = 3) in vec3 aObjectCentre;
-layout(location = 4) in float aSway;
-layout(location = 5) in vec3 aTint;
-layout(location = 6) in float aObjectHeight;
+// One instance a star (core::StarInstance), its 12 vertices made from gl_VertexID.
+layout(location = 0) in vec4 aCentreHeight;
+layout(location = 1) in vec4 aUpTintR;
+layout(location = 2) in vec4 aAcross0TintG;
+layout(location = 3) in vec4 aAcross90TintB;
 
 uniform mat4 uViewProj;
 uniform vec3 uCameraPos;
@@ -24,8 +23,8 @@ uniform vec2 uWindDirection;
 uniform float uWindAmplitude;
 uniform float uWindFrequency;
 uniform vec4 uFade;  // fade-in start, end, fade-out start, end (metres)
-// The editor's reduced picture draws one object in n, each √n wider about its centre (the
-// ground's normal through the object's centre is the axis), so the field keeps its cover.
+// The editor's reduced picture draws one object in n, each √n wider about its centre, so the
+// field keeps its cover.
 uniform float uWidthScale = 1.0;
 
 out vec2 vUv;
@@ -36,19 +35,17 @@ out float vFade;
 out vec3 vTint;
 
 void main() {
-    const vec3 up = normalize(aNormal);
-    const vec3 offset = aPosition - aObjectCentre;
-    const float along = dot(offset, up);
-    const vec3 position = aObjectCentre + along * up + (offset - along * up) * uWidthScale;
+    const StarVertex star = starVertex(aCentreHeight, aUpTintR, aAcross0TintG, aAcross90TintB,
+                                       gl_VertexID, uWidthScale);
     StarVertexMotion motion = billboardVertexMotion(
-        position, aNormal, aObjectCentre, aSway, aObjectHeight, uWindMode, uClusterOffset,
+        star.position, star.up, star.centre, star.sway, star.height, uWindMode, uClusterOffset,
         uClusterWind, uTime, uWindDirection, uWindAmplitude, uWindFrequency, uStiffness);
     // By the object's centre, so a whole object fades together.
-    vFade = billboardFade(distance(uCameraPos, aObjectCentre), uFade);
-    vUv = aUv;
+    vFade = billboardFade(distance(uCameraPos, star.centre), uFade);
+    vUv = star.uv;
     vNormal = motion.normal;
-    vUp = aNormal;
+    vUp = star.up;
     vPosition = motion.position;
-    vTint = aTint;
+    vTint = star.tint;
     gl_Position = uViewProj * vec4(motion.position, 1.0);
 }

@@ -13,8 +13,6 @@ namespace grass::core {
 namespace {
 
 constexpr float TWO_PI = 6.28318530717958647692f;
-// The three quads of a star, 60° apart (GPU Gems 1 ch. 7, fig. 7-5).
-constexpr float QUAD_STEP_RAD = TWO_PI / 6.0f;
 // Wind wave: the main sway travels downwind with this wave number (rad/m, a ~5 m wavelength, so
 // neighbouring tufts move nearly but not quite together); the cross sway runs 1.7× faster so
 // the motion never looks like a single pendulum.
@@ -96,12 +94,51 @@ std::vector<GrassObject> placeGrassObjects(const SurfaceMesh& mesh,
     return objects;
 }
 
-StarMesh buildStarVertices(const std::vector<GrassObject>& objects) {
-    StarMesh mesh;
+StarInstance starInstance(const GrassObject& object) {
+    StarInstance star;
+    star.centre = object.centre;
+    star.height = object.height;
+    star.up = glm::normalize(object.up);
+    glm::vec3 tangent, bitangent;
+    tangentFrame(star.up, tangent, bitangent);
+    const float c = std::cos(object.rotationRad), s = std::sin(object.rotationRad);
+    const float half = 0.5f * object.width;
+    star.across0 = (c * tangent + s * bitangent) * half;
+    star.across90 = (c * bitangent - s * tangent) * half;
+    star.tintR = object.tint.r;
+    star.tintG = object.tint.g;
+    star.tintB = object.tint.b;
+    return star;
+}
+
+StarVertex starVertex(const StarInstance& star, std::uint32_t vertex) {
+    // The three quads of a star, 60° apart (GPU Gems 1 ch. 7, fig. 7-5): cos and sin of 0°, 60°
+    // and 120°, quad q's half width cos·across0 + sin·across90, the first quad's turned by q·60°
+    // (the same numbers as star_vertex.glsl).
+    static constexpr std::array<glm::vec2, STAR_QUADS> TURN = {
+        glm::vec2(1.0f, 0.0f), glm::vec2(0.5f, 0.8660254f), glm::vec2(-0.5f, 0.8660254f)};
+    const glm::vec2 turn = TURN[vertex / 4 % STAR_QUADS];
+    const std::uint32_t corner = vertex % 4;
+    const glm::vec3 across = turn.x * star.across0 + turn.y * star.across90;
+    const bool right = corner == 1 || corner == 2, top = corner >= 2;
+    StarVertex v;
+    v.position =
+        star.centre + (right ? across : -across) + (top ? star.up * star.height : glm::vec3(0.0f));
+    v.uv = glm::vec2(right ? 1.0f : 0.0f, top ? 0.0f : 1.0f);
+    v.normal = star.up;
+    v.objectCentre = star.centre;
+    v.sway = top ? 1.0f : 0.0f;
+    v.tint = glm::vec3(star.tintR, star.tintG, star.tintB);
+    v.objectHeight = star.height;
+    return v;
+}
+
+StarInstances buildStarInstances(const std::vector<GrassObject>& objects) {
+    StarInstances out;
     std::uint32_t clusterCount = 0;
     for (const GrassObject& object : objects)
         clusterCount = std::max(clusterCount, object.cluster + 1);
-    mesh.clusters.resize(clusterCount);
+    out.clusters.resize(clusterCount);
     // Counting sort by cluster, keeping input order within a cluster.
     std::vector<std::uint32_t> objectsIn(clusterCount, 0);
     for (const GrassObject& object : objects)
@@ -110,63 +147,48 @@ StarMesh buildStarVertices(const std::vector<GrassObject>& objects) {
     std::uint32_t first = 0;
     for (std::uint32_t c = 0; c < clusterCount; ++c) {
         nextObject[c] = first;
-        mesh.clusters[c].firstVertex = first * STAR_VERTICES_PER_OBJECT;
-        mesh.clusters[c].vertexCount = objectsIn[c] * STAR_VERTICES_PER_OBJECT;
+        out.clusters[c].firstVertex = first * STAR_VERTICES_PER_OBJECT;
+        out.clusters[c].vertexCount = objectsIn[c] * STAR_VERTICES_PER_OBJECT;
         first += objectsIn[c];
     }
     for (const GrassObject& object : objects)
-        mesh.clusters[object.cluster].centre += object.centre;
+        out.clusters[object.cluster].centre += object.centre;
     for (std::uint32_t c = 0; c < clusterCount; ++c)
         if (objectsIn[c] > 0)
-            mesh.clusters[c].centre /= static_cast<float>(objectsIn[c]);
-
-    mesh.vertices.resize(objects.size() * STAR_VERTICES_PER_OBJECT);
+            out.clusters[c].centre /= static_cast<float>(objectsIn[c]);
+    out.stars.resize(objects.size());
     for (const GrassObject& object : objects) {
-        const glm::vec3 up = glm::normalize(object.up);
-        glm::vec3 tangent, bitangent;
-        tangentFrame(up, tangent, bitangent);
-        const glm::vec3 top = up * object.height;
-        StarVertex* out = &mesh.vertices[nextObject[object.cluster]++ * STAR_VERTICES_PER_OBJECT];
-        for (std::uint32_t q = 0; q < STAR_QUADS; ++q) {
-            const float angle = object.rotationRad + static_cast<float>(q) * QUAD_STEP_RAD;
-            const glm::vec3 across =
-                (std::cos(angle) * tangent + std::sin(angle) * bitangent) * (0.5f * object.width);
-            const std::array<glm::vec3, 4> corners = {
-                object.centre - across, object.centre + across, object.centre + across + top,
-                object.centre - across + top};
-            const std::array<glm::vec2, 4> uvs = {glm::vec2(0, 1), glm::vec2(1, 1), glm::vec2(1, 0),
-                                                  glm::vec2(0, 0)};
-            for (std::size_t k = 0; k < 4; ++k) {
-                StarVertex& v = out[4 * q + k];
-                v.position = corners[k];
-                v.uv = uvs[k];
-                v.normal = up;
-                v.objectCentre = object.centre;
-                v.sway = k >= 2 ? 1.0f : 0.0f;
-                v.tint = object.tint;
-                v.objectHeight = object.height;
-            }
-        }
+        const StarInstance star = starInstance(object);
+        out.stars[nextObject[object.cluster]++] = star;
+        // Every vertex lies within the radius of its cluster's centre.
+        StarCluster& cluster = out.clusters[object.cluster];
+        for (std::uint32_t v = 0; v < STAR_VERTICES_PER_OBJECT; ++v)
+            cluster.radius = std::max(cluster.radius,
+                                      glm::length(starVertex(star, v).position - cluster.centre));
     }
-    for (StarCluster& cluster : mesh.clusters)
-        for (std::uint32_t v = 0; v < cluster.vertexCount; ++v)
-            cluster.radius = std::max(
-                cluster.radius,
-                glm::length(mesh.vertices[cluster.firstVertex + v].position - cluster.centre));
+    return out;
+}
+
+StarMesh buildStarVertices(const std::vector<GrassObject>& objects) {
+    StarInstances instances = buildStarInstances(objects);
+    StarMesh mesh;
+    mesh.clusters = std::move(instances.clusters);
+    mesh.vertices.reserve(instances.stars.size() * STAR_VERTICES_PER_OBJECT);
+    for (const StarInstance& star : instances.stars)
+        for (std::uint32_t v = 0; v < STAR_VERTICES_PER_OBJECT; ++v)
+            mesh.vertices.push_back(starVertex(star, v));
     return mesh;
 }
 
-std::vector<std::uint32_t> starQuadIndices(std::size_t objectCount, std::uint32_t keepEvery) {
-    const std::size_t every = std::max<std::uint32_t>(keepEvery, 1);
-    const std::size_t kept = (objectCount + every - 1) / every;
+std::vector<std::uint32_t> starQuadIndices(std::size_t objectCount) {
     std::vector<std::uint32_t> indices;
-    indices.reserve(kept * STAR_INDICES_PER_OBJECT);
-    for (std::size_t j = 0; j < kept; ++j)
-        for (std::size_t q = j * every * STAR_QUADS; q < (j * every + 1) * STAR_QUADS; ++q) {
-            const auto base = static_cast<std::uint32_t>(4 * q);
-            for (const std::uint32_t corner : {0u, 1u, 2u, 0u, 2u, 3u})
-                indices.push_back(base + corner);
-        }
+    indices.reserve(objectCount * STAR_INDICES_PER_OBJECT);
+    const std::size_t quads = objectCount * STAR_QUADS;
+    for (std::size_t q = 0; q < quads; ++q) {
+        const auto base = static_cast<std::uint32_t>(4 * q);
+        for (const std::uint32_t corner : {0u, 1u, 2u, 0u, 2u, 3u})
+            indices.push_back(base + corner);
+    }
     return indices;
 }
 

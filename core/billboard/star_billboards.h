@@ -81,6 +81,35 @@ struct StarCluster {
     float radius = 0.0f;            // every vertex of the cluster lies within it of `centre`
 };
 
+// One star as the GPU draws it: billboard.vert makes its 12 vertices from the vertex id as
+// starVertex() does (shaders/include/star_vertex.glsl), so a billboard takes 64 bytes of vertex
+// data instead of 12 StarVertex (768): 1.66 million of them on a large terrain had 1.27 GB.
+// The tint is split over the w components so that four vec4 attributes carry everything.
+struct StarInstance {
+    glm::vec3 centre{0.0f};
+    float height = 0.0f;
+    glm::vec3 up{0.0f, 1.0f, 0.0f};  // unit
+    float tintR = 1.0f;
+    glm::vec3 across0{0.0f};  // half the first quad's width, from the centre to its right edge
+    float tintG = 1.0f;
+    glm::vec3 across90{0.0f};  // across0 turned 90° about up
+    float tintB = 1.0f;
+};
+static_assert(sizeof(StarInstance) == 64, "StarInstance is the GPU instance layout");
+
+StarInstance starInstance(const GrassObject& object);
+// Vertex `vertex` (0…STAR_VERTICES_PER_OBJECT − 1) of the star: quad vertex / 4 (turned by
+// 60° each), corner vertex % 4 (bottom left, bottom right, top right, top left).
+StarVertex starVertex(const StarInstance& star, std::uint32_t vertex);
+
+// The stars sorted by cluster, and the clusters (firstVertex and vertexCount count the 12
+// vertices each star stands for, as buildStarVertices lays them out).
+struct StarInstances {
+    std::vector<StarInstance> stars;
+    std::vector<StarCluster> clusters;
+};
+StarInstances buildStarInstances(const std::vector<GrassObject>& objects);
+
 struct StarMesh {
     std::vector<StarVertex> vertices;   // grouped contiguously by cluster, in cluster order
     std::vector<StarCluster> clusters;  // indexed by GrassObject::cluster
@@ -88,18 +117,17 @@ struct StarMesh {
 };
 
 // Three quads at rotationRad + 0°, 60°, 120° about `up`, each width × height, bottom edge
-// through the object's centre. Objects keep their input order within a cluster. The cluster
-// table has max(cluster) + 1 entries.
+// through the object's centre: buildStarInstances' stars, each expanded by starVertex. Objects
+// keep their input order within a cluster. The cluster table has max(cluster) + 1 entries.
 StarMesh buildStarVertices(const std::vector<GrassObject>& objects);
 
-// Triangle indices for `objectCount` consecutive objects of buildStarVertices' layout, 32-bit.
-// With `keepEvery` n > 1, those of objects 0, n, 2n, … only (the editor's reduced picture while
-// the user interacts, as blades keep one in n): entry j of the list is object j·n.
-std::vector<std::uint32_t> starQuadIndices(std::size_t objectCount, std::uint32_t keepEvery = 1);
+// Triangle indices for `objectCount` consecutive objects of buildStarVertices' layout, 32-bit
+// (one object's: the 12 vertex ids of an instanced star).
+std::vector<std::uint32_t> starQuadIndices(std::size_t objectCount);
 
-// Where the objects [first, first + count) that keepEvery keeps lie in starQuadIndices(…,
-// keepEvery)'s list, in objects: every object whose index is a multiple of keepEvery, a
-// contiguous run of that list.
+// The editor's reduced picture draws one object in keepEvery (as blades keep one in n): of the
+// objects [first, first + count), those whose index is a multiple of keepEvery, as a run of the
+// list of every keepEvery-th object (entry j is object j·keepEvery).
 struct KeptObjects {
     std::uint32_t first = 0;
     std::uint32_t count = 0;

@@ -48,10 +48,9 @@ std::size_t sceneBytesPerBlade() {
 }
 
 std::size_t sceneBytesPerBillboard() {
-    // The object placed and drawn, its rule factor per layer (one layer counted), its star's
-    // vertices on the CPU and the GPU, and its indices.
-    return 2 * sizeof(GrassObject) + sizeof(float) + 2 * STAR_VERTICES_PER_OBJECT * sizeof(StarVertex) +
-           STAR_INDICES_PER_OBJECT * sizeof(std::uint32_t);
+    // The object placed and drawn, its rule factor per layer (one layer counted), and its star
+    // instance on the CPU (while it is uploaded) and the GPU.
+    return 2 * sizeof(GrassObject) + sizeof(float) + 2 * sizeof(StarInstance);
 }
 
 // "4e+08", "1600", "0.25": 3 significant digits for messages.

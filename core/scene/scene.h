@@ -87,8 +87,9 @@ struct Scene {
 // the layer, the blade count and the memory it would need.
 inline constexpr double MAX_SCENE_BLADES = 20.0e6;
 std::size_t sceneBytesPerBlade();
-// The most star billboards (SPEC §8) one scene may hold: ~1.2 kB each with their star mesh, so
-// ~2.4 GiB; 1000 /m² (the density limit) on 2000 m² of surface.
+// The most star billboards (SPEC §8) one scene may hold: ~0.3 kB each with their star instance
+// (1.7 kB before the stars were drawn instanced), so ~0.6 GiB; 1000 /m² (the density limit) on
+// 2000 m² of surface.
 inline constexpr double MAX_SCENE_BILLBOARDS = 2.0e6;
 std::size_t sceneBytesPerBillboard();
 

@@ -24,6 +24,10 @@ void VertexArray::setVertexBuffer(BufferRef vertices, std::size_t strideBytes) {
     glVertexArrayVertexBuffer(mHandle.id(), 0, vertices.id(), 0, static_cast<GLsizei>(strideBytes));
 }
 
+void VertexArray::setInstanceDivisor(GLuint divisor) {
+    glVertexArrayBindingDivisor(mHandle.id(), 0, divisor);
+}
+
 void VertexArray::setElementBuffer(BufferRef indices) {
     glVertexArrayElementBuffer(mHandle.id(), indices.id());
 }

@@ -31,6 +31,8 @@ public:
     void setAttributes(std::span<const VertexAttribute> attributes);
     // The buffer on binding 0, `strideBytes` per vertex.
     void setVertexBuffer(BufferRef vertices, std::size_t strideBytes);
+    // Binding 0 advances once per `divisor` instances instead of per vertex (0: per vertex).
+    void setInstanceDivisor(GLuint divisor);
     void setElementBuffer(BufferRef indices);
     void bind() const { glBindVertexArray(mHandle.id()); }
 

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -24,21 +25,20 @@ using gl::ScopedCapability;
 constexpr float ALPHA_CUTOFF_MULTISAMPLED = 0.02f;
 constexpr float ALPHA_CUTOFF_SINGLE_SAMPLED = 0.5f;
 
-// A cluster's objects in the index buffer of one object in `keepEvery` (all of them for 1).
+// A cluster's objects among the instances one in `keepEvery` draws (all of them for 1).
 core::KeptObjects clusterObjects(const core::StarCluster& cluster, std::uint32_t keepEvery) {
     return core::keptObjects(cluster.firstVertex / core::STAR_VERTICES_PER_OBJECT,
                              cluster.vertexCount / core::STAR_VERTICES_PER_OBJECT, keepEvery);
 }
-// Its range there: 18 indices for the 12 vertices of each object.
-GLsizei clusterIndexCount(const core::StarCluster& cluster, std::uint32_t keepEvery) {
-    return static_cast<GLsizei>(clusterObjects(cluster, keepEvery).count *
-                                core::STAR_INDICES_PER_OBJECT);
-}
-const void* clusterIndexOffset(const core::StarCluster& cluster, std::uint32_t keepEvery) {
-    const std::size_t first =
-        std::size_t(clusterObjects(cluster, keepEvery).first) * core::STAR_INDICES_PER_OBJECT;
-    return reinterpret_cast<const void*>(first * sizeof(std::uint32_t));
-}
+
+// glMultiDrawElementsIndirect's command (the GL's DrawElementsIndirectCommand).
+struct DrawCommand {
+    GLuint count = core::STAR_INDICES_PER_OBJECT;
+    GLuint instanceCount = 0;
+    GLuint firstIndex = 0;
+    GLint baseVertex = 0;
+    GLuint baseInstance = 0;
+};
 
 gl::TextureHandle uploadTexture(const Rgba8Pixels& image, std::string_view label) {
     const auto largest = static_cast<unsigned>(std::max({image.width, image.height, 1}));
@@ -83,10 +83,10 @@ Result<BillboardField> BillboardField::create(const std::vector<core::GrassObjec
     field.mTexture = uploadTexture(texture, field.mLabel + " texture");
     field.mVertexArray = gl::VertexArray(field.mLabel);
     const gl::VertexAttribute attributes[] = {
-        {3, offsetof(core::StarVertex, position)},     {2, offsetof(core::StarVertex, uv)},
-        {3, offsetof(core::StarVertex, normal)},       {3, offsetof(core::StarVertex, objectCentre)},
-        {1, offsetof(core::StarVertex, sway)},         {3, offsetof(core::StarVertex, tint)},
-        {1, offsetof(core::StarVertex, objectHeight)},
+        {4, offsetof(core::StarInstance, centre)},
+        {4, offsetof(core::StarInstance, up)},
+        {4, offsetof(core::StarInstance, across0)},
+        {4, offsetof(core::StarInstance, across90)},
     };
     field.mVertexArray.setAttributes(attributes);
     field.setObjects(objects);
@@ -94,28 +94,20 @@ Result<BillboardField> BillboardField::create(const std::vector<core::GrassObjec
 }
 
 void BillboardField::setObjects(const std::vector<core::GrassObject>& objects) {
-    const core::StarMesh mesh = core::buildStarVertices(objects);
-    mObjectCount = mesh.objectCount();
-    mClusters = mesh.clusters;
+    const core::StarInstances stars = core::buildStarInstances(objects);
+    mObjectCount = stars.stars.size();
+    mClusters = stars.clusters;
     mTallestObjectM = 0.0f;
     for (const core::GrassObject& object : objects)
         mTallestObjectM = std::max(mTallestObjectM, object.height);
-    mVertices = gl::Buffer::fromVector(mesh.vertices, mLabel + " vertices", 0);
-    mIndices = gl::Buffer::fromVector(core::starQuadIndices(mObjectCount), mLabel + " indices", 0);
-    mThinnedIndices.clear();
-    mVertexArray.setVertexBuffer(mVertices, sizeof(core::StarVertex));
+    mStars = gl::Buffer::fromVector(stars.stars, mLabel + " stars", 0);
+    mIndices = gl::Buffer::fromVector(core::starQuadIndices(1), mLabel + " star indices", 0);
+    mDrawCommands =
+        gl::Buffer::fromVector(std::vector<DrawCommand>(std::max<std::size_t>(mClusters.size(), 1)),
+                               mLabel + " draw commands");
+    mVertexArray.setVertexBuffer(mStars, sizeof(core::StarInstance));
+    mVertexArray.setInstanceDivisor(1);
     mVertexArray.setElementBuffer(mIndices);
-}
-
-const gl::Buffer& BillboardField::indicesKeeping(std::uint32_t keepEvery) {
-    if (keepEvery <= 1)
-        return mIndices;
-    auto [it, made] = mThinnedIndices.try_emplace(keepEvery);
-    if (made)
-        it->second =
-            gl::Buffer::fromVector(core::starQuadIndices(mObjectCount, keepEvery),
-                                   mLabel + " indices 1 in " + std::to_string(keepEvery), 0);
-    return it->second;
 }
 
 // Clusters that may hold a visible object, back to front (ties by index, so the order is
@@ -189,7 +181,9 @@ void BillboardField::bindForDraw(const BillboardDrawParams& params, bool multisa
                  multisampled ? ALPHA_CUTOFF_MULTISAMPLED : ALPHA_CUTOFF_SINGLE_SAMPLED);
     program.set("uWidthScale", params.widthScale);
     glBindTextureUnit(BILLBOARD_TEXTURE_UNIT, mTexture.id());
-    mVertexArray.setElementBuffer(indicesKeeping(params.keepEvery));
+    // One star in keepEvery: instance j reads star j·keepEvery.
+    mVertexArray.setVertexBuffer(mStars,
+                                 sizeof(core::StarInstance) * std::max(params.keepEvery, 1u));
     mVertexArray.bind();
 }
 
@@ -205,25 +199,33 @@ void BillboardField::drawEachCluster(const std::vector<std::uint32_t>& order,
         if (!params.sceneWind.empty())
             program.set("uClusterWind",
                          core::windAt(params.sceneWind, cluster.centre, params.timeS));
-        glDrawElements(GL_TRIANGLES, clusterIndexCount(cluster, params.keepEvery), GL_UNSIGNED_INT,
-                       clusterIndexOffset(cluster, params.keepEvery));
+        const core::KeptObjects kept = clusterObjects(cluster, params.keepEvery);
+        if (kept.count == 0)
+            continue;
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, core::STAR_INDICES_PER_OBJECT,
+                                            GL_UNSIGNED_INT, nullptr, GLsizei(kept.count),
+                                            kept.first);
         ++mDrawCalls;
     }
 }
 
-// Wind in the vertex shader: every cluster in one glMultiDrawElements, in `order`.
+// Wind in the vertex shader: every cluster in one glMultiDrawElementsIndirect, in `order`.
 void BillboardField::drawClustersAtOnce(const std::vector<std::uint32_t>& order,
                                         std::uint32_t keepEvery) {
-    std::vector<GLsizei> counts;
-    std::vector<const void*> offsets;
-    counts.reserve(order.size());
-    offsets.reserve(order.size());
+    std::vector<DrawCommand> commands;
+    commands.reserve(order.size());
     for (const std::uint32_t c : order) {
-        counts.push_back(clusterIndexCount(mClusters[c], keepEvery));
-        offsets.push_back(clusterIndexOffset(mClusters[c], keepEvery));
+        const core::KeptObjects kept = clusterObjects(mClusters[c], keepEvery);
+        if (kept.count > 0)
+            commands.push_back({.instanceCount = kept.count, .baseInstance = kept.first});
     }
-    glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(),
-                        static_cast<GLsizei>(counts.size()));
+    if (commands.empty())
+        return;
+    mDrawCommands.update(std::as_bytes(std::span<const DrawCommand>(commands)));
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mDrawCommands.id());
+    glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr,
+                                static_cast<GLsizei>(commands.size()), 0);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     ++mDrawCalls;
 }
 

@@ -15,7 +15,6 @@
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -93,14 +92,14 @@ private:
     void drawEachCluster(const std::vector<std::uint32_t>& order,
                          const BillboardDrawParams& params);
     void drawClustersAtOnce(const std::vector<std::uint32_t>& order, std::uint32_t keepEvery);
-    // The index buffer of one object in `keepEvery` (core::starQuadIndices), made on first use.
-    const gl::Buffer& indicesKeeping(std::uint32_t keepEvery);
 
     gl::Program mPrograms[2];  // [sun shadows]
     std::string mLabel;
-    gl::Buffer mVertices;
+    // One core::StarInstance a star, drawn instanced: its 18 indices name vertex ids 0…11,
+    // which billboard.vert makes into the star's vertices (star_vertex.glsl).
+    gl::Buffer mStars;
     gl::Buffer mIndices;
-    std::map<std::uint32_t, gl::Buffer> mThinnedIndices;  // by keepEvery > 1
+    gl::Buffer mDrawCommands;  // one indirect command per cluster, filled each frame
     gl::VertexArray mVertexArray;
     gl::TextureHandle mTexture;
     // The scene's wind sources and their centres, re-made when the source count grows.

@@ -35,7 +35,7 @@ constexpr float STIFFNESS = 55.0f;
 constexpr float TIME_S = 2.6f;
 
 // About 60 objects on a 3 m plane, one cluster.
-core::StarMesh fieldStars() {
+std::vector<core::GrassObject> fieldObjects() {
     core::ProceduralMeshParams plane;
     plane.shape = core::ProceduralShape::Plane;
     plane.size = 3.0f;
@@ -44,8 +44,12 @@ core::StarMesh fieldStars() {
     params.density = 7.0f;
     params.heightRangeM = {0.2f, 0.5f};
     params.clusterSizeM = 0.0f;
-    return core::buildStarVertices(
-        core::placeGrassObjects(core::makeProceduralMesh(plane), params, 5));
+    return core::placeGrassObjects(core::makeProceduralMesh(plane), params, 5);
+}
+
+// The field's stars as the CPU lays out their vertices (the GPU reads their instances).
+core::StarMesh fieldStars() {
+    return core::buildStarVertices(fieldObjects());
 }
 
 std::vector<core::WindSource> sceneWind() {
@@ -79,6 +83,8 @@ core::BillboardWind sway() {
 struct Motion {
     glm::vec4 position;
     glm::vec4 normal;
+    glm::vec4 rest;      // the vertex as starVertex made it (xyz), sway
+    glm::vec4 uvHeight;  // uv, object height, tint's green
 };
 
 // The shader's motion of every vertex in `mode`, the scene wind bound as BillboardField binds it.
@@ -88,11 +94,13 @@ std::vector<Motion> runShader(const gl::Program& program, const core::StarMesh& 
     const core::WindSourcesAt packed = core::packWindSourcesAt(wind, TIME_S);
     const gl::Buffer sourceBuffer = gl::Buffer::fromVector(packed.sources, "twin wind sources");
     const gl::Buffer centreBuffer = gl::Buffer::fromVector(packed.centres, "twin wind centres");
-    const gl::Buffer input = gl::Buffer::fromVector(stars.vertices, "twin star vertices");
+    const gl::Buffer input =
+        gl::Buffer::fromVector(core::buildStarInstances(fieldObjects()).stars, "twin stars");
     // NaN first: a vertex the shader never wrote cannot pass by accident.
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const gl::Buffer output = gl::Buffer::fromVector(
-        std::vector<Motion>(stars.vertices.size(), Motion{glm::vec4(nan), glm::vec4(nan)}),
+        std::vector<Motion>(stars.vertices.size(),
+                            Motion{glm::vec4(nan), glm::vec4(nan), glm::vec4(nan), glm::vec4(nan)}),
         "twin motions");
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
@@ -135,6 +143,28 @@ gl::Program loadProgram() {
 // wrong constant or term moves tops by millimetres or more.
 constexpr float POSITION_TOLERANCE_M = 2.0e-5f;
 constexpr float NORMAL_TOLERANCE = 1.0e-4f;
+
+// billboard.vert draws a star from its 64-byte instance: every vertex it makes is the one
+// core::starVertex makes (and buildStarVertices lays out), position, uv, sway, height and tint.
+TEST_F(BillboardMotionTwins, ShaderMakesEveryStarVertexAsTheCpuTwin) {
+    const gl::Program program = loadProgram();
+    ASSERT_NE(program.id(), 0u);
+    const core::StarMesh stars = fieldStars();
+    const std::vector<Motion> gpu =
+        runShader(program, stars, BillboardWindMode::PerObject, stars.clusters[0].centre);
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < stars.vertices.size(); ++i) {
+        const core::StarVertex& v = stars.vertices[i];
+        worst = std::max(worst, glm::length(glm::vec3(gpu[i].rest) - v.position));
+        ASSERT_EQ(gpu[i].rest.w, v.sway) << "vertex " << i;
+        ASSERT_EQ(glm::vec2(gpu[i].uvHeight), v.uv) << "vertex " << i;
+        ASSERT_EQ(gpu[i].uvHeight.z, v.objectHeight) << "vertex " << i;
+        ASSERT_EQ(gpu[i].uvHeight.w, v.tint.g) << "vertex " << i;
+    }
+    RecordProperty("worst_rest_position_m", std::to_string(worst));
+    // The same products and sums; only the driver's fused multiply-adds may round otherwise.
+    EXPECT_LT(worst, 1.0e-6f);
+}
 
 TEST_F(BillboardMotionTwins, ShaderMovesEveryVertexAsTheCpuTwinInEveryMode) {
     const gl::Program program = loadProgram();
