@@ -7,8 +7,8 @@
 namespace grass::editor {
 
 bool replaceDocument(EditorState& state, Live& live, core::LoadedProject next, bool withPhysics,
-                     std::string_view what, PhysicsDevice device, core::GltfImport* alreadyRead) {
-    auto grown = growField(std::move(next), withPhysics, alreadyRead);
+                     std::string_view what, PhysicsDevice device) {
+    auto grown = growField(std::move(next), withPhysics);
     if (!grown) {
         state.transient.message = std::string(what) + ": " + grown.error().str();
         return false;

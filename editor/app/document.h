@@ -14,10 +14,9 @@ namespace grass::editor {
 
 // Grows `next` into a live field and, on success, makes it the document: state.doc.loaded, the
 // scene and tools pointers, a fresh history. `what` names the action in the message on failure
-// ("cannot open"). True when replaced. `alreadyRead`: buildLive's.
+// ("cannot open"). True when replaced.
 bool replaceDocument(EditorState& state, Live& live, core::LoadedProject next, bool withPhysics,
-                     std::string_view what, PhysicsDevice device = PhysicsDevice::Auto,
-                     core::GltfImport* alreadyRead = nullptr);
+                     std::string_view what, PhysicsDevice device = PhysicsDevice::Auto);
 // The same with the field already grown (on a worker, document_job.h): brought up on the GPU
 // here, then made the document.
 bool replaceDocument(EditorState& state, Live& live, GrownField next, std::string_view what,

@@ -2,14 +2,10 @@
 
 #include <utility>
 
+#include "app/recent_files.h"
 #include "util/assert.h"
 
 namespace grass::editor {
-
-std::string shownFileName(const std::filesystem::path& file) {
-    return file.filename() == "project.json" ? file.parent_path().filename().string()
-                                             : file.filename().string();
-}
 
 DocumentJob::DocumentJob(DocumentAction action, std::filesystem::path file, std::string stage,
                          Work work, std::chrono::milliseconds delay)

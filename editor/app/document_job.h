@@ -24,9 +24,6 @@ namespace grass::editor {
 // What the grown field becomes once the job is done.
 enum class DocumentAction { New, Open, NewFromMesh, ImportMesh, Recover };
 
-// "meadow" for projects/meadow/project.json, "rock.glb" for a mesh: what the user picked.
-std::string shownFileName(const std::filesystem::path& file);
-
 struct GrownDocument {
     GrownField field;
     std::string note;  // Import mesh: what was copied into the project

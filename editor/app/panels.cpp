@@ -42,8 +42,7 @@ void recentItems(ui::Ui& m, EditorState& s) {
     m.coloredLabel("Open Recent", m.style().textWeak);
     for (const fs::path& file : shown) {
         const fs::path folder = file.parent_path();
-        const std::string name = file.filename() == "project.json" ? folder.filename().string()
-                                                                   : file.filename().string();
+        const std::string name = shownFileName(file);
         // The label is the item's id too: the full path keeps two "meadow"s apart.
         if (ui::menuItem(m, "   " + name + "##" + file.string(), folder.parent_path().string()))
             askLeave(s, LeaveAction::Open, file.string());

@@ -35,6 +35,11 @@ std::vector<fs::path> RecentFiles::folders() const {
     return out;
 }
 
+std::string shownFileName(const fs::path& file) {
+    return file.filename() == "project.json" ? file.parent_path().filename().string()
+                                             : file.filename().string();
+}
+
 fs::path recentFilesPath() {
     if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config == '/')
         return fs::path(config) / "grass" / "recent.json";

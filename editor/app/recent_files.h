@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "util/result.h"
@@ -23,6 +24,10 @@ struct RecentFiles {
     // The folders of the projects, each once, for the browser's places.
     std::vector<std::filesystem::path> folders() const;
 };
+
+// How a project or mesh file the user picked is named to them: "meadow" for
+// projects/meadow/project.json, "rock.glb" for a mesh (Open Recent, the loading box).
+std::string shownFileName(const std::filesystem::path& file);
 
 // Where the list lives; empty when neither XDG_CONFIG_HOME nor HOME is set.
 std::filesystem::path recentFilesPath();

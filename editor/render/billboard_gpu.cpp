@@ -89,6 +89,10 @@ Result<BillboardField> BillboardField::create(const std::vector<core::GrassObjec
         {4, offsetof(core::StarInstance, across90)},
     };
     field.mVertexArray.setAttributes(attributes);
+    field.mVertexArray.setInstanceDivisor(1);
+    field.mIndices =
+        gl::Buffer::fromVector(core::starQuadIndices(1), field.mLabel + " star indices", 0);
+    field.mVertexArray.setElementBuffer(field.mIndices);
     field.setObjects(objects);
     return field;
 }
@@ -101,13 +105,10 @@ void BillboardField::setObjects(const std::vector<core::GrassObject>& objects) {
     for (const core::GrassObject& object : objects)
         mTallestObjectM = std::max(mTallestObjectM, object.height);
     mStars = gl::Buffer::fromVector(stars.stars, mLabel + " stars", 0);
-    mIndices = gl::Buffer::fromVector(core::starQuadIndices(1), mLabel + " star indices", 0);
     mDrawCommands =
         gl::Buffer::fromVector(std::vector<DrawCommand>(std::max<std::size_t>(mClusters.size(), 1)),
                                mLabel + " draw commands");
     mVertexArray.setVertexBuffer(mStars, sizeof(core::StarInstance));
-    mVertexArray.setInstanceDivisor(1);
-    mVertexArray.setElementBuffer(mIndices);
 }
 
 // Clusters that may hold a visible object, back to front (ties by index, so the order is

@@ -40,7 +40,6 @@ TEST(DocumentJob, GrowsOnAWorkerAndHandsBackTheField) {
                                 return editor::GrownDocument{std::move(*field), "note"};
                             });
     // The work waits for the test: the caller's thread is free, and told what the job does.
-    std::this_thread::sleep_for(20ms);
     EXPECT_FALSE(job.done());
     EXPECT_EQ(job.stage(), "reading project.json");
     EXPECT_EQ(job.action(), editor::DocumentAction::Open);
