@@ -15,13 +15,13 @@ case "$mode" in
 esac
 
 # Debian 12 packages: toolchain, the libraries of the design card, Mesa for headless GL, Xvfb
-# and xdotool for the editor's window tests (real X input), gnuplot for the plots of
-# `grass tradeoff`, python3 for test scripts (fuzz seeds, reading a painted PNG back).
+# and xdotool for the editor's window tests (real X input; libx11-dev for their close button),
+# gnuplot for the plots of `grass tradeoff`, python3 for test scripts (fuzz seeds, reading a painted PNG back).
 packages=(g++ cmake ninja-build pkg-config ccache
   libglfw3-dev libglm-dev libtinygltf-dev libopenmesh-dev libopenimageio-dev libepoxy-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libstb-dev fonts-dejavu-core xvfb xauth xdotool gnuplot-nox libdraco-dev libmeshoptimizer-dev
-  libhwy-dev python3)
+  libhwy-dev libx11-dev python3)
 # The export tests validate glTF files with the Khronos glTF-Validator, an npm package. Node
 # from elsewhere (nodesource's nodejs bundles npm) will do, so look for the commands first.
 if [ "$mode" = test ] && ! { command -v node && command -v npm; } >/dev/null; then

@@ -1,5 +1,6 @@
 #include "app/document_job.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "app/recent_files.h"
@@ -14,9 +15,13 @@ DocumentJob::DocumentJob(DocumentAction action, std::filesystem::path file, std:
       mStart(std::chrono::steady_clock::now()),
       mStage(std::move(stage)) {
     mWorker = std::thread([this, work = std::move(work), delay] {
-        if (delay.count() > 0)
-            std::this_thread::sleep_for(delay);
-        auto result = work(*this);
+        // The delay in short sleeps, so that a cancel (or the window closed) ends it.
+        const auto until = std::chrono::steady_clock::now() + delay;
+        while (!cancelled() && std::chrono::steady_clock::now() < until)
+            std::this_thread::sleep_for(std::min<std::chrono::steady_clock::duration>(
+                std::chrono::milliseconds(10), until - std::chrono::steady_clock::now()));
+        auto result =
+            cancelled() ? Result<GrownDocument>(makeError(title(), "cancelled")) : work(*this);
         {
             std::lock_guard lock(mMutex);
             mResult.emplace(std::move(result));

@@ -51,6 +51,10 @@ public:
     double elapsedS() const;
     // For the work: says what it does next.
     void setStage(std::string stage);
+    // Asks the work to stop: it looks between its stages (cancelled()), and the delay ends at
+    // once. A cancelled job's result is an error nobody shows.
+    void cancel() { mCancelled.store(true); }
+    bool cancelled() const { return mCancelled.load(); }
     // Once done(): the grown document or why it could not be grown; taken once.
     Result<GrownDocument> take();
 
@@ -59,6 +63,7 @@ private:
     std::filesystem::path mFile;
     std::chrono::steady_clock::time_point mStart;
     std::atomic<bool> mDone{false};
+    std::atomic<bool> mCancelled{false};
     mutable std::mutex mMutex;
     std::string mStage;
     std::optional<Result<GrownDocument>> mResult;

@@ -34,6 +34,56 @@ constexpr int LOADING_FRAME_MS = 200;
 
 }  // namespace
 
+// What a document job's worker does: `read` makes the project (and may read its mesh), then its
+// field grows; a cancel between the two skips the growing.
+DocumentJob::Work Editor::documentWork(ReadDocument read, bool withPhysics, DocumentAction action,
+                                       std::string name) {
+    return [read = std::move(read), withPhysics, action,
+            name = std::move(name)](DocumentJob& job) -> Result<GrownDocument> {
+        OptionalMesh meshRead;
+        GrownDocument grown;
+        auto loaded = read(meshRead, grown.note);
+        if (!loaded)
+            return loaded.error();
+        if (job.cancelled())
+            return makeError(job.title(), "cancelled");
+        job.setStage(action == DocumentAction::ImportMesh ? "growing the grass on " + name
+                                                          : "growing " + loaded->project.name);
+        auto field = growField(std::move(*loaded), withPhysics, meshRead ? &*meshRead : nullptr);
+        if (!field)
+            return field.error();
+        grown.field = std::move(*field);
+        return grown;
+    };
+}
+
+bool Editor::waitForFirstField(DocumentJob& job, bool showProgress) {
+    if (mReplay) {  // screenshots and scripts: the same pictures however long it takes
+        job.wait();
+        return true;
+    }
+    while (!job.done()) {
+        if (mUi && showProgress) {
+            char elapsed[32];
+            std::snprintf(elapsed, sizeof elapsed, " … %.0f s", job.elapsedS());
+            mUi->showNotice(*mWindow,
+                            {job.title(), job.stage() + elapsed, "(closing the window stops it)"});
+        }
+        const Clock::time_point until = Clock::now() + std::chrono::milliseconds(LOADING_FRAME_MS);
+        while (Clock::now() < until && !job.done()) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            mWindow->pollInput();  // what the user did meanwhile is not the first frame's
+        }
+        if (mWindow->shouldClose()) {
+            // Gone at once; the worker stops at its next stage and is waited for.
+            mWindow->hide();
+            job.cancel();
+            return false;
+        }
+    }
+    return true;
+}
+
 Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     std::unique_ptr<Editor> editor(new Editor());
     Editor& e = *editor;
@@ -75,27 +125,39 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
             return created.error();
         e.mUi = std::move(*created);
     }
-    const auto notice = [&](const std::string& text) {
-        if (e.mUi && interactive)
-            e.mUi->showNotice(*e.mWindow, text);
-    };
-    core::GltfImport meshRead;  // the mesh a new project was sized on, grown on below
-    if (fromMesh) {
-        notice("reading " + start.filename().string() + " …");
-        loaded = newProjectFromMesh(start, NEW_MESH_PROJECT_BLADES, &meshRead);
-        if (!loaded)
-            return loaded.error();
+    // The field grows on a worker, as File › Open's does, while the window says what it is
+    // doing and can be closed (waitForFirstField).
+    const bool withPhysics = !e.mSettings.noPhysics;
+    ReadDocument read;
+    if (fromMesh)
+        read = [start](OptionalMesh& meshRead, std::string&) {
+            return newProjectFromMesh(start, NEW_MESH_PROJECT_BLADES, &meshRead.emplace());
+        };
+    else
+        read = [project = std::move(*loaded)](OptionalMesh&, std::string&) {
+            return Result<core::LoadedProject>(project);
+        };
+    const DocumentAction action = fromMesh ? DocumentAction::NewFromMesh : DocumentAction::Open;
+    DocumentJob job(action, start, fromMesh ? "reading " + shownFileName(start) : "growing " + name,
+                    documentWork(std::move(read), withPhysics, action, shownFileName(start)),
+                    std::chrono::milliseconds(e.mSettings.loadDelayMs));
+    if (!e.waitForFirstField(job, interactive)) {
+        std::fprintf(stderr, "grass-editor: window closed while %s (%s, %.1f s): nothing opened\n",
+                     job.stage().c_str(), job.title().c_str(), job.elapsedS());
+        return std::unique_ptr<Editor>();
     }
+    auto grown = job.take();
+    if (!grown)
+        return grown.error();
+    std::fprintf(stderr, "grass-editor: %s: %.1f s\n", job.title().c_str(), job.elapsedS());
     EditorState& state = e.mState;
-    state.doc.loaded = std::move(*loaded);
+    state.doc.loaded = grown->field.loaded;
     const core::Project& project = state.doc.loaded.project;
     auto camera = render::projectCamera(project, "");
     if (!camera)
         return camera.error();
     e.mCamera = *camera;
-    notice("growing " + project.name + " …");
-    auto built = buildLive(state.doc.loaded, !e.mSettings.noPhysics, {}, e.mSettings.physicsDevice,
-                           fromMesh ? &meshRead : nullptr);
+    auto built = bringUpLive(std::move(grown->field), {}, e.mSettings.physicsDevice);
     if (!built)
         return built.error();
     e.mLive = std::move(*built);
@@ -321,23 +383,7 @@ void Editor::startDocumentJob(DocumentAction action, std::filesystem::path file,
     std::string stage = action == DocumentAction::New       ? "starting a new project"
                         : action == DocumentAction::Recover ? "recovering the autosave"
                                                             : "reading " + name;
-    const bool withPhysics = !mSettings.noPhysics;
-    const bool importing = action == DocumentAction::ImportMesh;
-    auto work = [read = std::move(read), withPhysics, importing,
-                 name](DocumentJob& job) -> Result<GrownDocument> {
-        OptionalMesh meshRead;
-        GrownDocument grown;
-        auto loaded = read(meshRead, grown.note);
-        if (!loaded)
-            return loaded.error();
-        job.setStage(importing ? "growing the grass on " + name
-                               : "growing " + loaded->project.name);
-        auto field = growField(std::move(*loaded), withPhysics, meshRead ? &*meshRead : nullptr);
-        if (!field)
-            return field.error();
-        grown.field = std::move(*field);
-        return grown;
-    };
+    DocumentJob::Work work = documentWork(std::move(read), !mSettings.noPhysics, action, name);
     mState.documentJob =
         std::make_unique<DocumentJob>(action, std::move(file), std::move(stage), std::move(work),
                                       std::chrono::milliseconds(mSettings.loadDelayMs));

@@ -51,8 +51,8 @@ struct EditorSettings {
     // delay added to every frame to stand for a slow machine.
     bool wallClock = false;
     int frameDelayMs = 0;
-    // Tests of a slow load: a delay before every New, Open, import or recovery grows its field,
-    // standing for a large file (document_job.h).
+    // Tests of a slow load: a delay before every New, Open, import or recovery grows its field
+    // (the first project's too), standing for a large file (document_job.h).
     int loadDelayMs = 0;
     // The viewport's adaptive quality (core/quality/interaction_quality.h).
     bool adaptive = true;
@@ -66,7 +66,8 @@ struct PixelRect {
 
 class Editor {
 public:
-    // Opens the window on the project, grows its field and, unless --no-ui, builds the UI.
+    // Opens the window on the project, grows its field and, unless --no-ui, builds the UI. No
+    // editor (and no error) when the user closed the window before the field was grown.
     static Result<std::unique_ptr<Editor>> open(EditorSettings settings);
     // Runs one frame; false once the session is over (quit, the script's end, the screenshot
     // saved). An error (a script's screenshot that cannot be written) ends it too.
@@ -97,6 +98,13 @@ private:
     using ReadDocument =
         std::function<Result<core::LoadedProject>(OptionalMesh& meshRead, std::string& note)>;
     void startDocumentJob(DocumentAction action, std::filesystem::path file, ReadDocument read);
+    // The worker's part of a document job: `read`, then the field grown (`name`: the file, for
+    // the stage shown).
+    static DocumentJob::Work documentWork(ReadDocument read, bool withPhysics,
+                                          DocumentAction action, std::string name);
+    // The first field, grown on a worker before the first frame while the window says what it
+    // does (`showProgress`) and answers its close button: false when the user closed it.
+    bool waitForFirstField(DocumentJob& job, bool showProgress);
     // Once the job is done: its field replaces the document, or the message says why not.
     void finishDocumentJob();
     // What the finished job does with its field besides (editor_imports.cpp: the imports).

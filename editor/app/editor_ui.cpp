@@ -129,7 +129,7 @@ void EditorUi::draw(int framebufferWidth, int framebufferHeight) {
     mRenderer->draw(mMeshes, *mFonts, {framebufferWidth, framebufferHeight}, mPixelsPerPoint);
 }
 
-void EditorUi::showNotice(Window& window, std::string_view text) {
+void EditorUi::showNotice(Window& window, std::initializer_list<std::string_view> lines) {
     int fbW = 0, fbH = 0;
     window.framebufferSize(&fbW, &fbH);
     if (fbW <= 0 || fbH <= 0)
@@ -141,8 +141,13 @@ void EditorUi::showNotice(Window& window, std::string_view text) {
     in.hasPointer = false;
     const ui::Rect screen = in.screenRect;
     beginFrame(std::move(in));
-    mContext->painter(ui::Layer::Foreground, screen)
-        .text(screen.centre(), text, 16.0f, ui::Color32::rgb(220, 220, 220), ui::Vec2(0.5f));
+    ui::Painter painter = mContext->painter(ui::Layer::Foreground, screen);
+    constexpr float LINE = 24.0f;  // points between the lines' centres
+    ui::Vec2 at = screen.centre() - ui::Vec2(0.0f, 0.5f * LINE * float(lines.size() - 1));
+    for (const std::string_view line : lines) {
+        painter.text(at, line, 16.0f, ui::Color32::rgb(220, 220, 220), ui::Vec2(0.5f));
+        at.y += LINE;
+    }
     endFrame(window);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDisable(GL_SCISSOR_TEST);

@@ -5,6 +5,7 @@
 // and drawing over the scene. Panels themselves live in panels.h.
 #pragma once
 
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <string>
@@ -47,10 +48,10 @@ public:
     const ui::Output& endFrame(Window& window);
     // Draws the last frame's meshes over whatever the bound (default) framebuffer holds.
     void draw(int framebufferWidth, int framebufferHeight);
-    // One frame of the window with `text` in its middle and nothing else, shown at once: what
-    // the window says while the field grows, before the editor's first frame (a large mesh
-    // takes seconds, which a black window left the user to guess at).
-    void showNotice(Window& window, std::string_view text);
+    // One frame of the window with `lines` in its middle and nothing else, shown at once: what
+    // the window says while the first field grows, before the editor's first frame (a large
+    // mesh takes seconds, which a black window left the user to guess at).
+    void showNotice(Window& window, std::initializer_list<std::string_view> lines);
 
 private:
     EditorUi() = default;

@@ -59,8 +59,8 @@ int main(int argc, char** argv) {
                    "(for tests of time)",
                    &settings.frameDelayMs, 0, 10000);
     parser.integer("--load-delay-ms",
-                   "add N ms to every New, Open, import and recovery made "
-                   "in the window, as a large file would (for tests of time)",
+                   "add N ms to every New, Open, import and recovery, the project the "
+                   "window opens on included, as a large file would (for tests of time)",
                    &settings.loadDelayMs, 0, 60000);
     parser.flag("--no-adaptive",
                 "draw every frame at full quality (by default the viewport lowers MSAA, blade "
@@ -114,6 +114,8 @@ int main(int argc, char** argv) {
     auto editor = editor::Editor::open(std::move(settings));
     if (!editor)
         return fail(editor.error().str(), editor.error().path == "--script" ? 2 : 1);
+    if (!*editor)
+        return 0;  // the window was closed while the first field grew: nothing to save
     while (true) {
         const Result<bool> more = (*editor)->frame();
         if (!more)

@@ -62,8 +62,10 @@ void loadingWindow(ui::Context& ctx, ui::Rect viewport, EditorState& s) {
 void cancelDocumentJob(EditorState& s) {
     if (!s.documentJob)
         return;
-    // The worker cannot be stopped halfway: it finishes on its own and its field is dropped.
+    // The worker stops at its next stage (a read or a growth is not stopped halfway); what it
+    // made is dropped.
     s.transient.message = "cancelled: " + s.documentJob->title();
+    s.documentJob->cancel();
     s.cancelledJobs.push_back(std::move(s.documentJob));
 }
 

@@ -177,6 +177,10 @@ void Window::setClipboard(const std::string& text) {
     glfwSetClipboardString(mWindow, text.c_str());
 }
 
+void Window::hide() {
+    glfwHideWindow(mWindow);
+}
+
 void Window::gatherEvents() {
     glfwPollEvents();
 }

@@ -61,6 +61,8 @@ public:
     void requestClose();
     // Keeps the window open after the user asked to close it (the app asks to save first).
     void cancelClose();
+    // Takes the window off the screen (the process may still have work to finish).
+    void hide();
     void setTitle(const std::string& title);
     void swapBuffers();
     // Polls events; the returned input holds everything since the last call: this frame's

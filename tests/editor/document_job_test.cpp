@@ -101,5 +101,41 @@ TEST(DocumentJob, TheDelayHoldsTheWorkBack) {
     EXPECT_GE(began - start, 60ms);
 }
 
+// A cancel ends the delay at once and the work never starts; the work sees a cancel that comes
+// while it runs (the editor's stops between the read and the growing).
+TEST(DocumentJob, ACancelEndsTheDelayAndTheWorkSeesIt) {
+    std::atomic<bool> ran{false};
+    {
+        editor::DocumentJob job(
+            editor::DocumentAction::Open, "meadow", "reading meadow",
+            [&ran](editor::DocumentJob&) -> Result<editor::GrownDocument> {
+                ran = true;
+                return makeError("meadow", "stopped");
+            },
+            std::chrono::hours(1));
+        job.cancel();
+        job.wait();  // an hour without the cancel
+        auto result = job.take();
+        ASSERT_FALSE(result.ok());
+        EXPECT_NE(result.error().str().find("cancelled"), std::string::npos)
+            << result.error().str();
+    }
+    EXPECT_FALSE(ran.load());
+
+    std::atomic<bool> started{false};
+    editor::DocumentJob job(editor::DocumentAction::Open, "meadow", "reading meadow",
+                            [&started](editor::DocumentJob& self) -> Result<editor::GrownDocument> {
+                                started = true;
+                                while (!self.cancelled())
+                                    std::this_thread::sleep_for(1ms);
+                                return makeError("meadow", "saw the cancel");
+                            });
+    while (!started.load())
+        std::this_thread::sleep_for(1ms);
+    job.cancel();
+    job.wait();
+    EXPECT_EQ(job.take().error().message, "saw the cancel");
+}
+
 }  // namespace
 }  // namespace grass::test
