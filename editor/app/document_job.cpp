@@ -52,6 +52,8 @@ std::string DocumentJob::title() const {
             return "Importing " + name;
         case DocumentAction::Recover:
             return "Recovering the autosave";
+        case DocumentAction::Regrow:
+            return "Growing the field again";
     }
     return {};
 }

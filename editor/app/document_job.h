@@ -22,7 +22,8 @@
 namespace grass::editor {
 
 // What the grown field becomes once the job is done.
-enum class DocumentAction { New, Open, NewFromMesh, ImportMesh, Recover };
+// Regrow: the open project's field grown again after an edit of its layers (Editor::startRegrow).
+enum class DocumentAction { New, Open, NewFromMesh, ImportMesh, Recover, Regrow };
 
 struct GrownDocument {
     GrownField field;

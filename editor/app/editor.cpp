@@ -202,6 +202,15 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     return editor;
 }
 
+Editor::~Editor() {
+    if (mState.regrowJob) {
+        if (mWindow)
+            mWindow->hide();  // the session is over: gone from the screen while the worker ends
+        mState.regrowJob->cancel();
+        mState.regrowJob.reset();  // waits for the worker, before mLive goes
+    }
+}
+
 Result<bool> Editor::frame() {
     if (mWindow->shouldClose() && closeRequested())
         return false;
@@ -310,8 +319,11 @@ bool Editor::applyRequests() {
         return true;
     }
     finishDocumentJob();
-    // An export reads the scene on its worker, a load replaces it: requests wait for them.
-    if (state.newRequested && !state.busy()) {
+    finishRegrow();
+    // An export reads the scene on its worker, a load or a re-grow replaces it: requests wait
+    // for them.
+    const bool waiting = state.busy() || state.regrowing();
+    if (state.newRequested && !waiting) {
         state.newRequested = false;
         startDocumentJob(DocumentAction::New, {},
                          [folder = std::filesystem::current_path()](OptionalMesh&, std::string&) {
@@ -319,13 +331,13 @@ bool Editor::applyRequests() {
                                  core::LoadedProject{core::Project{}, folder, {}});
                          });
     }
-    if (!state.openRequested.empty() && !state.busy()) {
+    if (!state.openRequested.empty() && !waiting) {
         const std::filesystem::path file = std::exchange(state.openRequested, {});
         startDocumentJob(DocumentAction::Open, file,
                          [file](OptionalMesh&, std::string&) { return core::loadProject(file); });
     }
     applyImports();
-    if (state.recoverRequested && !state.busy()) {
+    if (state.recoverRequested && !waiting) {
         state.recoverRequested = false;
         startDocumentJob(
             DocumentAction::Recover, {},
@@ -335,31 +347,67 @@ bool Editor::applyRequests() {
         state.recoveryOffer.reset();
     }
     // Re-grow once the edit has ended, not on every frame of a drag.
-    if (state.rebuildPending && !state.view.toolDragActive && !state.busy() &&
+    if (state.rebuildPending && !state.view.toolDragActive && !state.busy() && !state.regrowing() &&
         (!mUi || mUi->context().activeId().value == 0)) {
         state.rebuildPending = false;
-        regrowLive();
+        startRegrow();
     }
+    if (state.exportWhenGrown && !state.regrowing() && !state.rebuildPending && !state.busy())
+        startExport(state);
     return false;
 }
 
-// Re-grows the live field from the open project (after an edit that needs it), keeping the maps
-// painted since the last save; on failure the old field stays.
-void Editor::regrowLive() {
+// Re-grows the live field from the open project (after an edit that needs it) on a worker: the
+// window goes on with the field before the edit meanwhile (a large mesh takes seconds).
+void Editor::startRegrow() {
     // An edit of the layers keeps the surface: the field grows on the mesh at hand, not on the
-    // file read again (seconds for a large mesh, each edit).
-    const Live* sameSurface =
-        mLive.scene && core::sameSurface(mLive.builtFrom, mState.doc.loaded) ? &mLive : nullptr;
-    auto next = buildLive(
-        mState.doc.loaded, !mSettings.noPhysics,
-        [&](core::Scene& grown) { return carryPaintedMaps(mState, *mLive.scene, grown); },
-        mSettings.physicsDevice, nullptr, sameSurface);
-    if (!next) {
-        mState.transient.message = "cannot grow the field: " + next.error().str();
+    // file read again (seconds for a large mesh, each edit). The worker copies that mesh; the
+    // live scene it reads stays until finishRegrow (nothing else replaces it meanwhile).
+    mRegrowOnSameSurface = mLive.scene && core::sameSurface(mLive.builtFrom, mState.doc.loaded);
+    auto work = [loaded = mState.doc.loaded, withPhysics = !mSettings.noPhysics,
+                 surface = mRegrowOnSameSurface ? mLive.scene.get()
+                                                : nullptr](DocumentJob&) -> Result<GrownDocument> {
+        auto field = growField(loaded, withPhysics, nullptr, surface);
+        if (!field)
+            return field.error();
+        GrownDocument grown;
+        grown.field = std::move(*field);
+        return grown;
+    };
+    mState.regrowJob = std::make_unique<DocumentJob>(
+        DocumentAction::Regrow, std::filesystem::path(), "growing " + mState.doc.project().name,
+        std::move(work), std::chrono::milliseconds(mSettings.loadDelayMs));
+    if (mReplay)  // scripts and screenshots: the edit's field in the next frame, whatever the speed
+        mState.regrowJob->wait();
+    finishRegrow();
+}
+
+// Once the worker is done: its field replaces the live one, with the maps painted meanwhile
+// carried over; on failure the old field stays. Not in the middle of a stroke.
+void Editor::finishRegrow() {
+    EditorState& state = mState;
+    if (!state.regrowJob || !state.regrowJob->done() || state.view.toolDragActive)
+        return;
+    const std::unique_ptr<DocumentJob> job = std::move(state.regrowJob);
+    auto grown = job->take();
+    if (grown) {
+        auto next = bringUpLive(
+            std::move(grown->field),
+            [&](core::Scene& field) { return carryPaintedMaps(state, *mLive.scene, field); },
+            mSettings.physicsDevice, mRegrowOnSameSurface ? &mLive : nullptr);
+        if (next) {
+            adoptLive(std::move(*next));
+            std::fprintf(stderr, "grass-editor: grew the field again: %zu blades, %.2f s\n",
+                         mLive.scene->totalBlades(), job->elapsedS());
+        } else {
+            grown = next.error();
+        }
+    }
+    if (!grown) {
+        state.transient.message = "cannot grow the field: " + grown.error().str();
         return;
     }
-    adoptLive(std::move(*next));
-    if (std::exchange(mState.view.frameSurfacePending, false))
+    if (std::exchange(state.view.frameSurfacePending, false))
         frameLiveSurface();
 }
 
@@ -436,6 +484,7 @@ void Editor::finishDocumentJob() {
             markRecoveredMaps(state);
             break;
         case DocumentAction::ImportMesh:
+        case DocumentAction::Regrow:  // not a document job (finishRegrow)
             break;
     }
 }

@@ -51,8 +51,8 @@ struct EditorSettings {
     // delay added to every frame to stand for a slow machine.
     bool wallClock = false;
     int frameDelayMs = 0;
-    // Tests of a slow load: a delay before every New, Open, import or recovery grows its field
-    // (the first project's too), standing for a large file (document_job.h).
+    // Tests of a slow load: a delay before every New, Open, import, recovery or re-grow grows
+    // its field (the first project's too), standing for a large file (document_job.h).
     int loadDelayMs = 0;
     // The viewport's adaptive quality (core/quality/interaction_quality.h).
     bool adaptive = true;
@@ -72,6 +72,8 @@ public:
     // Runs one frame; false once the session is over (quit, the script's end, the screenshot
     // saved). An error (a script's screenshot that cannot be written) ends it too.
     Result<bool> frame();
+    // A re-grow still running reads the live field's mesh: it is waited for before that goes.
+    ~Editor();
 
 private:
     Editor() = default;
@@ -84,7 +86,9 @@ private:
     void applyKeys(const InputState& input);
     // New, Open, Recover and re-grows; true when the user quit.
     bool applyRequests();
-    void regrowLive();
+    // The field grown again after an edit (DocumentAction::Regrow), and taken in once grown.
+    void startRegrow();
+    void finishRegrow();
     // The same project's field, grown again: it replaces the live one, the clock goes on.
     void adoptLive(Live next);
     // The view framed on the live surface (after a new mesh, unit or up axis).
@@ -137,6 +141,7 @@ private:
     std::unique_ptr<EditorUi> mUi;
     core::OrbitCamera mCamera;
     Live mLive;
+    bool mRegrowOnSameSurface = false;  // the running re-grow grows on mLive's mesh
     std::unique_ptr<gl::Framebuffer> mTarget;
     PixelRect mView;
     int mFrame = 0;

@@ -14,8 +14,9 @@ namespace fs = std::filesystem;
 
 void Editor::applyImports() {
     EditorState& s = mState;
-    // An export reads the scene on its worker, a load replaces it: imports wait for them.
-    if (s.busy())
+    // An export reads the scene on its worker, a load or a re-grow replaces it: imports wait
+    // for them.
+    if (s.busy() || s.regrowing())
         return;
     if (!s.newFromMeshRequested.empty()) {
         const fs::path file = std::exchange(s.newFromMeshRequested, {});

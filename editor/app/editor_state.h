@@ -187,6 +187,14 @@ struct EditorState {
     std::vector<std::unique_ptr<DocumentJob>> cancelledJobs;
     bool loading() const { return documentJob != nullptr; }
     bool busy() const { return (exportJob && !exportJob->done()) || loading(); }
+    // The field grown again after an edit of the layers, on a worker (seconds for a large mesh):
+    // the window goes on with the field before the edit, and painting and undo go on too (the
+    // maps painted meanwhile are carried over when the new field comes in). What would replace
+    // or read the live field elsewhere waits for it (New, Open, the imports, an export).
+    std::unique_ptr<DocumentJob> regrowJob;
+    bool regrowing() const { return regrowJob != nullptr; }
+    // File › Export… asked for while the field grows again: it starts once the new field is in.
+    bool exportWhenGrown = false;
     // An autosave left by a session that did not close cleanly, offered back at start; the
     // Editor adopts it when the user picks Recover.
     std::optional<core::LoadedProject> recoveryOffer;

@@ -59,8 +59,9 @@ int main(int argc, char** argv) {
                    "(for tests of time)",
                    &settings.frameDelayMs, 0, 10000);
     parser.integer("--load-delay-ms",
-                   "add N ms to every New, Open, import and recovery, the project the "
-                   "window opens on included, as a large file would (for tests of time)",
+                   "add N ms to every New, Open, import, recovery and re-grow after an edit "
+                   "of the layers, the project the window opens on included, as a large file "
+                   "would (for tests of time)",
                    &settings.loadDelayMs, 0, 60000);
     parser.flag("--no-adaptive",
                 "draw every frame at full quality (by default the viewport lowers MSAA, blade "

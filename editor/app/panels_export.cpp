@@ -12,6 +12,13 @@ namespace grass::editor {
 void startExport(EditorState& s) {
     if (!s.scene || s.busy())
         return;
+    // An export of the field before the edit would not be the project saved beside it.
+    if (s.regrowing() || s.rebuildPending) {
+        s.exportWhenGrown = true;
+        s.transient.message = "the export starts once the field has grown";
+        return;
+    }
+    s.exportWhenGrown = false;
     core::ExportOptions options;
     options.format = core::ExportFormat(s.transient.exportFormat);
     options.lod = options.format != core::ExportFormat::Raw ? s.transient.exportLod : 0;

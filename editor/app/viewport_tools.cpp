@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -385,13 +386,22 @@ void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const Edito
     ui::Painter painter = ctx.painter(ui::Layer::Background, view);
     // Adaptive quality's indicator, in a corner away from the work: the picture is reduced
     // while the user moves or plays (the status bar says by how much).
-    if (!s.transient.status.reduced.empty()) {
-        const ui::Vec2 at = view.min + ui::Vec2(8.0f, 6.0f);
+    // And a field grown again after an edit: what is shown is the field before it meanwhile.
+    ui::Vec2 at = view.min + ui::Vec2(8.0f, 6.0f);
+    const auto badge = [&](const std::string& text) {
         const std::size_t backdrop = painter.addPlaceholder();
-        const ui::Rect label = painter.text(at + ui::Vec2(6.0f, 3.0f), "reduced while moving", 12.0f,
-                                            ui::Color32::rgb(200, 225, 255));
+        const ui::Rect label =
+            painter.text(at + ui::Vec2(6.0f, 3.0f), text, 12.0f, ui::Color32::rgb(200, 225, 255));
         painter.set(backdrop, ui::RectShape{{at, label.max + ui::Vec2(6.0f, 3.0f)}, 3.0f,
                                             ui::Color32{20, 40, 70, 170}, {}});
+        at.y = label.max.y + 8.0f;
+    };
+    if (!s.transient.status.reduced.empty())
+        badge("reduced while moving");
+    if (s.regrowJob) {
+        char elapsed[32];
+        std::snprintf(elapsed, sizeof elapsed, " … %.0f s", s.regrowJob->elapsedS());
+        badge("growing the field after the edit" + std::string(elapsed));
     }
     const auto toPoints = [&](glm::vec2 px) {
         return ui::Vec2(view.min.x + px.x / ppp, view.min.y + px.y / ppp);

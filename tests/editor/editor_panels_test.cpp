@@ -386,6 +386,26 @@ TEST(EditorPanels, UnsavedWorkIsAutosavedBeforeAnExport) {
     EXPECT_TRUE(fs::exists(folder.path() / "exported" / "grass.gltf"));
 }
 
+// An export asked for while the field grows again after an edit (or before that starts) waits
+// for the new field: the field before the edit is not the project saved beside the export. The
+// Editor starts it once the field is in (exportWhenGrown).
+TEST(EditorPanels, AnExportWaitsForTheFieldAfterAnEdit) {
+    const ScratchFolder folder("editor-export-waits");
+    EditorDriver editor(folder.path());
+    editor.state.transient.exportDir = "exported";
+    editor.state.rebuildPending = true;
+    editor::startExport(editor.state);
+    EXPECT_FALSE(editor.state.exportJob);
+    EXPECT_TRUE(editor.state.exportWhenGrown);
+    EXPECT_NE(editor.state.transient.message.find("once the field has grown"), std::string::npos)
+        << editor.state.transient.message;
+    editor.state.rebuildPending = false;
+    editor::startExport(editor.state);
+    ASSERT_TRUE(editor.state.exportJob);
+    EXPECT_FALSE(editor.state.exportWhenGrown);
+    editor.state.exportJob.reset();
+}
+
 // Issue 23: a collider on a keyed path stands where the path says; before, typing its position
 // marked the project unsaved and moved nothing. Now the row edits the path at the timeline's
 // time, so the object moves where the user typed.

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -149,6 +150,30 @@ TEST(EditorTime, AnOpenGrowsWhileTheWindowGoesOnAndCancelKeepsTheProject) {
         EXPECT_EQ(savedTechnique(dir / "project.json"), "billboards") << log;
         EXPECT_EQ(savedTechnique(dir / "other/project.json"), "blades") << log;
     }
+}
+
+// The first blade count the log reports with `pattern` (a regex with one number group), or -1.
+long bladesIn(const std::string& log, const std::string& pattern) {
+    std::smatch match;
+    return std::regex_search(log, match, std::regex(pattern)) ? std::stol(match[1]) : -1;
+}
+
+// An edit of the layers grows the field again on a worker (Editor::startRegrow): held back 1.5 s
+// here (--load-delay-ms, standing for a large mesh, where it takes seconds), the window goes on
+// drawing the field before the edit, then takes in the new one. The edit is the layer's
+// "duplicate" button: twice the blades. Before, the re-grow ran on the UI thread: the window
+// stood still for it.
+TEST(EditorTime, AnEditOfTheLayersGrowsTheFieldWhileTheWindowGoesOn) {
+    const auto dir = scratchDir("editor_regrow_async");
+    writeTinyProject(dir, "tiny", 900, 560);
+    const std::string log =
+        runEditor(dir, "wait 2\nclick 80 208\nphase growing\nwait-s 1.5\nphase after\nwait-s 1\n",
+                  "--no-physics --load-delay-ms 1500");
+    // 1.5 s of a 2-point field: tens of frames at llvmpipe's speed; one if the re-grow blocked.
+    EXPECT_GE(framesOfPhase(log, "growing"), 4) << log;
+    const long first = bladesIn(log, ", ([0-9]+) blades, geometry ");
+    EXPECT_GT(first, 0) << log;
+    EXPECT_EQ(bladesIn(log, "grew the field again: ([0-9]+) blades"), 2 * first) << log;
 }
 
 #ifdef GRASS_CLOSE_WINDOW_EXE
