@@ -55,8 +55,12 @@ float ramp(float start, float end, float d) {
 
 std::vector<GrassObject> placeGrassObjects(const SurfaceMesh& mesh,
                                            const StarBillboardParams& params, std::uint64_t seed) {
+    return placeGrassObjects(SurfaceSampler(mesh), params, seed);
+}
+
+std::vector<GrassObject> placeGrassObjects(const SurfaceSampler& sampler,
+                                           const StarBillboardParams& params, std::uint64_t seed) {
     std::vector<GrassObject> objects;
-    const SurfaceSampler sampler(mesh);
     const double density = static_cast<double>(params.density);
     if (sampler.empty() || !(density > 0.0) || !std::isfinite(density))
         return objects;

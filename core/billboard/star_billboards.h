@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "mesh/surface_mesh.h"
+#include "scatter/surface_sampler.h"
 
 namespace grass::core {
 
@@ -51,6 +52,9 @@ struct GrassObject {
 // placement order within a cluster). Deterministic for a given seed; empty for a mesh without
 // area or density ≤ 0.
 std::vector<GrassObject> placeGrassObjects(const SurfaceMesh& mesh,
+                                           const StarBillboardParams& params, std::uint64_t seed);
+// The same on a sampler of the mesh already made (Scene::sampler): the same objects.
+std::vector<GrassObject> placeGrassObjects(const SurfaceSampler& sampler,
                                            const StarBillboardParams& params, std::uint64_t seed);
 
 // One vertex of a star. Normal = up for every vertex (GPU Gems: normals parallel to the quads'

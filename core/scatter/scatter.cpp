@@ -6,6 +6,7 @@
 
 #include "scatter/poisson_disk.h"
 #include "scatter/surface_sampler.h"
+#include "util/assert.h"
 #include "util/rng.h"
 
 namespace grass::core {
@@ -70,11 +71,11 @@ void scatterUniform(const SurfaceSampler& sampler, const ScatterParams& params,
     result.uniformCount = result.blades.size();
 }
 
-void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params, std::uint64_t seed,
+void scatterClumps(const SurfaceSampler& sampler, const ScatterParams& params, std::uint64_t seed,
                    ScatterCandidates& result) {
-    const float spacing = params.clumpSpacing;
-    if (!(spacing > 0.0f) || !std::isfinite(spacing) || params.bladesPerClump <= 0)
+    if (!scatterNeedsNeighbourhoods(params))
         return;
+    const float spacing = params.clumpSpacing;
     const auto perClump = static_cast<std::size_t>(params.bladesPerClump);
     const std::size_t budget =
         MAX_SCATTER_BLADES - std::min(MAX_SCATTER_BLADES, result.blades.size());
@@ -100,7 +101,7 @@ void scatterClumps(SurfaceSampler& sampler, const ScatterParams& params, std::ui
         DARTS_PER_CAPACITY * std::min(capacity, static_cast<double>(maxCentres)) + 1.0);
     const PoissonDiskResult centres = poissonDiskSample(sampler, disk, centreRng);
 
-    sampler.buildNeighbourhoodIndex();
+    GRASS_ASSERT(sampler.hasNeighbourhoodIndex());
     result.blades.reserve(result.blades.size() + centres.points.size() * perClump);
     result.uvs.reserve(result.blades.capacity());
     result.thinning.reserve(result.blades.capacity());
@@ -151,10 +152,22 @@ bool keepsCandidate(const ScatterCandidates& candidates, std::size_t i, const Ma
     return centre.keep < atCentre && thinning.keep * atCentre < here;
 }
 
+bool scatterNeedsNeighbourhoods(const ScatterParams& params) {
+    return params.clumpSpacing > 0.0f && std::isfinite(params.clumpSpacing) &&
+           params.bladesPerClump > 0;
+}
+
 ScatterCandidates scatterCandidates(const SurfaceMesh& mesh, const ScatterParams& params,
                                     std::uint64_t seed) {
-    ScatterCandidates result;
     SurfaceSampler sampler(mesh);
+    if (scatterNeedsNeighbourhoods(params))
+        sampler.buildNeighbourhoodIndex();
+    return scatterCandidates(sampler, params, seed);
+}
+
+ScatterCandidates scatterCandidates(const SurfaceSampler& sampler, const ScatterParams& params,
+                                    std::uint64_t seed) {
+    ScatterCandidates result;
     if (sampler.empty())
         return result;
     scatterUniform(sampler, params, seed, result);

@@ -17,6 +17,7 @@
 #include "blade/blade.h"
 #include "maps/map_image.h"
 #include "mesh/surface_mesh.h"
+#include "scatter/surface_sampler.h"
 
 namespace grass::core {
 
@@ -88,6 +89,13 @@ inline constexpr std::size_t MAX_SCATTER_BLADES = 50'000'000;
 
 ScatterCandidates scatterCandidates(const SurfaceMesh& mesh, const ScatterParams& params,
                                     std::uint64_t seed);
+// The same on a sampler of the mesh already made (a scene keeps one for all its layers and
+// re-grows, Scene::sampler): the same candidates. Clumps need its neighbourhood index
+// (scatterNeedsNeighbourhoods): precondition sampler.hasNeighbourhoodIndex() then.
+ScatterCandidates scatterCandidates(const SurfaceSampler& sampler, const ScatterParams& params,
+                                    std::uint64_t seed);
+// Whether these parameters grow clumps, which sample around their centres.
+bool scatterNeedsNeighbourhoods(const ScatterParams& params);
 
 // The candidates the map keeps. densityMap may be null (density 1 everywhere).
 ScatterResult scatterBlades(const SurfaceMesh& mesh, const ScatterParams& params,

@@ -90,7 +90,8 @@ Result<Live> bringUpLive(GrownField grown, const std::function<Result<void>(core
     live.scene = std::move(grown.scene);
     live.tools = std::make_unique<SceneTools>(*live.scene, live.builtFrom.project.lighting,
                                               grownOn != nullptr ? grownOn->tools.get() : nullptr);
-    auto renderer = render::SceneRenderer::create(*live.scene);
+    auto renderer = render::SceneRenderer::create(
+        *live.scene, grownOn != nullptr ? grownOn->renderer.get() : nullptr);
     if (!renderer)
         return renderer.error();
     live.renderer = std::move(*renderer);

@@ -82,7 +82,8 @@ Result<GrownField> growField(core::LoadedProject loaded, bool withPhysics,
 
 // The grown field on the GPU (renderer, tools, physics): on the thread that owns the GL context.
 // `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).
-// `grownOn`: a live field of the same surface, whose picking BVH the tools share.
+// `grownOn`: a live field of the same surface, whose picking BVH the tools share and whose
+// surface mesh on the GPU the renderer shares.
 Result<Live> bringUpLive(GrownField grown,
                          const std::function<Result<void>(core::Scene&)>& prepare = {},
                          PhysicsDevice device = PhysicsDevice::Auto, const Live* grownOn = nullptr);

@@ -67,7 +67,8 @@ const gl::Program& SceneRenderer::bladeProgram(const BladeVariant& variant) {
                               [&] { return loadBladeProgram(variant); });
 }
 
-Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene) {
+Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene,
+                                                             const SceneRenderer* sameSurface) {
     std::unique_ptr<SceneRenderer> renderer(new SceneRenderer());
     renderer->mScene = &scene;
     renderer->mSoftwareGl = gl::isSoftwareRenderer();
@@ -91,7 +92,8 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
     renderer->mCull = std::make_unique<CullPass>(std::move(*cull));
     renderer->mFieldAo = meanFieldAo(scene);
     renderer->mOpaquePrograms[0][static_cast<int>(Opaque::Lit)] = std::move(*mesh);
-    renderer->mMesh = std::make_unique<MeshGpu>(scene.mesh);
+    renderer->mMesh =
+        sameSurface != nullptr ? sameSurface->mMesh : std::make_shared<const MeshGpu>(scene.mesh);
     if (const Rgba8Pixels& image = scene.look.baseTexture; !image.pixels.empty())
         renderer->mSurfaceTexture = uploadSurfaceTexture(image, scene.look);
     renderer->mProps.reserve(scene.props.size());

@@ -120,6 +120,36 @@ TEST_F(RegrowGlTest, UploadingRegrownPatchesDrawsWhatAFreshRendererDraws) {
 // Billboards too many to place (10 million asked for by the billboard density) for a field
 // drawn by blades: the scene keeps them unplaced, and a renderer switched to billboards draws
 // none and says why once, for the status bar (before, only on stderr).
+// The editor's re-grow after an edit of the layers makes a renderer for the new field on the same
+// surface (editor/app/live_scene.h): it shares the surface mesh already on the GPU instead of
+// uploading it again, and draws what a renderer of its own draws, also once the renderer it
+// shared with is gone.
+TEST_F(RegrowGlTest, ARendererOnTheSameSurfaceSharesItsMeshAndDrawsTheSame) {
+    core::LoadedProject loaded = planeFieldProject({1.6f, 4, 300.0f, 0.15f, 0.25f}, sourceDir());
+    auto first = core::buildScene(loaded);
+    ASSERT_TRUE(first.ok()) << first.error().str();
+    loaded.project.layers.front().scatter.density = 600.0f;
+    auto second = core::regrowOnSameSurface(loaded, *first);
+    ASSERT_TRUE(second.ok()) << second.error().str();
+
+    auto own = render::SceneRenderer::create(*second);
+    ASSERT_TRUE(own.ok()) << own.error().str();
+    const auto expected = draw(**own, core::GrassTechnique::Blades);
+    own->reset();
+    auto before = render::SceneRenderer::create(*first);
+    ASSERT_TRUE(before.ok()) << before.error().str();
+    const auto firstPicture = draw(**before, core::GrassTechnique::Blades);
+    auto shared = render::SceneRenderer::create(*second, before->get());
+    ASSERT_TRUE(shared.ok()) << shared.error().str();
+    EXPECT_EQ(&(*shared)->surfaceMesh(), &(*before)->surfaceMesh());
+    EXPECT_TRUE(draw(**shared, core::GrassTechnique::Blades) == expected);
+    before->reset();  // the field before the edit goes; its surface mesh stays for the new one
+    const auto after = draw(**shared, core::GrassTechnique::Blades);
+    EXPECT_TRUE(after == expected);
+    EXPECT_GT(compareImages(after, firstPicture, 0).differingShare, 0.01)
+        << "twice the density draws another picture";
+}
+
 TEST_F(RegrowGlTest, ARendererThatCannotPlaceBillboardsSaysWhyOnce) {
     core::LoadedProject loaded = planeFieldProject({100.0f, 4, 0.0f}, sourceDir());
     loaded.project.billboards.placement.density = 1000.0f;

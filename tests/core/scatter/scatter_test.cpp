@@ -55,6 +55,31 @@ MapImage halfBlackMap() {
     return map;
 }
 
+// A scene makes the sampler once for all its layers and re-grows (Scene::sampler): the
+// candidates from it are the mesh's, uniform and clumped, blade for blade.
+TEST(Scatter, ASamplerMadeOnceGivesTheMeshsCandidates) {
+    const SurfaceMesh mesh = sphere(1.5f, 24);
+    SurfaceSampler sampler(mesh);
+    sampler.buildNeighbourhoodIndex();
+    ScatterParams both = clumpsOnly(0.3f, 6, 0.1f);
+    both.density = 40.0f;
+    ASSERT_TRUE(scatterNeedsNeighbourhoods(both));
+    EXPECT_FALSE(scatterNeedsNeighbourhoods(uniformOnly(40.0f)));
+    for (const ScatterParams& params : {uniformOnly(40.0f), both}) {
+        const ScatterCandidates fromMesh = scatterCandidates(mesh, params, 11);
+        const ScatterCandidates fromSampler = scatterCandidates(sampler, params, 11);
+        ASSERT_GT(fromMesh.blades.size(), 100u);
+        ASSERT_EQ(fromSampler.blades.size(), fromMesh.blades.size());
+        EXPECT_EQ(fromSampler.clumps.size(), fromMesh.clumps.size());
+        EXPECT_EQ(fromSampler.uniformCount, fromMesh.uniformCount);
+        for (std::size_t i = 0; i < fromMesh.blades.size(); ++i) {
+            ASSERT_EQ(fromSampler.blades[i].v0Theta, fromMesh.blades[i].v0Theta) << i;
+            ASSERT_EQ(fromSampler.faces[i], fromMesh.faces[i]) << i;
+            ASSERT_EQ(fromSampler.thinning[i].keep, fromMesh.thinning[i].keep) << i;
+        }
+    }
+}
+
 // Without a map every candidate is kept: the count is exactly llround(density × area).
 TEST(Scatter, CountIsDensityTimesArea) {
     for (const std::uint64_t seed : {1u, 2u, 3u}) {
