@@ -220,7 +220,7 @@ static SurfaceSampler projectSampler(const SurfaceMesh& mesh, const Project& pro
 }
 
 static Result<BillboardLayer> placedBillboardsWith(const Scene& scene,
-                                                   const SurfaceSampler* sampler);
+                                                   const SurfaceSampler* sampler, bool following);
 
 Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh mesh,
                                  std::vector<std::string> notes, glm::dvec3 groundOrigin) {
@@ -322,7 +322,7 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh
         recipe.rules.push_back(layer.rules);
     scene.billboards.unplaced = std::move(recipe);
     if (drawsBillboards(project.render.technique)) {
-        auto placed = placedBillboardsWith(scene, &samplerOfMesh());
+        auto placed = placedBillboardsWith(scene, &samplerOfMesh(), true);
         if (!placed)
             return placed.error();
         scene.billboards = std::move(*placed);
@@ -350,12 +350,17 @@ Result<Rgba8Pixels> billboardTexture(const LoadedProject& loaded) {
 }
 
 Result<BillboardLayer> placedBillboards(const Scene& scene) {
-    return placedBillboardsWith(scene, nullptr);
+    return placedBillboardsWith(scene, nullptr, true);
+}
+
+Result<BillboardLayer> placedBillboardsUnfollowed(const Scene& scene) {
+    return placedBillboardsWith(scene, nullptr, false);
 }
 
 // `sampler`: one of the scene's mesh already made (buildSceneFromMesh's), else one is made.
+// `following`: with the objects that follow the layers' maps.
 static Result<BillboardLayer> placedBillboardsWith(const Scene& scene,
-                                                   const SurfaceSampler* sampler) {
+                                                   const SurfaceSampler* sampler, bool following) {
     if (!scene.billboards.unplaced)
         return scene.billboards;
     const BillboardRecipe& recipe = *scene.billboards.unplaced;
@@ -370,7 +375,8 @@ static Result<BillboardLayer> placedBillboardsWith(const Scene& scene,
                             : placeGrassObjects(scene.mesh, recipe.placement, recipe.seed);
     billboards.follow = billboardFollow(billboards.placed, scene.layers, recipe.rules, scene.mesh,
                                         recipe.world, meanGrassColour(billboards.texture));
-    billboards.objects = followLayers(billboards.placed, billboards.follow, scene.layers);
+    if (following)
+        billboards.objects = followLayers(billboards.placed, billboards.follow, scene.layers);
     return billboards;
 }
 

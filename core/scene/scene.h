@@ -109,6 +109,11 @@ Result<Rgba8Pixels> billboardTexture(const LoadedProject& loaded);
 // placed already. More than MAX_SCENE_BILLBOARDS are refused, naming the project's
 // /billboards/density. A renderer asked to draw billboards a scene kept unplaced places them so.
 Result<BillboardLayer> placedBillboards(const Scene& scene);
+// The same without the objects that follow the layers' maps (BillboardLayer::objects, left
+// empty: followLayers makes them). It reads the mesh, the layers' candidates and the rules, none
+// of which painting changes, so a worker may run it while the maps are painted (the editor does:
+// the 1.66 million billboards of an 8.4-million-triangle ground take 1.5 s to place).
+Result<BillboardLayer> placedBillboardsUnfollowed(const Scene& scene);
 // The same, into the scene: buildScene does it at once when the project's technique draws them.
 Result<void> placeBillboards(Scene& scene);
 

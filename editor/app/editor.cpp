@@ -625,7 +625,11 @@ void Editor::render(int width, int height) {
     if (!mTarget || mTarget->width() != w || mTarget->height() != h || mTarget->samples() != samples)
         mTarget = std::make_unique<gl::Framebuffer>(w, h, samples);
     syncMapOverlay();
+    // In a session the window goes on while a worker places billboards (seconds on a large
+    // mesh); scripts and screenshots draw them in the frame that asks, as `grass render` does.
+    mLive.renderer->placeBillboardsInBackground(!mReplay);
     mLive.renderer->render(mCamera, w, h, *mTarget, mState.view.options);
+    mState.transient.status.placingBillboards = mLive.renderer->placingBillboards();
     for (std::string& note : mLive.renderer->takeNotes())
         mState.transient.message = std::move(note);  // e.g. billboards refused after T
     if (!mUi) {

@@ -107,6 +107,8 @@ struct FrameStatus {
     double physicsMs = 0.0;
     // What the viewport lowered this frame to keep its budget (empty: full quality).
     std::string reduced;
+    // The renderer's worker places the billboards the technique asked for (not drawn yet).
+    bool placingBillboards = false;
 };
 
 // What replaces the open project, and so asks first when it has unsaved changes.

@@ -398,6 +398,8 @@ void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const Edito
     };
     if (!s.transient.status.reduced.empty())
         badge("reduced while moving");
+    if (s.transient.status.placingBillboards)
+        badge("placing the billboards …");
     if (s.regrowJob) {
         char elapsed[32];
         std::snprintf(elapsed, sizeof elapsed, " … %.0f s", s.regrowJob->elapsedS());

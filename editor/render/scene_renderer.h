@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <future>
 #include <memory>
 #include <span>
 #include <string>
@@ -76,6 +77,12 @@ public:
     // What the user is to be told about the frames drawn so far, each once (the editor shows it
     // in the status bar): billboards it could not place for a technique that draws them.
     std::vector<std::string> takeNotes() { return std::exchange(mNotes, {}); }
+    // Billboards a scene kept unplaced are placed on a worker (the editor's window, which goes on
+    // drawing meanwhile: the frames draw none until they are in), not in the frame that first
+    // draws them (`grass render`, scripts and tests: the same picture whatever the speed).
+    void placeBillboardsInBackground(bool background) { mPlaceInBackground = background; }
+    // Whether such a worker is placing them now (the editor says so in the viewport).
+    bool placingBillboards() const { return mPlacing.valid(); }
     // Snow read-backs for tests and tools (wait for the GPU): the depth pass of the last frame
     // with snow (null before one), and the tip whiteness the cull wrote for layer `layer`.
     const SnowPass* snowPass() const { return mSnow.get(); }
@@ -143,6 +150,10 @@ private:
     // Billboards this renderer placed for a scene that kept them unplaced (billboardLayer()).
     std::unique_ptr<core::BillboardLayer> mPlacedHere;
     bool mBillboardsRefused = false;
+    bool mPlaceInBackground = false;
+    // The worker placing them (placeBillboardsInBackground); its future waits for it when the
+    // renderer goes, before the scene it reads does (editor/app/live_scene.h: Live).
+    std::future<Result<core::BillboardLayer>> mPlacing;
     std::vector<std::string> mNotes;  // takeNotes()
     const core::BillboardLayer* billboardLayer();
     bool mBillboardsStale = false;  // a repaint since they were last made to follow the layers

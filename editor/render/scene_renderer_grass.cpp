@@ -3,6 +3,7 @@
 #include "render/scene_renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <utility>
 
@@ -144,13 +145,29 @@ void SceneRenderer::drawBlades(const core::OrbitCamera& camera, const glm::mat4&
 }
 
 // The scene's billboards; placed here, once, when the scene kept them unplaced (its project's
-// technique drew none: core::placedBillboards). Null when they cannot be placed (too many: said
-// once on stderr).
+// technique drew none: core::placedBillboards), or on a worker (placeBillboardsInBackground).
+// Null when they cannot be placed (too many: said once on stderr), or not yet.
 const core::BillboardLayer* SceneRenderer::billboardLayer() {
     if (!mScene->billboards.unplaced)
         return &mScene->billboards;
     if (!mPlacedHere && !mBillboardsRefused) {
-        auto placed = core::placedBillboards(*mScene);
+        Result<core::BillboardLayer> placed = core::BillboardLayer{};
+        if (mPlaceInBackground || mPlacing.valid()) {
+            // The worker reads what painting does not change; the objects that follow the
+            // painted maps are made here, once it is done.
+            if (!mPlacing.valid())
+                mPlacing = std::async(std::launch::async, [scene = mScene] {
+                    return core::placedBillboardsUnfollowed(*scene);
+                });
+            if (mPlacing.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+                return nullptr;
+            placed = mPlacing.get();
+            if (placed)
+                placed->objects =
+                    core::followLayers(placed->placed, placed->follow, mScene->layers);
+        } else {
+            placed = core::placedBillboards(*mScene);
+        }
         if (placed) {
             mPlacedHere = std::make_unique<core::BillboardLayer>(std::move(*placed));
         } else {

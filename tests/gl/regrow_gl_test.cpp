@@ -5,6 +5,9 @@
 // item 3).
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include "gl/framebuffer.h"
 #include "gl_context_fixture.h"
 #include "maps/brush.h"
@@ -148,6 +151,40 @@ TEST_F(RegrowGlTest, ARendererOnTheSameSurfaceSharesItsMeshAndDrawsTheSame) {
     EXPECT_TRUE(after == expected);
     EXPECT_GT(compareImages(after, firstPicture, 0).differingShare, 0.01)
         << "twice the density draws another picture";
+}
+
+// In the editor's window the billboards T asks for are placed on a worker (seconds on a large
+// mesh) while the frames go on without them; once in, they draw what a renderer that placed them
+// in the frame draws (scripts, `grass render`). 200,000 billboards here: far longer to place
+// than a frame takes to ask.
+TEST_F(RegrowGlTest, BillboardsPlacedInTheBackgroundDrawWhatTheFrameThatAskedDraws) {
+    core::LoadedProject loaded = planeFieldProject({20.0f, 4, 2.0f}, sourceDir());
+    loaded.project.billboards.placement.density = 500.0f;
+    auto scene = core::buildScene(loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    ASSERT_TRUE(scene->billboards.unplaced) << "a field of blades leaves them unplaced";
+
+    auto inFrame = render::SceneRenderer::create(*scene);
+    ASSERT_TRUE(inFrame.ok()) << inFrame.error().str();
+    const auto expected = draw(**inFrame, core::GrassTechnique::Billboards);
+    ASSERT_GT((*inFrame)->lastTimings().billboardsDrawn, 0u);
+    EXPECT_FALSE((*inFrame)->placingBillboards());
+
+    auto background = render::SceneRenderer::create(*scene);
+    ASSERT_TRUE(background.ok()) << background.error().str();
+    (*background)->placeBillboardsInBackground(true);
+    const auto first = draw(**background, core::GrassTechnique::Billboards);
+    ASSERT_TRUE((*background)->placingBillboards());
+    EXPECT_EQ((*background)->lastTimings().billboardsDrawn, 0u) << "none until they are placed";
+    EXPECT_GT(compareImages(first, expected, 0).differingShare, 0.01);
+    for (int frame = 0; frame < 3000 && (*background)->placingBillboards(); ++frame) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        draw(**background, core::GrassTechnique::Billboards);
+    }
+    ASSERT_FALSE((*background)->placingBillboards()) << "still placing after 30 s";
+    EXPECT_TRUE(draw(**background, core::GrassTechnique::Billboards) == expected);
+    EXPECT_EQ((*background)->lastTimings().billboardsDrawn,
+              (*inFrame)->lastTimings().billboardsDrawn);
 }
 
 TEST_F(RegrowGlTest, ARendererThatCannotPlaceBillboardsSaysWhyOnce) {
