@@ -60,6 +60,21 @@ static bool physicsOnCpu(PhysicsDevice device, const core::ScenePhysics& physics
     return gl::isSoftwareRenderer() && !core::snowLoadsBlades(physics.snow);
 }
 
+Live& Live::operator=(Live&& next) noexcept {
+    if (this == &next)
+        return *this;
+    physics.reset();
+    renderer.reset();  // waits for its billboard worker
+    tools.reset();
+    scene.reset();
+    builtFrom = std::move(next.builtFrom);
+    scene = std::move(next.scene);
+    tools = std::move(next.tools);
+    renderer = std::move(next.renderer);
+    physics = std::move(next.physics);
+    return *this;
+}
+
 Result<GrownField> growField(core::LoadedProject loaded, bool withPhysics,
                              core::GltfImport* alreadyRead, const core::Scene* sameSurface) {
     auto scene = sameSurface != nullptr ? core::regrowOnSameSurface(loaded, *sameSurface)

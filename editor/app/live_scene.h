@@ -62,6 +62,13 @@ struct Live {
     std::unique_ptr<SceneTools> tools;  // picks and paints `scene`
     std::unique_ptr<render::SceneRenderer> renderer;
     std::optional<LivePhysics> physics;
+
+    Live() = default;
+    Live(Live&&) noexcept = default;
+    // Replacing a live field lets the old one go in the order its destruction would: a
+    // member-wise move would free the old scene before the old renderer, whose billboard worker
+    // may still be reading it (SceneRenderer::placeBillboardsInBackground).
+    Live& operator=(Live&& next) noexcept;
 };
 
 // What growing a project makes before the GPU sees it: nothing here touches GL, so a worker
