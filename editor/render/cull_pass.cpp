@@ -34,20 +34,33 @@ const gl::Program& CullPass::snowProgram() {
     });
 }
 
-// Occlusion depth: a depth-only pre-pass of the opaque scene into a single-sample depth
-// texture of the framebuffer's size. The main framebuffer's depth is multisampled (and a
-// renderbuffer), so it cannot be sampled directly; the pre-pass draws only the terrain, cheap
-// next to the blades, and full resolution keeps the depth under a blade's root within a pixel
-// of the root itself, so a small bias (cull.comp) keeps grass on visible terrain.
+// Occlusion depth: a single-sample depth texture of the framebuffer's size, which the frame's
+// depth is resolved into, or a depth-only pre-pass of the opaque scene draws. The main
+// framebuffer's depth is multisampled (and a renderbuffer), so it cannot be sampled directly;
+// full resolution keeps the depth under a blade's root within a pixel of the root itself, so a
+// small bias (cull.comp) keeps grass on visible terrain. A multisampled depth resolves to a
+// value between its samples' nearest and farthest (GL 4.5 §18.3.1), as the pre-pass's pixel
+// centre lies among them: at a silhouette either may hold the nearer surface.
 void CullPass::resizeDepth(int width, int height) {
     if (width != mDepth.width || height != mDepth.height)
         mDepth = gl::makeDepthTarget(width, height, "cull depth pre-pass");
 }
 
 void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
-                   const CullSettings& settings, const std::function<void()>& drawOpaque) {
+                   const CullSettings& settings, const std::function<void()>& drawOpaque,
+                   GLuint depthSource) {
     resizeDepth(std::max(view.width, 1), std::max(view.height, 1));
-    if (settings.occlusion) {
+    if (settings.occlusion && depthSource != 0) {
+        // Blits obey the scissor test; nothing else of the frame's state touches them.
+        const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+        glDisable(GL_SCISSOR_TEST);
+        glBlitNamedFramebuffer(depthSource, mDepth.framebuffer.id(), 0, 0, mDepth.width,
+                               mDepth.height, 0, 0, mDepth.width, mDepth.height,
+                               GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        if (scissor == GL_TRUE)
+            glEnable(GL_SCISSOR_TEST);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    } else if (settings.occlusion) {
         const float clearDepth = 1.0f;
         glClearNamedFramebufferfv(mDepth.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
         {

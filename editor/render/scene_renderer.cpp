@@ -121,6 +121,19 @@ static void beginFrame(gl::FramebufferRef framebuffer, int width, int height, gl
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
 }
 
+// `framebuffer` when it has a 32-bit float depth attachment (gl::Framebuffer's, which the cull's
+// occlusion texture can be resolved from: a blit needs equal depth formats), else 0.
+GLuint SceneRenderer::floatDepthOf(GLuint framebuffer) {
+    if (framebuffer == 0)
+        return 0;  // the window's: its depth format is the driver's
+    GLint type = GL_NONE, bits = 0;
+    glGetNamedFramebufferAttachmentParameteriv(framebuffer, GL_DEPTH_ATTACHMENT,
+                                               GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+    glGetNamedFramebufferAttachmentParameteriv(framebuffer, GL_DEPTH_ATTACHMENT,
+                                               GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+    return type == GL_FLOAT && bits == 32 ? framebuffer : 0;
+}
+
 void SceneRenderer::render(const core::OrbitCamera& camera, int width, int height,
                            gl::FramebufferRef framebuffer, const RenderOptions& options) {
     const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
@@ -139,6 +152,7 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
                                 &mStemSetTimer, &mSnowTimer})
         timer->setSynchronous(synchronous);
     runSnowPass(options, width, height);
+    mFrameDepth = floatDepthOf(framebuffer.id());
     drawOpaquePass(projection * camera.view(), options);
     drawGrass(camera, projection, width, height, options);
     glBindVertexArray(0);

@@ -145,6 +145,10 @@ private:
     bool mSnowLies = false;  // this frame: snow on with an amount > 0
     void renderSnowMap(const RenderOptions& options);
     void drawOccluders(const gl::Program& program, float timeS);
+    // The frame's framebuffer, when the cull can read the occlusion depth from it
+    // (floatDepthOf), else 0.
+    GLuint mFrameDepth = 0;
+    static GLuint floatDepthOf(GLuint framebuffer);
     void runSunShadowPass(const RenderOptions& options, LightingBlock& block);
     std::unique_ptr<BillboardField> mBillboards;
     // Billboards this renderer placed for a scene that kept them unplaced (billboardLayer()).

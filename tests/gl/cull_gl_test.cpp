@@ -10,6 +10,7 @@
 #include "gl_context_fixture.h"
 #include "render/offscreen_render.h"
 #include "scatter/patches.h"
+#include "support/image_compare.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"
 
@@ -160,6 +161,31 @@ TEST_F(CullTest, CulledImageStaysCloseWhileDrawingFewerBlades) {
     EXPECT_LT(mean, 1.5);
     EXPECT_LT(offShare, 0.04);
     EXPECT_GT(grassPixelShare(b), 0.2) << "the test view must show grass";
+}
+
+// Occlusion by the terrain itself, read from the frame's own depth after its opaque pass (4×
+// MSAA, resolved): the blades behind the hills go, and the picture stays what it is with no
+// occlusion test at all. Before, a pre-pass drew the terrain a second time for this depth.
+TEST_F(CullTest, HillsHideTheBladesBehindThemAndThePictureStays) {
+    core::LoadedProject loaded = planeFieldProject({12.0f, 48, 60.0f, 0.2f, 0.35f}, sourceDir());
+    loaded.project.mesh.procedural.shape = core::ProceduralShape::Hills;
+    loaded.project.mesh.procedural.hillHeight = 2.5f;
+    auto scene = core::buildScene(loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    // Low over one edge, looking across the hills.
+    const core::OrbitCamera camera =
+        core::OrbitCamera::lookAt({0.0f, 1.2f, 6.5f}, {0.0f, 0.0f, 0.0f}, glm::radians(50.0f));
+    const auto occluded = renderWith(*scene, camera, onlyTests(false, false, false, true), 256);
+    const auto all = renderWith(*scene, camera, onlyTests(false, false, false, false), 256);
+    const render::CullStats& stats = occluded.lastFrame.cull;
+    const double hiddenShare =
+        static_cast<double>(stats.culledOcclusion) / static_cast<double>(scene->totalBlades());
+    const ImageDifference difference = compareImages(occluded.image.pixels, all.image.pixels, 16);
+    std::printf("[ cull ] hills: %zu blades, %.3f hidden, mean abs diff %.4f, %.5f of pixels off\n",
+                scene->totalBlades(), hiddenShare, difference.meanAbs, difference.differingShare);
+    EXPECT_GT(hiddenShare, 0.05) << "the hills hide some of the field from this camera";
+    EXPECT_LT(difference.meanAbs, 0.05);
+    EXPECT_LT(difference.differingShare, 0.001);
 }
 
 TEST_F(CullTest, DistanceThinningFallsAsTheCameraMovesAway) {
