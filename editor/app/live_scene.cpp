@@ -130,16 +130,6 @@ Result<Live> bringUpLive(GrownField grown, const std::function<Result<void>(core
     return live;
 }
 
-Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
-                       const std::function<Result<void>(core::Scene&)>& prepare,
-                       PhysicsDevice device, core::GltfImport* alreadyRead, const Live* grownOn) {
-    auto grown = growField(loaded, withPhysics, alreadyRead,
-                           grownOn != nullptr ? grownOn->scene.get() : nullptr);
-    if (!grown)
-        return grown.error();
-    return bringUpLive(std::move(*grown), prepare, device, grownOn);
-}
-
 // Puts every layer's blades back at rest on the GPU and restarts the simulation from there
 // (keeping its step count).
 Result<void> resetPhysics(Live& live) {

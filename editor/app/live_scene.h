@@ -95,14 +95,6 @@ Result<Live> bringUpLive(GrownField grown,
                          const std::function<Result<void>(core::Scene&)>& prepare = {},
                          PhysicsDevice device = PhysicsDevice::Auto, const Live* grownOn = nullptr);
 
-// growField then bringUpLive, on this thread. `grownOn`: a live field of a project with the
-// same surface (core::sameSurface), whose mesh the field grows on and whose BVH it shares.
-Result<Live> buildLive(const core::LoadedProject& loaded, bool withPhysics,
-                       const std::function<Result<void>(core::Scene&)>& prepare = {},
-                       PhysicsDevice device = PhysicsDevice::Auto,
-                       core::GltfImport* alreadyRead = nullptr,
-                       const Live* grownOn = nullptr);
-
 // Puts every layer's blades back at rest on the GPU and restarts the simulation from there
 // (keeping its step count).
 Result<void> resetPhysics(Live& live);

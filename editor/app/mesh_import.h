@@ -30,7 +30,7 @@ Result<void> copyAssetFiles(const std::filesystem::path& from, const std::filesy
 
 // A new, unsaved project around `meshFile` (its folder is the mesh's, so the mesh needs no copy
 // until it is saved elsewhere). The error names the file and why it cannot be read. `read`, when
-// given, receives the mesh as read, for buildLive to grow on instead of reading the file again.
+// given, receives the mesh as read, for growField to grow on instead of reading the file again.
 Result<core::LoadedProject> newProjectFromMesh(const std::filesystem::path& meshFile,
                                                std::size_t targetBlades = NEW_MESH_PROJECT_BLADES,
                                                core::GltfImport* read = nullptr);

@@ -158,23 +158,18 @@ const core::BillboardLayer* SceneRenderer::billboardLayer() {
     if (!mScene->billboards.unplaced)
         return &mScene->billboards;
     if (!mPlacedHere && !mBillboardsRefused) {
-        Result<core::BillboardLayer> placed = core::BillboardLayer{};
-        if (mPlaceInBackground || mPlacing.valid()) {
-            // The worker reads what painting does not change; the objects that follow the
-            // painted maps are made here, once it is done.
-            if (!mPlacing.valid())
-                mPlacing = std::async(std::launch::async, [scene = mScene] {
-                    return core::placedBillboardsUnfollowed(*scene);
-                });
-            if (mPlacing.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
-                return nullptr;
-            placed = mPlacing.get();
-            if (placed)
-                placed->objects =
-                    core::followLayers(placed->placed, placed->follow, mScene->layers);
-        } else {
-            placed = core::placedBillboards(*mScene);
-        }
+        // The placing reads what painting does not change, so a worker may do it; the objects
+        // that follow the painted maps are made here, once it is done.
+        if (mPlaceInBackground && !mPlacing.valid())
+            mPlacing = std::async(std::launch::async, [scene = mScene] {
+                return core::placedBillboardsUnfollowed(*scene);
+            });
+        if (mPlacing.valid() &&
+            mPlacing.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+            return nullptr;
+        auto placed = mPlacing.valid() ? mPlacing.get() : core::placedBillboardsUnfollowed(*mScene);
+        if (placed)
+            placed->objects = core::followLayers(placed->placed, placed->follow, mScene->layers);
         if (placed) {
             mPlacedHere = std::make_unique<core::BillboardLayer>(std::move(*placed));
         } else {

@@ -24,7 +24,9 @@ std::vector<core::Blade> rendererBlades(const editor::Live& live, std::size_t la
 }
 
 editor::Live liveOn(const core::LoadedProject& loaded, editor::PhysicsDevice device) {
-    auto live = editor::buildLive(loaded, true, {}, device);
+    auto grown = editor::growField(loaded, true);
+    EXPECT_TRUE(grown.ok()) << grown.error().str();
+    auto live = editor::bringUpLive(std::move(*grown), {}, device);
     EXPECT_TRUE(live.ok()) << live.error().str();
     return std::move(*live);
 }
