@@ -579,7 +579,7 @@ bool sameSurface(const LoadedProject& built, const LoadedProject& next) {
 }
 
 Result<Scene> regrowOnSameSurface(const LoadedProject& loaded, const Scene& previous) {
-    auto scene = buildSceneFromMesh(loaded, previous.mesh, {}, previous.groundOrigin);
+    auto scene = buildSceneFromMesh(loaded, previous.mesh.shared(), {}, previous.groundOrigin);
     if (scene) {
         scene->look = previous.look;
         scene->paintUvs = previous.paintUvs;

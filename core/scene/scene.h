@@ -209,9 +209,10 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& project, MovableSurfaceMes
 bool sameSurface(const LoadedProject& built, const LoadedProject& next);
 
 // Grows `project` on the surface of `previous` (built from a project of the sameSurface): what
-// buildScene gives, without reading the mesh again. The mesh is copied, its material, paintable
-// UVs and ground origin carried over; the mesh's notes are not repeated. The editor re-grows so
-// after each edit of the layers: an 8-million-triangle ground took seconds to read each time.
+// buildScene gives, without reading the mesh again. The mesh is shared, not copied
+// (MovableSurfaceMesh::shared), its material, paintable UVs and ground origin carried over; the
+// mesh's notes are not repeated. The editor re-grows so after each edit of the layers: an
+// 8-million-triangle ground took seconds to read each time.
 Result<Scene> regrowOnSameSurface(const LoadedProject& project, const Scene& previous);
 
 // A default project growing grass on a loaded glTF file: density scaled so the field has about
