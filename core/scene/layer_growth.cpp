@@ -140,7 +140,7 @@ GrownBlade growCandidate(const LayerSource& source, std::size_t candidate) {
     return grown;
 }
 
-GrownField growField(const LayerSource& source, std::uint32_t patchSize) {
+GrownField growField(const LayerSource& source, std::uint32_t patchSize, std::stop_token stop) {
     GrownField field;
     field.patched = buildPatches(source.candidates.blades, patchSize);
     const std::size_t slots = field.patched.blades.size();
@@ -150,7 +150,7 @@ GrownField growField(const LayerSource& source, std::uint32_t patchSize) {
         field.stemSets[k] = nullStemSet(field.patched.blades[k * STEMS_PER_SET]);
     // Every candidate starts live (buildPatches copied them); growing corrects the count.
     field.liveBlades = source.candidates.blades.size();
-    for (std::uint32_t p = 0; p < field.patched.patches.size(); ++p)
+    for (std::uint32_t p = 0; p < field.patched.patches.size() && !stop.stop_requested(); ++p)
         growSlots(source, p, field);
     return field;
 }

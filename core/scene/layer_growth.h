@@ -11,8 +11,9 @@
 
 #include <array>
 #include <cstdint>
-#include <string>
 #include <span>
+#include <stop_token>
+#include <string>
 #include <vector>
 
 #include "blade/blade.h"
@@ -100,8 +101,9 @@ GrownBlade growCandidate(const LayerSource& source, std::size_t candidate);
 // fan out this far around the set's centre.
 inline constexpr float STEM_SET_SPREAD = 0.25f;
 
-// Patches all candidates and grows every slot.
-GrownField growField(const LayerSource& source, std::uint32_t patchSize);
+// Patches all candidates and grows every slot. `stop`: a request ends the growing between
+// patches (the field is then partly grown: its builder drops it).
+GrownField growField(const LayerSource& source, std::uint32_t patchSize, std::stop_token stop = {});
 
 // Re-grows the slots of `patches` (indices into field.patched.patches) from their candidates,
 // updating blades, wilt, stem sets and liveBlades. Returns how many slots gained or lost their

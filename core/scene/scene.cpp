@@ -220,10 +220,16 @@ static SurfaceSampler projectSampler(const SurfaceMesh& mesh, const Project& pro
 }
 
 static Result<BillboardLayer> placedBillboardsWith(const Scene& scene,
-                                                   const SurfaceSampler* sampler, bool following);
+                                                   const SurfaceSampler* sampler, bool following,
+                                                   std::stop_token stop);
+
+Error buildStopped(const LoadedProject& project) {
+    return Error{project.file.string(), "stopped before the field was grown"};
+}
 
 Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh mesh,
-                                 std::vector<std::string> notes, glm::dvec3 groundOrigin) {
+                                 std::vector<std::string> notes, glm::dvec3 groundOrigin,
+                                 std::stop_token stop) {
     Scene scene;
     scene.groundOrigin = groundOrigin;
     scene.mesh = std::move(mesh);
@@ -245,6 +251,8 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh
     };
     const RuleWorld ruleWorld = ruleWorldOf(project, scene.props);
     for (std::size_t i = 0; i < project.layers.size(); ++i) {
+        if (stop.stop_requested())
+            return buildStopped(loaded);
         const GrassLayer& layer = project.layers[i];
         LayerField field;
         field.name = layer.name;
@@ -278,7 +286,10 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh
                                   "growth.enabled = true");
         // Each layer its own stream, so adding a layer does not reshuffle the others.
         field.seed = Rng::splitMix(project.seed ^ (0x9E3779B97F4A7C15ULL * (i + 1)));
-        source.candidates = scatterCandidates(samplerOfMesh(), layer.scatter, field.seed);
+        const SurfaceSampler& layerSampler = samplerOfMesh();
+        if (stop.stop_requested())  // the sampler of a large mesh takes a while
+            return buildStopped(loaded);
+        source.candidates = scatterCandidates(layerSampler, layer.scatter, field.seed);
         // Its memory goes once nothing needs it (the growing's peak is later).
         if (i + 1 == project.layers.size() && !drawsBillboards(project.render.technique))
             sampler.reset();
@@ -287,13 +298,17 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh
         source.ruleFactors = placementFactors(scene.mesh, source.candidates, layer.rules, ruleWorld);
         source.bends = candidateBends(layer.bending, source.candidates, source.ruleFactors,
                                       ruleWorld);
+        if (stop.stop_requested())
+            return buildStopped(loaded);
         source.sway = layer.bending.sway;
         source.growthEnabled = layer.growth.enabled;
         source.curves = layer.growth.curves;
         source.stemLevels = layer.growth.levels;
         source.stemTipWidth = layer.growth.stemTipWidth;
         source.regrowRate = layer.regrowRate;
-        static_cast<GrownField&>(field) = growField(source, project.render.patchSize);
+        static_cast<GrownField&>(field) = growField(source, project.render.patchSize, stop);
+        if (stop.stop_requested())
+            return buildStopped(loaded);
         field.rootColor = layer.rootColor;
         field.tipColor = layer.tipColor;
         field.poorRootColor = layer.growth.poorRootColor;
@@ -322,7 +337,7 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh
         recipe.rules.push_back(layer.rules);
     scene.billboards.unplaced = std::move(recipe);
     if (drawsBillboards(project.render.technique)) {
-        auto placed = placedBillboardsWith(scene, &samplerOfMesh(), true);
+        auto placed = placedBillboardsWith(scene, &samplerOfMesh(), true, stop);
         if (!placed)
             return placed.error();
         scene.billboards = std::move(*placed);
@@ -350,17 +365,18 @@ Result<Rgba8Pixels> billboardTexture(const LoadedProject& loaded) {
 }
 
 Result<BillboardLayer> placedBillboards(const Scene& scene) {
-    return placedBillboardsWith(scene, nullptr, true);
+    return placedBillboardsWith(scene, nullptr, true, {});
 }
 
-Result<BillboardLayer> placedBillboardsUnfollowed(const Scene& scene) {
-    return placedBillboardsWith(scene, nullptr, false);
+Result<BillboardLayer> placedBillboardsUnfollowed(const Scene& scene, std::stop_token stop) {
+    return placedBillboardsWith(scene, nullptr, false, stop);
 }
 
 // `sampler`: one of the scene's mesh already made (buildSceneFromMesh's), else one is made.
 // `following`: with the objects that follow the layers' maps.
 static Result<BillboardLayer> placedBillboardsWith(const Scene& scene,
-                                                   const SurfaceSampler* sampler, bool following) {
+                                                   const SurfaceSampler* sampler, bool following,
+                                                   std::stop_token stop) {
     if (!scene.billboards.unplaced)
         return scene.billboards;
     const BillboardRecipe& recipe = *scene.billboards.unplaced;
@@ -370,9 +386,18 @@ static Result<BillboardLayer> placedBillboardsWith(const Scene& scene,
         return refused.error();
     BillboardLayer billboards;
     billboards.texture = scene.billboards.texture;
-    billboards.placed = sampler != nullptr
-                            ? placeGrassObjects(*sampler, recipe.placement, recipe.seed)
-                            : placeGrassObjects(scene.mesh, recipe.placement, recipe.seed);
+    std::optional<SurfaceSampler> ownSampler;
+    if (sampler == nullptr)
+        sampler = &ownSampler.emplace(*scene.mesh);
+    const auto stopped = [&] {
+        return Error{recipe.projectFile, "stopped before the billboards were placed"};
+    };
+    if (stop.stop_requested())
+        return stopped();
+    billboards.placed = placeGrassObjects(*sampler, recipe.placement, recipe.seed);
+    ownSampler.reset();
+    if (stop.stop_requested())
+        return stopped();
     billboards.follow = billboardFollow(billboards.placed, scene.layers, recipe.rules, scene.mesh,
                                         recipe.world, meanGrassColour(billboards.texture));
     if (following)
@@ -557,7 +582,8 @@ glm::dvec3 groundOriginOf(const LoadedProject& loaded) {
     return origin;
 }
 
-Result<Scene> buildScene(const LoadedProject& loaded, GltfImport* alreadyRead) {
+Result<Scene> buildScene(const LoadedProject& loaded, GltfImport* alreadyRead,
+                         std::stop_token stop) {
     std::vector<std::string> notes;
     SurfaceLook look;
     PaintUvs paintUvs;
@@ -565,7 +591,9 @@ Result<Scene> buildScene(const LoadedProject& loaded, GltfImport* alreadyRead) {
     auto mesh = loadProjectMesh(loaded, &notes, &look, &paintUvs, &groundOrigin, alreadyRead);
     if (!mesh)
         return mesh.error();
-    auto scene = buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes), groundOrigin);
+    if (stop.stop_requested())
+        return buildStopped(loaded);
+    auto scene = buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes), groundOrigin, stop);
     if (scene) {
         scene->look = std::move(look);
         scene->paintUvs = std::move(paintUvs);
@@ -578,8 +606,10 @@ bool sameSurface(const LoadedProject& built, const LoadedProject& next) {
            coarsestMapSide(built.project) == coarsestMapSide(next.project);
 }
 
-Result<Scene> regrowOnSameSurface(const LoadedProject& loaded, const Scene& previous) {
-    auto scene = buildSceneFromMesh(loaded, previous.mesh.shared(), {}, previous.groundOrigin);
+Result<Scene> regrowOnSameSurface(const LoadedProject& loaded, const Scene& previous,
+                                  std::stop_token stop) {
+    auto scene =
+        buildSceneFromMesh(loaded, previous.mesh.shared(), {}, previous.groundOrigin, stop);
     if (scene) {
         scene->look = previous.look;
         scene->paintUvs = previous.paintUvs;

@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -113,7 +114,9 @@ Result<BillboardLayer> placedBillboards(const Scene& scene);
 // empty: followLayers makes them). It reads the mesh, the layers' candidates and the rules, none
 // of which painting changes, so a worker may run it while the maps are painted (the editor does:
 // the 1.66 million billboards of an 8.4-million-triangle ground take 1.5 s to place).
-Result<BillboardLayer> placedBillboardsUnfollowed(const Scene& scene);
+// `stop`: a request ends the placing between its stages with an error (a renderer let go of
+// while its worker places them need not wait for the rest).
+Result<BillboardLayer> placedBillboardsUnfollowed(const Scene& scene, std::stop_token stop = {});
 // The same, into the scene: buildScene does it at once when the project's technique draws them.
 Result<void> placeBillboards(Scene& scene);
 
@@ -127,7 +130,12 @@ BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting);
 // Loads the mesh (file or procedural), each layer's density map, scatters, patches and bakes
 // the per-blade lighting inputs.
 // Errors name the file (mesh, map) or the project field. `alreadyRead`: as loadProjectMesh's.
-Result<Scene> buildScene(const LoadedProject& project, GltfImport* alreadyRead = nullptr);
+// `stop`: a request ends the growing between its stages (buildStopped says so): the editor
+// stops a re-grow that a later edit makes useless, and a load the user cancels.
+Result<Scene> buildScene(const LoadedProject& project, GltfImport* alreadyRead = nullptr,
+                         std::stop_token stop = {});
+// The error of a build ended by its stop token.
+Error buildStopped(const LoadedProject& project);
 
 // What a repaint re-grew: the patches whose slots changed (renderers re-upload those) and the
 // patches whose shading changed (the regrown ones, whose wilt moved, and, when blades were
@@ -201,7 +209,8 @@ glm::dvec3 groundOriginOf(const LoadedProject& project);
 // `groundOrigin` is loadProjectMesh's (the mesh colliders in a moved ground's frame follow it).
 Result<Scene> buildSceneFromMesh(const LoadedProject& project, MovableSurfaceMesh mesh,
                                  std::vector<std::string> notes,
-                                 glm::dvec3 groundOrigin = glm::dvec3(0.0));
+                                 glm::dvec3 groundOrigin = glm::dvec3(0.0),
+                                 std::stop_token stop = {});
 
 // Whether `next` grows on the surface the scene of `built` stands on: the same folder, mesh
 // source (file, unit, up axis, kept UV atlas, or procedural shape) and coarsest layer map (the
@@ -213,7 +222,8 @@ bool sameSurface(const LoadedProject& built, const LoadedProject& next);
 // (MovableSurfaceMesh::shared), its material, paintable UVs and ground origin carried over; the
 // mesh's notes are not repeated. The editor re-grows so after each edit of the layers: an
 // 8-million-triangle ground took seconds to read each time.
-Result<Scene> regrowOnSameSurface(const LoadedProject& project, const Scene& previous);
+Result<Scene> regrowOnSameSurface(const LoadedProject& project, const Scene& previous,
+                                  std::stop_token stop = {});
 
 // A default project growing grass on a loaded glTF file: density scaled so the field has about
 // `targetBlades` blades whatever the file's units, blade size relative to the mesh, and a

@@ -13,6 +13,7 @@
 #include <functional>
 #include <mutex>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <thread>
 
@@ -52,10 +53,12 @@ public:
     double elapsedS() const;
     // For the work: says what it does next.
     void setStage(std::string stage);
-    // Asks the work to stop: it looks between its stages (cancelled()), and the delay ends at
-    // once. A cancelled job's result is an error nobody shows.
-    void cancel() { mCancelled.store(true); }
-    bool cancelled() const { return mCancelled.load(); }
+    // Asks the work to stop: it looks between its stages (cancelled(), or the growing through
+    // stopToken()), and the delay ends at once. A cancelled job's result is an error nobody
+    // shows.
+    void cancel() { mStop.request_stop(); }
+    bool cancelled() const { return mStop.stop_requested(); }
+    std::stop_token stopToken() const { return mStop.get_token(); }
     // Once done(): the grown document or why it could not be grown; taken once.
     Result<GrownDocument> take();
 
@@ -64,7 +67,7 @@ private:
     std::filesystem::path mFile;
     std::chrono::steady_clock::time_point mStart;
     std::atomic<bool> mDone{false};
-    std::atomic<bool> mCancelled{false};
+    std::stop_source mStop;
     mutable std::mutex mMutex;
     std::string mStage;
     std::optional<Result<GrownDocument>> mResult;

@@ -35,7 +35,8 @@ constexpr int LOADING_FRAME_MS = 200;
 }  // namespace
 
 // What a document job's worker does: `read` makes the project (and may read its mesh), then its
-// field grows; a cancel between the two skips the growing.
+// field grows; a cancel between the two skips the growing, one while it grows ends it at its
+// next stage.
 DocumentJob::Work Editor::documentWork(ReadDocument read, bool withPhysics, DocumentAction action,
                                        std::string name) {
     return [read = std::move(read), withPhysics, action,
@@ -49,7 +50,8 @@ DocumentJob::Work Editor::documentWork(ReadDocument read, bool withPhysics, Docu
             return makeError(job.title(), "cancelled");
         job.setStage(action == DocumentAction::ImportMesh ? "growing the grass on " + name
                                                           : "growing " + loaded->project.name);
-        auto field = growField(std::move(*loaded), withPhysics, meshRead ? &*meshRead : nullptr);
+        auto field = growField(std::move(*loaded), withPhysics, meshRead ? &*meshRead : nullptr,
+                               nullptr, job.stopToken());
         if (!field)
             return field.error();
         grown.field = std::move(*field);
@@ -203,12 +205,13 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
 }
 
 Editor::~Editor() {
-    if (mState.regrowJob) {
-        if (mWindow)
-            mWindow->hide();  // the session is over: gone from the screen while the worker ends
-        mState.regrowJob->cancel();
-        mState.regrowJob.reset();  // waits for the worker, before mLive goes
-    }
+    if (mState.regrowing() && mWindow)
+        mWindow->hide();  // the session is over: gone from the screen while the workers end
+    for (std::unique_ptr<DocumentJob>* job : {&mState.regrowJob, &mState.stoppingRegrow})
+        if (*job) {
+            (*job)->cancel();
+            job->reset();  // waits for the worker, before mLive goes
+        }
 }
 
 Result<bool> Editor::frame() {
@@ -346,9 +349,17 @@ bool Editor::applyRequests() {
             });
         state.recoveryOffer.reset();
     }
-    // Re-grow once the edit has ended, not on every frame of a drag.
-    if (state.rebuildPending && !state.view.toolDragActive && !state.busy() && !state.regrowing() &&
-        (!mUi || mUi->context().activeId().value == 0)) {
+    // Re-grow once the edit has ended, not on every frame of a drag. A re-grow still running
+    // for an earlier edit is stopped: its field would only be replaced (on a large mesh the
+    // edit's field came a whole re-grow later). It ends at its next stage beside the new one,
+    // and finishRegrow lets it go.
+    const bool editEnded = state.rebuildPending && !state.view.toolDragActive && !state.busy() &&
+                           (!mUi || mUi->context().activeId().value == 0);
+    if (editEnded && state.regrowJob && !state.stoppingRegrow) {
+        state.regrowJob->cancel();
+        state.stoppingRegrow = std::move(state.regrowJob);
+    }
+    if (editEnded && !state.regrowJob && !state.stoppingRegrow) {
         state.rebuildPending = false;
         startRegrow();
     }
@@ -365,9 +376,9 @@ void Editor::startRegrow() {
     // live scene it reads stays until finishRegrow (nothing else replaces it meanwhile).
     mRegrowOnSameSurface = mLive.scene && core::sameSurface(mLive.builtFrom, mState.doc.loaded);
     auto work = [loaded = mState.doc.loaded, withPhysics = !mSettings.noPhysics,
-                 surface = mRegrowOnSameSurface ? mLive.scene.get()
-                                                : nullptr](DocumentJob&) -> Result<GrownDocument> {
-        auto field = growField(loaded, withPhysics, nullptr, surface);
+                 surface = mRegrowOnSameSurface ? mLive.scene.get() : nullptr](
+                    DocumentJob& job) -> Result<GrownDocument> {
+        auto field = growField(loaded, withPhysics, nullptr, surface, job.stopToken());
         if (!field)
             return field.error();
         GrownDocument grown;
@@ -386,7 +397,16 @@ void Editor::startRegrow() {
 // carried over; on failure the old field stays. Not in the middle of a stroke.
 void Editor::finishRegrow() {
     EditorState& state = mState;
-    if (!state.regrowJob || !state.regrowJob->done() || state.view.toolDragActive)
+    if (state.stoppingRegrow && state.stoppingRegrow->done()) {
+        std::fprintf(stderr,
+                     "grass-editor: stopped growing the field again after %.2f s: a later "
+                     "edit grows it\n",
+                     state.stoppingRegrow->elapsedS());
+        state.stoppingRegrow.reset();
+    }
+    // Not while a stopped one may still read the live field this would replace.
+    if (!state.regrowJob || !state.regrowJob->done() || state.view.toolDragActive ||
+        state.stoppingRegrow)
         return;
     const std::unique_ptr<DocumentJob> job = std::move(state.regrowJob);
     auto grown = job->take();

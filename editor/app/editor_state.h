@@ -194,7 +194,10 @@ struct EditorState {
     // maps painted meanwhile are carried over when the new field comes in). What would replace
     // or read the live field elsewhere waits for it (New, Open, the imports, an export).
     std::unique_ptr<DocumentJob> regrowJob;
-    bool regrowing() const { return regrowJob != nullptr; }
+    // A re-grow stopped by a later edit (Editor::applyRequests), ending at its next stage beside
+    // the later one; it may still read the live field meanwhile.
+    std::unique_ptr<DocumentJob> stoppingRegrow;
+    bool regrowing() const { return regrowJob != nullptr || stoppingRegrow != nullptr; }
     // File › Export… asked for while the field grows again: it starts once the new field is in.
     bool exportWhenGrown = false;
     // An autosave left by a session that did not close cleanly, offered back at start; the

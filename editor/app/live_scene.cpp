@@ -76,9 +76,10 @@ Live& Live::operator=(Live&& next) noexcept {
 }
 
 Result<GrownField> growField(core::LoadedProject loaded, bool withPhysics,
-                             core::GltfImport* alreadyRead, const core::Scene* sameSurface) {
-    auto scene = sameSurface != nullptr ? core::regrowOnSameSurface(loaded, *sameSurface)
-                                        : core::buildScene(loaded, alreadyRead);
+                             core::GltfImport* alreadyRead, const core::Scene* sameSurface,
+                             std::stop_token stop) {
+    auto scene = sameSurface != nullptr ? core::regrowOnSameSurface(loaded, *sameSurface, stop)
+                                        : core::buildScene(loaded, alreadyRead, stop);
     if (!scene)
         return scene.error();
     GrownField grown;

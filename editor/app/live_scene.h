@@ -82,10 +82,11 @@ struct GrownField {
 // The project's field and, `withPhysics`, its physics scene. `alreadyRead`: the project's mesh
 // as newProjectFromMesh or projectWithImportedMesh read it (core::buildScene's). `sameSurface`:
 // the scene of a project with the same surface (core::sameSurface), whose mesh the field grows
-// on instead of the file's (core::regrowOnSameSurface).
+// on instead of the file's (core::regrowOnSameSurface). `stop`: a request ends the growing
+// between its stages with core::buildStopped.
 Result<GrownField> growField(core::LoadedProject loaded, bool withPhysics,
                              core::GltfImport* alreadyRead = nullptr,
-                             const core::Scene* sameSurface = nullptr);
+                             const core::Scene* sameSurface = nullptr, std::stop_token stop = {});
 
 // The grown field on the GPU (renderer, tools, physics): on the thread that owns the GL context.
 // `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).

@@ -67,6 +67,12 @@ const gl::Program& SceneRenderer::bladeProgram(const BladeVariant& variant) {
                               [&] { return loadBladeProgram(variant); });
 }
 
+SceneRenderer::~SceneRenderer() {
+    mPlacingStop.request_stop();
+    if (mPlacing.valid())
+        mPlacing.wait();
+}
+
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& scene,
                                                              const SceneRenderer* sameSurface) {
     std::unique_ptr<SceneRenderer> renderer(new SceneRenderer());

@@ -11,6 +11,7 @@
 #include <future>
 #include <memory>
 #include <span>
+#include <stop_token>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,6 +55,10 @@ public:
     // 8.4-million-triangle ground, at every re-grow after an edit of the layers).
     static Result<std::unique_ptr<SceneRenderer>> create(
         const core::Scene& scene, const SceneRenderer* sameSurface = nullptr);
+    // A worker still placing billboards is asked to stop and waited for (the placing ends at its
+    // next stage: a field replaced by an edit need not wait up to 1.5 s for billboards it will
+    // never draw).
+    ~SceneRenderer();
     // The surface mesh on the GPU (shared with the renderer `create` was given, if any).
     const MeshGpu& surfaceMesh() const { return *mMesh; }
 
@@ -158,6 +163,7 @@ private:
     // The worker placing them (placeBillboardsInBackground); its future waits for it when the
     // renderer goes, before the scene it reads does (editor/app/live_scene.h: Live).
     std::future<Result<core::BillboardLayer>> mPlacing;
+    std::stop_source mPlacingStop;
     std::vector<std::string> mNotes;  // takeNotes()
     const core::BillboardLayer* billboardLayer();
     bool mBillboardsStale = false;  // a repaint since they were last made to follow the layers

@@ -161,9 +161,10 @@ const core::BillboardLayer* SceneRenderer::billboardLayer() {
         // The placing reads what painting does not change, so a worker may do it; the objects
         // that follow the painted maps are made here, once it is done.
         if (mPlaceInBackground && !mPlacing.valid())
-            mPlacing = std::async(std::launch::async, [scene = mScene] {
-                return core::placedBillboardsUnfollowed(*scene);
-            });
+            mPlacing =
+                std::async(std::launch::async, [scene = mScene, stop = mPlacingStop.get_token()] {
+                    return core::placedBillboardsUnfollowed(*scene, stop);
+                });
         if (mPlacing.valid() &&
             mPlacing.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
             return nullptr;

@@ -176,6 +176,28 @@ TEST(EditorTime, AnEditOfTheLayersGrowsTheFieldWhileTheWindowGoesOn) {
     EXPECT_EQ(bladesIn(log, "grew the field again: ([0-9]+) blades"), 2 * first) << log;
 }
 
+// A second edit while the first one's re-grow still runs stops that re-grow and grows its own
+// at once: the re-grows are held back 3 s each here (--load-delay-ms, standing for a large
+// mesh), the layer duplicated twice 0.5 s apart (its duplicate button moves right once a
+// second layer gives it a "down" button). The field that comes in is the second edit's
+// (three layers), 3 s after it; the first edit's (two layers) never does. Before, the first
+// re-grow ran to its end and the second began only then: the field of the last edit came a
+// whole re-grow later (after the script here has ended).
+TEST(EditorTime, AnEditWhileTheFieldGrowsAgainStopsThatGrowing) {
+    const auto dir = scratchDir("editor_regrow_superseded");
+    writeTinyProject(dir, "tiny", 900, 560);
+    const std::string log =
+        runEditor(dir, "wait 2\nclick 80 208\nwait-s 0.5\nclick 138 208\nwait-s 4.5\n",
+                  "--no-physics --load-delay-ms 3000");
+    const long first = bladesIn(log, ", ([0-9]+) blades, geometry ");
+    ASSERT_GT(first, 0) << log;
+    EXPECT_NE(log.find("stopped growing the field again after"), std::string::npos) << log;
+    EXPECT_EQ(bladesIn(log, "grew the field again: ([0-9]+) blades"), 3 * first) << log;
+    EXPECT_EQ(log.find("grew the field again: " + std::to_string(2 * first) + " blades"),
+              std::string::npos)
+        << log;
+}
+
 #ifdef GRASS_CLOSE_WINDOW_EXE
 // The first project grows on a worker too (a large mesh takes seconds before the first frame):
 // the window says what it is doing and its close button is answered meanwhile. Held back 60 s

@@ -69,6 +69,33 @@ TEST(RegrowOnSameSurface, GrowsWhatTheFileWouldWithoutReadingIt) {
     EXPECT_GT(surfaceArea(regrown->mesh), 0.0);
 }
 
+// A stop requested (the editor's: a later edit makes the re-grow useless, or the user cancels a
+// load) ends the growing with an error naming the project, whichever way the field grows; the
+// billboards' placing too. Without one, the same calls grow the field.
+TEST(RegrowOnSameSurface, AStopRequestedEndsTheGrowing) {
+    const test::ScratchFolder folder("regrow-stopped");
+    const LoadedProject loaded = test::writeRulesTerrainProject(folder.path(), PROJECT);
+    std::stop_source source;
+    auto first = buildScene(loaded, nullptr, source.get_token());
+    ASSERT_TRUE(first) << first.error().str();
+    ASSERT_GT(first->totalBlades(), 0u);
+    source.request_stop();
+    const auto stopped = [&](const auto& result) {
+        return !result && result.error() == buildStopped(loaded) &&
+               result.error().path == loaded.file.string();
+    };
+    EXPECT_TRUE(stopped(buildScene(loaded, nullptr, source.get_token())));
+    EXPECT_TRUE(stopped(regrowOnSameSurface(loaded, *first, source.get_token())));
+    EXPECT_TRUE(
+        stopped(buildSceneFromMesh(loaded, first->mesh.shared(), {}, {}, source.get_token())));
+    EXPECT_TRUE(regrowOnSameSurface(loaded, *first));
+    ASSERT_TRUE(first->billboards.unplaced) << "the project draws blades: billboards wait";
+    const auto placed = placedBillboardsUnfollowed(*first, source.get_token());
+    ASSERT_FALSE(placed);
+    EXPECT_NE(placed.error().message.find("stopped"), std::string::npos) << placed.error().str();
+    EXPECT_TRUE(placedBillboardsUnfollowed(*first));
+}
+
 TEST(RegrowOnSameSurface, AnotherSurfaceIsReadAgain) {
     const test::ScratchFolder folder("regrow-other-surface");
     const LoadedProject loaded = test::writeRulesTerrainProject(folder.path(), PROJECT);
