@@ -40,6 +40,7 @@ Result<void> addPrimitive(SurfaceMeshBuilder& builder, const PrimitiveData& data
     const bool hasUv = !data.uvs.empty();
     const float nan = std::numeric_limits<float>::quiet_NaN();
     std::vector<std::uint32_t> remap(data.positions.size(), UNSET);
+    builder.reserveMore(data.positions.size(), data.triangles.size());
     const auto vertex = [&](std::uint32_t i) -> Result<std::uint32_t> {
         if (remap[i] != UNSET)
             return remap[i];

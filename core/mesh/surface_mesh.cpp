@@ -15,6 +15,17 @@ glm::vec2 toGlm(const OpenMesh::Vec2f& v) {
     return {v[0], v[1]};
 }
 
+void SurfaceMeshBuilder::reserveMore(std::size_t vertices, std::size_t triangles) {
+    const std::size_t needVertices = mMesh->n_vertices() + vertices;
+    const std::size_t needTriangles = mMesh->n_faces() + triangles;
+    if (needVertices <= mRoomVertices && needTriangles <= mRoomTriangles)
+        return;
+    mRoomVertices = std::max(needVertices, 2 * mRoomVertices);
+    mRoomTriangles = std::max(needTriangles, 2 * mRoomTriangles);
+    // Edges: V + F by Euler's formula for a surface of a few pieces (V - E + F = 2 per piece).
+    mMesh->reserve(mRoomVertices, mRoomVertices + mRoomTriangles, mRoomTriangles);
+}
+
 std::uint32_t SurfaceMeshBuilder::addVertex(glm::vec3 position, glm::vec3 normal, glm::vec2 uv) {
     const auto vh = mMesh->add_vertex(OpenMesh::Vec3f(position.x, position.y, position.z));
     mMesh->set_normal(vh, OpenMesh::Vec3f(normal.x, normal.y, normal.z));

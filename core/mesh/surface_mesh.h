@@ -98,6 +98,10 @@ struct Bounds {
 // index) have no area and are skipped and counted.
 class SurfaceMeshBuilder {
 public:
+    // Room for `vertices` and `triangles` more: OpenMesh's arrays otherwise grow by doubling,
+    // copying every vertex, edge and face on the way (an 8-million-triangle ground: 0.3 s of
+    // its 3.3 s read). Grows the room at least twofold, so many small reserves stay linear.
+    void reserveMore(std::size_t vertices, std::size_t triangles);
     std::uint32_t addVertex(glm::vec3 position, glm::vec3 normal, glm::vec2 uv);
     void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
     std::size_t degenerateTriangles() const { return mDegenerate; }
@@ -107,6 +111,7 @@ public:
 
 private:
     MovableSurfaceMesh mMesh;
+    std::size_t mRoomVertices = 0, mRoomTriangles = 0;
     std::size_t mDegenerate = 0;
     std::size_t mDuplicated = 0;
 };
