@@ -51,6 +51,7 @@ void Context::beginFrame(Input input) {
     mHitsThisFrame.clear();
     mTopAtPointer = mInput.hasPointer ? topmostAt(mHitsLastFrame, mInput.pointerPos) : Id{};
     mActiveSeen = false;
+    mFocusAtBegin = mFocusId;
     mFocusSeen = false;
     mFocusTakenThisFrame = false;
     mFocusable.clear();
@@ -101,7 +102,7 @@ const Output& Context::endFrame() {
     const bool overWidget =
         mInput.hasPointer && topmostAt(mHitsThisFrame, mInput.pointerPos).value != 0;
     mOutput.wantsPointer = mActiveId.value != 0 || overWidget || mPointerOverArea;
-    mOutput.wantsKeyboard = mFocusId.value != 0;
+    mOutput.wantsKeyboard = mFocusId.value != 0 || mFocusAtBegin.value != 0;
     mOutput.pixelsPerPoint = mInput.pixelsPerPoint;
     std::size_t total = 0;
     for (const auto& layer : mLayers) {

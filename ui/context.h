@@ -97,7 +97,10 @@ struct Output {
     // The pointer is over UI (a widget or a registered area) or a widget is being dragged: the
     // app should not also use it (camera, brush).
     bool wantsPointer = false;
-    // A widget has keyboard focus.
+    // A widget has keyboard focus, or had it when the frame began: the frame's keys were its
+    // own even when one of them (Enter, Escape) ended the focus. A slow frame gathers several
+    // keystrokes; before, the ones typed with the Enter also reached the app's shortcuts (a
+    // folder path typed into the export window at 1 fps changed the technique).
     bool wantsKeyboard = false;
     // Set when the UI copied or cut text; the app puts it on the OS clipboard.
     std::optional<std::string> copiedText;
@@ -229,6 +232,7 @@ private:
     Id mActiveId;
     bool mActiveSeen = false;
     Id mFocusId;
+    Id mFocusAtBegin;  // mFocusId when the frame began (Output::wantsKeyboard)
     bool mFocusSeen = false;
     bool mFocusTakenThisFrame = false;
     Id mLostFocusId;

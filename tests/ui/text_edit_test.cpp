@@ -96,6 +96,23 @@ TEST(UiTextEdit, KeysActBetweenTheCharactersTypedInTheSameFrame) {
     EXPECT_EQ(f.text, "y!utm meadowacx");
 }
 
+// The frame whose Enter ends the edit still owns its keys: typed together at 1 fps, "/tmp" and
+// Enter arrive in one frame, and the "t" must not also reach the app's shortcuts (the editor's
+// technique key; seen with xdotool typing an export folder). The frame after is the app's again.
+TEST(UiTextEdit, TheFrameWhoseEnterEndsTheEditKeepsItsKeys) {
+    TextEditFixture f;
+    f.focusAtEnd();
+    ASSERT_TRUE(f.r.hasFocus());
+    f.h.input.text = "/tmp";
+    f.h.input.keys.push_back({Key::Enter, NONE, 4});
+    f.frame();
+    EXPECT_TRUE(f.committed);
+    EXPECT_EQ(f.text, "/tmp");
+    EXPECT_TRUE(f.h.ctx.output().wantsKeyboard) << "the t would change the technique";
+    f.frame();
+    EXPECT_FALSE(f.h.ctx.output().wantsKeyboard);
+}
+
 TEST(UiTextEdit, CursorMovesAndDeletesByCodePoints) {
     TextEditFixture f;
     f.text = "aé€b";
