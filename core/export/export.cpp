@@ -80,15 +80,23 @@ json colorJson(glm::vec3 color) {
 // `step` reports progress within the layer (0..1) with what is being done.
 using LayerProgress = std::function<void(float within, const char* stage)>;
 
+// An error once the export's stop is requested (ExportOptions::stop); checked between stages.
+Result<void> unlessStopped(const ExportOptions& options) {
+    if (options.stop.stop_requested())
+        return makeError(options.outDir.string(), "the export was stopped: nothing was written");
+    return {};
+}
+
 Result<void> stageGltfLayer(StagedFiles& staged, const LoadedProject& loaded, const Scene& scene,
-                            const SourceMaterial& terrainMaterial, const json& runtime, std::size_t index,
-                            const std::string& stem, int lod, const LayerProgress& step,
+                            const SourceMaterial& terrainMaterial, const json& runtime,
+                            std::size_t index, const std::string& stem,
+                            const ExportOptions& options, const LayerProgress& step,
                             ExportedLayer& report) {
     const LayerField& layer = scene.layers[index];
     GltfLayerInput input;
     input.scene = &scene;
     input.layer = index;
-    input.lod = lod;
+    input.lod = options.lod;
     input.segments = loaded.project.render.stripSegments;
     input.groundColor = loaded.project.render.groundColor;
     input.terrainMaterial = terrainMaterial;
@@ -102,8 +110,12 @@ Result<void> stageGltfLayer(StagedFiles& staged, const LoadedProject& loaded, co
             return written.error();
         input.maps.push_back({map.name, uri, {}});
     }
+    if (auto wanted = unlessStopped(options); !wanted)
+        return wanted;
     step(0.3f, "terrain and blade instances");
     const GltfLayerDocument doc = buildLayerGltf(input);
+    if (auto wanted = unlessStopped(options); !wanted)
+        return wanted;
     step(0.7f, "writing");
     if (auto written = staged.add(doc.binUri, doc.binary); !written)
         return written.error();
@@ -232,9 +244,13 @@ Result<void> stageGlb(StagedFiles& staged, const LoadedProject& loaded, const Sc
         }
         input.layerMaps.push_back(std::move(maps));
     }
+    if (auto wanted = unlessStopped(options); !wanted)
+        return wanted;
     if (progress)
         progress(0.3f, "terrain and blade instances of every layer");
     const GltfSceneDocument doc = buildSceneGlb(input);
+    if (auto wanted = unlessStopped(options); !wanted)
+        return wanted;
     if (progress)
         progress(0.7f, "writing");
     if (auto written = staged.add(glbFileName(loaded.project, options.format), doc.glb); !written)
@@ -361,6 +377,8 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
                                     std::to_string(options.lod) + ")");
     if (options.format == ExportFormat::Raw && options.lod != 0)
         return makeError("lod", "applies to the gltf format only (raw holds every blade exactly)");
+    if (auto wanted = unlessStopped(options); !wanted)
+        return wanted.error();
     bool createdDir = false;
     if (auto prepared = prepareOutDir(options.outDir, createdDir); !prepared)
         return prepared.error();
@@ -398,6 +416,8 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
         const auto layerCount = static_cast<float>(std::max<std::size_t>(scene.layers.size(), 1));
         const bool oneFile = options.format == ExportFormat::Glb || options.format == ExportFormat::Mesh;
         for (std::size_t i = 0; i < scene.layers.size() && !oneFile; ++i) {
+            if (auto wanted = unlessStopped(options); !wanted)
+                return wanted;
             const LayerField& layer = scene.layers[i];
             const auto step = [&](float within, const char* stage) {
                 if (progress)
@@ -407,8 +427,7 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
             ExportedLayer exported{layer.name, layer.liveBlades, 0};
             if (options.format == ExportFormat::Gltf) {
                 if (auto written = stageGltfLayer(staged, loaded, scene, terrainMaterial, *runtime,
-                                                  i, stems[i],
-                                                  options.lod, step, exported);
+                                                  i, stems[i], options, step, exported);
                     !written)
                     return written.error();
             } else {
@@ -430,6 +449,9 @@ Result<ExportReport> exportProject(const LoadedProject& loaded, const Scene& sce
             if (auto written = staged.add("manifest.json", manifest.dump(2) + "\n"); !written)
                 return written.error();
         }
+        // The last moment a stop counts: renamed, the files are the export.
+        if (auto wanted = unlessStopped(options); !wanted)
+            return wanted;
         if (progress)
             progress(1.0f, "renaming files into place");
         auto files = staged.commit();

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <stop_token>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,6 +32,9 @@ struct ExportOptions {
     std::filesystem::path outDir;
     // --format mesh refuses more triangles than this (merged_blades.h).
     std::size_t maxMergedTriangles = 4'000'000;
+    // A stop requested (the editor's Stop while it exports) ends the export at its next stage,
+    // before its files are renamed into place: the folder stays as it was.
+    std::stop_token stop;
     bool operator==(const ExportOptions&) const = default;
 };
 

@@ -7,6 +7,7 @@ namespace grass::editor {
 ExportJob::ExportJob(core::LoadedProject loaded, const core::Scene& scene,
                      core::ExportOptions options)
     : mLoaded(std::move(loaded)), mScene(&scene), mOptions(std::move(options)) {
+    mOptions.stop = mStop.get_token();
     mWorker = std::thread([this] {
         auto result = core::exportProject(mLoaded, *mScene, mOptions,
                                           [this](float fraction, std::string_view stage) {
@@ -14,11 +15,14 @@ ExportJob::ExportJob(core::LoadedProject loaded, const core::Scene& scene,
                                               std::lock_guard lock(mMutex);
                                               mStage = stage;
                                           });
+        // A full bar only for an export that was written: a stopped or failed one keeps where
+        // it ended.
+        if (result)
+            mFraction.store(1.0f);
         {
             std::lock_guard lock(mMutex);
             mResult.emplace(std::move(result));
         }
-        mFraction.store(1.0f);
         mDone.store(true);
     });
 }
@@ -42,6 +46,8 @@ std::string ExportJob::summary() const {
     std::lock_guard lock(mMutex);
     if (!mResult)
         return "exporting…";
+    if (!mResult->ok() && mStop.stop_requested())
+        return "export stopped: nothing was written to " + mOptions.outDir.string();
     if (!mResult->ok())
         return "export failed: " + mResult->error().str();
     const core::ExportReport& report = mResult->value();

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <mutex>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <thread>
 
@@ -22,6 +23,10 @@ public:
     ExportJob& operator=(const ExportJob&) = delete;
 
     bool done() const { return mDone.load(); }
+    // Asks the export to end at its next stage, before anything is renamed into place (the
+    // dialog's Stop): the folder stays as it was. Too late once the files are being renamed.
+    void stop() { mStop.request_stop(); }
+    bool stopping() const { return mStop.stop_requested(); }
     float fraction() const { return mFraction.load(); }
     std::string stage() const;
     // After done(): the report's one-line summary, or the error.
@@ -32,10 +37,11 @@ private:
     core::LoadedProject mLoaded;
     const core::Scene* mScene;
     core::ExportOptions mOptions;
+    std::stop_source mStop;
     std::atomic<bool> mDone{false};
     std::atomic<float> mFraction{0.0f};
     mutable std::mutex mMutex;
-    std::string mStage;
+    std::string mStage = "preparing the folder";  // until the first progress
     std::optional<Result<core::ExportReport>> mResult;
     std::thread mWorker;
 };

@@ -53,6 +53,13 @@ void exportWindow(ui::Context& ctx, EditorState& s) {
             if (s.exportJob) {
                 ui.wrappedLabel(s.exportJob->done() ? s.exportJob->summary() : s.exportJob->stage());
                 ui.progressBar(s.exportJob->fraction());
+                if (!s.exportJob->done() && !s.exportJob->stopping() &&
+                    ui.button("Stop")
+                        .onHoverText("Stop exporting: the folder stays as it was")
+                        .clicked())
+                    s.exportJob->stop();
+                if (!s.exportJob->done() && s.exportJob->stopping())
+                    ui.label("stopping…");
                 if (s.exportJob->done() &&
                     ui.button("Close").onHoverText("Close this window").clicked()) {
                     s.transient.message = s.exportJob->summary();

@@ -656,6 +656,61 @@ TEST(Export, ProgressRunsFromZeroToOne) {
     EXPECT_GT(report->totalBytes(), 0u);
 }
 
+// A stop (the editor's Stop while it exports) ends the export at its next stage, before anything
+// is renamed into place: a re-export stopped once it reports a stage leaves the folder holding
+// the previous export byte for byte, in every format, and a stop requested before the start
+// creates no folder. Without the stop the same re-export replaces the files.
+TEST(Export, AStoppedExportLeavesTheFolderAsItWas) {
+    const Built built = buildProject("tiny");
+    const auto contents = [](const fs::path& dir) {
+        std::map<std::string, std::string> files;
+        for (const auto& entry : fs::directory_iterator(dir))
+            files[entry.path().filename().string()] = *readFile(entry.path());
+        return files;
+    };
+    for (const ExportFormat format :
+         {ExportFormat::Gltf, ExportFormat::Raw, ExportFormat::Glb, ExportFormat::Mesh}) {
+        const std::string name(exportFormatName(format));
+        const fs::path dir = test::scratchDir("export_stopped_" + name);
+        ASSERT_TRUE(exportProject(built.loaded, built.scene, options(format, 0, dir), {}));
+        const auto before = contents(dir);
+        int stops = 0;
+        for (const std::string& stage : {std::string("layer"), std::string("terrain"),
+                                         std::string("writing"), std::string("blades")}) {
+            ExportOptions again = options(format, format == ExportFormat::Raw ? 0 : 2, dir);
+            std::stop_source source;
+            again.stop = source.get_token();
+            bool asked = false;
+            auto report =
+                exportProject(built.loaded, built.scene, again, [&](float, std::string_view now) {
+                    if (now.find(stage) != std::string_view::npos) {
+                        asked = true;
+                        source.request_stop();
+                    }
+                });
+            if (!asked)
+                continue;  // this format reports no such stage
+            ASSERT_FALSE(report) << name << ", stopped at " << stage;
+            EXPECT_EQ(report.error().path, dir.string());
+            EXPECT_NE(report.error().message.find("stopped"), std::string::npos);
+            EXPECT_EQ(contents(dir), before) << name << ", stopped at " << stage;
+            ++stops;
+        }
+        EXPECT_GE(stops, 2) << name << ": stopped at two stages at least";
+        if (format != ExportFormat::Raw) {
+            ASSERT_TRUE(exportProject(built.loaded, built.scene, options(format, 2, dir), {}));
+            EXPECT_NE(contents(dir), before) << name << ": unstopped, LOD 2 replaces the files";
+        }
+    }
+    const fs::path never = test::scratchDir("export_stopped_early") / "out";
+    ExportOptions early = options(ExportFormat::Gltf, 0, never);
+    std::stop_source source;
+    source.request_stop();
+    early.stop = source.get_token();
+    EXPECT_FALSE(exportProject(built.loaded, built.scene, early, {}));
+    EXPECT_FALSE(fs::exists(never));
+}
+
 TEST(Export, UnitBladeIsOneTallTwoWideWithoutDegenerateTriangles) {
     for (const BladeShape shape : {BladeShape::Quad, BladeShape::Triangle, BladeShape::Quadratic,
                                    BladeShape::TriangleTip, BladeShape::Dandelion})
