@@ -158,22 +158,37 @@ long bladesIn(const std::string& log, const std::string& pattern) {
     return std::regex_search(log, match, std::regex(pattern)) ? std::stol(match[1]) : -1;
 }
 
+// The log of a 900×560 editor on the tiny project running `script`, its re-grows held back
+// `delayMs` (--load-delay-ms, standing for a large mesh, where they take seconds); with the
+// blade count of the first field and of the first field grown again (-1: none).
+struct RegrowRun {
+    std::string log;
+    long firstBlades = -1;
+    long regrownBlades = -1;
+};
+RegrowRun runRegrows(const std::string& name, const std::string& script, int delayMs) {
+    const auto dir = scratchDir(name);
+    writeTinyProject(dir, "tiny", 900, 560);
+    RegrowRun run;
+    run.log = runEditor(dir, script, "--no-physics --load-delay-ms " + std::to_string(delayMs));
+    run.firstBlades = bladesIn(run.log, ", ([0-9]+) blades, geometry ");
+    run.regrownBlades = bladesIn(run.log, "grew the field again: ([0-9]+) blades");
+    return run;
+}
+
 // An edit of the layers grows the field again on a worker (Editor::startRegrow): held back 1.5 s
 // here (--load-delay-ms, standing for a large mesh, where it takes seconds), the window goes on
 // drawing the field before the edit, then takes in the new one. The edit is the layer's
 // "duplicate" button: twice the blades. Before, the re-grow ran on the UI thread: the window
 // stood still for it.
 TEST(EditorTime, AnEditOfTheLayersGrowsTheFieldWhileTheWindowGoesOn) {
-    const auto dir = scratchDir("editor_regrow_async");
-    writeTinyProject(dir, "tiny", 900, 560);
-    const std::string log =
-        runEditor(dir, "wait 2\nclick 80 208\nphase growing\nwait-s 1.5\nphase after\nwait-s 1\n",
-                  "--no-physics --load-delay-ms 1500");
+    const RegrowRun run = runRegrows(
+        "editor_regrow_async",
+        "wait 2\nclick 80 208\nphase growing\nwait-s 1.5\nphase after\nwait-s 1\n", 1500);
     // 1.5 s of a 2-point field: tens of frames at llvmpipe's speed; one if the re-grow blocked.
-    EXPECT_GE(framesOfPhase(log, "growing"), 4) << log;
-    const long first = bladesIn(log, ", ([0-9]+) blades, geometry ");
-    EXPECT_GT(first, 0) << log;
-    EXPECT_EQ(bladesIn(log, "grew the field again: ([0-9]+) blades"), 2 * first) << log;
+    EXPECT_GE(framesOfPhase(run.log, "growing"), 4) << run.log;
+    EXPECT_GT(run.firstBlades, 0) << run.log;
+    EXPECT_EQ(run.regrownBlades, 2 * run.firstBlades) << run.log;
 }
 
 // A second edit while the first one's re-grow still runs stops that re-grow and grows its own
@@ -184,18 +199,16 @@ TEST(EditorTime, AnEditOfTheLayersGrowsTheFieldWhileTheWindowGoesOn) {
 // re-grow ran to its end and the second began only then: the field of the last edit came a
 // whole re-grow later (after the script here has ended).
 TEST(EditorTime, AnEditWhileTheFieldGrowsAgainStopsThatGrowing) {
-    const auto dir = scratchDir("editor_regrow_superseded");
-    writeTinyProject(dir, "tiny", 900, 560);
-    const std::string log =
-        runEditor(dir, "wait 2\nclick 80 208\nwait-s 0.5\nclick 138 208\nwait-s 4.5\n",
-                  "--no-physics --load-delay-ms 3000");
-    const long first = bladesIn(log, ", ([0-9]+) blades, geometry ");
-    ASSERT_GT(first, 0) << log;
-    EXPECT_NE(log.find("stopped growing the field again after"), std::string::npos) << log;
-    EXPECT_EQ(bladesIn(log, "grew the field again: ([0-9]+) blades"), 3 * first) << log;
-    EXPECT_EQ(log.find("grew the field again: " + std::to_string(2 * first) + " blades"),
-              std::string::npos)
-        << log;
+    const RegrowRun run =
+        runRegrows("editor_regrow_superseded",
+                   "wait 2\nclick 80 208\nwait-s 0.5\nclick 138 208\nwait-s 4.5\n", 3000);
+    ASSERT_GT(run.firstBlades, 0) << run.log;
+    EXPECT_NE(run.log.find("stopped growing the field again after"), std::string::npos) << run.log;
+    EXPECT_EQ(run.regrownBlades, 3 * run.firstBlades) << run.log;
+    EXPECT_EQ(
+        run.log.find("grew the field again: " + std::to_string(2 * run.firstBlades) + " blades"),
+        std::string::npos)
+        << run.log;
 }
 
 #ifdef GRASS_CLOSE_WINDOW_EXE
