@@ -21,6 +21,8 @@ using gltf::MeshInstance;
 using gltf::PrimitiveData;
 
 constexpr std::uint32_t UNSET = std::numeric_limits<std::uint32_t>::max();
+// Triangles between two looks at the stop token (a few milliseconds of building).
+constexpr std::size_t TRIANGLES_PER_STOP_CHECK = 65536;
 
 struct MergeStats {
     std::size_t primitives = 0;
@@ -33,7 +35,8 @@ struct MergeStats {
 // and those without UV0 a NaN UV: both are filled in once the whole mesh exists.
 Result<void> addPrimitive(SurfaceMeshBuilder& builder, const PrimitiveData& data,
                           const glm::dmat4& world, const glm::dvec3& origin,
-                          const std::string& meshName, MergeStats& stats) {
+                          const std::string& meshName, MergeStats& stats,
+                          const std::stop_token& stop) {
     const glm::dmat3 normalMatrix = gltf::normalMatrix(world);
     const double det = glm::determinant(glm::dmat3(world));
     const bool hasNormals = !data.normals.empty();
@@ -67,7 +70,10 @@ Result<void> addPrimitive(SurfaceMeshBuilder& builder, const PrimitiveData& data
         remap[i] = builder.addVertex(position, normal, uv);
         return remap[i];
     };
-    for (const auto& triangle : data.triangles) {
+    for (std::size_t t = 0; t < data.triangles.size(); ++t) {
+        if (t % TRIANGLES_PER_STOP_CHECK == 0 && stop.stop_requested())
+            return makeError("", "stopped while reading");
+        const auto& triangle = data.triangles[t];
         std::uint32_t v[3];
         for (int k = 0; k < 3; ++k) {
             const auto added = vertex(triangle[static_cast<std::size_t>(k)]);
@@ -194,12 +200,20 @@ bool isGltfPath(const std::filesystem::path& path) {
     return extension == ".gltf" || extension == ".glb";
 }
 
+Error readStopped(const std::filesystem::path& file) {
+    return Error{file.string(), "stopped while reading"};
+}
+
 Result<GltfImport> loadGltf(const std::filesystem::path& file, GltfPlacement placement,
-                            double metresPerUnit, glm::dvec3 groundOrigin) {
+                            double metresPerUnit, glm::dvec3 groundOrigin, std::stop_token stop) {
     const std::string display = file.string();
+    if (stop.stop_requested())
+        return readStopped(file);
     auto source = gltf::parseGltfFile(file);
     if (!source)
         return source.error();
+    if (stop.stop_requested())
+        return readStopped(file);
     const tinygltf::Model& model = source->model;
     GltfImport result;
     result.notes = std::move(source->notes);
@@ -258,16 +272,20 @@ Result<GltfImport> loadGltf(const std::filesystem::path& file, GltfPlacement pla
         const auto primitives = decoded.primitives(instance);
         if (!primitives)
             return withPath(primitives.error());
+        if (stop.stop_requested())
+            return readStopped(file);
         const std::string meshName = gltf::describeMesh(model, instance.mesh);
         for (const PrimitiveData& data : **primitives) {
             const auto added =
-                addPrimitive(builder, data, instance.world, result.origin, meshName, stats);
+                addPrimitive(builder, data, instance.world, result.origin, meshName, stats, stop);
             if (!added)
                 return withPath(added.error());
             parts.addFaces(instance.node, instance.mesh, data.material, builder.mesh().n_faces());
         }
     }
 
+    if (stop.stop_requested())
+        return readStopped(file);
     if (builder.mesh().n_faces() == 0) {
         const std::string why = instances->empty()      ? "its scene places no mesh"
                                 : stats.primitives == 0 ? "no primitive is made of triangles"

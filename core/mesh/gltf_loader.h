@@ -9,6 +9,7 @@
 #pragma once
 
 #include <filesystem>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -57,9 +58,15 @@ enum class GltfPlacement {
     InGroundFrame,
 };
 
+// `stop`: a request ends the read before its next 65,536 triangles (or its next stage) with
+// readStopped's error: the editor's Cancel, or its window closed, while a large mesh is read
+// (an 8-million-triangle ground takes seconds, most of them building the mesh).
 Result<GltfImport> loadGltf(const std::filesystem::path& file,
                             GltfPlacement placement = GltfPlacement::AsInFile,
-                            double metresPerUnit = 1.0, glm::dvec3 groundOrigin = glm::dvec3(0.0));
+                            double metresPerUnit = 1.0, glm::dvec3 groundOrigin = glm::dvec3(0.0),
+                            std::stop_token stop = {});
+// The error of a read ended by its stop token.
+Error readStopped(const std::filesystem::path& file);
 
 // The rule of GltfPlacement::GroundNearOrigin: zero, or the centre of the bounds [lo, hi] (file
 // units) rounded to whole units when it lies beyond GROUND_RECENTRE_BEYOND_M.

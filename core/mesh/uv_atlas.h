@@ -11,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <glm/glm.hpp>
+#include <stop_token>
 #include <vector>
 
 #include "mesh/surface_mesh.h"
@@ -47,7 +48,10 @@ constexpr std::size_t UV_OVERLAP_CAP = 1'000'000;
 // UV extent (at least 1e-6) along every axis, so triangles that only touch do not count. Faces with
 // (near) zero UV area have no interior and are left out of the pairs. `uvs` has one entry per face
 // of `mesh`.
-UvOverlapReport findUvOverlaps(const CornerUvs& uvs, const SurfaceMesh& mesh);
+// A request on `stop` ends the search early with a report that is not to be trusted (the caller
+// checks the token): a large mesh's search takes a second or two.
+UvOverlapReport findUvOverlaps(const CornerUvs& uvs, const SurfaceMesh& mesh,
+                               const std::stop_token& stop = {});
 
 struct AtlasParams {
     float chartAngleDeg = 60.0f;  // a face joins a neighbour's chart while its normal is within

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <stop_token>
 #include <vector>
 
 #include "mesh/surface_mesh.h"
@@ -29,8 +30,11 @@ struct OverlapPair {
 // Pairs of `triangles` whose interiors overlap by more than `epsilon` along every separating
 // axis (so shared edges and vertices do not count); triangles with active[i] == 0 are left
 // out. Counting stops at `cap`. When `pairs` is given, the pairs found are appended (a < b).
+// A request on `stop` ends the search early: the count is then short, for a caller that checks
+// the token to throw away.
 std::size_t countOverlaps(const std::vector<Triangle2>& triangles, const std::vector<char>& active,
-                          double epsilon, std::size_t cap, std::vector<OverlapPair>* pairs);
+                          double epsilon, std::size_t cap, std::vector<OverlapPair>* pairs,
+                          const std::stop_token& stop = {});
 
 // The mesh as chart growing sees it: corners welded by position, face normals and areas, and
 // which faces share a welded edge.

@@ -75,6 +75,8 @@ constexpr std::size_t ENTRIES_PER_TRIANGLE_MAX = 48;
 // From this many triangles the search runs on the shared pool's threads: below it a chart's
 // search takes well under a millisecond and each run's `seenBy` would cost more than it saves.
 constexpr std::size_t PARALLEL_MIN_TRIANGLES = 200'000;
+// Triangles a search run takes between two looks at the stop token (a few milliseconds).
+constexpr std::size_t TRIANGLES_PER_STOP_CHECK = 16384;
 
 struct Grid {
     glm::dvec2 origin{0.0};
@@ -132,7 +134,8 @@ struct Grid {
 }  // namespace
 
 std::size_t countOverlaps(const std::vector<Triangle2>& triangles, const std::vector<char>& active,
-                          double epsilon, std::size_t cap, std::vector<OverlapPair>* pairs) {
+                          double epsilon, std::size_t cap, std::vector<OverlapPair>* pairs,
+                          const std::stop_token& stop) {
     GRASS_ASSERT(active.size() == triangles.size());
     std::vector<std::uint32_t> live;
     for (std::size_t i = 0; i < triangles.size(); ++i) {
@@ -192,6 +195,10 @@ std::size_t countOverlaps(const std::vector<Triangle2>& triangles, const std::ve
                             const std::function<void(std::size_t, std::size_t)>& each) {
         pool.run(items, runs, each);
     };
+    // Whether a run at its k-th triangle (from `begin`) should end for a stop request.
+    const auto stopAt = [&](std::size_t k, std::size_t begin) {
+        return (k - begin) % TRIANGLES_PER_STOP_CHECK == 0 && stop.stop_requested();
+    };
     // Compressed rows: cellStart[c] .. cellStart[c + 1] index `entries`.
     std::vector<std::uint32_t> cellStart;
     for (;;) {
@@ -200,13 +207,15 @@ std::size_t countOverlaps(const std::vector<Triangle2>& triangles, const std::ve
         std::atomic<std::size_t> total{0};
         inRuns(live.size(), [&](std::size_t begin, std::size_t end) {
             std::size_t counted = 0;
-            for (std::size_t k = begin; k < end; ++k)
+            for (std::size_t k = begin; k < end && !stopAt(k, begin); ++k)
                 grid.forCells(triangles[live[k]], boxes[live[k]], [&](std::size_t cell) {
                     std::atomic_ref(cellStart[cell + 1]).fetch_add(1, std::memory_order_relaxed);
                     ++counted;
                 });
             total += counted;
         });
+        if (stop.stop_requested())
+            return 0;
         if ((grid.nx == 1 && grid.ny == 1) || total <= ENTRIES_PER_TRIANGLE_MAX * live.size())
             break;
         grid.nx = std::max<std::size_t>(1, grid.nx / 2);
@@ -217,12 +226,14 @@ std::size_t countOverlaps(const std::vector<Triangle2>& triangles, const std::ve
     std::vector<std::uint32_t> entries(cellStart.back());
     std::vector<std::uint32_t> fill(cellStart.begin(), cellStart.end() - 1);
     inRuns(live.size(), [&](std::size_t begin, std::size_t end) {
-        for (std::size_t k = begin; k < end; ++k)
+        for (std::size_t k = begin; k < end && !stopAt(k, begin); ++k)
             grid.forCells(triangles[live[k]], boxes[live[k]], [&](std::size_t cell) {
                 entries[std::atomic_ref(fill[cell]).fetch_add(1, std::memory_order_relaxed)] =
                     live[k];
             });
     });
+    if (stop.stop_requested())
+        return 0;  // the cells are not all filled
     if (runs > 1)  // one run fills each cell in ascending order already
         inRuns(fill.size(), [&](std::size_t begin, std::size_t end) {
             for (std::size_t c = begin; c < end; ++c)
@@ -239,7 +250,7 @@ std::size_t countOverlaps(const std::vector<Triangle2>& triangles, const std::ve
     };
     const auto search = [&](std::size_t begin, std::size_t end, Run& run) {
         std::vector<std::uint32_t> seenBy(triangles.size(), UINT32_MAX);
-        for (std::size_t k = begin; k < end && run.count < cap; ++k) {
+        for (std::size_t k = begin; k < end && run.count < cap && !stopAt(k, begin); ++k) {
             const std::uint32_t a = live[k];
             grid.forCells(triangles[a], boxes[a], [&](std::size_t cell) {
                 const auto first = entries.begin() + cellStart[cell];
@@ -300,7 +311,8 @@ constexpr std::size_t FACE_BLOCK = 65536;
 
 }  // namespace
 
-UvOverlapReport findUvOverlaps(const CornerUvs& uvs, const SurfaceMesh& mesh) {
+UvOverlapReport findUvOverlaps(const CornerUvs& uvs, const SurfaceMesh& mesh,
+                               const std::stop_token& stop) {
     GRASS_ASSERT(uvs.size() == mesh.n_faces());
     UvOverlapReport report;
     std::vector<atlas::Triangle2> triangles(uvs.size());
@@ -316,7 +328,7 @@ UvOverlapReport findUvOverlaps(const CornerUvs& uvs, const SurfaceMesh& mesh) {
     std::vector<Block> blocks((uvs.size() + FACE_BLOCK - 1) / FACE_BLOCK);
     ThreadPool::shared().run(
         blocks.size(), blocks.size(), [&](std::size_t first, std::size_t last) {
-            for (std::size_t block = first; block < last; ++block) {
+            for (std::size_t block = first; block < last && !stop.stop_requested(); ++block) {
                 Block& sums = blocks[block];
                 const std::size_t end = std::min(uvs.size(), (block + 1) * FACE_BLOCK);
                 for (std::size_t f = block * FACE_BLOCK; f < end; ++f) {
@@ -353,7 +365,7 @@ UvOverlapReport findUvOverlaps(const CornerUvs& uvs, const SurfaceMesh& mesh) {
         totalUv += sums.totalUv;
         report.outsideUnitSquare += sums.outside;
     }
-    if (uvs.empty())
+    if (uvs.empty() || stop.stop_requested())
         return report;
 
     const double extent = hi.x >= lo.x ? std::max({1.0, hi.x - lo.x, hi.y - lo.y}) : 1.0;
@@ -370,7 +382,7 @@ UvOverlapReport findUvOverlaps(const CornerUvs& uvs, const SurfaceMesh& mesh) {
             ++report.degenerateFaces;
     }
     report.overlappingPairs =
-        atlas::countOverlaps(triangles, active, 1e-6 * extent, UV_OVERLAP_CAP, nullptr);
+        atlas::countOverlaps(triangles, active, 1e-6 * extent, UV_OVERLAP_CAP, nullptr, stop);
     return report;
 }
 

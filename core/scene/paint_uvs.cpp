@@ -33,10 +33,10 @@ std::string overlapText(const UvOverlapReport& report) {
 
 PaintUvs makeUvsPaintable(SurfaceMesh& mesh, bool hasUv, const std::function<bool()>& textured,
                           const std::filesystem::path& atlasFile, int mapResolution,
-                          std::vector<std::string>& notes) {
+                          std::vector<std::string>& notes, const std::stop_token& stop) {
     PaintUvs result;
-    const UvOverlapReport report = findUvOverlaps(cornerUvsOf(mesh), mesh);
-    if (hasUv && report.paintable())
+    const UvOverlapReport report = findUvOverlaps(cornerUvsOf(mesh), mesh, stop);
+    if ((hasUv && report.paintable()) || stop.stop_requested())
         return result;
     if (textured()) {
         notes.push_back("UVs are not paintable (" + overlapText(report) +

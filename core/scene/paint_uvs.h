@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -32,10 +33,11 @@ struct PaintUvs {
 // paintable (it decodes the surface's material); `atlasFile`: the project's kept
 // atlas (empty: none); `mapResolution`: the coarsest map side painted in it, which the atlas
 // keeps its gutters for (a brush's texels reach one texel past a chart, a bilinear read one
-// more). Notes say what was done and why.
+// more). Notes say what was done and why. A request on `stop` ends the check of the UVs early
+// and leaves them as they are (the caller checks the token: the result means nothing then).
 PaintUvs makeUvsPaintable(SurfaceMesh& mesh, bool hasUv, const std::function<bool()>& textured,
                           const std::filesystem::path& atlasFile, int mapResolution,
-                          std::vector<std::string>& notes);
+                          std::vector<std::string>& notes, const std::stop_token& stop = {});
 
 // What a save of maps painted in a generated atlas must do: write it next to the project's mesh
 // file (terrain.glb → terrain.uvatlas, atomically) and name it in project.mesh.uvAtlas; `uvs`

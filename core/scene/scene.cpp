@@ -126,16 +126,18 @@ static int coarsestMapSide(const Project& project) {
 Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded,
                                            std::vector<std::string>* notes, SurfaceLook* look,
                                            PaintUvs* paintUvs, glm::dvec3* groundOrigin,
-                                           GltfImport* alreadyRead) {
+                                           GltfImport* alreadyRead, std::stop_token stop) {
     const MeshSource& source = loaded.project.mesh;
     if (!source.isFile)
         return makeProceduralMesh(source.procedural);
     auto path = resolveAssetPath(loaded.folder, source.file, "/mesh/file");
     if (!path)
         return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
-    auto imported = alreadyRead != nullptr
-                        ? Result<GltfImport>(std::move(*alreadyRead))
-                        : loadGltf(*path, GltfPlacement::GroundNearOrigin, source.metresPerUnit);
+    auto imported = alreadyRead != nullptr ? Result<GltfImport>(std::move(*alreadyRead))
+                                           : loadGltf(*path, GltfPlacement::GroundNearOrigin,
+                                                      source.metresPerUnit, glm::dvec3(0.0), stop);
+    if (stop.stop_requested())
+        return buildStopped(loaded);
     if (!imported)
         return fromProjectField(loaded, "/mesh/file", imported.error());
     if (notes)
@@ -160,7 +162,9 @@ Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded,
     std::vector<std::string> uvNotes;
     PaintUvs uvs = makeUvsPaintable(
         imported->mesh, imported->hasUv, [&] { return !readLook().baseTexture.pixels.empty(); },
-        atlasFile, coarsestMapSide(loaded.project), uvNotes);
+        atlasFile, coarsestMapSide(loaded.project), uvNotes, stop);
+    if (stop.stop_requested())
+        return buildStopped(loaded);
     if (notes)
         for (auto& note : uvNotes)
             notes->push_back(path->string() + ": " + note);
@@ -588,7 +592,7 @@ Result<Scene> buildScene(const LoadedProject& loaded, GltfImport* alreadyRead,
     SurfaceLook look;
     PaintUvs paintUvs;
     glm::dvec3 groundOrigin{0.0};
-    auto mesh = loadProjectMesh(loaded, &notes, &look, &paintUvs, &groundOrigin, alreadyRead);
+    auto mesh = loadProjectMesh(loaded, &notes, &look, &paintUvs, &groundOrigin, alreadyRead, stop);
     if (!mesh)
         return mesh.error();
     if (stop.stop_requested())

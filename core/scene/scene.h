@@ -193,13 +193,12 @@ Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
 // `alreadyRead`, when given, is the project's mesh file as loadGltf read it for the project
 // (GltfPlacement::GroundNearOrigin, the project's unit): taken instead of reading the file again
 // (a new project around a mesh has just read it to size the field; an 8-million-triangle ground
-// takes seconds to read).
-Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& project,
-                                           std::vector<std::string>* notes,
-                                           SurfaceLook* look = nullptr,
-                                           PaintUvs* paintUvs = nullptr,
-                                           glm::dvec3* groundOrigin = nullptr,
-                                           GltfImport* alreadyRead = nullptr);
+// takes seconds to read). `stop`: a request ends the read (loadGltf's) or the making of paintable
+// UVs at their next look at it, with buildStopped's error.
+Result<MovableSurfaceMesh> loadProjectMesh(
+    const LoadedProject& project, std::vector<std::string>* notes, SurfaceLook* look = nullptr,
+    PaintUvs* paintUvs = nullptr, glm::dvec3* groundOrigin = nullptr,
+    GltfImport* alreadyRead = nullptr, std::stop_token stop = {});
 
 // The ground origin buildScene would find (Scene::groundOrigin), for a command that builds the
 // physics before its scene: the ground file is loaded only when a mesh collider may need it.

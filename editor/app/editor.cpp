@@ -43,7 +43,7 @@ DocumentJob::Work Editor::documentWork(ReadDocument read, bool withPhysics, Docu
             name = std::move(name)](DocumentJob& job) -> Result<GrownDocument> {
         OptionalMesh meshRead;
         GrownDocument grown;
-        auto loaded = read(meshRead, grown.note);
+        auto loaded = read(meshRead, grown.note, job.stopToken());
         if (!loaded)
             return loaded.error();
         if (job.cancelled())
@@ -132,11 +132,11 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     const bool withPhysics = !e.mSettings.noPhysics;
     ReadDocument read;
     if (fromMesh)
-        read = [start](OptionalMesh& meshRead, std::string&) {
-            return newProjectFromMesh(start, NEW_MESH_PROJECT_BLADES, &meshRead.emplace());
+        read = [start](OptionalMesh& meshRead, std::string&, std::stop_token stop) {
+            return newProjectFromMesh(start, NEW_MESH_PROJECT_BLADES, &meshRead.emplace(), stop);
         };
     else
-        read = [project = std::move(*loaded)](OptionalMesh&, std::string&) {
+        read = [project = std::move(*loaded)](OptionalMesh&, std::string&, std::stop_token) {
             return Result<core::LoadedProject>(project);
         };
     const DocumentAction action = fromMesh ? DocumentAction::NewFromMesh : DocumentAction::Open;
@@ -329,7 +329,8 @@ bool Editor::applyRequests() {
     if (state.newRequested && !waiting) {
         state.newRequested = false;
         startDocumentJob(DocumentAction::New, {},
-                         [folder = std::filesystem::current_path()](OptionalMesh&, std::string&) {
+                         [folder = std::filesystem::current_path()](OptionalMesh&, std::string&,
+                                                                    std::stop_token) {
                              return Result<core::LoadedProject>(
                                  core::LoadedProject{core::Project{}, folder, {}});
                          });
@@ -337,16 +338,18 @@ bool Editor::applyRequests() {
     if (!state.openRequested.empty() && !waiting) {
         const std::filesystem::path file = std::exchange(state.openRequested, {});
         startDocumentJob(DocumentAction::Open, file,
-                         [file](OptionalMesh&, std::string&) { return core::loadProject(file); });
+                         [file](OptionalMesh&, std::string&, std::stop_token) {
+                             return core::loadProject(file);
+                         });
     }
     applyImports();
     if (state.recoverRequested && !waiting) {
         state.recoverRequested = false;
-        startDocumentJob(
-            DocumentAction::Recover, {},
-            [recovered = std::move(*state.recoveryOffer)](OptionalMesh&, std::string&) {
-                return Result<core::LoadedProject>(recovered);
-            });
+        startDocumentJob(DocumentAction::Recover, {},
+                         [recovered = std::move(*state.recoveryOffer)](OptionalMesh&, std::string&,
+                                                                       std::stop_token) {
+                             return Result<core::LoadedProject>(recovered);
+                         });
         state.recoveryOffer.reset();
     }
     // Re-grow once the edit has ended, not on every frame of a drag. A re-grow still running

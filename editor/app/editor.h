@@ -99,8 +99,9 @@ private:
     // mesh) on a worker, which then grows its field (document_job.h). A replayed script waits
     // for it in this frame, so its pictures do not depend on the machine's speed.
     using OptionalMesh = std::optional<core::GltfImport>;
-    using ReadDocument =
-        std::function<Result<core::LoadedProject>(OptionalMesh& meshRead, std::string& note)>;
+    // `stop`: the job's (its Cancel, the window closed), for a read of a large mesh to end early.
+    using ReadDocument = std::function<Result<core::LoadedProject>(
+        OptionalMesh& meshRead, std::string& note, std::stop_token stop)>;
     void startDocumentJob(DocumentAction action, std::filesystem::path file, ReadDocument read);
     // The worker's part of a document job: `read`, then the field grown (`name`: the file, for
     // the stage shown).

@@ -20,18 +20,21 @@ void Editor::applyImports() {
         return;
     if (!s.newFromMeshRequested.empty()) {
         const fs::path file = std::exchange(s.newFromMeshRequested, {});
-        startDocumentJob(
-            DocumentAction::NewFromMesh, file, [file](OptionalMesh& read, std::string&) {
-                return newProjectFromMesh(file, NEW_MESH_PROJECT_BLADES, &read.emplace());
-            });
+        startDocumentJob(DocumentAction::NewFromMesh, file,
+                         [file](OptionalMesh& read, std::string&, std::stop_token stop) {
+                             return newProjectFromMesh(file, NEW_MESH_PROJECT_BLADES,
+                                                       &read.emplace(), stop);
+                         });
         return;
     }
     if (!s.importMeshRequested.empty()) {
         const fs::path file = std::exchange(s.importMeshRequested, {});
         // The worker reads and grows from a copy of the project: the document waits meanwhile.
         startDocumentJob(DocumentAction::ImportMesh, file,
-                         [file, loaded = s.doc.loaded](OptionalMesh& read, std::string& note) {
-                             return projectWithImportedMesh(loaded, file, &note, &read.emplace());
+                         [file, loaded = s.doc.loaded](OptionalMesh& read, std::string& note,
+                                                       std::stop_token stop) {
+                             return projectWithImportedMesh(loaded, file, &note, &read.emplace(),
+                                                            stop);
                          });
         return;
     }

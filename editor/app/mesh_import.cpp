@@ -54,9 +54,10 @@ Result<void> copyAssetFiles(const fs::path& from, const fs::path& to) {
 }
 
 Result<core::LoadedProject> newProjectFromMesh(const fs::path& meshFile, std::size_t targetBlades,
-                                               core::GltfImport* read) {
+                                               core::GltfImport* read, std::stop_token stop) {
     // A new project's mesh is in metres (projectForMesh), the unit its placement is judged in.
-    auto imported = core::loadGltf(meshFile, core::GltfPlacement::GroundNearOrigin);
+    auto imported =
+        core::loadGltf(meshFile, core::GltfPlacement::GroundNearOrigin, 1.0, glm::dvec3(0.0), stop);
     if (!imported)
         return imported.error();
     auto loaded = core::projectForMesh(meshFile, imported->mesh, targetBlades);
@@ -75,7 +76,7 @@ void markNewFromMesh(EditorState& state, const fs::path& meshFile) {
 
 Result<core::LoadedProject> projectWithImportedMesh(const core::LoadedProject& loaded,
                                                     const fs::path& meshFile, std::string* note,
-                                                    core::GltfImport* read) {
+                                                    core::GltfImport* read, std::stop_token stop) {
     core::LoadedProject next = loaded;
     core::MeshSource& mesh = next.project.mesh;
     if (!mesh.isFile) {
@@ -84,8 +85,8 @@ Result<core::LoadedProject> projectWithImportedMesh(const core::LoadedProject& l
     }
     // Read as the project will read it (its placement and unit), so the field grows on this
     // reading instead of the file's second one.
-    auto imported =
-        core::loadGltf(meshFile, core::GltfPlacement::GroundNearOrigin, mesh.metresPerUnit);
+    auto imported = core::loadGltf(meshFile, core::GltfPlacement::GroundNearOrigin,
+                                   mesh.metresPerUnit, glm::dvec3(0.0), stop);
     if (!imported)
         return imported.error();
     mesh.isFile = true;

@@ -31,9 +31,11 @@ Result<void> copyAssetFiles(const std::filesystem::path& from, const std::filesy
 // A new, unsaved project around `meshFile` (its folder is the mesh's, so the mesh needs no copy
 // until it is saved elsewhere). The error names the file and why it cannot be read. `read`, when
 // given, receives the mesh as read, for growField to grow on instead of reading the file again.
+// `stop` ends the read early (core::loadGltf's).
 Result<core::LoadedProject> newProjectFromMesh(const std::filesystem::path& meshFile,
                                                std::size_t targetBlades = NEW_MESH_PROJECT_BLADES,
-                                               core::GltfImport* read = nullptr);
+                                               core::GltfImport* read = nullptr,
+                                               std::stop_token stop = {});
 // Once the editor holds that project (File › New from mesh, or `grass-editor rock.glb`): it is
 // unsaved, existing only in memory, and the status line says where it came from.
 void markNewFromMesh(EditorState& state, const std::filesystem::path& meshFile);
@@ -44,9 +46,11 @@ void markNewFromMesh(EditorState& state, const std::filesystem::path& meshFile);
 // and up axis of a previous glTF surface are kept (a re-exported model keeps its units).
 // `note` says what was copied. The mesh is read first: a broken file copies nothing. `read`,
 // when given, receives the mesh as read, for growField to grow on instead of reading it again.
+// `stop` ends the read early (core::loadGltf's); nothing is copied then.
 Result<core::LoadedProject> projectWithImportedMesh(const core::LoadedProject& loaded,
                                                     const std::filesystem::path& meshFile,
                                                     std::string* note,
-                                                    core::GltfImport* read = nullptr);
+                                                    core::GltfImport* read = nullptr,
+                                                    std::stop_token stop = {});
 
 }  // namespace grass::editor

@@ -90,6 +90,26 @@ TEST(MeshImport, ABrokenMeshIsRefusedNamingTheFileAndCopiesNothing) {
     EXPECT_FALSE(editor::newProjectFromMesh(broken).ok());
 }
 
+// The editor's Cancel (or its window closed) while a mesh is read stops the read: an error naming
+// the file, and nothing copied into the project.
+TEST(MeshImport, AStoppedReadIsRefusedNamingTheFileAndCopiesNothing) {
+    const ScratchFolder project("import-stopped");
+    core::LoadedProject loaded{core::Project{}, project.path(), project.path() / "project.json"};
+    std::stop_source source;
+    source.request_stop();
+    const fs::path stone = sourceDir() / STONE;
+    auto next =
+        editor::projectWithImportedMesh(loaded, stone, nullptr, nullptr, source.get_token());
+    ASSERT_FALSE(next.ok());
+    EXPECT_EQ(next.error(), core::readStopped(stone));
+    EXPECT_FALSE(fs::exists(project.path() / "meshes"));
+    auto fresh = editor::newProjectFromMesh(stone, editor::NEW_MESH_PROJECT_BLADES, nullptr,
+                                            source.get_token());
+    ASSERT_FALSE(fresh.ok());
+    EXPECT_EQ(fresh.error(), core::readStopped(stone));
+    EXPECT_TRUE(editor::newProjectFromMesh(stone).ok());
+}
+
 TEST(MeshImport, AMeshFromElsewhereIsCopiedInWithTheFilesItNames) {
     const ScratchFolder project("import-copy");
     core::LoadedProject loaded{core::Project{}, project.path(), project.path() / "project.json"};

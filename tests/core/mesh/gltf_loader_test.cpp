@@ -322,6 +322,25 @@ TEST(GltfLoader, RecognisesGlbByMagicNotByExtension) {
     expectSameMesh(loadOk(dir / "binary.gltf"), loadOk(dir / "text.glb"));
 }
 
+// A read whose stop was requested (the editor's Cancel while a large mesh is read) ends with its
+// own error naming the file, whatever stage it is in; the same file reads without one.
+TEST(GltfLoader, AStopRequestedEndsTheReadNamingTheFile) {
+    const fs::path dir = test::scratchDir("gltf_stopped");
+    test::writeGltf(dir / "grid.glb", test::singleMeshAsset(test::gridPrimitive(8, 8, 16)),
+                    BufferStorage::Glb);
+    std::stop_source source;
+    source.request_stop();
+    auto stopped =
+        loadGltf(dir / "grid.glb", GltfPlacement::GroundNearOrigin, 1.0, {}, source.get_token());
+    ASSERT_FALSE(stopped.ok());
+    EXPECT_EQ(stopped.error(), readStopped(dir / "grid.glb"));
+    EXPECT_EQ(stopped.error().path, (dir / "grid.glb").string());
+    auto read = loadGltf(dir / "grid.glb", GltfPlacement::GroundNearOrigin, 1.0, {},
+                         std::stop_source().get_token());
+    ASSERT_TRUE(read.ok()) << read.error().str();
+    EXPECT_EQ(read->mesh->n_faces(), 512u);
+}
+
 TEST(GltfLoader, LoadsEmbeddedBase64Buffers) {
     const fs::path dir = test::scratchDir("gltf_base64");
     const GltfAsset asset = hierarchyAsset();

@@ -389,6 +389,13 @@ TEST(UvOverlaps, ALargeSearchOnThreadsFindsThePairsInTheSerialOrder) {
     EXPECT_EQ(atlas::countOverlaps(triangles, active, 1e-9, 100'000, &first), 100'000u);
     ASSERT_EQ(first.size(), 100'000u);
     EXPECT_EQ(first.back().a, 2u * 99'999u);
+    // A stop requested ends every run before its first triangle: nothing is counted (the
+    // caller, who asked, throws the count away).
+    std::stop_source source;
+    source.request_stop();
+    EXPECT_EQ(
+        atlas::countOverlaps(triangles, active, 1e-9, UV_OVERLAP_CAP, nullptr, source.get_token()),
+        0u);
 }
 
 // ---- findUvOverlaps ----

@@ -93,6 +93,34 @@ TEST(PaintUvs, WithThePlanarProjectionTheSameStrokeReachedTheGround) {
     EXPECT_GT(canopy, 0u) << "planar UVs share the ground's texels with the canopy";
 }
 
+// A stop requested while a load makes the UVs paintable (the editor's Cancel: the overlap search
+// and the atlas take seconds on a large mesh) leaves the mesh's UVs as they are and makes no
+// atlas; loadProjectMesh then ends with the build's stop error, naming the project.
+TEST(PaintUvs, AStopRequestedMakesNoAtlas) {
+    const test::ScratchFolder folder("paint-uvs-stopped");
+    const LoadedProject loaded = test::writeRulesTerrainProject(folder.path(), PROJECT);
+    auto imported = loadGltf(folder / "terrain.glb");
+    ASSERT_TRUE(imported);
+    const CornerUvs planar = cornerUvsOf(imported->mesh);
+    std::stop_source source;
+    source.request_stop();
+    std::vector<std::string> notes;
+    const PaintUvs stopped = makeUvsPaintable(
+        imported->mesh, imported->hasUv, [] { return false; }, {}, 256, notes, source.get_token());
+    EXPECT_FALSE(stopped.generated);
+    EXPECT_TRUE(notes.empty());
+    EXPECT_EQ(cornerUvsOf(imported->mesh), planar) << "the UVs were changed";
+    const PaintUvs made = makeUvsPaintable(
+        imported->mesh, imported->hasUv, [] { return false; }, {}, 256, notes);
+    EXPECT_TRUE(made.generated) << "without the stop the planar UVs get an atlas";
+
+    auto mesh =
+        loadProjectMesh(loaded, nullptr, nullptr, nullptr, nullptr, nullptr, source.get_token());
+    ASSERT_FALSE(mesh);
+    EXPECT_EQ(mesh.error(), buildStopped(loaded));
+    EXPECT_TRUE(loadProjectMesh(loaded, nullptr));
+}
+
 TEST(PaintUvs, AKeptAtlasIsWhatTheNextOpenPaintsIn) {
     const test::ScratchFolder folder("paint-uvs-kept");
     LoadedProject loaded = test::writeRulesTerrainProject(folder.path(), PROJECT);
