@@ -32,11 +32,16 @@ double InteractionQuality::estimateMs(int level, double nowS) const {
     return 0.0;  // nothing measured yet: assume it fits
 }
 
-int InteractionQuality::update(double lastFrameMs, bool interacting, double nowS) {
+int InteractionQuality::update(double lastFrameMs, bool interacting, double nowS,
+                               bool lastFrameDrawn) {
     Measured& last = mMeasured[std::size_t(mLevel)];
-    last.ms = nowS - last.atS <= MEASURED_FOR_S ? (1.0 - SMOOTHING) * last.ms + SMOOTHING * lastFrameMs
-                                                : lastFrameMs;
-    last.atS = nowS;
+    const bool known = nowS - last.atS <= MEASURED_FOR_S;
+    if (lastFrameDrawn) {
+        last.ms = known ? (1.0 - SMOOTHING) * last.ms + SMOOTHING * lastFrameMs : lastFrameMs;
+        last.atS = nowS;
+    } else if (known) {
+        last.atS = nowS;
+    }
     if (!mSettings.enabled) {
         mLevel = 0;
         return mLevel;

@@ -47,8 +47,11 @@ public:
     // Once a frame, before drawing it: the last frame's wall time (at the level it was drawn
     // at), whether the user is interacting now, and the time (seconds, any steady clock).
     // Returns the level to draw this frame at (0: full quality): the least reduced rung whose
-    // frame is expected within the budget, the last rung if none is.
-    int update(double lastFrameMs, bool interacting, double nowS);
+    // frame is expected within the budget, the last rung if none is. `lastFrameDrawn` false: the
+    // last frame showed the picture before it again (the editor at rest, editor/app/
+    // view_redraw.h), so its time says nothing of the rung's cost; the rung's measurement, if
+    // any, still holds (the same view costs the same) and stays trusted.
+    int update(double lastFrameMs, bool interacting, double nowS, bool lastFrameDrawn = true);
 
     int level() const { return mLevel; }
     double lastInteractionS() const { return mLastInteractionS; }

@@ -20,6 +20,7 @@ struct OrbitCamera {
     float fovYRad = 0.785f;
     float nearPlane = 0.05f;
     float farPlane = 500.0f;
+    bool operator==(const OrbitCamera&) const = default;
 
     glm::vec3 position() const;
     glm::mat4 view() const;

@@ -31,6 +31,10 @@ namespace {
 constexpr int TURNTABLE_VIEWS = 24;
 // While a field grows on a worker: five frames a second at most (Editor::frame).
 constexpr int LOADING_FRAME_MS = 200;
+// A frame that drew nothing new and saw no input waits this long at most for an event before the
+// next one: at rest the window draws its panels ten times a second (clocks, progress bars, jobs
+// that end), not as fast as the machine allows.
+constexpr double IDLE_WAIT_S = 0.1;
 
 }  // namespace
 
@@ -234,7 +238,9 @@ Result<bool> Editor::frame() {
         }
     }
     mSkippedS = 0.0;
+    const std::uint64_t eventsBefore = mEventsAtPoll;
     InputState input = mWindow->pollInput();
+    mEventsAtPoll = mWindow->eventCount();
     mScriptShot.clear();
     if (!mSettings.scriptFile.empty()) {
         auto step = nextScriptStep(tick);
@@ -291,7 +297,14 @@ Result<bool> Editor::frame() {
     }
     mWindow->gatherEvents();  // what came in while the frame rendered: stamped before the swap
     mWindow->swapBuffers();
-    updateStatus(statusDue, timingsDue);
+    updateStatus(statusDue, timingsDue && mViewDrawn);
+    // At rest (the picture as it was, no event since the last frame read its input) the next
+    // frame waits for an event: a pointer moved, a key, a click end the wait at once. Scripts
+    // run at the speed of their frames; a load paces its frames itself (above).
+    const bool idle = !mViewDrawn && mSettings.scriptFile.empty() && !waitingForJob &&
+                      eventsBefore == mEventsAtPoll && mWindow->eventCount() == mEventsAtPoll;
+    if (idle)
+        mWindow->waitForEvents(IDLE_WAIT_S);
     return true;
 }
 
@@ -618,7 +631,7 @@ void Editor::chooseQuality() {
     const bool playing = view.timeline.playing() && !mReplay;
     const double nowS = std::chrono::duration<double>(Clock::now() - mStartTime).count();
     const bool wasReduced = view.quality.level() > 0;
-    view.quality.update(mFrameS * 1000.0, mInteracting || playing, nowS);
+    view.quality.update(mFrameS * 1000.0, mInteracting || playing, nowS, mViewDrawn || mFrame == 0);
     // The first full frame after a reduced one: how long after the last input it is done.
     if (wasReduced && view.quality.level() == 0)
         mFullSinceS = view.quality.lastInteractionS();
@@ -645,13 +658,27 @@ void Editor::render(int width, int height) {
     // The ladder lowers the resolution only with MSAA off: a scaled blit needs one sample.
     const int w = std::max(1, int(float(mView.w) * r.resolutionScale));
     const int h = std::max(1, int(float(mView.h) * r.resolutionScale));
-    if (!mTarget || mTarget->width() != w || mTarget->height() != h || mTarget->samples() != samples)
+    // Kept from frame to frame: a project without MSAA, and every reduced frame, asked for 0
+    // samples, got 1, and made a new framebuffer each frame.
+    if (!mTarget || !mTarget->fits(w, h, samples)) {
         mTarget = std::make_unique<gl::Framebuffer>(w, h, samples);
+        mDrawnView.reset();
+    }
     syncMapOverlay();
     // In a session the window goes on while a worker places billboards (seconds on a large
     // mesh); scripts and screenshots draw them in the frame that asks, as `grass render` does.
     mLive.renderer->placeBillboardsInBackground(!mReplay);
-    mLive.renderer->render(mCamera, w, h, *mTarget, mState.view.options);
+    // The picture is drawn only when what it shows changed (app/view_redraw.h).
+    ViewInputs inputs = viewInputsOf(
+        *mLive.renderer, mState.mapsChanged, mLive.physics ? mLive.physics->steps : 0, mCamera,
+        {w, h, samples}, mState.view.options, mState.doc.project(), *mLive.scene);
+    mViewDrawn = mSettings.redrawEveryFrame ||
+                 !viewStillDrawn(mDrawnView, inputs, mLive.renderer->placingBillboards());
+    if (mViewDrawn) {
+        mLive.renderer->render(mCamera, w, h, *mTarget, mState.view.options);
+        mDrawnView = std::move(inputs);
+        ++mViewsDrawn;
+    }
     mState.transient.status.placingBillboards = mLive.renderer->placingBillboards();
     for (std::string& note : mLive.renderer->takeNotes())
         mState.transient.message = std::move(note);  // e.g. billboards refused after T

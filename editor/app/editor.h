@@ -27,6 +27,7 @@
 #include "app/live_scene.h"
 #include "app/panels.h"
 #include "app/session_stats.h"
+#include "app/view_redraw.h"
 #include "app/window.h"
 #include "gl/framebuffer.h"
 #include "scene/camera.h"
@@ -57,6 +58,9 @@ struct EditorSettings {
     // The viewport's adaptive quality (core/quality/interaction_quality.h).
     bool adaptive = true;
     double frameBudgetMs = 80.0;
+    // Draw the viewport's picture every frame, even when it would be the last one again
+    // (app/view_redraw.h): for tests that compare the two.
+    bool redrawEveryFrame = false;
 };
 
 // The viewport rect (points, y down) in GL pixels (y up), at least one pixel.
@@ -144,6 +148,13 @@ private:
     Live mLive;
     bool mRegrowOnSameSurface = false;  // the running re-grow grows on mLive's mesh
     std::unique_ptr<gl::Framebuffer> mTarget;
+    // What mTarget's picture was drawn from (app/view_redraw.h); whether this frame drew it.
+    std::optional<ViewInputs> mDrawnView;
+    bool mViewDrawn = false;
+    int mViewsDrawn = 0;  // for the --wall-clock summary
+    // The window's event count after this frame's input was read: a frame that drew nothing new
+    // and saw no event since waits for one (Editor::frame).
+    std::uint64_t mEventsAtPoll = 0;
     PixelRect mView;
     int mFrame = 0;
     std::size_t mScriptStep = 0;

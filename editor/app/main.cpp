@@ -68,6 +68,11 @@ int main(int argc, char** argv) {
                 "count, segments and resolution while you orbit, paint, drag or play, to keep "
                 "--frame-budget-ms, and draws the full picture 0.3 s after input stops)",
                 &noAdaptive);
+    parser.flag("--redraw-every-frame",
+                "draw the viewport's picture in every frame (by default a frame whose camera, "
+                "project, time and field are as in the last drawn picture shows that picture "
+                "again, and a window at rest waits for input; for tests that compare the two)",
+                &settings.redrawEveryFrame);
     parser.number("--frame-budget-ms", "MS",
                   "the frame time the viewport keeps while you interact", &settings.frameBudgetMs,
                   5.0, 10000.0, "80");

@@ -14,6 +14,7 @@ namespace grass::editor {
 struct WindowCallbacks {
     static Window* self(GLFWwindow* w) { return static_cast<Window*>(glfwGetWindowUserPointer(w)); }
     static void cursor(GLFWwindow* w, double x, double y) {
+        ++self(w)->mEvents;
         InputState& input = self(w)->mInput;
         if (input.leftDown || input.middleDown || input.rightDown) {
             input.dragDx += x - input.cursorX;
@@ -23,15 +24,21 @@ struct WindowCallbacks {
         input.cursorY = y;
     }
     static void drop(GLFWwindow* w, int count, const char** paths) {
+        ++self(w)->mEvents;
         for (int i = 0; i < count; ++i)
             if (paths[i])
                 self(w)->mInput.dropped.emplace_back(paths[i]);
     }
-    static void enter(GLFWwindow* w, int entered) { self(w)->mInput.cursorInside = entered != 0; }
+    static void enter(GLFWwindow* w, int entered) {
+        ++self(w)->mEvents;
+        self(w)->mInput.cursorInside = entered != 0;
+    }
     static void character(GLFWwindow* w, unsigned int codepoint) {
+        ++self(w)->mEvents;
         appendUtf8(self(w)->mInput.typed, char32_t(codepoint));
     }
     static void button(GLFWwindow* w, int button, int action, int mods) {
+        ++self(w)->mEvents;
         InputState& input = self(w)->mInput;
         const bool down = action == GLFW_PRESS;
         if (button == GLFW_MOUSE_BUTTON_LEFT) {
@@ -54,10 +61,12 @@ struct WindowCallbacks {
         input.modifiers = uiModifiers(mods);
     }
     static void scroll(GLFWwindow* w, double dx, double dy) {
+        ++self(w)->mEvents;
         self(w)->mInput.scrollSteps += dy;
         self(w)->mInput.scrollX += dx;
     }
     static void key(GLFWwindow* w, int key, int, int action, int mods) {
+        ++self(w)->mEvents;
         InputState& input = self(w)->mInput;
         input.shiftDown =
             (mods & GLFW_MOD_SHIFT) != 0 ||
@@ -183,6 +192,10 @@ void Window::hide() {
 
 void Window::gatherEvents() {
     glfwPollEvents();
+}
+
+void Window::waitForEvents(double timeoutS) {
+    glfwWaitEventsTimeout(timeoutS);
 }
 
 InputState Window::pollInput() {

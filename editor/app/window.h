@@ -4,6 +4,7 @@
 // them into a ui::Input).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -73,6 +74,10 @@ public:
     // Called while a frame waits: GLFW reports events only when polled, and a double-click
     // whose second click was polled a slow frame after its first read as two single clicks.
     void gatherEvents();
+    // Sleeps until an event comes (collected as gatherEvents does) or `timeoutS` has passed.
+    void waitForEvents(double timeoutS);
+    // How many input events (pointer, buttons, wheel, keys, text, drops) have come so far.
+    std::uint64_t eventCount() const { return mEvents; }
     // Seconds since the window opened: the clock of input events and the UI.
     double nowS() const;
     void framebufferSize(int* width, int* height) const;
@@ -87,6 +92,7 @@ private:
     Window() = default;
     GLFWwindow* mWindow = nullptr;
     InputState mInput;
+    std::uint64_t mEvents = 0;
     double mOpenedS = 0.0;  // glfwGetTime() when the window opened
     friend struct WindowCallbacks;
 };

@@ -27,11 +27,14 @@ FramebufferHandle makeFramebuffer() {
 
 }  // namespace
 
-Framebuffer::Framebuffer(int width, int height, int samples)
-    : mWidth(width), mHeight(height), mSamples(samples) {
+int Framebuffer::samplesFor(int asked) {
     GLint maxSamples = 1;
     glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
-    mSamples = std::clamp(samples, 1, std::max(maxSamples, 1));
+    return std::clamp(asked, 1, std::max(maxSamples, 1));
+}
+
+Framebuffer::Framebuffer(int width, int height, int samples)
+    : mWidth(width), mHeight(height), mSamples(samplesFor(samples)) {
     mFramebuffer = makeFramebuffer();
     mColor = makeRenderbuffer(GL_RGBA8, width, height, mSamples);
     mDepth = makeRenderbuffer(GL_DEPTH_COMPONENT32F, width, height, mSamples);

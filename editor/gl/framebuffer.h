@@ -37,6 +37,13 @@ public:
     int width() const { return mWidth; }
     int height() const { return mHeight; }
     int samples() const { return mSamples; }
+    // The samples a framebuffer asked for `asked` gets: at least 1 (0 means none), at most the
+    // driver's limit. A caller that keeps one compares against this, not what it asked for.
+    static int samplesFor(int asked);
+    // Whether this framebuffer is what Framebuffer(width, height, samples) would make.
+    bool fits(int width, int height, int samples) const {
+        return mWidth == width && mHeight == height && mSamples == samplesFor(samples);
+    }
     void bind() const;
     // Resolves (if multisampled) and reads back the colour, flipped so row 0 is the top.
     Rgba8Image readPixels() const;

@@ -51,6 +51,7 @@ struct CullSettings {
     // tips' whiteness; its snow uniforms are set through snowProgram() before run().
     bool snow = false;
     bool anyEnabled() const { return frustum || orientation || distance || occlusion; }
+    bool operator==(const CullSettings&) const = default;
 };
 
 // Blades of the last culled frame, summed over layers. in = drawn + Σ culled.

@@ -76,6 +76,7 @@ struct RenderOptions {
     // Blade widths × this: 1, except in the editor's thinned picture while the user interacts,
     // where fewer, wider blades keep the field's coverage (core/quality/interaction_quality.h).
     float widthScale = 1.0f;
+    bool operator==(const RenderOptions&) const = default;
 };
 
 // Project settings → options; Auto picks strips on software rasterizers (SPEC §7 figures).

@@ -166,11 +166,13 @@ void SceneRenderer::render(const core::OrbitCamera& camera, int width, int heigh
 }
 
 void SceneRenderer::uploadBlades(std::size_t layer, std::span<const core::Blade> blades) {
+    ++mContentGeneration;
     if (layer < mFields.size())
         mFields[layer].uploadBlades(blades);
 }
 
 void SceneRenderer::uploadRegrown(std::size_t layer, const core::RegrowReport& report) {
+    ++mContentGeneration;
     if (layer >= mFields.size())
         return;
     mFields[layer].uploadPatches(report.patches, false);

@@ -79,6 +79,10 @@ public:
     // texels shows 1 everywhere), uploaded now; null: no overlay. The editor calls it when the
     // painted map or the choice of map changes.
     void setMapOverlay(const core::MapImage* map);
+    // Counts the changes made outside render() to what the next frame draws (uploadBlades,
+    // uploadRegrown, setMapOverlay): with the camera, the options and the scene's looks, what
+    // decides whether a frame would draw what the last one did (editor/app/view_redraw.h).
+    std::uint64_t contentGeneration() const { return mContentGeneration; }
     // What the user is to be told about the frames drawn so far, each once (the editor shows it
     // in the status bar): billboards it could not place for a technique that draws them.
     std::vector<std::string> takeNotes() { return std::exchange(mNotes, {}); }
@@ -179,6 +183,7 @@ private:
     std::size_t mBillboardDrawCalls = 0;
     bool mStatsFrame = false;
     std::vector<std::string> mPasses;
+    std::uint64_t mContentGeneration = 0;
 };
 
 }  // namespace grass::render

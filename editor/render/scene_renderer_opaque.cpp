@@ -176,6 +176,7 @@ void SceneRenderer::drawOpaque(const gl::Program& program, const RenderOptions& 
 }
 
 void SceneRenderer::setMapOverlay(const core::MapImage* map) {
+    ++mContentGeneration;
     if (!map) {
         mMapOverlay = {};
         mMapOverlaySize = glm::ivec2(0);

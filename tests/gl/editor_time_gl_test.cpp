@@ -11,24 +11,13 @@
 #include <sstream>
 #include <string>
 
+#include "editor_runs.h"
 #include "gl_context_fixture.h"
 #include "project/project.h"
 #include "support/test_paths.h"
 
 namespace grass::test {
 namespace {
-
-// A 2 m plane of sparse grass in `folder` (created), named `name`, the window `width` wide.
-void writeTinyProject(const std::filesystem::path& folder, const std::string& name = "tiny",
-                      int width = 480, int height = 320) {
-    std::filesystem::create_directories(folder);
-    std::ofstream(folder / "project.json")
-        << R"({"format": "grass-project", "version": 2, "name": ")" << name << R"(",
-  "mesh": {"procedural": "plane", "size": 2, "resolution": 2},
-  "layers": [{"name": "grass", "density": 20}],
-  "render": {"width": )" << width << ", \"height\": " << height
-        << R"(, "geometry": "strips", "msaa": 0}})";
-}
 
 TEST(EditorTime, TenSecondsOfSlowFramesMoveTheTimelineTenSecondsAndAutosave) {
     const auto dir = scratchDir("editor_time");
@@ -62,21 +51,6 @@ TEST(EditorTime, TenSecondsOfSlowFramesMoveTheTimelineTenSecondsAndAutosave) {
     EXPECT_GT(skippedS, 0.0);
     EXPECT_TRUE(std::filesystem::exists(dir / "project.autosave.json"))
         << "the unsaved edit was not autosaved by the clock";
-}
-
-// Runs the editor on `dir` with `script` and `flags` under Xvfb; returns its output.
-std::string runEditor(const std::filesystem::path& dir, const std::string& script,
-                      const std::string& flags) {
-    std::ofstream(dir / "script.txt") << script;
-    const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' " +
-                                std::string(GRASS_EDITOR_EXE) + " " + dir.string() + " --script " +
-                                (dir / "script.txt").string() + " --wall-clock " + flags + " > " +
-                                (dir / "log.txt").string() + " 2>&1";
-    EXPECT_EQ(std::system(command.c_str()), 0) << command << " (see " << dir / "log.txt" << ")";
-    std::ifstream log(dir / "log.txt");
-    std::stringstream text;
-    text << log.rdbuf();
-    return text.str();
 }
 
 // Playback counts as interaction: with a budget no frame meets (5 ms, the least allowed), a playing editor

@@ -45,6 +45,30 @@ TEST(InteractionQuality, InputThatStopsGivesTheFullPictureAfterTheSettleTime) {
     EXPECT_EQ(REDUCTION_LADDER[0].resolutionScale, 1.0f);
 }
 
+// A frame that showed the last picture again (the editor at rest, editor/app/view_redraw.h)
+// took a few milliseconds: that is not what the full picture costs. Its measurement stays as it
+// was and trusted however long the rest lasts, so the first move after it reduces at once, as
+// it would after frames that drew; without such frames a measurement is forgotten after 3 s.
+TEST(InteractionQuality, FramesThatDrewNothingKeepTheMeasuredCost) {
+    InteractionQuality quality({.enabled = true, .budgetMs = 80.0, .settleS = 0.3});
+    EXPECT_EQ(quality.update(400.0, false, 0.0), 0);  // a full frame of 400 ms
+    for (int frame = 1; frame <= 100; ++frame)
+        EXPECT_EQ(quality.update(5.0, false, 0.1 * frame, false), 0);
+    EXPECT_GT(quality.update(5.0, true, 10.1, false), 0)
+        << "the full picture still costs 400 ms: the first orbit frame is reduced";
+    // The same frames counted as drawn: the cheap frames would say the full picture fits.
+    InteractionQuality counted({.enabled = true, .budgetMs = 80.0, .settleS = 0.3});
+    counted.update(400.0, false, 0.0);
+    for (int frame = 1; frame <= 100; ++frame)
+        counted.update(5.0, false, 0.1 * frame);
+    EXPECT_EQ(counted.update(5.0, true, 10.1), 0);
+    // A measurement already forgotten (3 s without frames) is not brought back by them.
+    InteractionQuality forgotten({.enabled = true, .budgetMs = 80.0, .settleS = 0.3});
+    forgotten.update(400.0, false, 0.0);
+    forgotten.update(5.0, false, 3.5, false);
+    EXPECT_EQ(forgotten.update(5.0, true, 3.6, false), 0) << "nothing known: assumed to fit";
+}
+
 TEST(InteractionQuality, TurnedOffItNeverReduces) {
     InteractionQuality quality({.enabled = false, .budgetMs = 80.0, .settleS = 0.3});
     EXPECT_EQ(quality.update(5000.0, true, 0.0), 0);

@@ -1,0 +1,44 @@
+// Runs of the real editor under Xvfb for the GL tests: a tiny project to open, and the editor
+// driven by a script with its output returned.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace grass::test {
+
+// A 2 m plane of sparse grass in `folder` (created), named `name`, the window `width` wide.
+inline void writeTinyProject(const std::filesystem::path& folder, const std::string& name = "tiny",
+                             int width = 480, int height = 320) {
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "project.json")
+        << R"({"format": "grass-project", "version": 2, "name": ")" << name << R"(",
+  "mesh": {"procedural": "plane", "size": 2, "resolution": 2},
+  "layers": [{"name": "grass", "density": 20}],
+  "render": {"width": )"
+        << width << ", \"height\": " << height << R"(, "geometry": "strips", "msaa": 0}})";
+}
+
+// Runs the editor on `dir` with `script` and `flags` under Xvfb; returns its output. With
+// `wallClock` the script runs on wall-clock time (--wall-clock), else it replays frame by frame.
+inline std::string runEditor(const std::filesystem::path& dir, const std::string& script,
+                             const std::string& flags, bool wallClock = true) {
+    std::ofstream(dir / "script.txt") << script;
+    const std::string command =
+        "xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(GRASS_EDITOR_EXE) + " " +
+        dir.string() + " --script " + (dir / "script.txt").string() +
+        (wallClock ? " --wall-clock " : " ") + flags + " > " + (dir / "log.txt").string() + " 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command << " (see " << dir / "log.txt"
+                                               << ")";
+    std::ifstream log(dir / "log.txt");
+    std::stringstream text;
+    text << log.rdbuf();
+    return text.str();
+}
+
+}  // namespace grass::test
