@@ -126,13 +126,17 @@ static int coarsestMapSide(const Project& project) {
 Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded,
                                            std::vector<std::string>* notes, SurfaceLook* look,
                                            PaintUvs* paintUvs, glm::dvec3* groundOrigin,
-                                           GltfImport* alreadyRead, std::stop_token stop) {
+                                           GltfImport* alreadyRead, std::stop_token stop,
+                                           const BuildProgress& progress) {
     const MeshSource& source = loaded.project.mesh;
     if (!source.isFile)
         return makeProceduralMesh(source.procedural);
     auto path = resolveAssetPath(loaded.folder, source.file, "/mesh/file");
     if (!path)
         return Error{loaded.file.string() + ": " + path.error().path, path.error().message};
+    const std::string fileName = path->filename().string();
+    if (progress && alreadyRead == nullptr)
+        progress("reading " + fileName);
     auto imported = alreadyRead != nullptr ? Result<GltfImport>(std::move(*alreadyRead))
                                            : loadGltf(*path, GltfPlacement::GroundNearOrigin,
                                                       source.metresPerUnit, glm::dvec3(0.0), stop);
@@ -160,6 +164,8 @@ Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded,
         atlasFile = *resolved;
     }
     std::vector<std::string> uvNotes;
+    if (progress)
+        progress("checking the UVs of " + fileName);
     PaintUvs uvs = makeUvsPaintable(
         imported->mesh, imported->hasUv, [&] { return !readLook().baseTexture.pixels.empty(); },
         atlasFile, coarsestMapSide(loaded.project), uvNotes, stop);
@@ -233,7 +239,7 @@ Error buildStopped(const LoadedProject& project) {
 
 Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh mesh,
                                  std::vector<std::string> notes, glm::dvec3 groundOrigin,
-                                 std::stop_token stop) {
+                                 std::stop_token stop, const BuildProgress& progress) {
     Scene scene;
     scene.groundOrigin = groundOrigin;
     scene.mesh = std::move(mesh);
@@ -258,6 +264,9 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh
         if (stop.stop_requested())
             return buildStopped(loaded);
         const GrassLayer& layer = project.layers[i];
+        if (progress)
+            progress("growing layer \"" + layer.name + "\" (" + std::to_string(i + 1) + " of " +
+                     std::to_string(project.layers.size()) + ")");
         LayerField field;
         field.name = layer.name;
         const std::string at = "/layers/" + std::to_string(i) + "/";
@@ -341,6 +350,8 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh
         recipe.rules.push_back(layer.rules);
     scene.billboards.unplaced = std::move(recipe);
     if (drawsBillboards(project.render.technique)) {
+        if (progress)
+            progress("placing the billboards");
         auto placed = placedBillboardsWith(scene, &samplerOfMesh(), true, stop);
         if (!placed)
             return placed.error();
@@ -586,18 +597,20 @@ glm::dvec3 groundOriginOf(const LoadedProject& loaded) {
     return origin;
 }
 
-Result<Scene> buildScene(const LoadedProject& loaded, GltfImport* alreadyRead,
-                         std::stop_token stop) {
+Result<Scene> buildScene(const LoadedProject& loaded, GltfImport* alreadyRead, std::stop_token stop,
+                         const BuildProgress& progress) {
     std::vector<std::string> notes;
     SurfaceLook look;
     PaintUvs paintUvs;
     glm::dvec3 groundOrigin{0.0};
-    auto mesh = loadProjectMesh(loaded, &notes, &look, &paintUvs, &groundOrigin, alreadyRead, stop);
+    auto mesh = loadProjectMesh(loaded, &notes, &look, &paintUvs, &groundOrigin, alreadyRead, stop,
+                                progress);
     if (!mesh)
         return mesh.error();
     if (stop.stop_requested())
         return buildStopped(loaded);
-    auto scene = buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes), groundOrigin, stop);
+    auto scene = buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes), groundOrigin, stop,
+                                    progress);
     if (scene) {
         scene->look = std::move(look);
         scene->paintUvs = std::move(paintUvs);
@@ -611,9 +624,9 @@ bool sameSurface(const LoadedProject& built, const LoadedProject& next) {
 }
 
 Result<Scene> regrowOnSameSurface(const LoadedProject& loaded, const Scene& previous,
-                                  std::stop_token stop) {
-    auto scene =
-        buildSceneFromMesh(loaded, previous.mesh.shared(), {}, previous.groundOrigin, stop);
+                                  std::stop_token stop, const BuildProgress& progress) {
+    auto scene = buildSceneFromMesh(loaded, previous.mesh.shared(), {}, previous.groundOrigin, stop,
+                                    progress);
     if (scene) {
         scene->look = previous.look;
         scene->paintUvs = previous.paintUvs;

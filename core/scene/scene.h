@@ -127,13 +127,18 @@ void refreshBillboards(Scene& scene);
 // The bake parameters of a project's lighting (AO kernel, normal blur, water range).
 BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting);
 
+// What a build is doing now, for a window that shows it (the editor's loading box): "reading
+// ground.glb", "checking the UVs of ground.glb", "growing layer \"grass\" (1 of 2)", "placing
+// the billboards". Called on the building thread, at the start of each stage.
+using BuildProgress = std::function<void(const std::string& stage)>;
+
 // Loads the mesh (file or procedural), each layer's density map, scatters, patches and bakes
 // the per-blade lighting inputs.
 // Errors name the file (mesh, map) or the project field. `alreadyRead`: as loadProjectMesh's.
 // `stop`: a request ends the growing between its stages (buildStopped says so): the editor
 // stops a re-grow that a later edit makes useless, and a load the user cancels.
 Result<Scene> buildScene(const LoadedProject& project, GltfImport* alreadyRead = nullptr,
-                         std::stop_token stop = {});
+                         std::stop_token stop = {}, const BuildProgress& progress = {});
 // The error of a build ended by its stop token.
 Error buildStopped(const LoadedProject& project);
 
@@ -198,7 +203,8 @@ Result<RegrowReport> rebakeLayerShading(LayerField& layer, const Bounds& region,
 Result<MovableSurfaceMesh> loadProjectMesh(
     const LoadedProject& project, std::vector<std::string>* notes, SurfaceLook* look = nullptr,
     PaintUvs* paintUvs = nullptr, glm::dvec3* groundOrigin = nullptr,
-    GltfImport* alreadyRead = nullptr, std::stop_token stop = {});
+    GltfImport* alreadyRead = nullptr, std::stop_token stop = {},
+    const BuildProgress& progress = {});
 
 // The ground origin buildScene would find (Scene::groundOrigin), for a command that builds the
 // physics before its scene: the ground file is loaded only when a mesh collider may need it.
@@ -209,7 +215,7 @@ glm::dvec3 groundOriginOf(const LoadedProject& project);
 Result<Scene> buildSceneFromMesh(const LoadedProject& project, MovableSurfaceMesh mesh,
                                  std::vector<std::string> notes,
                                  glm::dvec3 groundOrigin = glm::dvec3(0.0),
-                                 std::stop_token stop = {});
+                                 std::stop_token stop = {}, const BuildProgress& progress = {});
 
 // Whether `next` grows on the surface the scene of `built` stands on: the same folder, mesh
 // source (file, unit, up axis, kept UV atlas, or procedural shape) and coarsest layer map (the
@@ -222,7 +228,7 @@ bool sameSurface(const LoadedProject& built, const LoadedProject& next);
 // mesh's notes are not repeated. The editor re-grows so after each edit of the layers: an
 // 8-million-triangle ground took seconds to read each time.
 Result<Scene> regrowOnSameSurface(const LoadedProject& project, const Scene& previous,
-                                  std::stop_token stop = {});
+                                  std::stop_token stop = {}, const BuildProgress& progress = {});
 
 // A default project growing grass on a loaded glTF file: density scaled so the field has about
 // `targetBlades` blades whatever the file's units, blade size relative to the mesh, and a

@@ -39,8 +39,8 @@ constexpr double IDLE_WAIT_S = 0.1;
 }  // namespace
 
 // What a document job's worker does: `read` makes the project (and may read its mesh), then its
-// field grows; a cancel between the two skips the growing, one while it grows ends it at its
-// next stage.
+// field grows, the job's stage following the build's; a cancel between the two skips the
+// growing, one while it grows ends it at its next stage.
 DocumentJob::Work Editor::documentWork(ReadDocument read, bool withPhysics, DocumentAction action,
                                        std::string name) {
     return [read = std::move(read), withPhysics, action,
@@ -54,8 +54,10 @@ DocumentJob::Work Editor::documentWork(ReadDocument read, bool withPhysics, Docu
             return makeError(job.title(), "cancelled");
         job.setStage(action == DocumentAction::ImportMesh ? "growing the grass on " + name
                                                           : "growing " + loaded->project.name);
-        auto field = growField(std::move(*loaded), withPhysics, meshRead ? &*meshRead : nullptr,
-                               nullptr, job.stopToken());
+        // The loading box follows the build's stages: a large mesh's read, its UVs, each layer.
+        auto field =
+            growField(std::move(*loaded), withPhysics, meshRead ? &*meshRead : nullptr, nullptr,
+                      job.stopToken(), [&job](const std::string& stage) { job.setStage(stage); });
         if (!field)
             return field.error();
         grown.field = std::move(*field);

@@ -77,9 +77,10 @@ Live& Live::operator=(Live&& next) noexcept {
 
 Result<GrownField> growField(core::LoadedProject loaded, bool withPhysics,
                              core::GltfImport* alreadyRead, const core::Scene* sameSurface,
-                             std::stop_token stop) {
-    auto scene = sameSurface != nullptr ? core::regrowOnSameSurface(loaded, *sameSurface, stop)
-                                        : core::buildScene(loaded, alreadyRead, stop);
+                             std::stop_token stop, const core::BuildProgress& progress) {
+    auto scene = sameSurface != nullptr
+                     ? core::regrowOnSameSurface(loaded, *sameSurface, stop, progress)
+                     : core::buildScene(loaded, alreadyRead, stop, progress);
     if (!scene)
         return scene.error();
     GrownField grown;

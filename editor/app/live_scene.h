@@ -86,7 +86,8 @@ struct GrownField {
 // between its stages with core::buildStopped.
 Result<GrownField> growField(core::LoadedProject loaded, bool withPhysics,
                              core::GltfImport* alreadyRead = nullptr,
-                             const core::Scene* sameSurface = nullptr, std::stop_token stop = {});
+                             const core::Scene* sameSurface = nullptr, std::stop_token stop = {},
+                             const core::BuildProgress& progress = {});
 
 // The grown field on the GPU (renderer, tools, physics): on the thread that owns the GL context.
 // `prepare` runs on the grown scene before the GPU sees it (painted maps carried over).

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "scene/scene.h"
 #include "support/rules_terrain.h"
@@ -94,6 +96,30 @@ TEST(RegrowOnSameSurface, AStopRequestedEndsTheGrowing) {
     ASSERT_FALSE(placed);
     EXPECT_NE(placed.error().message.find("stopped"), std::string::npos) << placed.error().str();
     EXPECT_TRUE(placedBillboardsUnfollowed(*first));
+}
+
+// A build says what it is doing as it goes (the editor's loading box shows it): the mesh's
+// read and the check of its UVs, then each layer, then the billboards when the technique draws
+// them; a re-grow on the same surface only grows.
+TEST(RegrowOnSameSurface, ABuildSaysEachStageInOrder) {
+    const test::ScratchFolder folder("build-progress");
+    LoadedProject loaded = test::writeRulesTerrainProject(folder.path(), PROJECT);
+    loaded.project.layers.push_back(loaded.project.layers.at(0));
+    loaded.project.layers.back().name = "moss";
+    loaded.project.render.technique = GrassTechnique::Hybrid;
+    std::vector<std::string> stages;
+    const BuildProgress record = [&](const std::string& stage) { stages.push_back(stage); };
+    auto first = buildScene(loaded, nullptr, {}, record);
+    ASSERT_TRUE(first) << first.error().str();
+    EXPECT_EQ(stages, (std::vector<std::string>{
+                          "reading terrain.glb", "checking the UVs of terrain.glb",
+                          "growing layer \"grass\" (1 of 2)", "growing layer \"moss\" (2 of 2)",
+                          "placing the billboards"}));
+    stages.clear();
+    loaded.project.render.technique = GrassTechnique::Blades;
+    ASSERT_TRUE(regrowOnSameSurface(loaded, *first, {}, record));
+    EXPECT_EQ(stages, (std::vector<std::string>{"growing layer \"grass\" (1 of 2)",
+                                                "growing layer \"moss\" (2 of 2)"}));
 }
 
 TEST(RegrowOnSameSurface, AnotherSurfaceIsReadAgain) {
