@@ -48,4 +48,8 @@ void printNotes(const std::vector<std::string>& notes) {
         std::fprintf(stderr, "note: %s\n", note.c_str());
 }
 
+std::function<void(const std::string&)> buildProgressNotes() {
+    return [](const std::string& stage) { std::fprintf(stderr, "note: %s ...\n", stage.c_str()); };
+}
+
 }  // namespace grass::cli

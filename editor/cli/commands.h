@@ -2,6 +2,7 @@
 // errors as one line "grass <command>: <file or option>: <problem>" and returns the exit code.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,5 +32,8 @@ int reportFailure(const std::string& command, const Error& error, int exitCode);
 // Prints each note as "note: <note>" on stderr: what a loader or builder chose for the user
 // (a default, a fallback) that is not an error.
 void printNotes(const std::vector<std::string>& notes);
+// A build's stages (core::BuildProgress) as notes on stderr, "note: reading ground.glb ...", for
+// the commands that grow a field: a large mesh's read and growing took seconds in silence.
+std::function<void(const std::string&)> buildProgressNotes();
 
 }  // namespace grass::cli

@@ -104,7 +104,7 @@ core::ExportOptions exportOptions(const ExportArgs& args, core::ExportFormat for
 // began to load.
 Result<GrownScene> growScene(const core::LoadedProject& loaded, Clock::time_point start) {
     std::fprintf(stderr, "note: growing %s ...\n", loaded.file.c_str());
-    auto scene = core::buildScene(loaded);
+    auto scene = core::buildScene(loaded, nullptr, {}, buildProgressNotes());
     if (!scene)
         return scene.error();
     printNotes(scene->notes);

@@ -1,5 +1,6 @@
 // grass render: grow and render a project (or any glTF mesh) headless to an image file.
 #include <cstdio>
+#include <filesystem>
 
 #include "cli/commands.h"
 #include "cli/preset_option.h"
@@ -69,6 +70,8 @@ Result<core::LoadedProject> loadMeshInput(const RenderArgs& args, core::Scene* s
     // Checked by checkRenderArgs.
     const float metresPerUnit = core::parseMeshUnit(args.unit).value();
     const core::UpAxis up = core::parseUpAxis(args.up).value();
+    const auto progress = buildProgressNotes();
+    progress("reading " + std::filesystem::path(args.mesh).filename().string());
     auto imported = core::loadGltf(args.mesh, core::GltfPlacement::GroundNearOrigin, metresPerUnit);
     if (!imported)
         return imported.error();
@@ -88,7 +91,8 @@ Result<core::LoadedProject> loadMeshInput(const RenderArgs& args, core::Scene* s
         notes.push_back(args.mesh + ": " + note);
     core::SurfaceLook look = core::surfaceLookOf(args.mesh, imported->hasUv);
     notes.insert(notes.end(), look.notes.begin(), look.notes.end());
-    auto built = core::buildSceneFromMesh(*loaded, std::move(imported->mesh), std::move(notes));
+    auto built = core::buildSceneFromMesh(*loaded, std::move(imported->mesh), std::move(notes),
+                                          glm::dvec3(0.0), {}, progress);
     if (built)
         built->look = std::move(look);
     if (!built)
@@ -115,7 +119,7 @@ Result<core::LoadedProject> loadProjectInput(RenderArgs& args, core::Scene* scen
     applyTechniqueOption(args, loaded->project);
     if (auto fits = checkFramebuffer(args, loaded->project.render); !fits)
         return fits.error();
-    auto built = core::buildScene(*loaded);
+    auto built = core::buildScene(*loaded, nullptr, {}, buildProgressNotes());
     if (!built)
         return built.error();
     *scene = std::move(*built);

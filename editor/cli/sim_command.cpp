@@ -96,7 +96,7 @@ Result<void> applyArgs(const SimArgs& args, core::LoadedProject& loaded) {
 
 // The scene and its physics; their notes are printed once both are built.
 Result<SimField> growField(const core::LoadedProject& loaded) {
-    auto scene = core::buildScene(loaded);
+    auto scene = core::buildScene(loaded, nullptr, {}, buildProgressNotes());
     if (!scene)
         return scene.error();
     auto physics = core::buildScenePhysics(loaded, scene->groundOrigin);

@@ -137,8 +137,10 @@ grass_cli_test(mesh_info_far_ground OK
     --stderr "^note: .*far_quad\\.gltf: lies 5437 km from the file's origin, where 32-bit positions are 0\\.5 m apart: moved"
     -- ${GRASS_BIN} mesh-info ${GRASS_CLI_GLTF}/far_quad.gltf)
 # --- render (GL) -----------------------------------------------------------------------------
+# The build says its stages as notes (a large mesh's read and growing took seconds in silence).
 grass_cli_test(render_meadow GL OK --png ${GRASS_CLI_TMP}/meadow.png 160 90
     --stdout "^wrote .*meadow\\.png \\(160x90\\)$" --stdout "^  frames +1,"
+    --stderr "^note: growing layer \"grass\" \\(1 of 1\\) \\.\\.\\.$"
     -- ${GRASS_BIN} render ${GRASS_SOURCE_DIR}/projects/meadow --out ${GRASS_CLI_TMP}/meadow.png
        --width 160 --height 90 --frames 1)
 # The headless context's second way to a display, EGL_EXT_platform_device (how NVIDIA's driver
@@ -153,6 +155,7 @@ grass_cli_test(render_egl_platform_bad ERROR "GRASS_EGL_PLATFORM" --also "auto, 
        --out ${GRASS_CLI_TMP}/never_egl.png --width 64 --height 36 --frames 1)
 grass_cli_test(render_mesh GL OK --png ${GRASS_CLI_TMP}/quad.png 128 128
     --stdout "^wrote .*quad\\.png \\(128x128\\)$" --stdout "^  scene +2 triangles, [1-9][0-9]* blades"
+    --stderr "^note: reading quad\\.gltf \\.\\.\\.$"
     -- ${GRASS_BIN} render --mesh ${GRASS_CLI_GLTF}/quad.gltf --out ${GRASS_CLI_TMP}/quad.png
        --width 128 --height 128 --frames 1 --blades 2000)
 # The quad at map coordinates renders as the quad at the origin does, with the note.
