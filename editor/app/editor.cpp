@@ -757,6 +757,8 @@ void Editor::updateStatus(bool statusDue, bool timingsDue) {
         const double sinceS = std::chrono::duration<double>(now - mLastStatus).count();
         if (sinceS > 0.0)
             mState.transient.status.fps = double(mFramesSinceStatus) / sinceS;
+        mState.transient.status.atRest = mViewsDrawn == mViewsDrawnAtStatus;
+        mViewsDrawnAtStatus = mViewsDrawn;
         mFramesSinceStatus = 0;
         mLastStatus = now;
     }

@@ -152,6 +152,7 @@ private:
     std::optional<ViewInputs> mDrawnView;
     bool mViewDrawn = false;
     int mViewsDrawn = 0;  // for the --wall-clock summary
+    int mViewsDrawnAtStatus = 0;  // at the last status update: none since means "at rest"
     // The window's event count after this frame's input was read: a frame that drew nothing new
     // and saw no event since waits for one (Editor::frame).
     std::uint64_t mEventsAtPoll = 0;

@@ -98,6 +98,9 @@ struct FrameStatus {
     std::size_t blades = 0;  // live blades in the scene
     render::FrameTimings timings;
     double fps = 0.0;
+    // No frame since the last update drew the viewport's picture (app/view_redraw.h): the window
+    // is at rest, and its frame rate (the panels' alone, about ten a second) says nothing.
+    bool atRest = false;
     double uiMs = 0.0;  // CPU time of building and tessellating the UI
     // Simulated time the live physics could not step in the last second (0: it keeps up).
     double physicsDroppedS = 0.0;

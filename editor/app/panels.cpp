@@ -182,10 +182,10 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
     char text[384];
     std::snprintf(text, sizeof text,
                   "%zu blades · %zu drawn%s   cull %.2f · opaque %.2f · grass %.2f%s%s ms"
-                  "   UI %.2f ms   %.0f fps",
+                  "   UI %.2f ms   %s",
                   s.transient.status.blades, stems ? t.stemSetsDrawn : t.cull.drawn, physics,
                   t.cullMs, t.meshMs, t.grassMs, far, snow, s.transient.status.uiMs,
-                  s.transient.status.fps);
+                  frameRateText(s.transient.status).c_str());
     ui::Ui ui(ctx, {rect.min + ui::Vec2(8.0f, 2.0f), rect.max}, ui::Layer::Panels);
     ui.horizontal([&](ui::Ui& row) {
         // The message first ("saved", "imported", a failed save in warning orange, so that it
@@ -247,6 +247,14 @@ std::string freshPicturePath(const EditorState& s, const std::string& stem, cons
             !fs::exists(folder / (name + "_0000" + extension)))
             return (folder / (name + extension)).string();
     }
+}
+
+std::string frameRateText(const FrameStatus& status) {
+    if (status.atRest)
+        return "at rest";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f fps", status.fps);
+    return text;
 }
 
 render::RenderOptions viewRenderOptions(const EditorState& s) {

@@ -119,5 +119,8 @@ void snowSection(ui::Ui& ui, EditorState& state);
 // blades, fewer segments). One function, so the panels, the keys and undo can never disagree
 // with the picture.
 render::RenderOptions viewRenderOptions(const EditorState& state);
+// The status bar's frame rate: "12 fps", or "at rest" when no frame since the last update drew
+// the viewport's picture.
+std::string frameRateText(const FrameStatus& status);
 
 }  // namespace grass::editor

@@ -959,3 +959,19 @@ TEST(EditorPanels, TheBrushMapIsExportedAndATakenNameRefused) {
 
 }  // namespace
 }  // namespace grass::test
+
+namespace grass::test {
+namespace {
+
+// At rest the window draws only its panels, about ten times a second (app/view_redraw.h): the
+// status bar says so instead of a frame rate that would read as a slow viewport.
+TEST(EditorPanels, TheStatusBarSaysAtRestInsteadOfThePanelsFrameRate) {
+    editor::FrameStatus status;
+    status.fps = 9.6;
+    EXPECT_EQ(editor::frameRateText(status), "10 fps");
+    status.atRest = true;
+    EXPECT_EQ(editor::frameRateText(status), "at rest");
+}
+
+}  // namespace
+}  // namespace grass::test
