@@ -23,6 +23,7 @@ using gltf::PrimitiveData;
 constexpr std::uint32_t UNSET = std::numeric_limits<std::uint32_t>::max();
 // Triangles between two looks at the stop token (a few milliseconds of building).
 constexpr std::size_t TRIANGLES_PER_STOP_CHECK = 65536;
+constexpr const char* STOPPED_WHILE_READING = "stopped while reading";
 
 struct MergeStats {
     std::size_t primitives = 0;
@@ -72,7 +73,7 @@ Result<void> addPrimitive(SurfaceMeshBuilder& builder, const PrimitiveData& data
     };
     for (std::size_t t = 0; t < data.triangles.size(); ++t) {
         if (t % TRIANGLES_PER_STOP_CHECK == 0 && stop.stop_requested())
-            return makeError("", "stopped while reading");
+            return makeError("", STOPPED_WHILE_READING);
         const auto& triangle = data.triangles[t];
         std::uint32_t v[3];
         for (int k = 0; k < 3; ++k) {
@@ -201,7 +202,7 @@ bool isGltfPath(const std::filesystem::path& path) {
 }
 
 Error readStopped(const std::filesystem::path& file) {
-    return Error{file.string(), "stopped while reading"};
+    return Error{file.string(), STOPPED_WHILE_READING};
 }
 
 Result<GltfImport> loadGltf(const std::filesystem::path& file, GltfPlacement placement,

@@ -240,6 +240,9 @@ Error buildStopped(const LoadedProject& project) {
 Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh mesh,
                                  std::vector<std::string> notes, glm::dvec3 groundOrigin,
                                  std::stop_token stop, const BuildProgress& progress) {
+    // Before the mesh's bounds and area and the colliders' files (seconds for a large mesh).
+    if (stop.stop_requested())
+        return buildStopped(loaded);
     Scene scene;
     scene.groundOrigin = groundOrigin;
     scene.mesh = std::move(mesh);
@@ -607,8 +610,6 @@ Result<Scene> buildScene(const LoadedProject& loaded, GltfImport* alreadyRead, s
                                 progress);
     if (!mesh)
         return mesh.error();
-    if (stop.stop_requested())
-        return buildStopped(loaded);
     auto scene = buildSceneFromMesh(loaded, std::move(*mesh), std::move(notes), groundOrigin, stop,
                                     progress);
     if (scene) {

@@ -42,7 +42,8 @@ struct LayerLook {
 struct ViewInputs {
     const render::SceneRenderer* renderer = nullptr;
     std::uint64_t rendererGeneration = 0;
-    // Bumped whenever a field is adopted: a new renderer may sit at the old one's address.
+    // The editor's count of changes to the live field (EditorState::mapsChanged: a field adopted,
+    // patches re-grown): a new renderer may sit at the old one's address.
     std::uint64_t liveGeneration = 0;
     std::size_t physicsSteps = 0;
     core::OrbitCamera camera;
