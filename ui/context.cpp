@@ -1,5 +1,6 @@
 #include "ui/context.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <utility>
@@ -63,6 +64,11 @@ void Context::beginFrame(Input input) {
         layer.clear();
     }
     mOutput = Output{};
+}
+
+void Context::requestRepaintAfter(double seconds) {
+    seconds = std::max(seconds, 0.0);
+    mOutput.repaintAfterS = std::min(mOutput.repaintAfterS.value_or(seconds), seconds);
 }
 
 const Output& Context::endFrame() {

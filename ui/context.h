@@ -107,6 +107,10 @@ struct Output {
     CursorIcon cursor = CursorIcon::Default;
     // Input::pixelsPerPoint of this frame, for the renderer (mesh positions are in points).
     float pixelsPerPoint = 1.0f;
+    // The panels change without input within this many seconds (a caret's blink): the app
+    // must run a frame by then even if nothing happens (egui's request_repaint_after). Unset:
+    // the panels stay as they are until the next input.
+    std::optional<double> repaintAfterS;
 };
 
 // Paint layers, back to front. Hit testing follows the same order.
@@ -135,6 +139,9 @@ public:
     // Checks the id stack is balanced, settles focus and dragging, and fills the output.
     const Output& endFrame();
     Output& output() { return mOutput; }
+    // For widgets that change with time alone: asks for a frame within `seconds` (the soonest
+    // request of the frame wins; Output::repaintAfterS).
+    void requestRepaintAfter(double seconds);
 
     const Input& input() const { return mInput; }
     const Style& style() const { return mStyle; }

@@ -13,6 +13,9 @@ namespace grass::ui {
 
 namespace {
 
+constexpr double CARET_PERIOD_S = 1.0;
+constexpr double CARET_SHOWN_S = 0.6;
+
 bool isContinuation(char c) {
     return (static_cast<unsigned char>(c) & 0xC0u) == 0x80u;
 }
@@ -134,6 +137,7 @@ Response textEditImpl(Ui& ui, std::string_view idLabel, std::string& text, float
             text.insert(st.cursor, typed);
             st.cursor += typed.size();
             st.anchor = st.cursor;
+            st.lastActivityS = now;  // the caret stays shown while typing
             *edited = true;
         };
         // The frame's typed text and keys in the order they came (KeyEvent::textBefore): the
@@ -272,9 +276,14 @@ Response textEditImpl(Ui& ui, std::string_view idLabel, std::string& text, float
         p.rect({{x0 + a, top}, {x0 + b, top + lineH}}, 0.0f, s.selectionFill);
     }
     p.text({x0, top}, text, size, v.text);
-    // Blinks with a 1 s period, solid for the first 0.6 s after any activity.
-    if (r.hasFocus() && std::fmod(now - st.lastActivityS, 1.0) < 0.6) {
-        p.line({x0 + caretX, top}, {x0 + caretX, top + lineH}, {1.0f, s.textStrong});
+    // Blinks with a 1 s period, solid for the first 0.6 s after any activity; the next frame is
+    // asked for at the next change, since an editor at rest draws only when something changes.
+    if (r.hasFocus()) {
+        const double phase = std::fmod(now - st.lastActivityS, CARET_PERIOD_S);
+        const bool shown = phase < CARET_SHOWN_S;
+        if (shown)
+            p.line({x0 + caretX, top}, {x0 + caretX, top + lineH}, {1.0f, s.textStrong});
+        ctx.requestRepaintAfter((shown ? CARET_SHOWN_S : CARET_PERIOD_S) - phase);
     }
     p.popClip();
     p.text({box.max.x + s.itemSpacing.x, box.centre().y}, label, size, s.text, {0.0f, 0.5f});

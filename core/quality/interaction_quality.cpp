@@ -32,6 +32,12 @@ double InteractionQuality::estimateMs(int level, double nowS) const {
     return 0.0;  // nothing measured yet: assume it fits
 }
 
+std::optional<double> InteractionQuality::fullPictureAtS() const {
+    if (mLevel == 0)
+        return std::nullopt;
+    return mLastInteractionS + mSettings.settleS;
+}
+
 int InteractionQuality::update(double lastFrameMs, bool interacting, double nowS,
                                bool lastFrameDrawn) {
     Measured& last = mMeasured[std::size_t(mLevel)];

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 namespace grass::core {
 
@@ -55,6 +56,9 @@ public:
 
     int level() const { return mLevel; }
     double lastInteractionS() const { return mLastInteractionS; }
+    // While reduced: when (on update's clock) the full picture is due if no input comes, so a
+    // window at rest wakes for it (editor/app/idle_wait.h). Unset at full quality.
+    std::optional<double> fullPictureAtS() const;
     const Reduction& reduction() const { return REDUCTION_LADDER[std::size_t(mLevel)]; }
     const InteractionQualitySettings& settings() const { return mSettings; }
     void setSettings(const InteractionQualitySettings& settings) { mSettings = settings; }

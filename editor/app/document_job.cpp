@@ -9,12 +9,12 @@
 namespace grass::editor {
 
 DocumentJob::DocumentJob(DocumentAction action, std::filesystem::path file, std::string stage,
-                         Work work, std::chrono::milliseconds delay)
+                         Work work, std::chrono::milliseconds delay, std::function<void()> whenDone)
     : mAction(action),
       mFile(std::move(file)),
       mStart(std::chrono::steady_clock::now()),
       mStage(std::move(stage)) {
-    mWorker = std::thread([this, work = std::move(work), delay] {
+    mWorker = std::thread([this, work = std::move(work), delay, whenDone = std::move(whenDone)] {
         // The delay in short sleeps, so that a cancel (or the window closed) ends it.
         const auto until = std::chrono::steady_clock::now() + delay;
         while (!cancelled() && std::chrono::steady_clock::now() < until)
@@ -27,6 +27,8 @@ DocumentJob::DocumentJob(DocumentAction action, std::filesystem::path file, std:
             mResult.emplace(std::move(result));
         }
         mDone.store(true);
+        if (whenDone)
+            whenDone();
     });
 }
 

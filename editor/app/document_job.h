@@ -36,8 +36,9 @@ public:
     using Work = std::function<Result<GrownDocument>(DocumentJob&)>;
     // Starts `work` on a worker thread after `delay` (--load-delay-ms: tests of a slow load).
     // `file`: what it opens or imports (empty for New), `stage`: what it does first.
+    // `whenDone` is called on the worker once done() is true (EditorState::wakeFrame).
     DocumentJob(DocumentAction action, std::filesystem::path file, std::string stage, Work work,
-                std::chrono::milliseconds delay = {});
+                std::chrono::milliseconds delay = {}, std::function<void()> whenDone = {});
     ~DocumentJob();  // waits for the worker
     DocumentJob(const DocumentJob&) = delete;
     DocumentJob& operator=(const DocumentJob&) = delete;

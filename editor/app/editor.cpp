@@ -31,10 +31,8 @@ namespace {
 constexpr int TURNTABLE_VIEWS = 24;
 // While a field grows on a worker: five frames a second at most (Editor::frame).
 constexpr int LOADING_FRAME_MS = 200;
-// A frame that drew nothing new and saw no input waits this long at most for an event before the
-// next one: at rest the window draws its panels ten times a second (clocks, progress bars, jobs
-// that end), not as fast as the machine allows.
-constexpr double IDLE_WAIT_S = 0.1;
+// The status bar's figures are brought up to date this often.
+constexpr auto STATUS_EVERY = std::chrono::milliseconds(500);
 
 }  // namespace
 
@@ -172,6 +170,7 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     state.scene = e.mLive.scene.get();
     state.tools = e.mLive.tools.get();
     // Patches the brush or an undo re-grew: only those go up to the GPU, at once.
+    state.wakeFrame = [] { Window::wake(); };
     state.regrown = [&e](std::size_t layer, const core::RegrowReport& report) {
         ++e.mState.mapsChanged;
         e.mLive.renderer->uploadRegrown(layer, report);
@@ -273,8 +272,7 @@ Result<bool> Editor::frame() {
     advanceTime();
     // Statistics cost atomics and a wait when read: only the frame before a status update
     // collects them, and they are read once, after it.
-    const bool statusDue =
-        mFrame == 0 || Clock::now() - mLastStatus > std::chrono::milliseconds(500);
+    const bool statusDue = mFrame == 0 || Clock::now() - mLastStatus > STATUS_EVERY;
     // Exact pass timings wait for each pass on software GL (gl/timer_query.h): a reduced frame,
     // which keeps a budget, goes without them and the status bar keeps the last full frame's.
     const bool timingsDue = statusDue && mState.view.quality.level() == 0;
@@ -306,8 +304,28 @@ Result<bool> Editor::frame() {
     const bool idle = !mViewDrawn && mSettings.scriptFile.empty() && !waitingForJob &&
                       eventsBefore == mEventsAtPoll && mWindow->eventCount() == mEventsAtPoll;
     if (idle)
-        mWindow->waitForEvents(IDLE_WAIT_S);
+        mWindow->waitForEvents(idleWaitS(restingFrame()));
     return true;
+}
+
+RestingFrame Editor::restingFrame() const {
+    const Clock::time_point now = Clock::now();
+    const auto secondsUntil = [&](Clock::time_point at) {
+        return std::chrono::duration<double>(at - now).count();
+    };
+    RestingFrame frame;
+    frame.panelsChangeInS = mPanelsChangeInS;
+    // The adaptive quality's clock: seconds since the editor started (chooseQuality).
+    const double qualityNowS = std::chrono::duration<double>(now - mStartTime).count();
+    if (const std::optional<double> fullAtS = mState.view.quality.fullPictureAtS())
+        frame.fullPictureInS = *fullAtS - qualityNowS;
+    if (mSettings.autosaveS > 0.0 && mState.doc.dirty)
+        frame.autosaveInS = mAutosaveDueS;
+    // A little after the update is due (frame() takes it once strictly past STATUS_EVERY).
+    if (!mState.transient.status.atRest)
+        frame.statusUpdateInS = secondsUntil(mLastStatus + STATUS_EVERY) + 0.005;
+    frame.progressShown = mState.regrowing() || mState.busy();
+    return frame;
 }
 
 bool Editor::closeRequested() {
@@ -405,7 +423,7 @@ void Editor::startRegrow() {
     };
     mState.regrowJob = std::make_unique<DocumentJob>(
         DocumentAction::Regrow, std::filesystem::path(), "growing " + mState.doc.project().name,
-        std::move(work), std::chrono::milliseconds(mSettings.loadDelayMs));
+        std::move(work), std::chrono::milliseconds(mSettings.loadDelayMs), mState.wakeFrame);
     if (mReplay)  // scripts and screenshots: the edit's field in the next frame, whatever the speed
         mState.regrowJob->wait();
     finishRegrow();
@@ -470,9 +488,9 @@ void Editor::startDocumentJob(DocumentAction action, std::filesystem::path file,
                         : action == DocumentAction::Recover ? "recovering the autosave"
                                                             : "reading " + name;
     DocumentJob::Work work = documentWork(std::move(read), !mSettings.noPhysics, action, name);
-    mState.documentJob =
-        std::make_unique<DocumentJob>(action, std::move(file), std::move(stage), std::move(work),
-                                      std::chrono::milliseconds(mSettings.loadDelayMs));
+    mState.documentJob = std::make_unique<DocumentJob>(
+        action, std::move(file), std::move(stage), std::move(work),
+        std::chrono::milliseconds(mSettings.loadDelayMs), mState.wakeFrame);
     if (mReplay) {
         mState.documentJob->wait();
         finishDocumentJob();

@@ -23,6 +23,7 @@
 
 #include "app/document_job.h"
 #include "app/editor_ui.h"
+#include "app/idle_wait.h"
 #include "app/input_script.h"
 #include "app/live_scene.h"
 #include "app/panels.h"
@@ -137,6 +138,8 @@ private:
     // Screenshots and the turntable; false when the --screenshot was written (the end).
     Result<bool> writeOutputs(int width, int height);
     void updateStatus(bool statusDue, bool timingsDue);
+    // What will change on screen without input (how long a frame at rest may wait).
+    RestingFrame restingFrame() const;
 
     EditorSettings mSettings;
     bool mReplay = false;  // screenshots and scripts: one physics step per frame
@@ -186,6 +189,7 @@ private:
     };
     std::optional<OverlayShown> mOverlayShown;
     double mAutosaveDueS = 0.0;
+    std::optional<double> mPanelsChangeInS;  // the last frame's ui::Output::repaintAfterS
     Clock::time_point mStartTime, mLastStatus, mLastTick;
     int mFramesSinceStatus = 0;  // for the status bar's frame rate
 };

@@ -78,6 +78,7 @@ void Editor::runInput(InputState input, int width, int height) {
         const ui::Output& out = mUi->endFrame(*mWindow);
         uiPointer = out.wantsPointer;
         uiKeyboard = out.wantsKeyboard;
+        mPanelsChangeInS = out.repaintAfterS;
         mView = toPixels(central, out.pixelsPerPoint, height);
         // A camera bookmark chosen in the panel: the view goes there.
         if (mState.view.cameraRequest) {

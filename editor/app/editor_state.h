@@ -175,6 +175,9 @@ struct EditorState {
     // Patches re-grown by painting or undo go straight to whoever draws the field (the Editor
     // uploads them to the renderer and the GPU physics); unset, they are dropped.
     std::function<void(std::size_t layer, const core::RegrowReport&)> regrown;
+    // Called by a job's worker when it ends (any thread): wakes the window at rest, so a job
+    // that ends while it waits for input is taken in at once (editor/app/idle_wait.h).
+    std::function<void()> wakeFrame;
     // Counts the changes to the live field's maps (each re-grow the brush, an import or an undo
     // reports): the map overlay is uploaded again when it moves.
     std::uint64_t mapsChanged = 0;

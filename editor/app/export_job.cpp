@@ -5,10 +5,10 @@
 namespace grass::editor {
 
 ExportJob::ExportJob(core::LoadedProject loaded, const core::Scene& scene,
-                     core::ExportOptions options)
+                     core::ExportOptions options, std::function<void()> whenDone)
     : mLoaded(std::move(loaded)), mScene(&scene), mOptions(std::move(options)) {
     mOptions.stop = mStop.get_token();
-    mWorker = std::thread([this] {
+    mWorker = std::thread([this, whenDone = std::move(whenDone)] {
         auto result = core::exportProject(mLoaded, *mScene, mOptions,
                                           [this](float fraction, std::string_view stage) {
                                               mFraction.store(fraction);
@@ -24,6 +24,8 @@ ExportJob::ExportJob(core::LoadedProject loaded, const core::Scene& scene,
             mResult.emplace(std::move(result));
         }
         mDone.store(true);
+        if (whenDone)
+            whenDone();
     });
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <stop_token>
@@ -17,7 +18,9 @@ namespace grass::editor {
 class ExportJob {
 public:
     // Starts exporting `scene` (which must stay unchanged until done()) with a copy of `loaded`.
-    ExportJob(core::LoadedProject loaded, const core::Scene& scene, core::ExportOptions options);
+    // `whenDone` is called on the worker once done() is true (EditorState::wakeFrame).
+    ExportJob(core::LoadedProject loaded, const core::Scene& scene, core::ExportOptions options,
+              std::function<void()> whenDone = {});
     ~ExportJob();  // waits for the worker
     ExportJob(const ExportJob&) = delete;
     ExportJob& operator=(const ExportJob&) = delete;

@@ -34,7 +34,7 @@ void startExport(EditorState& s) {
                         kept.error().str();
             return;
         }
-    s.exportJob = std::make_shared<ExportJob>(s.doc.loaded, *s.scene, options);
+    s.exportJob = std::make_shared<ExportJob>(s.doc.loaded, *s.scene, options, s.wakeFrame);
     s.transient.message = "exporting to " + dir.string();
 }
 

@@ -1,6 +1,7 @@
 #include "app/window.h"
 
 #include <algorithm>
+#include <mutex>
 
 #include "app/editor_ui.h"
 #include "app/window_size.h"
@@ -10,6 +11,15 @@
 #include <epoxy/gl.h>
 
 namespace grass::editor {
+
+namespace {
+
+// Window::wake comes from workers, which may end after the window is gone (a job's worker is
+// joined when the editor's state goes, after its window): GLFW must not be called then.
+std::mutex gWakeMutex;
+bool gWindowOpen = false;
+
+}  // namespace
 
 struct WindowCallbacks {
     static Window* self(GLFWwindow* w) { return static_cast<Window*>(glfwGetWindowUserPointer(w)); }
@@ -141,10 +151,16 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
     if (debugOutput)
         gl::enableDebugOutput();
     glfwGetCursorPos(handle, &window->mInput.cursorX, &window->mInput.cursorY);
+    std::lock_guard lock(gWakeMutex);
+    gWindowOpen = true;
     return window;
 }
 
 Window::~Window() {
+    {
+        std::lock_guard lock(gWakeMutex);
+        gWindowOpen = false;
+    }
     glfwDestroyWindow(mWindow);
     glfwTerminate();
 }
@@ -195,7 +211,16 @@ void Window::gatherEvents() {
 }
 
 void Window::waitForEvents(double timeoutS) {
-    glfwWaitEventsTimeout(timeoutS);
+    if (timeoutS > 0.0)
+        glfwWaitEventsTimeout(timeoutS);
+    else
+        glfwPollEvents();  // GLFW takes no zero wait
+}
+
+void Window::wake() {
+    std::lock_guard lock(gWakeMutex);
+    if (gWindowOpen)
+        glfwPostEmptyEvent();
 }
 
 InputState Window::pollInput() {

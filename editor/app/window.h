@@ -76,6 +76,9 @@ public:
     void gatherEvents();
     // Sleeps until an event comes (collected as gatherEvents does) or `timeoutS` has passed.
     void waitForEvents(double timeoutS);
+    // Ends a waitForEvents at once; from any thread (a worker that finished), harmless once the
+    // window is gone.
+    static void wake();
     // How many input events (pointer, buttons, wheel, keys, text, drops) have come so far.
     std::uint64_t eventCount() const { return mEvents; }
     // Seconds since the window opened: the clock of input events and the UI.

@@ -26,6 +26,37 @@ core::LoadedProject tinyPlane() {
     return loaded;
 }
 
+// A window at rest sleeps until an event comes (editor/app/idle_wait.h): a job's end wakes it,
+// and the frame it wakes must find the job done, whatever its outcome (a cancelled one too).
+TEST(DocumentJob, ItsEndIsToldOnceTheJobIsDone) {
+    for (const bool cancel : {false, true}) {
+        std::promise<void> release;
+        std::shared_future<void> released = release.get_future().share();
+        std::atomic<int> told{0};
+        std::atomic<bool> doneWhenTold{false};
+        editor::DocumentJob* seen = nullptr;
+        editor::DocumentJob job(
+            editor::DocumentAction::New, "", "starting",
+            [released](editor::DocumentJob&) -> Result<editor::GrownDocument> {
+                released.wait();
+                return makeError("test", "nothing grown");
+            },
+            cancel ? 5000ms : 0ms,
+            [&] {
+                doneWhenTold = seen != nullptr && seen->done();
+                ++told;
+            });
+        seen = &job;
+        EXPECT_EQ(told.load(), 0);
+        if (cancel)
+            job.cancel();  // ends the delay: the work never runs
+        release.set_value();
+        job.wait();
+        EXPECT_EQ(told.load(), 1) << (cancel ? "cancelled" : "failed");
+        EXPECT_TRUE(doneWhenTold.load());
+    }
+}
+
 TEST(DocumentJob, GrowsOnAWorkerAndHandsBackTheField) {
     std::promise<void> release;
     std::shared_future<void> released = release.get_future().share();

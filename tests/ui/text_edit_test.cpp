@@ -206,6 +206,40 @@ TEST(UiTextEdit, FocusLossByClickingElsewhereCommits) {
     EXPECT_GE(f.changes, 100);
 }
 
+// An editor at rest draws only when something changes (editor/app/idle_wait.h), so the caret's
+// blink must ask for its frames: a focused box asks for one when the caret next appears or
+// goes, an unfocused one asks for none.
+TEST(UiTextEdit, AFocusedBoxAsksForAFrameWhenItsCaretNextBlinks) {
+    TextEditFixture f;
+    f.frame();
+    EXPECT_FALSE(f.h.ctx.output().repaintAfterS.has_value());
+    f.focusAtEnd();
+    f.type("a");  // activity: the caret is solid from here for 0.6 s
+    const double typedS = f.h.input.timeS - 1.0 / 60.0;
+    const auto caretLines = [&] {
+        int lines = 0;
+        for (const ClippedShape& shape : f.h.ctx.output().shapes)
+            lines += std::holds_alternative<PathShape>(shape.shape) ? 1 : 0;
+        return lines;
+    };
+    f.h.input.timeS = typedS + 0.25;
+    f.frame();
+    ASSERT_TRUE(f.h.ctx.output().repaintAfterS.has_value());
+    EXPECT_NEAR(*f.h.ctx.output().repaintAfterS, 0.35, 1e-9);  // it goes at 0.6 s
+    const int shownLines = caretLines();
+    f.h.input.timeS = typedS + 0.7;
+    f.frame();
+    EXPECT_NEAR(*f.h.ctx.output().repaintAfterS, 0.3, 1e-9);  // back at 1.0 s
+    EXPECT_EQ(caretLines(), shownLines - 1);
+    f.h.input.timeS = typedS + 1.1;
+    f.frame();
+    EXPECT_NEAR(*f.h.ctx.output().repaintAfterS, 0.5, 1e-9);
+    EXPECT_EQ(caretLines(), shownLines);
+    f.h.clickAt({700.0f, 500.0f}, [&](Ui& ui) { f.r = textEdit(ui, "Name", f.text, 150.0f); });
+    EXPECT_FALSE(f.r.hasFocus());
+    EXPECT_FALSE(f.h.ctx.output().repaintAfterS.has_value());
+}
+
 TEST(UiTextEdit, ClickPlacesCursorBetweenGlyphs) {
     TextEditFixture f;
     f.text = "abcd";

@@ -35,8 +35,13 @@ TEST(InteractionQuality, InputThatStopsGivesTheFullPictureAfterTheSettleTime) {
     InteractionQuality quality({.enabled = true, .budgetMs = 80.0, .settleS = 0.3});
     quality.update(700.0, true, 10.0);
     ASSERT_GT(quality.level(), 0);
+    // A window at rest wakes for the full picture when it is due.
+    ASSERT_TRUE(quality.fullPictureAtS().has_value());
+    EXPECT_DOUBLE_EQ(*quality.fullPictureAtS(), 10.3);
     EXPECT_GT(quality.update(50.0, false, 10.2), 0) << "0.2 s after the last input: still moving";
+    EXPECT_DOUBLE_EQ(*quality.fullPictureAtS(), 10.3);
     EXPECT_EQ(quality.update(50.0, false, 10.31), 0);
+    EXPECT_FALSE(quality.fullPictureAtS().has_value()) << "at full quality nothing is due";
     EXPECT_EQ(quality.reduction().label, REDUCTION_LADDER[0].label);
     // A frame at full quality is the project's own: nothing reduced.
     EXPECT_FALSE(REDUCTION_LADDER[0].msaaOff);
