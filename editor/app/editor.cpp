@@ -253,8 +253,12 @@ Result<bool> Editor::frame() {
     }
     int width = 0, height = 0;
     mWindow->framebufferSize(&width, &height);
-    if (width <= 0 || height <= 0)
-        return true;  // minimised
+    if (width <= 0 || height <= 0) {
+        // Minimised (a 0×0 framebuffer on Windows and Wayland): nothing to draw until it is
+        // shown again, which is an event; without the wait the loop polled at full speed.
+        mWindow->waitForEvents(LONGEST_IDLE_WAIT_S);
+        return true;
+    }
     runInput(input, width, height);
     recordProjectEdit(mState, mUi && mUi->context().activeId().value != 0);
     if (applyRequests())
