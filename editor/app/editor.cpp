@@ -418,7 +418,8 @@ void Editor::startRegrow() {
     auto work = [loaded = mState.doc.loaded, withPhysics = !mSettings.noPhysics,
                  surface = mRegrowOnSameSurface ? mLive.scene.get() : nullptr](
                     DocumentJob& job) -> Result<GrownDocument> {
-        auto field = growField(loaded, withPhysics, nullptr, surface, job.stopToken());
+        auto field = growField(loaded, withPhysics, nullptr, surface, job.stopToken(),
+                               [&job](const std::string& stage) { job.setStage(stage); });
         if (!field)
             return field.error();
         GrownDocument grown;
@@ -426,7 +427,7 @@ void Editor::startRegrow() {
         return grown;
     };
     mState.regrowJob = std::make_unique<DocumentJob>(
-        DocumentAction::Regrow, std::filesystem::path(), "growing " + mState.doc.project().name,
+        DocumentAction::Regrow, std::filesystem::path(), "",  // the badge shows the build's stages
         std::move(work), std::chrono::milliseconds(mSettings.loadDelayMs), mState.wakeFrame);
     if (mReplay)  // scripts and screenshots: the edit's field in the next frame, whatever the speed
         mState.regrowJob->wait();

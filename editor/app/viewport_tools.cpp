@@ -404,6 +404,9 @@ void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const Edito
         char elapsed[32];
         std::snprintf(elapsed, sizeof elapsed, " … %.0f s", s.regrowJob->elapsedS());
         badge("growing the field after the edit" + std::string(elapsed));
+        // Below it, the build's stage: which layer grows now, or the mesh read again.
+        if (const std::string stage = s.regrowJob->stage(); !stage.empty())
+            badge(stage);
     }
     const auto toPoints = [&](glm::vec2 px) {
         return ui::Vec2(view.min.x + px.x / ppp, view.min.y + px.y / ppp);

@@ -18,9 +18,10 @@
 #include "app/autosave.h"
 #include "app/edit_actions.h"
 #include "app/editor_keys.h"
+#include "app/panels.h"
+#include "app/viewport_tools.h"
 #include "maps/map_image.h"
 #include "physics/wind.h"
-#include "app/panels.h"
 #include "support/scratch_folder.h"
 #include "support/test_fonts.h"
 #include "support/test_paths.h"
@@ -965,6 +966,42 @@ namespace {
 
 // At rest the window draws only its panels, about ten times a second (app/view_redraw.h): the
 // status bar says so instead of a frame rate that would read as a slow viewport.
+// A re-grow after an edit runs on a worker while the old field stays on screen; the viewport's
+// badge says so and, below it, what the build does now (which layer grows): before, one text for
+// seconds of work.
+TEST(EditorPanels, TheRegrowBadgeFollowsTheBuildsStages) {
+    ScratchFolder folder("regrow_badge");
+    EditorDriver driver(folder.path());
+    std::promise<void> release;
+    std::shared_future<void> released = release.get_future().share();
+    driver.state.regrowJob = std::make_unique<editor::DocumentJob>(
+        editor::DocumentAction::Regrow, fs::path(), "",
+        [released](editor::DocumentJob&) -> Result<editor::GrownDocument> {
+            released.wait();
+            return makeError("test", "not grown");
+        });
+    const auto overlayTexts = [&] {
+        driver.ctx.beginFrame(driver.input);
+        editor::drawViewportOverlay(driver.ctx, {{300.0f, 20.0f}, {1280.0f, 680.0f}}, 1.0f,
+                                    driver.state, core::OrbitCamera{}, editor::ViewportPointer{});
+        std::vector<std::string> texts;
+        for (const ui::ClippedShape& shape : driver.ctx.endFrame().shapes)
+            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape))
+                texts.push_back(t->text);
+        return texts;
+    };
+    std::vector<std::string> texts = overlayTexts();
+    ASSERT_EQ(texts.size(), 1u);  // no stage yet
+    EXPECT_EQ(texts[0].rfind("growing the field after the edit … ", 0), 0u) << texts[0];
+    driver.state.regrowJob->setStage("growing layer \"grass\" (2 of 3)");
+    texts = overlayTexts();
+    ASSERT_EQ(texts.size(), 2u);
+    EXPECT_EQ(texts[1], "growing layer \"grass\" (2 of 3)");
+    release.set_value();
+    driver.state.regrowJob.reset();
+    EXPECT_TRUE(overlayTexts().empty());
+}
+
 TEST(EditorPanels, TheStatusBarSaysAtRestInsteadOfThePanelsFrameRate) {
     editor::FrameStatus status;
     status.fps = 9.6;
