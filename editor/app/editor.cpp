@@ -210,8 +210,16 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
 }
 
 Editor::~Editor() {
-    if (mState.regrowing() && mWindow)
+    const bool exporting = mState.exportJob && !mState.exportJob->done();
+    if ((mState.regrowing() || exporting) && mWindow)
         mWindow->hide();  // the session is over: gone from the screen while the workers end
+    // An export asked for is finished (its files are whole or untouched either way), said on
+    // the terminal: the window is gone, and it used to stand frozen until the export's end.
+    if (exporting) {
+        std::fprintf(stderr, "grass-editor: finishing the export before quitting …\n");
+        mState.exportJob->wait();
+        std::fprintf(stderr, "grass-editor: %s\n", mState.exportJob->summary().c_str());
+    }
     for (std::unique_ptr<DocumentJob>* job : {&mState.regrowJob, &mState.stoppingRegrow})
         if (*job) {
             (*job)->cancel();

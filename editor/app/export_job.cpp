@@ -30,6 +30,10 @@ ExportJob::ExportJob(core::LoadedProject loaded, const core::Scene& scene,
 }
 
 ExportJob::~ExportJob() {
+    wait();
+}
+
+void ExportJob::wait() {
     if (mWorker.joinable())
         mWorker.join();
 }

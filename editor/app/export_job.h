@@ -26,6 +26,7 @@ public:
     ExportJob& operator=(const ExportJob&) = delete;
 
     bool done() const { return mDone.load(); }
+    void wait();  // until done()
     // Asks the export to end at its next stage, before anything is renamed into place (the
     // dialog's Stop): the folder stays as it was. Too late once the files are being renamed.
     void stop() { mStop.request_stop(); }
