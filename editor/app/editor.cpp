@@ -337,6 +337,7 @@ RestingFrame Editor::restingFrame() const {
     if (!mState.transient.status.atRest)
         frame.statusUpdateInS = secondsUntil(mLastStatus + STATUS_EVERY) + 0.005;
     frame.progressShown = mState.regrowing() || mState.busy();
+    frame.playing = mState.view.timeline.playing();
     return frame;
 }
 
@@ -661,7 +662,11 @@ void Editor::chooseQuality() {
     // Playback counts as interaction (issue 24): the field moves, so a reduced picture keeps it
     // fluid; the physics runs one step a frame meanwhile (advanceTime) and drops the rest, said
     // in the status bar. Pausing refines to the full picture.
-    const bool playing = view.timeline.playing() && !mReplay;
+    // A field that nothing moves (no wind, its blades settled, no billboards, props or snow
+    // changing with time) plays at full quality: its picture does not change.
+    const bool fieldMoves = (mLive.physics && mLive.physics->moved) ||
+                            timeChangesThePicture(*mLive.scene, view.options);
+    const bool playing = view.timeline.playing() && !mReplay && fieldMoves;
     const double nowS = std::chrono::duration<double>(Clock::now() - mStartTime).count();
     const bool wasReduced = view.quality.level() > 0;
     view.quality.update(mFrameS * 1000.0, mInteracting || playing, nowS, mViewDrawn || mFrame == 0);
@@ -702,9 +707,12 @@ void Editor::render(int width, int height) {
     // mesh); scripts and screenshots draw them in the frame that asks, as `grass render` does.
     mLive.renderer->placeBillboardsInBackground(!mReplay);
     // The picture is drawn only when what it shows changed (app/view_redraw.h).
-    ViewInputs inputs = viewInputsOf(
-        *mLive.renderer, mState.mapsChanged, mLive.physics ? mLive.physics->steps : 0, mCamera,
-        {w, h, samples}, mState.view.options, mState.doc.project(), *mLive.scene);
+    // The GPU physics steps the drawn blades in place; the CPU's steps reach the picture as
+    // uploads (the renderer's content generation), and only when they moved the blades.
+    const std::size_t gpuSteps = mLive.physics && !mLive.physics->cpu ? mLive.physics->steps : 0;
+    ViewInputs inputs =
+        viewInputsOf(*mLive.renderer, mState.mapsChanged, gpuSteps, mCamera, {w, h, samples},
+                     mState.view.options, mState.doc.project(), *mLive.scene);
     mViewDrawn = mSettings.redrawEveryFrame ||
                  !viewStillDrawn(mDrawnView, inputs, mLive.renderer->placingBillboards());
     if (mViewDrawn) {

@@ -6,6 +6,8 @@ namespace grass::editor {
 
 double idleWaitS(const RestingFrame& frame) {
     double waitS = frame.progressShown ? PROGRESS_IDLE_WAIT_S : LONGEST_IDLE_WAIT_S;
+    if (frame.playing)
+        waitS = std::min(waitS, PLAYING_IDLE_WAIT_S);
     for (const std::optional<double>& change :
          {frame.panelsChangeInS, frame.fullPictureInS, frame.autosaveInS, frame.statusUpdateInS})
         if (change)

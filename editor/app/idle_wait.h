@@ -16,6 +16,9 @@ namespace grass::editor {
 inline constexpr double LONGEST_IDLE_WAIT_S = 1.0;
 // While a job's progress or running time is on screen (an export's bar, a re-grow's badge).
 inline constexpr double PROGRESS_IDLE_WAIT_S = 0.1;
+// While the timeline plays a field whose picture stands still: the physics keeps up (two 60 Hz
+// steps a frame) and the timeline's clock moves.
+inline constexpr double PLAYING_IDLE_WAIT_S = 1.0 / 30.0;
 
 // What will change on screen without input, each in seconds from now (unset: nothing will).
 struct RestingFrame {
@@ -24,10 +27,12 @@ struct RestingFrame {
     std::optional<double> autosaveInS;      // unsaved changes: the next autosave
     std::optional<double> statusUpdateInS;  // the status bar still shows moving frames' rate
     bool progressShown = false;
+    bool playing = false;
 };
 
 // Seconds the frame may wait for an event: the soonest of the changes, at most
-// LONGEST_IDLE_WAIT_S (PROGRESS_IDLE_WAIT_S with progress shown), at least 0.
+// LONGEST_IDLE_WAIT_S (PROGRESS_IDLE_WAIT_S with progress shown, PLAYING_IDLE_WAIT_S while
+// playing), at least 0.
 double idleWaitS(const RestingFrame& frame);
 
 }  // namespace grass::editor

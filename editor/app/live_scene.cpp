@@ -21,6 +21,22 @@ std::string LivePhysics::deviceLabel() const {
     return cpu ? "cpu" : "gpu";
 }
 
+bool tipsMoved(std::span<const core::Blade> blades, std::vector<glm::vec3>& shownTips) {
+    bool moved = shownTips.size() != blades.size();
+    for (std::size_t i = 0; i < blades.size() && !moved; ++i) {
+        const float limit = STILL_TIP_SHARE * blades[i].h();
+        const glm::vec3 d = blades[i].v2() - shownTips[i];
+        // Written so that a NaN tip counts as moved.
+        moved = !(glm::dot(d, d) <= limit * limit);
+    }
+    if (moved) {
+        shownTips.resize(blades.size());
+        for (std::size_t i = 0; i < blades.size(); ++i)
+            shownTips[i] = blades[i].v2();
+    }
+    return moved;
+}
+
 double LivePhysics::advanceTo(double targetS, int maxSteps) {
     const double dtS = scene.params.dtS;
     int stepped = 0;
@@ -31,10 +47,17 @@ double LivePhysics::advanceTo(double targetS, int maxSteps) {
             gpu->step(scene, static_cast<float>(timeS()));
         ++steps;
     }
-    // The CPU's blades go up once, after the frame's steps.
-    if (cpu && stepped > 0 && renderer != nullptr)
+    // The CPU's blades go up once, after the frame's steps, and only the layers they moved.
+    if (cpu && stepped > 0) {
+        moved = false;
+        shownTips.resize(cpu->layerCount());
         for (std::size_t layer = 0; layer < cpu->layerCount(); ++layer)
-            renderer->uploadBlades(layer, cpu->blades(layer));
+            if (tipsMoved(cpu->blades(layer), shownTips[layer])) {
+                moved = true;
+                if (renderer != nullptr)
+                    renderer->uploadBlades(layer, cpu->blades(layer));
+            }
+    }
     const double behindS = targetS - timeS();
     if (behindS < dtS)
         return 0.0;
@@ -47,9 +70,10 @@ double LivePhysics::advanceTo(double targetS, int maxSteps) {
 
 void LivePhysics::regrown(std::size_t layer, const core::Scene& field,
                           const std::vector<std::uint32_t>& patches) {
-    if (cpu)
+    if (cpu) {
         cpu->resetPatches(layer, field, patches);
-    else
+        shownTips.clear();  // the renderer has the patches at rest: compare anew
+    } else
         gpu->uploadRegrown(layer, field, patches);
 }
 
@@ -143,6 +167,7 @@ Result<void> resetPhysics(Live& live) {
     }
     if (live.physics->cpu) {
         live.physics->cpu->reset(*live.scene);
+        live.physics->shownTips.clear();
         return {};
     }
     auto gpu = render::ScenePhysicsGpu::createOn(*live.scene, live.renderer->bladeBuffers());

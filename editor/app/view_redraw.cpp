@@ -19,6 +19,8 @@ ViewInputs viewInputsOf(const render::SceneRenderer& renderer, std::uint64_t liv
     // What a frame measures, not what it draws: statistics every half second, exact timings.
     inputs.options.cull.collectStats = false;
     inputs.options.exactStageTimings = false;
+    if (!timeChangesThePicture(scene, options))
+        inputs.options.timeS = 0.0f;
     inputs.project = project;
     // Names are drawn by the panels, not in the picture: typing one draws nothing again.
     inputs.project.name.clear();
@@ -30,6 +32,15 @@ ViewInputs viewInputsOf(const render::SceneRenderer& renderer, std::uint64_t liv
                                  layer.poorTipColor, layer.shape, layer.tipStart,
                                  layer.liveBlades});
     return inputs;
+}
+
+bool timeChangesThePicture(const core::Scene& scene, const render::RenderOptions& options) {
+    if (options.technique != core::GrassTechnique::Blades)
+        return true;  // billboards sway with their own wind model
+    for (const core::SceneProp& prop : scene.props)
+        if (prop.path.size() > 1)
+            return true;
+    return options.snow.enabled != 0u && options.snow.accumulationRate != options.snow.meltRate;
 }
 
 bool viewStillDrawn(const std::optional<ViewInputs>& drawn, const ViewInputs& now,

@@ -63,6 +63,14 @@ ViewInputs viewInputsOf(const render::SceneRenderer& renderer, std::uint64_t liv
                         ViewTarget target, const render::RenderOptions& options,
                         const core::Project& project, const core::Scene& scene);
 
+// Whether the picture changes with the timeline's time alone, the blades as they are: billboards
+// sway, props move along their paths, snow falls or melts (what the renderer reads of
+// RenderOptions::timeS). When it does not, the time is no input of the picture: a field that
+// nothing moves is not drawn again while the timeline plays. The blades' own motion is not in
+// it: the CPU physics says whether it moved the blades (LivePhysics::moved), the GPU's steps are
+// inputs (ViewInputs::physicsSteps).
+bool timeChangesThePicture(const core::Scene& scene, const render::RenderOptions& options);
+
 // Whether the picture drawn for `drawn` (none: nothing drawn yet) is the one `now` would draw.
 // A renderer whose worker places billboards draws every frame: its frame takes them in.
 bool viewStillDrawn(const std::optional<ViewInputs>& drawn, const ViewInputs& now,

@@ -37,6 +37,10 @@ TEST(IdleWait, ShownProgressKeepsFramesComing) {
     EXPECT_DOUBLE_EQ(idleWaitS(frame), PROGRESS_IDLE_WAIT_S);
     frame.panelsChangeInS = 0.02;
     EXPECT_DOUBLE_EQ(idleWaitS(frame), 0.02);
+    // Playing a field whose picture stands still: frames keep coming for the physics' steps.
+    frame = {};
+    frame.playing = true;
+    EXPECT_DOUBLE_EQ(idleWaitS(frame), PLAYING_IDLE_WAIT_S);
 }
 
 TEST(IdleWait, OverdueChangesAndNaNNeverMakeAWaitOutsideItsBounds) {

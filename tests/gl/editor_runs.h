@@ -12,14 +12,20 @@
 
 namespace grass::test {
 
-// A 2 m plane of sparse grass in `folder` (created), named `name`, the window `width` wide.
+// A 2 m plane of sparse grass in `folder` (created), named `name`, the window `width` wide;
+// `windy`: a breeze keeps its blades moving (without one they settle and stand still).
 inline void writeTinyProject(const std::filesystem::path& folder, const std::string& name = "tiny",
-                             int width = 480, int height = 320) {
+                             int width = 480, int height = 320, bool windy = false) {
     std::filesystem::create_directories(folder);
     std::ofstream(folder / "project.json")
         << R"({"format": "grass-project", "version": 2, "name": ")" << name << R"(",
   "mesh": {"procedural": "plane", "size": 2, "resolution": 2},
-  "layers": [{"name": "grass", "density": 20}],
+  "layers": [{"name": "grass", "density": 20}],)"
+        << (windy
+                ? R"( "wind": [{"name": "breeze", "kind": "directional", "direction": [1, 0, 0.35],
+  "strength": 20, "gust": 0.5}],)"
+                : "")
+        << R"(
   "render": {"width": )"
         << width << ", \"height\": " << height << R"(, "geometry": "strips", "msaa": 0}})";
 }

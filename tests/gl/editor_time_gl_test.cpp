@@ -4,6 +4,8 @@
 // advanced only by the part of each frame that was not rendering (0.02 s in 30 s on the meadow).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -53,13 +55,13 @@ TEST(EditorTime, TenSecondsOfSlowFramesMoveTheTimelineTenSecondsAndAutosave) {
         << "the unsaved edit was not autosaved by the clock";
 }
 
-// Playback counts as interaction: with a budget no frame meets (5 ms, the least allowed), a playing editor
-// draws the reduced picture for as long as it plays (it opens playing), and Space (pause)
-// brings back the full one once the settle time has passed — the summary's "full quality after
-// input stops" counts those returns.
+// Playback of a field that moves (a breeze) counts as interaction: with a budget no frame meets
+// (5 ms, the least allowed), a playing editor draws the reduced picture for as long as it plays
+// (it opens playing), and Space (pause) brings back the full one once the settle time has passed
+// — the summary's "full quality after input stops" counts those returns.
 TEST(EditorTime, PlaybackKeepsTheReducedPictureUntilPaused) {
     const auto dir = scratchDir("editor_playback_quality");
-    writeTinyProject(dir);
+    writeTinyProject(dir, "tiny", 480, 320, /*windy=*/true);
     const std::string returned = "full quality after input stops:";
     const std::string playing = runEditor(dir, "wait-s 3\n", "--frame-budget-ms 5");
     EXPECT_EQ(playing.find(returned), std::string::npos)
@@ -70,6 +72,41 @@ TEST(EditorTime, PlaybackKeepsTheReducedPictureUntilPaused) {
     // Without adaptive quality nothing is ever reduced, so nothing returns.
     const std::string off = runEditor(dir, "wait-s 3\n", "--no-adaptive");
     EXPECT_EQ(off.find(returned), std::string::npos) << off;
+}
+
+// "viewport drawn in N of M frames": {N, M}.
+std::pair<int, int> viewportDrawn(const std::string& log) {
+    int drawn = -1, frames = -1;
+    const std::size_t at = log.find("viewport drawn in ");
+    if (at != std::string::npos)
+        std::sscanf(log.c_str() + at, "viewport drawn in %d of %d frames", &drawn, &frames);
+    return {drawn, frames};
+}
+
+// A field that nothing moves (no wind: its blades settle under gravity within a fraction of a
+// second) plays at full quality, and its picture is not drawn again while the timeline plays:
+// it does not change. Before, playback counted as interaction whatever moved, so a new project
+// from a mesh (no wind) played reduced, every frame drawn. With a breeze each step is drawn.
+TEST(EditorTime, AFieldThatNothingMovesPlaysAtFullQualityAndIsNotDrawnAgain) {
+    const std::string returned = "full quality after input stops:";
+    const auto still = scratchDir("editor_playback_still");
+    writeTinyProject(still);
+    const std::string stillLog = runEditor(still, "wait-s 3\n", "--frame-budget-ms 5");
+    EXPECT_NE(stillLog.find(returned), std::string::npos)
+        << "the still field stayed reduced while it played:\n"
+        << stillLog;
+    const auto [drawn, frames] = viewportDrawn(stillLog);
+    ASSERT_GT(frames, 20) << stillLog;
+    EXPECT_LT(drawn, frames / 4) << stillLog;
+    const auto windy = scratchDir("editor_playback_windy");
+    writeTinyProject(windy, "tiny", 480, 320, /*windy=*/true);
+    const std::string windyLog = runEditor(windy, "wait-s 3\n", "--frame-budget-ms 5");
+    // Drawn after each physics step (60 a second; a script's frames come faster, and those
+    // between two steps draw nothing new): at least half of 3 s of steps, or every frame when
+    // frames are slower than the steps.
+    const auto [windyDrawn, windyFrames] = viewportDrawn(windyLog);
+    EXPECT_GE(windyDrawn, std::min(windyFrames, 90)) << windyLog;
+    EXPECT_GT(windyDrawn, 2 * drawn) << windyLog;
 }
 
 // The frames of a script phase, from the --wall-clock summary ("frames NAME: N, median …").
