@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/interrupt_stop.h"
 #include "cli/parse_arguments.h"
 #include "cli/preset_option.h"
 #include "export/export.h"
@@ -45,7 +46,8 @@ std::optional<int> parseExportArgs(const std::vector<std::string>& argv, ExportA
         "without EXT_mesh_gpu_instancing. "
         "raw: per layer the exact "
         "64-byte blade records the renderer uploads, the patch table, the maps as float32, and "
-        "manifest.json. Progress goes to stderr. See docs/export.md.");
+        "manifest.json. Progress goes to stderr. Ctrl+C stops it at its next stage with the "
+        "folder as it was (exit 130); a second Ctrl+C ends it at once. See docs/export.md.");
     addProjectArgument(parser, &args.project, true);
     parser.text("--out", "DIR", "the folder to write into (required)", &args.out);
     parser.text("--format", "gltf|raw|glb|mesh", "what to write (default gltf)", &args.format);
@@ -92,19 +94,22 @@ Error withFlagNames(Error error) {
     return error;
 }
 
-core::ExportOptions exportOptions(const ExportArgs& args, core::ExportFormat format) {
+core::ExportOptions exportOptions(const ExportArgs& args, core::ExportFormat format,
+                                  std::stop_token stop) {
     core::ExportOptions options;
     options.format = format;
     options.lod = args.lod;
     options.outDir = args.out;
+    options.stop = std::move(stop);
     return options;
 }
 
 // Grows the field, with its notes and the time it took on stderr; `start` is when the project
 // began to load.
-Result<GrownScene> growScene(const core::LoadedProject& loaded, Clock::time_point start) {
+Result<GrownScene> growScene(const core::LoadedProject& loaded, Clock::time_point start,
+                             std::stop_token stop) {
     std::fprintf(stderr, "note: growing %s ...\n", loaded.file.c_str());
-    auto scene = core::buildScene(loaded, nullptr, {}, buildProgressNotes());
+    auto scene = core::buildScene(loaded, nullptr, std::move(stop), buildProgressNotes());
     if (!scene)
         return scene.error();
     printNotes(scene->notes);
@@ -153,21 +158,27 @@ int runExport(const std::vector<std::string>& argv) {
         return reportFailure("export", folder.error(), EXIT_FAILED);
 
     const auto start = Clock::now();
+    // From here Ctrl+C stops the growing or the export at its next stage (interrupt_stop.h).
+    const InterruptStop interrupt;
+    const auto failed = [&](const Error& error) {
+        return reportFailure("export", withFlagNames(error),
+                             interrupt.signal() != 0 ? interrupt.exitCode() : EXIT_FAILED);
+    };
     auto loaded = core::loadProject(args.project);
     if (!loaded)
         return reportFailure("export", loaded.error(), EXIT_FAILED);
     applyPresetOption(args.preset, loaded->project);
-    const core::ExportOptions options = exportOptions(args, *format);
+    const core::ExportOptions options = exportOptions(args, *format, interrupt.token());
     if (auto refused = core::refuseExportOverInputs(*loaded, options); !refused)
         return reportFailure("export", withFlagNames(refused.error()), EXIT_USAGE);
-    auto grown = growScene(*loaded, start);
+    auto grown = growScene(*loaded, start, interrupt.token());
     if (!grown)
-        return reportFailure("export", grown.error(), EXIT_FAILED);
+        return failed(grown.error());
 
     const auto exportStart = Clock::now();
     auto report = exportWithProgress(*loaded, grown->scene, options);
     if (!report)
-        return reportFailure("export", withFlagNames(report.error()), EXIT_FAILED);
+        return failed(report.error());
     printExportReport(*loaded, options, *report, msSince(exportStart), grown->growMs);
     return 0;
 }

@@ -9,6 +9,14 @@ add_test(NAME cli.kill_during_save
 set_tests_properties(cli.kill_during_save PROPERTIES LABELS cli TIMEOUT 300
     PASS_REGULAR_EXPRESSION "^paint: 25 runs .*\nexport: 12 runs ")
 
+# Ctrl+C during an export stops it at its next stage: exit 130 (143 for SIGTERM), one line, the
+# folder as it was, no staged temporary; a second Ctrl+C ends it at once (interrupt_export_test.sh).
+add_test(NAME cli.export_interrupted
+         COMMAND ${GRASS_BASH} ${GRASS_CLI_DIR}/interrupt_export_test.sh ${GRASS_BIN}
+                 ${GRASS_CLI_PROJECTS}/growth_tiny ${GRASS_CLI_TMP}/export-interrupted)
+set_tests_properties(cli.export_interrupted PROPERTIES LABELS cli TIMEOUT 120
+    PASS_REGULAR_EXPRESSION "the next export writes and leaves no temporary")
+
 # The editor's autosave survives a kill: 10 painting sessions SIGKILLed at random moments, each
 # next one recovering the autosave (kill_autosave_test.sh); under Xvfb, about a minute.
 if(TARGET grass-editor)
