@@ -491,6 +491,34 @@ std::string glbBytes(const std::string& json, const GlbChunks& chunks) {
 
 }  // namespace
 
+std::string otherMeshFormat(const fs::path& file, std::string_view bytes) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::string kind;
+    if (bytes.starts_with("Kaydara FBX Binary") || ext == ".fbx")
+        kind = "an FBX file";
+    else if (bytes.starts_with("ply\n") || bytes.starts_with("ply\r") || ext == ".ply")
+        kind = "a PLY file";
+    else if (bytes.starts_with("solid ") || ext == ".stl")
+        kind = "an STL file";
+    else if (ext == ".obj")
+        kind = "an OBJ file";
+    else if (ext == ".dae")
+        kind = "a COLLADA file";
+    else if (ext == ".blend")
+        kind = "a Blender file";
+    else if (ext == ".usd" || ext == ".usda" || ext == ".usdc" || ext == ".usdz")
+        kind = "a USD file";
+    else if (ext == ".3ds" || ext == ".abc" || ext == ".x3d")
+        kind = "a " + ext.substr(1) + " file";
+    if (kind.empty())
+        return {};
+    return "; it looks like " + kind +
+           ": grass reads glTF 2.0, so export the mesh as .glb or .gltf from the tool that made "
+           "it (Blender: File > Export > glTF 2.0)";
+}
+
 Result<GltfSource> parseGltfFile(const fs::path& file) {
     const std::string display = file.string();
     auto bytes = readFile(file);
@@ -512,7 +540,8 @@ Result<GltfSource> parseGltfFile(const fs::path& file) {
         if (first == std::string_view::npos || jsonText[first] != '{')
             return makeError(display,
                              "is not a glTF file: it is neither glTF JSON nor a GLB "
-                             "(which starts with \"glTF\")");
+                             "(which starts with \"glTF\")" +
+                                 otherMeshFormat(file, *bytes));
     }
 
     if (jsonDepth(jsonText) > MAX_JSON_DEPTH)

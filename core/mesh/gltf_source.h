@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "util/result.h"
@@ -27,6 +28,11 @@ struct GltfSource {
 
 // Errors name `file` as given and say what is wrong in one line.
 Result<GltfSource> parseGltfFile(const std::filesystem::path& file);
+
+// What a file that is not glTF seems to be, by its first bytes or its extension, with the way to
+// a glTF ("; it looks like an OBJ file: grass reads glTF 2.0, so export …"): artists bring
+// meshes in whatever their tool saves. Empty when it is no mesh format known.
+std::string otherMeshFormat(const std::filesystem::path& file, std::string_view firstBytes = {});
 
 // The file a relative URI of `gltfFile` names (percent-decoded), refused unless it is a regular
 // file inside the glTF file's folder (no absolute paths, "..", schemes or links out). `what`

@@ -9,6 +9,7 @@
 #include "app/edit_actions.h"
 #include "app/mesh_import.h"
 #include "app/panels.h"
+#include "mesh/gltf_source.h"
 #include "ui/text_edit.h"
 #include "ui/text_wrap.h"
 #include "ui/window.h"
@@ -101,7 +102,8 @@ void routeDroppedFiles(EditorState& s, const std::vector<std::string>& paths) {
         } else {
             s.transient.message = "cannot use " + dropped +
                                   ": drop a .gltf/.glb mesh, a map picture (" +
-                                  browseFilterText(BrowsePurpose::ImportMap) + ") or a project folder";
+                                  browseFilterText(BrowsePurpose::ImportMap) +
+                                  ") or a project folder" + core::gltf::otherMeshFormat(path);
         }
     }
 }

@@ -295,6 +295,13 @@ TEST(EditorPanels, DroppedFilesGoWhereTheirKindSays) {
     editor::routeDroppedFiles(editor.state, {"/m/notes.txt"});
     EXPECT_NE(editor.state.transient.message.find("drop a .gltf/.glb mesh"), std::string::npos)
         << editor.state.transient.message;
+    EXPECT_EQ(editor.state.transient.message.find("looks like"), std::string::npos);
+    // A mesh of another format is named, with the way to a glTF.
+    editor::routeDroppedFiles(editor.state, {"/m/Rock.OBJ"});
+    EXPECT_NE(
+        editor.state.transient.message.find("it looks like an OBJ file: grass reads glTF 2.0"),
+        std::string::npos)
+        << editor.state.transient.message;
 }
 
 // Issue 26 item 1: Ctrl+O opens the browser for a project, Ctrl+N starts a new one.

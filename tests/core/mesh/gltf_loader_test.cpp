@@ -763,6 +763,27 @@ TEST(GltfLoader, ReportsFilesThatAreNotGltf) {
     }
 }
 
+// Artists bring meshes in whatever their tool saves: a file that is another mesh format is named
+// as such, with the way to a glTF.
+TEST(GltfLoader, AnotherMeshFormatIsNamedWithTheWayToGltf) {
+    const fs::path dir = test::scratchDir("gltf_other_formats");
+    const std::pair<std::string, std::string> files[] = {
+        {"rock.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n"},
+        {"rock.fbx", std::string("Kaydara FBX Binary  \0\x1a\0", 23)},
+        {"scan.bin", "ply\nformat ascii 1.0\nend_header\n"},
+        {"part.STL", "solid part\nendsolid part\n"}};
+    const char* kinds[] = {"an OBJ file", "an FBX file", "a PLY file", "an STL file"};
+    for (std::size_t i = 0; i < std::size(files); ++i) {
+        std::ofstream(dir / files[i].first, std::ios::binary) << files[i].second;
+        const std::string message = loadError(dir / files[i].first);
+        EXPECT_TRUE(contains(message, kinds[i])) << message;
+        EXPECT_TRUE(contains(message, "export the mesh as .glb or .gltf")) << message;
+    }
+    // A text file that is no known format says only that it is not glTF.
+    std::ofstream(dir / "notes.txt") << "hello";
+    EXPECT_FALSE(contains(loadError(dir / "notes.txt"), "looks like"));
+}
+
 TEST(GltfLoader, ReportsAbsurdlyDeepJsonInsteadOfOverflowingTheStack) {
     const fs::path file = test::scratchDir("gltf_deep_json") / "deep.gltf";
     const std::size_t depth = 200000;
