@@ -4,6 +4,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <vector>
+
+#include "util/nearest_name.h"
 
 namespace grass {
 
@@ -121,8 +125,15 @@ Result<void> ArgParser::parse(const std::vector<std::string>& args) {
             }
             const auto option = std::find_if(mOptions.begin(), mOptions.end(),
                                              [&](const Option& o) { return o.name == arg; });
-            if (option == mOptions.end())
-                return makeError(arg, "unknown option (see --help)");
+            if (option == mOptions.end()) {
+                std::vector<std::string> names;
+                for (const Option& o : mOptions)
+                    names.push_back(o.name);
+                const std::optional<std::string> meant = core::nearestName(arg, names);
+                return makeError(arg, "unknown option" +
+                                          (meant ? "; did you mean " + *meant + "?" : "") +
+                                          " (see --help)");
+            }
             if (option->takesValue && !inlineValue) {
                 if (i + 1 >= args.size())
                     return makeError(arg, "needs a value: " + arg + " " + option->metavar);

@@ -1,10 +1,12 @@
 // grass: the command-line face of the editor. Sub-commands share the editor's code paths
 // (ARCHITECTURE.md): what `grass render` draws is what the viewport draws.
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/commands.h"
+#include "util/nearest_name.h"
 
 namespace {
 
@@ -68,10 +70,15 @@ int main(int argc, char** argv) {
         return grass::cli::runSoak(args);
     if (command.rfind("-", 0) == 0)
         grass::cli::printError("", command + ": unknown option (see grass --help)");
-    else
+    else {
+        const std::vector<std::string> commands = {"render",   "sim",     "mesh-info",
+                                                   "paint",    "export",  "bench",
+                                                   "tradeoff", "presets", "soak"};
+        const std::optional<std::string> meant = grass::core::nearestName(command, commands);
         grass::cli::printError(
-            command,
-            "unknown command (commands: render, sim, mesh-info, paint, export, bench, tradeoff, "
-            "presets, soak; see grass --help)");
+            command, "unknown command" + (meant ? "; did you mean " + *meant + "?" : "") +
+                         " (commands: render, sim, mesh-info, paint, export, bench, tradeoff, "
+                         "presets, soak; see grass --help)");
+    }
     return grass::cli::EXIT_USAGE;
 }
