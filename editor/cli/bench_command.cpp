@@ -11,6 +11,7 @@
 #include "cli/bench_options.h"
 #include "cli/bench_report.h"
 #include "cli/commands.h"
+#include "cli/interrupt_stop.h"
 #include "cli/output_files.h"
 #include "tools/ms_since.h"
 #include "util/atomic_file.h"
@@ -105,7 +106,9 @@ int runBench(const std::vector<std::string>& argv) {
         return reportFailure("bench", comparable.error(), EXIT_FAILED);
 
     const auto start = Clock::now();
-    auto run = measureRun(args, *cases);
+    // Ctrl+C ends the run after the case under way; the cases measured are printed and saved.
+    const InterruptStop interrupt;
+    auto run = measureRun(args, *cases, interrupt.token());
     if (!run)
         return reportFailure("bench", run.error(), EXIT_FAILED);
     if (auto printed = printRun(args, *run, *old); !printed)
@@ -113,7 +116,7 @@ int runBench(const std::vector<std::string>& argv) {
     std::printf("wall time %.1f s for %zu case(s)\n", msSince(start) / 1000.0, run->cases.size());
     if (auto written = writeOutputFile(args.out, benchRunJson(*run)); !written)
         return reportFailure("bench", written.error(), EXIT_FAILED);
-    return 0;
+    return interrupt.signal() != 0 ? interrupt.exitCode() : 0;
 }
 
 }  // namespace grass::cli

@@ -296,7 +296,8 @@ BenchRun startRun(const BenchArgs& args, render::GeometryPath geometry) {
 
 }  // namespace
 
-Result<BenchRun> measureRun(const BenchArgs& args, const std::vector<const BenchCase*>& cases) {
+Result<BenchRun> measureRun(const BenchArgs& args, const std::vector<const BenchCase*>& cases,
+                            std::stop_token stop) {
     std::string fontError;
     auto fonts = ui::FontAtlas::load(ui::FontAtlas::defaultFontPath(), &fontError);
     if (!fonts)
@@ -310,6 +311,12 @@ Result<BenchRun> measureRun(const BenchArgs& args, const std::vector<const Bench
     BenchRun run = startRun(args, geometry);
     std::fprintf(stderr, "bench: %zu case(s) on %s\n", cases.size(), run.renderer.c_str());
     for (std::size_t i = 0; i < cases.size(); ++i) {
+        if (stop.stop_requested()) {
+            std::fprintf(stderr,
+                         "bench: stopped after %zu of %zu case(s): the cases measured follow\n", i,
+                         cases.size());
+            break;
+        }
         const auto start = Clock::now();
         const CaseContext ctx{args, *fonts, geometry,
                               "bench: [" + std::to_string(i + 1) + "/" +

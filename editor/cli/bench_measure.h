@@ -5,6 +5,7 @@
 // stderr.
 #pragma once
 
+#include <stop_token>
 #include <vector>
 
 #include "cli/bench_cases.h"
@@ -15,6 +16,9 @@
 namespace grass::cli {
 
 // Measures every case in `cases`; the error names the case's file or the GL failure.
-Result<BenchRun> measureRun(const BenchArgs& args, const std::vector<const BenchCase*>& cases);
+// A stop requested (Ctrl+C, interrupt_stop.h) ends the run after the case under way: the run
+// holds the cases measured.
+Result<BenchRun> measureRun(const BenchArgs& args, const std::vector<const BenchCase*>& cases,
+                            std::stop_token stop = {});
 
 }  // namespace grass::cli

@@ -65,7 +65,9 @@ std::optional<int> parseBenchArgs(const std::vector<std::string>& argv, BenchArg
         "timed frames, physics ms per step and blade-steps per second (compute shader), and UI "
         "ms (one frame of the editor's panels: build, layout, tessellation), under the GL "
         "renderer string. Progress goes to stderr. The full set takes a few minutes on a 2-core "
-        "software rasterizer; --quick under a minute.");
+        "software rasterizer; --quick under a minute. Ctrl+C ends the run after the case under "
+        "way, printing and saving the cases measured (exit 130); a second Ctrl+C ends it at "
+        "once.");
     describeOptions(parser, args);
     if (const auto exitCode = parseArguments(parser, argv, "bench"))
         return exitCode;

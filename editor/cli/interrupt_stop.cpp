@@ -1,41 +1,45 @@
 #include "cli/interrupt_stop.h"
 
-#include <pthread.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
-#include <cstdlib>
-#include <ctime>
 
 namespace grass::cli {
 
 namespace {
 
-sigset_t interruptSignals() {
-    sigset_t set;
-    sigemptyset(&set);
-    sigaddset(&set, SIGINT);
-    sigaddset(&set, SIGTERM);
-    return set;
+// Set by the handler; a lock-free atomic is safe to store from a signal handler.
+std::atomic<int> gCaught{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+
+extern "C" void onInterrupt(int sig) {
+    int none = 0;
+    if (!gCaught.compare_exchange_strong(none, sig))
+        _exit(128 + sig);  // the second: at once (_exit is async-signal-safe)
 }
 
 }  // namespace
 
 InterruptStop::InterruptStop() {
-    const sigset_t set = interruptSignals();
-    pthread_sigmask(SIG_BLOCK, &set, &mPrevious);
-    mWatcher = std::thread([this, set] {
-        // Looks every 0.1 s whether the command is done, since nothing else ends the wait.
-        const timespec tick{0, 100'000'000};
+    gCaught.store(0);
+    struct sigaction action {};
+    action.sa_handler = onInterrupt;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    sigaction(SIGINT, &action, &mPreviousInt);
+    sigaction(SIGTERM, &action, &mPreviousTerm);
+    // The stop is asked for here, not in the handler: a stop callback may do anything.
+    mWatcher = std::thread([this] {
         while (!mDone.load()) {
-            const int sig = sigtimedwait(&set, nullptr, &tick);
-            if (sig <= 0)
-                continue;
-            if (mSignal.load() != 0)
-                std::_Exit(128 + sig);  // the second: at once
-            mSignal.store(sig);
-            std::fprintf(stderr, "note: %s: stopping at the next stage (again to end at once)\n",
-                         sig == SIGINT ? "interrupted" : "terminated");
-            mStop.request_stop();
+            if (const int sig = gCaught.load(); sig != 0 && mSignal.load() == 0) {
+                mSignal.store(sig);
+                std::fprintf(stderr,
+                             "note: %s: stopping at the next stage (again to end at once)\n",
+                             sig == SIGINT ? "interrupted" : "terminated");
+                mStop.request_stop();
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
         }
     });
 }
@@ -43,7 +47,8 @@ InterruptStop::InterruptStop() {
 InterruptStop::~InterruptStop() {
     mDone.store(true);
     mWatcher.join();
-    pthread_sigmask(SIG_SETMASK, &mPrevious, nullptr);
+    sigaction(SIGINT, &mPreviousInt, nullptr);
+    sigaction(SIGTERM, &mPreviousTerm, nullptr);
 }
 
 }  // namespace grass::cli

@@ -1,8 +1,9 @@
-// Ctrl+C (SIGINT) or SIGTERM during `grass export`: the first asks the work to stop at its next
-// stage (a std::stop_token the command passes on), so the export ends with its staged files
-// removed, the folder as it was, and says so; a second ends the process at once. Before, the
-// process died where it stood: the folder stayed whole (the renames come last) but the staged
-// temporaries stayed until the next export there, and nothing said what had happened.
+// Ctrl+C (SIGINT) or SIGTERM during a long command (`grass export`, `grass bench`): the first asks
+// the work to stop at its next stage (a std::stop_token the command passes on), so an export ends
+// with its staged files removed and the folder as it was, a bench run with the cases measured so
+// far, and says so; a second ends the process at once. Before, the process died where it stood:
+// an export's staged temporaries stayed until the next export there, a bench run's finished
+// cases were lost, and nothing said what had happened.
 #pragma once
 
 #include <atomic>
@@ -14,11 +15,10 @@ namespace grass::cli {
 
 class InterruptStop {
 public:
-    // Blocks SIGINT and SIGTERM in the calling thread (and so in the threads it starts later)
-    // and waits for them on a thread of its own. Threads started before keep their mask: a
-    // signal one of them takes ends the process as before.
+    // Catches SIGINT and SIGTERM (a handler, not a blocked mask: the processes a command starts
+    // get the default disposition back when they exec) until destroyed. One at a time.
     InterruptStop();
-    ~InterruptStop();  // the signals' mask as it was
+    ~InterruptStop();  // the previous handlers back
     InterruptStop(const InterruptStop&) = delete;
     InterruptStop& operator=(const InterruptStop&) = delete;
 
@@ -33,7 +33,8 @@ private:
     std::stop_source mStop;
     std::atomic<int> mSignal{0};
     std::atomic<bool> mDone{false};
-    sigset_t mPrevious{};
+    struct sigaction mPreviousInt {
+    }, mPreviousTerm{};
     std::thread mWatcher;
 };
 

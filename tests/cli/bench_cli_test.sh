@@ -101,6 +101,27 @@ if [ -f "$json" ]; then
         failures+=("bench --compare at 64x48: the error does not name $json and its size")
 fi
 
+# 4. Ctrl+C once the first case is measured: the run ends after the case under way, prints and
+#    saves the cases measured, and exits 130 (editor/cli/interrupt_stop.h).
+stopped=$work/stopped.json
+timeout -k 10 "${GRASS_CLI_TIMEOUT:-120}" "$grass" bench --frames 1 \
+    --cases tiny,tiny-hybrid,nature-100k --out "$stopped" </dev/null \
+    >"$work/stdout" 2>"$work/stderr" &
+pid=$!
+for ((i = 0; i < 3000; ++i)); do
+    grep -q "case took" "$work/stderr" 2>/dev/null && break
+    sleep 0.02
+done
+kill -INT "$pid"
+wait "$pid"
+rc=$?
+[ "$rc" -eq 130 ] || failures+=("bench interrupted: exit code $rc, expected 130")
+grep -q "bench: stopped after [12] of 3 case(s)" "$work/stderr" ||
+    failures+=("bench interrupted: no word of the stop")
+grep -Eq '^tiny +1 ' "$work/stdout" || failures+=("bench interrupted: no table row for tiny")
+[ -f "$stopped" ] && grep -q '"name": "tiny"' "$stopped" ||
+    failures+=("bench interrupted: the cases measured were not saved")
+
 if [ "${#failures[@]}" -gt 0 ]; then
     echo "FAIL: grass bench"
     for failure in "${failures[@]}"; do echo "  - $failure"; done
@@ -111,4 +132,4 @@ if [ "${#failures[@]}" -gt 0 ]; then
     [ -f "$json" ] && { echo "--- $json:"; cat "$json"; }
     exit 1
 fi
-echo "ok: grass bench --out, --results --compare, size mismatch"
+echo "ok: grass bench --out, --results --compare, size mismatch, Ctrl+C"

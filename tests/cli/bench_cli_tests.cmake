@@ -9,7 +9,8 @@ grass_cli_test(bench_help OK --no-stderr
     -- ${GRASS_BIN} bench --help)
 
 # --out writes every figure with sane values; a saved run compared with itself gives 1.00; a run
-# at another size refuses the comparison (bench_cli_test.sh).
+# at another size refuses the comparison; Ctrl+C after the first case prints and saves the cases
+# measured (bench_cli_test.sh).
 add_test(NAME cli.bench_tiny_out_compare
          COMMAND ${GRASS_BASH} ${GRASS_CLI_DIR}/bench_cli_test.sh ${GRASS_BIN}
                  ${GRASS_CLI_TMP}/bench)
