@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/interrupt_stop.h"
 #include "cli/output_files.h"
 #include "cli/parse_arguments.h"
 #include "cli/soak_run.h"
@@ -36,6 +37,7 @@ struct SoakSetup {
     const core::LoadedProject& loaded;
     const core::ScenePhysics& physics;
     unsigned threads;
+    std::stop_token stop;  // Ctrl+C
 };
 
 std::optional<int> parseSoakArgs(const std::vector<std::string>& argv, SoakArgs& args) {
@@ -50,7 +52,8 @@ std::optional<int> parseSoakArgs(const std::vector<std::string>& argv, SoakArgs&
         "1) when a blade's length error |L - h| exceeds the tolerance validation states "
         "(docs/physics.md: 1e-4*h + 4*eps*(max|v0| + h)), a NaN/Inf appears, RSS grows more "
         "than 16 MiB after the first interval, or GL objects are left over (more at the end than "
-        "after the first step, or after tear-down than before set-up).");
+        "after the first step, or after tear-down than before set-up). Ctrl+C ends the run under "
+        "way at its next step: what ran is judged, printed and saved (exit 130).");
     addProjectArgument(parser, &args.project, true);
     parser.number("--seconds", "S", "simulated time", &args.seconds, 1e-3, 864000.0, "3600");
     parser.number("--dt", "DT", "step length in seconds", &args.dtS, 1e-4, 1.0, "1/60");
@@ -140,6 +143,7 @@ void printHeader(const SoakSetup& setup, const std::string& motion) {
 // A backend's verdict and its entry of the report.
 struct BackendSoak {
     bool passed = false;
+    bool stopped = false;
     nlohmann::ordered_json json;
 };
 
@@ -165,16 +169,22 @@ Result<BackendSoak> soakOn(SimBackend backend, const SoakSetup& setup,
     core::SceneSimulation simulation(*scene, setup.physics, setup.threads);
     // The soak watches the reference the SIMD execution is tested against (its label says so).
     simulation.setCpuPhysics(core::CpuPhysics::Scalar);
-    auto run = soakSimulation(*scene, simulation, backend,
-                              {setup.args.seconds, setup.args.sampleEveryS, name}, stderr);
+    auto run =
+        soakSimulation(*scene, simulation, backend,
+                       {setup.args.seconds, setup.args.sampleEveryS, name, setup.stop}, stderr);
     if (!run)
         return run.error();
+    if (run->stopped)
+        std::fprintf(stderr, "soak: %s: stopped after %.1f of %.1f s of game time: judged as run\n",
+                     name, run->samples.back().simulatedS, setup.args.seconds);
     const SoakVerdict verdict = judgeSoakRun(*run, backend);
     printSoakRun(name, device, scene->totalBlades(), *run, verdict, backend);
     for (const std::string& failure : verdict.failures)
         printError("soak", std::string(name) + ": " + failure);
-    return BackendSoak{verdict.failures.empty(),
-                       soakRunJson(name, device, scene->totalBlades(), *run, verdict, backend)};
+    nlohmann::ordered_json json =
+        soakRunJson(name, device, scene->totalBlades(), *run, verdict, backend);
+    json["stopped"] = run->stopped;
+    return BackendSoak{verdict.failures.empty(), run->stopped, std::move(json)};
 }
 
 }  // namespace
@@ -196,7 +206,9 @@ int runSoak(const std::vector<std::string>& argv) {
         return reportFailure("soak", physics.error(), EXIT_FAILED);
     printNotes(physics->notes);
 
-    const SoakSetup setup{args, *loaded, *physics, cpuThreads(args.threads)};
+    // Ctrl+C ends the run under way at its next step: what ran is judged, printed and saved.
+    const InterruptStop interrupt;
+    const SoakSetup setup{args, *loaded, *physics, cpuThreads(args.threads), interrupt.token()};
     const std::string motion = describeMotion(*physics);
     nlohmann::ordered_json report = reportHeader(args, motion);
     printHeader(setup, motion);
@@ -208,10 +220,17 @@ int runSoak(const std::vector<std::string>& argv) {
             return reportFailure("soak", run.error(), EXIT_FAILED);
         report["runs"].push_back(std::move(run->json));
         passed = passed && run->passed;
+        if (run->stopped)
+            break;
     }
     report["passed"] = passed;
+    report["stopped"] = interrupt.signal() != 0;
     if (auto written = writeOutputFile(args.report, report.dump(2) + "\n"); !written)
         return reportFailure("soak", written.error(), EXIT_FAILED);
+    if (interrupt.signal() != 0) {
+        std::printf("soak stopped: %s so far\n", passed ? "passed" : "FAILED");
+        return interrupt.exitCode();
+    }
     std::printf("soak %s\n", passed ? "passed" : "FAILED");
     return passed ? 0 : EXIT_FAILED;
 }

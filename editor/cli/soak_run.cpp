@@ -79,6 +79,12 @@ Result<SoakRun> soakSimulation(core::Scene& scene, core::SceneSimulation& simula
     sample();
     run.glAfterFirstStep = run.samples.front().glObjects;
     for (std::size_t i = 0; i < totalSteps; ++i) {
+        if (options.stop.stop_requested()) {
+            run.stopped = true;
+            if (run.samples.back().steps != simulation.stepsDone())
+                sample();
+            break;
+        }
         run.pathSwaps += looper.update(physics.wind, physics.colliders, simulation.timeS(), dtS);
         if (gpu) {
             gpu->step(physics, simulation.timeS());

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <stop_token>
 #include <vector>
 
 #include "gl/gl_object_count.h"
@@ -30,6 +31,9 @@ struct SoakOptions {
     double seconds = 3600.0;
     double sampleEveryS = 60.0;
     const char* label = "cpu";  // the progress lines' prefix
+    // A stop requested (Ctrl+C, interrupt_stop.h) ends the run at the next step, with a last
+    // sample there: what ran is judged as a shorter run.
+    std::stop_token stop;
 };
 
 struct SoakRun {
@@ -41,6 +45,7 @@ struct SoakRun {
     gl::GlObjectCounts glBeforeSetUp, glAfterFirstStep, glAfterTearDown;
     std::size_t pathSwaps = 0;  // times the path windows were renewed
     double wallS = 0.0;
+    bool stopped = false;  // ended early by SoakOptions::stop
 };
 
 // Steps `simulation` (whose scene is `scene`) on `backend` for options.seconds, keeping every path

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Ctrl+C during `grass soak` (editor/cli/interrupt_stop.h): the run under way ends at its next
+# step and what ran is judged, printed and saved (the report says "stopped": true), exit 130;
+# a "both" soak does not start its second backend.
+#
+#   interrupt_soak_test.sh GRASS_BIN PROJECT WORK_DIR
+set -u
+bin=$1
+project=$2
+work=$3
+
+fail() { echo "FAIL: $*" >&2; cat "$work/err" "$work/out" >&2 2>/dev/null; exit 1; }
+rm -rf -- "$work" && mkdir -p -- "$work" || fail "cannot make $work"
+report=$work/soak.json
+"$bin" soak "$project" --seconds 3600 --sample-every 1 --backend both --report "$report" \
+    >"$work/out" 2>"$work/err" &
+pid=$!
+# Once a few samples are in: a line "soak cpu: t = 3.0/3600 s" or later.
+for ((i = 0; i < 3000; ++i)); do
+    grep -Eq "soak cpu: t = ([3-9]|[1-9][0-9]+)\.[0-9]/3600" "$work/err" 2>/dev/null && break
+    sleep 0.02
+done
+kill -INT "$pid"
+wait "$pid"
+status=$?
+[[ $status == 130 ]] || fail "exit $status, not 130"
+grep -q "soak: cpu: stopped after" "$work/err" || fail "no word of the stop"
+grep -q "^soak stopped: passed so far" "$work/out" || fail "no verdict of what ran"
+grep -q '"stopped": true' "$report" || fail "the report does not say it was stopped"
+grep -q '"backend": "gpu"' "$report" && fail "the second backend ran after the stop"
+echo "soak interrupted: exit 130, $(grep -c '"t":' "$report") samples judged and saved"
