@@ -8,6 +8,7 @@
 #
 # Only bash, grep and coreutils (as the other drivers). GRASS_CLI_TIMEOUT bounds each run.
 set -u
+source "$(dirname "$0")/interrupt_lib.sh"
 
 [ $# -eq 2 ] || { echo "usage: bench_cli_test.sh GRASS_BINARY WORK_DIR" >&2; exit 2; }
 grass=$1
@@ -107,14 +108,8 @@ stopped=$work/stopped.json
 timeout -k 10 "${GRASS_CLI_TIMEOUT:-120}" "$grass" bench --frames 1 \
     --cases tiny,tiny-hybrid,nature-100k --out "$stopped" </dev/null \
     >"$work/stdout" 2>"$work/stderr" &
-pid=$!
-for ((i = 0; i < 3000; ++i)); do
-    grep -q "case took" "$work/stderr" 2>/dev/null && break
-    sleep 0.02
-done
-kill -INT "$pid"
-wait "$pid"
-rc=$?
+interrupt_when "case took" "$work/stderr" $! INT
+rc=$interrupted_status
 [ "$rc" -eq 130 ] || failures+=("bench interrupted: exit code $rc, expected 130")
 grep -q "bench: stopped after [12] of 3 case(s)" "$work/stderr" ||
     failures+=("bench interrupted: no word of the stop")

@@ -8,6 +8,7 @@
 #
 #   interrupt_export_test.sh GRASS_BIN SOURCE_PROJECT WORK_DIR
 set -u
+source "$(dirname "$0")/interrupt_lib.sh"
 bin=$1
 source=$2
 work=$3
@@ -26,14 +27,8 @@ temporaries() { find "$1" -name '.*.tmp-*' | wc -l; }
 interrupt() {
     GRASS_TEST_SAVE_DELAY_MS=400 "$bin" export "$project" --out "$out" --lod 1 \
         >/dev/null 2>"$work/err" &
-    local pid=$! i
-    for ((i = 0; i < 1000; ++i)); do
-        grep -q "writing" "$work/err" 2>/dev/null && break
-        sleep 0.02
-    done
-    for sig in "$@"; do kill -s "$sig" "$pid"; sleep 0.02; done
-    wait "$pid"
-    echo $?
+    interrupt_when "writing" "$work/err" $! "$@"
+    echo "$interrupted_status"
 }
 unchanged() {
     [[ $(cd "$out" && find . -type f | sort | xargs md5sum) == "$before" ]] ||

@@ -5,6 +5,7 @@
 #
 #   interrupt_soak_test.sh GRASS_BIN PROJECT WORK_DIR
 set -u
+source "$(dirname "$0")/interrupt_lib.sh"
 bin=$1
 project=$2
 work=$3
@@ -14,15 +15,9 @@ rm -rf -- "$work" && mkdir -p -- "$work" || fail "cannot make $work"
 report=$work/soak.json
 "$bin" soak "$project" --seconds 3600 --sample-every 1 --backend both --report "$report" \
     >"$work/out" 2>"$work/err" &
-pid=$!
 # Once a few samples are in: a line "soak cpu: t = 3.0/3600 s" or later.
-for ((i = 0; i < 3000; ++i)); do
-    grep -Eq "soak cpu: t = ([3-9]|[1-9][0-9]+)\.[0-9]/3600" "$work/err" 2>/dev/null && break
-    sleep 0.02
-done
-kill -INT "$pid"
-wait "$pid"
-status=$?
+interrupt_when "soak cpu: t = ([3-9]|[1-9][0-9]+)\.[0-9]/3600" "$work/err" $! INT
+status=$interrupted_status
 [[ $status == 130 ]] || fail "exit $status, not 130"
 grep -q "soak: cpu: stopped after" "$work/err" || fail "no word of the stop"
 grep -q "^soak stopped: passed so far" "$work/out" || fail "no verdict of what ran"
