@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/interrupt_stop.h"
 #include "cli/output_files.h"
 #include "cli/parse_arguments.h"
 #include "cli/preset_option.h"
@@ -52,7 +53,8 @@ std::optional<int> parseSimArgs(const std::vector<std::string>& argv, SimArgs& a
         "headless for S simulated seconds in steps of DT, on the CPU reference or the compute "
         "shader, with a progress line on stderr. Prints the cost per step and the health of the "
         "field: length error, blades with NaN/Inf, tips below the ground, tip displacement and "
-        "the share of crushed blades; --report writes them as one JSON object.");
+        "the share of crushed blades; --report writes them as one JSON object. Ctrl+C ends the "
+        "run before its next step with the summary and report of the steps run (exit 130).");
     addProjectArgument(parser, &args.project, true);
     parser.number("--seconds", "S", "simulated time", &args.seconds, 0.0, 86400.0, "5");
     parser.number("--dt", "DT", "step length in seconds", &args.dtS, 1e-6, 60.0,
@@ -224,17 +226,24 @@ int runSim(const std::vector<std::string>& argv) {
     core::SceneSimulation simulation(field->scene, field->physics, threads);
     simulation.setCpuPhysics(args.cpuPath == "scalar" ? core::CpuPhysics::Scalar
                                                       : core::CpuPhysics::Simd);
-    auto run = runSimulation(field->scene, simulation, args.seconds, device->backend, "sim");
+    // Ctrl+C ends the run before its next step: the steps run are summed up and saved.
+    const InterruptStop interrupt;
+    auto run = runSimulation(field->scene, simulation, args.seconds, device->backend, "sim",
+                             interrupt.token());
     if (!run)
         return reportFailure("sim", run.error(), EXIT_FAILED);
+    if (run->stopped)
+        std::fprintf(stderr, "sim: stopped after %zu steps: the summary is of those\n", run->steps);
 
     printSummary(args, *loaded, *field, *device, threads, *run);
+    const int exitCode = run->stopped ? interrupt.exitCode() : 0;
     if (args.report.empty())
-        return 0;
-    const auto report = reportJson(args, *field, *run, device->description, threads);
+        return exitCode;
+    auto report = reportJson(args, *field, *run, device->description, threads);
+    report["stopped"] = run->stopped;
     if (auto written = writeOutputFile(args.report, report.dump(2) + "\n"); !written)
         return reportFailure("sim", written.error(), EXIT_FAILED);
-    return 0;
+    return exitCode;
 }
 
 }  // namespace grass::cli

@@ -74,7 +74,7 @@ std::size_t stepsFor(double seconds, float dtS) {
 }
 
 Result<SimRun> runSimulation(core::Scene& scene, core::SceneSimulation& simulation, double seconds,
-                             SimBackend backend, const std::string& command) {
+                             SimBackend backend, const std::string& command, std::stop_token stop) {
     SimRun run;
     auto steps = core::simulationSteps(seconds, simulation.physics().params.dtS, command);
     if (!steps)
@@ -82,8 +82,16 @@ Result<SimRun> runSimulation(core::Scene& scene, core::SceneSimulation& simulati
     run.steps = *steps;
     Progress progress(command, run.steps);
     const auto start = Clock::now();
+    // Before step i: a stop leaves the first i steps as the run.
+    const auto stopsAt = [&](std::size_t i) {
+        if (!stop.stop_requested())
+            return false;
+        run.steps = i;
+        run.stopped = true;
+        return true;
+    };
     if (backend == SimBackend::Cpu) {
-        for (std::size_t i = 0; i < run.steps; ++i) {
+        for (std::size_t i = 0; i < run.steps && !stopsAt(i); ++i) {
             simulation.step();
             if (const auto now = Clock::now(); progress.due(now))
                 progress.show(i + 1, simulation.timeS(), now);
@@ -92,7 +100,7 @@ Result<SimRun> runSimulation(core::Scene& scene, core::SceneSimulation& simulati
         auto gpu = render::ScenePhysicsGpu::create(scene);
         if (!gpu)
             return gpu.error();
-        for (std::size_t i = 0; i < run.steps; ++i) {
+        for (std::size_t i = 0; i < run.steps && !stopsAt(i); ++i) {
             gpu->step(simulation.physics(), simulation.timeS());
             simulation.advanceClock();
             if (const auto now = Clock::now(); progress.due(now)) {

@@ -1,4 +1,4 @@
-# Shared by the Ctrl+C tests (interrupt_export_test.sh, interrupt_soak_test.sh,
+# Shared by the Ctrl+C tests (interrupt_export_test.sh, interrupt_runs_test.sh,
 # bench_cli_test.sh): sourced, not run.
 
 # interrupt_when PATTERN FILE PID SIGNAL...: waits (60 s at most) until FILE, the stderr of

@@ -28,13 +28,14 @@ grass_cli_test(soak_windy_gpu GL OK
     -- ${GRASS_BIN} soak ${WINDY} --seconds 600 --sample-every 60 --backend gpu)
 
 # Ctrl+C during an hour's soak: the run under way ends at its next step, what ran is judged,
-# printed and saved ("stopped": true), exit 130, and a "both" soak does not start the GPU
-# (interrupt_soak_test.sh; a few seconds).
-add_test(NAME cli.soak_interrupted
-         COMMAND ${GRASS_BASH} ${GRASS_CLI_DIR}/interrupt_soak_test.sh ${GRASS_BIN} ${WINDY}
-                 ${GRASS_CLI_TMP}/soak-interrupted)
-set_tests_properties(cli.soak_interrupted PROPERTIES LABELS cli TIMEOUT 120
-    PASS_REGULAR_EXPRESSION "soak interrupted: exit 130, [1-9][0-9]* samples judged and saved")
+# printed and saved ("stopped": true), exit 130, and a "both" soak does not start the GPU; an
+# day's sim ends with the summary and report of the steps run (interrupt_runs_test.sh; a few
+# seconds).
+add_test(NAME cli.long_runs_interrupted
+         COMMAND ${GRASS_BASH} ${GRASS_CLI_DIR}/interrupt_runs_test.sh ${GRASS_BIN} ${WINDY}
+                 ${GRASS_CLI_TMP}/runs-interrupted)
+set_tests_properties(cli.long_runs_interrupted PROPERTIES LABELS cli TIMEOUT 120
+    PASS_REGULAR_EXPRESSION "soak interrupted: exit 130, [1-9][0-9]* samples judged and saved\nsim interrupted: exit 130, \"steps\": [1-9][0-9]* summed up and saved")
 
 # --density-scale thins the field (how projects/nature's hour fits a slow machine, docs/soak.md):
 # windy at a quarter of its density grows fewer blades, and the report says the scale.
