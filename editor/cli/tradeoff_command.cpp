@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli/commands.h"
+#include "cli/interrupt_stop.h"
 #include "cli/parse_arguments.h"
 #include "gl/debug_output.h"
 #include "gl/headless_context.h"
@@ -51,7 +52,9 @@ std::optional<int> parseTradeoffArgs(const std::vector<std::string>& argv, Trade
             "trajectory error in blade heights (physics step). Knobs the project does not use "
             "(snow off, no billboards) are skipped with a note. Writes DIR/tradeoff.json, "
             "DIR/tradeoff.md and per knob DIR/<knob>.png (gnuplot; .gp and .dat next to it), "
-            "each marking the settings the quality presets' rule would choose from this run.");
+            "each marking the settings the quality presets' rule would choose from this run. "
+            "Ctrl+C ends the sweep after the knob under way and writes the knobs measured (exit "
+            "130).");
     addProjectArgument(parser, &args.project, false);
     parser.text("--replot", "DIR",
                 "no measuring: write DIR/tradeoff.md and the plots again from DIR/tradeoff.json",
@@ -192,10 +195,15 @@ int runTradeoff(const std::vector<std::string>& argv) {
     if (auto folder = prepareOutFolder(args.out); !folder)
         return reportFailure("tradeoff", folder.error(), EXIT_USAGE);
 
-    auto report = measureTradeoff(args, sweepOptions(args, std::move(*knobs)));
+    // Ctrl+C ends the sweep after the knob under way; the knobs measured are written.
+    const InterruptStop interrupt;
+    render::TradeoffOptions options = sweepOptions(args, std::move(*knobs));
+    options.stop = interrupt.token();
+    auto report = measureTradeoff(args, options);
     if (!report)
         return reportFailure("tradeoff", report.error(), EXIT_FAILED);
-    return writeOutputs(*report, args.out, true);
+    const int written = writeOutputs(*report, args.out, true);
+    return written == 0 && interrupt.signal() != 0 ? interrupt.exitCode() : written;
 }
 
 }  // namespace grass::cli

@@ -337,6 +337,13 @@ Result<TradeoffReport> runTradeoffSweep(const core::LoadedProject& loaded,
     const Sweep sweep{project, *grown, *physics, *scene, options, base, bench};
 
     for (std::size_t k = 0; k < knobs->size(); ++k) {
+        if (options.stop.stop_requested()) {
+            if (options.progress)
+                options.progress("stopped after " + std::to_string(k) + " of " +
+                                 std::to_string(knobs->size()) +
+                                 " knob(s): the knobs measured follow");
+            break;
+        }
         const std::string& name = (*knobs)[k];
         const std::string prefix =
             "knob " + std::to_string(k + 1) + "/" + std::to_string(knobs->size()) + " " + name;

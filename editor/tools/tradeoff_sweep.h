@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct TradeoffOptions {
     double sampleEveryS = 1.0 / 30.0;
     // Progress lines ("knob 2/6 lod_distance 8 m: frame 3/5"); null: silent.
     std::function<void(const std::string&)> progress;
+    // A stop requested (Ctrl+C) ends the sweep after the knob under way: the report holds the
+    // knobs measured.
+    std::stop_token stop;
 };
 
 struct Spread {

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Ctrl+C during `grass tradeoff` (editor/cli/interrupt_stop.h): the sweep ends after the knob
+# under way, and the knobs measured are written (table, tradeoff.json, plots), exit 130.
+#
+#   interrupt_tradeoff_test.sh GRASS_BIN PROJECT WORK_DIR
+set -u
+source "$(dirname "$0")/interrupt_lib.sh"
+bin=$1
+project=$2
+work=$3
+
+fail() { echo "FAIL: $*" >&2; cat "$work/err" >&2 2>/dev/null; exit 1; }
+rm -rf -- "$work" && mkdir -p -- "$work" || fail "cannot make $work"
+# 30 frames a setting: seconds a knob on llvmpipe, so the signal lands while the second runs.
+"$bin" tradeoff "$project" --knobs lod_distance,geometry_detail,cull_distance --frames 30 \
+    --out "$work/out" >"$work/stdout" 2>"$work/err" &
+interrupt_when "knob 2/3" "$work/err" $! INT
+[[ $interrupted_status == 130 ]] || fail "exit $interrupted_status, not 130"
+grep -q "stopped after 2 of 3 knob(s)" "$work/err" || fail "no word of the stop"
+[[ -f $work/out/tradeoff.json && -f $work/out/geometry_detail.png ]] ||
+    fail "the knobs measured were not written"
+[[ -e $work/out/cull_distance.png ]] && fail "the knob after the stop was measured"
+echo "tradeoff interrupted: exit 130, 2 of 3 knobs written"
