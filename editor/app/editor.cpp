@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <thread>
@@ -339,6 +340,22 @@ RestingFrame Editor::restingFrame() const {
     frame.progressShown = mState.regrowing() || mState.busy();
     frame.playing = mState.view.timeline.playing();
     return frame;
+}
+
+void Editor::endInterrupted(int signal) {
+    cancelDocumentJob(mState);
+    const char* what = signal == SIGINT ? "interrupted" : "terminated";
+    if (!mState.doc.dirty) {
+        std::fprintf(stderr, "grass-editor: %s: nothing was unsaved\n", what);
+        return;
+    }
+    // Its own message, whatever the status line showed before.
+    mState.transient.message.clear();
+    mState.transient.messageIsSaveError = false;
+    autosaveNow(mState);
+    std::fprintf(stderr,
+                 "grass-editor: %s: the unsaved changes: %s; the next start offers them back\n",
+                 what, mState.transient.message.c_str());
 }
 
 bool Editor::closeRequested() {

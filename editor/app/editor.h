@@ -77,6 +77,10 @@ public:
     // Runs one frame; false once the session is over (quit, the script's end, the screenshot
     // saved). An error (a script's screenshot that cannot be written) ends it too.
     Result<bool> frame();
+    // After SIGINT or SIGTERM (main.cpp): a load stops, the unsaved changes go into the autosave
+    // (offered back at the next start), and what became of them is said on stderr; the caller
+    // then ends the process without asking.
+    void endInterrupted(int signal);
     // A re-grow still running reads the live field's mesh: it is waited for before that goes.
     ~Editor();
 

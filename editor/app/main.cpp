@@ -6,13 +6,15 @@
 // (ui::Output). --screenshot saves what the window shows after --frames frames and exits, so
 // tests and users can see the editor without a person; --no-ui shows the viewport alone.
 #include <cstdio>
+#include <stop_token>
 #include <string>
 #include <vector>
 
-#include "gl/debug_output.h"
 #include "app/editor.h"
+#include "gl/debug_output.h"
 #include "util/arg_parser.h"
 #include "util/image_file.h"
+#include "util/interrupt_stop.h"
 
 namespace {
 
@@ -122,7 +124,16 @@ int main(int argc, char** argv) {
         return fail(editor.error().str(), editor.error().path == "--script" ? 2 : 1);
     if (!*editor)
         return 0;  // the window was closed while the first field grew: nothing to save
+    // Ctrl+C in the terminal, or SIGTERM (a logout, a shutdown): the unsaved changes go into the
+    // autosave and the editor ends (util/interrupt_stop.h); a second signal ends it at once. The
+    // signal wakes a window waiting for input.
+    const core::InterruptStop interrupt;
+    const std::stop_callback wake(interrupt.token(), [] { editor::Window::wake(); });
     while (true) {
+        if (interrupt.signal() != 0) {
+            (*editor)->endInterrupted(interrupt.signal());
+            return interrupt.exitCode();
+        }
         const Result<bool> more = (*editor)->frame();
         if (!more)
             return fail(more.error().str());

@@ -11,10 +11,10 @@
 #include "cli/bench_options.h"
 #include "cli/bench_report.h"
 #include "cli/commands.h"
-#include "cli/interrupt_stop.h"
 #include "cli/output_files.h"
 #include "tools/ms_since.h"
 #include "util/atomic_file.h"
+#include "util/interrupt_stop.h"
 
 namespace grass::cli {
 
@@ -107,7 +107,7 @@ int runBench(const std::vector<std::string>& argv) {
 
     const auto start = Clock::now();
     // Ctrl+C ends the run after the case under way; the cases measured are printed and saved.
-    const InterruptStop interrupt;
+    const core::InterruptStop interrupt;
     auto run = measureRun(args, *cases, interrupt.token());
     if (!run)
         return reportFailure("bench", run.error(), EXIT_FAILED);

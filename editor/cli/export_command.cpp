@@ -7,7 +7,6 @@
 #include <string>
 
 #include "cli/commands.h"
-#include "cli/interrupt_stop.h"
 #include "cli/parse_arguments.h"
 #include "cli/preset_option.h"
 #include "export/export.h"
@@ -15,6 +14,7 @@
 #include "scene/scene.h"
 #include "tools/ms_since.h"
 #include "util/arg_parser.h"
+#include "util/interrupt_stop.h"
 
 namespace grass::cli {
 
@@ -159,7 +159,7 @@ int runExport(const std::vector<std::string>& argv) {
 
     const auto start = Clock::now();
     // From here Ctrl+C stops the growing or the export at its next stage (interrupt_stop.h).
-    const InterruptStop interrupt;
+    const core::InterruptStop interrupt;
     const auto failed = [&](const Error& error) {
         return reportFailure("export", withFlagNames(error),
                              interrupt.signal() != 0 ? interrupt.exitCode() : EXIT_FAILED);

@@ -5,7 +5,6 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
-#include "cli/interrupt_stop.h"
 #include "cli/output_files.h"
 #include "cli/parse_arguments.h"
 #include "cli/preset_option.h"
@@ -16,6 +15,7 @@
 #include "project/project_inputs.h"
 #include "scene/scene_physics.h"
 #include "util/arg_parser.h"
+#include "util/interrupt_stop.h"
 
 namespace grass::cli {
 
@@ -227,7 +227,7 @@ int runSim(const std::vector<std::string>& argv) {
     simulation.setCpuPhysics(args.cpuPath == "scalar" ? core::CpuPhysics::Scalar
                                                       : core::CpuPhysics::Simd);
     // Ctrl+C ends the run before its next step: the steps run are summed up and saved.
-    const InterruptStop interrupt;
+    const core::InterruptStop interrupt;
     auto run = runSimulation(field->scene, simulation, args.seconds, device->backend, "sim",
                              interrupt.token());
     if (!run)

@@ -5,7 +5,6 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
-#include "cli/interrupt_stop.h"
 #include "cli/output_files.h"
 #include "cli/parse_arguments.h"
 #include "cli/soak_run.h"
@@ -16,6 +15,7 @@
 #include "physics/step_count.h"
 #include "project/project_inputs.h"
 #include "util/arg_parser.h"
+#include "util/interrupt_stop.h"
 
 namespace grass::cli {
 
@@ -207,7 +207,7 @@ int runSoak(const std::vector<std::string>& argv) {
     printNotes(physics->notes);
 
     // Ctrl+C ends the run under way at its next step: what ran is judged, printed and saved.
-    const InterruptStop interrupt;
+    const core::InterruptStop interrupt;
     const SoakSetup setup{args, *loaded, *physics, cpuThreads(args.threads), interrupt.token()};
     const std::string motion = describeMotion(*physics);
     nlohmann::ordered_json report = reportHeader(args, motion);

@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include "cli/commands.h"
-#include "cli/interrupt_stop.h"
 #include "cli/parse_arguments.h"
 #include "gl/debug_output.h"
 #include "gl/headless_context.h"
@@ -16,6 +15,7 @@
 #include "tools/tradeoff_sweep.h"
 #include "util/arg_parser.h"
 #include "util/atomic_file.h"
+#include "util/interrupt_stop.h"
 
 namespace grass::cli {
 
@@ -196,7 +196,7 @@ int runTradeoff(const std::vector<std::string>& argv) {
         return reportFailure("tradeoff", folder.error(), EXIT_USAGE);
 
     // Ctrl+C ends the sweep after the knob under way; the knobs measured are written.
-    const InterruptStop interrupt;
+    const core::InterruptStop interrupt;
     render::TradeoffOptions options = sweepOptions(args, std::move(*knobs));
     options.stop = interrupt.token();
     auto report = measureTradeoff(args, options);

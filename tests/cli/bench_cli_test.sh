@@ -103,7 +103,7 @@ if [ -f "$json" ]; then
 fi
 
 # 4. Ctrl+C once the first case is measured: the run ends after the case under way, prints and
-#    saves the cases measured, and exits 130 (editor/cli/interrupt_stop.h).
+#    saves the cases measured, and exits 130 (core/util/interrupt_stop.h).
 stopped=$work/stopped.json
 timeout -k 10 "${GRASS_CLI_TIMEOUT:-120}" "$grass" bench --frames 1 \
     --cases tiny,tiny-hybrid,nature-100k --out "$stopped" </dev/null \

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Ctrl+C during `grass export` (editor/cli/interrupt_stop.h): the first SIGINT stops the export
+# Ctrl+C during `grass export` (core/util/interrupt_stop.h): the first SIGINT stops the export
 # at its next stage: exit 130, one line saying nothing was written, the export already in the
 # folder byte for byte as it was and no staged temporary left; SIGTERM the same with 143; a
 # second SIGINT ends the process at once (the export in place still whole: its entry point is

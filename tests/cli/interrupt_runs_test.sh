@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Ctrl+C during the long runs (editor/cli/interrupt_stop.h): `grass soak`'s run under way ends
+# Ctrl+C during the long runs (core/util/interrupt_stop.h): `grass soak`'s run under way ends
 # at its next step and what ran is judged, printed and saved (the report says "stopped": true),
 # exit 130, and a "both" soak does not start its second backend; `grass sim` ends before its next
 # step with the summary and report of the steps run.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Ctrl+C during `grass tradeoff` (editor/cli/interrupt_stop.h): the sweep ends after the knob
+# Ctrl+C during `grass tradeoff` (core/util/interrupt_stop.h): the sweep ends after the knob
 # under way, and the knobs measured are written (table, tradeoff.json, plots), exit 130.
 #
 #   interrupt_tradeoff_test.sh GRASS_BIN PROJECT WORK_DIR

@@ -37,6 +37,10 @@ if(TARGET grass-editor)
             PASS_REGULAR_EXPRESSION "${pass}"
             ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
     endfunction()
+    # Ctrl+C or SIGTERM: the unsaved changes go into the autosave, exit 130/143; about 20 s.
+    editor_window_test(editor_real_terminate editor_real_terminate_test.sh 120
+        "real terminate: SIGINT with nothing unsaved ends at once; SIGTERM keeps the typed name"
+        ${GRASS_CLI_TMP}/editor-real-terminate)
     # Quick clicks, a double-click and typing all reach the project (issue 24); about 30 s.
     editor_window_test(editor_real_input editor_real_input_test.sh 120
         "real input: name typed, quick click, double-click" ${GRASS_CLI_TMP}/editor-real-input)

@@ -1,9 +1,11 @@
-// Ctrl+C (SIGINT) or SIGTERM during a long command (`grass export`, `grass bench`): the first asks
-// the work to stop at its next stage (a std::stop_token the command passes on), so an export ends
-// with its staged files removed and the folder as it was, a bench run with the cases measured so
-// far, and says so; a second ends the process at once. Before, the process died where it stood:
-// an export's staged temporaries stayed until the next export there, a bench run's finished
-// cases were lost, and nothing said what had happened.
+// Ctrl+C (SIGINT) or SIGTERM during a long command (`grass export`, `bench`, `tradeoff`, `soak`,
+// `sim`) or the editor: the first asks the work to stop at its next stage (a std::stop_token the
+// command passes on), so an export ends with its staged files removed and the folder as it was,
+// a bench run with the cases measured so far, the editor with its unsaved changes in the
+// autosave, and says so; a second ends the process at once. Before, the process died where it
+// stood: an export's staged temporaries stayed until the next export there, a bench run's
+// finished cases were lost, the editor's changes since the last autosave were lost, and nothing
+// said what had happened.
 #pragma once
 
 #include <atomic>
@@ -11,7 +13,7 @@
 #include <stop_token>
 #include <thread>
 
-namespace grass::cli {
+namespace grass::core {
 
 class InterruptStop {
 public:
@@ -38,4 +40,4 @@ private:
     std::thread mWatcher;
 };
 
-}  // namespace grass::cli
+}  // namespace grass::core

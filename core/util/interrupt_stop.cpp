@@ -1,11 +1,11 @@
-#include "cli/interrupt_stop.h"
+#include "util/interrupt_stop.h"
 
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
 
-namespace grass::cli {
+namespace grass::core {
 
 namespace {
 
@@ -51,4 +51,4 @@ InterruptStop::~InterruptStop() {
     sigaction(SIGTERM, &mPreviousTerm, nullptr);
 }
 
-}  // namespace grass::cli
+}  // namespace grass::core
