@@ -17,6 +17,7 @@
 #include "tools/ms_since.h"
 #include "util/byte_size.h"
 #include "util/image_file.h"
+#include "util/interrupt_stop.h"
 #include "util/path_inside.h"
 
 namespace grass::cli {
@@ -156,16 +157,20 @@ Result<double> simulateBeforeRender(const RenderArgs& args, const core::LoadedPr
 int finishTurntable(const RenderArgs& args, const core::Scene& scene,
                     const core::OrbitCamera& camera, const render::OffscreenRequest& request,
                     double physicsMsPerStep) {
-    auto run = render::writeTurntable(scene, camera, request, args.turntable, args.out);
+    // Ctrl+C ends the turn after the view under way; the sheet holds the views done.
+    const core::InterruptStop interrupt;
+    auto run =
+        render::writeTurntable(scene, camera, request, args.turntable, args.out, interrupt.token());
     if (!run)
         return reportFailure("render", run.error(), EXIT_FAILED);
+    const int done = run->stopped ? interrupt.exitCode() : 0;
     if (args.stats.empty())
-        return 0;
+        return done;
     if (auto written = writeStats(args.stats, run->last, physicsMsPerStep, run->lastWallMs,
                                   args.timeS > 0.0 ? args.backend : "none");
         !written)
         return reportFailure("render", written.error(), EXIT_FAILED);
-    return 0;
+    return done;
 }
 
 // One image: rendered, written, summed up; --stats gets the last frame.

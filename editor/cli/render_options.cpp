@@ -86,7 +86,9 @@ void describeRunOptions(ArgParser& parser, RenderArgs& args) {
     parser.integer("--turntable",
                    "render N views (0: one image) orbiting 360° about the vertical axis through "
                    "the camera's target, each drawn once, to <out stem>_0000.png ... and a contact "
-                   "sheet <out stem>_sheet.png; with --time every view shows the same moment",
+                   "sheet <out stem>_sheet.png; with --time every view shows the same moment; "
+                   "Ctrl+C ends the turn after the view under way, with the sheet of the views "
+                   "done (exit 130)",
                    &args.turntable, core::TURNTABLE_MIN_FRAMES, core::TURNTABLE_MAX_FRAMES);
     parser.integer("--blades", "with --mesh: about how many blades to grow", &args.blades, 1,
                    20000000);

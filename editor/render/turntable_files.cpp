@@ -13,7 +13,7 @@ namespace grass::render {
 
 Result<TurntableRun> writeTurntable(const core::Scene& scene, const core::OrbitCamera& start,
                                     const OffscreenRequest& request, int frameCount,
-                                    const std::filesystem::path& out) {
+                                    const std::filesystem::path& out, std::stop_token stop) {
     const auto begin = std::chrono::steady_clock::now();
     const ContactSheetLayout layout = contactSheetLayout(frameCount, request.width, request.height);
     Rgba8Pixels sheet = blankContactSheet(layout);
@@ -37,10 +37,19 @@ Result<TurntableRun> writeTurntable(const core::Scene& scene, const core::OrbitC
         run.last = timings;
         run.lastWallMs = wallMs;
         wallSumMs += wallMs;
+        // Ends the turn here (an error the caller below takes as the stop).
+        if (stop.stop_requested() && frame + 1 < frameCount) {
+            run.stopped = true;
+            return makeError(out.string(), "stopped");
+        }
         return {};
     };
-    if (auto turned = renderTurntable(scene, start, request, frameCount, sink); !turned)
+    if (auto turned = renderTurntable(scene, start, request, frameCount, sink);
+        !turned && !run.stopped)
         return turned.error();
+    if (run.stopped)
+        std::fprintf(stderr, "render: stopped after %d of %d views: the sheet holds those\n",
+                     run.framesWritten, frameCount);
     run.sheet = core::turntableSheetPath(out);
     if (auto written = writeRgba8Image(run.sheet, sheet.width, sheet.height, sheet.pixels);
         !written)
@@ -51,9 +60,12 @@ Result<TurntableRun> writeTurntable(const core::Scene& scene, const core::OrbitC
     std::printf("wrote %d frames %s .. %s (%dx%d)\n", run.framesWritten,
                 run.firstFrame.string().c_str(), run.lastFrame.string().c_str(), request.width,
                 request.height);
+    // A stopped turn's sheet keeps its layout, the cells of the views not drawn left blank.
+    int onSheet = 0;
+    for (int frame = 0; frame < run.framesWritten; ++frame)
+        onSheet += layout.cellOf(frame) >= 0 ? 1 : 0;
     std::printf("wrote %s (%dx%d, %d of %d frames in %d column(s))\n", run.sheet.string().c_str(),
-                sheet.width, sheet.height, static_cast<int>(layout.frames.size()), frameCount,
-                layout.columns);
+                sheet.width, sheet.height, onSheet, frameCount, layout.columns);
     std::printf("  turntable  %.1f ms per view (draw), %.1f ms in all (views, files, sheet)\n",
                 run.meanWallMs, run.totalMs);
     return run;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <stop_token>
 
 #include "render/offscreen_render.h"
 
@@ -16,13 +17,15 @@ struct TurntableRun {
     double totalMs = 0.0;       // the whole turn: renderer set-up, views, files, sheet
     FrameTimings last;  // GPU timings of the last view
     double lastWallMs = 0.0;
+    bool stopped = false;  // ended early by the stop token: framesWritten views, and their sheet
 };
 
 // Each file is written atomically (temporary file, then rename) as soon as its view is drawn,
 // so an interrupted turn leaves whole images of the views done, never a half-written one; the
-// sheet is written last. Prints where the files went and the time per view on stdout.
+// sheet is written last. Prints where the files went and the time per view on stdout. A stop
+// requested (Ctrl+C) ends the turn after the view under way: the sheet holds the views done.
 Result<TurntableRun> writeTurntable(const core::Scene& scene, const core::OrbitCamera& start,
                                     const OffscreenRequest& request, int frameCount,
-                                    const std::filesystem::path& out);
+                                    const std::filesystem::path& out, std::stop_token stop = {});
 
 }  // namespace grass::render

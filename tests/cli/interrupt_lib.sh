@@ -1,5 +1,5 @@
 # Shared by the Ctrl+C tests (interrupt_export_test.sh, interrupt_runs_test.sh,
-# bench_cli_test.sh): sourced, not run.
+# interrupt_gl_runs_test.sh, bench_cli_test.sh): sourced, not run.
 
 # interrupt_when PATTERN FILE PID SIGNAL...: waits (60 s at most) until FILE, the stderr of
 # process PID (a child of this shell: not inside $(...)), has a line matching the extended regex

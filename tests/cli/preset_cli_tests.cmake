@@ -40,13 +40,14 @@ grass_cli_test(render_unknown_preset ERROR "--preset" --also "draft"
 grass_cli_test(sim_unknown_preset ERROR "--preset"
     -- ${GRASS_BIN} sim ${GRASS_CLI_PROJECTS}/tiny --preset ultra)
 
-# Ctrl+C during a sweep: it ends after the knob under way and the knobs measured are written,
-# exit 130 (interrupt_tradeoff_test.sh; about 10 s on llvmpipe).
-add_test(NAME cli.tradeoff_interrupted
-         COMMAND ${GRASS_BASH} ${GRASS_CLI_DIR}/interrupt_tradeoff_test.sh ${GRASS_BIN}
-                 ${GRASS_CLI_PROJECTS}/tiny ${GRASS_CLI_TMP}/tradeoff-interrupted)
-set_tests_properties(cli.tradeoff_interrupted PROPERTIES LABELS "cli;gl" TIMEOUT 180
-    PASS_REGULAR_EXPRESSION "tradeoff interrupted: exit 130, 2 of 3 knobs written"
+# Ctrl+C during a sweep: it ends after the knob under way and the knobs measured are written;
+# during a turntable, after the view under way with the sheet of the views done; exit 130
+# (interrupt_gl_runs_test.sh; about 15 s on llvmpipe).
+add_test(NAME cli.gl_runs_interrupted
+         COMMAND ${GRASS_BASH} ${GRASS_CLI_DIR}/interrupt_gl_runs_test.sh ${GRASS_BIN}
+                 ${GRASS_CLI_PROJECTS}/tiny ${GRASS_CLI_TMP}/gl-runs-interrupted)
+set_tests_properties(cli.gl_runs_interrupted PROPERTIES LABELS "cli;gl" TIMEOUT 180
+    PASS_REGULAR_EXPRESSION "tradeoff interrupted: exit 130, 2 of 3 knobs written\nturntable interrupted: exit 130, the views done and their sheet written"
     ENVIRONMENT_MODIFICATION "${GRASS_GL_TEST_ENV_MODIFICATION}")
 
 # --replot: tables and plots again from a tradeoff.json, nothing measured (no GL needed). The
