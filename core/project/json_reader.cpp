@@ -118,25 +118,6 @@ private:
     std::vector<Frame> mStack;
 };
 
-// Optimal string alignment distance: Levenshtein plus adjacent swaps ("dnesity").
-std::size_t editDistance(std::string_view a, std::string_view b) {
-    const std::size_t n = a.size(), m = b.size();
-    std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1, 0));
-    for (std::size_t i = 0; i <= n; ++i)
-        d[i][0] = i;
-    for (std::size_t j = 0; j <= m; ++j)
-        d[0][j] = j;
-    for (std::size_t i = 1; i <= n; ++i) {
-        for (std::size_t j = 1; j <= m; ++j) {
-            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-        }
-    }
-    return d[n][m];
-}
-
 // Shortest decimal text of a bound in fixed notation ("100000", "0.5"), for messages.
 std::string formatBound(double value) {
     char buffer[64];
@@ -200,23 +181,6 @@ TextPosition textPosition(std::string_view text, std::size_t offset) {
         }
     }
     return position;
-}
-
-std::optional<std::string_view> closestMatch(std::string_view word,
-                                             std::span<const std::string_view> candidates) {
-    // A third of the word, at least 2 and at most 3 edits: "densty" → "density", "sz" →
-    // "size", but "fov" is not a typo of "name".
-    const std::size_t limit = std::clamp<std::size_t>(word.size() / 3, 2, 3);
-    std::optional<std::string_view> best;
-    std::size_t bestDistance = limit + 1;
-    for (const std::string_view candidate : candidates) {
-        const std::size_t distance = editDistance(word, candidate);
-        if (distance < bestDistance && distance < std::max(word.size(), candidate.size())) {
-            best = candidate;
-            bestDistance = distance;
-        }
-    }
-    return best;
 }
 
 std::string childPointer(const std::string& pointer, std::string_view key) {

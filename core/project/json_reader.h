@@ -17,6 +17,8 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "util/nearest_name.h"  // closestMatch, for the unknown keys' "did you mean"
+
 #include "util/result.h"
 
 namespace grass::core::json {
@@ -34,11 +36,6 @@ struct TextPosition {
     std::size_t column = 1;
 };
 TextPosition textPosition(std::string_view text, std::size_t offset);
-
-// The candidate closest to `word` by edit distance (insert, delete, substitute, swap), or
-// nullopt when none is close enough to be a likely typo.
-std::optional<std::string_view> closestMatch(std::string_view word,
-                                             std::span<const std::string_view> candidates);
 
 // "/a" + "b" → "/a/b", escaping '~' and '/' in the key as RFC 6901 asks, and control
 // characters as \uXXXX so a pointer always prints on one line.

@@ -126,12 +126,13 @@ Result<void> ArgParser::parse(const std::vector<std::string>& args) {
             const auto option = std::find_if(mOptions.begin(), mOptions.end(),
                                              [&](const Option& o) { return o.name == arg; });
             if (option == mOptions.end()) {
-                std::vector<std::string> names;
+                std::vector<std::string_view> names;
                 for (const Option& o : mOptions)
                     names.push_back(o.name);
-                const std::optional<std::string> meant = core::nearestName(arg, names);
+                const std::optional<std::string_view> meant = core::closestMatch(arg, names);
                 return makeError(arg, "unknown option" +
-                                          (meant ? "; did you mean " + *meant + "?" : "") +
+                                          (meant ? "; did you mean " + std::string(*meant) + "?"
+                                                 : "") +
                                           " (see --help)");
             }
             if (option->takesValue && !inlineValue) {

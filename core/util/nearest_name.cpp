@@ -29,16 +29,15 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
     return last[b.size()];
 }
 
-std::optional<std::string> nearestName(std::string_view typed, std::span<const std::string> names) {
-    std::optional<std::string> best;
-    std::size_t bestDistance = 0;
-    for (const std::string& name : names) {
-        const std::size_t distance = editDistance(typed, name);
-        const std::size_t allowed = name.size() <= 4 ? 1 : 2;
-        if (name == typed || distance > allowed)
-            continue;
-        if (!best || distance < bestDistance) {
-            best = name;
+std::optional<std::string_view> closestMatch(std::string_view word,
+                                             std::span<const std::string_view> candidates) {
+    const std::size_t limit = std::clamp<std::size_t>(word.size() / 3, 2, 3);
+    std::optional<std::string_view> best;
+    std::size_t bestDistance = limit + 1;
+    for (const std::string_view candidate : candidates) {
+        const std::size_t distance = editDistance(word, candidate);
+        if (distance < bestDistance && distance < std::max(word.size(), candidate.size())) {
+            best = candidate;
             bestDistance = distance;
         }
     }

@@ -1,10 +1,10 @@
-// "Did you mean …?" for a mistyped command or option: the known name nearest to what was typed,
-// when it is near enough to be the one meant (a letter or two off, or two letters swapped).
+// "Did you mean …?": the known name nearest to a mistyped one, when it is near enough to be the
+// one meant (a letter or two off, or two letters swapped). For unknown project keys
+// (project/json_reader.h), commands and options (util/arg_parser.h, the CLI's main).
 #pragma once
 
 #include <optional>
 #include <span>
-#include <string>
 #include <string_view>
 
 namespace grass::core {
@@ -12,8 +12,10 @@ namespace grass::core {
 // Edits (insert, delete, replace, swap two neighbours) from `a` to `b`, case-insensitive.
 std::size_t editDistance(std::string_view a, std::string_view b);
 
-// The name of `names` fewest edits from `typed`, if at most 1 edit for names up to 4 characters
-// and 2 beyond; the first of equals. Never `typed` itself.
-std::optional<std::string> nearestName(std::string_view typed, std::span<const std::string> names);
+// The candidate closest to `word` by edit distance, or nullopt when none is close enough to be
+// a likely typo: a third of the word, at least 2 and at most 3 edits ("densty" → "density",
+// "sz" → "size", but "fov" is not a typo of "name"). An exact match is its own answer.
+std::optional<std::string_view> closestMatch(std::string_view word,
+                                             std::span<const std::string_view> candidates);
 
 }  // namespace grass::core

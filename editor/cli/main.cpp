@@ -1,8 +1,10 @@
 // grass: the command-line face of the editor. Sub-commands share the editor's code paths
 // (ARCHITECTURE.md): what `grass render` draws is what the viewport draws.
+#include <array>
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli/commands.h"
@@ -29,15 +31,36 @@ Run 'grass <command> --help' for the options of a command.
 The editor window is 'grass-editor'.
 )";
 
+// The commands, in the order the help lists them: what runs them, and the names the "missing"
+// and "unknown command" messages list.
+struct Command {
+    std::string_view name;
+    int (*run)(const std::vector<std::string>&);
+};
+constexpr std::array<Command, 9> COMMANDS{{{"render", grass::cli::runRender},
+                                           {"sim", grass::cli::runSim},
+                                           {"mesh-info", grass::cli::runMeshInfo},
+                                           {"paint", grass::cli::runPaint},
+                                           {"export", grass::cli::runExport},
+                                           {"bench", grass::cli::runBench},
+                                           {"tradeoff", grass::cli::runTradeoff},
+                                           {"presets", grass::cli::runPresets},
+                                           {"soak", grass::cli::runSoak}}};
+
+std::string commandNames(std::string_view separator) {
+    std::string names;
+    for (const Command& command : COMMANDS)
+        names += (names.empty() ? "" : std::string(separator)) + std::string(command.name);
+    return names;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
-        grass::cli::printError("",
-                               "missing command: grass render|sim|mesh-info|paint|export|bench|"
-                               "tradeoff|presets|soak ... "
-                               "(see grass --help)");
+        grass::cli::printError("", "missing command: grass " + commandNames("|") +
+                                       " ... (see grass --help)");
         return grass::cli::EXIT_USAGE;
     }
     if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
@@ -50,35 +73,21 @@ int main(int argc, char** argv) {
     }
     const std::string command = args[0];
     args.erase(args.begin());
-    if (command == "render")
-        return grass::cli::runRender(args);
-    if (command == "sim")
-        return grass::cli::runSim(args);
-    if (command == "mesh-info")
-        return grass::cli::runMeshInfo(args);
-    if (command == "paint")
-        return grass::cli::runPaint(args);
-    if (command == "export")
-        return grass::cli::runExport(args);
-    if (command == "bench")
-        return grass::cli::runBench(args);
-    if (command == "tradeoff")
-        return grass::cli::runTradeoff(args);
-    if (command == "presets")
-        return grass::cli::runPresets(args);
-    if (command == "soak")
-        return grass::cli::runSoak(args);
-    if (command.rfind("-", 0) == 0)
+    std::vector<std::string_view> names;
+    for (const Command& known : COMMANDS) {
+        if (known.name == command)
+            return known.run(args);
+        names.push_back(known.name);
+    }
+    if (command.rfind("-", 0) == 0) {
         grass::cli::printError("", command + ": unknown option (see grass --help)");
-    else {
-        const std::vector<std::string> commands = {"render",   "sim",     "mesh-info",
-                                                   "paint",    "export",  "bench",
-                                                   "tradeoff", "presets", "soak"};
-        const std::optional<std::string> meant = grass::core::nearestName(command, commands);
-        grass::cli::printError(
-            command, "unknown command" + (meant ? "; did you mean " + *meant + "?" : "") +
-                         " (commands: render, sim, mesh-info, paint, export, bench, tradeoff, "
-                         "presets, soak; see grass --help)");
+    } else {
+        const std::optional<std::string_view> meant = grass::core::closestMatch(command, names);
+        grass::cli::printError(command, "unknown command" +
+                                            (meant ? "; did you mean " + std::string(*meant) + "?"
+                                                   : "") +
+                                            " (commands: " + commandNames(", ") +
+                                            "; see grass --help)");
     }
     return grass::cli::EXIT_USAGE;
 }

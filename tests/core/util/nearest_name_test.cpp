@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "util/arg_parser.h"
@@ -21,17 +22,22 @@ TEST(NearestName, CountsEditsIncludingASwapOfNeighbours) {
 }
 
 TEST(NearestName, SuggestsOnlyANameNearEnough) {
-    const std::vector<std::string> commands = {"render", "sim",      "mesh-info", "paint", "export",
-                                               "bench",  "tradeoff", "presets",   "soak"};
-    EXPECT_EQ(nearestName("rendr", commands), "render");
-    EXPECT_EQ(nearestName("exprot", commands), "export");
-    EXPECT_EQ(nearestName("meshinfo", commands), "mesh-info");
-    EXPECT_EQ(nearestName("Render", commands), "render");  // the spelling that works
-    EXPECT_EQ(nearestName("simm", commands), "sim");
-    EXPECT_FALSE(nearestName("render", commands).has_value());  // nothing to correct
-    EXPECT_FALSE(nearestName("view", commands).has_value());
-    EXPECT_FALSE(nearestName("sx", commands).has_value());  // short names: one edit at most
-    EXPECT_FALSE(nearestName("", commands).has_value());
+    const std::vector<std::string_view> commands = {"render", "sim",      "mesh-info",
+                                                    "paint",  "export",   "bench",
+                                                    "tradeoff", "presets", "soak"};
+    EXPECT_EQ(closestMatch("rendr", commands), "render");
+    EXPECT_EQ(closestMatch("exprot", commands), "export");
+    EXPECT_EQ(closestMatch("meshinfo", commands), "mesh-info");
+    EXPECT_EQ(closestMatch("Render", commands), "render");  // the spelling that works
+    EXPECT_EQ(closestMatch("simm", commands), "sim");
+    EXPECT_FALSE(closestMatch("view", commands).has_value());
+    EXPECT_FALSE(closestMatch("colour", commands).has_value());
+    EXPECT_FALSE(closestMatch("", commands).has_value());
+    // A project key: "fov" is no typo of "name" (project/json_reader.h's unknown keys).
+    const std::vector<std::string_view> keys = {"name", "density", "size"};
+    EXPECT_EQ(closestMatch("densty", keys), "density");
+    EXPECT_EQ(closestMatch("sz", keys), "size");
+    EXPECT_FALSE(closestMatch("fov", keys).has_value());
 }
 
 TEST(NearestName, AnUnknownOptionSaysWhichWasMeant) {
