@@ -15,6 +15,7 @@
 #include "mesh/gltf_loader.h"
 #include "mesh/gltf_meshopt.h"
 #include "util/atomic_file.h"
+#include "util/file_extension.h"
 #include "util/json_text.h"
 #include "util/path_inside.h"
 #include "util/printable_text.h"
@@ -492,9 +493,7 @@ std::string glbBytes(const std::string& json, const GlbChunks& chunks) {
 }  // namespace
 
 std::string otherMeshFormat(const fs::path& file, std::string_view bytes) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = lowerExtension(file);
     std::string kind;
     if (bytes.starts_with("Kaydara FBX Binary") || ext == ".fbx")
         kind = "an FBX file";

@@ -30,13 +30,15 @@ public:
     // What a command stopped by it exits with: 128 + the signal, as the shell reports a death
     // by it.
     int exitCode() const { return 128 + signal(); }
+    // exitCode() once a signal came, else `otherwise` (the command's own status).
+    int exitCodeOr(int otherwise) const { return signal() != 0 ? exitCode() : otherwise; }
 
 private:
     std::stop_source mStop;
     std::atomic<int> mSignal{0};
-    std::atomic<bool> mDone{false};
-    struct sigaction mPreviousInt {
-    }, mPreviousTerm{};
+    int mPipe[2] = {-1, -1};  // the handler writes, the watcher sleeps reading
+    struct sigaction mPreviousInt = {};
+    struct sigaction mPreviousTerm = {};
     std::thread mWatcher;
 };
 

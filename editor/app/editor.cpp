@@ -323,9 +323,6 @@ Result<bool> Editor::frame() {
 
 RestingFrame Editor::restingFrame() const {
     const Clock::time_point now = Clock::now();
-    const auto secondsUntil = [&](Clock::time_point at) {
-        return std::chrono::duration<double>(at - now).count();
-    };
     RestingFrame frame;
     frame.panelsChangeInS = mPanelsChangeInS;
     // The adaptive quality's clock: seconds since the editor started (chooseQuality).
@@ -336,7 +333,8 @@ RestingFrame Editor::restingFrame() const {
         frame.autosaveInS = mAutosaveDueS;
     // A little after the update is due (frame() takes it once strictly past STATUS_EVERY).
     if (!mState.transient.status.atRest)
-        frame.statusUpdateInS = secondsUntil(mLastStatus + STATUS_EVERY) + 0.005;
+        frame.statusUpdateInS =
+            std::chrono::duration<double>(mLastStatus + STATUS_EVERY - now).count() + 0.005;
     frame.progressShown = mState.regrowing() || mState.busy();
     frame.playing = mState.view.timeline.playing();
     return frame;

@@ -116,7 +116,7 @@ int runBench(const std::vector<std::string>& argv) {
     std::printf("wall time %.1f s for %zu case(s)\n", msSince(start) / 1000.0, run->cases.size());
     if (auto written = writeOutputFile(args.out, benchRunJson(*run)); !written)
         return reportFailure("bench", written.error(), EXIT_FAILED);
-    return interrupt.signal() != 0 ? interrupt.exitCode() : 0;
+    return interrupt.exitCodeOr(0);
 }
 
 }  // namespace grass::cli

@@ -162,7 +162,7 @@ int runExport(const std::vector<std::string>& argv) {
     const core::InterruptStop interrupt;
     const auto failed = [&](const Error& error) {
         return reportFailure("export", withFlagNames(error),
-                             interrupt.signal() != 0 ? interrupt.exitCode() : EXIT_FAILED);
+                             interrupt.exitCodeOr(EXIT_FAILED));
     };
     auto loaded = core::loadProject(args.project);
     if (!loaded)

@@ -163,7 +163,7 @@ int finishTurntable(const RenderArgs& args, const core::Scene& scene,
         render::writeTurntable(scene, camera, request, args.turntable, args.out, interrupt.token());
     if (!run)
         return reportFailure("render", run.error(), EXIT_FAILED);
-    const int done = run->stopped ? interrupt.exitCode() : 0;
+    const int done = interrupt.exitCodeOr(0);
     if (args.stats.empty())
         return done;
     if (auto written = writeStats(args.stats, run->last, physicsMsPerStep, run->lastWallMs,

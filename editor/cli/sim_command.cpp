@@ -236,7 +236,7 @@ int runSim(const std::vector<std::string>& argv) {
         std::fprintf(stderr, "sim: stopped after %zu steps: the summary is of those\n", run->steps);
 
     printSummary(args, *loaded, *field, *device, threads, *run);
-    const int exitCode = run->stopped ? interrupt.exitCode() : 0;
+    const int exitCode = interrupt.exitCodeOr(0);
     if (args.report.empty())
         return exitCode;
     auto report = reportJson(args, *field, *run, device->description, threads);

@@ -203,7 +203,7 @@ int runTradeoff(const std::vector<std::string>& argv) {
     if (!report)
         return reportFailure("tradeoff", report.error(), EXIT_FAILED);
     const int written = writeOutputs(*report, args.out, true);
-    return written == 0 && interrupt.signal() != 0 ? interrupt.exitCode() : written;
+    return written == 0 ? interrupt.exitCodeOr(0) : written;
 }
 
 }  // namespace grass::cli
