@@ -130,10 +130,10 @@ Result<void> ArgParser::parse(const std::vector<std::string>& args) {
                 for (const Option& o : mOptions)
                     names.push_back(o.name);
                 const std::optional<std::string_view> meant = core::closestMatch(arg, names);
-                return makeError(arg, "unknown option" +
-                                          (meant ? "; did you mean " + std::string(*meant) + "?"
-                                                 : "") +
-                                          " (see --help)");
+                return makeError(arg,
+                                 "unknown option" +
+                                     (meant ? "; did you mean " + std::string(*meant) + "?" : "") +
+                                     " (see --help)");
             }
             if (option->takesValue && !inlineValue) {
                 if (i + 1 >= args.size())

@@ -161,8 +161,7 @@ int runExport(const std::vector<std::string>& argv) {
     // From here Ctrl+C stops the growing or the export at its next stage (interrupt_stop.h).
     const core::InterruptStop interrupt;
     const auto failed = [&](const Error& error) {
-        return reportFailure("export", withFlagNames(error),
-                             interrupt.exitCodeOr(EXIT_FAILED));
+        return reportFailure("export", withFlagNames(error), interrupt.exitCodeOr(EXIT_FAILED));
     };
     auto loaded = core::loadProject(args.project);
     if (!loaded)

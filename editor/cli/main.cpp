@@ -59,8 +59,8 @@ std::string commandNames(std::string_view separator) {
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
-        grass::cli::printError("", "missing command: grass " + commandNames("|") +
-                                       " ... (see grass --help)");
+        grass::cli::printError(
+            "", "missing command: grass " + commandNames("|") + " ... (see grass --help)");
         return grass::cli::EXIT_USAGE;
     }
     if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
@@ -83,11 +83,10 @@ int main(int argc, char** argv) {
         grass::cli::printError("", command + ": unknown option (see grass --help)");
     } else {
         const std::optional<std::string_view> meant = grass::core::closestMatch(command, names);
-        grass::cli::printError(command, "unknown command" +
-                                            (meant ? "; did you mean " + std::string(*meant) + "?"
-                                                   : "") +
-                                            " (commands: " + commandNames(", ") +
-                                            "; see grass --help)");
+        grass::cli::printError(command,
+                               "unknown command" +
+                                   (meant ? "; did you mean " + std::string(*meant) + "?" : "") +
+                                   " (commands: " + commandNames(", ") + "; see grass --help)");
     }
     return grass::cli::EXIT_USAGE;
 }

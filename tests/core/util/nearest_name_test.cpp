@@ -22,9 +22,8 @@ TEST(NearestName, CountsEditsIncludingASwapOfNeighbours) {
 }
 
 TEST(NearestName, SuggestsOnlyANameNearEnough) {
-    const std::vector<std::string_view> commands = {"render", "sim",      "mesh-info",
-                                                    "paint",  "export",   "bench",
-                                                    "tradeoff", "presets", "soak"};
+    const std::vector<std::string_view> commands = {
+        "render", "sim", "mesh-info", "paint", "export", "bench", "tradeoff", "presets", "soak"};
     EXPECT_EQ(closestMatch("rendr", commands), "render");
     EXPECT_EQ(closestMatch("exprot", commands), "export");
     EXPECT_EQ(closestMatch("meshinfo", commands), "mesh-info");
