@@ -1,5 +1,7 @@
 #include "util/interrupt_stop.h"
 
+#include "util/terminal_line.h"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -50,6 +52,7 @@ InterruptStop::InterruptStop() {
         // The handler's byte, or the destructor's (no signal: the command is done).
         if (const int sig = gCaught.load(); got == 1 && sig != 0) {
             mSignal.store(sig);
+            endProgressLine();
             std::fprintf(stderr, "note: %s: stopping at the next stage (again to end at once)\n",
                          sig == SIGINT ? "interrupted" : "terminated");
             mStop.request_stop();

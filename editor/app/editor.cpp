@@ -812,6 +812,7 @@ void Editor::updateStatus(bool statusDue, bool timingsDue) {
         if (sinceS > 0.0)
             mState.transient.status.fps = double(mFramesSinceStatus) / sinceS;
         mState.transient.status.atRest = mViewsDrawn == mViewsDrawnAtStatus;
+        mState.transient.status.playing = mState.view.timeline.playing();
         mViewsDrawnAtStatus = mViewsDrawn;
         mFramesSinceStatus = 0;
         mLastStatus = now;

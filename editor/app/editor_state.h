@@ -101,6 +101,9 @@ struct FrameStatus {
     // No frame since the last update drew the viewport's picture (app/view_redraw.h): the window
     // is at rest, and its frame rate (the panels' alone, about ten a second) says nothing.
     bool atRest = false;
+    // The timeline plays: at rest then means that nothing in the field moves, which the status
+    // bar says rather than a bare "at rest" beside a moving clock.
+    bool playing = false;
     double uiMs = 0.0;  // CPU time of building and tessellating the UI
     // Simulated time the live physics could not step in the last second (0: it keeps up).
     double physicsDroppedS = 0.0;

@@ -251,7 +251,7 @@ std::string freshPicturePath(const EditorState& s, const std::string& stem, cons
 
 std::string frameRateText(const FrameStatus& status) {
     if (status.atRest)
-        return "at rest";
+        return status.playing ? "playing: nothing moves" : "at rest";
     char text[32];
     std::snprintf(text, sizeof text, "%.0f fps", status.fps);
     return text;

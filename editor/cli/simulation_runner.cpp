@@ -9,6 +9,7 @@
 
 #include "physics/step_count.h"
 #include "render/scene_physics_gpu.h"
+#include "util/terminal_line.h"
 
 namespace grass::cli {
 
@@ -42,19 +43,17 @@ public:
                      100.0 * static_cast<double>(done) / static_cast<double>(mTotal),
                      static_cast<double>(simulatedS), elapsedS, leftS, mTerminal ? "" : "\n");
         std::fflush(stderr);
-        mShown = true;
+        if (mTerminal)
+            core::markProgressLineOpen();
     }
 
-    void finish() {
-        if (mShown && mTerminal)
-            std::fputc('\n', stderr);
-    }
+    // Ends the line left open on a terminal, unless a message (the interrupt's note) did.
+    void finish() { core::endProgressLine(); }
 
 private:
     std::string mCommand;
     std::size_t mTotal;
     bool mTerminal;
-    bool mShown = false;
     Clock::time_point mStart = Clock::now();
     Clock::time_point mLast = Clock::now();
 };

@@ -1015,6 +1015,8 @@ TEST(EditorPanels, TheStatusBarSaysAtRestInsteadOfThePanelsFrameRate) {
     EXPECT_EQ(editor::frameRateText(status), "10 fps");
     status.atRest = true;
     EXPECT_EQ(editor::frameRateText(status), "at rest");
+    status.playing = true;  // a field without wind plays: the clock moves, the picture does not
+    EXPECT_EQ(editor::frameRateText(status), "playing: nothing moves");
 }
 
 }  // namespace
