@@ -347,6 +347,44 @@ void noteRtcCentre(const Json& doc, std::vector<std::string>& notes) {
                     "places it on the globe)");
 }
 
+// The path tinygltf asks the file callbacks for a buffer's `name`: base dir and name joined as
+// its JoinPath does.
+std::string virtualBufferPath(const std::string& base, const std::string& name) {
+    return base.empty() || base.back() == '/' ? base + name : base + "/" + name;
+}
+
+// The buffers some bufferView reads: its own `buffer`, and the `buffer` of its extensions (the
+// compressed source of EXT_meshopt_compression and KHR_meshopt_compression).
+std::vector<bool> buffersInUse(const Json& doc, std::size_t bufferCount) {
+    std::vector<bool> used(bufferCount, false);
+    const auto mark = [&](const Json* index) {
+        if (index && index->is_number_unsigned() && index->get<std::uint64_t>() < bufferCount)
+            used[index->get<std::size_t>()] = true;
+    };
+    const Json* views = member(doc, "bufferViews");
+    if (!views || !views->is_array())
+        return used;
+    for (const Json& view : *views) {
+        mark(member(view, "buffer"));
+        if (const Json* extensions = member(view, "extensions");
+            extensions && extensions->is_object())
+            for (const Json& extension : *extensions)
+                mark(member(extension, "buffer"));
+    }
+    return used;
+}
+
+// A buffer no bufferView reads holds nothing the geometry needs (glTF 2.0 allows one with no
+// source at all; the validator's own valid files have them): its source is not checked or read,
+// and tinygltf gets one byte of zeros in its place, so a missing file, a placeholder without a
+// uri or an odd data: URI there does not refuse the whole model.
+void replaceUnusedBuffer(Json& buffer, std::size_t index, const std::string& base,
+                         FsContext& context) {
+    const std::string name = "grass-unused-" + std::to_string(index) + ".bin";
+    buffer = Json::object({{"byteLength", 1}, {"uri", name}});
+    context.zeros[virtualBufferPath(base, name)] = 1;
+}
+
 // Checks one buffer's source and rewrites its JSON so tinygltf reads it without surprises:
 // external files get a virtual name mapped in `context`; byteLength grows to the real size
 // (tinygltf wants them equal; a longer file is harmless); data: URIs get a header it knows.
@@ -379,7 +417,7 @@ Result<void> prepareBuffer(Json& buffer, std::size_t index, const GlbChunks* glb
         context.fallbackBudget -= declared;
         const std::string name = "grass-fallback-" + std::to_string(index) + ".bin";
         buffer["uri"] = name;
-        context.zeros[base.empty() || base.back() == '/' ? base + name : base + "/" + name] = declared;
+        context.zeros[virtualBufferPath(base, name)] = declared;
         return {};
     }
     if (!uriJson || !uriJson->is_string()) {
@@ -430,8 +468,7 @@ Result<void> prepareBuffer(Json& buffer, std::size_t index, const GlbChunks* glb
     buffer["byteLength"] = actual;
     const std::string name = "grass-buffer-" + std::to_string(index) + ".bin";
     buffer["uri"] = name;
-    // tinygltf joins base dir and name as its JoinPath does.
-    context.files[base.empty() || base.back() == '/' ? base + name : base + "/" + name] = file;
+    context.files[virtualBufferPath(base, name)] = file;
     return {};
 }
 
@@ -572,7 +609,12 @@ Result<GltfSource> parseGltfFile(const fs::path& file) {
     context.fallbackBudget = fallbackBudgetFor(bytes->size());
     if (Json* buffers = doc.is_object() && doc.contains("buffers") ? &doc["buffers"] : nullptr;
         buffers && buffers->is_array()) {
+        const std::vector<bool> used = buffersInUse(doc, buffers->size());
         for (std::size_t i = 0; i < buffers->size(); ++i) {
+            if (!used[i]) {
+                replaceUnusedBuffer((*buffers)[i], i, base, context);
+                continue;
+            }
             auto prepared = prepareBuffer((*buffers)[i], i, binary ? &chunks : nullptr, folder,
                                           base, context, display);
             if (!prepared)

@@ -104,7 +104,9 @@ paths)
     case_
     [ -e outside/new.png ] && fail "paint wrote through a dangling link to outside"
     mkdir -p gl && ln -s /etc/hostname gl/buf.bin
-    printf '{"asset":{"version":"2.0"},"buffers":[{"uri":"buf.bin","byteLength":4}]}' >gl/b.gltf
+    # A view reads the buffer (one that nothing reads is not opened at all).
+    printf '{"asset":{"version":"2.0"},"buffers":[{"uri":"buf.bin","byteLength":4}],%s}' \
+        '"bufferViews":[{"buffer":0,"byteLength":4}]' >gl/b.gltf
     refused "buffer 0" --also "outside the glTF file's folder" -- "$bin" mesh-info gl/b.gltf
     # Painting through a linked maps folder writes nothing outside either.
     case_

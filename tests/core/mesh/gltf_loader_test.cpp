@@ -801,6 +801,32 @@ TEST(GltfLoader, ReportsFileWithoutTriangles) {
     EXPECT_TRUE(contains(loadError(file), "contains no triangles"));
 }
 
+// A buffer that no bufferView reads holds nothing of the geometry: glTF allows one without any
+// source (the glTF validator's own valid files have placeholders, a missing file's and a
+// non-base64 data: URI's). Before, the first such buffer refused the whole model ("buffer 1 has
+// no uri …"). A buffer in use keeps every check (ReportsMissingBufferFile).
+TEST(GltfLoader, ABufferThatNoViewReadsIsNotRead) {
+    const fs::path dir = test::scratchDir("gltf_unused_buffers");
+    const GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(1, 1, 2));
+    const GltfImport plain = loadOk([&] {
+        test::writeGltf(dir / "plain.gltf", asset);
+        return dir / "plain.gltf";
+    }());
+    test::GltfDocument doc = test::buildGltf(asset);
+    doc.json["buffers"].push_back({{"byteLength", 4096}});                             // no source
+    doc.json["buffers"].push_back({{"byteLength", 16}, {"uri", "gone.bin"}});          // missing
+    doc.json["buffers"].push_back({{"byteLength", 1}, {"uri", "data:text/plain,0"}});  // not base64
+    doc.json["buffers"].push_back({{"byteLength", 1e15}, {"uri", "../../etc/passwd"}});
+    for (const auto storage : {BufferStorage::ExternalFile, BufferStorage::Glb}) {
+        const fs::path file = dir / (storage == BufferStorage::Glb ? "extra.glb" : "extra.gltf");
+        test::writeGltf(file, doc, storage);
+        expectSameMesh(loadOk(file), plain);
+    }
+    // The same buffer read by a view (here an unused one) is checked as before.
+    doc.json["bufferViews"].push_back({{"buffer", 2}, {"byteLength", 8}});
+    test::writeGltf(dir / "read.gltf", doc);
+    EXPECT_TRUE(contains(loadError(dir / "read.gltf"), "gone.bin"));
+}
 
 // A grass export imported as ground (New from mesh, `grass render --mesh`): its terrain is the
 // ground, the blades under its blade group nodes are not. Before, grass grew on the exported
