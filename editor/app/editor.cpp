@@ -288,9 +288,20 @@ Result<bool> Editor::frame() {
     const bool statusDue = mFrame == 0 || Clock::now() - mLastStatus > STATUS_EVERY;
     // Exact pass timings wait for each pass on software GL (gl/timer_query.h): a reduced frame,
     // which keeps a budget, goes without them and the status bar keeps the last full frame's.
-    const bool timingsDue = statusDue && mState.view.quality.level() == 0;
+    // The full picture drawn after reduced ones (input stopped, playback paused) measures them
+    // too: it is often the only frame drawn before the window rests, and the status bar showed
+    // the figures of whatever full frame came at a status update, minutes and views before.
+    const bool fullQuality = mState.view.quality.level() == 0;
+    const bool timingsDue = fullQuality && (statusDue || mLastDrawnReduced);
     mState.view.options.cull.collectStats = timingsDue;
     render(width, height);
+    if (mViewDrawn) {
+        mLastDrawnReduced = !fullQuality;
+        if (fullQuality)
+            mLastFullPictureFrame = mFrame;
+        if (timingsDue)
+            mTimingsFrame = mFrame;
+    }
     auto more = writeOutputs(width, height);
     if (!more || !*more)
         return more;

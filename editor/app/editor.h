@@ -160,6 +160,11 @@ private:
     bool mViewDrawn = false;
     int mViewsDrawn = 0;  // for the --wall-clock summary
     int mViewsDrawnAtStatus = 0;  // at the last status update: none since means "at rest"
+    bool mLastDrawnReduced =
+        false;  // the last picture drawn was the adaptive quality's reduced one
+    // The frames that drew the last full picture and the status bar's timings (the script summary).
+    int mLastFullPictureFrame = -1;
+    int mTimingsFrame = -1;
     // The window's event count after this frame's input was read: a frame that drew nothing new
     // and saw no event since waits for one (Editor::frame).
     std::uint64_t mEventsAtPoll = 0;

@@ -55,6 +55,17 @@ TEST(EditorTime, TenSecondsOfSlowFramesMoveTheTimelineTenSecondsAndAutosave) {
         << "the unsaved edit was not autosaved by the clock";
 }
 
+// "status timings of frame T, last full picture drawn in frame F": {T, F}.
+std::pair<int, int> statusTimingsFrames(const std::string& log) {
+    int timings = -2, full = -2;
+    const std::size_t at = log.find("status timings of frame ");
+    if (at != std::string::npos)
+        std::sscanf(log.c_str() + at,
+                    "status timings of frame %d, last full picture drawn in frame %d", &timings,
+                    &full);
+    return {timings, full};
+}
+
 // Playback of a field that moves (a breeze) counts as interaction: with a budget no frame meets
 // (5 ms, the least allowed), a playing editor draws the reduced picture for as long as it plays
 // (it opens playing), and Space (pause) brings back the full one once the settle time has passed
@@ -69,6 +80,11 @@ TEST(EditorTime, PlaybackKeepsTheReducedPictureUntilPaused) {
     const std::string paused = runEditor(dir, "wait-s 3\nkey space\nwait-s 2\n", "--frame-budget-ms 5");
     EXPECT_NE(paused.find(returned), std::string::npos)
         << "pausing did not bring back the full picture:\n" << paused;
+    // The status bar's stage timings and blade counts are the full picture's that came back,
+    // the frame the window then rests on. Before, they stayed those of the first frame.
+    const auto [timingsFrame, fullFrame] = statusTimingsFrames(paused);
+    EXPECT_GT(fullFrame, 0) << paused;
+    EXPECT_EQ(timingsFrame, fullFrame) << paused;
     // Without adaptive quality nothing is ever reduced, so nothing returns.
     const std::string off = runEditor(dir, "wait-s 3\n", "--no-adaptive");
     EXPECT_EQ(off.find(returned), std::string::npos) << off;
