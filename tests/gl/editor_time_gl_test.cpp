@@ -85,6 +85,12 @@ TEST(EditorTime, PlaybackKeepsTheReducedPictureUntilPaused) {
     const auto [timingsFrame, fullFrame] = statusTimingsFrames(paused);
     EXPECT_GT(fullFrame, 0) << paused;
     EXPECT_EQ(timingsFrame, fullFrame) << paused;
+    // Paused, an edit (T: the technique) draws one full picture between frames that draw
+    // nothing: it measures them too.
+    const std::string edited =
+        runEditor(dir, "key space\nwait-s 1.5\nkey t\nwait-s 1.5\n", "--frame-budget-ms 5");
+    const auto [editTimingsFrame, editFullFrame] = statusTimingsFrames(edited);
+    EXPECT_EQ(editTimingsFrame, editFullFrame) << edited;
     // Without adaptive quality nothing is ever reduced, so nothing returns.
     const std::string off = runEditor(dir, "wait-s 3\n", "--no-adaptive");
     EXPECT_EQ(off.find(returned), std::string::npos) << off;
@@ -114,6 +120,10 @@ TEST(EditorTime, AFieldThatNothingMovesPlaysAtFullQualityAndIsNotDrawnAgain) {
     const auto [drawn, frames] = viewportDrawn(stillLog);
     ASSERT_GT(frames, 20) << stillLog;
     EXPECT_LT(drawn, frames / 4) << stillLog;
+    // Its few pictures are drawn at full quality between frames that draw nothing: the last one
+    // measured the status bar's timings, as any full picture the window then rests on.
+    const auto [timingsFrame, fullFrame] = statusTimingsFrames(stillLog);
+    EXPECT_EQ(timingsFrame, fullFrame) << stillLog;
     const auto windy = scratchDir("editor_playback_windy");
     writeTinyProject(windy, "tiny", 480, 320, /*windy=*/true);
     const std::string windyLog = runEditor(windy, "wait-s 3\n", "--frame-budget-ms 5");
