@@ -309,6 +309,7 @@ int rangeDecimals(float min, float max) {
 struct EntryState {
     bool editing = false;
     bool hadFocus = false;
+    double openedAtS = -1.0;  // the input time of the click that opened the box
     std::string buffer;
     std::string refused;  // why the typed text was not taken (empty: nothing refused)
 };
@@ -328,7 +329,10 @@ std::optional<double> parseTyped(const std::string& text) {
 }
 
 // The box a drag value turns into for typing, shared by the float and integer entries. A
-// double-click or Ctrl+click opens it with the value selected; Enter takes the typed value
+// click that does not drag opens it with the value selected, as egui's DragValue and Blender's
+// number fields do (a double-click's second click keeps the selection; Ctrl+click too). Before,
+// only a double-click or Ctrl+click opened it, and the single click a user tries first did
+// nothing, the typing after it lost. Enter takes the typed value
 // when `take` accepts it (returns an empty reason) and otherwise keeps the box open, outlined,
 // with the reason under it, focused again for the correction. Clicking elsewhere leaves a
 // refused entry showing (never a silent revert); Escape in the box cancels.
@@ -342,9 +346,10 @@ Response numberEntry(Ui& ui, std::string_view label, const std::function<Respons
     const std::string editId = std::string(label) + "##entry";
     if (!st.editing) {
         Response r = dragBox();
-        if (r.doubleClicked() || (r.clicked() && ctx.input().modifiers.ctrl)) {
+        if (r.clicked() || r.doubleClicked()) {
             st.editing = true;
             st.hadFocus = false;
+            st.openedAtS = ctx.input().timeS;
             st.refused.clear();
             st.buffer = current();
             const Id textId = ui.makeId(editId);
@@ -362,7 +367,20 @@ Response numberEntry(Ui& ui, std::string_view label, const std::function<Respons
     const bool enter = ctx.keyPressed(Key::Enter);
     bool committed = false;
     bool edited = false;
+    const bool pressedSoonAfterOpening =
+        ctx.buttonPressed() && ctx.input().timeS - st.openedAtS <= double(s.doubleClickTimeS);
     Response r = textEditImpl(ui, editId, st.buffer, width, &committed, &edited);
+    // The second click of a double-click lands in the box the first opened, perhaps in the
+    // same frame (then the context still sees the drag box there and would drop the focus): it
+    // keeps the box focused with the value selected, to be typed over, instead of placing the
+    // caret.
+    if (pressedSoonAfterOpening && ctx.input().hasPointer &&
+        r.rect().contains(ctx.input().pointerPos)) {
+        ctx.requestFocus(r.id());
+        TextEditState& text = ctx.state<TextEditState>(r.id());
+        text.anchor = 0;
+        text.cursor = st.buffer.size();
+    }
     if (committed) {
         const std::optional<double> typed = parseTyped(st.buffer);
         st.refused = !typed ? "\"" + st.buffer + "\" is not a number" : take(*typed);

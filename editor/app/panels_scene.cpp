@@ -37,7 +37,7 @@ void positionRow(ui::Ui& ui, EditorState& s, glm::vec3& position, std::vector<co
     if (path.empty()) {
         vec3Row(ui, s, "position", position, 0.02f,
                 "World position x, y, z in metres (-10000 to 10000); "
-                "double-click or Ctrl+click to type a value");
+                "click (without dragging) to type a value");
         return;
     }
     const float timeS = float(s.view.timeline.timeS());
@@ -45,7 +45,7 @@ void positionRow(ui::Ui& ui, EditorState& s, glm::vec3& position, std::vector<co
     glm::vec3 at = before;
     vec3Row(ui, s, "position (key at now)", at, 0.02f,
             "Position on the keyed path at the current time, in metres; an edit keys it there; "
-            "double-click or Ctrl+click to type a value");
+            "click (without dragging) to type a value");
     if (at != before)
         core::setKey(path, timeS, at, 0.5f * float(s.view.timeline.stepS()));
 }
@@ -185,8 +185,9 @@ void renderSection(ui::Ui& ui, EditorState& s) {
                     .onHoverText("Draw a reduced picture while you orbit, paint, drag or play, "
                                  "to keep each frame within the budget");
                 ui::dragValueWithEntry(row, "ms##budget", budget, 1.0f, 5.0f, 1000.0f, 0)
-                    .onHoverText("Frame time budget while moving, in ms (5 to 1000); "
-                                 "double-click or Ctrl+click to type a value");
+                    .onHoverText(
+                        "Frame time budget while moving, in ms (5 to 1000); "
+                        "click (without dragging) to type a value");
             });
             if (adapt.enabled != before || budget != budgetBefore) {
                 adapt.budgetMs = budget;

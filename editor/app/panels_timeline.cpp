@@ -1,6 +1,6 @@
 // The timeline strip (issue 26 item 4): a wide bar under the viewport, as in Blender and every
 // animation tool. Its first row plays, pauses, steps and loops, with the time and speed boxes
-// (drag, or double-click / Ctrl+click to type); its track spans the timeline's range with a
+// (drag, or click to type); its track spans the timeline's range with a
 // tick for every key of every wind and collider path (the selected object's brighter) and the
 // playhead: a click or drag on the track scrubs, a click on a tick selects the object that key
 // moves and jumps to the key's time.
@@ -44,7 +44,7 @@ void transportRow(ui::Ui& row, EditorState& s) {
     float timeS = static_cast<float>(t.timeS());
     if (ui::dragValueWithEntry(row, "s##time", timeS, 0.01f, static_cast<float>(t.startS()),
                                static_cast<float>(t.endS()), 2)
-            .onHoverText("Scene time in seconds: drag, or double-click / Ctrl+click to type")
+            .onHoverText("Scene time in seconds: drag, or click to type")
             .changed())
         s.view.timeJump = t.scrub(timeS);
     float speed = static_cast<float>(t.speed());

@@ -55,12 +55,13 @@ void brushSettings(ui::Ui& ui, EditorState& s) {
     if (ui::sliderWithEntry(ui, "radius  [ ]", b.radiusM, 0.01f, 100.0f,
                             {.logarithmic = true, .decimals = 2})
             .onHoverText("Brush radius in metres (0.01 to 100); [ and ] shrink and grow it; "
-                         "double-click or Ctrl+click to type a value")
+                         "click (without dragging) to type a value")
             .changed())
         s.view.paint.radiusChosen = true;
     ui::sliderWithEntry(ui, "strength", b.strength, 0.0f, 1.0f, {.decimals = 2})
-        .onHoverText("How much each dab changes the map (0 to 1); "
-                     "double-click or Ctrl+click to type a value");
+        .onHoverText(
+            "How much each dab changes the map (0 to 1); "
+            "click (without dragging) to type a value");
     static constexpr std::array<const char*, 3> FALLOFFS{"smooth", "linear", "constant"};
     int falloff = int(b.falloff);
     if (ui.comboBox("falloff", falloff, FALLOFFS)
@@ -69,8 +70,9 @@ void brushSettings(ui::Ui& ui, EditorState& s) {
         b.falloff = core::BrushFalloff(falloff);
     if (b.mode == core::BrushMode::Set)
         ui::sliderWithEntry(ui, "set value", b.setValue, 0.0f, 1.0f, {.decimals = 2})
-            .onHoverText("The value the set mode paints toward (0 to 1); "
-                         "double-click or Ctrl+click to type a value");
+            .onHoverText(
+                "The value the set mode paints toward (0 to 1); "
+                "click (without dragging) to type a value");
     ui.coloredLabel("left-drag paints, Ctrl inverts; right-drag orbits", ui.style().textWeak);
 }
 
@@ -94,11 +96,13 @@ void placeSettings(ui::Ui& ui, EditorState& s) {
     if (s.view.place.snap.enabled) {
         ui::dragValueWithEntry(ui, "step m", s.view.place.snap.translateStepM, 0.01f, 0.001f,
                                100.0f, 3)
-            .onHoverText("Snap step for moving, in metres (0.001 to 100); "
-                         "double-click or Ctrl+click to type a value");
+            .onHoverText(
+                "Snap step for moving, in metres (0.001 to 100); "
+                "click (without dragging) to type a value");
         ui::dragValueWithEntry(ui, "step °", s.view.place.snap.rotateStepDeg, 0.5f, 0.5f, 90.0f, 1)
-            .onHoverText("Snap step for turning, in degrees (0.5 to 90); "
-                         "double-click or Ctrl+click to type a value");
+            .onHoverText(
+                "Snap step for turning, in degrees (0.5 to 90); "
+                "click (without dragging) to type a value");
     }
     ui.horizontal([&](ui::Ui& row) {
         if (row.button("add wind")

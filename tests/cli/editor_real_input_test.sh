@@ -3,8 +3,10 @@
 # every frame slowed to about a second (--frame-delay-ms), as on a software renderer, and xdotool
 # sends real X events, each quicker than a frame: a click in the name field and a typed "f" (text,
 # not "frame the scene"), a quick click on a checkbox, a double-click on a number field and a
-# typed value, then Ctrl+S. The saved project.json must hold every one. Before issue 24 the
-# quick click and the double-click were lost (press and release arrived in one frame).
+# typed value, a single click on another number field and a typed value, then Ctrl+S. The saved
+# project.json must hold every one. Before issue 24 the quick click and the double-click were lost
+# (press and release arrived in one frame); before 2026-12-06 a single click on a number field
+# opened nothing and the typing after it was lost.
 #
 #   editor_real_input_test.sh GRASS_EDITOR WORK_DIR     (under xvfb-run: needs X and xdotool)
 set -u
@@ -24,6 +26,9 @@ act mousemove 214 339 click --repeat 2 --delay 90 1   # the density field: doubl
 act key ctrl+a
 act type 35
 act key Return
+act mousemove 128 260 click 1                 # the height's upper end: one click, as in egui
+act type 0.45                                 # typed over its selected value
+act key Return
 act key ctrl+s
 sleep 2
 stop_editor
@@ -33,4 +38,5 @@ grep -q '"name": "tinyf"' "$saved" || fail "the typed f did not reach the name f
 grep -q '"growth"' "$saved" && grep -A3 '"growth"' "$saved" | grep -q '"enabled": true' ||
     fail "the quick click on the growth checkbox was lost"
 grep -q '"density": 35' "$saved" || fail "the double-click and typed density were lost: $(grep '"density"' "$saved")"
-echo "real input: name typed, quick click, double-click and typing all saved"
+grep -q '0\.45' "$saved" || fail "the single click and typed height were lost: $(grep -A3 '"height' "$saved")"
+echo "real input: name typed, quick click, double-click, single click and typing all saved"
