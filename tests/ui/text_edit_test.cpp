@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <string>
 
 #include "tests/ui/ui_harness.h"
@@ -300,15 +301,24 @@ TEST(UiTextEdit, IdsStayStableAndUnique) {
     }
 }
 
-TEST(UiTextEdit, DoubleClickOnDragValueTypesANumber) {
+// A "Height" drag value with its entry, 0 to 1 at 0.01 a point, at 0.5 and drawn once; `p` is
+// its box's centre.
+struct HeightEntry {
     UiHarness h;
     float value = 0.5f;
     Response r;
-    const auto build = [&](Ui& ui) {
+    std::function<void(Ui&)> build = [this](Ui& ui) {
         r = dragValueWithEntry(ui, "Height", value, 0.01f, 0.0f, 1.0f);
     };
-    h.frame(build);
-    const Vec2 p = r.rect().centre();
+    Vec2 p = [this] {
+        h.frame(build);
+        return r.rect().centre();
+    }();
+};
+
+TEST(UiTextEdit, DoubleClickOnDragValueTypesANumber) {
+    HeightEntry f;
+    auto& [h, value, r, build, p] = f;
     h.clickAt(p, build);
     h.clickAt(p, build);
     h.frame(build);
@@ -363,14 +373,8 @@ TEST(UiTextEdit, DoubleClickOnDragValueTypesANumber) {
 // the gesture a user tries first. Before, it did nothing and what was typed after it was lost.
 // A drag still drags and opens nothing.
 TEST(UiTextEdit, ASingleClickOnDragValueTypesANumberAndADragDrags) {
-    UiHarness h;
-    float value = 0.5f;
-    Response r;
-    const auto build = [&](Ui& ui) {
-        r = dragValueWithEntry(ui, "Height", value, 0.01f, 0.0f, 1.0f);
-    };
-    h.frame(build);
-    const Vec2 p = r.rect().centre();
+    HeightEntry f;
+    auto& [h, value, r, build, p] = f;
     h.clickAt(p, build);
     h.frame(build);
     ASSERT_TRUE(r.hasFocus()) << "the click opened a focused text box";
