@@ -100,6 +100,13 @@ void timelineStrip(ui::Context& ctx, ui::Rect rect, EditorState& state);
 
 // The side panel's sections (panels_scene.cpp).
 void layerSection(ui::Ui& ui, EditorState& state);
+// Add a point wind source or a ball above the scene's centre to the draft and select it (the
+// gizmo's and the Wind and Colliders sections' buttons).
+void addWindSource(EditorState& state);
+void addBallCollider(EditorState& state);
+// Removes a wind source or collider from the draft; the selection keeps its object (cleared
+// when it was this one, one place down when it came after).
+void removeFromDraft(EditorState& state, PlacedObject object);
 void windSection(ui::Ui& ui, EditorState& state);
 void colliderSection(ui::Ui& ui, EditorState& state);
 void renderSection(ui::Ui& ui, EditorState& state);

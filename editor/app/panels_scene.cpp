@@ -57,6 +57,7 @@ void windSection(ui::Ui& ui, EditorState& s) {
     ui.collapsingHeader("Wind (" + std::to_string(winds.size()) + ")##wind", [&](ui::Ui& section) {
         if (winds.empty())
             section.coloredLabel("no wind sources", section.style().textWeak);
+        std::optional<std::size_t> removed;
         for (std::size_t i = 0; i < winds.size(); ++i) {
             section.pushId(std::uint64_t(i));
             section.collapsingHeader(winds[i].name, [&](ui::Ui& body) {
@@ -71,9 +72,21 @@ void windSection(ui::Ui& ui, EditorState& s) {
                     positionRow(body, s, wind.source.position, wind.source.path);
                     regrowRow(body, s, rows, "core_radius", wind);
                 }
+                if (body.button("delete")
+                        .onHoverText("Delete this wind source (Ctrl+Z brings it back)")
+                        .clicked())
+                    removed = i;
             });
             section.popId();
         }
+        if (removed)
+            removeFromDraft(s, PlacedObject{PlacedKind::Wind, *removed});
+        // Here as well as in the gizmo's tool: where a user looks for it first.
+        if (section.button("add wind")
+                .onHoverText(
+                    "Add a point wind source above the scene's centre; the gizmo (g) moves it")
+                .clicked())
+            addWindSource(s);
     });
 }
 
@@ -83,10 +96,17 @@ void colliderSection(ui::Ui& ui, EditorState& s) {
         "Colliders (" + std::to_string(colliders.size()) + ")##colliders", [&](ui::Ui& section) {
             if (colliders.empty())
                 section.coloredLabel("no colliders", section.style().textWeak);
+            std::optional<std::size_t> removed;
             for (std::size_t i = 0; i < colliders.size(); ++i) {
                 section.pushId(std::uint64_t(i));
                 core::ColliderDesc& c = colliders[i];
-                section.label(c.name + (c.shape == core::ColliderShape::Mesh ? " (mesh)" : ""));
+                section.horizontal([&](ui::Ui& row) {
+                    row.label(c.name + (c.shape == core::ColliderShape::Mesh ? " (mesh)" : ""));
+                    if (row.button("delete")
+                            .onHoverText("Delete this collider (Ctrl+Z brings it back)")
+                            .clicked())
+                        removed = i;
+                });
                 section.indent([&](ui::Ui& body) {
                     positionRow(body, s, c.position, c.path);
                     regrowRow(body, s, core::settings::collider(),
@@ -94,6 +114,13 @@ void colliderSection(ui::Ui& ui, EditorState& s) {
                 });
                 section.popId();
             }
+            if (removed)
+                removeFromDraft(s, PlacedObject{PlacedKind::Collider, *removed});
+            if (section.button("add ball")
+                    .onHoverText(
+                        "Add a ball collider above the scene's centre; the gizmo (g) moves it")
+                    .clicked())
+                addBallCollider(s);
         });
 }
 

@@ -107,27 +107,12 @@ void placeSettings(ui::Ui& ui, EditorState& s) {
     ui.horizontal([&](ui::Ui& row) {
         if (row.button("add wind")
                 .onHoverText("Add a point wind source above the scene's centre and select it")
-                .clicked()) {
-            core::WindDesc wind;
-            wind.name = "wind " + std::to_string(project.wind.size() + 1);
-            wind.source.kind = core::WindKind::Point;
-            wind.source.position = newObjectPosition(s);
-            wind.source.radiusM = s.scene ? 0.25f * glm::length(s.scene->bounds.size()) : 5.0f;
-            project.wind.push_back(wind);
-            s.view.place.selected = PlacedObject{PlacedKind::Wind, project.wind.size() - 1};
-            s.transient.draft.regrow = true;
-        }
+                .clicked())
+            addWindSource(s);
         if (row.button("add ball")
                 .onHoverText("Add a ball collider above the scene's centre and select it")
-                .clicked()) {
-            core::ColliderDesc ball;
-            ball.name = "ball " + std::to_string(project.colliders.size() + 1);
-            ball.position = newObjectPosition(s);
-            ball.radiusM = s.scene ? 0.05f * glm::length(s.scene->bounds.size()) : 0.5f;
-            project.colliders.push_back(ball);
-            s.view.place.selected = PlacedObject{PlacedKind::Collider, project.colliders.size() - 1};
-            s.transient.draft.regrow = true;
-        }
+                .clicked())
+            addBallCollider(s);
     });
     if (!s.view.place.selected) {
         ui.coloredLabel("click a marker to select it", ui.style().textWeak);
@@ -159,18 +144,55 @@ void placeSettings(ui::Ui& ui, EditorState& s) {
             s.transient.draft.regrow = true;
         if (row.button("delete")
                 .onHoverText("Delete the selected wind source or collider (Delete)")
-                .clicked()) {
-            if (isWind)
-                project.wind.erase(project.wind.begin() + std::ptrdiff_t(o.index));
-            else
-                project.colliders.erase(project.colliders.begin() + std::ptrdiff_t(o.index));
-            s.view.place.selected.reset();
-            s.transient.draft.regrow = true;
-        }
+                .clicked())
+            removeFromDraft(s, o);
     });
 }
 
 }  // namespace
+
+void addWindSource(EditorState& s) {
+    core::Project& project = s.transient.draft.project;
+    core::WindDesc wind;
+    wind.name = "wind " + std::to_string(project.wind.size() + 1);
+    wind.source.kind = core::WindKind::Point;
+    wind.source.position = newObjectPosition(s);
+    wind.source.radiusM = s.scene ? 0.25f * glm::length(s.scene->bounds.size()) : 5.0f;
+    project.wind.push_back(wind);
+    s.view.place.selected = PlacedObject{PlacedKind::Wind, project.wind.size() - 1};
+    s.transient.draft.regrow = true;
+}
+
+void addBallCollider(EditorState& s) {
+    core::Project& project = s.transient.draft.project;
+    core::ColliderDesc ball;
+    ball.name = "ball " + std::to_string(project.colliders.size() + 1);
+    ball.position = newObjectPosition(s);
+    ball.radiusM = s.scene ? 0.05f * glm::length(s.scene->bounds.size()) : 0.5f;
+    project.colliders.push_back(ball);
+    s.view.place.selected = PlacedObject{PlacedKind::Collider, project.colliders.size() - 1};
+    s.transient.draft.regrow = true;
+}
+
+void removeFromDraft(EditorState& s, PlacedObject o) {
+    core::Project& project = s.transient.draft.project;
+    const bool isWind = o.kind == PlacedKind::Wind;
+    if (o.index >= (isWind ? project.wind.size() : project.colliders.size()))
+        return;
+    if (isWind)
+        project.wind.erase(project.wind.begin() + std::ptrdiff_t(o.index));
+    else
+        project.colliders.erase(project.colliders.begin() + std::ptrdiff_t(o.index));
+    // The selection keeps its object: gone with it, or one place down after it.
+    std::optional<PlacedObject>& selected = s.view.place.selected;
+    if (selected && selected->kind == o.kind) {
+        if (selected->index == o.index)
+            selected.reset();
+        else if (selected->index > o.index)
+            --selected->index;
+    }
+    s.transient.draft.regrow = true;
+}
 
 void toolSection(ui::Ui& ui, EditorState& s) {
     ui.collapsingHeader(

@@ -451,6 +451,50 @@ TEST(EditorPanels, ATypedPositionMovesAKeyedCollider) {
     EXPECT_EQ(editor.state.doc.loaded.project.colliders.back().path, ball.path);
 }
 
+// The Wind and Colliders sections add and delete their objects where a user looks for them;
+// before, only the gizmo tool's settings had "add wind" and "add ball", and a wind source could
+// be deleted only once selected there (or by Delete in the viewport).
+TEST(EditorPanels, WindSourcesAndBallsAreAddedAndDeletedInTheirSections) {
+    const ScratchFolder folder("editor-wind-section");
+    EditorDriver d(folder.path());
+    d.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 4000.0f}};  // no scrolling
+    editor::resetHistory(d.state);
+    const core::Project& project = d.state.doc.loaded.project;
+    const std::size_t winds = project.wind.size();
+    const std::size_t colliders = project.colliders.size();
+
+    d.click("Wind (" + std::to_string(winds) + ")");
+    d.click("add wind");
+    editor::recordProjectEdit(d.state, false);
+    ASSERT_EQ(project.wind.size(), winds + 1);
+    EXPECT_EQ(project.wind.back().source.kind, core::WindKind::Point);
+    EXPECT_TRUE(d.state.rebuildPending);
+    ASSERT_TRUE(d.state.view.place.selected.has_value()) << "selected, for the gizmo";
+    EXPECT_EQ(d.state.view.place.selected->index, winds);
+
+    d.click("Colliders (" + std::to_string(colliders) + ")");
+    d.click("add ball");
+    editor::recordProjectEdit(d.state, false);
+    ASSERT_EQ(project.colliders.size(), colliders + 1);
+    EXPECT_EQ(d.state.view.place.selected->kind, editor::PlacedKind::Collider);
+
+    d.click("Colliders (" + std::to_string(colliders + 1) + ")");  // closed: one delete shows
+    d.click(project.wind.back().name);  // its header: open, with its delete button
+    d.click("delete");
+    editor::recordProjectEdit(d.state, false);
+    EXPECT_EQ(project.wind.size(), winds);
+    EXPECT_TRUE(d.state.view.place.selected.has_value()) << "the selected ball stays selected";
+    ASSERT_TRUE(editor::undo(d.state));
+    EXPECT_EQ(project.wind.size(), winds + 1) << "Ctrl+Z brings it back";
+
+    d.click(project.wind.back().name);  // closed again
+    d.click("Colliders (" + std::to_string(colliders + 1) + ")");
+    d.click("delete");  // the ball's, beside its name
+    editor::recordProjectEdit(d.state, false);
+    EXPECT_EQ(project.colliders.size(), colliders);
+    EXPECT_FALSE(d.state.view.place.selected.has_value()) << "the deleted ball was selected";
+}
+
 // Issue 26 item 5: the sun and the sky are edited in the side panel, undoably, and saved.
 TEST(EditorPanels, TheLightSectionEditsTheSunAndTheSky) {
     const ScratchFolder folder("editor-light");
