@@ -232,9 +232,12 @@ std::filesystem::path outputFolder(const EditorState& s) {
         candidates.push_back(working);
     if (const char* home = std::getenv("HOME"); home && *home == '/')
         candidates.push_back(home);
+    // Absolute: a project opened as `grass-editor meadow` has the relative folder "meadow", and
+    // the export window, which reads a relative folder as inside the project's, turned its
+    // default "meadow/export" into meadow/meadow/export.
     for (const fs::path& folder : candidates)
         if (fs::is_directory(folder, ec) && ::access(folder.c_str(), W_OK) == 0)
-            return folder;
+            return fs::absolute(folder, ec).lexically_normal();
     return candidates.empty() ? fs::path(".") : candidates.front();  // its error says why
 }
 

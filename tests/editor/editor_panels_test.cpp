@@ -786,6 +786,19 @@ TEST(EditorPanels, PicturesAndExportsGoWhereTheyCanBeWritten) {
     editor.click("Export…");
     EXPECT_EQ(fs::path(editor.state.transient.exportDir), fs::current_path() / "export")
         << "the export window's default folder follows the same rule";
+
+    // A project opened by a relative path (`grass-editor meadow`): the default export folder is
+    // its export folder, written out whole. Before, "meadow/export" was read as inside the
+    // project's folder: meadow/meadow/export.
+    editor.state.doc.loaded.folder = fs::relative(folder.path(), fs::current_path());
+    ASSERT_TRUE(editor.state.doc.loaded.folder.is_relative());
+    editor.state.transient.exportDir.clear();
+    editor.state.transient.exportDialog = false;
+    editor.click("File");
+    editor.click("Export…");
+    EXPECT_EQ(fs::path(editor.state.transient.exportDir), folder.path() / "export");
+    EXPECT_EQ(fs::path(editor::freshPicturePath(editor.state, "screenshot", ".png")),
+              folder.path() / "screenshot-2.png");
 }
 
 // Issue 26 item 4: every status message is logged; a click on the status line shows them whole.
