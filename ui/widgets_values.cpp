@@ -186,7 +186,13 @@ Response Ui::comboBox(std::string_view label, std::string_view selectedText, con
     const Id id = makeId(label);
     const Vec2 textSize = mCtx->fonts().textSize(selectedText, s.textSizePt);
     const Vec2 labelSize = mCtx->fonts().textSize(label, s.textSizePt);
-    const Vec2 box{s.comboWidth, std::max(s.interactHeight, textSize.y + 2.0f * s.buttonPadding.y)};
+    // As wide as its selected text and arrow where there is room (never under comboWidth): the
+    // export window's "glTF per layer (EXT_mesh_gpu_instancing)" showed as "glTF per laye".
+    const float arrow = 0.5f * s.iconSize;
+    const float wanted = textSize.x + 2.0f * s.buttonPadding.x + 2.0f * arrow + s.buttonPadding.x;
+    const float room = availableWidth() - (label.empty() ? 0.0f : s.itemSpacing.x + labelSize.x);
+    const Vec2 box{std::max(s.comboWidth, std::min(wanted, room)),
+                   std::max(s.interactHeight, textSize.y + 2.0f * s.buttonPadding.y)};
     const Rect total =
         allocate({box.x + (label.empty() ? 0.0f : s.itemSpacing.x + labelSize.x), box.y});
     const Rect rect = Rect::fromMinSize(total.min, box);
@@ -202,7 +208,6 @@ Response Ui::comboBox(std::string_view label, std::string_view selectedText, con
     const WidgetVisuals& v = visuals(r);
     mPainter.rect(rect, s.rounding, v.bgFill, v.bgStroke);
     // The selected text is clipped short of the arrow.
-    const float arrow = 0.5f * s.iconSize;
     mPainter.pushClip({rect.min, {rect.max.x - 2.0f * arrow - s.buttonPadding.x, rect.max.y}});
     mPainter.text({rect.min.x + s.buttonPadding.x, rect.centre().y}, selectedText, s.textSizePt,
                   v.text, {0.0f, 0.5f});

@@ -231,6 +231,32 @@ TEST(UiInteraction, ComboBoxOpensOnClickAndPickChangesValue) {
     EXPECT_EQ(technique, 2);
 }
 
+// A combo box is as wide as its selected text where the panel has room, never narrower than
+// the style's width and never wider than the room: the export window's long format names were
+// cut at 120 points.
+TEST(UiInteraction, AComboBoxShowsItsWholeTextWhereThereIsRoom) {
+    const std::vector<std::string> items{"short", "glTF per layer (EXT_mesh_gpu_instancing)"};
+    for (const float panelWidth : {600.0f, 200.0f}) {
+        UiHarness h({{10.0f, 20.0f}, {10.0f + panelWidth, 580.0f}});
+        int choice = 0;
+        Response r;
+        const auto build = [&](Ui& ui) { r = ui.comboBox("format", choice, items); };
+        h.frame(build);
+        const float narrow = r.rect().width();
+        EXPECT_FLOAT_EQ(narrow, h.ctx.style().comboWidth);
+        choice = 1;
+        const Output& out = h.frame(build);
+        const std::optional<Rect> text = findText(out, items[1]);
+        ASSERT_TRUE(text);
+        if (panelWidth > 500.0f) {
+            EXPECT_GT(r.rect().max.x, text->max.x) << "the whole name lies inside the box";
+        } else {
+            EXPECT_LE(r.rect().max.x, 10.0f + panelWidth) << "no wider than the panel";
+            EXPECT_GE(r.rect().width(), narrow);
+        }
+    }
+}
+
 TEST(UiInteraction, OnlyTheTopmostWidgetIsHoveredAndClicked) {
     UiHarness h;
     int choice = 0;
