@@ -120,10 +120,10 @@ bool Ui::popupBelow(Id popupId, Rect anchor, const UiFn& fn, bool closeOnClick) 
     // Blocks the widgets below from the pointer. The frame's size is known only after the
     // content, so this uses last frame's: it is registered first, under the items.
     if (!st.frame.empty()) {
-        mCtx->interact(st.frame, screen, Layer::Foreground, popupId.with("frame"), Sense::hover());
+        mCtx->interact(st.frame, screen, Layer::Popups, popupId.with("frame"), Sense::hover());
         mCtx->registerArea(st.frame);
     }
-    Painter painter = mCtx->painter(Layer::Foreground, screen);
+    Painter painter = mCtx->painter(Layer::Popups, screen);
     const std::size_t background = painter.addPlaceholder();
     const float pad = s.popupPadding;
     Vec2 origin{anchor.min.x + pad, anchor.max.y + pad + 2.0f};
@@ -132,7 +132,7 @@ bool Ui::popupBelow(Id popupId, Rect anchor, const UiFn& fn, bool closeOnClick) 
         origin.y = std::max(screen.min.y, anchor.min.y - 2.0f - st.frame.height()) + pad;
     }
     const float width = std::max(anchor.width(), st.frame.width()) - 2.0f * pad;
-    Ui child(*mCtx, {origin, {origin.x + std::max(width, 0.0f), UNBOUNDED}}, Layer::Foreground);
+    Ui child(*mCtx, {origin, {origin.x + std::max(width, 0.0f), UNBOUNDED}}, Layer::Popups);
     child.mPainter = painter;
     mCtx->pushId(popupId);
     fn(child);

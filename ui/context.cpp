@@ -185,6 +185,15 @@ void Context::clearFocus() {
     mGainedFocusId = Id{};
 }
 
+bool Context::pointerBesideOpenPopup() const {
+    if (mOpenPopup.value == 0)
+        return false;
+    return std::none_of(mHitsLastFrame.begin(), mHitsLastFrame.end(), [&](const Hit& hit) {
+        return hit.layer == Layer::Popups && mInput.hasPointer &&
+               hit.rect.contains(mInput.pointerPos);
+    });
+}
+
 void Context::registerArea(Rect rect) {
     if (mInput.hasPointer && rect.contains(mInput.pointerPos)) {
         mPointerOverArea = true;

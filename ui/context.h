@@ -114,8 +114,11 @@ struct Output {
 };
 
 // Paint layers, back to front. Hit testing follows the same order.
-enum class Layer { Background, Panels, Foreground, Tooltips };
-inline constexpr int LAYER_COUNT = 4;
+// Paint and hit order, back to front. Popups (combo lists, menus) lie above the windows, the
+// frontmost on Foreground included: a combo's list opened in a window was painted under the
+// window's later widgets.
+enum class Layer { Background, Panels, Foreground, Popups, Tooltips };
+inline constexpr int LAYER_COUNT = 5;
 
 // What a widget reacts to (Context::interact).
 struct Sense {
@@ -191,6 +194,9 @@ public:
     void openPopup(Id id) { mOpenPopup = id; }
     void closePopup() { mOpenPopup = Id{}; }
     bool isPopupOpen(Id id) const { return mOpenPopup == id && id.value != 0; }
+    // A popup is open and the pointer is not over it (last frame's layout): the widgets under
+    // the pointer show no tooltip, which would cover the list (a combo's own, under its box).
+    bool pointerBesideOpenPopup() const;
 
     std::vector<ClippedShape>& layerShapes(Layer layer) { return mLayers[std::size_t(layer)]; }
     Painter painter(Layer layer, Rect clip) { return Painter(layerShapes(layer), mFonts, clip); }

@@ -10,8 +10,10 @@ namespace grass::ui {
 
 Response& Response::onHoverText(std::string_view text) {
     // Hidden while anything is dragged, and while the widget is typed into: the tooltip would
-    // cover what is being edited (and a refused entry's reason under it).
-    if (mCtx == nullptr || !mHovered || mHasFocus || mCtx->activeId().value != 0) {
+    // cover what is being edited (and a refused entry's reason under it); and beside an open
+    // popup, whose list it would cover.
+    if (mCtx == nullptr || !mHovered || mHasFocus || mCtx->activeId().value != 0 ||
+        mCtx->pointerBesideOpenPopup()) {
         return *this;
     }
     const Style& s = mCtx->style();

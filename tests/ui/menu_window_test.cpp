@@ -195,6 +195,38 @@ TEST(UiWindow, TitleDragMovesItAndItStaysOnScreen) {
     EXPECT_EQ(h.ctx.duplicateIdCount(), 0);
 }
 
+// The index of the first text shape reading `text` in paint order (shapes.size() if none).
+std::size_t paintIndex(const Output& out, std::string_view text) {
+    for (std::size_t i = 0; i < out.shapes.size(); ++i)
+        if (const auto* t = std::get_if<TextShape>(&out.shapes[i].shape); t && t->text == text)
+            return i;
+    return out.shapes.size();
+}
+
+// A combo's list opened in a window lies over the window's later widgets, and the combo's
+// tooltip does not cover it. Before, the export window's Export and Cancel buttons were painted
+// over the list's second entry, and the format's tooltip over its first.
+TEST(UiWindow, AComboListInAWindowLiesAboveTheWindowsOtherWidgets) {
+    UiHarness h;
+    int choice = 0;
+    const std::vector<std::string> items{"glTF per layer", "raw GPU buffers", "one .glb"};
+    Response combo;
+    const auto build = [&](Ui& ui) {
+        window(ui.context(), "Export", nullptr, [&](Ui& w) {
+            combo = w.comboBox("format", choice, items).onHoverText("What to write");
+            w.button("Start");
+        });
+    };
+    h.frame(build);
+    h.clickAt(combo.rect().centre(), build);
+    const Output& open = h.frame(build);
+    ASSERT_LT(paintIndex(open, "raw GPU buffers"), open.shapes.size()) << "the list is open";
+    EXPECT_GT(paintIndex(open, "raw GPU buffers"), paintIndex(open, "Start"));
+    EXPECT_FALSE(findText(open, "What to write")) << "no tooltip over the open list";
+    h.clickAt(combo.rect().centre(), build);  // closed again: the tooltip is back
+    EXPECT_TRUE(findText(h.frame(build), "What to write"));
+}
+
 TEST(UiWindow, GripResizesAndCloseButtonCloses) {
     UiHarness h;
     bool open = true;
