@@ -62,9 +62,17 @@ std::string ExportJob::summary() const {
         instances += layer.instances;
     // The folder after the figures, whole: a path of any length.
     char figures[128];
-    std::snprintf(figures, sizeof figures, "exported %zu files (%.1f MB, %zu instances) to ",
-                  report.files.size(), double(report.totalBytes()) / 1e6, instances);
+    std::snprintf(figures, sizeof figures, "exported %zu file%s (%.1f MB, %zu instances) to ",
+                  report.files.size(), report.files.size() == 1 ? "" : "s",
+                  double(report.totalBytes()) / 1e6, instances);
     return figures + mOptions.outDir.string();
+}
+
+std::optional<std::string> ExportJob::takeEndNotice() {
+    if (!done() || mEndNoticeTaken)
+        return std::nullopt;
+    mEndNoticeTaken = true;
+    return summary();
 }
 
 }  // namespace grass::editor

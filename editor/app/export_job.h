@@ -35,6 +35,9 @@ public:
     std::string stage() const;
     // After done(): the report's one-line summary, or the error.
     std::string summary() const;
+    // The summary the first time it is asked for after done(), then nothing: the status line
+    // says the end once, even while the window that shows it stays open.
+    std::optional<std::string> takeEndNotice();
     bool succeeded() const;
 
 private:
@@ -47,6 +50,7 @@ private:
     mutable std::mutex mMutex;
     std::string mStage = "preparing the folder";  // until the first progress
     std::optional<Result<core::ExportReport>> mResult;
+    bool mEndNoticeTaken = false;  // the UI thread's alone
     std::thread mWorker;
 };
 

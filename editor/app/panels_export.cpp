@@ -39,10 +39,13 @@ void startExport(EditorState& s) {
 }
 
 void exportWindow(ui::Context& ctx, EditorState& s) {
-    if (s.exportJob && s.exportJob->done() && !s.transient.exportDialog) {
-        s.transient.message = s.exportJob->summary();
+    // The status line says the end as it comes, the window open or not (it said "exporting to
+    // …" until the window was closed).
+    if (s.exportJob)
+        if (std::optional<std::string> notice = s.exportJob->takeEndNotice())
+            s.transient.message = std::move(*notice);
+    if (s.exportJob && s.exportJob->done() && !s.transient.exportDialog)
         s.exportJob.reset();
-    }
     if (!s.transient.exportDialog)
         return;
     const ui::Rect screen = ctx.screenRect();

@@ -411,6 +411,17 @@ TEST(EditorPanels, AnExportWaitsForTheFieldAfterAnEdit) {
     editor::startExport(editor.state);
     ASSERT_TRUE(editor.state.exportJob);
     EXPECT_FALSE(editor.state.exportWhenGrown);
+    // Its end is said on the status line as it comes, the window still open (before, the line
+    // said "exporting to …" until the window was closed).
+    editor.state.transient.exportDialog = true;
+    editor.state.exportJob->wait();
+    editor.frame();
+    EXPECT_EQ(editor.state.transient.message.rfind("exported ", 0), 0u)
+        << editor.state.transient.message;
+    ASSERT_TRUE(editor.state.exportJob) << "the window still shows it";
+    editor.state.transient.message = "a later message";
+    editor.frame();
+    EXPECT_EQ(editor.state.transient.message, "a later message") << "said once";
     editor.state.exportJob.reset();
 }
 
