@@ -168,9 +168,10 @@ Response colorEdit(Ui& ui, std::string_view label, glm::vec3& rgb, bool linear) 
     const Style& s = ui.style();
     Context& ctx = ui.context();
     const Id id = ui.makeId(label);
-    const Vec2 labelSize = ctx.fonts().textSize(label, s.textSizePt);
+    const std::string_view shown = shownLabel(label);
+    const Vec2 labelSize = ctx.fonts().textSize(shown, s.textSizePt);
     const Rect total = ui.allocate(
-        {SWATCH_WIDTH + (label.empty() ? 0.0f : s.itemSpacing.x + labelSize.x), s.interactHeight});
+        {SWATCH_WIDTH + (shown.empty() ? 0.0f : s.itemSpacing.x + labelSize.x), s.interactHeight});
     const Rect swatch = Rect::fromMinSize(total.min, {SWATCH_WIDTH, s.interactHeight});
     Response r = ui.interact(swatch, id, Sense::clickOnly());
     const Id popupId = id.with("popup");
@@ -185,7 +186,7 @@ Response colorEdit(Ui& ui, std::string_view label, glm::vec3& rgb, bool linear) 
     Painter& p = ui.painter();
     p.rect(swatch, s.rounding, toColor32(rgb, linear),
            v.bgStroke.width > 0.0f ? v.bgStroke : Stroke{1.0f, s.separator});
-    p.text({swatch.max.x + s.itemSpacing.x, swatch.centre().y}, label, s.textSizePt, s.text,
+    p.text({swatch.max.x + s.itemSpacing.x, swatch.centre().y}, shown, s.textSizePt, s.text,
            {0.0f, 0.5f});
     bool changed = false;
     ui.popupBelow(

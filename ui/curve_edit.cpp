@@ -69,8 +69,8 @@ Response curveEditImpl(Ui& ui, std::string_view label, std::span<float> values,
     }
 
     Painter& p = ui.painter();
-    if (!label.empty()) {
-        p.text(total.min, label, s.textSizePt, s.text);
+    if (const std::string_view shown = shownLabel(label); !shown.empty()) {
+        p.text(total.min, shown, s.textSizePt, s.text);
     }
     p.rect(plot, s.rounding, s.extremeBg, {1.0f, s.separator});
     // Quarter grid lines, and the joint of the two pieces.

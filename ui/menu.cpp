@@ -45,7 +45,8 @@ bool menu(Ui& ui, std::string_view label, const UiFn& fn) {
     const Id id = ui.makeId(label);
     const Id popupId = id.with("menu");
     MenuBarState& bar = barState(ctx);
-    const Vec2 textSize = ctx.fonts().textSize(label, s.textSizePt);
+    const std::string_view shown = shownLabel(label);
+    const Vec2 textSize = ctx.fonts().textSize(shown, s.textSizePt);
     const Rect rect = ui.allocate(
         {textSize.x + 2.0f * s.buttonPadding.x, std::max(s.interactHeight, textSize.y)});
     const Response r = ui.interact(rect, id, Sense::clickOnly());
@@ -69,7 +70,7 @@ bool menu(Ui& ui, std::string_view label, const UiFn& fn) {
     } else if (r.hovered()) {
         p.rect(rect, s.rounding, s.hovered.bgFill);
     }
-    p.text(rect.centre(), label, s.textSizePt, open ? s.textStrong : ui.visuals(r).text,
+    p.text(rect.centre(), shown, s.textSizePt, open ? s.textStrong : ui.visuals(r).text,
            {0.5f, 0.5f});
     // Items close the menu themselves, so other widgets in a menu (check boxes) keep it open.
     return ui.popupBelow(popupId, rect, fn, false);

@@ -105,10 +105,11 @@ public:
     Response wrappedLabel(std::string_view text);
     Response wrappedColoredLabel(std::string_view text, Color32 color);
     Response coloredLabel(std::string_view text, Color32 color);
-    Response button(std::string_view text);
-    // "text##key" shows text; the whole label is the id (so "##a" and "##b" are two boxes).
+    // A widget's label "text##key" shows text; the whole label is the id (so "##a" and "##b" are
+    // two boxes). So do every widget's labels (ui/types.h, shownLabel).
+    Response button(std::string_view label);
     Response checkbox(bool& checked, std::string_view label);
-    Response radio(bool selected, std::string_view text);
+    Response radio(bool selected, std::string_view label);
     template <class T>
     Response radioValue(T& current, T value, std::string_view text) {
         Response r = radio(current == value, text);
@@ -119,7 +120,7 @@ public:
         return r;
     }
     // A full-width row that highlights when selected (list and combo box items).
-    Response selectable(bool selected, std::string_view text);
+    Response selectable(bool selected, std::string_view label);
     void separator();
     Response progressBar(float fraction, std::string_view text = {});
     Response image(TextureId texture, Vec2 size, Rect uv = {{0.0f, 0.0f}, {1.0f, 1.0f}});

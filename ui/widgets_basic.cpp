@@ -77,13 +77,14 @@ Response Ui::coloredLabel(std::string_view text, Color32 color) {
     return interact(rect, autoId(), Sense::hover());
 }
 
-Response Ui::button(std::string_view text) {
+Response Ui::button(std::string_view label) {
     const Style& s = style();
+    const std::string_view text = shownLabel(label);
     const Vec2 textSize = mCtx->fonts().textSize(text, s.textSizePt);
     Vec2 size = textSize + 2.0f * s.buttonPadding;
     size.y = std::max(size.y, s.interactHeight);
     const Rect rect = allocate(size);
-    const Response r = interact(rect, makeId(text), Sense::clickOnly());
+    const Response r = interact(rect, makeId(label), Sense::clickOnly());
     const WidgetVisuals& v = visuals(r);
     mPainter.rect(rect, s.rounding, v.bgFill, v.bgStroke);
     mPainter.text(rect.centre(), text, s.textSizePt, v.text, {0.5f, 0.5f});
@@ -118,12 +119,13 @@ Response Ui::checkbox(bool& checked, std::string_view label) {
     return r;
 }
 
-Response Ui::radio(bool selected, std::string_view text) {
+Response Ui::radio(bool selected, std::string_view label) {
     const Style& s = style();
+    const std::string_view text = shownLabel(label);
     const Vec2 textSize = mCtx->fonts().textSize(text, s.textSizePt);
     const Rect rect = allocate({s.iconSize + (text.empty() ? 0.0f : s.iconSpacing + textSize.x),
                                 std::max(s.iconSize, textSize.y)});
-    const Response r = interact(rect, makeId(text), Sense::clickOnly());
+    const Response r = interact(rect, makeId(label), Sense::clickOnly());
     const WidgetVisuals& v = visuals(r);
     const Vec2 centre{rect.min.x + 0.5f * s.iconSize, rect.centre().y};
     mPainter.circle(centre, 0.5f * s.iconSize, v.bgFill, v.bgStroke);
@@ -135,13 +137,14 @@ Response Ui::radio(bool selected, std::string_view text) {
     return r;
 }
 
-Response Ui::selectable(bool selected, std::string_view text) {
+Response Ui::selectable(bool selected, std::string_view label) {
     const Style& s = style();
+    const std::string_view text = shownLabel(label);
     const Vec2 textSize = mCtx->fonts().textSize(text, s.textSizePt);
     const Vec2 size{std::max(availableWidth(), textSize.x + 2.0f * s.buttonPadding.x),
                     std::max(textSize.y + 2.0f * s.buttonPadding.y, s.interactHeight)};
     const Rect rect = allocate(size);
-    const Response r = interact(rect, makeId(text), Sense::clickOnly());
+    const Response r = interact(rect, makeId(label), Sense::clickOnly());
     const WidgetVisuals& v = visuals(r);
     if (selected) {
         mPainter.rect(rect, s.rounding, s.selectionFill);

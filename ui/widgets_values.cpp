@@ -185,16 +185,17 @@ Response Ui::comboBox(std::string_view label, std::string_view selectedText, con
     const Style& s = style();
     const Id id = makeId(label);
     const Vec2 textSize = mCtx->fonts().textSize(selectedText, s.textSizePt);
-    const Vec2 labelSize = mCtx->fonts().textSize(label, s.textSizePt);
+    const std::string_view shown = shownLabel(label);
+    const Vec2 labelSize = mCtx->fonts().textSize(shown, s.textSizePt);
     // As wide as its selected text and arrow where there is room (never under comboWidth): the
     // export window's "glTF per layer (EXT_mesh_gpu_instancing)" showed as "glTF per laye".
     const float arrow = 0.5f * s.iconSize;
     const float wanted = textSize.x + 2.0f * s.buttonPadding.x + 2.0f * arrow + s.buttonPadding.x;
-    const float room = availableWidth() - (label.empty() ? 0.0f : s.itemSpacing.x + labelSize.x);
+    const float room = availableWidth() - (shown.empty() ? 0.0f : s.itemSpacing.x + labelSize.x);
     const Vec2 box{std::max(s.comboWidth, std::min(wanted, room)),
                    std::max(s.interactHeight, textSize.y + 2.0f * s.buttonPadding.y)};
     const Rect total =
-        allocate({box.x + (label.empty() ? 0.0f : s.itemSpacing.x + labelSize.x), box.y});
+        allocate({box.x + (shown.empty() ? 0.0f : s.itemSpacing.x + labelSize.x), box.y});
     const Rect rect = Rect::fromMinSize(total.min, box);
     const Response r = interact(rect, id, Sense::clickOnly());
     const Id popupId = id.with("popup");
@@ -217,7 +218,7 @@ Response Ui::comboBox(std::string_view label, std::string_view selectedText, con
                    {c.x + arrow, c.y - 0.4f * arrow},
                    {c.x, c.y + 0.5f * arrow}},
                   true, v.text, {});
-    mPainter.text({rect.max.x + s.itemSpacing.x, rect.centre().y}, label, s.textSizePt, s.text,
+    mPainter.text({rect.max.x + s.itemSpacing.x, rect.centre().y}, shown, s.textSizePt, s.text,
                   {0.0f, 0.5f});
     popupBelow(popupId, rect, fn);
     return r;

@@ -5,6 +5,9 @@
 #include <vector>
 
 #include "tests/ui/ui_harness.h"
+#include "ui/color_edit.h"
+#include "ui/curve_edit.h"
+#include "ui/menu.h"
 
 namespace grass::ui {
 namespace {
@@ -193,6 +196,36 @@ TEST(UiPainter, EveryShapeIntersectsItsClipRect) {
     }
     EXPECT_GE(checkMarks, 1);
     EXPECT_LT(checkMarks, 12);
+}
+
+// Every widget shows its label without the "##key" that makes its id unique. Before, combo
+// boxes, buttons, radios, list rows, colour swatches, curves and menus painted it whole: the
+// editor's Surface section read "shape##surface".
+TEST(UiLayout, NoWidgetShowsTheKeyOfItsLabel) {
+    UiHarness h;
+    int choice = 0;
+    bool flag = false;
+    glm::vec3 colour(0.5f);
+    std::array<float, 3> curve{0.2f, 0.5f, 0.8f};
+    const std::vector<std::string> items{"a", "b"};
+    const Output& out = h.frame([&](Ui& ui) {
+        ui.comboBox("combo##k1", choice, items);
+        ui.button("button##k2");
+        ui.checkbox(flag, "check##k3");
+        ui.radio(true, "radio##k4");
+        ui.selectable(false, "row##k5");
+        colorEdit(ui, "colour##k6", colour);
+        bezierCurveEdit(ui, "curve##k7", curve, {100.0f, 40.0f});
+        menu(ui, "menu##k8", [](Ui&) {});
+    });
+    for (const char* shown :
+         {"combo", "button", "check", "radio", "row", "colour", "curve", "menu"})
+        EXPECT_TRUE(findText(out, shown)) << shown;
+    for (const ClippedShape& shape : out.shapes) {
+        if (const auto* t = std::get_if<TextShape>(&shape.shape)) {
+            EXPECT_EQ(t->text.find("##"), std::string::npos) << t->text;
+        }
+    }
 }
 
 }  // namespace
