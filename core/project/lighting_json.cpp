@@ -25,7 +25,8 @@ constexpr std::array SUN{
         {.key = "direction",
          .help = "the way the light travels (so y < 0 shines down); not `[0, 0, 0]`; normalised "
                  "on use"}),
-    field<&SunDesc::color>({.key = "color", .kind = Kind::Colour, .rule = json::UNIT_INTERVAL}),
+    field<&SunDesc::color>(
+        {.key = "color", .kind = Kind::Colour, .rule = json::UNIT_INTERVAL, .label = "colour"}),
     field<&SunDesc::intensity>(
         {.key = "intensity", .rule = json::NON_NEGATIVE, .help = "multiplies `color`"}),
     field<&SunDesc::shadows>(

@@ -70,18 +70,22 @@ constexpr std::array RENDER{
                                            .intMax = 32,
                                            .help = "segments of an instanced strip"}),
     settings::custom<RenderSettings>(
-        {.key = "msaa", .typeText = "integer", .allowedText = "0, 1, 2, 4 or 8 samples"},
-        readMsaa, msaaJson),
+        {.key = "msaa", .typeText = "integer", .allowedText = "0, 1, 2, 4 or 8 samples"}, readMsaa,
+        msaaJson),
     settings::custom<RenderSettings>(
         {.key = "patch_size",
          .typeText = "integer",
          .allowedText = "blades per patch: a positive multiple of 32 (the cull work-group) up to "
                         "65536"},
         readPatchSize, patchSizeJson),
-    field<&RenderSettings::skyColor>(
-        {.key = "sky_color", .kind = Kind::Colour, .rule = json::UNIT_INTERVAL}),
-    field<&RenderSettings::groundColor>(
-        {.key = "ground_color", .kind = Kind::Colour, .rule = json::UNIT_INTERVAL}),
+    field<&RenderSettings::skyColor>({.key = "sky_color",
+                                      .kind = Kind::Colour,
+                                      .rule = json::UNIT_INTERVAL,
+                                      .label = "sky colour"}),
+    field<&RenderSettings::groundColor>({.key = "ground_color",
+                                         .kind = Kind::Colour,
+                                         .rule = json::UNIT_INTERVAL,
+                                         .label = "ground colour"}),
     field<&RenderSettings::technique>(
         {.key = "technique",
          .names = json::TECHNIQUE_NAMES,

@@ -520,7 +520,7 @@ TEST(EditorPanels, TheLightSectionEditsTheSunAndTheSky) {
         if (const auto* t = std::get_if<ui::TextShape>(&shape.shape)) {
             if (t->text == "intensity")
                 label = t->pos;
-            sky = sky || t->text == "sky color";
+            sky = sky || t->text == "sky colour";
         }
     ASSERT_TRUE(label.has_value()) << "the Light section shows the sun's intensity";
     EXPECT_TRUE(sky) << "and the sky's colour";
