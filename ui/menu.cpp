@@ -76,7 +76,7 @@ bool menu(Ui& ui, std::string_view label, const UiFn& fn) {
     return ui.popupBelow(popupId, rect, fn, false);
 }
 
-bool menuItem(Ui& ui, std::string_view label, std::string_view shortcutText) {
+bool menuItem(Ui& ui, std::string_view label, std::string_view shortcutText, bool enabled) {
     Context& ctx = ui.context();
     const Style& s = ui.style();
     const FontAtlas& fonts = ctx.fonts();
@@ -90,17 +90,18 @@ bool menuItem(Ui& ui, std::string_view label, std::string_view shortcutText) {
     const Rect rect = ui.allocate({std::max(ui.availableWidth(), minWidth), s.interactHeight});
     const Response r = ui.interact(rect, ui.makeId(label), Sense::clickOnly());
     Painter& p = ui.painter();
-    if (r.hovered()) {
+    const bool hot = enabled && r.hovered();
+    if (hot) {
         p.rect(rect, s.rounding, s.selectionFill);
     }
-    const Color32 text = r.hovered() ? s.textStrong : s.text;
+    const Color32 text = !enabled ? s.textWeak : hot ? s.textStrong : s.text;
     p.text({rect.min.x + s.buttonPadding.x, rect.centre().y}, shown, s.textSizePt, text,
            {0.0f, 0.5f});
     if (!shortcutText.empty()) {
         p.text({rect.max.x - s.buttonPadding.x, rect.centre().y}, shortcutText, s.textSizePt,
                s.textWeak, {1.0f, 0.5f});
     }
-    if (r.clicked()) {
+    if (enabled && r.clicked()) {
         ctx.closePopup();
         return true;
     }

@@ -19,8 +19,10 @@ Rect menuBar(Ui& ui, const UiFn& fn);
 bool menu(Ui& ui, std::string_view label, const UiFn& fn);
 
 // A full-width row: label left, `shortcutText` (shown, not handled) right. True once, on the
-// frame it is clicked; the click also closes the menu.
+// frame it is clicked; the click also closes the menu. A disabled row is greyed, and a click on
+// it does nothing (Edit › Undo with nothing to undo).
 // "Text##key" shows Text (the whole label is the id).
-bool menuItem(Ui& ui, std::string_view label, std::string_view shortcutText = {});
+bool menuItem(Ui& ui, std::string_view label, std::string_view shortcutText = {},
+              bool enabled = true);
 
 }  // namespace grass::ui

@@ -86,14 +86,14 @@ void fileMenu(ui::Ui& bar, EditorState& s) {
 
 void editMenu(ui::Ui& bar, EditorState& s) {
     ui::menu(bar, "Edit", [&](ui::Ui& m) {
+        // Greyed with nothing to undo or redo; the shortcuts in the column the File menu uses.
         const core::Edit* next = s.doc.history.nextUndo();
-        if (ui::menuItem(m, next ? "Undo " + next->label + "   Ctrl+Z" : std::string("Undo")) &&
-            next)
+        if (ui::menuItem(m, next ? "Undo " + next->label : std::string("Undo"), "Ctrl+Z",
+                         next != nullptr))
             undo(s);
         const core::Edit* again = s.doc.history.nextRedo();
-        if (ui::menuItem(
-                m, again ? "Redo " + again->label + "   Ctrl+Shift+Z" : std::string("Redo")) &&
-            again)
+        if (ui::menuItem(m, again ? "Redo " + again->label : std::string("Redo"), "Ctrl+Shift+Z",
+                         again != nullptr))
             redo(s);
     });
 }

@@ -15,6 +15,7 @@ struct MenuFixture {
     UiHarness h;
     int newClicks = 0;
     int undoClicks = 0;
+    int redoClicks = 0;
     bool fileOpen = false;
     bool editOpen = false;
 
@@ -24,7 +25,10 @@ struct MenuFixture {
                 newClicks += menuItem(m, "New", "Ctrl+N") ? 1 : 0;
                 menuItem(m, "Quit", "Ctrl+Q");
             });
-            editOpen = menu(bar, "Edit", [&](Ui& m) { undoClicks += menuItem(m, "Undo") ? 1 : 0; });
+            editOpen = menu(bar, "Edit", [&](Ui& m) {
+                undoClicks += menuItem(m, "Undo") ? 1 : 0;
+                redoClicks += menuItem(m, "Redo", "Ctrl+Shift+Z", /*enabled=*/false) ? 1 : 0;
+            });
         });
     }
     void frame() {
@@ -79,6 +83,28 @@ TEST(UiMenu, OpensSwitchesOnHoverAndCloses) {
     f.clickAt({700.0f, 500.0f});
     EXPECT_FALSE(f.fileOpen) << "a press outside closes";
     EXPECT_EQ(f.h.ctx.duplicateIdCount(), 0);
+}
+
+// A disabled item (Redo with nothing to redo) is greyed and a click on it does nothing: the
+// menu stays open. Before, Edit › Undo and Redo looked and acted the same with nothing to do.
+TEST(UiMenu, ADisabledItemIsGreyedAndItsClickDoesNothing) {
+    MenuFixture f;
+    f.frame();
+    f.clickAt(f.centreOf("Edit"));
+    f.frame();
+    const Output& open = f.h.ctx.output();
+    const auto colourOf = [&](std::string_view text) {
+        for (const ClippedShape& shape : open.shapes)
+            if (const auto* t = std::get_if<TextShape>(&shape.shape); t && t->text == text)
+                return t->color;
+        return Color32{};
+    };
+    EXPECT_EQ(colourOf("Redo"), f.h.ctx.style().textWeak);
+    EXPECT_NE(colourOf("Undo"), f.h.ctx.style().textWeak);
+    f.clickAt(f.centreOf("Redo"));
+    f.frame();
+    EXPECT_EQ(f.redoClicks, 0);
+    EXPECT_TRUE(f.editOpen) << "the menu stays open";
 }
 
 TEST(UiMenu, ItemClickReportsTrueOnceAndCloses) {
