@@ -190,11 +190,21 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
     ui.horizontal([&](ui::Ui& row) {
         // The message first ("saved", "imported", a failed save in warning orange, so that it
         // reads as something to act on): after the figures it lay past the window's edge at
-        // 1280 px whenever the picture was reduced, which is always while playing. Cut to half
-        // the bar so the figures stay; a click shows every message whole.
+        // 1280 px whenever the picture was reduced, which is always while playing. Cut to the
+        // room the figures leave (at least a fifth of the bar), so they stay whole; a click
+        // shows every message whole. (Cut to half the bar, a new project's message pushed the
+        // grass time off a 1280 px window.)
+        const std::string movingNote = s.transient.status.reduced.empty()
+                                           ? ""
+                                           : "moving: " + s.transient.status.reduced + "   ";
+        const float figuresWidth = ctx.fonts().textSize(movingNote + text, style.textSizePt).x;
         if (!s.transient.message.empty()) {
-            const std::string shownText = ui::elideText(ctx.fonts(), style.textSizePt,
-                                                        s.transient.message, 0.5f * rect.width());
+            // Less the bar's inset, the message's trailing spaces and the row's spacing.
+            const float margin =
+                8.0f + ctx.fonts().textSize("   ", style.textSizePt).x + 3.0f * style.itemSpacing.x;
+            const float room = std::max(0.2f * rect.width(), rect.width() - margin - figuresWidth);
+            const std::string shownText =
+                ui::elideText(ctx.fonts(), style.textSizePt, s.transient.message, room);
             const ui::Response shown = row.coloredLabel(shownText + "   ",
                                                         s.transient.messageIsSaveError
                                                             ? ui::Color32::rgb(255, 150, 60)
@@ -205,9 +215,8 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
                 s.transient.messagesWindow = true;
         }
         // The viewport draws less while the user interacts (adaptive quality): say what.
-        if (!s.transient.status.reduced.empty())
-            row.coloredLabel("moving: " + s.transient.status.reduced + "   ",
-                             ui::Color32::rgb(120, 190, 255));
+        if (!movingNote.empty())
+            row.coloredLabel(movingNote, ui::Color32::rgb(120, 190, 255));
         row.label(text);
         // The machine cannot step the physics as fast as time passes: say so, in orange.
         if (const double dropped = s.transient.status.physicsDroppedS; dropped > 0.0) {
