@@ -191,18 +191,21 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
         // The message first ("saved", "imported", a failed save in warning orange, so that it
         // reads as something to act on): after the figures it lay past the window's edge at
         // 1280 px whenever the picture was reduced, which is always while playing. Cut to the
-        // room the figures leave (at least a fifth of the bar), so they stay whole; a click
-        // shows every message whole. (Cut to half the bar, a new project's message pushed the
-        // grass time off a 1280 px window.)
+        // room the figures leave, so they stay whole (cut to half the bar, a new project's
+        // message pushed the grass time off a 1280 px window); a failed save keeps half the bar
+        // whatever the figures; a message with no room left is not shown (Help › Messages has
+        // it). A click shows every message whole.
         const std::string movingNote = s.transient.status.reduced.empty()
                                            ? ""
                                            : "moving: " + s.transient.status.reduced + "   ";
         const float figuresWidth = ctx.fonts().textSize(movingNote + text, style.textSizePt).x;
-        if (!s.transient.message.empty()) {
-            // Less the bar's inset, the message's trailing spaces and the row's spacing.
-            const float margin =
-                8.0f + ctx.fonts().textSize("   ", style.textSizePt).x + 3.0f * style.itemSpacing.x;
-            const float room = std::max(0.2f * rect.width(), rect.width() - margin - figuresWidth);
+        // Less the bar's inset, the message's trailing spaces and the row's spacing.
+        const float margin =
+            8.0f + ctx.fonts().textSize("   ", style.textSizePt).x + 3.0f * style.itemSpacing.x;
+        const float room = std::max(s.transient.messageIsSaveError ? 0.5f * rect.width() : 0.0f,
+                                    rect.width() - margin - figuresWidth);
+        constexpr float LEAST_MESSAGE_WIDTH = 80.0f;
+        if (!s.transient.message.empty() && room >= LEAST_MESSAGE_WIDTH) {
             const std::string shownText =
                 ui::elideText(ctx.fonts(), style.textSizePt, s.transient.message, room);
             const ui::Response shown = row.coloredLabel(shownText + "   ",
@@ -263,7 +266,7 @@ std::string freshPicturePath(const EditorState& s, const std::string& stem, cons
 
 std::string frameRateText(const FrameStatus& status) {
     if (status.atRest)
-        return status.playing ? "playing: nothing moves" : "at rest";
+        return status.playing ? "nothing moves" : "at rest";
     char text[32];
     std::snprintf(text, sizeof text, "%.0f fps", status.fps);
     return text;

@@ -127,7 +127,7 @@ void snowSection(ui::Ui& ui, EditorState& state);
 // with the picture.
 render::RenderOptions viewRenderOptions(const EditorState& state);
 // The status bar's frame rate: "12 fps", or "at rest" when no frame since the last update drew
-// the viewport's picture ("playing: nothing moves" while the timeline plays a still field).
+// the viewport's picture ("nothing moves" while the timeline plays a still field).
 std::string frameRateText(const FrameStatus& status);
 
 }  // namespace grass::editor
