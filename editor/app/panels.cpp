@@ -198,10 +198,19 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
         const std::string movingNote = s.transient.status.reduced.empty()
                                            ? ""
                                            : "moving: " + s.transient.status.reduced + "   ";
-        const float figuresWidth = ctx.fonts().textSize(movingNote + text, style.textSizePt).x;
-        // Less the bar's inset, the message's trailing spaces and the row's spacing.
-        const float margin =
-            8.0f + ctx.fonts().textSize("   ", style.textSizePt).x + 3.0f * style.itemSpacing.x;
+        // The machine cannot step the physics as fast as time passes: said in orange, before the
+        // figures (after them it was the first thing a narrow window cut).
+        char behindNote[96] = "";
+        if (const double dropped = s.transient.status.physicsDroppedS; dropped > 0.0)
+            std::snprintf(behindNote, sizeof behindNote, "physics behind: skipping %.1f s per s   ",
+                          dropped);
+        const float figuresWidth =
+            ctx.fonts().textSize(movingNote + behindNote + text, style.textSizePt).x;
+        // Less the bar's inset, the message's trailing spaces and the row's spacing after each
+        // item.
+        const int items = 2 + (movingNote.empty() ? 0 : 1) + (behindNote[0] != '\0' ? 1 : 0);
+        const float margin = 8.0f + ctx.fonts().textSize("   ", style.textSizePt).x +
+                             float(items) * style.itemSpacing.x;
         const float room = std::max(s.transient.messageIsSaveError ? 0.5f * rect.width() : 0.0f,
                                     rect.width() - margin - figuresWidth);
         constexpr float LEAST_MESSAGE_WIDTH = 80.0f;
@@ -220,14 +229,9 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
         // The viewport draws less while the user interacts (adaptive quality): say what.
         if (!movingNote.empty())
             row.coloredLabel(movingNote, ui::Color32::rgb(120, 190, 255));
+        if (behindNote[0] != '\0')
+            row.coloredLabel(behindNote, ui::Color32::rgb(255, 150, 60));
         row.label(text);
-        // The machine cannot step the physics as fast as time passes: say so, in orange.
-        if (const double dropped = s.transient.status.physicsDroppedS; dropped > 0.0) {
-            char behind[96];
-            std::snprintf(behind, sizeof behind, "   physics behind: skipping %.1f s per s",
-                          dropped);
-            row.coloredLabel(behind, ui::Color32::rgb(255, 150, 60));
-        }
     });
 }
 

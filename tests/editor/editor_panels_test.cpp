@@ -844,6 +844,24 @@ TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
     EXPECT_EQ(status->text.find("the file is not glTF"), std::string::npos) << status->text;
     EXPECT_LE(figures->pos.x + testFonts().textSize(figures->text, figures->sizePt).x,
               editor.input.screenRect.max.x);
+    // Physics that cannot keep up is said before the figures, in the room they leave.
+    editor.state.transient.status.physicsDroppedS = 0.5;
+    std::optional<ui::TextShape> behind;
+    figures.reset();
+    for (const ui::ClippedShape& shape : editor.frame().shapes) {
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape)) {
+            if (t->text.starts_with("physics behind: skipping 0.5 s per s"))
+                behind = *t;
+            if (t->text.find(" blades \u00b7 ") != std::string::npos)
+                figures = *t;
+        }
+    }
+    ASSERT_TRUE(behind && figures);
+    EXPECT_LT(behind->pos.x, figures->pos.x);
+    EXPECT_LE(behind->pos.x + testFonts().textSize(behind->text, behind->sizePt).x,
+              editor.input.screenRect.max.x)
+        << "the warning shows whole, whatever a narrow window cuts";
+    editor.state.transient.status.physicsDroppedS = 0.0;
     // A window too narrow for both keeps the figures; the message waits in Help › Messages.
     editor.input.screenRect = {{0.0f, 0.0f}, {900.0f, 720.0f}};
     bool messageShown = false;
