@@ -829,15 +829,20 @@ TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
     // window's edge at 1280 px while the picture was reduced), cut to the room the figures
     // leave: they end inside the window (cut to half the line, a new project's message pushed
     // the grass time off it).
-    std::optional<ui::TextShape> status, figures;
-    for (const ui::ClippedShape& shape : editor.frame().shapes) {
-        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape)) {
-            if (t->text.starts_with("cannot import /a/very"))
-                status = *t;
-            if (t->text.find(" blades \u00b7 ") != std::string::npos)
-                figures = *t;
-        }
-    }
+    // The first text of a frame starting with `prefix` (the figures: "N blades · …").
+    const auto textStarting = [](const ui::Output& out, std::string_view prefix) {
+        std::optional<ui::TextShape> found;
+        for (const ui::ClippedShape& shape : out.shapes)
+            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape);
+                t && !found && t->text.starts_with(prefix))
+                found = *t;
+        return found;
+    };
+    const std::string figuresStart =
+        std::to_string(editor.state.transient.status.blades) + " blades";
+    const ui::Output& withMessage = editor.frame();
+    std::optional<ui::TextShape> status = textStarting(withMessage, "cannot import /a/very");
+    std::optional<ui::TextShape> figures = textStarting(withMessage, figuresStart);
     ASSERT_TRUE(status && figures);
     EXPECT_LT(status->pos.x, figures->pos.x);
     EXPECT_NE(status->text.find("\u2026"), std::string::npos) << status->text;
@@ -846,16 +851,10 @@ TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
               editor.input.screenRect.max.x);
     // Physics that cannot keep up is said before the figures, in the room they leave.
     editor.state.transient.status.physicsDroppedS = 0.5;
-    std::optional<ui::TextShape> behind;
-    figures.reset();
-    for (const ui::ClippedShape& shape : editor.frame().shapes) {
-        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape)) {
-            if (t->text.starts_with("physics behind: skipping 0.5 s per s"))
-                behind = *t;
-            if (t->text.find(" blades \u00b7 ") != std::string::npos)
-                figures = *t;
-        }
-    }
+    const ui::Output& behindFrame = editor.frame();
+    const std::optional<ui::TextShape> behind =
+        textStarting(behindFrame, "physics behind: skipping 0.5 s per s");
+    figures = textStarting(behindFrame, figuresStart);
     ASSERT_TRUE(behind && figures);
     EXPECT_LT(behind->pos.x, figures->pos.x);
     EXPECT_LE(behind->pos.x + testFonts().textSize(behind->text, behind->sizePt).x,
@@ -864,11 +863,7 @@ TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
     editor.state.transient.status.physicsDroppedS = 0.0;
     // A window too narrow for both keeps the figures; the message waits in Help › Messages.
     editor.input.screenRect = {{0.0f, 0.0f}, {900.0f, 720.0f}};
-    bool messageShown = false;
-    for (const ui::ClippedShape& shape : editor.frame().shapes)
-        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape))
-            messageShown = messageShown || t->text.starts_with("cannot import");
-    EXPECT_FALSE(messageShown);
+    EXPECT_FALSE(textStarting(editor.frame(), "cannot import"));
     editor.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 720.0f}};
     editor.clickStartingWith("cannot import /a/very");
     ASSERT_TRUE(editor.state.transient.messagesWindow);
