@@ -652,18 +652,16 @@ void Editor::advanceTime() {
         // is the one cost the rungs do not lower (4 compute-shader steps of the meadow: ~110 ms
         // on llvmpipe). On the CPU 4 steps take ~11 ms there, so it keeps up with the clock.
         const auto physicsStart = std::chrono::steady_clock::now();
-        const std::size_t stepsBefore = physics.steps;
-        const double droppedBefore = physics.droppedS;
+        const std::size_t computedBefore = physics.computedSteps;
         mSkippedS = physics.advanceTo(state.view.timeline.timeS(),
                                       state.view.quality.level() > 0 && !physics.cpu
                                           ? 1
                                           : LivePhysics::MAX_STEPS_PER_FRAME);
         state.transient.status.physicsDevice = physics.deviceLabel();
         // The GPU's steps are queued, not run, here: only the CPU's time means something, and
-        // only in a frame that stepped (paused, the label says where the physics runs alone).
-        const auto skippedSteps = static_cast<std::size_t>(
-            std::lround((physics.droppedS - droppedBefore) / physics.scene.params.dtS));
-        const bool stepped = physics.steps - stepsBefore > skippedSteps;
+        // only in a frame that computed a step (paused or resting, the label says where the
+        // physics runs alone).
+        const bool stepped = physics.computedSteps > computedBefore;
         state.transient.status.physicsMs =
             physics.cpu && stepped ? std::chrono::duration<double, std::milli>(
                                          std::chrono::steady_clock::now() - physicsStart)

@@ -1,5 +1,6 @@
 #include "app/live_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -37,8 +38,44 @@ bool tipsMoved(std::span<const core::Blade> blades, std::vector<glm::vec3>& show
     return moved;
 }
 
+namespace {
+
+// Nothing in the physics scene changes with time: the step is the same function of the blades
+// at every time, so blades it leaves where they were stay there.
+bool timeIndependent(const core::ScenePhysics& physics) {
+    const bool anyPath = std::any_of(physics.colliders.begin(), physics.colliders.end(),
+                                     [](const core::SphereCollider& c) { return !c.path.empty(); });
+    const bool anyLoad =
+        std::any_of(physics.snowLoadPerMetre.begin(), physics.snowLoadPerMetre.end(),
+                    [](const std::vector<float>& load) { return !load.empty(); });
+    return physics.wind.empty() && !anyPath && !anyLoad;
+}
+
+bool anyCrushed(const core::FieldSimulation& cpu) {
+    for (std::size_t layer = 0; layer < cpu.layerCount(); ++layer) {
+        const std::span<const float> eta = cpu.eta(layer);
+        if (std::any_of(eta.begin(), eta.end(), [](float e) { return e != 0.0f; }))
+            return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+void LivePhysics::wake() {
+    resting = false;
+    stillSteps = 0;
+}
+
 double LivePhysics::advanceTo(double targetS, int maxSteps) {
     const double dtS = scene.params.dtS;
+    if (resting) {
+        // The clock goes on; the blades, where the last step left them, would stay there.
+        const auto due = static_cast<std::size_t>(std::floor(targetS / dtS + 1e-6));
+        steps = std::max(steps, due);
+        moved = false;
+        return 0.0;
+    }
     int stepped = 0;
     for (; stepped < maxSteps && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++stepped) {
         if (cpu)
@@ -46,6 +83,7 @@ double LivePhysics::advanceTo(double targetS, int maxSteps) {
         else
             gpu->step(scene, static_cast<float>(timeS()));
         ++steps;
+        ++computedSteps;
     }
     // The CPU's blades go up once, after the frame's steps, and only the layers they moved.
     if (cpu && stepped > 0) {
@@ -57,6 +95,8 @@ double LivePhysics::advanceTo(double targetS, int maxSteps) {
                 if (renderer != nullptr)
                     renderer->uploadBlades(layer, cpu->blades(layer));
             }
+        stillSteps = moved ? 0 : stillSteps + static_cast<std::size_t>(stepped);
+        resting = timeIndependent && stillSteps >= REST_AFTER_STEPS && !anyCrushed(*cpu);
     }
     const double behindS = targetS - timeS();
     if (behindS < dtS)
@@ -73,6 +113,7 @@ void LivePhysics::regrown(std::size_t layer, const core::Scene& field,
     if (cpu) {
         cpu->resetPatches(layer, field, patches);
         shownTips.clear();  // the renderer has the patches at rest: compare anew
+        wake();
     } else
         gpu->uploadRegrown(layer, field, patches);
 }
@@ -142,6 +183,7 @@ Result<Live> bringUpLive(GrownField grown, const std::function<Result<void>(core
         LivePhysics physics;
         physics.scene = std::move(*grown.physics);
         physics.renderer = live.renderer.get();
+        physics.timeIndependent = timeIndependent(physics.scene);
         if (physicsOnCpu(device, physics.scene)) {
             physics.cpu.emplace(*live.scene);
         } else {
@@ -168,6 +210,7 @@ Result<void> resetPhysics(Live& live) {
     if (live.physics->cpu) {
         live.physics->cpu->reset(*live.scene);
         live.physics->shownTips.clear();
+        live.physics->wake();
         return {};
     }
     auto gpu = render::ScenePhysicsGpu::createOn(*live.scene, live.renderer->bladeBuffers());

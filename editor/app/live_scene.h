@@ -55,6 +55,18 @@ struct LivePhysics {
     // Always true on the GPU, whose blades are stepped in place and never read back.
     bool moved = true;
     std::vector<std::vector<glm::vec3>> shownTips;  // per layer (CPU): the tips uploaded
+    // A field on the CPU that nothing moves any more rests: its steps are not computed (the
+    // clock still counts them) until a brush, an undo or a reset moves its blades again. It rests
+    // once nothing in the scene depends on time (no wind, no collider on a path, no snow load:
+    // timeIndependent), no blade is crushed (η = 0 everywhere) and no tip moved (tipsMoved) for
+    // REST_AFTER_STEPS steps in a row. A new project from a mesh has no wind: played, its blades
+    // settle under gravity in well under a second, and stepping them on (82,913 blades of an
+    // 8.4 M-triangle mesh: ~0.46 s of CPU a second) changed nothing on screen.
+    static constexpr std::size_t REST_AFTER_STEPS = 60;
+    bool timeIndependent = false;  // set when built (LivePhysics::forScene)
+    bool resting = false;
+    std::size_t stillSteps = 0;     // steps in a row that moved no tip
+    std::size_t computedSteps = 0;  // steps actually computed (tests; the status bar's cost)
 
     double timeS() const { return static_cast<double>(steps) * scene.params.dtS; }
     // "cpu" or "gpu", for the status bar.
@@ -65,6 +77,8 @@ struct LivePhysics {
     // After a brush or an undo re-grew patches of `layer`: they restart at rest.
     void regrown(std::size_t layer, const core::Scene& scene,
                  const std::vector<std::uint32_t>& patches);
+    // Its blades were moved from outside (a re-grow, a reset): it steps again.
+    void wake();
 };
 
 // What a project becomes on the GPU; rebuilt whole when the project is re-grown or replaced.

@@ -72,6 +72,49 @@ TEST_F(LivePhysicsTest, CpuAndGpuMoveTheRenderersBladesAlike) {
     EXPECT_EQ(std::memcmp(copy.data(), rest.data(), patch * sizeof(core::Blade)), 0);
 }
 
+// A field that nothing moves rests on the CPU: tests/data/projects/tiny has no wind and no
+// collider, its blades settle under gravity, and after REST_AFTER_STEPS still steps the clock
+// goes on without computing a step, the renderer's blades as they were. A re-grow wakes it. The
+// windy project, whose wind depends on time, never rests.
+TEST_F(LivePhysicsTest, AFieldThatNothingMovesRestsUntilItsBladesAreMoved) {
+    auto tiny = core::loadProject(sourceDir() / "tests/data/projects/tiny");
+    ASSERT_TRUE(tiny.ok()) << tiny.error().str();
+    editor::Live live = liveOn(*tiny, editor::PhysicsDevice::Cpu);
+    ASSERT_TRUE(live.physics && live.physics->cpu);
+    editor::LivePhysics& physics = *live.physics;
+    EXPECT_TRUE(physics.timeIndependent);
+    double t = 0.0;
+    for (; t < 10.0 && !physics.resting; t += 0.1)
+        EXPECT_EQ(physics.advanceTo(t, 1000), 0.0);
+    ASSERT_TRUE(physics.resting) << "still stepping after " << t << " s";
+    std::printf("[ live physics ] the tiny field rests after %.1f s (%zu steps)\n", t,
+                physics.computedSteps);
+    const std::size_t computed = physics.computedSteps;
+    const std::vector<core::Blade> shown = rendererBlades(live, 0);
+    for (double until = t + 2.0; t < until; t += 0.1)
+        EXPECT_EQ(physics.advanceTo(t, 1000), 0.0);
+    EXPECT_EQ(physics.computedSteps, computed) << "a resting field computes no step";
+    EXPECT_NEAR(physics.timeS(), t - 0.1, physics.scene.params.dtS) << "its clock goes on";
+    EXPECT_FALSE(physics.moved);
+    const std::vector<core::Blade> after = rendererBlades(live, 0);
+    EXPECT_EQ(std::memcmp(shown.data(), after.data(), shown.size() * sizeof(core::Blade)), 0);
+    // Resting changes nothing a step would have: one more computed step moves no tip.
+    physics.wake();
+    physics.advanceTo(t + 0.05, 1000);
+    EXPECT_GT(physics.computedSteps, computed);
+    EXPECT_FALSE(physics.moved) << "the rest was a fixed point of the step";
+    physics.regrown(0, *live.scene, {0});
+    EXPECT_FALSE(physics.resting) << "a re-grow wakes it";
+
+    auto windy = core::loadProject(sourceDir() / "tests/data/projects/windy");
+    ASSERT_TRUE(windy.ok()) << windy.error().str();
+    editor::Live blown = liveOn(*windy, editor::PhysicsDevice::Cpu);
+    EXPECT_FALSE(blown.physics->timeIndependent);
+    for (double s = 0.1; s < 3.0; s += 0.1)
+        blown.physics->advanceTo(s, 1000);
+    EXPECT_FALSE(blown.physics->resting);
+}
+
 TEST_F(LivePhysicsTest, AutoPicksTheCpuOnSoftwareGlAndTheGpuElsewhere) {
     auto loaded = core::loadProject(sourceDir() / "tests/data/projects/windy");
     ASSERT_TRUE(loaded.ok()) << loaded.error().str();
