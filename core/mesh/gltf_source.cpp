@@ -40,6 +40,9 @@ struct FsContext {
     // EXT_meshopt_compression fallback buffers without data: this many zero bytes each, which
     // the decoded bufferViews then fill (gltf_meshopt.h).
     std::map<std::string, std::uint64_t> zeros;
+    // Buffers held in data: URIs that are not base64 (RFC 2397's percent-encoded octets, which
+    // tinygltf does not read): their decoded bytes.
+    std::map<std::string, std::string> decoded;
     // What fallback buffers may still claim in all: a compressed file cannot decode to more
     // than a bounded multiple of its size, so neither may its fallbacks.
     std::uint64_t fallbackBudget = 0;
@@ -52,7 +55,8 @@ std::uint64_t fallbackBudgetFor(std::uint64_t fileBytes) {
 
 bool fileExists(const std::string& path, void* user) {
     const auto* context = static_cast<const FsContext*>(user);
-    return context->files.count(path) != 0 || context->zeros.count(path) != 0;
+    return context->files.count(path) != 0 || context->zeros.count(path) != 0 ||
+           context->decoded.count(path) != 0;
 }
 
 std::string expandFilePath(const std::string& path, void*) {
@@ -64,6 +68,10 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
     const auto* context = static_cast<const FsContext*>(user);
     if (const auto zeros = context->zeros.find(path); zeros != context->zeros.end()) {
         out->assign(static_cast<std::size_t>(zeros->second), 0);
+        return true;
+    }
+    if (const auto decoded = context->decoded.find(path); decoded != context->decoded.end()) {
+        out->assign(decoded->second.begin(), decoded->second.end());
         return true;
     }
     const auto& files = context->files;
@@ -435,9 +443,20 @@ Result<void> prepareBuffer(Json& buffer, std::size_t index, const GlbChunks* glb
     if (startsWithNoCase(uri, "data:")) {
         const std::size_t comma = uri.find(',');
         const std::string_view header = std::string_view(uri).substr(0, comma);
-        if (comma == std::string::npos || header.size() < 12 ||
-            !startsWithNoCase(header.substr(header.size() - 7), ";base64"))
-            return makeError(display, what + " has a data: URI that is not base64");
+        if (comma == std::string::npos)
+            return makeError(display, what + " has a data: URI without the comma before its data");
+        if (header.size() < 12 || !startsWithNoCase(header.substr(header.size() - 7), ";base64")) {
+            // RFC 2397 (which glTF's data: URIs follow): without ";base64" the data are octets,
+            // percent-encoded where not plain characters.
+            std::string bytes = percentDecode(std::string_view(uri).substr(comma + 1));
+            if (bytes.size() < declared)
+                return truncated("its data: URI", bytes.size());
+            buffer["byteLength"] = bytes.size();
+            const std::string name = "grass-data-" + std::to_string(index) + ".bin";
+            buffer["uri"] = name;
+            context.decoded[virtualBufferPath(base, name)] = std::move(bytes);
+            return {};
+        }
         const std::uint64_t actual = base64DecodedSize(std::string_view(uri).substr(comma + 1));
         if (actual < declared)
             return truncated("its data: URI", actual);

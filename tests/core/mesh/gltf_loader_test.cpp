@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <iterator>
@@ -799,6 +800,32 @@ TEST(GltfLoader, ReportsFileWithoutTriangles) {
     lines.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
     test::writeGltf(file, test::singleMeshAsset(lines));
     EXPECT_TRUE(contains(loadError(file), "contains no triangles"));
+}
+
+// glTF's data: URIs follow RFC 2397, whose data may be percent-encoded octets instead of base64;
+// tinygltf reads only base64. Before, such a buffer refused the model ("not base64").
+TEST(GltfLoader, ReadsAPercentEncodedDataUriBuffer) {
+    const fs::path dir = test::scratchDir("gltf_percent_data_uri");
+    const GltfAsset asset = test::singleMeshAsset(test::gridPrimitive(1, 1, 2));
+    test::writeGltf(dir / "plain.gltf", asset);
+    const GltfImport plain = loadOk(dir / "plain.gltf");
+    test::GltfDocument doc = test::buildGltf(asset);
+    std::string encoded;
+    for (const std::uint8_t byte : doc.bin) {
+        char hex[4];
+        std::snprintf(hex, sizeof hex, "%%%02X", unsigned(byte));
+        encoded += hex;
+    }
+    doc.json["buffers"][0]["uri"] = "data:application/octet-stream," + encoded;
+    std::ofstream(dir / "percent.gltf") << doc.json.dump();
+    expectSameMesh(loadOk(dir / "percent.gltf"), plain);
+    // Shorter than it says, or without the comma before its data: refused, saying so.
+    doc.json["buffers"][0]["uri"] = "data:application/octet-stream," + encoded.substr(0, 30);
+    std::ofstream(dir / "short.gltf") << doc.json.dump();
+    EXPECT_TRUE(contains(loadError(dir / "short.gltf"), "truncated"));
+    doc.json["buffers"][0]["uri"] = "data:application/octet-stream";
+    std::ofstream(dir / "nocomma.gltf") << doc.json.dump();
+    EXPECT_TRUE(contains(loadError(dir / "nocomma.gltf"), "without the comma"));
 }
 
 // A buffer that no bufferView reads holds nothing of the geometry: glTF allows one without any
