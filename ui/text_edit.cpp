@@ -346,7 +346,7 @@ Response numberEntry(Ui& ui, std::string_view label, const std::function<Respons
     const std::string editId = std::string(label) + "##entry";
     if (!st.editing) {
         Response r = dragBox();
-        if (r.clicked() || r.doubleClicked()) {
+        if (r.clicked()) {  // a double-click's first click included
             st.editing = true;
             st.hadFocus = false;
             st.openedAtS = ctx.input().timeS;
@@ -419,6 +419,10 @@ std::string boundsText(double min, double max, int decimals) {
 }
 
 }  // namespace
+
+std::string withTypingHint(std::string_view tooltip) {
+    return std::string(tooltip) + "; click (without dragging) to type a value";
+}
 
 std::size_t nextCodePoint(std::string_view text, std::size_t pos) {
     if (pos >= text.size()) {

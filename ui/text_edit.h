@@ -27,14 +27,18 @@ namespace grass::ui {
 Response textEdit(Ui& ui, std::string_view idLabel, std::string& text, float width,
                   bool* committed = nullptr);
 
+// A tooltip of a typeable number, with how to type it: "<tooltip>; click (without dragging) to
+// type a value" (one wording for every such box).
+std::string withTypingHint(std::string_view tooltip);
+
 // Why a typed number is refused ("must be in (0, 5000] m"); empty: it is taken.
 using NumberCheck = std::function<std::string(double)>;
 
-// A drag value (Ui::dragValue) that a double-click or Ctrl+click turns into a text box for
-// typing the number. Enter takes it when it is a number that `check` accepts (without a check:
-// one in [min, max]; an integer must be whole); otherwise the box stays open, outlined, with the
-// reason under it: a refused value is never clamped or reverted silently. Clicking elsewhere
-// leaves it showing; Escape in the box cancels, the value untouched.
+// A drag value (Ui::dragValue) that a click without a drag (or a double-click, or Ctrl+click)
+// turns into a text box for typing the number. Enter takes it when it is a number that `check`
+// accepts (without a check: one in [min, max]; an integer must be whole); otherwise the box stays
+// open, outlined, with the reason under it: a refused value is never clamped or reverted silently.
+// Clicking elsewhere leaves it showing; Escape in the box cancels, the value untouched.
 Response dragValueWithEntry(Ui& ui, std::string_view label, float& value, float speed,
                             float min = -std::numeric_limits<float>::infinity(),
                             float max = std::numeric_limits<float>::infinity(), int decimals = 3,
@@ -43,7 +47,7 @@ Response dragValueWithEntry(Ui& ui, std::string_view label, int& value, float sp
                             int max, const NumberCheck& check = {});
 
 // A slider track followed by a dragValueWithEntry box and the label, as egui's slider: drag the
-// track, drag the box, or double-click (Ctrl+click) the box to type a value.
+// track, drag the box, or click the box to type a value.
 Response sliderWithEntry(Ui& ui, std::string_view label, float& value, float min, float max,
                          const SliderOptions& options = {}, const NumberCheck& check = {});
 

@@ -36,16 +36,16 @@ void vec3Row(ui::Ui& ui, EditorState& s, const char* label, glm::vec3& v, float 
 void positionRow(ui::Ui& ui, EditorState& s, glm::vec3& position, std::vector<core::PathKey>& path) {
     if (path.empty()) {
         vec3Row(ui, s, "position", position, 0.02f,
-                "World position x, y, z in metres (-10000 to 10000); "
-                "click (without dragging) to type a value");
+                ui::withTypingHint("World position x, y, z in metres (-10000 to 10000)"));
         return;
     }
     const float timeS = float(s.view.timeline.timeS());
     const glm::vec3 before = core::samplePath(path, timeS, position);
     glm::vec3 at = before;
-    vec3Row(ui, s, "position (key at now)", at, 0.02f,
-            "Position on the keyed path at the current time, in metres; an edit keys it there; "
-            "click (without dragging) to type a value");
+    vec3Row(
+        ui, s, "position (key at now)", at, 0.02f,
+        ui::withTypingHint(
+            "Position on the keyed path at the current time, in metres; an edit keys it there"));
     if (at != before)
         core::setKey(path, timeS, at, 0.5f * float(s.view.timeline.stepS()));
 }
@@ -213,8 +213,7 @@ void renderSection(ui::Ui& ui, EditorState& s) {
                                  "to keep each frame within the budget");
                 ui::dragValueWithEntry(row, "ms##budget", budget, 1.0f, 5.0f, 1000.0f, 0)
                     .onHoverText(
-                        "Frame time budget while moving, in ms (5 to 1000); "
-                        "click (without dragging) to type a value");
+                        ui::withTypingHint("Frame time budget while moving, in ms (5 to 1000)"));
             });
             if (adapt.enabled != before || budget != budgetBefore) {
                 adapt.budgetMs = budget;

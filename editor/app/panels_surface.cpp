@@ -42,9 +42,7 @@ void fileRows(ui::Ui& ui, EditorState& s, core::MeshSource& mesh) {
         mesh.metresPerUnit = core::MESH_UNITS[static_cast<std::size_t>(index)].metres;
     ui::dragValueWithEntry(ui, "metres per unit", mesh.metresPerUnit, 0.001f,
                            core::MIN_METRES_PER_UNIT, core::MAX_METRES_PER_UNIT, 6)
-        .onHoverText(
-            "Metres one unit of the file measures, 1e-6 to 1e6: click (without "
-            "dragging) to type one");
+        .onHoverText(ui::withTypingHint("Metres one unit of the file measures, 1e-6 to 1e6"));
     ui.horizontal([&](ui::Ui& row) {
         row.label("up");
         row.radioValue(mesh.up, core::UpAxis::Y, "+Y")

@@ -44,7 +44,7 @@ void transportRow(ui::Ui& row, EditorState& s) {
     float timeS = static_cast<float>(t.timeS());
     if (ui::dragValueWithEntry(row, "s##time", timeS, 0.01f, static_cast<float>(t.startS()),
                                static_cast<float>(t.endS()), 2)
-            .onHoverText("Scene time in seconds: drag, or click to type")
+            .onHoverText(ui::withTypingHint("Scene time in seconds: drag it"))
             .changed())
         s.view.timeJump = t.scrub(timeS);
     float speed = static_cast<float>(t.speed());

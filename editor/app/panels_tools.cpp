@@ -54,14 +54,12 @@ void brushSettings(ui::Ui& ui, EditorState& s) {
     });
     if (ui::sliderWithEntry(ui, "radius  [ ]", b.radiusM, 0.01f, 100.0f,
                             {.logarithmic = true, .decimals = 2})
-            .onHoverText("Brush radius in metres (0.01 to 100); [ and ] shrink and grow it; "
-                         "click (without dragging) to type a value")
+            .onHoverText(ui::withTypingHint(
+                "Brush radius in metres (0.01 to 100); [ and ] shrink and grow it"))
             .changed())
         s.view.paint.radiusChosen = true;
     ui::sliderWithEntry(ui, "strength", b.strength, 0.0f, 1.0f, {.decimals = 2})
-        .onHoverText(
-            "How much each dab changes the map (0 to 1); "
-            "click (without dragging) to type a value");
+        .onHoverText(ui::withTypingHint("How much each dab changes the map (0 to 1)"));
     static constexpr std::array<const char*, 3> FALLOFFS{"smooth", "linear", "constant"};
     int falloff = int(b.falloff);
     if (ui.comboBox("falloff", falloff, FALLOFFS)
@@ -70,9 +68,7 @@ void brushSettings(ui::Ui& ui, EditorState& s) {
         b.falloff = core::BrushFalloff(falloff);
     if (b.mode == core::BrushMode::Set)
         ui::sliderWithEntry(ui, "set value", b.setValue, 0.0f, 1.0f, {.decimals = 2})
-            .onHoverText(
-                "The value the set mode paints toward (0 to 1); "
-                "click (without dragging) to type a value");
+            .onHoverText(ui::withTypingHint("The value the set mode paints toward (0 to 1)"));
     ui.coloredLabel("left-drag paints, Ctrl inverts; right-drag orbits", ui.style().textWeak);
 }
 
@@ -96,13 +92,9 @@ void placeSettings(ui::Ui& ui, EditorState& s) {
     if (s.view.place.snap.enabled) {
         ui::dragValueWithEntry(ui, "step m", s.view.place.snap.translateStepM, 0.01f, 0.001f,
                                100.0f, 3)
-            .onHoverText(
-                "Snap step for moving, in metres (0.001 to 100); "
-                "click (without dragging) to type a value");
+            .onHoverText(ui::withTypingHint("Snap step for moving, in metres (0.001 to 100)"));
         ui::dragValueWithEntry(ui, "step °", s.view.place.snap.rotateStepDeg, 0.5f, 0.5f, 90.0f, 1)
-            .onHoverText(
-                "Snap step for turning, in degrees (0.5 to 90); "
-                "click (without dragging) to type a value");
+            .onHoverText(ui::withTypingHint("Snap step for turning, in degrees (0.5 to 90)"));
     }
     ui.horizontal([&](ui::Ui& row) {
         if (row.button("add wind")
