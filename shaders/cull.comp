@@ -1,10 +1,12 @@
 #version 450 core
 // Per-blade culling (SPEC §6, Jahrmann §6). One invocation per blade slot; patches hold a
-// multiple of 32 blades and the buffer is patch-major, so a work-group lies in one patch.
-// Stage 1, once per group before any blade is read: the patch's box against the view frustum (the
-// blades of a patch out of view cost no load). Stage 2, per blade: uniform thinning (the
-// editor's reduced picture while the user interacts, off otherwise), orientation, frustum,
-// distance, occlusion, burial under snow, in that order; a blade is counted by the first test that removes it.
+// multiple of 32 blades and the buffer is patch-major, so each run of 32 invocations lies in one
+// patch; a work group holds GROUP_RUNS runs (core/util/blade_pass_group.h: 1 unless
+// GRASS_COMPUTE_GROUP says). Stage 1, once per run before any blade is read: the patch's box
+// against the view frustum (the blades of a patch out of view cost no load). Stage 2, per blade:
+// uniform thinning (the editor's reduced picture while the user interacts, off otherwise),
+// orientation, frustum, distance, occlusion, burial under snow, in that order; a blade is counted
+// by the first test that removes it.
 // Survivors append their index to the visible list of their level of detail (lod.glsl) and bump
 // that LOD's strip and tessellation instance counts (reset to 0 before the dispatch); a blade in
 // its LOD's morph band (lodMorph > 0) is listed from the list's end, backwards, and counted in
@@ -19,7 +21,11 @@
 #include "snow.glsl"
 #endif
 
-layout(local_size_x = 32) in;
+#ifndef GROUP_RUNS
+#define GROUP_RUNS 1
+#endif
+#define RUN_BLADES 32u
+layout(local_size_x = 32 * GROUP_RUNS) in;
 // After the group size, which dispatch_grid.glsl reads.
 #include "dispatch_grid.glsl"
 
@@ -96,7 +102,7 @@ const uint RESULT_SKIPPED = 7u;
 const uint COUNTED_RESULTS = 7u;
 
 shared uint sCounts[COUNTED_RESULTS];
-shared bool sPatchOutside;
+shared bool sPatchOutside[GROUP_RUNS];  // per run of 32 blades
 // Per draw class: LOD k's blades at [k], its blending ones at [LOD_COUNT + k].
 shared uint sSurvivors[2 * LOD_COUNT];
 shared uint sBase[2 * LOD_COUNT];
@@ -195,16 +201,21 @@ void main() {
         sCounts[gl_LocalInvocationIndex] = 0u;
     if (gl_LocalInvocationIndex < uint(2 * LOD_COUNT))
         sSurvivors[gl_LocalInvocationIndex] = 0u;
-    if (gl_LocalInvocationIndex == 0u) {
-        uint groupFirst = workGroupInPass() * gl_WorkGroupSize.x;
-        uint patchIndex = groupFirst / uPatchSize;
-        sPatchOutside = uTestPatch != 0 && groupFirst < uBladeCount &&
-                        boxOutsideFrustum(patchBounds[2u * patchIndex].xyz,
-                                          patchBounds[2u * patchIndex + 1u].xyz);
+    // The first GROUP_RUNS invocations test one run's patch each, side by side.
+    if (gl_LocalInvocationIndex < uint(GROUP_RUNS)) {
+        uint runFirst =
+            workGroupInPass() * gl_WorkGroupSize.x + RUN_BLADES * gl_LocalInvocationIndex;
+        uint patchIndex = runFirst / uPatchSize;
+        sPatchOutside[gl_LocalInvocationIndex] =
+            uTestPatch != 0 && runFirst < uBladeCount &&
+            boxOutsideFrustum(patchBounds[2u * patchIndex].xyz,
+                              patchBounds[2u * patchIndex + 1u].xyz);
     }
     barrier();
     vec3 root;
-    uint result = index < uBladeCount ? classify(index, sPatchOutside, root) : RESULT_SKIPPED;
+    uint result = index < uBladeCount
+                      ? classify(index, sPatchOutside[gl_LocalInvocationIndex / RUN_BLADES], root)
+                      : RESULT_SKIPPED;
     int lod = 0;
     bool blending = false;
     if (result == RESULT_VISIBLE) {

@@ -2,7 +2,12 @@
 // Blade physics on the GPU: core/physics/physics.cpp step for step (stepBlade, repairBlade,
 // validateBlade, collide), one invocation per blade. See docs/physics.md for the integration and
 // shaders/include/physics.glsl for what the CPU side precomputes per substep.
-layout(local_size_x = 32) in;
+// GROUP_SIZE: invocations a work group (core/util/blade_pass_group.h: 32 unless
+// GRASS_COMPUTE_GROUP says); each invocation is one blade, so the size changes no result.
+#ifndef GROUP_SIZE
+#define GROUP_SIZE 32
+#endif
+layout(local_size_x = GROUP_SIZE) in;
 
 #include "blade.glsl"
 #include "dispatch_grid.glsl"

@@ -3,7 +3,8 @@
 # no display), from the repository root with .gpu/ made by .ci/gpu/pack.py beside it:
 #   1. grass render of the default project through the GPU's own EGL (the headless context
 #      finds the driver's EGL vendor file itself; the tessellation path `auto` picks on a GPU)
-#   2. grass bench: 100k, 1M (also at 1080p) and 10M blades
+#   2. grass bench: 100k, 1M (also at 1080p) and 10M blades, and the 1M and 10M cases again with
+#      the per-blade compute passes in groups of 256 (GRASS_COMPUTE_GROUP) instead of 32
 #   3. the GL test suite
 #   4. grass tradeoff on one scene, grass sim on the CPU's threads
 # Everything lands in $OUT (default /tmp/gpu-out): run.log, the bench JSON, and results.tgz.
@@ -85,6 +86,12 @@ step bench-1080p 60 "${G[@]}" bench --cases nature-1m,nature-1m-all,nature-1m-hy
 step bench-1080p-strips 40 "${G[@]}" bench --cases nature-1m,nature-1m-all --width 1920 --height 1080 --msaa 0 \
     --geometry strips --frames-1m 10 --steps-1m 5 --out "$OUT/bench_gpu_1080p_strips.json"
 step bench-10m 120 "${G[@]}" bench --cases nature-10m --frames-1m 5 --steps-1m 10 --out "$OUT/bench_gpu_10m.json"
+# 2b. The same with the per-blade compute passes in work groups of 256 instead of 32
+# (GRASS_COMPUTE_GROUP, core/util/blade_pass_group.h), on the same warm machine:
+# `grass bench --results bench_gpu_groups256.json --compare bench_gpu_10m.json` (and the 1M cases
+# against bench_gpu.json).
+step bench-groups-256 150 env GRASS_COMPUTE_GROUP=256 "${G[@]}" bench --cases nature-1m,helicopter-1m,nature-10m \
+    --frames-1m 5 --steps-1m 10 --out "$OUT/bench_gpu_groups256.json"
 
 # 3. The GL tests (goldens were made on llvmpipe: a GPU rasterises edges differently).
 # The editor's tests need grass-editor and an X server, which the pack does not carry.
@@ -96,6 +103,7 @@ cp -r /tmp/grass-tests/golden "$WORK/golden-actual" 2>/dev/null
 step tradeoff 60 "${G[@]}" tradeoff projects/meadow --out "$WORK/tradeoff" --frames 5
 step sim-cpu 30 "${G[@]}" sim projects/nature --backend cpu --threads "$(nproc)" --seconds 2
 step sim-gpu 30 "${G[@]}" sim projects/nature --backend gpu --seconds 2
+step sim-gpu-256 30 env GRASS_COMPUTE_GROUP=256 "${G[@]}" sim projects/nature --backend gpu --seconds 2
 
 # 5. Where nature's GPU physics step goes (a constant ~1.5 ms at 100k blades, helicopter's is
 # 0.05): the same project without its colliders, without its wind, without both.

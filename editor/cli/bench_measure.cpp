@@ -21,6 +21,7 @@
 #include "tools/process_memory.h"
 #include "tools/ui_cost.h"
 #include "ui/font.h"
+#include "util/blade_pass_group.h"
 
 namespace grass::cli {
 
@@ -291,6 +292,8 @@ BenchRun startRun(const BenchArgs& args, render::GeometryPath geometry) {
     run.height = args.height;
     run.msaaSamples = std::stoi(args.msaa);
     run.geometry = render::geometryPathLabel(geometry);
+    // measureRun has checked it: a bad GRASS_COMPUTE_GROUP ends the run before any case.
+    run.computeGroup = core::bladePassGroupSizeFromEnvironment().value();
     return run;
 }
 
@@ -305,6 +308,8 @@ Result<BenchRun> measureRun(const BenchArgs& args, const std::vector<const Bench
     auto context = gl::HeadlessContext::create(args.glDebug);
     if (!context)
         return context.error();
+    if (const auto group = core::bladePassGroupSizeFromEnvironment(); !group)
+        return group.error();
     const auto path = core::parseGeometryPath(args.geometry);
     const render::GeometryPath geometry = render::resolveGeometryPath(
         path ? *path : core::GeometryPath::Auto, gl::isSoftwareRenderer());

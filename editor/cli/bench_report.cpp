@@ -108,6 +108,9 @@ Result<BenchRun> runSettingsFromJson(const Json& document, const std::string& fi
     if (const auto geometry = document.find("geometry");
         geometry != document.end() && geometry->is_string())
         run.geometry = geometry->get<std::string>();
+    if (const auto group = document.find("compute_group");
+        group != document.end() && group->is_number_unsigned())
+        run.computeGroup = group->get<std::uint32_t>();
     return run;
 }
 
@@ -207,6 +210,7 @@ std::string benchRunJson(const BenchRun& run) {
     out["height"] = run.height;
     out["msaa"] = run.msaaSamples;
     out["geometry"] = run.geometry;
+    out["compute_group"] = run.computeGroup;
     Json cases = Json::array();
     for (const BenchCaseResult& result : run.cases) {
         Json entry;
@@ -263,10 +267,12 @@ Result<BenchRun> readBenchRun(const std::string& file) {
 void printBenchTable(const BenchRun& run) {
     std::printf("renderer  %s\n", run.renderer.c_str());
     std::printf(
-        "settings  %dx%d, %dx MSAA, blade geometry %s; ms are medians over the timed frames: "
+        "settings  %dx%d, %dx MSAA, blade geometry %s%s; ms are medians over the timed frames: "
         "frame = CPU wall time with glFinish, stages = GPU timer queries (on software GL each "
         "pass alone between two glFinish, in separate frames)\n",
-        run.width, run.height, run.msaaSamples, run.geometry.c_str());
+        run.width, run.height, run.msaaSamples, run.geometry.c_str(),
+        run.computeGroup > 0 ? (", compute groups of " + std::to_string(run.computeGroup)).c_str()
+                             : "");
     printHeader("case", true);
     for (const BenchCaseResult& result : run.cases) {
         std::printf("%-*s %6d", NAME_WIDTH, result.name.c_str(), result.frames);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,6 +64,9 @@ struct BenchRun {
     int height = 720;
     int msaaSamples = 4;
     std::string geometry;  // strips or tess
+    // Invocations a work group of the physics and cull dispatches (GRASS_COMPUTE_GROUP,
+    // core/util/blade_pass_group.h); 0 in runs saved before 2026-12-06, all of which used 32.
+    std::uint32_t computeGroup = 0;
     std::vector<BenchCaseResult> cases;
 };
 

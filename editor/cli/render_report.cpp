@@ -6,6 +6,7 @@
 
 #include "cli/output_files.h"
 #include "gl/headless_context.h"
+#include "util/blade_pass_group.h"
 
 namespace grass::cli {
 
@@ -73,8 +74,12 @@ void printRenderSummary(const std::string& out, const core::Scene& scene, double
     std::printf("wrote %s (%dx%d)\n", out.c_str(), request.width, request.height);
     std::printf("  scene      %zu triangles, %zu blades in %zu layer(s), built in %.1f ms\n",
                 scene.mesh->n_faces(), scene.totalBlades(), scene.layers.size(), buildMs);
-    std::printf("  renderer   %s, geometry %s, %dx MSAA\n", gl::rendererDescription().c_str(),
-                render::geometryPathLabel(request.options.geometry), request.msaaSamples);
+    // The renderer has loaded the passes, so the group size is one that was accepted.
+    const Result<std::uint32_t> group = core::bladePassGroupSizeFromEnvironment();
+    std::printf("  renderer   %s, geometry %s, %dx MSAA, compute groups of %u\n",
+                gl::rendererDescription().c_str(),
+                render::geometryPathLabel(request.options.geometry), request.msaaSamples,
+                group ? *group : 0u);
     std::printf("  frames     %zu, wall ms: first %.1f, median %.1f, min %.1f\n",
                 rendered.frameWallMs.size(), rendered.frameWallMs.front(),
                 frames[frames.size() / 2], frames.front());

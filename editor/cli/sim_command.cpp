@@ -15,6 +15,7 @@
 #include "project/project_inputs.h"
 #include "scene/scene_physics.h"
 #include "util/arg_parser.h"
+#include "util/blade_pass_group.h"
 #include "util/interrupt_stop.h"
 
 namespace grass::cli {
@@ -119,6 +120,12 @@ Result<SimDevice> openDevice(const SimArgs& args) {
     device.backend = SimBackend::Gpu;
     device.context = std::move(*created);
     device.description = gl::rendererDescription();
+    // The compute shader's work groups (core/util/blade_pass_group.h): a bad GRASS_COMPUTE_GROUP
+    // ends the run here, before its first step.
+    const Result<std::uint32_t> group = core::bladePassGroupSizeFromEnvironment();
+    if (!group)
+        return group.error();
+    device.description += ", compute groups of " + std::to_string(*group);
     return device;
 }
 

@@ -6,21 +6,32 @@
 
 #include "gl/scoped_framebuffer.h"
 #include "util/assert.h"
+#include "util/blade_pass_group.h"
 #include "util/dispatch_grid.h"
 
 namespace grass::render {
 
 namespace {
 constexpr std::uint32_t COUNTER_BINDING = 7;
-constexpr std::uint32_t WORK_GROUP_SIZE = 32;  // local_size_x of shaders/cull.comp
 constexpr std::size_t COUNTER_COUNT = 8;
 }  // namespace
 
 Result<CullPass> CullPass::create() {
-    auto program = gl::Program::load({{GL_COMPUTE_SHADER, "cull.comp"}}, "blade cull");
+    const Result<std::uint32_t> groupSize = core::bladePassGroupSizeFromEnvironment();
+    if (!groupSize)
+        return groupSize.error();
+    return create(*groupSize);
+}
+
+Result<CullPass> CullPass::create(std::uint32_t groupSize) {
+    GRASS_ASSERT(groupSize % core::BLADE_PASS_GROUP_STEP == 0 &&
+                 groupSize <= core::MAX_BLADE_PASS_GROUP && groupSize > 0);
+    auto program = gl::Program::load({{GL_COMPUTE_SHADER, "cull.comp"}}, "blade cull",
+                                     {core::cullGroupDefine(groupSize)});
     if (!program)
         return program.error();
     CullPass pass;
+    pass.mGroupSize = groupSize;
     pass.mProgram = std::move(*program);
     const std::array<std::uint32_t, COUNTER_COUNT> zeros{};
     pass.mCounters = gl::Buffer(std::as_bytes(std::span(zeros)), "cull counters");
@@ -28,9 +39,9 @@ Result<CullPass> CullPass::create() {
 }
 
 const gl::Program& CullPass::snowProgram() {
-    return gl::loadOnFirstUse(mSnowProgram, [] {
+    return gl::loadOnFirstUse(mSnowProgram, [this] {
         return gl::Program::load({{GL_COMPUTE_SHADER, "cull.comp"}}, "blade cull (snow)",
-                                 {"GRASS_SNOW"});
+                                 {"GRASS_SNOW", core::cullGroupDefine(mGroupSize)});
     });
 }
 
@@ -106,7 +117,7 @@ void CullPass::run(std::vector<FieldGpu>& fields, const CullView& view,
         field.bindForCull();
         program.set("uBladeCount", static_cast<unsigned>(field.bladeCount()));
         program.set("uPatchSize", std::max(field.patchSize(), 1u));
-        const core::DispatchGrid grid = core::dispatchGrid(field.bladeCount(), WORK_GROUP_SIZE);
+        const core::DispatchGrid grid = core::dispatchGrid(field.bladeCount(), mGroupSize);
         glDispatchCompute(grid.x, grid.y, 1);
     }
     glBindTextureUnit(0, 0);

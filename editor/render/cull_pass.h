@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -88,7 +89,12 @@ struct CullView {
 
 class CullPass {
 public:
+    // Work groups of 32 invocations, or GRASS_COMPUTE_GROUP's (core/util/blade_pass_group.h).
     static Result<CullPass> create();
+    // Work groups of `groupSize` (a multiple of 32 up to 256): the same blades culled, counted
+    // and listed per level of detail whatever the size (only their order in a list differs).
+    static Result<CullPass> create(std::uint32_t groupSize);
+    std::uint32_t groupSize() const { return mGroupSize; }
 
     // The occlusion depth, then the cull dispatch for every field, ending with the barrier the
     // indirect draws need. The depth (only when occlusion culling is on): `depthSource`'s, a
@@ -111,6 +117,7 @@ private:
     gl::Buffer mCounters;
     gl::DepthTarget mDepth;
     bool mStatsValid = false;
+    std::uint32_t mGroupSize = 32;
 };
 
 }  // namespace grass::render

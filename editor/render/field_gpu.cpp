@@ -91,6 +91,14 @@ std::vector<float> FieldGpu::readTipSnow() const {
     return values;
 }
 
+std::vector<std::uint32_t> FieldGpu::readVisible() const {
+    std::vector<std::uint32_t> slots(LOD_COUNT * mBladeCount);
+    if (!slots.empty())
+        glGetNamedBufferSubData(mVisible.id(), 0, GLsizeiptr(slots.size() * sizeof(std::uint32_t)),
+                                slots.data());
+    return slots;
+}
+
 void FieldGpu::bindForCull() const {
     glBindTextureUnit(core::BLADE_TEXELS_UNIT, mBladeTexels.id());  // what cull.comp reads
     if (mTipSnow.id() != 0)

@@ -68,6 +68,10 @@ public:
     // The tip whiteness of every slot as the last cull wrote it (empty without snow; tests).
     std::vector<float> readTipSnow() const;
     bool hasTipSnow() const { return mTipSnow.id() != 0; }
+    // The visible lists as the last cull left them: LOD_COUNT lists of bladeCount() slots, LOD
+    // k's survivors from k·bladeCount() on, its blending ones backwards from its list's end
+    // (shaders/cull.comp); slots no survivor took hold what was there before (tests).
+    std::vector<std::uint32_t> readVisible() const;
     // Binds the blades' texel view and the patch-box, visible and command buffers for the cull
     // dispatch.
     void bindForCull() const;

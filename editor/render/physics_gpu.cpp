@@ -4,12 +4,11 @@
 #include <cstring>
 
 #include "util/assert.h"
+#include "util/blade_pass_group.h"
 #include "util/dispatch_grid.h"
 
 namespace grass::render {
 namespace {
-
-constexpr std::size_t LOCAL_SIZE = 32;  // local_size_x of shaders/physics.comp
 
 // Immutable storage cannot grow: a new buffer when the size changes, else an update in place.
 template <class T>
@@ -24,10 +23,21 @@ void upload(gl::Buffer& buffer, const std::vector<T>& values, std::string_view l
 }  // namespace
 
 Result<PhysicsGpu> PhysicsGpu::load() {
-    auto program = gl::Program::load({{GL_COMPUTE_SHADER, "physics.comp"}}, "blade physics");
+    const Result<std::uint32_t> groupSize = core::bladePassGroupSizeFromEnvironment();
+    if (!groupSize)
+        return groupSize.error();
+    return load(*groupSize);
+}
+
+Result<PhysicsGpu> PhysicsGpu::load(std::uint32_t groupSize) {
+    GRASS_ASSERT(groupSize % core::BLADE_PASS_GROUP_STEP == 0 &&
+                 groupSize <= core::MAX_BLADE_PASS_GROUP && groupSize > 0);
+    auto program = gl::Program::load({{GL_COMPUTE_SHADER, "physics.comp"}}, "blade physics",
+                                     {core::physicsGroupDefine(groupSize)});
     if (!program)
         return program.error();
     PhysicsGpu physics;
+    physics.mGroupSize = groupSize;
     physics.mProgram = std::move(*program);
     return physics;
 }
@@ -109,7 +119,7 @@ void PhysicsGpu::step(gl::BufferRef bladeBuffer, std::size_t bladeCount,
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, mColliderGroups.id());
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, mSubsteps.id());
-    const core::DispatchGrid grid = core::dispatchGrid(bladeCount, LOCAL_SIZE);
+    const core::DispatchGrid grid = core::dispatchGrid(bladeCount, mGroupSize);
     glDispatchCompute(grid.x, grid.y, 1);
     // Blades feed the cull and the draws (texel fetches) and read-backs; η feeds the next step
     // (SSBO reads).

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,7 +29,11 @@ using core::WindSourceGpu;
 
 class PhysicsGpu {
 public:
+    // Work groups of 32 invocations, or GRASS_COMPUTE_GROUP's (core/util/blade_pass_group.h).
     static Result<PhysicsGpu> load();
+    // Work groups of `groupSize` (a multiple of 32 up to 256): the same steps whatever the size.
+    static Result<PhysicsGpu> load(std::uint32_t groupSize);
+    std::uint32_t groupSize() const { return mGroupSize; }
 
     // Sets the rest tips Iv2 from `blades` (core::restTips) and η = 0, as a CPU simulation starts.
     void reset(std::span<const core::Blade> blades);
@@ -56,6 +61,7 @@ public:
 
 private:
     gl::Program mProgram;
+    std::uint32_t mGroupSize = 32;
     std::size_t mBladeCount = 0;
     gl::Buffer mParams;
     gl::Buffer mEta;

@@ -22,7 +22,9 @@ namespace {
 constexpr GLuint BLADES = 0, PATCH_BOUNDS = 1, VISIBLE = 5, COMMANDS = 6, COUNTERS = 7;
 constexpr GLuint PHYSICS_PARAMS = 1, ETA = 2, REST_TIPS = 3, WIND_SOURCES = 4, WIND_CENTRES = 5,
                  COLLIDERS = 6, SUBSTEPS = 7, COLLIDER_GROUPS = 8;
-constexpr GLuint WORK_GROUP = 32;  // local_size_x of cull.comp and physics.comp
+// The group size of cull.comp and physics.comp as loaded here, without their GROUP_RUNS or
+// GROUP_SIZE define (core/util/blade_pass_group.h: the editor's GRASS_COMPUTE_GROUP knob).
+constexpr GLuint WORK_GROUP = 32;
 constexpr int MAX_STEPS_PER_UPDATE = 8;
 
 using core::LOD_COUNT;

@@ -153,6 +153,17 @@ grass_cli_test(render_egl_platform_bad ERROR "GRASS_EGL_PLATFORM" --also "auto, 
     --absent ${GRASS_CLI_TMP}/never_egl.png
     -- env GRASS_EGL_PLATFORM=x11 ${GRASS_BIN} render ${GRASS_SOURCE_DIR}/projects/meadow
        --out ${GRASS_CLI_TMP}/never_egl.png --width 64 --height 36 --frames 1)
+# Work groups of 256 (GRASS_COMPUTE_GROUP, core/util/blade_pass_group.h): the cull in 8 runs of 32
+# blades and the physics on the GPU path (compute_group_gl_test.cpp compares their results).
+grass_cli_test(render_compute_group_256 GL OK --png ${GRASS_CLI_TMP}/meadow_group.png 64 36
+    --stdout "^simulated .* on the gpu," --stdout "^  renderer .*, compute groups of 256$"
+    -- env GRASS_COMPUTE_GROUP=256 ${GRASS_BIN} render ${GRASS_SOURCE_DIR}/projects/meadow
+       --out ${GRASS_CLI_TMP}/meadow_group.png --width 64 --height 36 --frames 1 --time 0.2
+       --backend gpu)
+grass_cli_test(render_compute_group_bad ERROR "GRASS_COMPUTE_GROUP" --also "multiple of 32"
+    --absent ${GRASS_CLI_TMP}/never_group.png
+    -- env GRASS_COMPUTE_GROUP=48 ${GRASS_BIN} render ${GRASS_SOURCE_DIR}/projects/meadow
+       --out ${GRASS_CLI_TMP}/never_group.png --width 64 --height 36 --frames 1)
 grass_cli_test(render_mesh GL OK --png ${GRASS_CLI_TMP}/quad.png 128 128
     --stdout "^wrote .*quad\\.png \\(128x128\\)$" --stdout "^  scene +2 triangles, [1-9][0-9]* blades"
     --stderr "^note: reading quad\\.gltf \\.\\.\\.$"
@@ -212,7 +223,7 @@ grass_cli_test(sim_windy_cpu OK
     -- ${GRASS_BIN} sim ${WINDY} --seconds 1 --report ${REPORT})
 grass_cli_test(sim_windy_gpu GL OK
     --stdout "^simulated 1\\.000 s of windy: 100 steps of 0\\.01 s"
-    --stdout "^  backend +gpu \\(" --stdout "^  health .*nonfinite 0, below ground 0$"
+    --stdout "^  backend +gpu \\(.*, compute groups of 32\\)$" --stdout "^  health .*nonfinite 0, below ground 0$"
     -- ${GRASS_BIN} sim ${WINDY} --seconds 1 --dt 0.01 --backend gpu)
 # --backend auto (the default) runs the physics where it is fastest: the CPU on software GL.
 grass_cli_test(render_time GL OK --png ${GRASS_CLI_TMP}/windy.png 64 48
