@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "ui/number_text.h"
+
 namespace grass::ui {
 
 namespace {
@@ -291,9 +293,7 @@ Response textEditImpl(Ui& ui, std::string_view idLabel, std::string& text, float
 }
 
 std::string formatNumber(float value, int decimals) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.*f", std::max(decimals, 0), double(value));
-    return buffer;
+    return numberText(double(value), decimals);
 }
 
 // Enough digits to see a 1% step of the range (0..500 integers, 0..1 two decimals), the rule the
@@ -492,20 +492,46 @@ Response dragValueWithEntry(Ui& ui, std::string_view label, int& value, float sp
         });
 }
 
+namespace {
+
+// The track of a slider with a box: Style::sliderWidth where the row has room for it, the box
+// and the label, narrower (down to MIN_TRACK_WIDTH) where it has not, so that the label is read
+// whole at a side panel's default width ("density /m²" lost its unit there). The box is
+// measured at the widest of the range's ends and the value, so the track keeps its width while
+// the value changes.
+float sliderTrackWidth(const Ui& row, std::string_view label, float value, float min, float max,
+                       int decimals) {
+    constexpr float MIN_TRACK_WIDTH = 48.0f;
+    const Style& s = row.style();
+    const FontAtlas& fonts = row.context().fonts();
+    float text = 0.0f;
+    for (const float number : {min, max, value})
+        text = std::max(text, fonts.textSize(formatNumber(number, decimals), s.textSizePt).x);
+    const float box = std::max(s.dragValueMinWidth, text + 2.0f * s.buttonPadding.x);
+    const std::string_view shown = shownLabel(label);
+    const float labelWidth =
+        shown.empty() ? 0.0f : s.itemSpacing.x + fonts.textSize(shown, s.textSizePt).x;
+    const float room = row.availableWidth() - s.itemSpacing.x - box - labelWidth;
+    return std::clamp(room, std::min(MIN_TRACK_WIDTH, s.sliderWidth), s.sliderWidth);
+}
+
+}  // namespace
+
 Response sliderWithEntry(Ui& ui, std::string_view label, float& value, float min, float max,
                          const SliderOptions& options, const NumberCheck& check) {
     Response result;
     ui.horizontal([&](Ui& row) {
         row.pushId(label);
+        const int decimals = options.decimals >= 0 ? options.decimals : rangeDecimals(min, max);
         SliderOptions trackOnly = options;
         trackOnly.showValue = false;
+        trackOnly.trackWidth = sliderTrackWidth(row, label, value, min, max, decimals);
         // The track and the box are both unlabelled: separate salts keep their ids apart.
         row.pushId("track");
         result = row.slider("", value, min, max, trackOnly);
         row.popId();
         // The box drags at the track's rate: the full range over the track width.
-        const float speed = (max - min) / std::max(row.style().sliderWidth, 1.0f);
-        const int decimals = options.decimals >= 0 ? options.decimals : rangeDecimals(min, max);
+        const float speed = (max - min) / std::max(trackOnly.trackWidth, 1.0f);
         const Response box = dragValueWithEntry(row, "", value, speed, std::min(min, max),
                                                 std::max(min, max), decimals, check);
         row.popId();

@@ -38,6 +38,8 @@ struct SliderOptions {
     int decimals = -1;
     // Draws the value text after the track; sliderWithEntry (text_edit.h) shows its own box.
     bool showValue = true;
+    // > 0: the track's width instead of Style::sliderWidth (sliderWithEntry narrows it to fit).
+    float trackWidth = 0.0f;
 };
 
 class Ui {
@@ -126,7 +128,7 @@ public:
     Response image(TextureId texture, Vec2 size, Rect uv = {{0.0f, 0.0f}, {1.0f, 1.0f}});
 
     // Value widgets (widgets_values.cpp). A slider is [track][value] label; its Response's rect
-    // is the track (sliderWidth × interactHeight).
+    // is the track (sliderWidth, or SliderOptions::trackWidth, × interactHeight).
     Response slider(std::string_view label, float& value, float min, float max,
                     const SliderOptions& options = {});
     Response slider(std::string_view label, int& value, int min, int max,

@@ -3,17 +3,12 @@
 #include <cstdio>
 #include <string>
 
+#include "ui/number_text.h"
 #include "ui/ui.h"
 
 namespace grass::ui {
 
 namespace {
-
-std::string formatValue(double value, int decimals) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-    return buffer;
-}
 
 // Enough digits to see a 1% step of the range: 0..500 shows integers, 0..1 two decimals.
 int autoDecimals(double min, double max) {
@@ -51,15 +46,16 @@ Response sliderImpl(Ui& ui, std::string_view label, double& value, double min, d
     const SliderMapping map{min, max, options.logarithmic && min > 0.0 && max > min};
     const int decimals =
         integer ? 0 : (options.decimals >= 0 ? options.decimals : autoDecimals(min, max));
-    const std::string valueText = options.showValue ? formatValue(value, decimals) : std::string();
+    const std::string valueText = options.showValue ? numberText(value, decimals) : std::string();
     const Vec2 valueSize = fonts.textSize(valueText, s.textSizePt);
     const Vec2 labelSize = fonts.textSize(shown, s.textSizePt);
     const float height = std::max(s.interactHeight, valueSize.y);
     const float valueWidth = options.showValue ? s.itemSpacing.x + valueSize.x : 0.0f;
+    const float trackWidth = options.trackWidth > 0.0f ? options.trackWidth : s.sliderWidth;
     const float width =
-        s.sliderWidth + valueWidth + (shown.empty() ? 0.0f : s.itemSpacing.x + labelSize.x);
+        trackWidth + valueWidth + (shown.empty() ? 0.0f : s.itemSpacing.x + labelSize.x);
     const Rect total = ui.allocate({width, height});
-    const Rect track = Rect::fromMinSize(total.min, {s.sliderWidth, height});
+    const Rect track = Rect::fromMinSize(total.min, {trackWidth, height});
     Response r = ui.interact(track, ui.makeId(label), Sense::clickAndDrag());
 
     // The handle centre travels between the track ends inset by its radius, so the handle
@@ -151,7 +147,7 @@ Response Ui::slider(std::string_view label, int& value, int min, int max,
 
 Response Ui::dragValue(std::string_view label, float& value, float speed, float min, float max,
                        int decimals) {
-    Response r = dragBox(*this, label, formatValue(value, std::max(decimals, 0)));
+    Response r = dragBox(*this, label, numberText(value, std::max(decimals, 0)));
     if (r.dragged() && r.dragDelta().x != 0.0f) {
         const float v = std::clamp(value + r.dragDelta().x * speed, min, max);
         if (v != value) {
@@ -163,7 +159,7 @@ Response Ui::dragValue(std::string_view label, float& value, float speed, float 
 }
 
 Response Ui::dragValue(std::string_view label, int& value, float speed, int min, int max) {
-    Response r = dragBox(*this, label, formatValue(value, 0));
+    Response r = dragBox(*this, label, numberText(value, 0));
     // Sub-integer movement accumulates across frames in a per-widget float, so slow drags
     // still change the value.
     double& exact = mCtx->state<double>(r.id().with("exact"));

@@ -27,7 +27,7 @@ constexpr std::array BENDING{
          .unit = "°",
          .help = "rest lean of a blade fully shaded by taller, denser neighbours (it grows "
                  "sideways, towards the light); 0: off",
-         .label = "lean among neighbours",
+         .label = "lean in shade",
          .ui = {.min = 0.0f, .max = 60.0f, .decimals = 1, .speed = 0.5f, .slider = true}}),
     field<&BendingCues::neighbourRadiusM>(
         {.key = "neighbour_radius",
@@ -40,7 +40,7 @@ constexpr std::array BENDING{
          .rule = json::UNIT_INTERVAL,
          .help = "how much more a leaning blade sways: its stiffness becomes s·(1 − sway·sin "
                  "lean)",
-         .label = "sway of leaning blades",
+         .label = "sway when leaning",
          .ui = {.min = 0.0f, .max = 1.0f, .decimals = 2, .speed = 0.01f, .slider = true}}),
 };
 

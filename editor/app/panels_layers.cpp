@@ -63,7 +63,8 @@ void rulesBody(ui::Ui& ui, EditorState& s, core::PlacementRules& rules) {
     const std::vector<std::string> names =
         s.scene ? core::partNames(s.scene->mesh) : std::vector<std::string>{};
     if (names.empty()) {
-        ui.coloredLabel("this surface names no parts (a procedural shape)", ui.style().textWeak);
+        ui.wrappedColoredLabel("this surface names no parts (a procedural shape)",
+                               ui.style().textWeak);
     } else {
         ui.collapsingHeader("names (" + std::to_string(names.size()) + ")##names", [&](ui::Ui& list) {
             list.coloredLabel("only  never  clear of", list.style().textWeak);

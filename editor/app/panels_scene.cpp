@@ -207,11 +207,13 @@ void renderSection(ui::Ui& ui, EditorState& s) {
             const bool before = adapt.enabled;
             const float budgetBefore = float(adapt.budgetMs);
             float budget = budgetBefore;
-            section.horizontal([&](ui::Ui& row) {
-                row.checkbox(adapt.enabled, "adapt while moving, budget")
-                    .onHoverText("Draw a reduced picture while you orbit, paint, drag or play, "
-                                 "to keep each frame within the budget");
-                ui::dragValueWithEntry(row, "ms##budget", budget, 1.0f, 5.0f, 1000.0f, 0)
+            // Two rows: on one, the box and its unit ran past the side panel's default width.
+            section.checkbox(adapt.enabled, "adapt while moving")
+                .onHoverText(
+                    "Draw a reduced picture while you orbit, paint, drag or play, "
+                    "to keep each frame within the budget");
+            section.indent([&](ui::Ui& row) {
+                ui::dragValueWithEntry(row, "budget ms##budget", budget, 1.0f, 5.0f, 1000.0f, 0)
                     .onHoverText(
                         ui::withTypingHint("Frame time budget while moving, in ms (5 to 1000)"));
             });

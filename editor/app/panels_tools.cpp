@@ -69,7 +69,7 @@ void brushSettings(ui::Ui& ui, EditorState& s) {
     if (b.mode == core::BrushMode::Set)
         ui::sliderWithEntry(ui, "set value", b.setValue, 0.0f, 1.0f, {.decimals = 2})
             .onHoverText(ui::withTypingHint("The value the set mode paints toward (0 to 1)"));
-    ui.coloredLabel("left-drag paints, Ctrl inverts; right-drag orbits", ui.style().textWeak);
+    ui.wrappedColoredLabel("Ctrl inverts; right-drag orbits", ui.style().textWeak);
 }
 
 glm::vec3 newObjectPosition(const EditorState& s) {

@@ -4,6 +4,7 @@
 // options; no GL context is used.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -994,7 +995,10 @@ TEST(EditorPanels, PlacementRulesAreEditedInTheLayer) {
     editor::resetHistory(d.state);
     d.click("placement rules");
     const std::set<std::string> shown = d.shownTexts();
-    EXPECT_TRUE(shown.count("this surface names no parts (a procedural shape)"));
+    // Wrapped to the panel's width: its first line.
+    EXPECT_TRUE(std::any_of(shown.begin(), shown.end(), [](const std::string& text) {
+        return text.starts_with("this surface names no parts");
+    }));
     EXPECT_TRUE(shown.count("clear colliders"));
     d.click("clear colliders");
     editor::recordProjectEdit(d.state, false);
@@ -1002,6 +1006,46 @@ TEST(EditorPanels, PlacementRulesAreEditedInTheLayer) {
     EXPECT_TRUE(d.state.rebuildPending);
     ASSERT_TRUE(editor::undo(d.state));
     EXPECT_FALSE(d.state.doc.project().layers[0].rules.clearColliders);
+}
+
+// Every text of the side panel, with every section and sub-section open and the brush's settings
+// showing, lies within the panel at its default width: a row wider than the panel cut its last
+// words off ("density /m²" read "density /m", the budget's unit was lost).
+TEST(EditorPanels, EveryTextOfTheSidePanelIsReadWholeAtItsDefaultWidth) {
+    const ScratchFolder folder("editor-whole-labels");
+    EditorDriver d(folder.path());
+    d.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 6000.0f}};  // no scrolling: every row shows
+    // Opens the header whose text starts with `prefix`: a click that hid texts closed an open
+    // header, so a second click opens it again.
+    const auto open = [&](std::string_view prefix) {
+        const std::size_t before = d.shownTexts().size();
+        d.clickStartingWith(prefix);
+        if (d.shownTexts().size() < before)
+            d.clickStartingWith(prefix);
+    };
+    d.click("brush (b)");
+    for (const std::string_view header :
+         {"Tools", "Layers", "grass", "growth curves", "placement rules", "bending", "Surface",
+          "Wind", "Colliders", "Light", "Cameras", "Render"})
+        open(header);
+    std::size_t checked = 0;
+    std::vector<std::string> cut;
+    for (const ui::ClippedShape& shape : d.frame().shapes) {
+        const auto* t = std::get_if<ui::TextShape>(&shape.shape);
+        // The side panel's own clip (its inner margin to the panel's width); a text box's text
+        // clipped by its box scrolls in it, and the menu bar spans the window.
+        if (t == nullptr || shape.clip.min.x > 10.0f || shape.clip.max.x < 300.0f ||
+            shape.clip.max.x > 330.0f)
+            continue;
+        ++checked;
+        const float right = t->pos.x + d.ctx.fonts().textSize(t->text, t->sizePt).x;
+        if (right > shape.clip.max.x + 0.5f)
+            cut.push_back("\"" + t->text + "\" ends at " + std::to_string(right) +
+                          ", the panel at " + std::to_string(shape.clip.max.x));
+    }
+    EXPECT_GT(checked, 100u) << checked << " texts: every section should be open";
+    for (const std::string& text : cut)
+        ADD_FAILURE() << text;
 }
 
 // Issue 27 item 4: the brush's map exported from the paint tool's row (export…, the typed name,
