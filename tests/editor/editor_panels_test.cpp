@@ -1015,6 +1015,7 @@ TEST(EditorPanels, EveryTextOfTheSidePanelIsReadWholeAtItsDefaultWidth) {
     const ScratchFolder folder("editor-whole-labels");
     EditorDriver d(folder.path());
     d.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 6000.0f}};  // no scrolling: every row shows
+    const core::Project& project = d.state.doc.loaded.project;
     // Opens the header whose text starts with `prefix`: a click that hid texts closed an open
     // header, so a second click opens it again.
     const auto open = [&](std::string_view prefix) {
@@ -1023,29 +1024,42 @@ TEST(EditorPanels, EveryTextOfTheSidePanelIsReadWholeAtItsDefaultWidth) {
         if (d.shownTexts().size() < before)
             d.clickStartingWith(prefix);
     };
-    d.click("brush (b)");
-    for (const std::string_view header :
-         {"Tools", "Layers", "grass", "growth curves", "placement rules", "bending", "Surface",
-          "Wind", "Colliders", "Light", "Cameras", "Render"})
-        open(header);
-    std::size_t checked = 0;
-    std::vector<std::string> cut;
-    for (const ui::ClippedShape& shape : d.frame().shapes) {
-        const auto* t = std::get_if<ui::TextShape>(&shape.shape);
-        // The side panel's own clip (its inner margin to the panel's width); a text box's text
-        // clipped by its box scrolls in it, and the menu bar spans the window.
-        if (t == nullptr || shape.clip.min.x > 10.0f || shape.clip.max.x < 300.0f ||
-            shape.clip.max.x > 330.0f)
-            continue;
-        ++checked;
-        const float right = t->pos.x + d.ctx.fonts().textSize(t->text, t->sizePt).x;
-        if (right > shape.clip.max.x + 0.5f)
-            cut.push_back("\"" + t->text + "\" ends at " + std::to_string(right) +
-                          ", the panel at " + std::to_string(shape.clip.max.x));
+    // A wind source and a ball, so that their rows and the gizmo's show too.
+    open("Wind");
+    d.click("add wind");
+    editor::recordProjectEdit(d.state, false);
+    open("Colliders");
+    d.click("add ball");
+    editor::recordProjectEdit(d.state, false);
+    ASSERT_FALSE(project.wind.empty());
+    ASSERT_FALSE(project.colliders.empty());
+    for (const std::string_view tool : {"brush (b)", "gizmo (g)"}) {
+        d.click(tool);
+        for (const std::string_view header :
+             {"Tools", "Layers", "grass", "growth curves", "placement rules", "bending", "Surface",
+              "Wind", "Colliders", "Light", "Cameras", "Render", "Snow"})
+            open(header);
+        open(project.wind.back().name);
+        open(project.colliders.back().name);
+        std::size_t checked = 0;
+        std::vector<std::string> cut;
+        for (const ui::ClippedShape& shape : d.frame().shapes) {
+            const auto* t = std::get_if<ui::TextShape>(&shape.shape);
+            // The side panel's own clip (its inner margin to the panel's width); a text box's
+            // text clipped by its box scrolls in it, and the menu bar spans the window.
+            if (t == nullptr || shape.clip.min.x > 10.0f || shape.clip.max.x < 300.0f ||
+                shape.clip.max.x > 330.0f)
+                continue;
+            ++checked;
+            const float right = t->pos.x + d.ctx.fonts().textSize(t->text, t->sizePt).x;
+            if (right > shape.clip.max.x + 0.5f)
+                cut.push_back("\"" + t->text + "\" ends at " + std::to_string(right) +
+                              ", the panel at " + std::to_string(shape.clip.max.x));
+        }
+        EXPECT_GT(checked, 100u) << tool << ": " << checked << " texts, every section open";
+        for (const std::string& text : cut)
+            ADD_FAILURE() << tool << ": " << text;
     }
-    EXPECT_GT(checked, 100u) << checked << " texts: every section should be open";
-    for (const std::string& text : cut)
-        ADD_FAILURE() << text;
 }
 
 // Issue 27 item 4: the brush's map exported from the paint tool's row (export…, the typed name,
