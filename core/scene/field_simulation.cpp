@@ -46,9 +46,11 @@ void FieldSimulation::resetPatches(std::size_t layerIndex, const Scene& scene,
 }
 
 void FieldSimulation::step(const ScenePhysics& physics, float timeS, unsigned threads) {
-    for (Layer& layer : mLayers)
+    for (std::size_t i = 0; i < mLayers.size(); ++i) {
+        Layer& layer = mLayers[i];
         stepPhysicsSimd(layer.blades, layer.eta, layer.restTips, physics.params, physics.wind,
-                        physics.colliders, timeS, threads);
+                        physics.colliders, timeS, threads, physics.snowLoad(i, timeS));
+    }
 }
 
 }  // namespace grass::core

@@ -3,8 +3,8 @@
 // editor's tools pick, paint and re-grow the scene's blades). η and the rest tips live beside
 // the copy, as in SceneSimulation; a re-grown patch restarts from the scene's new blades.
 // The editor steps it on software renderers, where it is faster than the compute shader
-// (docs/physics.md). Snow loads are not applied: a scene whose snow loads its blades runs on the
-// GPU or in SceneSimulation.
+// (docs/physics.md). Snow loads apply as in SceneSimulation (ScenePhysics::snowLoad, filled by
+// prepareSnowLoads from the scene at rest).
 #pragma once
 
 #include <cstdint>

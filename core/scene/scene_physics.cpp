@@ -182,19 +182,31 @@ SceneSimulation::SceneSimulation(Scene& scene, ScenePhysics physics, unsigned th
         mEta.emplace_back(layer.patched.blades.size(), 0.0f);
         mRestTips.push_back(core::restTipsAsGrown(layer.patched.blades));
     }
-    // The exposures are taken once, from the scene at rest at the start (scene_snow.h says why).
-    if (snowLoadsBlades(mPhysics.snow) && mPhysics.snowLoadPerMetre.empty()) {
-        const SnowDepthMap map = sceneSnowDepthMap(mScene, mPhysics.snow, 0.0f);
-        for (const LayerField& layer : mScene.layers)
-            mPhysics.snowLoadPerMetre.push_back(
-                snowLoadPerMetre(layer.patched.blades, map, mPhysics.snow));
-    }
+    prepareSnowLoads(mPhysics, mScene);
+}
+
+void prepareSnowLoads(ScenePhysics& physics, const Scene& scene) {
+    if (!snowLoadsBlades(physics.snow) || !physics.snowLoadPerMetre.empty())
+        return;
+    const SnowDepthMap map = sceneSnowDepthMap(scene, physics.snow, 0.0f);
+    for (const LayerField& layer : scene.layers)
+        physics.snowLoadPerMetre.push_back(
+            snowLoadPerMetre(layer.patched.blades, map, physics.snow));
 }
 
 GravityLoad ScenePhysics::snowLoad(std::size_t layer, float timeS) const {
     if (layer >= snowLoadPerMetre.size() || snowLoadPerMetre[layer].empty())
         return {};
     return {snowLoadPerMetre[layer], snowAmountAt(snow, timeS)};
+}
+
+bool ScenePhysics::anySnowLoad() const {
+    return std::any_of(snowLoadPerMetre.begin(), snowLoadPerMetre.end(),
+                       [](const std::vector<float>& load) { return !load.empty(); });
+}
+
+bool ScenePhysics::snowLoadChangesWithTime() const {
+    return anySnowLoad() && snow.accumulationRate != snow.meltRate;
 }
 
 void SceneSimulation::step() {

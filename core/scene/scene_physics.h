@@ -22,12 +22,22 @@ struct ScenePhysics {
     std::vector<SphereCollider> colliders;  // spheres and packed meshes, world space
     std::vector<std::string> notes;         // what packing did (cache hits, measures)
     // Snow (SPEC §11): the project's settings, and per layer the snow load of each blade per
-    // metre of snow (scene_snow.h; empty without a load), filled by SceneSimulation.
+    // metre of snow (scene_snow.h; empty without a load), filled by prepareSnowLoads.
     SnowParams snow;
     std::vector<std::vector<float>> snowLoadPerMetre;
     // The load at timeS (GravityLoad over layer `layer`'s blades).
     GravityLoad snowLoad(std::size_t layer, float timeS) const;
+    // Whether a load lies on any blade, and whether it changes with time (the snow accumulates
+    // or melts).
+    bool anySnowLoad() const;
+    bool snowLoadChangesWithTime() const;
 };
+
+// Fills physics.snowLoadPerMetre from `scene` at rest when the snow loads blades and it is empty:
+// the exposures are taken once, at the start (scene_snow.h says why). Every simulation of a
+// scene calls it before its first step (SceneSimulation, the editor's live physics), so that
+// they bend the same blades alike.
+void prepareSnowLoads(ScenePhysics& physics, const Scene& scene);
 
 // Reads mesh collider files and packs (or loads the cached packing of) each. Errors name the
 // mesh file or the project field. `groundOrigin` is the scene's (Scene::groundOrigin): a mesh

@@ -639,6 +639,10 @@ void Editor::advanceTime() {
     state.view.timeJump = {};
     if (mLive.physics) {
         LivePhysics& physics = *mLive.physics;
+        // An edit of the Snow section re-grows nothing: once it ends (not on every frame of a
+        // drag: weighing the snow takes a while), the physics weighs the project's snow.
+        if (!mUi || mUi->context().activeId().value == 0)
+            physics.followSnow(state.doc.project().snow, *mLive.scene);
         if (jumped) {
             // The field restarts from rest at the new time (re-simulating from the start would
             // stall the scrub).
@@ -650,13 +654,17 @@ void Editor::advanceTime() {
         // What the machine could not step, per second of wall time, for the status bar.
         // While the picture is reduced for interaction, one step a frame on the GPU: the physics
         // is the one cost the rungs do not lower (4 compute-shader steps of the meadow: ~110 ms
-        // on llvmpipe). On the CPU 4 steps take ~11 ms there, so it keeps up with the clock.
+        // on llvmpipe). On the CPU as many as fit its budget (LivePhysics): 4 steps of the meadow
+        // take ~11 ms there.
         const auto physicsStart = std::chrono::steady_clock::now();
         const std::size_t computedBefore = physics.computedSteps;
-        mSkippedS = physics.advanceTo(state.view.timeline.timeS(),
-                                      state.view.quality.level() > 0 && !physics.cpu
-                                          ? 1
-                                          : LivePhysics::MAX_STEPS_PER_FRAME);
+        mSkippedS = physics.cpu ? physics.advanceTo(state.view.timeline.timeS(),
+                                                    LivePhysics::MAX_CPU_STEPS_PER_FRAME,
+                                                    LivePhysics::CPU_STEP_BUDGET_MS)
+                                : physics.advanceTo(state.view.timeline.timeS(),
+                                                    state.view.quality.level() > 0
+                                                        ? 1
+                                                        : LivePhysics::MAX_STEPS_PER_FRAME);
         state.transient.status.physicsDevice = physics.deviceLabel();
         // The GPU's steps are queued, not run, here: only the CPU's time means something, and
         // only in a frame that computed a step (paused or resting, the label says where the

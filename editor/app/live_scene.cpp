@@ -1,11 +1,13 @@
 #include "app/live_scene.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "gl/headless_context.h"
 #include "scene/scene_snow.h"
+#include "snow/snow_drift.h"
 
 namespace grass::editor {
 
@@ -41,14 +43,12 @@ bool tipsMoved(std::span<const core::Blade> blades, std::vector<glm::vec3>& show
 namespace {
 
 // Nothing in the physics scene changes with time: the step is the same function of the blades
-// at every time, so blades it leaves where they were stay there.
+// at every time, so blades it leaves where they were stay there. A snow load that neither grows
+// nor melts is such a function too (blades settle under it).
 bool timeIndependent(const core::ScenePhysics& physics) {
     const bool anyPath = std::any_of(physics.colliders.begin(), physics.colliders.end(),
                                      [](const core::SphereCollider& c) { return !c.path.empty(); });
-    const bool anyLoad =
-        std::any_of(physics.snowLoadPerMetre.begin(), physics.snowLoadPerMetre.end(),
-                    [](const std::vector<float>& load) { return !load.empty(); });
-    return physics.wind.empty() && !anyPath && !anyLoad;
+    return physics.wind.empty() && !anyPath && !physics.snowLoadChangesWithTime();
 }
 
 bool anyCrushed(const core::FieldSimulation& cpu) {
@@ -67,7 +67,21 @@ void LivePhysics::wake() {
     stillSteps = 0;
 }
 
-double LivePhysics::advanceTo(double targetS, int maxSteps) {
+bool LivePhysics::followSnow(const core::SnowParams& snow, const core::Scene& field) {
+    const core::SnowParams resolved = core::snowWithWindDrift(snow, scene.wind);
+    if (resolved == scene.snow)
+        return false;
+    scene.snow = resolved;
+    scene.snowLoadPerMetre.clear();
+    core::prepareSnowLoads(scene, field);
+    if (gpu)
+        gpu->reloadSnowLoads();
+    timeIndependent = editor::timeIndependent(scene);
+    wake();
+    return true;
+}
+
+double LivePhysics::advanceTo(double targetS, int maxSteps, double budgetMs) {
     const double dtS = scene.params.dtS;
     if (resting) {
         // The clock goes on; the blades, where the last step left them, would stay there.
@@ -77,7 +91,12 @@ double LivePhysics::advanceTo(double targetS, int maxSteps) {
         return 0.0;
     }
     int stepped = 0;
+    const auto start = std::chrono::steady_clock::now();
     for (; stepped < maxSteps && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++stepped) {
+        if (budgetMs > 0.0 && stepped > 0 &&
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count() >= budgetMs)
+            break;
         if (cpu)
             cpu->step(scene, static_cast<float>(timeS()));
         else
@@ -118,11 +137,11 @@ void LivePhysics::regrown(std::size_t layer, const core::Scene& field,
         gpu->uploadRegrown(layer, field, patches);
 }
 
-// Auto: the CPU on software GL unless snow loads the blades (field_simulation.h).
-static bool physicsOnCpu(PhysicsDevice device, const core::ScenePhysics& physics) {
+// Auto: the CPU on software GL, the GPU elsewhere.
+static bool physicsOnCpu(PhysicsDevice device) {
     if (device != PhysicsDevice::Auto)
         return device == PhysicsDevice::Cpu;
-    return gl::isSoftwareRenderer() && !core::snowLoadsBlades(physics.snow);
+    return gl::isSoftwareRenderer();
 }
 
 Live& Live::operator=(Live&& next) noexcept {
@@ -154,6 +173,11 @@ Result<GrownField> growField(core::LoadedProject loaded, bool withPhysics,
         auto built = core::buildScenePhysics(loaded, grown.scene->groundOrigin);
         if (!built)
             return built.error();
+        // The snow's load on each blade, from the field at rest, as grass render and grass sim
+        // take it: before, the live field bent under no snow at all.
+        if (progress && core::snowLoadsBlades(built->snow))
+            progress("weighing the snow on the blades");
+        core::prepareSnowLoads(*built, *grown.scene);
         grown.physics.emplace(std::move(*built));
     }
     grown.loaded = std::move(loaded);
@@ -184,7 +208,7 @@ Result<Live> bringUpLive(GrownField grown, const std::function<Result<void>(core
         physics.scene = std::move(*grown.physics);
         physics.renderer = live.renderer.get();
         physics.timeIndependent = timeIndependent(physics.scene);
-        if (physicsOnCpu(device, physics.scene)) {
+        if (physicsOnCpu(device)) {
             physics.cpu.emplace(*live.scene);
         } else {
             auto gpu =

@@ -24,8 +24,8 @@ namespace grass::editor {
 // Where the editor's live physics runs: the compute shader on the GL device, or the SIMD
 // execution on the CPU with one upload of the blades a frame. Auto: the CPU on software
 // renderers, where it is measured ~10× faster than the compute shader (llvmpipe, 2 cores: the
-// meadow steps in 2.7 ms against 28 ms; docs/physics.md), unless the scene's snow loads the
-// blades (the CPU copy does not apply snow loads); the GPU elsewhere.
+// meadow steps in 2.7 ms against 28 ms; docs/physics.md); the GPU elsewhere. Both apply the
+// snow's load (core::prepareSnowLoads, made when the field grows).
 enum class PhysicsDevice { Auto, Cpu, Gpu };
 const char* physicsDeviceName(PhysicsDevice device);  // "auto" | "cpu" | "gpu"
 
@@ -44,6 +44,13 @@ bool tipsMoved(std::span<const core::Blade> blades, std::vector<glm::vec3>& show
 
 struct LivePhysics {
     static constexpr int MAX_STEPS_PER_FRAME = 4;
+    // On the CPU a frame steps on to the timeline's time while its steps took less than
+    // CPU_STEP_BUDGET_MS, up to MAX_CPU_STEPS_PER_FRAME: at llvmpipe's 10 frames a second four
+    // steps of 1/60 s dropped a third of the time (projects/winter, whose step costs 0.35 ms,
+    // played "physics behind: skipping 0.3 s per s"), while a step's cost is known only on the
+    // CPU (the GPU's are queued).
+    static constexpr int MAX_CPU_STEPS_PER_FRAME = 16;
+    static constexpr double CPU_STEP_BUDGET_MS = 12.0;
     core::ScenePhysics scene;
     std::optional<render::ScenePhysicsGpu> gpu;
     std::optional<core::FieldSimulation> cpu;
@@ -57,11 +64,11 @@ struct LivePhysics {
     std::vector<std::vector<glm::vec3>> shownTips;  // per layer (CPU): the tips uploaded
     // A field on the CPU that nothing moves any more rests: its steps are not computed (the
     // clock still counts them) until a brush, an undo or a reset moves its blades again. It rests
-    // once nothing in the scene depends on time (no wind, no collider on a path, no snow load:
-    // timeIndependent), no blade is crushed (η = 0 everywhere) and no tip moved (tipsMoved) for
-    // REST_AFTER_STEPS steps in a row. A new project from a mesh has no wind: played, its blades
-    // settle under gravity in about a second, and stepping them on (82,913 blades of an
-    // 8.4 M-triangle mesh: 6.5 ms a frame) changed nothing on screen.
+    // once nothing in the scene depends on time (no wind, no collider on a path, no snow that
+    // grows or melts: timeIndependent), no blade is crushed (η = 0 everywhere) and no tip moved
+    // (tipsMoved) for REST_AFTER_STEPS steps in a row. A new project from a mesh has no wind:
+    // played, its blades settle under gravity in about a second, and stepping them on (82,913
+    // blades of an 8.4 M-triangle mesh: 6.5 ms a frame) changed nothing on screen.
     static constexpr std::size_t REST_AFTER_STEPS = 60;
     bool timeIndependent = false;  // set when built (bringUpLive)
     bool resting = false;
@@ -71,14 +78,20 @@ struct LivePhysics {
     double timeS() const { return static_cast<double>(steps) * scene.params.dtS; }
     // "cpu" or "gpu", for the status bar.
     std::string deviceLabel() const;
-    // Steps towards `targetS`, at most `maxSteps`; returns the time dropped this frame (0 when
-    // it kept up).
-    double advanceTo(double targetS, int maxSteps = MAX_STEPS_PER_FRAME);
+    // Steps towards `targetS`, at most `maxSteps`, and no more once `budgetMs` (> 0) of wall
+    // time went into them (one step at least); returns the time dropped this frame (0 when it
+    // kept up).
+    double advanceTo(double targetS, int maxSteps = MAX_STEPS_PER_FRAME, double budgetMs = 0.0);
     // After a brush or an undo re-grew patches of `layer`: they restart at rest.
     void regrown(std::size_t layer, const core::Scene& scene,
                  const std::vector<std::uint32_t>& patches);
     // Its blades were moved from outside (a re-grow, a reset): it steps again.
     void wake();
+    // The project's snow, after an edit of the Snow section (which re-grows nothing): when it
+    // differs from what the physics weighs, the loads are weighed again from `field` at rest
+    // (core::prepareSnowLoads; ~0.5 s for projects/winter's 1024² map on 2 cores) and the field
+    // steps on under them. Returns whether it changed anything.
+    bool followSnow(const core::SnowParams& snow, const core::Scene& field);
 };
 
 // What a project becomes on the GPU; rebuilt whole when the project is re-grown or replaced.

@@ -52,14 +52,20 @@ void ScenePhysicsGpu::step(const core::ScenePhysics& physics, float timeS) {
     for (std::size_t i = 0; i < mLayers.size(); ++i) {
         Layer& layer = mLayers[i];
         const core::GravityLoad load = physics.snowLoad(i, timeS);
-        // Uploaded once: the per-metre load is fixed when the simulation starts.
-        if (!layer.loadUploaded && !load.perBlade.empty()) {
+        // Uploaded once: the per-metre load is fixed when the simulation starts (or the snow
+        // is edited: reloadSnowLoads). An empty one frees the buffer.
+        if (!layer.loadUploaded) {
             layer.physics.setGravityLoad(load.perBlade);
             layer.loadUploaded = true;
         }
         layer.physics.step(layer.blades, layer.bladeCount, physics.params, physics.wind,
                            physics.colliders, timeS, load.scale);
     }
+}
+
+void ScenePhysicsGpu::reloadSnowLoads() {
+    for (Layer& layer : mLayers)
+        layer.loadUploaded = false;
 }
 
 void ScenePhysicsGpu::readBack(core::Scene& scene, core::SceneSimulation& simulation) const {

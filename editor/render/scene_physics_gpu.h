@@ -27,6 +27,9 @@ public:
     // rest tips follow, so physics pulls the new blades to their own rest pose.
     void uploadRegrown(std::size_t layer, const core::Scene& scene,
                        const std::vector<std::uint32_t>& patches);
+    // The snow loads of the ScenePhysics given to step changed (an edit of the snow): they are
+    // uploaded again, or freed, at the next step.
+    void reloadSnowLoads();
     // Copies blades into `scene` and η into `simulation` (which must be the scene's).
     void readBack(core::Scene& scene, core::SceneSimulation& simulation) const;
 

@@ -8,6 +8,8 @@
 #include "app/live_scene.h"
 #include "gl/headless_context.h"
 #include "gl_context_fixture.h"
+#include "scene/scene_physics.h"
+#include "support/plane_project.h"
 #include "support/test_paths.h"
 
 namespace grass::test {
@@ -113,6 +115,115 @@ TEST_F(LivePhysicsTest, AFieldThatNothingMovesRestsUntilItsBladesAreMoved) {
     for (double s = 0.1; s < 3.0; s += 0.1)
         blown.physics->advanceTo(s, 1000);
     EXPECT_FALSE(blown.physics->resting);
+}
+
+// A plane under 10 cm of snow (no wind, no collider) whose load bends the blades: 60 m/s² per
+// metre of snow on an open blade.
+core::LoadedProject snowyPlane(float loadGravity) {
+    core::LoadedProject loaded = planeFieldProject({4.0f, 8, 40.0f, 0.3f, 0.5f});
+    core::SnowParams& snow = loaded.project.snow;
+    snow.enabled = 1u;
+    snow.amountM = 0.1f;
+    snow.fallDirection = {0.0f, -1.0f, 0.0f};
+    snow.mapResolution = 256;
+    snow.loadGravity = loadGravity;
+    return loaded;
+}
+
+// The editor's live field bends under its snow as `grass render --time` bends it
+// (SceneSimulation): before, the live physics never weighed the snow, so the editor's field stood
+// upright under it, and auto sent a snowy scene to the compute shader (llvmpipe's slowest path,
+// "physics behind") for a load it did not apply. Both devices, 1 s, against the render's steps.
+TEST_F(LivePhysicsTest, TheLiveFieldBendsUnderItsSnowAsTheRenderedOneDoes) {
+    const core::LoadedProject loaded = snowyPlane(60.0f);
+    auto scene = core::buildScene(loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    auto physics = core::buildScenePhysics(loaded);
+    ASSERT_TRUE(physics.ok()) << physics.error().str();
+    const std::vector<core::Blade> rest = scene->layers[0].patched.blades;
+    core::SceneSimulation rendered(*scene, std::move(*physics));
+    ASSERT_TRUE(rendered.physics().anySnowLoad());
+
+    editor::Live cpu = liveOn(loaded, editor::PhysicsDevice::Cpu);
+    editor::Live gpu = liveOn(loaded, editor::PhysicsDevice::Gpu);
+    editor::Live automatic = liveOn(loaded, editor::PhysicsDevice::Auto);
+    EXPECT_EQ(automatic.physics->cpu.has_value(), gl::isSoftwareRenderer())
+        << "snow does not keep a software renderer's physics off the CPU";
+    EXPECT_TRUE(cpu.physics->timeIndependent) << "a load that neither grows nor melts";
+    for (double t = 0.1; t <= 1.0 + 1e-9; t += 0.1) {
+        cpu.physics->advanceTo(t, 1000);
+        gpu.physics->advanceTo(t, 1000);
+    }
+    while (rendered.stepsDone() < cpu.physics->steps)
+        rendered.step();
+    ASSERT_EQ(gpu.physics->steps, cpu.physics->steps);
+    const std::vector<core::Blade> a = rendererBlades(cpu, 0), b = rendererBlades(gpu, 0);
+    const std::vector<core::Blade>& reference = scene->layers[0].patched.blades;
+    float cpuError = 0.0f, gpuError = 0.0f, deepestDrop = 0.0f;
+    for (std::size_t i = 0; i < rest.size(); ++i) {
+        const float h = rest[i].h();
+        if (!(h > 0.0f))
+            continue;
+        cpuError = std::max(cpuError, glm::length(a[i].v2() - reference[i].v2()) / h);
+        gpuError = std::max(gpuError, glm::length(b[i].v2() - reference[i].v2()) / h);
+        deepestDrop = std::max(deepestDrop, (rest[i].v2().y - reference[i].v2().y) / h);
+    }
+    // Without the load the same field settles under gravity alone: the snow must bend it more.
+    editor::Live bare = liveOn(snowyPlane(0.0f), editor::PhysicsDevice::Cpu);
+    bare.physics->advanceTo(1.0, 1000);
+    const std::vector<core::Blade> unloaded = rendererBlades(bare, 0);
+    float bareDrop = 0.0f;
+    for (std::size_t i = 0; i < rest.size(); ++i)
+        if (rest[i].h() > 0.0f)
+            bareDrop = std::max(bareDrop, (rest[i].v2().y - unloaded[i].v2().y) / rest[i].h());
+    std::printf(
+        "[ live physics ] under snow: tips down by up to %.3f h (%.3f h without the load); "
+        "live against rendered: cpu %.3g h, gpu %.3g h\n",
+        double(deepestDrop), double(bareDrop), double(cpuError), double(gpuError));
+    EXPECT_GT(deepestDrop, bareDrop + 0.05f) << "the snow bends the rendered field";
+    EXPECT_LT(cpuError, 1e-3f);  // the CPU/GPU tolerance (docs/physics.md)
+    EXPECT_LT(gpuError, 1e-3f);
+
+    // An edit of the Snow section re-grows nothing: the live physics follows it, and the blades
+    // rise once the snow weighs nothing.
+    core::SnowParams weightless = loaded.project.snow;
+    weightless.loadGravity = 0.0f;
+    for (editor::Live* live : {&cpu, &gpu}) {
+        EXPECT_TRUE(live->physics->followSnow(weightless, *live->scene));
+        EXPECT_FALSE(live->physics->followSnow(weightless, *live->scene)) << "nothing new";
+        EXPECT_FALSE(live->physics->scene.anySnowLoad());
+        for (double t = 1.1; t <= 3.0 + 1e-9; t += 0.1)
+            live->physics->advanceTo(t, 1000);
+        const std::vector<core::Blade> risen = rendererBlades(*live, 0);
+        float drop = 0.0f;
+        for (std::size_t i = 0; i < rest.size(); ++i)
+            if (rest[i].h() > 0.0f)
+                drop = std::max(drop, (rest[i].v2().y - risen[i].v2().y) / rest[i].h());
+        std::printf("[ live physics ] %s, the snow weightless: tips down by up to %.3f h\n",
+                    live->physics->deviceLabel().c_str(), double(drop));
+        EXPECT_LT(drop, bareDrop + 0.02f) << live->physics->deviceLabel();
+    }
+}
+
+// A frame's steps stop once their wall-time budget is spent (one step at least), and what
+// they could not step is said as dropped; without a budget the step cap alone stops them.
+TEST_F(LivePhysicsTest, AFramesStepsStopAtTheirBudget) {
+    auto loaded = core::loadProject(sourceDir() / "tests/data/projects/windy");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+    editor::Live live = liveOn(*loaded, editor::PhysicsDevice::Cpu);
+    editor::LivePhysics& physics = *live.physics;
+    const double dt = physics.scene.params.dtS;
+    // A budget spent by any step: one step, the rest of the second dropped.
+    const double dropped = physics.advanceTo(1.0, 1000, 1e-9);
+    EXPECT_EQ(physics.computedSteps, 1u);
+    EXPECT_NEAR(dropped, 1.0 - dt, dt);
+    // No budget: up to the cap.
+    physics.advanceTo(2.0, 5);
+    EXPECT_EQ(physics.computedSteps, 6u);
+    // A budget no few steps spend: all the way to the clock.
+    const std::size_t before = physics.computedSteps;
+    EXPECT_EQ(physics.advanceTo(physics.timeS() + 10.5 * dt, 1000, 60000.0), 0.0);
+    EXPECT_EQ(physics.computedSteps - before, 10u);
 }
 
 TEST_F(LivePhysicsTest, AutoPicksTheCpuOnSoftwareGlAndTheGpuElsewhere) {
