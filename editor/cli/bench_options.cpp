@@ -67,7 +67,8 @@ std::optional<int> parseBenchArgs(const std::vector<std::string>& argv, BenchArg
         "renderer string. Progress goes to stderr. The full set takes a few minutes on a 2-core "
         "software rasterizer; --quick under a minute. Ctrl+C ends the run after the case under "
         "way, printing and saving the cases measured (exit 130); a second Ctrl+C ends it at "
-        "once.");
+        "once. GRASS_COMPUTE_GROUP=N (32 to 256, a multiple of 32; 32 when unset) sizes the "
+        "work groups of the physics and cull compute passes, and the table says which.");
     describeOptions(parser, args);
     if (const auto exitCode = parseArguments(parser, argv, "bench"))
         return exitCode;

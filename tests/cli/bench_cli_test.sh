@@ -39,6 +39,11 @@ if [ ! -f "$json" ]; then
 else
     grep -Eq '"format": "grass-bench"' "$json" || failures+=("no \"format\": \"grass-bench\"")
     grep -Eq '"renderer": ".+"' "$json" || failures+=("no renderer string in the JSON")
+    # The work groups of the compute passes (GRASS_COMPUTE_GROUP, unset here: 32).
+    [ "$(field compute_group)" = 32 ] ||
+        failures+=("\"compute_group\" is '$(field compute_group)', expected 32")
+    grep -Eq '^settings .*, compute groups of 32;' "$work/stdout" ||
+        failures+=("bench: the settings line does not say the compute groups")
     for key in blades_in drawn culled_share frame_wall cull opaque grass snow ui ms_per_step \
         blade_steps_per_s; do
         value=$(field "$key")
@@ -76,6 +81,8 @@ if [ -f "$json" ]; then
     run bench --results "$json" --compare "$json"
     rc=$?
     [ "$rc" -eq 0 ] || failures+=("bench --results --compare: exit code $rc, expected 0")
+    grep -Eq '^settings .*, compute groups of 32;' "$work/stdout" ||
+        failures+=("bench --results: the compute groups were not read back")
     row=$(grep -A 3 '^compared with' "$work/stdout" | grep -E '^tiny ')
     if [ -z "$row" ]; then
         failures+=("bench --compare: no ratio row for tiny")
