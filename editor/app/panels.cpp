@@ -3,6 +3,7 @@
 #include "app/autosave.h"
 #include "app/edit_actions.h"
 #include "app/mesh_import.h"
+#include "app/status_figures.h"
 
 #include <unistd.h>
 
@@ -173,19 +174,25 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
     char physics[64] = "";
     if (!s.transient.status.physicsDevice.empty()) {
         if (s.transient.status.physicsMs > 0.0)
-            std::snprintf(physics, sizeof physics, "   physics %s %.1f ms",
+            std::snprintf(physics, sizeof physics, "physics %s %.1f ms",
                           s.transient.status.physicsDevice.c_str(), s.transient.status.physicsMs);
         else
-            std::snprintf(physics, sizeof physics, "   physics %s",
+            std::snprintf(physics, sizeof physics, "physics %s",
                           s.transient.status.physicsDevice.c_str());
     }
-    char text[384];
-    std::snprintf(text, sizeof text,
-                  "%zu blades · %zu drawn%s   cull %.2f · opaque %.2f · grass %.2f%s%s ms"
-                  "   UI %.2f ms   %s",
-                  s.transient.status.blades, stems ? t.stemSetsDrawn : t.cull.drawn, physics,
-                  t.cullMs, t.meshMs, t.grassMs, far, snow, s.transient.status.uiMs,
-                  frameRateText(s.transient.status).c_str());
+    char blades[64], passes[192], uiTime[32];
+    std::snprintf(blades, sizeof blades, "%zu blades · %zu drawn", s.transient.status.blades,
+                  stems ? t.stemSetsDrawn : t.cull.drawn);
+    std::snprintf(passes, sizeof passes, "cull %.2f · opaque %.2f · grass %.2f%s%s ms", t.cullMs,
+                  t.meshMs, t.grassMs, far, snow);
+    std::snprintf(uiTime, sizeof uiTime, "UI %.2f ms", s.transient.status.uiMs);
+    // Left out first where the window is narrow: the UI's time, then the passes', the physics
+    // device, the frame rate; the blade counts stay.
+    const std::vector<StatusFigure> figures{{blades, 5},
+                                            {physics, 2},
+                                            {passes, 1},
+                                            {uiTime, 0},
+                                            {frameRateText(s.transient.status), 3}};
     ui::Ui ui(ctx, {rect.min + ui::Vec2(8.0f, 2.0f), rect.max}, ui::Layer::Panels);
     ui.horizontal([&](ui::Ui& row) {
         // The message first ("saved", "imported", a failed save in warning orange, so that it
@@ -204,13 +211,16 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
         if (const double dropped = s.transient.status.physicsDroppedS; dropped > 0.0)
             std::snprintf(behindNote, sizeof behindNote, "physics behind: skipping %.1f s per s   ",
                           dropped);
-        const float figuresWidth =
-            ctx.fonts().textSize(movingNote + behindNote + text, style.textSizePt).x;
+        const auto width = [&](std::string_view line) {
+            return ctx.fonts().textSize(line, style.textSizePt).x;
+        };
         // Less the bar's inset, the message's trailing spaces and the row's spacing after each
         // item.
         const int items = 2 + (movingNote.empty() ? 0 : 1) + (behindNote[0] != '\0' ? 1 : 0);
-        const float margin = 8.0f + ctx.fonts().textSize("   ", style.textSizePt).x +
-                             float(items) * style.itemSpacing.x;
+        const float margin = 8.0f + width("   ") + float(items) * style.itemSpacing.x;
+        const std::string text = fitStatusFigures(
+            figures, rect.width() - margin - width(movingNote + behindNote), width);
+        const float figuresWidth = width(movingNote + behindNote + text);
         const float room = std::max(s.transient.messageIsSaveError ? 0.5f * rect.width() : 0.0f,
                                     rect.width() - margin - figuresWidth);
         constexpr float LEAST_MESSAGE_WIDTH = 80.0f;

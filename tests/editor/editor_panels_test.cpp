@@ -862,9 +862,29 @@ TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
               editor.input.screenRect.max.x)
         << "the warning shows whole, whatever a narrow window cuts";
     editor.state.transient.status.physicsDroppedS = 0.0;
-    // A window too narrow for both keeps the figures; the message waits in Help › Messages.
-    editor.input.screenRect = {{0.0f, 0.0f}, {900.0f, 720.0f}};
-    EXPECT_FALSE(textStarting(editor.frame(), "cannot import"));
+    // A narrow window leaves out whole figures, the least wanted first (the UI's time), rather
+    // than cutting the line at its edge mid-word; the blade counts and the frame rate stay, and
+    // the message takes what room is left, if any (else it waits in Help › Messages).
+    // 1280 points playing a reduced picture with the physics behind, 900 without either note.
+    for (const float windowWidth : {1280.0f, 900.0f}) {
+        const bool notes = windowWidth > 1000.0f;
+        editor.state.transient.status.reduced = notes ? "MSAA off, 1/16 blades, LOD, 1/2 res" : "";
+        editor.state.transient.status.physicsDroppedS = notes ? 0.5 : 0.0;
+        editor.input.screenRect = {{0.0f, 0.0f}, {windowWidth, 720.0f}};
+        const ui::Output& narrow = editor.frame();
+        figures = textStarting(narrow, figuresStart);
+        ASSERT_TRUE(figures) << windowWidth;
+        EXPECT_LE(figures->pos.x + testFonts().textSize(figures->text, figures->sizePt).x,
+                  windowWidth)
+            << figures->text;
+        EXPECT_EQ(figures->text.find("UI "), std::string::npos) << figures->text;
+        EXPECT_TRUE(figures->text.ends_with(" fps")) << figures->text;
+        if (const auto message = textStarting(narrow, "cannot import")) {
+            EXPECT_LT(message->pos.x, figures->pos.x);
+        }
+    }
+    editor.state.transient.status.reduced.clear();
+    editor.state.transient.status.physicsDroppedS = 0.0;
     editor.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 720.0f}};
     editor.clickStartingWith("cannot import /a/very");
     ASSERT_TRUE(editor.state.transient.messagesWindow);
