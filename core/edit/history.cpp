@@ -35,6 +35,9 @@ std::size_t editBytes(const Edit& edit) {
 }
 
 void EditHistory::push(Edit edit) {
+    // The saved state lay in the redo branch this edit drops: it cannot be reached again.
+    if (mSavedAt && *mSavedAt > mDropped + mCursor)
+        mSavedAt.reset();
     while (mEdits.size() > mCursor) {
         mBytes -= mEditBytes.back();
         mEdits.pop_back();
@@ -49,7 +52,10 @@ void EditHistory::push(Edit edit) {
         mEdits.pop_front();
         mEditBytes.pop_front();
         --mCursor;
+        ++mDropped;
     }
+    if (mSavedAt && *mSavedAt < mDropped)
+        mSavedAt.reset();  // undoing can no longer go back that far
 }
 
 const Edit* EditHistory::undo() {
@@ -69,6 +75,16 @@ void EditHistory::clear() {
     mEditBytes.clear();
     mCursor = 0;
     mBytes = 0;
+    mDropped = 0;
+    mSavedAt.reset();
+}
+
+void EditHistory::markSaved() {
+    mSavedAt = mDropped + mCursor;
+}
+
+bool EditHistory::atSavePoint() const {
+    return mSavedAt && *mSavedAt == mDropped + mCursor;
 }
 
 }  // namespace grass::core

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <deque>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -60,7 +61,16 @@ public:
     std::size_t undoSteps() const { return mCursor; }
     std::size_t redoSteps() const { return mEdits.size() - mCursor; }
     std::size_t bytes() const { return mBytes; }
+    // Forgets every edit and the save point.
     void clear();
+
+    // The document was saved (or opened) as it stands: undoing or redoing back to here brings
+    // back what the file holds, so the title's * can go (atSavePoint).
+    void markSaved();
+    // Whether the done edits are those of the last markSaved. False once an edit it needs was
+    // dropped (a new edit after undoing past it, or the oldest beyond the limits), and after
+    // clear until markSaved.
+    bool atSavePoint() const;
 
 private:
     Limits mLimits;
@@ -68,6 +78,9 @@ private:
     std::deque<std::size_t> mEditBytes;
     std::size_t mCursor = 0;  // edits before it are done, from it on undone
     std::size_t mBytes = 0;
+    std::size_t mDropped = 0;  // edits dropped from the front since clear
+    // Edits done at the save point, counted from clear (mDropped + mCursor then); none: unsaved.
+    std::optional<std::size_t> mSavedAt;
 };
 
 }  // namespace grass::core

@@ -68,13 +68,18 @@ struct Applier {
         if (!edit)
             return false;
         s.transient.message = std::string(undoing ? "undid " : "redid ") + edit->label;
+        bool done = true;
         if (const auto* project = std::get_if<core::ProjectEdit>(&edit->change)) {
             s.doc.loaded.project = undoing ? project->before : project->after;
             s.doc.committed = s.doc.project();
-            s.doc.dirty = s.rebuildPending = true;
-            return true;
+            s.rebuildPending = true;
+        } else {
+            done = replayPaint(std::get<core::PaintEdit>(edit->change), undoing);
         }
-        return replayPaint(std::get<core::PaintEdit>(edit->change), undoing);
+        // Back at what the file holds: nothing is unsaved (the title's * goes, quitting asks
+        // nothing).
+        s.doc.dirty = !done || !s.doc.history.atSavePoint();
+        return done;
     }
 
     // Writes a stroke's texels back (or again) and re-grows the patches they reach.

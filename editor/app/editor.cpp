@@ -195,6 +195,10 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     }
     if (fromMesh)
         markNewFromMesh(state, start);
+    // A project read from its file is what the file holds: undoing back to here leaves nothing
+    // unsaved.
+    if (!state.doc.dirty)
+        state.doc.history.markSaved();
     state.recoveryOffer = findAutosave(state.doc.loaded);
     // A never-saved project's autosave, left by a session that ended without a clean close, is
     // offered whatever project this session opens (it has no folder to be found by).
@@ -575,6 +579,7 @@ void Editor::finishDocumentJob() {
             break;
         case DocumentAction::Open:
             state.doc.dirty = false;
+            state.doc.history.markSaved();
             state.transient.message = "opened " + state.doc.loaded.file.string();
             rememberRecent(state, state.doc.loaded.file);
             break;

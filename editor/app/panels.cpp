@@ -340,6 +340,7 @@ bool saveTo(EditorState& s, const std::string& file) {
     s.doc.loaded.file = path;
     s.doc.loaded.folder = folder;
     s.doc.dirty = false;
+    s.doc.history.markSaved();
     rememberRecent(s, path);
     s.transient.message = "saved " + path.string();
     s.transient.messageIsSaveError = false;

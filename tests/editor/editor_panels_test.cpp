@@ -1082,6 +1082,32 @@ TEST(EditorPanels, EveryTextOfTheSidePanelIsReadWholeAtItsDefaultWidth) {
     }
 }
 
+// Undoing back to what was saved leaves nothing unsaved: the title's * goes and quitting asks
+// nothing (before, any edit kept the project unsaved until the next save, its undo too).
+TEST(EditorPanels, UndoingBackToTheSavedProjectLeavesNothingUnsaved) {
+    const ScratchFolder folder("editor-save-point");
+    EditorDriver d(folder.path());
+    d.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 4000.0f}};
+    editor::resetHistory(d.state);
+    ASSERT_TRUE(editor::saveTo(d.state, (folder.path() / "project.json").string()));
+    EXPECT_FALSE(d.state.doc.dirty);
+    d.click("Wind (0)");
+    d.click("add wind");
+    editor::recordProjectEdit(d.state, false);
+    EXPECT_TRUE(d.state.doc.dirty);
+    ASSERT_TRUE(editor::undo(d.state));
+    EXPECT_FALSE(d.state.doc.dirty) << "back at what the file holds";
+    ASSERT_TRUE(editor::redo(d.state));
+    EXPECT_TRUE(d.state.doc.dirty);
+    ASSERT_TRUE(editor::undo(d.state));
+    // An edit after the undo drops the redo branch; undoing it comes back to the saved state.
+    d.click("add wind");
+    editor::recordProjectEdit(d.state, false);
+    EXPECT_TRUE(d.state.doc.dirty);
+    ASSERT_TRUE(editor::undo(d.state));
+    EXPECT_FALSE(d.state.doc.dirty);
+}
+
 // Issue 27 item 4: the brush's map exported from the paint tool's row (export…, the typed name,
 // Enter) as it is now, painted and not yet saved; a rename to another layer's name is refused.
 TEST(EditorPanels, TheBrushMapIsExportedAndATakenNameRefused) {

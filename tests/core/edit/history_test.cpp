@@ -53,6 +53,58 @@ TEST(EditHistory, ANewEditDropsTheRedoBranch) {
     EXPECT_EQ(history.undo()->label, "a");
 }
 
+// The save point: undoing or redoing back to the edits the file holds leaves nothing unsaved.
+TEST(EditHistory, UndoingBackToTheSavePointIsAtIt) {
+    EditHistory history;
+    EXPECT_FALSE(history.atSavePoint()) << "never saved";
+    history.markSaved();  // opened from a file
+    EXPECT_TRUE(history.atSavePoint());
+    history.push(projectEdit("a", 1, 2));
+    EXPECT_FALSE(history.atSavePoint());
+    history.undo();
+    EXPECT_TRUE(history.atSavePoint());
+    history.redo();
+    history.push(projectEdit("b", 2, 3));
+    history.markSaved();  // saved after a and b
+    history.undo();
+    EXPECT_FALSE(history.atSavePoint());
+    history.redo();
+    EXPECT_TRUE(history.atSavePoint());
+    history.clear();
+    EXPECT_FALSE(history.atSavePoint()) << "a new document is unsaved until saved";
+}
+
+TEST(EditHistory, ASavePointItsEditsNoLongerReachIsLost) {
+    // Saved after a and b; b undone, c done: the saved state lay in the dropped redo branch.
+    EditHistory history;
+    history.push(projectEdit("a", 1, 2));
+    history.push(projectEdit("b", 2, 3));
+    history.markSaved();
+    history.undo();
+    history.push(projectEdit("c", 2, 5));
+    history.undo();
+    EXPECT_FALSE(history.atSavePoint());
+    history.redo();
+    EXPECT_FALSE(history.atSavePoint());
+    // Saved before any edit, then more edits than the history keeps: undoing cannot go back.
+    EditHistory short3(EditHistory::Limits{3, std::size_t{1} << 30});
+    short3.markSaved();
+    for (int i = 0; i < 5; ++i)
+        short3.push(projectEdit(std::to_string(i), float(i), float(i + 1)));
+    while (short3.undo() != nullptr)
+        EXPECT_FALSE(short3.atSavePoint());
+    // Saved after the second of five kept edits: dropping older ones keeps it reachable.
+    EditHistory kept(EditHistory::Limits{4, std::size_t{1} << 30});
+    kept.push(projectEdit("0", 0, 1));
+    kept.push(projectEdit("1", 1, 2));
+    kept.markSaved();
+    for (int i = 2; i < 5; ++i)
+        kept.push(projectEdit(std::to_string(i), float(i), float(i + 1)));
+    for (int i = 0; i < 3; ++i)
+        kept.undo();
+    EXPECT_TRUE(kept.atSavePoint());
+}
+
 TEST(EditHistory, KeepsAtLeastTwoHundredStepsByDefault) {
     EditHistory history;
     for (int i = 0; i < 250; ++i)
