@@ -4,7 +4,14 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "util/assert.h"
+
 namespace grass::core {
+
+bool isBladePassGroupSize(std::uint32_t size) {
+    return size >= BLADE_PASS_GROUP_STEP && size <= MAX_BLADE_PASS_GROUP &&
+           size % BLADE_PASS_GROUP_STEP == 0;
+}
 
 Result<std::uint32_t> bladePassGroupSize(const char* text) {
     if (text == nullptr || *text == '\0')
@@ -12,8 +19,7 @@ Result<std::uint32_t> bladePassGroupSize(const char* text) {
     const char* end = text + std::strlen(text);
     std::uint32_t size = 0;
     const auto [last, error] = std::from_chars(text, end, size);
-    if (error != std::errc() || last != end || size < BLADE_PASS_GROUP_STEP ||
-        size > MAX_BLADE_PASS_GROUP || size % BLADE_PASS_GROUP_STEP != 0)
+    if (error != std::errc() || last != end || !isBladePassGroupSize(size))
         return makeError("GRASS_COMPUTE_GROUP",
                          "'" + std::string(text) +
                              "' is not a work-group size: use 32, 64, 96, ... or 256 (a multiple "
@@ -26,10 +32,12 @@ Result<std::uint32_t> bladePassGroupSizeFromEnvironment() {
 }
 
 std::string physicsGroupDefine(std::uint32_t groupSize) {
+    GRASS_ASSERT(isBladePassGroupSize(groupSize));
     return "GROUP_SIZE " + std::to_string(groupSize);
 }
 
 std::string cullGroupDefine(std::uint32_t groupSize) {
+    GRASS_ASSERT(isBladePassGroupSize(groupSize));
     return "GROUP_RUNS " + std::to_string(groupSize / BLADE_PASS_GROUP_STEP);
 }
 

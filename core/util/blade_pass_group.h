@@ -25,6 +25,9 @@ inline constexpr std::uint32_t DEFAULT_BLADE_PASS_GROUP = 32;
 inline constexpr std::uint32_t BLADE_PASS_GROUP_STEP = 32;
 inline constexpr std::uint32_t MAX_BLADE_PASS_GROUP = 256;
 
+// A size both passes can run: a multiple of 32 from 32 to 256.
+bool isBladePassGroupSize(std::uint32_t size);
+
 // The group size for GRASS_COMPUTE_GROUP's value `text` (nullptr or empty: unset, the default).
 // A value that is not a multiple of 32 from 32 to 256 is an error naming the variable.
 Result<std::uint32_t> bladePassGroupSize(const char* text);
@@ -32,7 +35,8 @@ Result<std::uint32_t> bladePassGroupSize(const char* text);
 Result<std::uint32_t> bladePassGroupSizeFromEnvironment();
 
 // The define that sizes the passes' groups (physics.comp's GROUP_SIZE, cull.comp's GROUP_RUNS
-// runs of 32 blades).
+// runs of 32 blades); the only way a size reaches the shaders, so the only place it is checked
+// (precondition: isBladePassGroupSize).
 std::string physicsGroupDefine(std::uint32_t groupSize);
 std::string cullGroupDefine(std::uint32_t groupSize);
 

@@ -285,15 +285,15 @@ Result<BenchCaseResult> measureCase(const BenchCase& c, const CaseContext& ctx) 
 }
 
 // The run's header: the renderer, the image and the geometry path every case is drawn with.
-BenchRun startRun(const BenchArgs& args, render::GeometryPath geometry) {
+BenchRun startRun(const BenchArgs& args, render::GeometryPath geometry,
+                  std::uint32_t computeGroup) {
     BenchRun run;
     run.renderer = gl::rendererDescription();
     run.width = args.width;
     run.height = args.height;
     run.msaaSamples = std::stoi(args.msaa);
     run.geometry = render::geometryPathLabel(geometry);
-    // measureRun has checked it: a bad GRASS_COMPUTE_GROUP ends the run before any case.
-    run.computeGroup = core::bladePassGroupSizeFromEnvironment().value();
+    run.computeGroup = computeGroup;
     return run;
 }
 
@@ -308,12 +308,14 @@ Result<BenchRun> measureRun(const BenchArgs& args, const std::vector<const Bench
     auto context = gl::HeadlessContext::create(args.glDebug);
     if (!context)
         return context.error();
-    if (const auto group = core::bladePassGroupSizeFromEnvironment(); !group)
+    // A bad GRASS_COMPUTE_GROUP ends the run before any case.
+    const auto group = core::bladePassGroupSizeFromEnvironment();
+    if (!group)
         return group.error();
     const auto path = core::parseGeometryPath(args.geometry);
     const render::GeometryPath geometry = render::resolveGeometryPath(
         path ? *path : core::GeometryPath::Auto, gl::isSoftwareRenderer());
-    BenchRun run = startRun(args, geometry);
+    BenchRun run = startRun(args, geometry, *group);
     std::fprintf(stderr, "bench: %zu case(s) on %s\n", cases.size(), run.renderer.c_str());
     for (std::size_t i = 0; i < cases.size(); ++i) {
         if (stop.stop_requested()) {

@@ -24,8 +24,6 @@ Result<CullPass> CullPass::create() {
 }
 
 Result<CullPass> CullPass::create(std::uint32_t groupSize) {
-    GRASS_ASSERT(groupSize % core::BLADE_PASS_GROUP_STEP == 0 &&
-                 groupSize <= core::MAX_BLADE_PASS_GROUP && groupSize > 0);
     auto program = gl::Program::load({{GL_COMPUTE_SHADER, "cull.comp"}}, "blade cull",
                                      {core::cullGroupDefine(groupSize)});
     if (!program)

@@ -30,8 +30,6 @@ Result<PhysicsGpu> PhysicsGpu::load() {
 }
 
 Result<PhysicsGpu> PhysicsGpu::load(std::uint32_t groupSize) {
-    GRASS_ASSERT(groupSize % core::BLADE_PASS_GROUP_STEP == 0 &&
-                 groupSize <= core::MAX_BLADE_PASS_GROUP && groupSize > 0);
     auto program = gl::Program::load({{GL_COMPUTE_SHADER, "physics.comp"}}, "blade physics",
                                      {core::physicsGroupDefine(groupSize)});
     if (!program)

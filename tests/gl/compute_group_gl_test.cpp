@@ -75,10 +75,13 @@ CullOutcome cullWith(std::uint32_t groupSize, const core::Scene& scene,
     return out;
 }
 
+// A plane field grown from tests/support/plane_project.h.
+Result<core::Scene> planeField(float sizeM, float density) {
+    return core::buildScene(planeFieldProject({sizeM, 8, density, 0.3f, 0.5f}, sourceDir()));
+}
+
 TEST_F(ComputeGroupTest, TheCullListsTheSameBladesInGroupsOf32And256) {
-    const core::LoadedProject loaded =
-        planeFieldProject({8.0f, 8, 300.0f, 0.3f, 0.5f}, sourceDir());
-    auto scene = core::buildScene(loaded);
+    auto scene = planeField(8.0f, 300.0f);
     ASSERT_TRUE(scene.ok()) << scene.error().str();
     // Patches of 32, the smallest the layout allows, so that the 8 runs of a group of 256 meet
     // patches in view and out of it; the field ends inside a group, whose last runs lie past it.
@@ -136,9 +139,7 @@ std::vector<core::Blade> readBlades(const gl::Buffer& buffer, std::size_t count)
 }
 
 TEST_F(ComputeGroupTest, ThePhysicsStepsTheSameBladesInGroupsOf32And256) {
-    const core::LoadedProject loaded =
-        planeFieldProject({4.0f, 8, 150.0f, 0.3f, 0.5f}, sourceDir());
-    auto scene = core::buildScene(loaded);
+    auto scene = planeField(4.0f, 150.0f);
     ASSERT_TRUE(scene.ok()) << scene.error().str();
     // A count that ends inside a group of 256, whose last invocations lie past the field.
     std::vector<core::Blade> start = scene->layers.front().patched.blades;

@@ -30,6 +30,13 @@ TEST(BladePassGroup, AnyOtherValueIsAnErrorNamingTheVariable) {
     }
 }
 
+TEST(BladePassGroup, ASizeIsOneBothPassesCanRun) {
+    for (const std::uint32_t size : {32u, 64u, 224u, 256u})
+        EXPECT_TRUE(isBladePassGroupSize(size)) << size;
+    for (const std::uint32_t size : {0u, 16u, 48u, 288u, 1024u})
+        EXPECT_FALSE(isBladePassGroupSize(size)) << size;
+}
+
 TEST(BladePassGroup, TheDefinesSizeEachShadersGroup) {
     EXPECT_EQ(physicsGroupDefine(256), "GROUP_SIZE 256");
     EXPECT_EQ(cullGroupDefine(256), "GROUP_RUNS 8");
