@@ -6,7 +6,9 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
+#include <ctime>
 
 namespace grass::core {
 
@@ -15,14 +17,32 @@ namespace {
 // Set by the handler; a lock-free atomic is safe to store from a signal handler.
 std::atomic<int> gCaught{0};
 static_assert(std::atomic<int>::is_always_lock_free);
+// When the first came (CLOCK_MONOTONIC, ns; 0: none yet), to tell a second request from the
+// first relayed twice.
+std::atomic<std::int64_t> gCaughtAtNs{0};
+static_assert(std::atomic<std::int64_t>::is_always_lock_free);
 // The handler's word to the watcher: a byte written to this pipe (write is async-signal-safe),
 // so the watcher sleeps in read() instead of polling (the editor at rest must not wake).
 int gWakeFd = -1;
 
+std::int64_t monotonicNs() {
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe (POSIX)
+    return std::int64_t{now.tv_sec} * 1'000'000'000 + now.tv_nsec;
+}
+
 extern "C" void onInterrupt(int sig) {
-    int none = 0;
-    if (!gCaught.compare_exchange_strong(none, sig))
+    const std::int64_t now = monotonicNs();
+    std::int64_t first = 0;
+    if (!gCaughtAtNs.compare_exchange_strong(first, now)) {
+        // One Ctrl+C can arrive twice: `timeout` relays a signal to the command and again to
+        // its process group, and a multi-threaded process may take both (one per thread) before
+        // they merge. Two within the window are that one request; no hand presses twice so fast.
+        if (now - first < InterruptStop::SAME_REQUEST_NS)
+            return;
         _exit(128 + sig);  // the second: at once (_exit is async-signal-safe)
+    }
+    gCaught.store(sig);
     const char byte = 1;
     [[maybe_unused]] const ssize_t written = ::write(gWakeFd, &byte, 1);
 }
@@ -31,6 +51,7 @@ extern "C" void onInterrupt(int sig) {
 
 InterruptStop::InterruptStop() {
     gCaught.store(0);
+    gCaughtAtNs.store(0);
     if (::pipe2(mPipe, O_CLOEXEC) != 0) {
         mPipe[0] = mPipe[1] = -1;  // no watcher: the signals keep their default
         return;

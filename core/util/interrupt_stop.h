@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdint>
 #include <stop_token>
 #include <thread>
 
@@ -17,6 +18,10 @@ namespace grass::core {
 
 class InterruptStop {
 public:
+    // A second signal sooner than this after the first is the first relayed again (by
+    // `timeout`, say), not a second request: 100 ms is below any two presses of Ctrl+C.
+    static constexpr std::int64_t SAME_REQUEST_NS = 100'000'000;
+
     // Catches SIGINT and SIGTERM (a handler, not a blocked mask: the processes a command starts
     // get the default disposition back when they exec) until destroyed. One at a time.
     InterruptStop();

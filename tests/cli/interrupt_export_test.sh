@@ -23,7 +23,7 @@ cp "$out/grass.gltf" "$work/grass.gltf.before" || fail "the export wrote no gras
 temporaries() { find "$1" -name '.*.tmp-*' | wc -l; }
 
 # interrupt SIGNALS...: an export at LOD 1 (other files than those in place), each signal sent
-# once it is writing (20 ms apart); prints its exit status. Its stderr is in $work/err.
+# once it is writing (300 ms apart); prints its exit status. Its stderr is in $work/err.
 interrupt() {
     GRASS_TEST_SAVE_DELAY_MS=400 "$bin" export "$project" --out "$out" --lod 1 \
         >/dev/null 2>"$work/err" &
