@@ -188,10 +188,34 @@ SceneSimulation::SceneSimulation(Scene& scene, ScenePhysics physics, unsigned th
 void prepareSnowLoads(ScenePhysics& physics, const Scene& scene) {
     if (!snowLoadsBlades(physics.snow) || !physics.snowLoadPerMetre.empty())
         return;
-    const SnowDepthMap map = sceneSnowDepthMap(scene, physics.snow, 0.0f);
+    auto weigher = std::make_shared<const SnowWeigher>(sceneSnowDepthMap(scene, physics.snow, 0.0f),
+                                                       physics.snow);
     for (const LayerField& layer : scene.layers)
-        physics.snowLoadPerMetre.push_back(
-            snowLoadPerMetre(layer.patched.blades, map, physics.snow));
+        physics.snowLoadPerMetre.push_back(weigher->loadsPerMetre(layer.patched.blades));
+    physics.snowWeigher = std::move(weigher);
+}
+
+void reweighSnowLoads(ScenePhysics& physics, const Scene& scene, std::size_t layer,
+                      std::span<const std::uint32_t> patches) {
+    if (!physics.snowWeigher || layer >= physics.snowLoadPerMetre.size() ||
+        layer >= scene.layers.size())
+        return;
+    std::vector<float>& load = physics.snowLoadPerMetre[layer];
+    const PatchedBlades& field = scene.layers[layer].patched;
+    if (load.empty())
+        return;
+    // Slots never move (layer_growth.h), but a re-grow that changed the layout all the same
+    // weighs the whole layer rather than read past its end.
+    if (load.size() != field.blades.size()) {
+        load = physics.snowWeigher->loadsPerMetre(field.blades);
+        return;
+    }
+    for (const std::uint32_t patch : patches) {
+        const std::size_t first = std::size_t(patch) * field.patchSize;
+        const std::size_t end = std::min(first + field.patchSize, load.size());
+        for (std::size_t i = first; i < end; ++i)
+            load[i] = physics.snowWeigher->loadPerMetre(field.blades[i]);
+    }
 }
 
 GravityLoad ScenePhysics::snowLoad(std::size_t layer, float timeS) const {

@@ -4,6 +4,9 @@
 // --time` and the editor, so they simulate the same scene.
 #pragma once
 
+#include <cstdint>
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -12,6 +15,7 @@
 #include "physics/physics_simd.h"
 #include "project/project.h"
 #include "scene/scene.h"
+#include "scene/scene_snow.h"
 #include "snow/snow_params.h"
 
 namespace grass::core {
@@ -25,6 +29,9 @@ struct ScenePhysics {
     // metre of snow (scene_snow.h; empty without a load), filled by prepareSnowLoads.
     SnowParams snow;
     std::vector<std::vector<float>> snowLoadPerMetre;
+    // What weighed them (with the snow map it rendered), kept to weigh re-grown blades alike
+    // (reweighSnowLoads); null until prepareSnowLoads weighs a load.
+    std::shared_ptr<const SnowWeigher> snowWeigher;
     // The load at timeS (GravityLoad over layer `layer`'s blades).
     GravityLoad snowLoad(std::size_t layer, float timeS) const;
     // Whether a load lies on any blade, and whether it changes with time (the snow accumulates
@@ -38,6 +45,12 @@ struct ScenePhysics {
 // scene calls it before its first step (SceneSimulation, the editor's live physics), so that
 // they bend the same blades alike.
 void prepareSnowLoads(ScenePhysics& physics, const Scene& scene);
+// After a brush, an undo or a regrowth re-grew `patches` of layer `layer` (scene.h,
+// RegrowReport): their slots' loads weighed anew, as prepareSnowLoads would weigh the blades
+// now there. Before, a blade grown into an empty slot carried no snow and a re-grown one the
+// load of the blade before it. Nothing without a load on that layer.
+void reweighSnowLoads(ScenePhysics& physics, const Scene& scene, std::size_t layer,
+                      std::span<const std::uint32_t> patches);
 
 // Reads mesh collider files and packs (or loads the cached packing of) each. Errors name the
 // mesh file or the project field. `groundOrigin` is the scene's (Scene::groundOrigin): a mesh

@@ -42,29 +42,40 @@ bool snowLoadsBlades(const SnowParams& params) {
            (params.amountM > 0.0f || params.accumulationRate > params.meltRate);
 }
 
+SnowWeigher::SnowWeigher(SnowDepthMap map, const SnowParams& params)
+    : mMap(std::move(map)), mParams(params), mPerMetre(params), mLoads(snowLoadsBlades(params)) {
+    mPerMetre.amountM = 1.0f;
+    // params' drift direction is resolved (snowWithWindDrift), as the renderer's is.
+    if (mLoads)
+        mDrift = computeSnowDriftMap(mMap, mParams,
+                                     snowDriftMapDirection(mMap.view, mParams.driftDirection));
+}
+
+float SnowWeigher::loadPerMetre(const Blade& blade) const {
+    if (!mLoads || !(blade.h() > 0.0f))
+        return 0.0f;
+    const float rootFe = snowBoundaryExposure(mMap, blade.v0(), blade.up(), mPerMetre);
+    const float depth = snowDepthAt(blade.v0(), rootFe, mPerMetre,
+                                    snowDriftFactorAt(mDrift, mMap.view, blade.v0()));
+    const float tipFe = exposureCoefficient(mMap, blade.v2(), snowUp(mParams), mParams.samples,
+                                            mParams.sampleRadiusTexels, mParams.depthBiasM);
+    return snowLoadGravity(mPerMetre, depth, tipFe);
+}
+
+std::vector<float> SnowWeigher::loadsPerMetre(std::span<const Blade> blades) const {
+    if (!mLoads)
+        return {};
+    std::vector<float> load(blades.size(), 0.0f);
+    for (std::size_t i = 0; i < blades.size(); ++i)
+        load[i] = loadPerMetre(blades[i]);
+    return load;
+}
+
 std::vector<float> snowLoadPerMetre(std::span<const Blade> blades, const SnowDepthMap& map,
                                     const SnowParams& params) {
     if (!snowLoadsBlades(params))
         return {};
-    SnowParams perMetre = params;
-    perMetre.amountM = 1.0f;
-    const glm::vec3 up = snowUp(params);
-    // params' drift direction is resolved (snowWithWindDrift), as the renderer's is.
-    const SnowDriftMap drift =
-        computeSnowDriftMap(map, params, snowDriftMapDirection(map.view, params.driftDirection));
-    std::vector<float> load(blades.size(), 0.0f);
-    for (std::size_t i = 0; i < blades.size(); ++i) {
-        const Blade& blade = blades[i];
-        if (!(blade.h() > 0.0f))
-            continue;
-        const float rootFe = snowBoundaryExposure(map, blade.v0(), blade.up(), perMetre);
-        const float depth = snowDepthAt(blade.v0(), rootFe, perMetre,
-                                        snowDriftFactorAt(drift, map.view, blade.v0()));
-        const float tipFe = exposureCoefficient(map, blade.v2(), up, params.samples,
-                                                params.sampleRadiusTexels, params.depthBiasM);
-        load[i] = snowLoadGravity(perMetre, depth, tipFe);
-    }
-    return load;
+    return SnowWeigher(map, params).loadsPerMetre(blades);
 }
 
 }  // namespace grass::core

@@ -73,6 +73,7 @@ bool LivePhysics::followSnow(const core::SnowParams& snow, const core::Scene& fi
         return false;
     scene.snow = resolved;
     scene.snowLoadPerMetre.clear();
+    scene.snowWeigher.reset();
     core::prepareSnowLoads(scene, field);
     if (gpu)
         gpu->reloadSnowLoads();
@@ -129,6 +130,11 @@ double LivePhysics::advanceTo(double targetS, int maxSteps, double budgetMs) {
 
 void LivePhysics::regrown(std::size_t layer, const core::Scene& field,
                           const std::vector<std::uint32_t>& patches) {
+    // The re-grown blades carry the snow the rest of the field does (as a field grown so
+    // carries it in grass render and grass sim).
+    core::reweighSnowLoads(scene, field, layer, patches);
+    if (gpu && scene.anySnowLoad())
+        gpu->reloadSnowLoads();
     if (cpu) {
         cpu->resetPatches(layer, field, patches);
         shownTips.clear();  // the renderer has the patches at rest: compare anew

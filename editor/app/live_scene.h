@@ -82,7 +82,8 @@ struct LivePhysics {
     // time went into them (one step at least); returns the time dropped this frame (0 when it
     // kept up).
     double advanceTo(double targetS, int maxSteps = MAX_STEPS_PER_FRAME, double budgetMs = 0.0);
-    // After a brush or an undo re-grew patches of `layer`: they restart at rest.
+    // After a brush or an undo re-grew patches of `layer`: they restart at rest, under the
+    // snow they now carry (core::reweighSnowLoads).
     void regrown(std::size_t layer, const core::Scene& scene,
                  const std::vector<std::uint32_t>& patches);
     // Its blades were moved from outside (a re-grow, a reset): it steps again.

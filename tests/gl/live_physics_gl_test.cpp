@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <memory>
+#include <optional>
 
 #include "app/live_scene.h"
 #include "gl/headless_context.h"
 #include "gl_context_fixture.h"
 #include "scene/scene_physics.h"
+#include "support/density_dab.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"
 
@@ -130,18 +133,35 @@ core::LoadedProject snowyPlane(float loadGravity) {
     return loaded;
 }
 
+// A project as `grass render --time` simulates it (SceneSimulation), with its blades at rest.
+struct RenderedField {
+    core::Scene scene;
+    std::vector<core::Blade> rest;
+    std::optional<core::SceneSimulation> simulation;  // steps `scene`
+};
+std::unique_ptr<RenderedField> renderedField(const core::LoadedProject& loaded) {
+    auto scene = core::buildScene(loaded);
+    auto physics = core::buildScenePhysics(loaded);
+    EXPECT_TRUE(scene.ok() && physics.ok());
+    if (!scene.ok() || !physics.ok())
+        return nullptr;
+    auto field = std::make_unique<RenderedField>();
+    field->scene = std::move(*scene);
+    field->rest = field->scene.layers[0].patched.blades;
+    field->simulation.emplace(field->scene, std::move(*physics));
+    return field;
+}
+
 // The editor's live field bends under its snow as `grass render --time` bends it
 // (SceneSimulation): before, the live physics never weighed the snow, so the editor's field stood
 // upright under it, and auto sent a snowy scene to the compute shader (llvmpipe's slowest path,
 // "physics behind") for a load it did not apply. Both devices, 1 s, against the render's steps.
 TEST_F(LivePhysicsTest, TheLiveFieldBendsUnderItsSnowAsTheRenderedOneDoes) {
     const core::LoadedProject loaded = snowyPlane(60.0f);
-    auto scene = core::buildScene(loaded);
-    ASSERT_TRUE(scene.ok()) << scene.error().str();
-    auto physics = core::buildScenePhysics(loaded);
-    ASSERT_TRUE(physics.ok()) << physics.error().str();
-    const std::vector<core::Blade> rest = scene->layers[0].patched.blades;
-    core::SceneSimulation rendered(*scene, std::move(*physics));
+    const auto field = renderedField(loaded);
+    ASSERT_TRUE(field);
+    const std::vector<core::Blade>& rest = field->rest;
+    core::SceneSimulation& rendered = *field->simulation;
     ASSERT_TRUE(rendered.physics().anySnowLoad());
 
     editor::Live cpu = liveOn(loaded, editor::PhysicsDevice::Cpu);
@@ -158,7 +178,7 @@ TEST_F(LivePhysicsTest, TheLiveFieldBendsUnderItsSnowAsTheRenderedOneDoes) {
         rendered.step();
     ASSERT_EQ(gpu.physics->steps, cpu.physics->steps);
     const std::vector<core::Blade> a = rendererBlades(cpu, 0), b = rendererBlades(gpu, 0);
-    const std::vector<core::Blade>& reference = scene->layers[0].patched.blades;
+    const std::vector<core::Blade>& reference = field->scene.layers[0].patched.blades;
     float cpuError = 0.0f, gpuError = 0.0f, deepestDrop = 0.0f;
     for (std::size_t i = 0; i < rest.size(); ++i) {
         const float h = rest[i].h();
@@ -202,6 +222,49 @@ TEST_F(LivePhysicsTest, TheLiveFieldBendsUnderItsSnowAsTheRenderedOneDoes) {
         std::printf("[ live physics ] %s, the snow weightless: tips down by up to %.3f h\n",
                     live->physics->deviceLabel().c_str(), double(drop));
         EXPECT_LT(drop, bareDrop + 0.02f) << live->physics->deviceLabel();
+    }
+}
+
+// The brush in winter: blades painted back into a bare patch bend under the snow as the field
+// grown with them bends in grass render. Before, the live physics kept each slot's load from
+// when the field was weighed, so they stood upright in the snow (both devices).
+TEST_F(LivePhysicsTest, BladesTheBrushPaintsBackBendUnderTheSnow) {
+    const core::LoadedProject loaded = snowyPlane(60.0f);
+    const auto field = renderedField(loaded);
+    ASSERT_TRUE(field);
+    const std::vector<core::Blade>& rest = field->rest;
+    core::SceneSimulation& rendered = *field->simulation;
+    const float openX = -1.4f;
+    for (const auto device : {editor::PhysicsDevice::Cpu, editor::PhysicsDevice::Gpu}) {
+        // The field weighed with a bare patch (as when the eraser ran before the snow came).
+        auto grown = editor::growField(loaded, true);
+        ASSERT_TRUE(grown.ok()) << grown.error().str();
+        paintDensityDab(*grown->scene, core::BrushMode::Subtract, openX);
+        grown->physics->snowLoadPerMetre.clear();
+        core::prepareSnowLoads(*grown->physics, *grown->scene);
+        auto live = editor::bringUpLive(std::move(*grown), {}, device);
+        ASSERT_TRUE(live.ok()) << live.error().str();
+        // The brush paints the blades back: the field is the project's again, slot for slot.
+        const core::RegrowReport back = paintDensityDab(*live->scene, core::BrushMode::Add, openX);
+        ASSERT_FALSE(back.patches.empty());
+        ASSERT_EQ(live->scene->layers[0].patched.blades, rest);
+        live->renderer->uploadRegrown(0, back);
+        live->physics->regrown(0, *live->scene, back.patches);
+        for (double t = 0.1; t <= 1.0 + 1e-9; t += 0.1)
+            live->physics->advanceTo(t, 1000);
+        while (rendered.stepsDone() < live->physics->steps)
+            rendered.step();
+        ASSERT_EQ(rendered.stepsDone(), live->physics->steps);
+        const std::vector<core::Blade> shown = rendererBlades(*live, 0);
+        const std::vector<core::Blade>& reference = field->scene.layers[0].patched.blades;
+        float worst = 0.0f;
+        for (std::size_t i = 0; i < rest.size(); ++i)
+            if (rest[i].h() > 0.0f)
+                worst =
+                    std::max(worst, glm::length(shown[i].v2() - reference[i].v2()) / rest[i].h());
+        std::printf("[ live physics ] %s, blades painted back under snow: %.3g h from the render\n",
+                    live->physics->deviceLabel().c_str(), double(worst));
+        EXPECT_LT(worst, 1e-3f) << live->physics->deviceLabel();  // the CPU/GPU tolerance
     }
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "scene/scene_physics.h"
+#include "support/density_dab.h"
 #include "support/plane_project.h"
 
 namespace grass::core {
@@ -143,6 +144,59 @@ TEST(SceneSnow, AZeroLoadLeavesTheStepBitIdentical) {
     EXPECT_EQ(plain, zero);
     EXPECT_EQ(plain, nan) << "a non-finite load counts as none";
     EXPECT_LT(heavy.v2().y, plain.v2().y);
+}
+
+}  // namespace
+}  // namespace grass::core
+
+namespace grass::core {
+namespace {
+
+// The editor's brush in winter: blades painted back into a bare patch carry the snow their
+// neighbours carry, as a field grown so carries it in grass render. Before, the live physics
+// kept each slot's load from when the field was weighed, so the new blades stood under none.
+TEST(SceneSnow, BladesABrushRegrowsCarryTheSnowAFieldGrownSoCarries) {
+    LoadedProject loaded = snowyPlane();
+    auto scene = buildScene(loaded);
+    ASSERT_TRUE(scene) << scene.error().str();
+    const float openX = -1.4f;  // in the open, away from the ball's shelter
+    test::paintDensityDab(*scene, BrushMode::Subtract, openX);
+    auto physics = buildScenePhysics(loaded);
+    ASSERT_TRUE(physics) << physics.error().str();
+    prepareSnowLoads(*physics, *scene);  // the field with its bare patch, weighed
+    const std::vector<float> weighedBare = physics->snowLoadPerMetre.front();
+
+    const RegrowReport back = test::paintDensityDab(*scene, BrushMode::Add, openX);
+    ASSERT_FALSE(back.patches.empty());
+    reweighSnowLoads(*physics, *scene, 0, back.patches);
+
+    ScenePhysics grownSo = *buildScenePhysics(loaded);
+    prepareSnowLoads(grownSo, *scene);
+    const std::vector<float>& expected = grownSo.snowLoadPerMetre.front();
+    const std::vector<float>& load = physics->snowLoadPerMetre.front();
+    ASSERT_EQ(load.size(), expected.size());
+    std::size_t regained = 0;
+    for (std::size_t i = 0; i < load.size(); ++i) {
+        EXPECT_EQ(load[i], expected[i]) << "slot " << i;
+        regained += weighedBare[i] == 0.0f && load[i] > 0.0f ? 1 : 0;
+    }
+    EXPECT_GT(regained, 20u) << "blades grown back into the bare patch, now under snow";
+}
+
+// A layer without a load, or a physics never weighed, stays as it is.
+TEST(SceneSnow, ReweighingWithoutALoadChangesNothing) {
+    LoadedProject loaded = snowyPlane();
+    loaded.project.snow.enabled = 0u;
+    auto scene = buildScene(loaded);
+    ASSERT_TRUE(scene) << scene.error().str();
+    auto physics = buildScenePhysics(loaded);
+    ASSERT_TRUE(physics) << physics.error().str();
+    prepareSnowLoads(*physics, *scene);
+    const RegrowReport back = test::paintDensityDab(*scene, BrushMode::Subtract, -1.4f);
+    reweighSnowLoads(*physics, *scene, 0, back.patches);
+    reweighSnowLoads(*physics, *scene, 7, back.patches);  // no such layer
+    EXPECT_FALSE(physics->anySnowLoad());
+    EXPECT_EQ(physics->snowWeigher, nullptr);
 }
 
 }  // namespace
