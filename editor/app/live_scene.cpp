@@ -40,6 +40,15 @@ bool tipsMoved(std::span<const core::Blade> blades, std::vector<glm::vec3>& show
     return moved;
 }
 
+bool anyRecovering(std::span<const float> eta, std::span<const float> etaBefore, float decay) {
+    const bool compared = eta.size() == etaBefore.size();
+    for (std::size_t i = 0; i < eta.size(); ++i)
+        // Written so that a NaN η counts as recovering.
+        if (eta[i] != 0.0f && (!compared || !(eta[i] >= etaBefore[i] - 0.5f * decay)))
+            return true;
+    return false;
+}
+
 namespace {
 
 // Nothing in the physics scene changes with time: the step is the same function of the blades
@@ -51,12 +60,15 @@ bool timeIndependent(const core::ScenePhysics& physics) {
     return physics.wind.empty() && !anyPath && !physics.snowLoadChangesWithTime();
 }
 
-bool anyCrushed(const core::FieldSimulation& cpu) {
-    for (std::size_t layer = 0; layer < cpu.layerCount(); ++layer) {
-        const std::span<const float> eta = cpu.eta(layer);
-        if (std::any_of(eta.begin(), eta.end(), [](float e) { return e != 0.0f; }))
+bool anyRecovering(const core::FieldSimulation& cpu,
+                   const std::vector<std::vector<float>>& etaBefore, float decay) {
+    for (std::size_t layer = 0; layer < cpu.layerCount(); ++layer)
+        if (editor::anyRecovering(cpu.eta(layer),
+                                  layer < etaBefore.size()
+                                      ? std::span<const float>(etaBefore[layer])
+                                      : std::span<const float>(),
+                                  decay))
             return true;
-    }
     return false;
 }
 
@@ -91,6 +103,12 @@ double LivePhysics::advanceTo(double targetS, int maxSteps, double budgetMs) {
         moved = false;
         return 0.0;
     }
+    // η as the frame found it, to tell the blades a collider holds from those recovering.
+    if (cpu && timeIndependent) {
+        etaBefore.resize(cpu->layerCount());
+        for (std::size_t layer = 0; layer < cpu->layerCount(); ++layer)
+            etaBefore[layer].assign(cpu->eta(layer).begin(), cpu->eta(layer).end());
+    }
     int stepped = 0;
     const auto start = std::chrono::steady_clock::now();
     for (; stepped < maxSteps && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++stepped) {
@@ -116,7 +134,10 @@ double LivePhysics::advanceTo(double targetS, int maxSteps, double budgetMs) {
                     renderer->uploadBlades(layer, cpu->blades(layer));
             }
         stillSteps = moved ? 0 : stillSteps + static_cast<std::size_t>(stepped);
-        resting = timeIndependent && stillSteps >= REST_AFTER_STEPS && !anyCrushed(*cpu);
+        const float decayPerS =
+            std::isfinite(scene.params.etaDecayPerS) ? scene.params.etaDecayPerS : 0.0f;
+        resting = timeIndependent && stillSteps >= REST_AFTER_STEPS &&
+                  !anyRecovering(*cpu, etaBefore, decayPerS * static_cast<float>(stepped * dtS));
     }
     const double behindS = targetS - timeS();
     if (behindS < dtS)

@@ -41,6 +41,13 @@ const char* physicsDeviceName(PhysicsDevice device);  // "auto" | "cpu" | "gpu"
 // the share (1e-4 of a 0.5 m blade: 50 µm).
 inline constexpr float STILL_TIP_SHARE = 1e-4f;
 bool tipsMoved(std::span<const core::Blade> blades, std::vector<glm::vec3>& shownTips);
+// Whether a crushed blade is recovering: its η fell over the frame by more than half the pure
+// decay (`decay`, etaDecayPerS times the frame's simulated time), so no collider pressed it. Such
+// a blade may stand still while η decays (its stiffness held at crushedRecoveryFloor) and rise
+// once η falls below 1 − floor: the field must not rest. A blade a static collider holds down
+// (a rock on the grass) has η rising, or falling less (collisions add to it): the step keeps it
+// where it is. `etaBefore` empty or of another size: recovering (nothing to compare).
+bool anyRecovering(std::span<const float> eta, std::span<const float> etaBefore, float decay);
 
 struct LivePhysics {
     static constexpr int MAX_STEPS_PER_FRAME = 4;
@@ -62,11 +69,13 @@ struct LivePhysics {
     // Always true on the GPU, whose blades are stepped in place and never read back.
     bool moved = true;
     std::vector<std::vector<glm::vec3>> shownTips;  // per layer (CPU): the tips uploaded
+    std::vector<std::vector<float>> etaBefore;      // per layer (CPU): η before the frame's steps
     // A field on the CPU that nothing moves any more rests: its steps are not computed (the
     // clock still counts them) until a brush, an undo or a reset moves its blades again. It rests
     // once nothing in the scene depends on time (no wind, no collider on a path, no snow that
-    // grows or melts: timeIndependent), no blade is crushed (η = 0 everywhere) and no tip moved
-    // (tipsMoved) for REST_AFTER_STEPS steps in a row. A new project from a mesh has no wind:
+    // grows or melts: timeIndependent), no crushed blade is recovering (anyRecovering: a blade
+    // under a rock stays crushed, a trail must rise) and no tip moved (tipsMoved) for
+    // REST_AFTER_STEPS steps in a row. A new project from a mesh has no wind:
     // played, its blades settle under gravity in about a second, and stepping them on (82,913
     // blades of an 8.4 M-triangle mesh: 6.5 ms a frame) changed nothing on screen.
     static constexpr std::size_t REST_AFTER_STEPS = 60;

@@ -58,3 +58,27 @@ TEST(TipsMoved, ANaNTipIsAMove) {
 
 }  // namespace
 }  // namespace grass::editor
+
+namespace grass::editor {
+namespace {
+
+// A crushed blade a collider keeps pressing (η rising, or falling by less than half the frame's
+// decay) lets the field rest; one whose η fell by the decay (nothing presses it: it will rise)
+// does not; η 0 is no crush at all; a NaN η or nothing to compare with counts as recovering.
+TEST(AnyRecovering, OnlyABladeWhoseCrushDecaysUnpressedKeepsTheFieldAwake) {
+    const float decay = 0.5f / 60.0f;  // one step of the default decay
+    const std::vector<float> before{0.0f, 3.0f, 40.0f};
+    EXPECT_FALSE(anyRecovering(std::vector<float>{0.0f, 3.2f, 40.0f}, before, decay)) << "pressed";
+    EXPECT_FALSE(anyRecovering(std::vector<float>{0.0f, 3.0f - 0.4f * decay, 40.0f}, before, decay))
+        << "pressed a little less than it decays";
+    EXPECT_TRUE(anyRecovering(std::vector<float>{0.0f, 3.0f - decay, 40.0f}, before, decay))
+        << "decaying freely";
+    EXPECT_FALSE(anyRecovering(std::vector<float>{0.0f, 0.0f, 40.0f}, before, decay))
+        << "recovered: η 0";
+    EXPECT_TRUE(anyRecovering(std::vector<float>{0.0f, 3.0f, std::nanf("")}, before, decay));
+    EXPECT_TRUE(anyRecovering(std::vector<float>{3.0f}, {}, decay)) << "nothing to compare with";
+    EXPECT_FALSE(anyRecovering(std::vector<float>{0.0f}, {}, decay)) << "nothing crushed";
+}
+
+}  // namespace
+}  // namespace grass::editor

@@ -3,6 +3,7 @@
 // devices must move the renderer's blades alike, and auto must pick the CPU on llvmpipe.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <optional>
@@ -118,6 +119,49 @@ TEST_F(LivePhysicsTest, AFieldThatNothingMovesRestsUntilItsBladesAreMoved) {
     for (double s = 0.1; s < 3.0; s += 0.1)
         blown.physics->advanceTo(s, 1000);
     EXPECT_FALSE(blown.physics->resting);
+}
+
+// The largest η over the live field's first layer (CPU).
+float largestEta(const editor::LivePhysics& physics) {
+    const std::span<const float> eta = physics.cpu->eta(0);
+    return eta.empty() ? 0.0f : *std::max_element(eta.begin(), eta.end());
+}
+
+// projects/winter played on: its rocks hold the blades under them crushed for good, and the field
+// must rest as a field without rocks does (it never did: η rose under the rocks every step, so
+// the editor stepped 473 blades' worth of nothing every frame and drew the reduced picture of a
+// moving field). Its trail must not rest: once the ball is gone, the crushed blades recover.
+TEST_F(LivePhysicsTest, BladesAStillColliderHoldsDownLetTheFieldRestButATrailDoesNot) {
+    core::LoadedProject loaded = planeFieldProject({2.0f, 4, 60.0f, 0.3f, 0.5f});
+    addBall(loaded, {0.0f, 0.15f, 0.0f}, 0.4f);  // sunk into the grass: a rock
+    editor::Live live = liveOn(loaded, editor::PhysicsDevice::Cpu);
+    ASSERT_TRUE(live.physics && live.physics->cpu);
+    editor::LivePhysics& physics = *live.physics;
+    EXPECT_TRUE(physics.timeIndependent);
+    double t = 0.0;
+    for (; t < 30.0 && !physics.resting; t += 0.1)
+        physics.advanceTo(t, 1000);
+    ASSERT_TRUE(physics.resting) << "still stepping after " << t << " s";
+    EXPECT_GT(largestEta(physics), 1.0f) << "the blades under the ball rest crushed";
+    std::printf(
+        "[ live physics ] the field under a still ball rests after %.1f s, largest eta %.1f\n", t,
+        double(largestEta(physics)));
+    // The rest is a fixed point of the step: one more computed frame moves no tip.
+    physics.wake();
+    physics.advanceTo(t + 0.1, 1000);
+    EXPECT_FALSE(physics.moved);
+
+    // The ball lifted away: the crushed blades recover, standing still at first (stiffness held
+    // at the floor while η decays), and the field rests only once they have (η 0 everywhere).
+    physics.scene.colliders.clear();
+    physics.wake();
+    const float decayPerS = physics.scene.params.etaDecayPerS;
+    const double recovered = t + largestEta(physics) / decayPerS;
+    for (t += 0.2; t < recovered + 30.0 && !physics.resting; t += 0.1)
+        physics.advanceTo(t, 1000);
+    ASSERT_TRUE(physics.resting) << "still stepping after " << t << " s";
+    EXPECT_GE(t, recovered - 1.0) << "rested before η could decay";
+    EXPECT_EQ(largestEta(physics), 0.0f) << "a recovering blade let the field rest";
 }
 
 // A plane under 10 cm of snow (no wind, no collider) whose load bends the blades: 60 m/s² per
