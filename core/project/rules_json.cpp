@@ -100,7 +100,8 @@ constexpr std::array RULES{
          .ui = {.min = 0.0f, .max = 50.0f, .decimals = 2, .speed = 0.02f}}),
     field<&PlacementRules::clearColliders>(
         {.key = "clear_colliders",
-         .help = "keep `clearance` from every collider where it stands at time 0"}),
+         .help = "keep `clearance` from every collider where it stands at time 0, and no "
+                 "grass under one (inside it, or under a rock open at the bottom)"}),
     names<&PlacementRules::clearOf>("clear_of",
                                     "node, mesh or material names whose surfaces keep "
                                     "`clearance` of bare ground around them"),

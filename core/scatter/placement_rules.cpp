@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "mesh/mesh_parts.h"
+#include "scatter/collider_interior.h"
 
 namespace grass::core {
 
@@ -108,12 +109,18 @@ std::vector<float> placementFactors(const SurfaceMesh& mesh, const ScatterCandid
     // A surface without names is one unnamed part: only an include list can shut it out.
     const bool unnamedAllowed = rules.include.empty();
     const ClearanceGrid clear(clearanceTriangles(mesh, rules, world), rules.clearanceM);
+    // A root under a collider is within any clearance of it, however far from its surface.
+    const ColliderInteriors underColliders =
+        rules.clearColliders && rules.clearanceM > 0.0f
+            ? ColliderInteriors(world.colliderTriangles, world.colliderEnds)
+            : ColliderInteriors();
     std::vector<float> factors(candidates.blades.size(), 1.0f);
     for (std::size_t i = 0; i < factors.size(); ++i) {
         const std::uint32_t face = candidates.faces[i];
         const glm::vec3 root = candidates.blades[i].v0();
         const bool partAllowed = table ? allowed[table->faceParts[face]] != 0 : unnamedAllowed;
-        if (!partAllowed || clear.within(root)) {
+        if (!partAllowed || clear.within(root) ||
+            (!underColliders.empty() && underColliders.inside(root, upAt(root, world)))) {
             factors[i] = 0.0f;
             continue;
         }

@@ -1,7 +1,8 @@
 // A layer's placement rules (project.h PlacementRules, issue 27) turned into one factor per
 // candidate blade: the product of the part rule (include/exclude by name: 0 or 1), the slope and
 // altitude windows (1 inside, falling linearly to 0 over their soft widths) and the clearance
-// rule (0 near a collider or a chosen part). keepsCandidate multiplies the density map by it.
+// rule (0 near a collider or a chosen part, or under a collider's surface). keepsCandidate
+// multiplies the density map by it.
 #pragma once
 
 #include <vector>
@@ -22,6 +23,10 @@ struct RuleWorld {
     GravityMode gravityMode = GravityMode::Direction;
     // The colliders' surfaces at time 0, in scene units.
     std::vector<ClearanceGrid::Triangle> colliderTriangles;
+    // Where each collider's triangles end in colliderTriangles, so that the clearance rule can
+    // tell a root under a collider's surface (collider_interior.h); empty: no collider told
+    // apart, only the distance to the surfaces counts.
+    std::vector<std::size_t> colliderEnds;
 };
 
 // True when `rules` leave every candidate whole (the defaults): no factors are needed.

@@ -201,6 +201,7 @@ static RuleWorld ruleWorldOf(const Project& project, const std::vector<SceneProp
                 corner = glm::vec3(model * glm::vec4(corner, 1.0f));
             world.colliderTriangles.push_back(corners);
         }
+        world.colliderEnds.push_back(world.colliderTriangles.size());
     }
     return world;
 }

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <map>
 
 #include "mesh/closest_point.h"
@@ -236,6 +238,52 @@ TEST_F(PlacementRulesTest, ClearanceKeepsGroundBareAroundChosenPartsAndColliders
             EXPECT_EQ(nearCollider[i], 1.0f);
         }
     }
+}
+
+// A collider wider than twice the clearance: the ground under it is cleared too, however far
+// from its walls, and the ground beyond the clearance is not. Before (2026-12-07), a box 4 m
+// across cleared by 0.3 m kept the grass in its middle, hidden inside it.
+TEST_F(PlacementRulesTest, ClearanceClearsTheGroundUnderAColliderToo) {
+    PlacementRules rules;
+    rules.clearanceM = 0.3f;
+    rules.clearColliders = true;
+    RuleWorld world;
+    // A closed box sunk 0.5 m into the ground at the origin, 4 m across and 1 m above it.
+    const glm::vec3 lo(-2.0f, -0.5f, -2.0f), hi(2.0f, 1.0f, 2.0f);
+    const auto corner = [&](int i) {
+        return glm::vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+    };
+    for (const auto& q : std::array<std::array<int, 4>, 6>{{{0, 4, 6, 2},
+                                                            {1, 3, 7, 5},
+                                                            {0, 1, 5, 4},
+                                                            {2, 6, 7, 3},
+                                                            {0, 2, 3, 1},
+                                                            {4, 5, 7, 6}}}) {
+        world.colliderTriangles.push_back({corner(q[0]), corner(q[1]), corner(q[2])});
+        world.colliderTriangles.push_back({corner(q[0]), corner(q[2]), corner(q[3])});
+    }
+    world.colliderEnds = {world.colliderTriangles.size()};
+    const std::vector<float> factors = placementFactors(*sMesh, *sCandidates, rules, world);
+    std::size_t under = 0, beyond = 0, deepInside = 0;
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+        const glm::vec3 p = sCandidates->blades[i].v0();
+        if (nodeOf(i) != "Ground")
+            continue;
+        const float outside = glm::length(
+            glm::vec2(std::max(std::abs(p.x) - 2.0f, 0.0f), std::max(std::abs(p.z) - 2.0f, 0.0f)));
+        if (outside == 0.0f) {
+            ++under;
+            EXPECT_EQ(factors[i], 0.0f) << "a root under the box at " << p.x << ", " << p.z;
+            deepInside += std::max(std::abs(p.x), std::abs(p.z)) < 1.5f ? 1 : 0;
+        } else if (outside > 0.31f) {
+            ++beyond;
+            EXPECT_EQ(factors[i], 1.0f) << "a root " << outside << " m from the box";
+        }
+    }
+    EXPECT_GT(deepInside, 100u) << "roots farther than the clearance from every wall";
+    EXPECT_GT(beyond, 1000u);
+    std::printf("[ clearance ] %zu roots under the box cleared (%zu deeper than the clearance)\n",
+                under, deepInside);
 }
 
 TEST_F(PlacementRulesTest, RulesMultiplyTheDensityMap) {

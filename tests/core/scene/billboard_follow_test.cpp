@@ -120,21 +120,26 @@ TEST(BillboardFollow, PlacementRulesClearBillboardsAsTheyClearBlades) {
     EXPECT_TRUE(cleared.billboards.objects.empty());
     EXPECT_EQ(cleared.layers[0].liveBlades, 0u);
     // A ball of radius 1 centred on the ground, cleared by 0.5 m: its surface is |r − 1| from a
-    // ground point at radius r, so a ring 0.5 < r < 1.5 is cleared (the grass inside the ball
-    // stays, hidden, as the blades there do).
+    // ground point at radius r, so the ground within r < 1.5 is cleared, the inside of the ball
+    // too (scatter/collider_interior.h: until 2026-12-07 the grass inside it stayed, hidden, as
+    // the blades there did).
     loaded.project.layers.front().rules = {};
     loaded.project.layers.front().rules.clearanceM = 0.5f;
     loaded.project.layers.front().rules.clearColliders = true;
     test::addBall(loaded, {0.0f, 0.0f, 0.0f}, 1.0f);
     const Scene ringed = fieldScene(loaded);
     EXPECT_LT(ringed.billboards.objects.size(), ringed.billboards.placed.size());
-    int inside = 0;
+    int beyond = 0;
     for (const GrassObject& object : ringed.billboards.objects) {
         const float r = glm::length(object.centre);
-        EXPECT_FALSE(r > 0.55f && r < 1.45f) << "a billboard in the cleared ring at r = " << r;
-        inside += r < 0.45f ? 1 : 0;
+        EXPECT_FALSE(r < 1.45f) << "a billboard in or under the ball at r = " << r;
+        beyond += r > 1.55f ? 1 : 0;
     }
-    EXPECT_GT(inside, 0);
+    EXPECT_GT(beyond, 0);
+    std::size_t under = 0;
+    for (const Blade& blade : ringed.layers[0].patched.blades)
+        under += blade.h() > 0.0f && glm::length(blade.v0()) < 1.45f ? 1 : 0;
+    EXPECT_EQ(under, 0u) << "blades in or under the ball";
 }
 
 TEST(BillboardFollow, GrowthTintsAndShortensBillboardsWhereItGrowsPoorGrass) {
