@@ -41,6 +41,9 @@ struct Style {
     float popupPadding = 4.0f;
     float separatorSpace = 6.0f;
     Vec2 tooltipOffset{14.0f, 18.0f};
+    // A tooltip wider than this (or than the screen) wraps into lines: a setting's help with its
+    // allowed values and JSON key runs to 200 characters, cut off at the window's edge before.
+    float tooltipMaxWidth = 560.0f;
     // Two clicks on one widget within this time are a double click.
     float doubleClickTimeS = 0.3f;
     // A press that moves further than this before its release is a drag, not a click, on

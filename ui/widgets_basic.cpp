@@ -19,7 +19,22 @@ Response& Response::onHoverText(std::string_view text) {
     const Style& s = mCtx->style();
     const Rect screen = mCtx->screenRect();
     Painter painter = mCtx->painter(Layer::Tooltips, screen);
-    const Vec2 size = mCtx->fonts().textSize(text, s.textSizePt) + 2.0f * s.buttonPadding;
+    const float widest =
+        std::max(std::min(s.tooltipMaxWidth, screen.width() - 2.0f * s.buttonPadding.x), 1.0f);
+    // Its own line breaks kept, each paragraph wrapped.
+    std::vector<std::string> lines;
+    for (std::size_t start = 0; start <= text.size();) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        const std::vector<std::string> wrapped =
+            wrapText(mCtx->fonts(), s.textSizePt, text.substr(start, end - start), widest);
+        lines.insert(lines.end(), wrapped.begin(), wrapped.end());
+        start = end + 1;
+    }
+    const float lineHeight = mCtx->fonts().lineHeight(s.textSizePt);
+    Vec2 textSize(0.0f, lineHeight * static_cast<float>(lines.size()));
+    for (const std::string& line : lines)
+        textSize.x = std::max(textSize.x, mCtx->fonts().textSize(line, s.textSizePt).x);
+    const Vec2 size = textSize + 2.0f * s.buttonPadding;
     Vec2 pos = mCtx->pointerPos() + s.tooltipOffset;
     // Kept on screen: flipped left/up of the pointer near the right/bottom edge.
     if (pos.x + size.x > screen.max.x) {
@@ -30,7 +45,9 @@ Response& Response::onHoverText(std::string_view text) {
     }
     const Rect frame = Rect::fromMinSize(pos, size);
     painter.rect(frame, s.rounding, s.popupFill, s.popupStroke);
-    painter.text(frame.min + s.buttonPadding, text, s.textSizePt, s.text);
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        painter.text(frame.min + s.buttonPadding + Vec2(0.0f, lineHeight * static_cast<float>(i)),
+                     lines[i], s.textSizePt, s.text);
     return *this;
 }
 

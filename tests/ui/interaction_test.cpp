@@ -415,5 +415,40 @@ TEST(UiInteraction, TooltipAndPointerOwnershipFollowHover) {
     EXPECT_TRUE(std::holds_alternative<TextShape>(over.shapes.back().shape));
 }
 
+// A setting's help runs to 200 characters (what it does, what it allows, its JSON key): the
+// tooltip wraps it into lines within the screen, every word shown. Before (2026-12-07) it was
+// one line, cut off at the window's right edge ("… project.json \"clear_collid").
+TEST(UiInteraction, ALongTooltipWrapsWithinTheScreen) {
+    UiHarness h;
+    h.input.screenRect = {{0.0f, 0.0f}, {420.0f, 600.0f}};
+    const std::string help =
+        "keep clearance from every collider where it stands at time 0, and no grass under one "
+        "(inside it, or under a rock open at the bottom) \u00b7 allowed: true or false \u00b7 "
+        "project.json \"clear_colliders\"";
+    Response r;
+    const auto build = [&](Ui& ui) { r = ui.button("clear colliders").onHoverText(help); };
+    h.frame(build);
+    h.moveTo(r.rect().centre());
+    const Output& over = h.frame(build);
+    std::string shown;
+    int lines = 0;
+    for (const ClippedShape& clipped : over.shapes) {
+        const auto* text = std::get_if<TextShape>(&clipped.shape);
+        if (text == nullptr || text->text == "clear colliders")
+            continue;
+        ++lines;
+        shown += (shown.empty() ? "" : " ") + text->text;
+        const Rect box =
+            Rect::fromMinSize(text->pos, test::testFonts().textSize(text->text, text->sizePt));
+        EXPECT_GE(box.min.x, 0.0f) << text->text;
+        EXPECT_LE(box.max.x, 420.0f) << "cut off at the screen's edge: " << text->text;
+    }
+    EXPECT_GE(lines, 3);
+    EXPECT_EQ(shown, help) << "every word, in order";
+    // A short one stays one line.
+    const auto brief = [&](Ui& ui) { r = ui.button("clear colliders").onHoverText("Explains it"); };
+    EXPECT_TRUE(findText(h.frame(brief), "Explains it"));
+}
+
 }  // namespace
 }  // namespace grass::ui
