@@ -96,7 +96,7 @@ bool rulesAreOpen(const PlacementRules& rules) {
     return rules.include.empty() && rules.exclude.empty() && rules.slopeMinDeg <= 0.0f &&
            rules.slopeMaxDeg >= 180.0f && rules.altitudeMinM <= open.altitudeMinM &&
            rules.altitudeMaxM >= open.altitudeMaxM &&
-           (!(rules.clearanceM > 0.0f) || (!rules.clearColliders && rules.clearOf.empty()));
+           (!(rules.clearanceM > 0.0f) || rules.clearOf.empty()) && !rules.clearColliders;
 }
 
 std::vector<float> placementFactors(const SurfaceMesh& mesh, const ScatterCandidates& candidates,
@@ -109,11 +109,11 @@ std::vector<float> placementFactors(const SurfaceMesh& mesh, const ScatterCandid
     // A surface without names is one unnamed part: only an include list can shut it out.
     const bool unnamedAllowed = rules.include.empty();
     const ClearanceGrid clear(clearanceTriangles(mesh, rules, world), rules.clearanceM);
-    // A root under a collider is within any clearance of it, however far from its surface.
+    // A root under a collider is within any clearance of it, 0 included, however far from its
+    // surface.
     const ColliderInteriors underColliders =
-        rules.clearColliders && rules.clearanceM > 0.0f
-            ? ColliderInteriors(world.colliderTriangles, world.colliderEnds)
-            : ColliderInteriors();
+        rules.clearColliders ? ColliderInteriors(world.colliderTriangles, world.colliderEnds)
+                             : ColliderInteriors();
     std::vector<float> factors(candidates.blades.size(), 1.0f);
     for (std::size_t i = 0; i < factors.size(); ++i) {
         const std::uint32_t face = candidates.faces[i];

@@ -263,27 +263,47 @@ TEST_F(PlacementRulesTest, ClearanceClearsTheGroundUnderAColliderToo) {
         world.colliderTriangles.push_back({corner(q[0]), corner(q[2]), corner(q[3])});
     }
     world.colliderEnds = {world.colliderTriangles.size()};
-    const std::vector<float> factors = placementFactors(*sMesh, *sCandidates, rules, world);
+    // Each ground candidate's factor under `rules`, with its distance outside the box's
+    // footprint (0 under it).
+    const auto eachGroundRoot = [&](const auto& visit) {
+        const std::vector<float> factors = placementFactors(*sMesh, *sCandidates, rules, world);
+        ASSERT_EQ(factors.size(), sCandidates->blades.size());
+        for (std::size_t i = 0; i < factors.size(); ++i) {
+            const glm::vec3 p = sCandidates->blades[i].v0();
+            if (nodeOf(i) == "Ground")
+                visit(p,
+                      glm::length(glm::vec2(std::max(std::abs(p.x) - 2.0f, 0.0f),
+                                            std::max(std::abs(p.z) - 2.0f, 0.0f))),
+                      factors[i]);
+        }
+    };
     std::size_t under = 0, beyond = 0, deepInside = 0;
-    for (std::size_t i = 0; i < factors.size(); ++i) {
-        const glm::vec3 p = sCandidates->blades[i].v0();
-        if (nodeOf(i) != "Ground")
-            continue;
-        const float outside = glm::length(
-            glm::vec2(std::max(std::abs(p.x) - 2.0f, 0.0f), std::max(std::abs(p.z) - 2.0f, 0.0f)));
+    eachGroundRoot([&](glm::vec3 p, float outside, float factor) {
         if (outside == 0.0f) {
             ++under;
-            EXPECT_EQ(factors[i], 0.0f) << "a root under the box at " << p.x << ", " << p.z;
+            EXPECT_EQ(factor, 0.0f) << "a root under the box at " << p.x << ", " << p.z;
             deepInside += std::max(std::abs(p.x), std::abs(p.z)) < 1.5f ? 1 : 0;
         } else if (outside > 0.31f) {
             ++beyond;
-            EXPECT_EQ(factors[i], 1.0f) << "a root " << outside << " m from the box";
+            EXPECT_EQ(factor, 1.0f) << "a root " << outside << " m from the box";
         }
-    }
+    });
     EXPECT_GT(deepInside, 100u) << "roots farther than the clearance from every wall";
     EXPECT_GT(beyond, 1000u);
     std::printf("[ clearance ] %zu roots under the box cleared (%zu deeper than the clearance)\n",
                 under, deepInside);
+
+    // "clear colliders" with no clearance: the ground under the box only. Before, a clearance
+    // of 0 left the rule open, the box's checkbox doing nothing.
+    rules.clearanceM = 0.0f;
+    EXPECT_FALSE(rulesAreOpen(rules));
+    std::size_t besideKept = 0;
+    eachGroundRoot([&](glm::vec3 p, float outside, float factor) {
+        EXPECT_EQ(factor, outside == 0.0f ? 0.0f : 1.0f)
+            << "a root " << outside << " m from the box at " << p.x << ", " << p.z;
+        besideKept += outside > 0.0f && outside < 0.3f ? 1 : 0;
+    });
+    EXPECT_GT(besideKept, 5u) << "the ring the clearance took is grass again";
 }
 
 TEST_F(PlacementRulesTest, RulesMultiplyTheDensityMap) {
