@@ -2,7 +2,8 @@
 // `sim`) or the editor: the first asks the work to stop at its next stage (a std::stop_token the
 // command passes on), so an export ends with its staged files removed and the folder as it was,
 // a bench run with the cases measured so far, the editor with its unsaved changes in the
-// autosave, and says so; a second ends the process at once. Before, the process died where it
+// autosave, and says so; a second ends the process at once (unless it came within
+// SAME_REQUEST_NS of the first: that is the first relayed twice). Before, the process died where it
 // stood: an export's staged temporaries stayed until the next export there, a bench run's
 // finished cases were lost, the editor's changes since the last autosave were lost, and nothing
 // said what had happened.
