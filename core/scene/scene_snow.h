@@ -41,7 +41,6 @@ public:
     float loadPerMetre(const Blade& blade) const;
     // Each blade's (snowLoadPerMetre: empty when the snow loads nothing).
     std::vector<float> loadsPerMetre(std::span<const Blade> blades) const;
-    bool loadsBlades() const { return mLoads; }
 
 private:
     SnowDepthMap mMap;
@@ -50,6 +49,7 @@ private:
     SnowParams mPerMetre;  // mParams at 1 m of snow
     bool mLoads = false;
 };
+
 // True when snow puts a load on blades at all (on, load gravity > 0, some amount at some time).
 bool snowLoadsBlades(const SnowParams& params);
 

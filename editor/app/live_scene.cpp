@@ -103,12 +103,6 @@ double LivePhysics::advanceTo(double targetS, int maxSteps, double budgetMs) {
         moved = false;
         return 0.0;
     }
-    // η as the frame found it, to tell the blades a collider holds from those recovering.
-    if (cpu && timeIndependent) {
-        etaBefore.resize(cpu->layerCount());
-        for (std::size_t layer = 0; layer < cpu->layerCount(); ++layer)
-            etaBefore[layer].assign(cpu->eta(layer).begin(), cpu->eta(layer).end());
-    }
     int stepped = 0;
     const auto start = std::chrono::steady_clock::now();
     for (; stepped < maxSteps && timeS() + dtS * (1.0 - 1e-6) <= targetS; ++stepped) {
@@ -116,6 +110,13 @@ double LivePhysics::advanceTo(double targetS, int maxSteps, double budgetMs) {
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count() >= budgetMs)
             break;
+        // η as the frame found it, to tell the blades a collider holds from those recovering:
+        // taken before its first step only (a paused frame steps nothing and copies nothing).
+        if (stepped == 0 && cpu && timeIndependent) {
+            etaBefore.resize(cpu->layerCount());
+            for (std::size_t layer = 0; layer < cpu->layerCount(); ++layer)
+                etaBefore[layer].assign(cpu->eta(layer).begin(), cpu->eta(layer).end());
+        }
         if (cpu)
             cpu->step(scene, static_cast<float>(timeS()));
         else
