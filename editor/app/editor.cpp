@@ -266,9 +266,14 @@ Result<bool> Editor::frame() {
     }
     int width = 0, height = 0;
     mWindow->framebufferSize(&width, &height);
-    if (width <= 0 || height <= 0) {
-        // Minimised (a 0×0 framebuffer on Windows and Wayland): nothing to draw until it is
-        // shown again, which is an event; without the wait the loop polled at full speed.
+    if (width <= 0 || height <= 0 || input.minimised) {
+        // Minimised (iconified on X11, a 0×0 framebuffer on Windows and Wayland): nothing to
+        // draw until it is shown again, which is an event; without the wait the loop polled at
+        // full speed, and on X11 a minimised window that played drew the field on every core
+        // (llvmpipe). The timeline holds meanwhile (advanceTime never sees these frames' time),
+        // but the autosave keeps its clock: an edit left minimised is still saved.
+        ++mMinimisedFrames;
+        autosaveWhenDue();
         mWindow->waitForEvents(LONGEST_IDLE_WAIT_S);
         return true;
     }

@@ -159,6 +159,7 @@ private:
     std::optional<ViewInputs> mDrawnView;
     bool mViewDrawn = false;
     int mViewsDrawn = 0;  // for the --wall-clock summary
+    int mMinimisedFrames = 0;     // frames that found the window minimised and drew nothing
     int mViewsDrawnAtStatus = 0;  // at the last status update: none since means "at rest"
     bool mLastDrawnReduced =
         false;  // the last picture drawn was the adaptive quality's reduced one

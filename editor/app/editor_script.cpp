@@ -33,6 +33,8 @@ bool Editor::finishScript(Clock::time_point lastFrame) {
     // How many frames drew the viewport's picture rather than showing the last one again
     // (app/view_redraw.h).
     std::printf("viewport drawn in %d of %d frames\n", mViewsDrawn, mFrame);
+    if (mMinimisedFrames > 0)
+        std::printf("minimised for %d frames, nothing drawn\n", mMinimisedFrames);
     // Whether the status bar's stage timings are those of the picture shown.
     std::printf("status timings of frame %d, last full picture drawn in frame %d\n", mTimingsFrame,
                 mLastFullPictureFrame);

@@ -233,6 +233,9 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
             if (!(in >> pressure) || !(pressure >= 0.0 && pressure <= 1.0))
                 return fail("pressure: expected a value in 0…1");
             p.now.pressure = float(pressure);
+        } else if (command == "minimise" || command == "restore") {
+            p.now.minimised = command == "minimise";
+            p.emit();
         } else if (command == "screenshot") {
             std::string name;
             if (!(in >> name))
@@ -246,7 +249,7 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
         } else {
             return fail("unknown command '" + command +
                         "' (wait, move, press, release, drag, hold, key, type, drop, pressure, "
-                        "screenshot, quit)");
+                        "minimise, restore, screenshot, quit)");
         }
     }
     return std::move(p.frames);

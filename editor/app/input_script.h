@@ -15,6 +15,7 @@
 //   type TEXT                typed text (the rest of the line)
 //   drop PATH                a file dropped on the window (relative to the script's folder)
 //   pressure P               pen pressure for what follows, 0…1
+//   minimise / restore       the window is minimised from the next frame on / shown again
 //   screenshot FILE          save the window after this frame (relative to the script's folder)
 //   quit                     stop (also at the end of the script)
 #pragma once

@@ -225,6 +225,7 @@ void Window::wake() {
 
 InputState Window::pollInput() {
     glfwPollEvents();
+    mInput.minimised = glfwGetWindowAttrib(mWindow, GLFW_ICONIFIED) != 0;
     const InputState gathered = mInput;
     // What happened since: the next call starts from the held buttons and the cursor alone.
     mInput.dragDx = mInput.dragDy = mInput.scrollSteps = mInput.scrollX = 0.0;

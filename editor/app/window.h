@@ -45,6 +45,9 @@ struct InputState {
     std::string typed;
     std::vector<ui::KeyEvent> keys;
     ui::Modifiers modifiers;
+    // The window is minimised (iconified): nothing of it is on screen. On X11 its framebuffer
+    // keeps its size, so the 0×0 test alone kept a minimised window drawing while it played.
+    bool minimised = false;
 };
 
 class Window {

@@ -21,6 +21,25 @@
 namespace grass::test {
 namespace {
 
+// The --wall-clock summary's first line: "wall clock W s, N frames, timeline moved T s, physics
+// skipped S s".
+struct WallClockSummary {
+    bool found = false;
+    double wallS = 0.0, movedS = 0.0, skippedS = 0.0;
+    int frames = 0;
+};
+WallClockSummary wallClockSummary(const std::string& log) {
+    WallClockSummary summary;
+    std::istringstream lines(log);
+    std::string line;
+    while (std::getline(lines, line))
+        if (std::sscanf(line.c_str(),
+                        "wall clock %lf s, %d frames, timeline moved %lf s, physics skipped %lf s",
+                        &summary.wallS, &summary.frames, &summary.movedS, &summary.skippedS) == 4)
+            summary.found = true;
+    return summary;
+}
+
 TEST(EditorTime, TenSecondsOfSlowFramesMoveTheTimelineTenSecondsAndAutosave) {
     const auto dir = scratchDir("editor_time");
     writeTinyProject(dir);
@@ -34,15 +53,9 @@ TEST(EditorTime, TenSecondsOfSlowFramesMoveTheTimelineTenSecondsAndAutosave) {
     ASSERT_EQ(std::system(command.c_str()), 0) << command << " (see " << dir / "log.txt" << ")";
 
     std::ifstream log(dir / "log.txt");
-    std::string line;
-    double wallS = 0.0, movedS = 0.0, skippedS = 0.0;
-    int frames = 0;
-    bool found = false;
-    while (std::getline(log, line))
-        if (std::sscanf(line.c_str(),
-                        "wall clock %lf s, %d frames, timeline moved %lf s, physics skipped %lf s",
-                        &wallS, &frames, &movedS, &skippedS) == 4)
-            found = true;
+    std::stringstream text;
+    text << log.rdbuf();
+    const auto [found, wallS, movedS, skippedS, frames] = wallClockSummary(text.str());
     ASSERT_TRUE(found) << "no summary line in " << dir / "log.txt";
     EXPECT_GE(wallS, 10.0);
     // A frame here is at least the 300 ms delay: far fewer than 60 per second.
@@ -53,6 +66,31 @@ TEST(EditorTime, TenSecondsOfSlowFramesMoveTheTimelineTenSecondsAndAutosave) {
     EXPECT_GT(skippedS, 0.0);
     EXPECT_TRUE(std::filesystem::exists(dir / "project.autosave.json"))
         << "the unsaved edit was not autosaved by the clock";
+}
+
+// A minimised window draws nothing and its timeline holds, while the autosave keeps its clock.
+// On X11 a minimised window keeps its framebuffer's size, so before, an editor minimised while it
+// played went on drawing the field on every core (llvmpipe) until it was shown again.
+TEST(EditorTime, AMinimisedWindowDrawsNothingAndHoldsItsTimelineButStillAutosaves) {
+    const auto dir = scratchDir("editor_minimised");
+    writeTinyProject(dir, "tiny", 480, 320, /*windy=*/true);
+    // T (an edit) and straight into 4 s minimised, past the 2 s autosave; then one frame shown.
+    const std::string log =
+        runEditor(dir, "key t\nminimise\nwait-s 4\nrestore\nwait 1\n", "--autosave-s 2");
+    const WallClockSummary summary = wallClockSummary(log);
+    ASSERT_TRUE(summary.found) << log;
+    // The shown frames before and after, and the restored frame's time (at most one idle wait,
+    // LONGEST_IDLE_WAIT_S = 1 s): well under the 4 s minimised.
+    EXPECT_LT(summary.movedS, summary.wallS - 2.0) << log;
+    // One frame per idle wait (1 s) at least, woken by nothing: about 4.
+    int minimisedFrames = -1;
+    if (const std::size_t at = log.find("minimised for "); at != std::string::npos)
+        std::sscanf(log.c_str() + at, "minimised for %d frames", &minimisedFrames);
+    EXPECT_GE(minimisedFrames, 1) << log;
+    EXPECT_LE(minimisedFrames, 8) << log;
+    EXPECT_TRUE(std::filesystem::exists(dir / "project.autosave.json"))
+        << "the edit left minimised was not autosaved:\n"
+        << log;
 }
 
 // "status timings of frame T, last full picture drawn in frame F": {T, F}.
