@@ -3,7 +3,10 @@
 // picture, and snow whitens open ground but not the ground a ball shelters.
 #include <gtest/gtest.h>
 
+#include <epoxy/gl.h>
+
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "gl_context_fixture.h"
@@ -279,6 +282,79 @@ TEST_F(SnowGlTest, TheSnowSurfaceIsTessellatedIntoDrifts) {
     EXPECT_LE(flat, 1.0f);
     // Measured 0.7 and 9.4 px: 1 m of snow, Zn over 0.77 m noise cells, ~44 px a metre there.
     EXPECT_GE(drifts, 4.0f);
+}
+
+// A plane of 8×8 cells (128 triangles) under 1 m of snow, drawn from `camera` without grass
+// (magenta sky, no MSAA); with the primitives the whole frame generated (GL_PRIMITIVES_GENERATED:
+// the snow surface's tessellated triangles and every other pass's).
+struct SnowPlaneFrame {
+    gl::Rgba8Image image;
+    GLuint primitives = 0;
+};
+SnowPlaneFrame snowPlaneFrame(const core::OrbitCamera& camera) {
+    PlaneField field;
+    field.sizeM = 4.0f;
+    field.resolution = 8;
+    auto scene = core::buildScene(planeFieldProject(field));
+    EXPECT_TRUE(scene.ok()) << scene.error().str();
+    if (!scene.ok())
+        return {};
+    scene->layers.clear();
+    render::OffscreenRequest request;
+    request.width = 160;
+    request.height = 100;
+    request.msaaSamples = 0;
+    request.frames = 1;
+    request.options.snow.enabled = 1u;
+    request.options.snow.amountM = 1.0f;
+    request.options.snow.maxAmountM = 1.0f;
+    request.options.skyColor = {1.0f, 0.0f, 1.0f};
+    GLuint query = 0;
+    glGenQueries(1, &query);
+    glBeginQuery(GL_PRIMITIVES_GENERATED, query);
+    auto out = render::renderOffscreen(*scene, camera, request);
+    glEndQuery(GL_PRIMITIVES_GENERATED);
+    SnowPlaneFrame frame;
+    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &frame.primitives);
+    glDeleteQueries(1, &query);
+    EXPECT_TRUE(out.ok()) << out.error().str();
+    if (out.ok())
+        frame.image = std::move(out->image);
+    return frame;
+}
+
+std::size_t pixelsNotSky(const gl::Rgba8Image& image) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i + 3 < image.pixels.size(); i += 4)
+        count +=
+            !(image.pixels[i] == 255 && image.pixels[i + 1] == 0 && image.pixels[i + 2] == 255);
+    return count;
+}
+
+// The snow surface is tessellated only where it can be seen. A patch wholly beyond one plane of
+// the view is discarded (shaders/mesh_snow.tesc); before, the ground behind the camera was cut at
+// the largest level, every frame. The test that discards it counts the snow's rise: a drift
+// that rises into the view from ground below it is still drawn.
+TEST_F(SnowGlTest, TheSnowSurfaceIsTessellatedOnlyWhereItCanBeSeen) {
+    // Looking down at the plane: its surface tessellated, hundreds of triangles and more.
+    const SnowPlaneFrame inView =
+        snowPlaneFrame(core::OrbitCamera::lookAt({0.0f, 3.0f, 5.0f}, {0.0f, 0.0f, 0.0f}, 0.6f));
+    // Looking away from it, the plane behind the camera: only the passes that are not
+    // tessellated draw its 128 triangles (the snow's depth map, the cull's depth pre-pass).
+    const SnowPlaneFrame away =
+        snowPlaneFrame(core::OrbitCamera::lookAt({0.0f, 1.0f, 3.0f}, {0.0f, 1.0f, 9.0f}, 0.6f));
+    std::printf("[ snow ] primitives generated: %u in view, %u looking away\n", inView.primitives,
+                away.primitives);
+    EXPECT_EQ(pixelsNotSky(away.image), 0u);
+    EXPECT_GT(inView.primitives, 8u * 128u);
+    // Measured 256 (two passes of 128); before, 47,488.
+    EXPECT_LE(away.primitives, 4u * 128u);
+    // Eye 0.3 m above the ground and pitched up so that the frustum's lower plane passes above
+    // the plane's corners (0.02 rad above the horizon): only the snow on it, up to 1 m high,
+    // rises into view.
+    const SnowPlaneFrame low =
+        snowPlaneFrame(core::OrbitCamera::lookAt({0.0f, 0.3f, 4.0f}, {0.0f, 1.3f, 0.0f}, 0.45f));
+    EXPECT_GT(pixelsNotSky(low.image), 100u) << "the snow risen into the view was not drawn";
 }
 
 }  // namespace
