@@ -104,16 +104,17 @@ void addMeshBroadPhase(std::span<SphereCollider> group) {
     addBroadPhase(group);  // last: the first sphere's bound is the whole mesh's
 }
 
-// The packed spheres of one mesh collider, placed in the world: centre = position + scale·c,
-// radius scale·r; a path moves every sphere by the same offset.
-Result<void> addMeshCollider(const LoadedProject& loaded, const ColliderDesc& collider,
-                             std::size_t index, glm::dvec3 groundOrigin, ScenePhysics& out) {
+// The packing of one mesh collider: its cache file's, or packed now (and cached). Notes say
+// which, and what its mesh's placement did.
+Result<SpherePacking> packMeshCollider(const LoadedProject& loaded, const ColliderDesc& collider,
+                                       std::size_t index, glm::dvec3 groundOrigin,
+                                       std::vector<std::string>& notes) {
     auto colliderMesh = loadColliderMesh(loaded, collider, index, groundOrigin);
     if (!colliderMesh)
         return colliderMesh.error();
     if (!colliderMesh->imported.placementNote.empty())
-        out.notes.push_back("collider " + collider.name + ": " + collider.file + " " +
-                            colliderMesh->imported.placementNote);
+        notes.push_back("collider " + collider.name + ": " + collider.file + " " +
+                        colliderMesh->imported.placementNote);
     const std::filesystem::path& file = colliderMesh->file;
     const SurfaceMesh& mesh = colliderMesh->imported.mesh;
     SpherePackingParams params;
@@ -132,14 +133,21 @@ Result<void> addMeshCollider(const LoadedProject& loaded, const ColliderDesc& co
     const std::string source = fromCache            ? "cached in " + cache.string()
                                : cacheNote.empty() ? "packed, cached in " + cache.string()
                                                    : "packed";
-    out.notes.push_back("collider " + collider.name + ": " + collider.file + " as " +
-                        std::to_string(packing->spheres.size()) + " spheres (" + source +
-                        "): " + formatPercent(packing->insideShare) + " of their volume inside, " +
-                        formatPercent(packing->coverage) + " of the mesh covered");
+    notes.push_back("collider " + collider.name + ": " + collider.file + " as " +
+                    std::to_string(packing->spheres.size()) + " spheres (" + source +
+                    "): " + formatPercent(packing->insideShare) + " of their volume inside, " +
+                    formatPercent(packing->coverage) + " of the mesh covered");
     if (!cacheNote.empty())
-        out.notes.push_back("collider " + collider.name + ": " + cacheNote);
+        notes.push_back("collider " + collider.name + ": " + cacheNote);
+    return packing;
+}
+
+// The packed spheres of one mesh collider, placed in the world: centre = position + scale·c,
+// radius scale·r; a path moves every sphere by the same offset.
+void placePackedSpheres(const SpherePacking& packing, const ColliderDesc& collider,
+                        ScenePhysics& out) {
     const std::size_t first = out.colliders.size();
-    for (const PackedSphere& packed : packing->spheres) {
+    for (const PackedSphere& packed : packing.spheres) {
         SphereCollider sphere;
         const glm::vec3 offset = collider.scale * packed.centre;
         sphere.centre = collider.position + offset;
@@ -151,12 +159,31 @@ Result<void> addMeshCollider(const LoadedProject& loaded, const ColliderDesc& co
         out.colliders.push_back(std::move(sphere));
     }
     addMeshBroadPhase(std::span(out.colliders).subspan(first));
+}
+
+Result<void> addMeshCollider(const LoadedProject& loaded, const ColliderDesc& collider,
+                             std::size_t index, glm::dvec3 groundOrigin, ScenePhysics& out,
+                             ColliderPackings* packings) {
+    const ColliderPackings::Key key{collider.file, collider.sphereCount,
+                                    collider.packingResolution};
+    if (packings != nullptr)
+        if (const auto known = packings->byFile.find(key); known != packings->byFile.end()) {
+            placePackedSpheres(known->second, collider, out);
+            return {};
+        }
+    auto packing = packMeshCollider(loaded, collider, index, groundOrigin, out.notes);
+    if (!packing)
+        return packing.error();
+    placePackedSpheres(*packing, collider, out);
+    if (packings != nullptr)
+        packings->byFile.emplace(key, std::move(*packing));
     return {};
 }
 
 }  // namespace
 
-Result<ScenePhysics> buildScenePhysics(const LoadedProject& loaded, glm::dvec3 groundOrigin) {
+Result<ScenePhysics> buildScenePhysics(const LoadedProject& loaded, glm::dvec3 groundOrigin,
+                                       ColliderPackings* packings) {
     const Project& project = loaded.project;
     ScenePhysics out;
     out.params = project.physics;
@@ -170,7 +197,7 @@ Result<ScenePhysics> buildScenePhysics(const LoadedProject& loaded, glm::dvec3 g
                 SphereCollider{collider.position, collider.radiusM, collider.path});
             continue;
         }
-        if (auto added = addMeshCollider(loaded, collider, i, groundOrigin, out); !added)
+        if (auto added = addMeshCollider(loaded, collider, i, groundOrigin, out, packings); !added)
             return added.error();
     }
     return out;

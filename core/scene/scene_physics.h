@@ -5,11 +5,14 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "collider/sphere_packing.h"
 #include "physics/field_health.h"
 #include "physics/physics.h"
 #include "physics/physics_simd.h"
@@ -52,11 +55,23 @@ void prepareSnowLoads(ScenePhysics& physics, const Scene& scene);
 void reweighSnowLoads(ScenePhysics& physics, const Scene& scene, std::size_t layer,
                       std::span<const std::uint32_t> patches);
 
+// The packings of a scene's mesh colliders by mesh file (as the project names it) and packing
+// parameters, in the scene's frame. A caller that builds one scene's physics again and again (the
+// editor following a collider dragged with the gizmo, every frame) keeps one: a packing found
+// in it is neither read from its cache file nor its mesh loaded again.
+struct ColliderPackings {
+    using Key = std::tuple<std::string, std::uint32_t, std::uint32_t>;  // file, count, resolution
+    std::map<Key, SpherePacking> byFile;
+};
+
 // Reads mesh collider files and packs (or loads the cached packing of) each. Errors name the
 // mesh file or the project field. `groundOrigin` is the scene's (Scene::groundOrigin): a mesh
 // collider in a moved ground's georeferenced frame is moved with it (loadColliderMesh).
+// `packings`, when given, holds the packings of earlier builds of the same scene and keeps this
+// one's (a packing taken from it adds no note).
 Result<ScenePhysics> buildScenePhysics(const LoadedProject& project,
-                                       glm::dvec3 groundOrigin = glm::dvec3(0.0));
+                                       glm::dvec3 groundOrigin = glm::dvec3(0.0),
+                                       ColliderPackings* packings = nullptr);
 
 // The CPU state of a simulated scene: η and rest tips per layer, parallel to the layer's blades.
 class SceneSimulation {

@@ -19,6 +19,15 @@ glm::mat4 SceneProp::modelAt(float timeS) const {
     return glm::scale(glm::translate(glm::mat4(1.0f), originAt(timeS)), glm::vec3(scale));
 }
 
+void placeSceneProp(SceneProp& prop, const ColliderDesc& collider) {
+    const bool sphere = collider.shape == ColliderShape::Sphere;
+    prop.name = collider.name;
+    prop.position = collider.position;
+    prop.path = collider.path;
+    prop.scale = sphere ? collider.radiusM : collider.scale;
+    prop.albedo = collider.color.value_or(sphere ? SPHERE_ALBEDO : MESH_ALBEDO);
+}
+
 Result<ColliderMesh> loadColliderMesh(const LoadedProject& loaded, const ColliderDesc& collider,
                                       std::size_t index, glm::dvec3 groundOrigin) {
     const std::string field = "/colliders/" + std::to_string(index) + "/file";
@@ -47,21 +56,15 @@ Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded,
     for (std::size_t i = 0; i < colliders.size(); ++i) {
         const ColliderDesc& collider = colliders[i];
         SceneProp prop;
-        prop.name = collider.name;
-        prop.position = collider.position;
-        prop.path = collider.path;
         if (collider.shape == ColliderShape::Sphere) {
             prop.mesh = makeProceduralMesh(sphere);
-            prop.scale = collider.radiusM;
-            prop.albedo = collider.color.value_or(SPHERE_ALBEDO);
         } else {
             auto loadedMesh = loadColliderMesh(loaded, collider, i, groundOrigin);
             if (!loadedMesh)
                 return loadedMesh.error();
             prop.mesh = std::move(loadedMesh->imported.mesh);
-            prop.scale = collider.scale;
-            prop.albedo = collider.color.value_or(MESH_ALBEDO);
         }
+        placeSceneProp(prop, collider);
         props.push_back(std::move(prop));
     }
     return props;

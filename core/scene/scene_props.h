@@ -42,6 +42,11 @@ struct ColliderMesh {
 Result<ColliderMesh> loadColliderMesh(const LoadedProject& loaded, const ColliderDesc& collider,
                                       std::size_t index, glm::dvec3 groundOrigin = glm::dvec3(0.0));
 
+// Places `prop` (its mesh already made from `collider`) where `collider` stands, at its size,
+// on its path, in its colour: what a prop takes from its collider besides the mesh, so a moved
+// collider's prop follows it without its mesh read again (core::onlyMotionChanged).
+void placeSceneProp(SceneProp& prop, const ColliderDesc& collider);
+
 // One prop per collider, in project order; errors name the collider's file or field.
 Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded,
                                               glm::dvec3 groundOrigin = glm::dvec3(0.0));

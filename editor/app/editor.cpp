@@ -12,17 +12,18 @@
 #include <epoxy/gl.h>
 
 #include "app/autosave.h"
-#include "gl/debug_output.h"
 #include "app/document.h"
 #include "app/edit_actions.h"
 #include "app/mesh_import.h"
+#include "app/viewport_tools.h"
+#include "gl/debug_output.h"
 #include "gl/headless_context.h"
 #include "mesh/gltf_loader.h"
 #include "render/offscreen_render.h"
 #include "render/scene_renderer.h"
 #include "render/turntable_files.h"
+#include "scene/motion_edit.h"
 #include "util/image_file.h"
-#include "app/viewport_tools.h"
 
 namespace grass::editor {
 
@@ -438,6 +439,7 @@ bool Editor::applyRequests() {
                          });
         state.recoveryOffer.reset();
     }
+    followMotionEdits();
     // Re-grow once the edit has ended, not on every frame of a drag. A re-grow still running
     // for an earlier edit is stopped: its field would only be replaced (on a large mesh the
     // edit's field came a whole re-grow later). It ends at its next stage beside the new one,
@@ -455,6 +457,38 @@ bool Editor::applyRequests() {
     if (state.exportWhenGrown && !state.regrowing() && !state.rebuildPending && !state.busy())
         startExport(state);
     return false;
+}
+
+// A gizmo drag of a wind source or a collider, a panel edit of their settings, or the undo of
+// either changes nothing of the grown field: the live physics takes the new wind and colliders
+// and the props move, frame by frame during a drag, and the field goes on moving (a ball dragged
+// through the grass pushes it aside as it goes). Before, nothing moved until the mouse was
+// released, and then the whole field was grown again and its blades restarted from rest. Not
+// while an export reads the scene or a re-grow will replace it (the edit re-grows then).
+void Editor::followMotionEdits() {
+    EditorState& state = mState;
+    if (!mLive.scene || state.busy() || state.regrowing())
+        return;
+    const core::Project& project = state.doc.project();
+    const LiveMotion& motion = mLive.motion;
+    const bool toFollow = project.wind != motion.wind || project.colliders != motion.colliders ||
+                          motion.snowWeighedUnder != motion.colliders;
+    if (!toFollow && !state.rebuildPending)
+        return;
+    const core::Project& grown = mLive.builtFrom.project;
+    if (!core::onlyMotionChanged(grown, project))
+        return;
+    const bool settled =
+        !state.view.toolDragActive && (!mUi || mUi->context().activeId().value == 0);
+    if (auto followed = followMotion(mLive, state.doc.loaded, settled); !followed) {
+        // The re-grow the edit asked for reads the project again and says what is wrong.
+        state.transient.message = "cannot move the colliders: " + followed.error().str();
+        return;
+    }
+    // Blades cleared from under the colliders grow where the colliders left, and not where
+    // they now stand, only once the field grows again: when the edit ends.
+    if (!(grown.colliders != project.colliders && core::placementFollowsColliders(project)))
+        state.rebuildPending = false;
 }
 
 // Re-grows the live field from the open project (after an edit that needs it) on a worker: the
@@ -651,7 +685,7 @@ void Editor::advanceTime() {
         LivePhysics& physics = *mLive.physics;
         // An edit of the Snow section re-grows nothing: once it ends (not on every frame of a
         // drag: weighing the snow takes a while), the physics weighs the project's snow.
-        if (!mUi || mUi->context().activeId().value == 0)
+        if ((!mUi || mUi->context().activeId().value == 0) && !state.view.toolDragActive)
             physics.followSnow(state.doc.project().snow, *mLive.scene);
         if (jumped) {
             // The field restarts from rest at the new time (re-simulating from the start would

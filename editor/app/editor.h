@@ -98,6 +98,9 @@ private:
     // The field grown again after an edit (DocumentAction::Regrow), and taken in once grown.
     void startRegrow();
     void finishRegrow();
+    // An edit that moved only the wind sources or the colliders: the live physics and the props
+    // follow it at once (followMotion), and no re-grow is due unless placement follows them.
+    void followMotionEdits();
     // The same project's field, grown again: it replaces the live one, the clock goes on.
     void adoptLive(Live next);
     // The view framed on the live surface (after a new mesh, unit or up axis).

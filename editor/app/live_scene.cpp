@@ -84,6 +84,11 @@ bool LivePhysics::followSnow(const core::SnowParams& snow, const core::Scene& fi
     if (resolved == scene.snow)
         return false;
     scene.snow = resolved;
+    weighSnowAgain(field);
+    return true;
+}
+
+void LivePhysics::weighSnowAgain(const core::Scene& field) {
     scene.snowLoadPerMetre.clear();
     scene.snowWeigher.reset();
     core::prepareSnowLoads(scene, field);
@@ -91,7 +96,6 @@ bool LivePhysics::followSnow(const core::SnowParams& snow, const core::Scene& fi
         gpu->reloadSnowLoads();
     timeIndependent = editor::timeIndependent(scene);
     wake();
-    return true;
 }
 
 double LivePhysics::advanceTo(double targetS, int maxSteps, double budgetMs) {
@@ -184,6 +188,7 @@ Live& Live::operator=(Live&& next) noexcept {
     tools = std::move(next.tools);
     renderer = std::move(next.renderer);
     physics = std::move(next.physics);
+    motion = std::move(next.motion);
     return *this;
 }
 
@@ -221,6 +226,9 @@ Result<Live> bringUpLive(GrownField grown, const std::function<Result<void>(core
             return prepared.error();
     Live live;
     live.builtFrom = std::move(grown.loaded);
+    live.motion.wind = live.builtFrom.project.wind;
+    live.motion.colliders = live.builtFrom.project.colliders;
+    live.motion.snowWeighedUnder = live.motion.colliders;
     live.scene = std::move(grown.scene);
     live.tools = std::make_unique<SceneTools>(*live.scene, live.builtFrom.project.lighting,
                                               grownOn != nullptr ? grownOn->tools.get() : nullptr);
@@ -270,6 +278,40 @@ Result<void> resetPhysics(Live& live) {
         return gpu.error();
     live.physics->gpu = std::move(*gpu);
     return {};
+}
+
+Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool settled) {
+    const core::Project& project = loaded.project;
+    LiveMotion& motion = live.motion;
+    bool changed = false;
+    if (project.wind != motion.wind || project.colliders != motion.colliders) {
+        if (live.physics) {
+            auto built =
+                core::buildScenePhysics(loaded, live.scene->groundOrigin, &motion.packings);
+            if (!built)
+                return built.error();
+            LivePhysics& physics = *live.physics;
+            physics.scene.wind = std::move(built->wind);
+            physics.scene.colliders = std::move(built->colliders);
+            physics.timeIndependent = timeIndependent(physics.scene);
+            physics.wake();
+        }
+        const std::size_t props = std::min(live.scene->props.size(), project.colliders.size());
+        for (std::size_t i = 0; i < props; ++i)
+            core::placeSceneProp(live.scene->props[i], project.colliders[i]);
+        motion.wind = project.wind;
+        motion.colliders = project.colliders;
+        changed = true;
+    }
+    // The props shelter the snow: where they moved, the blades carry another load.
+    if (settled && motion.snowWeighedUnder != motion.colliders) {
+        if (live.physics && live.physics->scene.anySnowLoad()) {
+            live.physics->weighSnowAgain(*live.scene);
+            changed = true;
+        }
+        motion.snowWeighedUnder = motion.colliders;
+    }
+    return changed;
 }
 
 }  // namespace grass::editor

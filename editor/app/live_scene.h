@@ -102,6 +102,20 @@ struct LivePhysics {
     // (core::prepareSnowLoads; ~0.5 s for projects/winter's 1024² map on 2 cores) and the field
     // steps on under them. Returns whether it changed anything.
     bool followSnow(const core::SnowParams& snow, const core::Scene& field);
+    // The snow's loads weighed again from `field` at rest under scene.snow (prepareSnowLoads):
+    // after the snow changed, or the props that shelter it moved.
+    void weighSnowAgain(const core::Scene& field);
+};
+
+// What the live physics and the colliders' props follow now: the project's wind sources and
+// colliders as of the last followMotion (or of the field's growing), with the packings of its
+// mesh colliders kept so that following a drag reads no file.
+struct LiveMotion {
+    std::vector<core::WindDesc> wind;
+    std::vector<core::ColliderDesc> colliders;
+    // The colliders the snow's loads were weighed under (their props shelter the snow).
+    std::vector<core::ColliderDesc> snowWeighedUnder;
+    core::ColliderPackings packings;
 };
 
 // What a project becomes on the GPU; rebuilt whole when the project is re-grown or replaced.
@@ -113,6 +127,7 @@ struct Live {
     std::unique_ptr<SceneTools> tools;  // picks and paints `scene`
     std::unique_ptr<render::SceneRenderer> renderer;
     std::optional<LivePhysics> physics;
+    LiveMotion motion;
 
     Live() = default;
     Live(Live&&) noexcept = default;
@@ -151,5 +166,14 @@ Result<Live> bringUpLive(GrownField grown,
 // Puts every layer's blades back at rest on the GPU and restarts the simulation from there
 // (keeping its step count).
 Result<void> resetPhysics(Live& live);
+
+// After an edit of `loaded` that moved only what moves the field (core::onlyMotionChanged against
+// live.builtFrom): the live physics takes its wind sources and colliders (built as
+// core::buildScenePhysics builds them, the packings from live.motion) and the colliders' props
+// follow, while the field keeps its blades, their motion and their trails. Called every frame
+// of a gizmo drag; `settled` (the edit has ended): the snow's loads are weighed again under the
+// colliders where they now stand (~0.5 s for projects/winter), not on every frame of the drag.
+// Returns whether anything changed; errors: a collider's file could not be read.
+Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool settled);
 
 }  // namespace grass::editor

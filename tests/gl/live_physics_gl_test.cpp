@@ -164,6 +164,53 @@ TEST_F(LivePhysicsTest, BladesAStillColliderHoldsDownLetTheFieldRestButATrailDoe
     EXPECT_EQ(largestEta(physics), 0.0f) << "a recovering blade let the field rest";
 }
 
+// The lowest tip (v2.y) among the blades whose root lies within `radiusM` of the plane's centre.
+float lowestTipNearCentre(std::span<const core::Blade> blades, float radiusM) {
+    float lowest = 1e30f;
+    for (const core::Blade& blade : blades)
+        if (glm::length(glm::vec2(blade.v0().x, blade.v0().z)) < radiusM)
+            lowest = std::min(lowest, blade.v2().y);
+    return lowest;
+}
+
+// A ball moved (a gizmo drag, a typed position) is followed at once without growing the field
+// again (editor::followMotion): the physics takes the ball where it now stands, built as a fresh
+// build of the edited project builds it, its prop moves, and the field's blades stay the ones it
+// had, then bend under the ball. Before, the editor grew the whole field again for each such
+// edit, and its blades restarted from rest.
+TEST_F(LivePhysicsTest, AMovedBallPushesTheBladesWithoutTheFieldGrowingAgain) {
+    core::LoadedProject loaded = planeFieldProject({2.0f, 4, 60.0f, 0.3f, 0.5f});
+    addBall(loaded, {0.0f, 3.0f, 0.0f}, 0.4f);  // out of every blade's reach
+    core::LoadedProject moved = loaded;
+    moved.project.colliders[0].position = {0.0f, 0.15f, 0.0f};  // sunk into the grass
+    auto expected = core::buildScenePhysics(moved);
+    ASSERT_TRUE(expected.ok()) << expected.error().str();
+    for (const auto device : {editor::PhysicsDevice::Cpu, editor::PhysicsDevice::Gpu}) {
+        editor::Live live = liveOn(loaded, device);
+        ASSERT_TRUE(live.physics);
+        editor::LivePhysics& physics = *live.physics;
+        physics.advanceTo(1.0, 1000);
+        const core::Scene* field = live.scene.get();
+        const std::size_t blades = field->layers[0].patched.blades.size();
+        const float before = lowestTipNearCentre(rendererBlades(live, 0), 0.2f);
+
+        auto followed = editor::followMotion(live, moved, /*settled=*/true);
+        ASSERT_TRUE(followed.ok()) << followed.error().str();
+        EXPECT_TRUE(*followed);
+        EXPECT_TRUE(physics.scene.colliders == expected->colliders);
+        EXPECT_EQ(live.scene->props[0].position, moved.project.colliders[0].position);
+        EXPECT_FALSE(*editor::followMotion(live, moved, true)) << "nothing more to follow";
+        physics.advanceTo(2.0, 1000);
+        EXPECT_EQ(live.scene.get(), field);
+        EXPECT_EQ(live.scene->layers[0].patched.blades.size(), blades);
+        const float after = lowestTipNearCentre(rendererBlades(live, 0), 0.2f);
+        std::printf("[ live physics ] %s: lowest tip under the ball %.3f m before, %.3f m after\n",
+                    editor::physicsDeviceName(device), double(before), double(after));
+        EXPECT_GT(before, 0.25f) << "the field stood before the ball came";
+        EXPECT_LT(after, 0.1f) << "the moved ball did not crush the blades under it";
+    }
+}
+
 // A plane under 10 cm of snow (no wind, no collider) whose load bends the blades: 60 m/s² per
 // metre of snow on an open blade.
 core::LoadedProject snowyPlane(float loadGravity) {

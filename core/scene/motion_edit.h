@@ -1,0 +1,22 @@
+// Edits that move what moves a grown field — its wind sources, its colliders — without changing
+// the field itself. The editor's live physics and the colliders' props follow such an edit at
+// once, frame by frame during a gizmo drag, and the field keeps its blades, their motion and
+// their trails; before, every such edit re-grew the whole field once it ended, and its blades
+// started again from rest (app/live_scene.h, followMotion).
+#pragma once
+
+#include "project/project.h"
+
+namespace grass::core {
+
+// Whether `after` differs from `before` at most in its wind sources and in where its colliders
+// stand, how large they are, their paths, colours and names: as many colliders, each of the same
+// shape, mesh file and packing. The grown field is then the same, unless a layer clears the
+// ground under the colliders (placementFollowsColliders) and they moved.
+bool onlyMotionChanged(const Project& before, const Project& after);
+
+// Whether where a layer's blades (and the billboards that follow its rules) grow depends on the
+// colliders: a layer whose placement rules clear the ground under them.
+bool placementFollowsColliders(const Project& project);
+
+}  // namespace grass::core
