@@ -10,6 +10,17 @@ FieldSimulation::FieldSimulation(const Scene& scene) {
     reset(scene);
 }
 
+std::size_t FieldSimulation::capEta(float etaMax) {
+    std::size_t lowered = 0;
+    for (Layer& layer : mLayers)
+        for (float& eta : layer.eta)
+            if (eta > etaMax) {
+                eta = etaMax;
+                ++lowered;
+            }
+    return lowered;
+}
+
 void FieldSimulation::reset(const Scene& scene) {
     mLayers.clear();
     for (const LayerField& field : scene.layers) {

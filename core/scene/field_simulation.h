@@ -30,6 +30,9 @@ public:
     // blades, η 0.
     void resetPatches(std::size_t layer, const Scene& scene, std::span<const std::uint32_t> patches);
 
+    // Lowers every η above `etaMax` to it; returns how many blades it lowered.
+    std::size_t capEta(float etaMax);
+
     std::size_t layerCount() const { return mLayers.size(); }
     std::span<const Blade> blades(std::size_t layer) const { return mLayers.at(layer).blades; }
     std::span<const float> eta(std::size_t layer) const { return mLayers.at(layer).eta; }

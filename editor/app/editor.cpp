@@ -472,7 +472,7 @@ void Editor::followMotionEdits() {
     const core::Project& project = state.doc.project();
     const LiveMotion& motion = mLive.motion;
     const bool toFollow = project.wind != motion.wind || project.colliders != motion.colliders ||
-                          motion.snowWeighedUnder != motion.colliders;
+                          motion.settledColliders != motion.colliders;
     if (!toFollow && !state.rebuildPending)
         return;
     const core::Project& grown = mLive.builtFrom.project;

@@ -88,6 +88,14 @@ bool LivePhysics::followSnow(const core::SnowParams& snow, const core::Scene& fi
     return true;
 }
 
+void LivePhysics::releaseHeldBlades() {
+    if (cpu)
+        cpu->capEta(RELEASED_ETA);
+    else if (gpu)
+        gpu->capEta(RELEASED_ETA);
+    wake();
+}
+
 void LivePhysics::weighSnowAgain(const core::Scene& field) {
     scene.snowLoadPerMetre.clear();
     scene.snowWeigher.reset();
@@ -228,7 +236,7 @@ Result<Live> bringUpLive(GrownField grown, const std::function<Result<void>(core
     live.builtFrom = std::move(grown.loaded);
     live.motion.wind = live.builtFrom.project.wind;
     live.motion.colliders = live.builtFrom.project.colliders;
-    live.motion.snowWeighedUnder = live.motion.colliders;
+    live.motion.settledColliders = live.motion.colliders;
     live.scene = std::move(grown.scene);
     live.tools = std::make_unique<SceneTools>(*live.scene, live.builtFrom.project.lighting,
                                               grownOn != nullptr ? grownOn->tools.get() : nullptr);
@@ -303,13 +311,16 @@ Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool se
         motion.colliders = project.colliders;
         changed = true;
     }
-    // The props shelter the snow: where they moved, the blades carry another load.
-    if (settled && motion.snowWeighedUnder != motion.colliders) {
-        if (live.physics && live.physics->scene.anySnowLoad()) {
-            live.physics->weighSnowAgain(*live.scene);
+    // Where the colliders stood, the blades they held rise; the props shelter the snow: where
+    // they moved, the blades carry another load.
+    if (settled && motion.settledColliders != motion.colliders) {
+        if (live.physics) {
+            live.physics->releaseHeldBlades();
+            if (live.physics->scene.anySnowLoad())
+                live.physics->weighSnowAgain(*live.scene);
             changed = true;
         }
-        motion.snowWeighedUnder = motion.colliders;
+        motion.settledColliders = motion.colliders;
     }
     return changed;
 }

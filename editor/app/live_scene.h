@@ -105,6 +105,15 @@ struct LivePhysics {
     // The snow's loads weighed again from `field` at rest under scene.snow (prepareSnowLoads):
     // after the snow changed, or the props that shelter it moved.
     void weighSnowAgain(const core::Scene& field);
+    // After an edit moved the colliders: the blades they held down are let go. η beyond
+    // RELEASED_ETA (a blade fully crushed, for longer the longer a collider pressed it: η grows
+    // by d·d every step a still collider holds a blade, 40 after 20 s under a sunk ball) falls
+    // to it, so the imprint of a collider that stood still fades as a fresh trail does (stiffness
+    // at its floor until η < 1 − floor, 0.2 s at the default decay) instead of η / decay seconds
+    // (80 s after those 20 s, hours after a long play). Blades the colliders press where they
+    // now stand are crushed again by the next step. Trails below it keep their η.
+    static constexpr float RELEASED_ETA = 1.0f;
+    void releaseHeldBlades();
 };
 
 // What the live physics and the colliders' props follow now: the project's wind sources and
@@ -113,8 +122,9 @@ struct LivePhysics {
 struct LiveMotion {
     std::vector<core::WindDesc> wind;
     std::vector<core::ColliderDesc> colliders;
-    // The colliders the snow's loads were weighed under (their props shelter the snow).
-    std::vector<core::ColliderDesc> snowWeighedUnder;
+    // The colliders as of the last edit that ended: the snow's loads were weighed under them
+    // (their props shelter the snow) and the blades they held were let go then.
+    std::vector<core::ColliderDesc> settledColliders;
     core::ColliderPackings packings;
 };
 
@@ -171,8 +181,9 @@ Result<void> resetPhysics(Live& live);
 // live.builtFrom): the live physics takes its wind sources and colliders (built as
 // core::buildScenePhysics builds them, the packings from live.motion) and the colliders' props
 // follow, while the field keeps its blades, their motion and their trails. Called every frame
-// of a gizmo drag; `settled` (the edit has ended): the snow's loads are weighed again under the
-// colliders where they now stand (~0.5 s for projects/winter), not on every frame of the drag.
+// of a gizmo drag; `settled` (the edit has ended), when the colliders moved: the blades they held
+// are let go (LivePhysics::releaseHeldBlades) and the snow's loads are weighed again under them
+// where they now stand (~0.5 s for projects/winter), not on every frame of the drag.
 // Returns whether anything changed; errors: a collider's file could not be read.
 Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool settled);
 

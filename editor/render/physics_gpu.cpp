@@ -145,4 +145,17 @@ std::vector<float> PhysicsGpu::readEta() const {
     return out;
 }
 
+std::size_t PhysicsGpu::capEta(float etaMax) {
+    std::vector<float> eta = readEta();
+    std::size_t lowered = 0;
+    for (float& value : eta)
+        if (value > etaMax) {
+            value = etaMax;
+            ++lowered;
+        }
+    if (lowered > 0)
+        mEta.update(std::as_bytes(std::span<const float>(eta)));
+    return lowered;
+}
+
 }  // namespace grass::render

@@ -58,6 +58,9 @@ public:
     std::vector<std::string> allocated() const;
     // η of every blade (a GPU read-back, for tests and tools).
     std::vector<float> readEta() const;
+    // Lowers every η above `etaMax` to it (read back, uploaded again when any changed); returns
+    // how many blades it lowered.
+    std::size_t capEta(float etaMax);
 
 private:
     gl::Program mProgram;

@@ -63,6 +63,13 @@ void ScenePhysicsGpu::step(const core::ScenePhysics& physics, float timeS) {
     }
 }
 
+std::size_t ScenePhysicsGpu::capEta(float etaMax) {
+    std::size_t lowered = 0;
+    for (Layer& layer : mLayers)
+        lowered += layer.physics.capEta(etaMax);
+    return lowered;
+}
+
 void ScenePhysicsGpu::reloadSnowLoads() {
     for (Layer& layer : mLayers)
         layer.loadUploaded = false;

@@ -30,6 +30,8 @@ public:
     // The snow loads of the ScenePhysics given to step changed (an edit of the snow): they are
     // uploaded again, or freed, at the next step.
     void reloadSnowLoads();
+    // Lowers every η above `etaMax` to it on every layer; returns how many blades it lowered.
+    std::size_t capEta(float etaMax);
     // Copies blades into `scene` and η into `simulation` (which must be the scene's).
     void readBack(core::Scene& scene, core::SceneSimulation& simulation) const;
 

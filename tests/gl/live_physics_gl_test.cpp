@@ -211,6 +211,39 @@ TEST_F(LivePhysicsTest, AMovedBallPushesTheBladesWithoutTheFieldGrowingAgain) {
     }
 }
 
+// A ball that sat on the grass for a while and is then moved away by an edit lets go of the
+// blades it held: they rise within seconds, as after a fresh trail. Before (once an edit no longer
+// grew the field again), η had grown under the still ball by d·d every step, and the blades where
+// it stood stayed flat for η / decay seconds (~80 s after these 20 s).
+TEST_F(LivePhysicsTest, BladesABallHeldDownRiseSoonAfterAnEditMovesItAway) {
+    core::LoadedProject loaded = planeFieldProject({2.0f, 4, 60.0f, 0.3f, 0.5f});
+    addBall(loaded, {0.0f, 0.15f, 0.0f}, 0.4f);  // sunk into the grass
+    core::LoadedProject moved = loaded;
+    moved.project.colliders[0].position = {0.0f, 3.0f, 0.0f};  // lifted out of reach
+    for (const auto device : {editor::PhysicsDevice::Cpu, editor::PhysicsDevice::Gpu}) {
+        editor::Live live = liveOn(loaded, device);
+        ASSERT_TRUE(live.physics);
+        editor::LivePhysics& physics = *live.physics;
+        for (double t = 0.5; t <= 20.0; t += 0.5)
+            physics.advanceTo(t, 1000);
+        const float held = lowestTipNearCentre(rendererBlades(live, 0), 0.2f);
+        ASSERT_TRUE(editor::followMotion(live, moved, /*settled=*/true).ok());
+        if (physics.cpu) {
+            const std::span<const float> eta = physics.cpu->eta(0);
+            EXPECT_LE(*std::max_element(eta.begin(), eta.end()), editor::LivePhysics::RELEASED_ETA);
+        }
+        for (double t = 20.5; t <= 23.0; t += 0.5)
+            physics.advanceTo(t, 1000);
+        const float risen = lowestTipNearCentre(rendererBlades(live, 0), 0.2f);
+        std::printf(
+            "[ live physics ] %s: lowest tip where the ball stood %.3f m, 3 s after it "
+            "was moved away %.3f m\n",
+            editor::physicsDeviceName(device), double(held), double(risen));
+        EXPECT_LT(held, 0.05f);
+        EXPECT_GT(risen, 0.25f) << "the blades the ball held stayed down after it was moved";
+    }
+}
+
 // A plane under 10 cm of snow (no wind, no collider) whose load bends the blades: 60 m/s² per
 // metre of snow on an open blade.
 core::LoadedProject snowyPlane(float loadGravity) {
