@@ -211,7 +211,7 @@ Result<GrownField> growField(core::LoadedProject loaded, bool withPhysics,
     GrownField grown;
     grown.scene = std::make_unique<core::Scene>(std::move(*scene));
     if (withPhysics) {
-        auto built = core::buildScenePhysics(loaded, grown.scene->groundOrigin);
+        auto built = core::buildScenePhysics(loaded, grown.scene->groundOrigin, &grown.packings);
         if (!built)
             return built.error();
         // The snow's load on each blade, from the field at rest, as grass render and grass sim
@@ -237,6 +237,7 @@ Result<Live> bringUpLive(GrownField grown, const std::function<Result<void>(core
     live.motion.wind = live.builtFrom.project.wind;
     live.motion.colliders = live.builtFrom.project.colliders;
     live.motion.settledColliders = live.motion.colliders;
+    live.motion.packings = std::move(grown.packings);
     live.scene = std::move(grown.scene);
     live.tools = std::make_unique<SceneTools>(*live.scene, live.builtFrom.project.lighting,
                                               grownOn != nullptr ? grownOn->tools.get() : nullptr);

@@ -153,6 +153,9 @@ struct GrownField {
     core::LoadedProject loaded;  // what it was grown from
     std::unique_ptr<core::Scene> scene;
     std::optional<core::ScenePhysics> physics;  // when grown with physics
+    // The packings of its mesh colliders (LiveMotion::packings), so the first frame of a drag
+    // reads no file either.
+    core::ColliderPackings packings;
 };
 
 // The project's field and, `withPhysics`, its physics scene. `alreadyRead`: the project's mesh

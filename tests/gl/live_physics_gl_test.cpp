@@ -13,6 +13,7 @@
 #include "gl_context_fixture.h"
 #include "scene/scene_physics.h"
 #include "support/density_dab.h"
+#include "support/gltf_writer.h"
 #include "support/plane_project.h"
 #include "support/test_paths.h"
 
@@ -209,6 +210,34 @@ TEST_F(LivePhysicsTest, AMovedBallPushesTheBladesWithoutTheFieldGrowingAgain) {
         EXPECT_GT(before, 0.25f) << "the field stood before the ball came";
         EXPECT_LT(after, 0.1f) << "the moved ball did not crush the blades under it";
     }
+}
+
+// A mesh collider (a rock) dragged in the editor is followed from the packing its field was grown
+// with: no frame of the drag reads its mesh or its packing cache (here both are gone), and its
+// spheres are those a fresh build of the moved rock would give.
+TEST_F(LivePhysicsTest, ADraggedRockIsFollowedWithoutReadingItsFiles) {
+    const std::filesystem::path dir = scratchDir("live_physics_rock");
+    writeGltf(dir / "rock.gltf",
+              singleMeshAsset(boxPrimitive({-0.3f, 0.0f, -0.2f}, {0.3f, 0.4f, 0.2f})));
+    core::LoadedProject loaded = planeFieldProject({2.0f, 4, 60.0f, 0.3f, 0.5f}, dir);
+    core::ColliderDesc rock;
+    rock.name = "rock";
+    rock.shape = core::ColliderShape::Mesh;
+    rock.file = "rock.gltf";
+    rock.sphereCount = 16;
+    loaded.project.colliders = {rock};
+    core::LoadedProject moved = loaded;
+    moved.project.colliders[0].position = {0.5f, 0.0f, 0.2f};
+    auto expected = core::buildScenePhysics(moved);
+    ASSERT_TRUE(expected.ok()) << expected.error().str();
+
+    editor::Live live = liveOn(loaded, editor::PhysicsDevice::Cpu);
+    ASSERT_TRUE(live.physics);
+    std::filesystem::remove(dir / "rock.gltf");
+    std::filesystem::remove_all(dir / ".grass-cache");
+    auto followed = editor::followMotion(live, moved, /*settled=*/false);
+    ASSERT_TRUE(followed.ok()) << followed.error().str();
+    EXPECT_TRUE(live.physics->scene.colliders == expected->colliders);
 }
 
 // A ball that sat on the grass for a while and is then moved away by an edit lets go of the
