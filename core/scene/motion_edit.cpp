@@ -5,22 +5,24 @@
 namespace grass::core {
 
 bool onlyMotionChanged(const Project& before, const Project& after) {
-    if (before.colliders.size() != after.colliders.size())
-        return false;
     // `after` with its motion put back as it was: any other difference is a field's.
     Project unmoved = after;
     unmoved.wind = before.wind;
-    for (std::size_t i = 0; i < unmoved.colliders.size(); ++i) {
-        ColliderDesc& collider = unmoved.colliders[i];
-        const ColliderDesc& was = before.colliders[i];
-        collider.name = was.name;
-        collider.position = was.position;
-        collider.radiusM = was.radiusM;
-        collider.scale = was.scale;
-        collider.path = was.path;
-        collider.color = was.color;
-    }
+    unmoved.colliders = before.colliders;
     return unmoved == before;
+}
+
+bool sameProps(const std::vector<ColliderDesc>& before, const std::vector<ColliderDesc>& after) {
+    if (before.size() != after.size())
+        return false;
+    for (std::size_t i = 0; i < before.size(); ++i) {
+        const ColliderDesc& a = before[i];
+        const ColliderDesc& b = after[i];
+        if (a.shape != b.shape || a.file != b.file || a.sphereCount != b.sphereCount ||
+            a.packingResolution != b.packingResolution)
+            return false;
+    }
+    return true;
 }
 
 bool placementFollowsColliders(const Project& project) {

@@ -9,11 +9,16 @@
 
 namespace grass::core {
 
-// Whether `after` differs from `before` at most in its wind sources and in where its colliders
-// stand, how large they are, their paths, colours and names: as many colliders, each of the same
-// shape, mesh file and packing. The grown field is then the same, unless a layer clears the
-// ground under the colliders (placementFollowsColliders) and they moved.
+// Whether `after` differs from `before` at most in its wind sources and its colliders (any
+// change: added, deleted, moved, another mesh or packing). The grown field is then the same,
+// unless a layer clears the ground under the colliders (placementFollowsColliders) and they
+// changed.
 bool onlyMotionChanged(const Project& before, const Project& after);
+
+// Whether two collider lists hold the same props: as many colliders, each of the same shape,
+// mesh file and packing (they may stand elsewhere, at another size, on another path, in
+// another colour, under another name). Then the props only move; else they are made again.
+bool sameProps(const std::vector<ColliderDesc>& before, const std::vector<ColliderDesc>& after);
 
 // Whether where a layer's blades (and the billboards that follow its rules) grow depends on the
 // colliders: a layer whose placement rules clear the ground under them.

@@ -459,12 +459,13 @@ bool Editor::applyRequests() {
     return false;
 }
 
-// A gizmo drag of a wind source or a collider, a panel edit of their settings, or the undo of
-// either changes nothing of the grown field: the live physics takes the new wind and colliders
-// and the props move, frame by frame during a drag, and the field goes on moving (a ball dragged
-// through the grass pushes it aside as it goes). Before, nothing moved until the mouse was
-// released, and then the whole field was grown again and its blades restarted from rest. Not
-// while an export reads the scene or a re-grow will replace it (the edit re-grows then).
+// A gizmo drag of a wind source or a collider, a panel edit of their settings, one added or
+// deleted, or the undo of any of these changes nothing of the grown field: the live physics
+// takes the new wind and colliders and the props move (or are made again), frame by frame during
+// a drag, and the field goes on moving (a ball dragged through the grass pushes it aside as it
+// goes). Before, nothing moved until the mouse was released, and then the whole field was grown
+// again and its blades restarted from rest. Not while an export reads the scene or a re-grow
+// will replace it (the edit re-grows then).
 void Editor::followMotionEdits() {
     EditorState& state = mState;
     if (!mLive.scene || state.busy() || state.regrowing())
@@ -476,7 +477,9 @@ void Editor::followMotionEdits() {
     if (!toFollow && !state.rebuildPending)
         return;
     const core::Project& grown = mLive.builtFrom.project;
-    if (!core::onlyMotionChanged(grown, project))
+    // A mesh collider not packed yet (another file or sphere count) is packed by the re-grow,
+    // on its worker: packing can take seconds.
+    if (!core::onlyMotionChanged(grown, project) || !motion.packed(project.colliders))
         return;
     const bool settled =
         !state.view.toolDragActive && (!mUi || mUi->context().activeId().value == 0);

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "gl/headless_context.h"
+#include "scene/motion_edit.h"
 #include "scene/scene_snow.h"
 #include "snow/snow_drift.h"
 
@@ -289,25 +290,49 @@ Result<void> resetPhysics(Live& live) {
     return {};
 }
 
+bool LiveMotion::packed(const std::vector<core::ColliderDesc>& wanted) const {
+    return std::all_of(wanted.begin(), wanted.end(), [&](const core::ColliderDesc& c) {
+        return c.shape != core::ColliderShape::Mesh ||
+               packings.byFile.contains({c.file, c.sphereCount, c.packingResolution});
+    });
+}
+
 Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool settled) {
     const core::Project& project = loaded.project;
     LiveMotion& motion = live.motion;
     bool changed = false;
     if (project.wind != motion.wind || project.colliders != motion.colliders) {
+        // Both built before either is taken, so a file that cannot be read changes nothing.
+        std::optional<core::ScenePhysics> built;
         if (live.physics) {
-            auto built =
+            auto physics =
                 core::buildScenePhysics(loaded, live.scene->groundOrigin, &motion.packings);
-            if (!built)
-                return built.error();
+            if (!physics)
+                return physics.error();
+            built.emplace(std::move(*physics));
+        }
+        const bool propsMove = core::sameProps(motion.colliders, project.colliders);
+        std::vector<core::SceneProp> props;
+        if (!propsMove) {
+            auto loadedProps = core::loadSceneProps(loaded, live.scene->groundOrigin);
+            if (!loadedProps)
+                return loadedProps.error();
+            props = std::move(*loadedProps);
+        }
+        if (built) {
             LivePhysics& physics = *live.physics;
             physics.scene.wind = std::move(built->wind);
             physics.scene.colliders = std::move(built->colliders);
             physics.timeIndependent = timeIndependent(physics.scene);
             physics.wake();
         }
-        const std::size_t props = std::min(live.scene->props.size(), project.colliders.size());
-        for (std::size_t i = 0; i < props; ++i)
-            core::placeSceneProp(live.scene->props[i], project.colliders[i]);
+        if (propsMove) {
+            for (std::size_t i = 0; i < live.scene->props.size(); ++i)
+                core::placeSceneProp(live.scene->props[i], project.colliders[i]);
+        } else {
+            live.scene->props = std::move(props);
+            live.renderer->reloadProps();
+        }
         motion.wind = project.wind;
         motion.colliders = project.colliders;
         changed = true;

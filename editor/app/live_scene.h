@@ -126,6 +126,9 @@ struct LiveMotion {
     // (their props shelter the snow) and the blades they held were let go then.
     std::vector<core::ColliderDesc> settledColliders;
     core::ColliderPackings packings;
+    // Whether every mesh collider of `wanted` has its packing here: then following them
+    // packs nothing (which could take seconds on the window's thread).
+    bool packed(const std::vector<core::ColliderDesc>& wanted) const;
 };
 
 // What a project becomes on the GPU; rebuilt whole when the project is re-grown or replaced.
@@ -180,14 +183,15 @@ Result<Live> bringUpLive(GrownField grown,
 // (keeping its step count).
 Result<void> resetPhysics(Live& live);
 
-// After an edit of `loaded` that moved only what moves the field (core::onlyMotionChanged against
-// live.builtFrom): the live physics takes its wind sources and colliders (built as
+// After an edit of `loaded` that changed only what moves the field (core::onlyMotionChanged
+// against live.builtFrom): the live physics takes its wind sources and colliders (built as
 // core::buildScenePhysics builds them, the packings from live.motion) and the colliders' props
-// follow, while the field keeps its blades, their motion and their trails. Called every frame
-// of a gizmo drag; `settled` (the edit has ended), when the colliders moved: the blades they held
-// are let go (LivePhysics::releaseHeldBlades) and the snow's loads are weighed again under them
-// where they now stand (~0.5 s for projects/winter), not on every frame of the drag.
-// Returns whether anything changed; errors: a collider's file could not be read.
+// follow (moved, or made again when a collider was added, deleted or given another mesh:
+// core::sameProps), while the field keeps its blades, their motion and their trails. Called every
+// frame of a gizmo drag; `settled` (the edit has ended), when the colliders moved: the blades they
+// held are let go (LivePhysics::releaseHeldBlades) and the snow's loads are weighed again under
+// them where they now stand (~0.5 s for projects/winter), not on every frame of the drag. Returns
+// whether anything changed; errors: a collider's file could not be read.
 Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool settled);
 
 }  // namespace grass::editor

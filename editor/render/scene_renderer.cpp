@@ -102,9 +102,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(const core::Scene& 
         sameSurface != nullptr ? sameSurface->mMesh : std::make_shared<const MeshGpu>(scene.mesh);
     if (const Rgba8Pixels& image = scene.look.baseTexture; !image.pixels.empty())
         renderer->mSurfaceTexture = uploadSurfaceTexture(image, scene.look);
-    renderer->mProps.reserve(scene.props.size());
-    for (const auto& prop : scene.props)
-        renderer->mProps.emplace_back(prop.mesh);
+    renderer->reloadProps();
     renderer->mFields.reserve(scene.layers.size());
     for (const auto& layer : scene.layers)
         renderer->mFields.emplace_back(layer);
@@ -232,6 +230,13 @@ FrameTimings SceneRenderer::lastTimings() const {
     if (mSunShadow)
         timings.allocated.push_back("sun_shadow_map");
     return timings;
+}
+
+void SceneRenderer::reloadProps() {
+    mProps.clear();
+    mProps.reserve(mScene->props.size());
+    for (const auto& prop : mScene->props)
+        mProps.emplace_back(prop.mesh);
 }
 
 }  // namespace grass::render

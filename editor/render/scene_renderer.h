@@ -95,6 +95,10 @@ public:
     // Snow read-backs for tests and tools (wait for the GPU): the depth pass of the last frame
     // with snow (null before one), and the tip whiteness the cull wrote for layer `layer`.
     const SnowPass* snowPass() const { return mSnow.get(); }
+    // The scene's props were replaced (a collider added or deleted in the editor, which grows
+    // the field no more for it): their meshes go up again.
+    void reloadProps();
+    std::size_t propCount() const { return mProps.size(); }
     std::vector<float> readTipSnow(std::size_t layer) const {
         return layer < mFields.size() ? mFields[layer].readTipSnow() : std::vector<float>{};
     }

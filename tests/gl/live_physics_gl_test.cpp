@@ -212,6 +212,44 @@ TEST_F(LivePhysicsTest, AMovedBallPushesTheBladesWithoutTheFieldGrowingAgain) {
     }
 }
 
+// A ball added, then deleted, is followed as a moved one is: its prop is made (and drawn by the
+// renderer) or dropped, the physics takes it or lets it go, and the field keeps its blades. A
+// mesh collider whose packing the field does not hold yet is left to a re-grow (packing can take
+// seconds, on the re-grow's worker).
+TEST_F(LivePhysicsTest, ABallAddedOrDeletedIsFollowedWithoutTheFieldGrowingAgain) {
+    core::LoadedProject loaded = planeFieldProject({2.0f, 4, 60.0f, 0.3f, 0.5f});
+    editor::Live live = liveOn(loaded, editor::PhysicsDevice::Cpu);
+    ASSERT_TRUE(live.physics);
+    const core::Scene* field = live.scene.get();
+    EXPECT_EQ(live.renderer->propCount(), 0u);
+
+    core::LoadedProject added = loaded;
+    addBall(added, {0.0f, 0.15f, 0.0f}, 0.4f);
+    auto followed = editor::followMotion(live, added, /*settled=*/true);
+    ASSERT_TRUE(followed.ok()) << followed.error().str();
+    EXPECT_EQ(live.scene->props.size(), 1u);
+    EXPECT_EQ(live.renderer->propCount(), 1u);
+    EXPECT_EQ(live.physics->scene.colliders.size(), 1u);
+    live.physics->advanceTo(1.0, 1000);
+    EXPECT_LT(lowestTipNearCentre(live.physics->cpu->blades(0), 0.2f), 0.05f)
+        << "the added ball crushes the blades under it";
+
+    ASSERT_TRUE(editor::followMotion(live, loaded, /*settled=*/true).ok());
+    EXPECT_TRUE(live.scene->props.empty());
+    EXPECT_EQ(live.renderer->propCount(), 0u);
+    EXPECT_TRUE(live.physics->scene.colliders.empty());
+    live.physics->advanceTo(4.0, 1000);
+    EXPECT_GT(lowestTipNearCentre(live.physics->cpu->blades(0), 0.2f), 0.25f)
+        << "the blades rise once the ball is deleted";
+    EXPECT_EQ(live.scene.get(), field);
+
+    core::ColliderDesc rock;
+    rock.shape = core::ColliderShape::Mesh;
+    rock.file = "rock.glb";
+    EXPECT_FALSE(live.motion.packed({rock}));
+    EXPECT_TRUE(live.motion.packed(added.project.colliders));
+}
+
 // A mesh collider (a rock) dragged in the editor is followed from the packing its field was grown
 // with: no frame of the drag reads its mesh or its packing cache (here both are gone), and its
 // spheres are those a fresh build of the moved rock would give.

@@ -39,18 +39,32 @@ TEST(MotionEdit, MovingOrResizingWindAndCollidersLeavesTheFieldAsItIs) {
     EXPECT_TRUE(onlyMotionChanged(before, windless));
 }
 
-TEST(MotionEdit, WhatTheFieldIsGrownFromIsNoMotionEdit) {
+TEST(MotionEdit, CollidersAddedDeletedOrRemadeAreMotionEditsWithOtherProps) {
     const Project before = windAndBall();
+    Project moved = before;
+    moved.colliders[0].position.x += 0.7f;
+    moved.colliders[0].radiusM = 0.9f;
+    EXPECT_TRUE(sameProps(before.colliders, moved.colliders));
     Project added = before;
-    added.colliders.push_back(added.colliders[0]);  // another prop to draw and place around
-    EXPECT_FALSE(onlyMotionChanged(before, added));
+    added.colliders.push_back(added.colliders[0]);  // another prop to draw
+    EXPECT_TRUE(onlyMotionChanged(before, added));
+    EXPECT_FALSE(sameProps(before.colliders, added.colliders));
+    Project deleted = before;
+    deleted.colliders.clear();
+    EXPECT_TRUE(onlyMotionChanged(before, deleted));
+    EXPECT_FALSE(sameProps(before.colliders, deleted.colliders));
     Project mesh = before;
     mesh.colliders[0].shape = ColliderShape::Mesh;
     mesh.colliders[0].file = "rock.glb";
-    EXPECT_FALSE(onlyMotionChanged(before, mesh));
+    EXPECT_TRUE(onlyMotionChanged(before, mesh));
+    EXPECT_FALSE(sameProps(before.colliders, mesh.colliders));
     Project packing = mesh;
     packing.colliders[0].sphereCount = 64;
-    EXPECT_FALSE(onlyMotionChanged(mesh, packing));
+    EXPECT_FALSE(sameProps(mesh.colliders, packing.colliders));
+}
+
+TEST(MotionEdit, WhatTheFieldIsGrownFromIsNoMotionEdit) {
+    const Project before = windAndBall();
     Project denser = before;
     denser.colliders[0].position.x += 0.7f;
     denser.layers[0].scatter.density *= 2.0f;
@@ -58,6 +72,9 @@ TEST(MotionEdit, WhatTheFieldIsGrownFromIsNoMotionEdit) {
     Project gravity = before;
     gravity.physics.gravity.w = 3.0f;  // placement rules measure slopes against it
     EXPECT_FALSE(onlyMotionChanged(before, gravity));
+    Project snowy = before;
+    snowy.snow.enabled = 1u;
+    EXPECT_FALSE(onlyMotionChanged(before, snowy));
 }
 
 TEST(MotionEdit, PlacementFollowsCollidersOnlyWhereALayerClearsTheGroundUnderThem) {
