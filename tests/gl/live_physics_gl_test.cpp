@@ -343,6 +343,27 @@ std::unique_ptr<RenderedField> renderedField(const core::LoadedProject& loaded) 
     return field;
 }
 
+// Under snow, a ball moved by an edit shelters other ground: once the edit ends the blades are
+// weighed again under it where it now stands, as a field grown with the ball there is weighed.
+TEST_F(LivePhysicsTest, ABallMovedUnderSnowWeighsTheBladesAgainUnderItsNewShelter) {
+    core::LoadedProject loaded = snowyPlane(60.0f);
+    addBall(loaded, {-1.0f, 0.8f, 0.0f}, 0.5f);  // above the grass: a shelter, no crush
+    core::LoadedProject moved = loaded;
+    moved.project.colliders[0].position = {1.0f, 0.8f, 0.5f};
+    const auto fresh = renderedField(moved);
+    ASSERT_TRUE(fresh);
+    const std::vector<float>& expected = fresh->simulation->physics().snowLoadPerMetre.at(0);
+
+    editor::Live live = liveOn(loaded, editor::PhysicsDevice::Cpu);
+    ASSERT_TRUE(live.physics && live.physics->scene.anySnowLoad());
+    const std::vector<float> before = live.physics->scene.snowLoadPerMetre.at(0);
+    ASSERT_NE(before, expected) << "the ball must shelter other blades where it goes";
+    ASSERT_TRUE(editor::followMotion(live, moved, /*settled=*/false).ok());
+    EXPECT_EQ(live.physics->scene.snowLoadPerMetre.at(0), before) << "weighed during the drag";
+    ASSERT_TRUE(editor::followMotion(live, moved, /*settled=*/true).ok());
+    EXPECT_EQ(live.physics->scene.snowLoadPerMetre.at(0), expected);
+}
+
 // The editor's live field bends under its snow as `grass render --time` bends it
 // (SceneSimulation): before, the live physics never weighed the snow, so the editor's field stood
 // upright under it, and auto sent a snowy scene to the compute shader (llvmpipe's slowest path,
