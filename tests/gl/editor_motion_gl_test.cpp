@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "editor_runs.h"
@@ -36,30 +37,61 @@ std::vector<core::ColliderDesc> savedColliders(const std::filesystem::path& dir)
     return saved.ok() ? saved->project.colliders : std::vector<core::ColliderDesc>{};
 }
 
+// Where the ball's upper half stands before any drag (25 px left of its marker, 24 px above):
+// the red and blue of that pixel of a 900-pixel-wide screenshot, {-1, -1} when unreadable.
+// Blue well above red: the sky shows there; about equal: the grey ball.
+std::pair<int, int> ballTopRedBlue(const std::filesystem::path& shot) {
+    auto image = readRgba8Image(shot);
+    EXPECT_TRUE(image.ok()) << image.error().str();
+    if (!image.ok() || image->width != 900 || image->height < 166)
+        return {-1, -1};
+    const std::uint8_t* pixel = &image->pixels[(std::size_t(165) * 900 + 590) * 4];
+    return {int(pixel[0]), int(pixel[2])};
+}
+
+// The editor run on the ball project in `dir` with `script` (which ends saving it), replayed
+// frame by frame: the colliders it saved. The run must grow the field nowhere again.
+std::vector<core::ColliderDesc> collidersAfter(const std::filesystem::path& dir,
+                                               const std::string& script) {
+    writeBallProject(dir);
+    const std::string log = runEditor(dir, script, "", /*wallClock=*/false);
+    EXPECT_EQ(log.find("grew the field again"), std::string::npos) << log;
+    return savedColliders(dir);
+}
+
+// The gizmo (g), and a click on the ball's marker selects it.
+constexpr const char* SELECT_BALL = "wait 2\nkey g\nwait 2\nclick 615 189\nwait 2\n";
+
 TEST(EditorMotion, ADraggedBallMovesAsItIsDraggedAndGrowsNothingAgain) {
     const auto dir = scratchDir("editor_motion");
-    writeBallProject(dir);
     // The gizmo, the ball selected, its up arrow dragged 50 px down and held there for a
     // screenshot, released, saved.
-    const std::string log = runEditor(dir,
-                                      "wait 2\nkey g\nwait 2\nclick 615 189\nwait 2\n"
-                                      "move 615 150\npress\nmove 615 170\nmove 615 190\n"
-                                      "move 615 200\nwait 3\nscreenshot held.png\nrelease\n"
-                                      "wait 3\nkey ctrl+s\nwait 2\n",
-                                      "", /*wallClock=*/false);
-    EXPECT_EQ(log.find("grew the field again"), std::string::npos) << log;
-    const std::vector<core::ColliderDesc> colliders = savedColliders(dir);
+    const std::vector<core::ColliderDesc> colliders =
+        collidersAfter(dir, std::string(SELECT_BALL) +
+                                "move 615 150\npress\nmove 615 170\nmove 615 190\n"
+                                "move 615 200\nwait 3\nscreenshot held.png\nrelease\n"
+                                "wait 3\nkey ctrl+s\nwait 2\n");
     ASSERT_EQ(colliders.size(), 1u);
     EXPECT_LT(colliders[0].position.y, 0.7f) << "the drag did not move the ball";
-    // Held mid-drag: where the ball's upper half was (25 px left of its marker, 24 px above),
-    // the sky shows, since the ball went down with the pointer.
-    auto held = readRgba8Image(dir / "held.png");
-    ASSERT_TRUE(held.ok()) << held.error().str();
-    ASSERT_EQ(held->width, 900);
-    const std::uint8_t* pixel = &held->pixels[(std::size_t(165) * 900 + 590) * 4];
-    EXPECT_GT(int(pixel[2]), int(pixel[0]) + 40)
-        << "the ball's prop stayed where it was during the drag (rgb " << int(pixel[0]) << " "
-        << int(pixel[1]) << " " << int(pixel[2]) << ")";
+    // Held mid-drag: where the ball's upper half was, the sky shows, since the ball went down
+    // with the pointer.
+    const auto [red, blue] = ballTopRedBlue(dir / "held.png");
+    EXPECT_GT(blue, red + 40) << "the ball's prop stayed where it was during the drag";
+}
+
+// Ctrl+Z after a drag puts the ball back where it stood, without growing the field either.
+TEST(EditorMotion, AnUndoneDragPutsTheBallBackWithoutGrowingTheField) {
+    const auto dir = scratchDir("editor_motion_undo");
+    const std::vector<core::ColliderDesc> colliders =
+        collidersAfter(dir, std::string(SELECT_BALL) +
+                                "drag 615 150 615 200 6\nwait 3\nkey ctrl+z\nwait 3\n"
+                                "screenshot undone.png\nkey ctrl+s\nwait 2\n");
+    ASSERT_EQ(colliders.size(), 1u);
+    EXPECT_EQ(colliders[0].position, glm::vec3(0.0f, 0.8f, 0.0f));
+    // The ball's upper half is drawn where it was before the drag.
+    const auto [red, blue] = ballTopRedBlue(dir / "undone.png");
+    ASSERT_GE(red, 0);
+    EXPECT_LT(blue, red + 40) << "the undone ball's prop did not come back";
 }
 
 // The gizmo's "add ball", then the new ball's "delete", grow nothing again either.
