@@ -126,6 +126,16 @@ std::uint32_t substepCount(const PhysicsParams& params) {
                                              : std::max(static_cast<std::uint32_t>(wanted), 1u);
 }
 
+std::size_t capEta(std::span<float> eta, float etaMax) {
+    std::size_t lowered = 0;
+    for (float& value : eta)
+        if (value > etaMax) {
+            value = etaMax;
+            ++lowered;
+        }
+    return lowered;
+}
+
 glm::vec3 restTip(const Blade& blade) {
     const glm::vec3 up = unitUp(blade.up());
     const float h = std::isfinite(blade.h()) ? std::max(blade.h(), 0.0f) : 0.0f;

@@ -75,6 +75,9 @@ struct SphereCollider {
 // η is capped so that d·d accumulated over many hits stays finite; a trail lasts at most
 // ETA_MAX / a seconds.
 constexpr float ETA_MAX = 1.0e4f;
+// Lowers every η of `eta` above `etaMax` to it; returns how many it lowered (the editor letting
+// go of the blades a moved collider held: editor::LivePhysics::releaseHeldBlades).
+std::size_t capEta(std::span<float> eta, float etaMax);
 
 // The number of substeps and their length for one step of dtS (≥ 1 substep; 0 for dtS ≤ 0).
 std::uint32_t substepCount(const PhysicsParams& params);

@@ -13,11 +13,7 @@ FieldSimulation::FieldSimulation(const Scene& scene) {
 std::size_t FieldSimulation::capEta(float etaMax) {
     std::size_t lowered = 0;
     for (Layer& layer : mLayers)
-        for (float& eta : layer.eta)
-            if (eta > etaMax) {
-                eta = etaMax;
-                ++lowered;
-            }
+        lowered += core::capEta(layer.eta, etaMax);
     return lowered;
 }
 

@@ -45,29 +45,61 @@ Result<ColliderMesh> loadColliderMesh(const LoadedProject& loaded, const Collide
     return ColliderMesh{std::move(*file), std::move(*imported)};
 }
 
+namespace {
+
+// The mesh of collider `index`: a unit sphere, or its glTF file read.
+Result<MovableSurfaceMesh> colliderPropMesh(const LoadedProject& loaded, std::size_t index,
+                                            glm::dvec3 groundOrigin) {
+    const ColliderDesc& collider = loaded.project.colliders[index];
+    if (collider.shape == ColliderShape::Sphere) {
+        ProceduralMeshParams sphere;
+        sphere.shape = ProceduralShape::Sphere;
+        sphere.size = 1.0f;
+        sphere.resolution = SPHERE_RESOLUTION;
+        return makeProceduralMesh(sphere);
+    }
+    auto loadedMesh = loadColliderMesh(loaded, collider, index, groundOrigin);
+    if (!loadedMesh)
+        return loadedMesh.error();
+    return std::move(loadedMesh->imported.mesh);
+}
+
+}  // namespace
+
 Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded,
                                               glm::dvec3 groundOrigin) {
-    std::vector<SceneProp> props;
-    ProceduralMeshParams sphere;
-    sphere.shape = ProceduralShape::Sphere;
-    sphere.size = 1.0f;
-    sphere.resolution = SPHERE_RESOLUTION;
+    return remakeSceneProps(loaded, {}, {}, groundOrigin);
+}
+
+Result<std::vector<SceneProp>> remakeSceneProps(const LoadedProject& loaded,
+                                                std::vector<SceneProp> props,
+                                                const std::vector<ColliderDesc>& madeFor,
+                                                glm::dvec3 groundOrigin) {
     const auto& colliders = loaded.project.colliders;
+    std::vector<bool> taken(std::min(props.size(), madeFor.size()), false);
+    std::vector<SceneProp> remade;
+    remade.reserve(colliders.size());
     for (std::size_t i = 0; i < colliders.size(); ++i) {
         const ColliderDesc& collider = colliders[i];
         SceneProp prop;
-        if (collider.shape == ColliderShape::Sphere) {
-            prop.mesh = makeProceduralMesh(sphere);
+        std::size_t old = 0;
+        while (old < taken.size() &&
+               (taken[old] || madeFor[old].shape != collider.shape ||
+                (collider.shape == ColliderShape::Mesh && madeFor[old].file != collider.file)))
+            ++old;
+        if (old < taken.size()) {
+            taken[old] = true;
+            prop.mesh = std::move(props[old].mesh);
         } else {
-            auto loadedMesh = loadColliderMesh(loaded, collider, i, groundOrigin);
-            if (!loadedMesh)
-                return loadedMesh.error();
-            prop.mesh = std::move(loadedMesh->imported.mesh);
+            auto mesh = colliderPropMesh(loaded, i, groundOrigin);
+            if (!mesh)
+                return mesh.error();
+            prop.mesh = std::move(*mesh);
         }
         placeSceneProp(prop, collider);
-        props.push_back(std::move(prop));
+        remade.push_back(std::move(prop));
     }
-    return props;
+    return remade;
 }
 
 }  // namespace grass::core

@@ -50,5 +50,12 @@ void placeSceneProp(SceneProp& prop, const ColliderDesc& collider);
 // One prop per collider, in project order; errors name the collider's file or field.
 Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded,
                                               glm::dvec3 groundOrigin = glm::dvec3(0.0));
+// The same after colliders were added or deleted: `props`, made for the colliders `madeFor`,
+// give up their meshes to the colliders of the same shape (and mesh file) in order, so only a
+// new collider's mesh is made or read (the editor adding a ball reads no rock's file again).
+Result<std::vector<SceneProp>> remakeSceneProps(const LoadedProject& loaded,
+                                                std::vector<SceneProp> props,
+                                                const std::vector<ColliderDesc>& madeFor,
+                                                glm::dvec3 groundOrigin = glm::dvec3(0.0));
 
 }  // namespace grass::core

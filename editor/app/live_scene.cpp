@@ -314,7 +314,8 @@ Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool se
         const bool propsMove = core::sameProps(motion.colliders, project.colliders);
         std::vector<core::SceneProp> props;
         if (!propsMove) {
-            auto loadedProps = core::loadSceneProps(loaded, live.scene->groundOrigin);
+            auto loadedProps = core::remakeSceneProps(loaded, live.scene->props, motion.colliders,
+                                                      live.scene->groundOrigin);
             if (!loadedProps)
                 return loadedProps.error();
             props = std::move(*loadedProps);

@@ -147,12 +147,7 @@ std::vector<float> PhysicsGpu::readEta() const {
 
 std::size_t PhysicsGpu::capEta(float etaMax) {
     std::vector<float> eta = readEta();
-    std::size_t lowered = 0;
-    for (float& value : eta)
-        if (value > etaMax) {
-            value = etaMax;
-            ++lowered;
-        }
+    const std::size_t lowered = core::capEta(eta, etaMax);
     if (lowered > 0)
         mEta.update(std::as_bytes(std::span<const float>(eta)));
     return lowered;

@@ -367,3 +367,16 @@ TEST(Physics, SubstepCountFollowsThePolicy) {
 
 }  // namespace
 }  // namespace grass::core
+
+namespace grass::core {
+namespace {
+
+TEST(CapEta, LowersOnlyWhatLiesAboveTheCap) {
+    std::vector<float> eta{0.0f, 0.5f, 1.0f, 39.8f, ETA_MAX};
+    EXPECT_EQ(capEta(eta, 1.0f), 2u);
+    EXPECT_EQ(eta, (std::vector<float>{0.0f, 0.5f, 1.0f, 1.0f, 1.0f}));
+    EXPECT_EQ(capEta(eta, 1.0f), 0u);
+}
+
+}  // namespace
+}  // namespace grass::core

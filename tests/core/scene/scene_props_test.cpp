@@ -56,5 +56,32 @@ TEST(SceneProps, MissingMeshFileNamesIt) {
         << props.error().str();
 }
 
+// A ball added beside a rock, then the rock moved to the end: the props are remade from the
+// ones at hand, so the rock's mesh is kept (its file need not exist) and only the ball is made.
+TEST(SceneProps, RemadePropsKeepTheMeshesTheyHave) {
+    auto loaded = loadProject(test::sourceDir() / "tests/data/projects/rock");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+    auto props = loadSceneProps(*loaded);
+    ASSERT_TRUE(props.ok()) << props.error().str();
+    const std::vector<ColliderDesc> madeFor = loaded->project.colliders;
+    ASSERT_EQ(madeFor.front().shape, ColliderShape::Mesh);
+    const std::size_t rockFaces = props->front().mesh->n_faces();
+
+    LoadedProject edited = *loaded;
+    edited.folder = test::scratchDir("scene_props_remade");  // the rock's file is not there
+    ColliderDesc ball;
+    ball.radiusM = 0.25f;
+    edited.project.colliders.insert(edited.project.colliders.begin(), ball);
+    edited.project.colliders.back().position = {1.0f, 0.0f, 2.0f};
+    ASSERT_FALSE(loadSceneProps(edited).ok()) << "read afresh, the rock's file is missing";
+    auto remade = remakeSceneProps(edited, *props, madeFor);
+    ASSERT_TRUE(remade.ok()) << remade.error().str();
+    ASSERT_EQ(remade->size(), edited.project.colliders.size());
+    EXPECT_EQ(remade->front().scale, 0.25f);
+    EXPECT_GT(remade->front().mesh->n_faces(), 0u);
+    EXPECT_EQ(remade->back().mesh->n_faces(), rockFaces);
+    EXPECT_EQ(remade->back().position, glm::vec3(1.0f, 0.0f, 2.0f));
+}
+
 }  // namespace
 }  // namespace grass::core
