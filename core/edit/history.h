@@ -22,6 +22,11 @@ namespace grass::core {
 struct ProjectEdit {
     Project before;
     Project after;
+    // Whether the live field is grown from what the step changed (layers' scatter, the surface,
+    // wind, colliders): undoing or redoing it grows the field again. Not for a step of render
+    // settings, light, colours, shapes or names, which the field shows as they are: before
+    // 2026-12-07 every undo grew the whole field again, and its blades restarted from rest.
+    bool regrows = true;
 };
 
 struct PaintEdit {

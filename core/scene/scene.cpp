@@ -326,12 +326,7 @@ Result<Scene> buildSceneFromMesh(const LoadedProject& loaded, MovableSurfaceMesh
         static_cast<GrownField&>(field) = growField(source, project.render.patchSize, stop);
         if (stop.stop_requested())
             return buildStopped(loaded);
-        field.rootColor = layer.rootColor;
-        field.tipColor = layer.tipColor;
-        field.poorRootColor = layer.growth.poorRootColor;
-        field.poorTipColor = layer.growth.poorTipColor;
-        field.shape = layer.shape;
-        field.tipStart = layer.tipStart;
+        takeLayerLook(field, layer);
         auto shading = bakeBladeShading(field.patched.blades, bladeShadingParams(project.lighting),
                                         field.seed);
         if (!shading)
@@ -437,6 +432,22 @@ Result<void> placeBillboards(Scene& scene) {
 void refreshBillboards(Scene& scene) {
     scene.billboards.objects =
         followLayers(scene.billboards.placed, scene.billboards.follow, scene.layers);
+}
+
+void takeLayerLook(LayerField& field, const GrassLayer& layer) {
+    field.rootColor = layer.rootColor;
+    field.tipColor = layer.tipColor;
+    field.poorRootColor = layer.growth.poorRootColor;
+    field.poorTipColor = layer.growth.poorTipColor;
+    field.shape = layer.shape;
+    field.tipStart = layer.tipStart;
+}
+
+void takeLayerLooks(Scene& scene, const Project& project) {
+    for (std::size_t i = 0; i < std::min(scene.layers.size(), project.layers.size()); ++i) {
+        scene.layers[i].name = project.layers[i].name;
+        takeLayerLook(scene.layers[i], project.layers[i]);
+    }
 }
 
 BladeShadingParams bladeShadingParams(const GrassLightingDesc& lighting) {

@@ -82,6 +82,13 @@ struct Scene {
     std::size_t totalBlades() const;
 };
 
+// The colours, blade shape and tip of `layer`, which the renderer reads from the grown field
+// every frame: a change to them needs no growing.
+void takeLayerLook(LayerField& field, const GrassLayer& layer);
+// Each grown layer takes its project layer's name and look (takeLayerLook), index for index:
+// after an undo of a step that grew nothing (a colour, a shape, a rename).
+void takeLayerLooks(Scene& scene, const Project& project);
+
 // The most blades one scene may hold: with the CPU copies, the GPU copy and the physics state,
 // sceneBytesPerBlade() each (296 bytes), 20 million is ~5.5 GiB; far beyond that a typo in a
 // density would freeze the machine instead of failing. buildScene refuses more up front, naming

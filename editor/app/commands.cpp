@@ -34,13 +34,24 @@ struct Applier {
         if (changed) {
             doc.loaded.project = std::move(c.after);
             doc.dirty = true;
+            doc.editChanged = true;
         }
-        const bool stepDue = !c.ongoing && !s.view.toolDragActive && doc.project() != doc.committed;
+        const bool ended = !c.ongoing && !s.view.toolDragActive;
+        const bool stepDue = ended && doc.project() != doc.committed;
+        if (c.effect != EditEffect::Live && (changed || stepDue))
+            doc.editRegrows = true;
         if (c.effect == EditEffect::Regrow && (changed || stepDue))
             s.rebuildPending = true;
+        if (ended && !stepDue && doc.editChanged) {
+            // The edit ended where it began (a drag brought back, a value typed again): no step,
+            // and nothing unsaved when nothing was before it (the title's * goes).
+            doc.dirty = !doc.history.atSavePoint();
+            doc.editChanged = doc.editRegrows = false;
+        }
         if (!stepDue)
             return changed;
-        core::ProjectEdit step{doc.committed, doc.project()};
+        core::ProjectEdit step{doc.committed, doc.project(), doc.editRegrows};
+        doc.editChanged = doc.editRegrows = false;
         std::string label = c.label.empty() ? projectEditLabel(step.before, step.after) : c.label;
         doc.committed = doc.project();
         doc.history.push(core::Edit{std::move(label), std::move(step)});
@@ -72,7 +83,14 @@ struct Applier {
         if (const auto* project = std::get_if<core::ProjectEdit>(&edit->change)) {
             s.doc.loaded.project = undoing ? project->before : project->after;
             s.doc.committed = s.doc.project();
-            s.rebuildPending = true;
+            s.doc.editChanged = s.doc.editRegrows = false;
+            // A step the field was not grown from (render settings, light, colours, names) is
+            // shown as it is; the rest grows the field again (or moves what moves it:
+            // Editor::followMotionEdits).
+            if (project->regrows)
+                s.rebuildPending = true;
+            else if (s.scene)
+                core::takeLayerLooks(*s.scene, s.doc.project());
         } else {
             done = replayPaint(std::get<core::PaintEdit>(edit->change), undoing);
         }

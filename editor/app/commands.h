@@ -16,6 +16,7 @@ namespace grass::editor {
 enum class EditEffect {
     Live,    // read by the renderer every frame (colours, shapes, render settings): nothing to do
     Regrow,  // the scene is grown from it (scatter, growth, wind, colliders, physics)
+    Grown,   // a field was grown for it already (an imported mesh): undoing it grows again
 };
 
 // The project becomes `after`. While `ongoing` (a drag or a text entry under way) the picture

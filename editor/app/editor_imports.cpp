@@ -56,7 +56,8 @@ void Editor::adoptImportedMesh(GrownDocument imported, const fs::path& file) {
         return;
     }
     s.doc.loaded.folder = next.folder;
-    apply(s, EditProject{.after = next.project, .label = "import mesh"});
+    apply(s,
+          EditProject{.after = next.project, .effect = EditEffect::Grown, .label = "import mesh"});
     adoptLive(std::move(*live));
     // Another surface, another place and size: the view moves to it.
     frameLiveSurface();

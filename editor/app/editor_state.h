@@ -42,6 +42,10 @@ struct Document {
     // The project as of the last history step: an edit under way (a drag, a text entry) differs
     // from it until the edit ends and becomes one step.
     core::Project committed;
+    // The edit since `committed`: whether it changed the project at all (a drag may end where it
+    // began) and whether any part of it re-grows the field (its step's ProjectEdit::regrows).
+    bool editChanged = false;
+    bool editRegrows = false;
     // Maps painted since the last save, by layer; saving writes them (edit_actions.h).
     std::set<std::pair<std::size_t, core::LayerMap>> paintedMaps;
     // Painted maps waiting, by layer name, for their layer to come (back): those of a removed

@@ -100,7 +100,7 @@ void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
         s.scene && index < s.scene->layers.size() ? &s.scene->layers[index] : nullptr;
     // Shape and colours reach the drawn field at once; the rest re-grows it.
     if (settingWidget(ui, rows, "shape", layer).changed() && field)
-        field->shape = layer.shape;
+        core::takeLayerLook(*field, layer);
     for (const std::string_view key : {"height", "width", "stiffness"})
         regrowRow(ui, s, core::settings::blade(), key, layer.scatter.blade);
     // The format takes any density; the scene refuses one that would grow more blades than a
@@ -120,10 +120,8 @@ void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
     };
     regrow(s, settingWidget(ui, rows, "density", layer, nullptr, densityLimit));
     for (const std::string_view key : {"root_color", "tip_color"})
-        if (settingWidget(ui, rows, key, layer).changed() && field) {
-            field->rootColor = layer.rootColor;
-            field->tipColor = layer.tipColor;
-        }
+        if (settingWidget(ui, rows, key, layer).changed() && field)
+            core::takeLayerLook(*field, layer);
     regrowRow(ui, s, core::settings::growth(), "enabled", layer.growth);
     if (layer.growth.enabled)
         ui.collapsingHeader("growth curves", [&](ui::Ui& curves) {

@@ -63,6 +63,87 @@ TEST(Commands, AnEditTheSceneIsGrownFromAsksForARegrowAndKeepsItsLabel) {
     EXPECT_FALSE(d.state.rebuildPending);
 }
 
+// Undoing or redoing a step the field was not grown from (a colour, the lighting model) shows
+// it as it is; before 2026-12-07 every undo grew the whole field again, and its blades restarted
+// from rest (seconds on a large mesh). A step the field is grown from still grows it again.
+TEST(Commands, UndoingAStepTheFieldWasNotGrownFromGrowsNothing) {
+    CommandDriver d;
+    core::Scene scene;  // what the renderer draws the layer's colours from
+    scene.layers.resize(1);
+    core::takeLayerLooks(scene, d.state.doc.project());
+    d.state.scene = &scene;
+    const glm::vec3 original = d.state.doc.project().layers[0].rootColor;
+    const glm::vec3 red{0.8f, 0.1f, 0.1f};
+    core::Project edited = d.state.doc.project();
+    edited.layers[0].rootColor = red;  // the panel's colour: live, and the field takes it
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = edited}));
+    scene.layers[0].rootColor = red;
+    edited.lighting.model = core::LightingModel::Simple;
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = edited}));
+    ASSERT_EQ(d.state.doc.history.undoSteps(), 2u);
+    EXPECT_FALSE(d.state.rebuildPending);
+
+    ASSERT_TRUE(editor::undo(d.state));
+    EXPECT_NE(d.state.doc.project().lighting.model, core::LightingModel::Simple);
+    ASSERT_TRUE(editor::undo(d.state));
+    EXPECT_FALSE(d.state.rebuildPending) << "nothing the field grows from was undone";
+    EXPECT_EQ(scene.layers[0].rootColor, original) << "the drawn field shows the undone colour";
+    ASSERT_TRUE(editor::redo(d.state));
+    EXPECT_FALSE(d.state.rebuildPending);
+    EXPECT_EQ(scene.layers[0].rootColor, red);
+
+    // A step that changed the scatter with the colour grows the field again when undone.
+    edited = d.state.doc.project();
+    edited.layers[0].rootColor = original;
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = edited, .ongoing = true}));
+    edited.layers[0].scatter.density *= 0.5f;
+    ASSERT_TRUE(editor::apply(
+        d.state, editor::EditProject{
+                     .after = edited, .effect = editor::EditEffect::Regrow, .ongoing = true}));
+    editor::recordProjectEdit(d.state, false);
+    d.state.rebuildPending = false;  // grown
+    ASSERT_TRUE(editor::undo(d.state));
+    EXPECT_TRUE(d.state.rebuildPending);
+
+    // An imported mesh's field was grown before its step was made: nothing to grow then, but
+    // undoing it grows the field on the surface before.
+    d.state.rebuildPending = false;
+    edited = d.state.doc.project();
+    edited.mesh.isFile = true;
+    edited.mesh.file = "rock.glb";
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = edited,
+                                                           .effect = editor::EditEffect::Grown,
+                                                           .label = "import mesh"}));
+    EXPECT_FALSE(d.state.rebuildPending);
+    ASSERT_TRUE(editor::undo(d.state));
+    EXPECT_TRUE(d.state.rebuildPending);
+}
+
+// An edit that ends where it began (a colour dragged and brought back) makes no step, and the
+// title's * goes when nothing was unsaved before it; before 2026-12-07 the * stayed.
+TEST(Commands, AnEditThatEndsWhereItBeganLeavesNothingUnsaved) {
+    CommandDriver d;
+    d.state.doc.history.markSaved();
+    d.state.doc.dirty = false;
+    const core::Project saved = d.state.doc.project();
+    core::Project edited = saved;
+    edited.layers[0].rootColor.x += 0.25f;
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = edited, .ongoing = true}));
+    EXPECT_TRUE(d.state.doc.dirty) << "the title follows the drag";
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = saved, .ongoing = true}));
+    editor::recordProjectEdit(d.state, false);  // released where it began
+    EXPECT_EQ(d.state.doc.history.undoSteps(), 0u);
+    EXPECT_FALSE(d.state.doc.dirty);
+
+    // After a step since the save, a drag brought back leaves that step unsaved.
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = edited}));
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = saved, .ongoing = true}));
+    ASSERT_TRUE(editor::apply(d.state, editor::EditProject{.after = edited, .ongoing = true}));
+    editor::recordProjectEdit(d.state, false);
+    EXPECT_EQ(d.state.doc.history.undoSteps(), 1u);
+    EXPECT_TRUE(d.state.doc.dirty);
+}
+
 TEST(Commands, UndoWaitsForAToolDragToEnd) {
     CommandDriver d;
     core::Project edited = d.state.doc.project();

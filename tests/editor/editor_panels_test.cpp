@@ -23,6 +23,7 @@
 #include "app/viewport_tools.h"
 #include "maps/map_image.h"
 #include "physics/wind.h"
+#include "quality/quality_presets.h"
 #include "support/scratch_folder.h"
 #include "support/test_fonts.h"
 #include "support/test_paths.h"
@@ -532,6 +533,30 @@ TEST(EditorPanels, TheLightSectionEditsTheSunAndTheSky) {
     EXPECT_FALSE(editor.state.rebuildPending) << "light is live: nothing re-grows";
     ASSERT_TRUE(editor::undo(editor.state));
     EXPECT_EQ(editor.state.doc.loaded.project.sun, before);
+    EXPECT_FALSE(editor.state.rebuildPending) << "nor does its undo";
+}
+
+// A quality preset that changes only the AO kernel's cells grows the field again: the blades'
+// ambient occlusion is baked with them. Before 2026-12-07 only a change of the physics step did,
+// and the field kept the AO of the cells before.
+TEST(EditorPanels, APresetThatChangesTheAoCellsGrowsTheFieldAgain) {
+    const ScratchFolder folder("editor-preset-ao");
+    EditorDriver editor(folder.path());
+    core::Project& project = editor.state.doc.loaded.project;
+    const core::QualitySettings draft = core::qualitySettings(core::QualityPreset::Draft);
+    ASSERT_TRUE(draft.aoCellSigmas.has_value());
+    core::applyQuality(draft, project);
+    project.lighting.aoCellSigmas = *draft.aoCellSigmas * 0.5f;  // the physics already the draft's
+    const core::PhysicsParams physics = project.physics;
+    editor::resetHistory(editor.state);
+    editor.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 3000.0f}};  // no scrolling
+    editor.click("Layers (1)");  // closed: the Render section comes up
+    editor.click("custom");
+    editor.click("draft");
+    editor::recordProjectEdit(editor.state, false);
+    EXPECT_EQ(project.lighting.aoCellSigmas, *draft.aoCellSigmas);
+    EXPECT_EQ(project.physics, physics);
+    EXPECT_TRUE(editor.state.rebuildPending);
 }
 
 // Issue 26 item 5: camera bookmarks are the project's cameras: keep the view as one, go to one.

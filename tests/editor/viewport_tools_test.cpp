@@ -227,16 +227,21 @@ TEST(ViewportTools, APanelDragBecomesOneStepWhenItEnds) {
     ToolDriver d;
     core::Project& project = d.state.doc.loaded.project;
     for (int frame = 1; frame <= 5; ++frame) {
-        project.layers[0].scatter.density = 150.0f + 10.0f * float(frame);
-        editor::recordProjectEdit(d.state, true);  // the slider is still held
+        // The density slider, still held: the field is grown from it (panels_layers.cpp).
+        core::Project dragged = project;
+        dragged.layers[0].scatter.density = 150.0f + 10.0f * float(frame);
+        editor::apply(d.state, editor::EditProject{.after = std::move(dragged),
+                                                   .effect = editor::EditEffect::Regrow,
+                                                   .ongoing = true});
     }
     EXPECT_EQ(d.state.doc.history.undoSteps(), 0u);
     editor::recordProjectEdit(d.state, false);
     ASSERT_EQ(d.state.doc.history.undoSteps(), 1u);
     EXPECT_EQ(d.state.doc.history.nextUndo()->label, "layers");
+    d.state.rebuildPending = false;  // the field grew for the drag
     ASSERT_TRUE(editor::undo(d.state));
     EXPECT_FLOAT_EQ(project.layers[0].scatter.density, 150.0f);
-    EXPECT_TRUE(d.state.rebuildPending);
+    EXPECT_TRUE(d.state.rebuildPending) << "the undone density grows the field again";
     // Undoing is not itself a new step.
     editor::recordProjectEdit(d.state, false);
     EXPECT_EQ(d.state.doc.history.undoSteps(), 0u);

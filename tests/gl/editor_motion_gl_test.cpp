@@ -1,7 +1,8 @@
 // A collider dragged with the gizmo in the real editor (app/editor.cpp, followMotionEdits): its
 // prop follows the drag frame by frame, and its release grows nothing again. Before, the prop
 // stood where it was until the mouse was released, and then the whole field grew again ("grew
-// the field again" in the log) and its blades restarted from rest.
+// the field again" in the log) and its blades restarted from rest. So for the undo of an edit the
+// field is not grown from.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -112,6 +113,27 @@ TEST(EditorMotion, ABallAddedAndDeletedGrowsNothingAgain) {
                                           "", /*wallClock=*/false);
     EXPECT_EQ(deleted.find("grew the field again"), std::string::npos) << deleted;
     EXPECT_EQ(savedColliders(dir).size(), 2u) << "added one, deleted it:\n" << deleted;
+}
+
+// Ctrl+Z of a render setting shows the setting as it was and grows nothing again: before
+// 2026-12-07 every undo grew the whole field again, and its blades restarted from rest.
+TEST(EditorMotion, AnUndoneLightingChangeGrowsNothingAgain) {
+    const auto dir = scratchDir("editor_undo_lighting");
+    writeBallProject(dir);
+    // Layers collapsed (60, 131) brings the Render section up: its lighting combo box at
+    // (85, 487) lists grass, simple (57, 433) and article (57, 459) above it once clicked.
+    const std::string log = runEditor(dir,
+                                      "wait 2\nclick 60 131\nwait 2\n"
+                                      "click 85 487\nwait 2\nclick 57 433\nwait 2\n"
+                                      "click 85 487\nwait 2\nclick 57 459\nwait 2\n"
+                                      "key ctrl+z\nwait 3\nkey ctrl+s\nwait 2\n",
+                                      "", /*wallClock=*/false);
+    EXPECT_EQ(log.find("grew the field again"), std::string::npos) << log;
+    auto saved = core::loadProject(dir / "project.json");
+    ASSERT_TRUE(saved.ok()) << saved.error().str();
+    EXPECT_EQ(saved->project.lighting.model, core::LightingModel::Simple)
+        << "the second change (article) was undone:\n"
+        << log;
 }
 
 }  // namespace
