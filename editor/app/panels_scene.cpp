@@ -43,7 +43,7 @@ void positionRow(ui::Ui& ui, EditorState& s, glm::vec3& position, std::vector<co
     const glm::vec3 before = core::samplePath(path, timeS, position);
     glm::vec3 at = before;
     vec3Row(
-        ui, s, "position (key at now)", at, 0.02f,
+        ui, s, "keyed position", at, 0.02f,
         ui::withTypingHint(
             "Position on the keyed path at the current time, in metres; an edit keys it there"));
     if (at != before)

@@ -447,7 +447,7 @@ TEST(EditorPanels, ATypedPositionMovesAKeyedCollider) {
     std::optional<ui::Vec2> label;
     for (const ui::ClippedShape& shape : editor.frame().shapes)
         if (const auto* t = std::get_if<ui::TextShape>(&shape.shape);
-            t && t->text == "position (key at now)")
+            t && t->text == "keyed position")
             label = t->pos;
     ASSERT_TRUE(label.has_value()) << "a keyed collider's position row names the key";
     editor.dragRightOfLabel(*label);
@@ -1078,6 +1078,11 @@ TEST(EditorPanels, EveryTextOfTheSidePanelIsReadWholeAtItsDefaultWidth) {
     editor::recordProjectEdit(d.state, false);
     ASSERT_FALSE(project.wind.empty());
     ASSERT_FALSE(project.colliders.empty());
+    // The wind source keyed on a path: its position row is the key at the current time's.
+    core::Project keyed = project;
+    const glm::vec3 at = keyed.wind.back().source.position;
+    keyed.wind.back().source.path = {{0.0f, at}, {2.0f, at + glm::vec3(1.0f, 0.0f, 0.0f)}};
+    editor::apply(d.state, editor::EditProject{.after = keyed});
     for (const std::string_view tool : {"brush (b)", "gizmo (g)"}) {
         d.click(tool);
         for (const std::string_view header :
