@@ -28,20 +28,27 @@ void placeSceneProp(SceneProp& prop, const ColliderDesc& collider) {
     prop.albedo = collider.color.value_or(sphere ? SPHERE_ALBEDO : MESH_ALBEDO);
 }
 
+Result<GltfImport> readColliderMesh(const Project& project, const std::filesystem::path& file,
+                                    glm::dvec3 groundOrigin) {
+    const MeshSource& ground = project.mesh;
+    const double groundMetresPerUnit = ground.isFile ? ground.metresPerUnit : 1.0;
+    auto imported = loadGltf(file, GltfPlacement::InGroundFrame, groundMetresPerUnit, groundOrigin);
+    if (!imported)
+        return imported.error();
+    if (imported->origin != glm::dvec3(0.0))
+        applyMeshFrame(imported->mesh, ground.metresPerUnit, ground.up);
+    return imported;
+}
+
 Result<ColliderMesh> loadColliderMesh(const LoadedProject& loaded, const ColliderDesc& collider,
                                       std::size_t index, glm::dvec3 groundOrigin) {
     const std::string field = "/colliders/" + std::to_string(index) + "/file";
     auto file = resolveAssetPath(loaded.folder, collider.file, field);
     if (!file)
         return Error{loaded.file.string(), file.error().str()};
-    const MeshSource& ground = loaded.project.mesh;
-    const double groundMetresPerUnit = ground.isFile ? ground.metresPerUnit : 1.0;
-    auto imported =
-        loadGltf(*file, GltfPlacement::InGroundFrame, groundMetresPerUnit, groundOrigin);
+    auto imported = readColliderMesh(loaded.project, *file, groundOrigin);
     if (!imported)
         return imported.error();
-    if (imported->origin != glm::dvec3(0.0))
-        applyMeshFrame(imported->mesh, ground.metresPerUnit, ground.up);
     return ColliderMesh{std::move(*file), std::move(*imported)};
 }
 

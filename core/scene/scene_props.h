@@ -39,6 +39,10 @@ struct ColliderMesh {
     std::filesystem::path file;
     GltfImport imported;
 };
+// The glTF `file` (a path already resolved) read as a mesh collider of `project` is read: what
+// loadColliderMesh reads, and what the editor reads before it adds a collider.
+Result<GltfImport> readColliderMesh(const Project& project, const std::filesystem::path& file,
+                                    glm::dvec3 groundOrigin = glm::dvec3(0.0));
 Result<ColliderMesh> loadColliderMesh(const LoadedProject& loaded, const ColliderDesc& collider,
                                       std::size_t index, glm::dvec3 groundOrigin = glm::dvec3(0.0));
 

@@ -45,6 +45,8 @@ std::string_view browseTitle(BrowsePurpose purpose) {
         case BrowsePurpose::ImportMesh: return "Import mesh";
         case BrowsePurpose::ImportMap: return "Import map image";
         case BrowsePurpose::ExportMap: return "Export map image";
+        case BrowsePurpose::AddCollider:
+            return "Add mesh collider";
     }
     return "";
 }
@@ -57,6 +59,8 @@ std::string_view browseButton(BrowsePurpose purpose) {
         case BrowsePurpose::ImportMesh:
         case BrowsePurpose::ImportMap: return "Import";
         case BrowsePurpose::ExportMap: return "Export";
+        case BrowsePurpose::AddCollider:
+            return "Add";
     }
     return "";
 }
@@ -72,7 +76,9 @@ const std::vector<std::string>& browseExtensions(BrowsePurpose purpose) {
         case BrowsePurpose::OpenProject:
         case BrowsePurpose::SaveProject: return project;
         case BrowsePurpose::NewFromMesh:
-        case BrowsePurpose::ImportMesh: return mesh;
+        case BrowsePurpose::ImportMesh:
+        case BrowsePurpose::AddCollider:
+            return mesh;
         case BrowsePurpose::ImportMap: return image;
         case BrowsePurpose::ExportMap: return exported;
     }
@@ -84,11 +90,12 @@ bool browseAccepts(BrowsePurpose purpose, const fs::path& path) {
 }
 
 std::string browseFilterText(BrowsePurpose purpose) {
-    std::string kind = purpose == BrowsePurpose::ImportMap || purpose == BrowsePurpose::ExportMap
-                           ? "images"
-                       : purpose == BrowsePurpose::NewFromMesh || purpose == BrowsePurpose::ImportMesh
-                           ? "glTF"
-                           : "projects";
+    std::string kind =
+        purpose == BrowsePurpose::ImportMap || purpose == BrowsePurpose::ExportMap ? "images"
+        : purpose == BrowsePurpose::NewFromMesh || purpose == BrowsePurpose::ImportMesh ||
+                purpose == BrowsePurpose::AddCollider
+            ? "glTF"
+            : "projects";
     std::string text = kind + " (";
     for (const std::string& extension : browseExtensions(purpose))
         text += (text.back() == '(' ? "" : " ") + extension;

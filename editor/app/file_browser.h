@@ -17,7 +17,16 @@
 namespace grass::editor {
 
 // What the browser picks a path for; each purpose has its own filter and button.
-enum class BrowsePurpose { OpenProject, SaveProject, NewFromMesh, ImportMesh, ImportMap, ExportMap };
+// AddCollider: Colliders › add mesh… (a mesh collider, mesh_import.h addMeshCollider).
+enum class BrowsePurpose {
+    OpenProject,
+    SaveProject,
+    NewFromMesh,
+    ImportMesh,
+    ImportMap,
+    ExportMap,
+    AddCollider
+};
 
 std::string_view browseTitle(BrowsePurpose purpose);
 std::string_view browseButton(BrowsePurpose purpose);

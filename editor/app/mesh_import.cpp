@@ -1,12 +1,17 @@
 #include "app/mesh_import.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <system_error>
 
+#include "app/commands.h"
 #include "app/editor_state.h"
+#include "app/panels.h"
 #include "mesh/gltf_loader.h"
 #include "mesh/mesh_frame.h"
 #include "scene/scene.h"
+#include "scene/scene_props.h"
 #include "util/path_inside.h"
 
 namespace grass::editor {
@@ -26,7 +31,92 @@ std::string freshMeshFolder(const fs::path& projectFolder, const std::string& st
     }
 }
 
+// `stem`, or "stem 2", "stem 3", … : a name no collider of `project` has.
+std::string freshColliderName(const core::Project& project, const std::string& stem) {
+    const auto taken = [&](const std::string& name) {
+        return std::any_of(project.colliders.begin(), project.colliders.end(),
+                           [&](const core::ColliderDesc& c) { return c.name == name; });
+    };
+    const std::string base = stem.empty() ? "collider" : stem;
+    std::string name = base;
+    for (int n = 2; taken(name); ++n)
+        name = base + " " + std::to_string(n);
+    return name;
+}
+
+std::string formatScale(float scale) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", double(scale));
+    return text;
+}
+
 }  // namespace
+
+Result<std::string> meshInProject(const fs::path& projectFolder, const fs::path& absolute,
+                                  std::string* note) {
+    if (!projectFolder.empty() && isInsideFolder(absolute, projectFolder))
+        return realPath(absolute).lexically_relative(realPath(projectFolder)).generic_string();
+    const std::string folder = freshMeshFolder(projectFolder, absolute.stem().string());
+    std::string file = folder + "/" + absolute.filename().generic_string();
+    if (auto copied = copyAssetFiles(absolute, projectFolder / file); !copied)
+        return copied.error();
+    if (note)
+        *note =
+            "copied " + absolute.filename().string() + " into " + (projectFolder / folder).string();
+    return file;
+}
+
+Result<void> addMeshCollider(EditorState& s, const fs::path& meshFile) {
+    const core::LoadedProject& loaded = s.doc.loaded;
+    if (loaded.folder.empty())
+        return makeError(meshFile.string(),
+                         "save the project first: a collider's mesh is kept "
+                         "in the project's folder");
+    const fs::path absolute = fs::absolute(meshFile).lexically_normal();
+    // Read as the project will read it, before anything is copied: a broken file changes
+    // nothing.
+    const glm::dvec3 groundOrigin = s.scene ? s.scene->groundOrigin : glm::dvec3(0.0);
+    auto imported = core::readColliderMesh(loaded.project, absolute, groundOrigin);
+    if (!imported)
+        return imported.error();
+    const core::Bounds bounds = core::meshBounds(imported->mesh);
+    const float side = std::max({bounds.size().x, bounds.size().y, bounds.size().z});
+    if (!(side > 0.0f) || !std::isfinite(side))
+        return makeError(absolute.string(), "the mesh has no extent to collide with");
+    core::ColliderDesc collider;
+    collider.shape = core::ColliderShape::Mesh;
+    collider.name = freshColliderName(loaded.project, absolute.stem().string());
+    // A prop of the scene's scale: its own size when that is between a hundredth and half of
+    // the scene (a rock modelled in metres), else a tenth of the scene (a model in centimetres
+    // or kilometres), said in the note.
+    const float scene = s.scene ? glm::length(s.scene->bounds.size()) : 10.0f;
+    std::string note;
+    if (side > 0.5f * scene || side < 0.01f * scene) {
+        collider.scale = 0.1f * scene / side;
+        note = "scaled by " + formatScale(collider.scale) + " to a tenth of the scene";
+    }
+    // Its box's centre where a new ball would stand, above the scene's centre.
+    collider.position = newObjectPosition(s) - collider.scale * bounds.centre();
+    std::string copied;
+    auto file = meshInProject(loaded.folder, absolute, &copied);
+    if (!file)
+        return file.error();
+    collider.file = std::move(*file);
+    core::Project project = loaded.project;
+    project.colliders.push_back(collider);
+    apply(s, EditProject{.after = std::move(project),
+                         .effect = EditEffect::Regrow,
+                         .label = "add collider " + collider.name});
+    s.view.place.selected =
+        PlacedObject{PlacedKind::Collider, s.doc.project().colliders.size() - 1};
+    std::string details;
+    for (const std::string& part : {copied, note})
+        if (!part.empty())
+            details += (details.empty() ? "" : "; ") + part;
+    s.transient.message =
+        "added collider " + collider.name + (details.empty() ? "" : " (" + details + ")");
+    return {};
+}
 
 std::vector<fs::path> assetFileSet(const fs::path& file) {
     std::vector<fs::path> files{file.filename()};
@@ -98,15 +188,11 @@ Result<core::LoadedProject> projectWithImportedMesh(const core::LoadedProject& l
         // Nothing of the project lives anywhere yet: it moves to the mesh.
         next.folder = absolute.parent_path();
         mesh.file = absolute.filename().generic_string();
-    } else if (!loaded.folder.empty() && isInsideFolder(absolute, loaded.folder)) {
-        mesh.file = realPath(absolute).lexically_relative(realPath(loaded.folder)).generic_string();
     } else {
-        const std::string folder = freshMeshFolder(loaded.folder, absolute.stem().string());
-        mesh.file = folder + "/" + absolute.filename().generic_string();
-        if (auto copied = copyAssetFiles(absolute, loaded.folder / mesh.file); !copied)
-            return copied.error();
-        if (note)
-            *note = "copied " + absolute.filename().string() + " into " + (loaded.folder / folder).string();
+        auto named = meshInProject(loaded.folder, absolute, note);
+        if (!named)
+            return named.error();
+        mesh.file = std::move(*named);
     }
     if (read)
         *read = std::move(*imported);

@@ -53,4 +53,18 @@ Result<core::LoadedProject> projectWithImportedMesh(const core::LoadedProject& l
                                                     core::GltfImport* read = nullptr,
                                                     std::stop_token stop = {});
 
+// The name the project gives the mesh at `absolute`: where it is, relative to `projectFolder`,
+// when it lies inside it; else that of a copy in meshes/<name>/ (a fresh folder each time, the
+// files a .gltf names copied along), `note` saying what was copied.
+Result<std::string> meshInProject(const std::filesystem::path& projectFolder,
+                                  const std::filesystem::path& absolute, std::string* note);
+
+// Colliders › add mesh…: the glTF at `meshFile` becomes a mesh collider of the open project, one
+// undo step that grows the field again (its spheres are packed then). Read first, as the
+// project will read it: a broken file changes nothing, and the error names it. Copied into the
+// project's folder when it lies elsewhere (meshInProject); sized to the scene when its own size
+// is far from it; its box centred where a new ball would stand; selected; the status line says
+// what was done. A project without a folder yet (never saved) is asked to be saved first.
+Result<void> addMeshCollider(EditorState& state, const std::filesystem::path& meshFile);
+
 }  // namespace grass::editor

@@ -100,6 +100,9 @@ void timelineStrip(ui::Context& ctx, ui::Rect rect, EditorState& state);
 
 // The side panel's sections (panels_scene.cpp).
 void layerSection(ui::Ui& ui, EditorState& state);
+// Where a new wind source, ball or mesh collider stands: above the scene's centre, half its
+// height up.
+glm::vec3 newObjectPosition(const EditorState& state);
 // Add a point wind source or a ball above the scene's centre to the draft and select it (the
 // gizmo's and the Wind and Colliders sections' buttons).
 void addWindSource(EditorState& state);

@@ -69,6 +69,11 @@ void choose(EditorState& s, BrowsePurpose purpose, const fs::path& path) {
             s.transient.meshFolder = path.parent_path();
             exportMapImage(s, path);
             break;
+        case BrowsePurpose::AddCollider:
+            s.transient.meshFolder = path.parent_path();
+            if (auto added = addMeshCollider(s, path); !added)
+                s.transient.message = "cannot add a collider: " + added.error().str();
+            break;
     }
 }
 

@@ -116,11 +116,19 @@ void colliderSection(ui::Ui& ui, EditorState& s) {
             }
             if (removed)
                 removeFromDraft(s, PlacedObject{PlacedKind::Collider, *removed});
-            if (section.button("add ball")
-                    .onHoverText(
-                        "Add a ball collider above the scene's centre; the gizmo (g) moves it")
-                    .clicked())
-                addBallCollider(s);
+            section.horizontal([&](ui::Ui& row) {
+                if (row.button("add ball")
+                        .onHoverText(
+                            "Add a ball collider above the scene's centre; the gizmo (g) moves it")
+                        .clicked())
+                    addBallCollider(s);
+                if (row.button("add mesh…")
+                        .onHoverText("Add a .gltf/.glb mesh (a rock, a log) as a collider: packed "
+                                     "into spheres for the physics, drawn as it is; copied into "
+                                     "the project's folder")
+                        .clicked())
+                    openBrowser(s, BrowsePurpose::AddCollider);
+            });
         });
 }
 

@@ -72,11 +72,6 @@ void brushSettings(ui::Ui& ui, EditorState& s) {
     ui.wrappedColoredLabel("Ctrl inverts; right-drag orbits", ui.style().textWeak);
 }
 
-glm::vec3 newObjectPosition(const EditorState& s) {
-    return s.scene ? s.scene->bounds.centre() + glm::vec3(0.0f, 0.5f * s.scene->bounds.size().y, 0.0f)
-                   : glm::vec3(0.0f);
-}
-
 void placeSettings(ui::Ui& ui, EditorState& s) {
     core::Project& project = s.transient.draft.project;
     ui.horizontal([&](ui::Ui& row) {
@@ -142,6 +137,12 @@ void placeSettings(ui::Ui& ui, EditorState& s) {
 }
 
 }  // namespace
+
+glm::vec3 newObjectPosition(const EditorState& s) {
+    return s.scene
+               ? s.scene->bounds.centre() + glm::vec3(0.0f, 0.5f * s.scene->bounds.size().y, 0.0f)
+               : glm::vec3(0.0f);
+}
 
 void addWindSource(EditorState& s) {
     core::Project& project = s.transient.draft.project;

@@ -19,11 +19,14 @@
 #include "app/autosave.h"
 #include "app/edit_actions.h"
 #include "app/editor_keys.h"
+#include "app/mesh_import.h"
 #include "app/panels.h"
 #include "app/viewport_tools.h"
 #include "maps/map_image.h"
 #include "physics/wind.h"
 #include "quality/quality_presets.h"
+#include "scene/scene_physics.h"
+#include "scene/scene_props.h"
 #include "support/scratch_folder.h"
 #include "support/test_fonts.h"
 #include "support/test_paths.h"
@@ -246,6 +249,75 @@ TEST(EditorPanels, ImportMeshByDoubleClickInTheBrowser) {
     editor.clickStartingWith("cube.glb", true);
     EXPECT_FALSE(editor.state.transient.browser.has_value());
     EXPECT_EQ(editor.state.importMeshRequested, (sourceDir() / "tests/data/gltf/cube.glb").string());
+}
+
+// Colliders › add mesh…: a glTF becomes a mesh collider, copied into the project's folder, one
+// undo step that grows the field again (its spheres are packed then). Before 2026-12-07 a mesh
+// collider could be made only by writing project.json by hand.
+TEST(EditorPanels, AMeshColliderIsAddedFromItsFileAndCopiedIntoTheProject) {
+    const ScratchFolder folder("editor-add-mesh-collider");
+    EditorDriver editor(folder.path());
+    editor::resetHistory(editor.state);
+    const core::Project& project = editor.state.doc.loaded.project;
+    editor.state.transient.meshFolder = sourceDir() / "tests/data/gltf";
+    editor.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 3000.0f}};  // no scrolling
+    editor.click("Colliders (0)");
+    editor.click("add mesh…");
+    ASSERT_TRUE(editor.state.transient.browser.has_value());
+    EXPECT_EQ(editor::browseTitle(editor.state.transient.browser->purpose()), "Add mesh collider");
+    editor.clickStartingWith("cube.glb", true);
+    EXPECT_FALSE(editor.state.transient.browser.has_value());
+    ASSERT_EQ(project.colliders.size(), 1u) << editor.state.transient.message;
+    const core::ColliderDesc& cube = project.colliders[0];
+    EXPECT_EQ(cube.shape, core::ColliderShape::Mesh);
+    EXPECT_EQ(cube.name, "cube");
+    EXPECT_EQ(cube.file, "meshes/cube/cube.glb");
+    EXPECT_TRUE(fs::is_regular_file(folder.path() / cube.file));
+    EXPECT_TRUE(editor.state.rebuildPending) << "its spheres are packed as the field grows";
+    ASSERT_TRUE(editor.state.view.place.selected.has_value());
+    EXPECT_EQ(editor.state.view.place.selected->index, 0u);
+    EXPECT_EQ(editor.state.doc.history.nextUndo()->label, "add collider cube");
+    // Its box's centre stands where a new ball would, above the scene's centre, at its own
+    // size (a 1 m cube on a 2 m plane: within a hundredth and half of the scene's diagonal).
+    auto read = core::readColliderMesh(project, folder.path() / cube.file);
+    ASSERT_TRUE(read.ok()) << read.error().str();
+    const glm::vec3 centre = cube.position + cube.scale * core::meshBounds(read->mesh).centre();
+    const glm::vec3 wanted = editor::newObjectPosition(editor.state);
+    for (int axis = 0; axis < 3; ++axis)
+        EXPECT_NEAR(centre[axis], wanted[axis], 1e-5f) << axis;
+    EXPECT_EQ(cube.scale, 1.0f);
+
+    // The project as saved builds its physics and props from the copy: packed, drawn.
+    auto physics = core::buildScenePhysics(editor.state.doc.loaded);
+    ASSERT_TRUE(physics.ok()) << physics.error().str();
+    EXPECT_FALSE(physics->colliders.empty());
+    auto props = core::loadSceneProps(editor.state.doc.loaded);
+    ASSERT_TRUE(props.ok()) << props.error().str();
+    EXPECT_EQ(props->size(), 1u);
+
+    // The same file again: another name and another copy, none overwritten.
+    ASSERT_TRUE(editor::addMeshCollider(editor.state, sourceDir() / "tests/data/gltf/cube.glb"));
+    ASSERT_EQ(project.colliders.size(), 2u);
+    EXPECT_EQ(project.colliders[1].name, "cube 2");
+    EXPECT_EQ(project.colliders[1].file, "meshes/cube-2/cube.glb");
+    ASSERT_TRUE(editor::undo(editor.state));
+    EXPECT_EQ(project.colliders.size(), 1u);
+
+    // A broken file changes nothing, copies nothing, and says which file and why.
+    const auto broken =
+        editor::addMeshCollider(editor.state, sourceDir() / "tests/data/gltf/truncated.gltf");
+    ASSERT_FALSE(broken.ok());
+    EXPECT_NE(broken.error().str().find("truncated.gltf"), std::string::npos)
+        << broken.error().str();
+    EXPECT_EQ(project.colliders.size(), 1u);
+    EXPECT_FALSE(fs::exists(folder.path() / "meshes/truncated"));
+
+    // A project never saved has no folder to keep the mesh in: saved first.
+    editor.state.doc.loaded.folder.clear();
+    const auto unsaved =
+        editor::addMeshCollider(editor.state, sourceDir() / "tests/data/gltf/cube.glb");
+    ASSERT_FALSE(unsaved.ok());
+    EXPECT_NE(unsaved.error().str().find("save the project first"), std::string::npos);
 }
 
 // Issue 26 item 1: File › New from mesh… asks first about unsaved changes, then asks the Editor
