@@ -450,7 +450,9 @@ bool Editor::applyRequests() {
         state.regrowJob->cancel();
         state.stoppingRegrow = std::move(state.regrowJob);
     }
-    if (editEnded && !state.regrowJob && !state.stoppingRegrow) {
+    // A collider being packed is followed once packed, without growing the field: the re-grow
+    // waits for it.
+    if (editEnded && !state.regrowJob && !state.stoppingRegrow && !mPackingJob) {
         state.rebuildPending = false;
         startRegrow();
     }
@@ -468,6 +470,7 @@ bool Editor::applyRequests() {
 // will replace it (the edit re-grows then).
 void Editor::followMotionEdits() {
     EditorState& state = mState;
+    collectColliderPacking();
     if (!mLive.scene || state.busy() || state.regrowing())
         return;
     const core::Project& project = state.doc.project();
@@ -477,9 +480,9 @@ void Editor::followMotionEdits() {
     if (!toFollow && !state.rebuildPending)
         return;
     const core::Project& grown = mLive.builtFrom.project;
-    // A mesh collider not packed yet (another file or sphere count) is packed by the re-grow,
-    // on its worker: packing can take seconds.
-    if (!core::onlyMotionChanged(grown, project) || !motion.packed(project.colliders))
+    // A mesh collider not packed yet (a new file or sphere count) is packed on a worker first:
+    // packing can take seconds.
+    if (!core::onlyMotionChanged(grown, project) || !packCollidersInBackground(project))
         return;
     const bool settled =
         !state.view.toolDragActive && (!mUi || mUi->context().activeId().value == 0);
@@ -492,6 +495,46 @@ void Editor::followMotionEdits() {
     // they now stand, only once the field grows again: when the edit ends.
     if (!(grown.colliders != project.colliders && core::placementFollowsColliders(project)))
         state.rebuildPending = false;
+}
+
+bool Editor::packCollidersInBackground(const core::Project& project) {
+    if (mLive.motion.packed(project.colliders))
+        return true;
+    if (mPackingJob || mPackingFailedFor == project.colliders)
+        return false;
+    mPackingFailedFor.reset();
+    mPackingJob = std::make_unique<ColliderPackingJob>(mState.doc.loaded, mLive.scene->groundOrigin,
+                                                       mLive.motion.packings, mState.wakeFrame);
+    mState.transient.message = mPackingJob->what() + " …";
+    if (!mReplay)
+        return false;
+    // Scripts and screenshots: packed in this frame, whatever the machine's speed.
+    mPackingJob->wait();
+    collectColliderPacking();
+    return mLive.motion.packed(project.colliders);
+}
+
+void Editor::collectColliderPacking() {
+    if (!mPackingJob || !mPackingJob->done())
+        return;
+    const std::unique_ptr<ColliderPackingJob> job = std::move(mPackingJob);
+    auto packed = job->take();
+    if (!packed) {
+        mPackingFailedFor = job->colliders();
+        mState.transient.message = "cannot pack a collider: " + packed.error().str();
+        return;
+    }
+    // Packings are named by file relative to the project's folder, read in the ground's frame:
+    // those of another document, or of a ground moved since, are not this field's.
+    if (!mLive.scene || job->folder() != mLive.builtFrom.folder ||
+        job->groundOrigin() != mLive.scene->groundOrigin)
+        return;
+    for (auto& [key, packing] : packed->packings.byFile)
+        mLive.motion.packings.byFile.try_emplace(key, std::move(packing));
+    for (const std::string& note : packed->notes) {
+        std::fprintf(stderr, "note: %s\n", note.c_str());
+        mState.transient.message = note;
+    }
 }
 
 // Re-grows the live field from the open project (after an edit that needs it) on a worker: the

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/collider_packing_job.h"
 #include "app/document_job.h"
 #include "app/editor_ui.h"
 #include "app/idle_wait.h"
@@ -101,6 +102,12 @@ private:
     // An edit that moved only the wind sources or the colliders: the live physics and the props
     // follow it at once (followMotion), and no re-grow is due unless placement follows them.
     void followMotionEdits();
+    // A mesh collider the field holds no packing of is packed on a worker (collider_packing_job.h)
+    // while the window goes on: true once every mesh collider of `project` is packed. False
+    // meanwhile, and after the packing failed (the re-grow the edit asked for then says why).
+    bool packCollidersInBackground(const core::Project& project);
+    // Takes a finished packing into the live field's packings.
+    void collectColliderPacking();
     // The same project's field, grown again: it replaces the live one, the clock goes on.
     void adoptLive(Live next);
     // The view framed on the live surface (after a new mesh, unit or up axis).
@@ -157,6 +164,10 @@ private:
     core::OrbitCamera mCamera;
     Live mLive;
     bool mRegrowOnSameSurface = false;  // the running re-grow grows on mLive's mesh
+    std::unique_ptr<ColliderPackingJob> mPackingJob;
+    // The colliders a packing failed for: not packed again in the background (the re-grow packs
+    // them and reports the error) until they change.
+    std::optional<std::vector<core::ColliderDesc>> mPackingFailedFor;
     std::unique_ptr<gl::Framebuffer> mTarget;
     // What mTarget's picture was drawn from (app/view_redraw.h); whether this frame drew it.
     std::optional<ViewInputs> mDrawnView;

@@ -115,6 +115,31 @@ TEST(EditorMotion, ABallAddedAndDeletedGrowsNothingAgain) {
     EXPECT_EQ(savedColliders(dir).size(), 2u) << "added one, deleted it:\n" << deleted;
 }
 
+// Colliders › add mesh… in the real editor: the mesh is packed on a worker and followed like
+// any collider, and the field grows nothing again (before, adding a mesh collider grew the whole
+// field again, and its blades restarted from rest).
+TEST(EditorMotion, AMeshColliderAddedIsPackedWithoutGrowingTheField) {
+    const auto dir = scratchDir("editor_motion_add_mesh");
+    writeBallProject(dir);
+    // Layers collapsed (60, 131), Colliders opened (66, 208): under the ball's rows "add mesh…"
+    // (148, 313) opens the file browser, whose path field takes the typed path.
+    const std::string log =
+        runEditor(dir,
+                  "wait 2\nclick 60 131\nwait 2\nclick 66 208\nwait 2\nclick 148 313\nwait 2\n"
+                  "type " +
+                      (sourceDir() / "tests/data/gltf/cube.glb").string() +
+                      "\nkey enter\nwait 3\nkey ctrl+s\nwait 2\n",
+                  "", /*wallClock=*/false);
+    EXPECT_EQ(log.find("grew the field again"), std::string::npos) << log;
+    EXPECT_NE(log.find("collider cube: meshes/cube/cube.glb as "), std::string::npos)
+        << "packed, with the note a build prints:\n"
+        << log;
+    const std::vector<core::ColliderDesc> colliders = savedColliders(dir);
+    ASSERT_EQ(colliders.size(), 2u) << log;
+    EXPECT_EQ(colliders[1].shape, core::ColliderShape::Mesh);
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / colliders[1].file));
+}
+
 // Ctrl+Z of a render setting shows the setting as it was and grows nothing again: before
 // 2026-12-07 every undo grew the whole field again, and its blades restarted from rest.
 TEST(EditorMotion, AnUndoneLightingChangeGrowsNothingAgain) {

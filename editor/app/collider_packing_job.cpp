@@ -1,0 +1,59 @@
+#include "app/collider_packing_job.h"
+
+#include <utility>
+
+namespace grass::editor {
+
+namespace {
+
+// "packing rock.glb, log.gltf": the mesh colliders whose packings `known` lacks.
+std::string packingWhat(const core::Project& project, const core::ColliderPackings& known) {
+    std::string files;
+    for (const core::ColliderDesc& c : project.colliders)
+        if (c.shape == core::ColliderShape::Mesh &&
+            !known.byFile.contains({c.file, c.sphereCount, c.packingResolution}) &&
+            files.find(c.file) == std::string::npos)
+            files += (files.empty() ? "" : ", ") + c.file;
+    return "packing " + (files.empty() ? std::string("colliders") : files);
+}
+
+}  // namespace
+
+ColliderPackingJob::ColliderPackingJob(core::LoadedProject loaded, glm::dvec3 groundOrigin,
+                                       const core::ColliderPackings& known,
+                                       std::function<void()> whenDone)
+    : mLoaded(std::move(loaded)),
+      mGroundOrigin(groundOrigin),
+      mWhat(packingWhat(mLoaded.project, known)) {
+    // The worker packs into a copy: the live packings stay the window's.
+    mWorker = std::thread([this, packings = known, whenDone = std::move(whenDone)]() mutable {
+        // buildScenePhysics packs what `packings` lacks, as a fresh build would, and keeps it.
+        auto built = core::buildScenePhysics(mLoaded, mGroundOrigin, &packings);
+        if (built)
+            mResult.emplace(PackedColliders{std::move(packings), std::move(built->notes)});
+        else
+            mResult.emplace(built.error());
+        mDone.store(true);
+        if (whenDone)
+            whenDone();
+    });
+}
+
+ColliderPackingJob::~ColliderPackingJob() {
+    if (mWorker.joinable())
+        mWorker.join();
+}
+
+void ColliderPackingJob::wait() {
+    if (mWorker.joinable())
+        mWorker.join();
+}
+
+Result<PackedColliders> ColliderPackingJob::take() {
+    wait();
+    Result<PackedColliders> result = std::move(*mResult);
+    mResult.reset();
+    return result;
+}
+
+}  // namespace grass::editor

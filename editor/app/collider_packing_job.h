@@ -1,0 +1,61 @@
+// A mesh collider the live field holds no packing of (one just added with Colliders › add mesh…,
+// or given another sphere count) is packed on a worker thread: packing a mesh into spheres can
+// take seconds (a voxel grid, then the spheres one by one). Meanwhile the window goes on with the
+// field as it is; once the packing is in, the live physics takes the collider like any moved one
+// (live_scene.h followMotion) and the field keeps its blades. Before, the whole field was grown
+// again for it, and its blades restarted from rest.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "project/project.h"
+#include "scene/scene_physics.h"
+#include "util/result.h"
+
+namespace grass::editor {
+
+// The packings the job made, and what packing them said (the notes a build prints).
+struct PackedColliders {
+    core::ColliderPackings packings;
+    std::vector<std::string> notes;
+};
+
+class ColliderPackingJob {
+public:
+    // Packs (or reads from the cache) every mesh collider of `loaded` whose packing `known` does
+    // not hold, as core::buildScenePhysics would for a scene whose ground origin is
+    // `groundOrigin`. `whenDone` is called on the worker once done() (EditorState::wakeFrame).
+    ColliderPackingJob(core::LoadedProject loaded, glm::dvec3 groundOrigin,
+                       const core::ColliderPackings& known, std::function<void()> whenDone = {});
+    ~ColliderPackingJob();  // waits for the worker
+    ColliderPackingJob(const ColliderPackingJob&) = delete;
+    ColliderPackingJob& operator=(const ColliderPackingJob&) = delete;
+
+    bool done() const { return mDone.load(); }
+    void wait();
+    // The colliders it was started for and the ground origin it read them in.
+    const std::vector<core::ColliderDesc>& colliders() const { return mLoaded.project.colliders; }
+    glm::dvec3 groundOrigin() const { return mGroundOrigin; }
+    const std::filesystem::path& folder() const { return mLoaded.folder; }
+    // "packing rock.glb": what the status line says meanwhile.
+    const std::string& what() const { return mWhat; }
+    // Once done(): the new packings, or why a mesh could not be packed (naming its file).
+    Result<PackedColliders> take();
+
+private:
+    core::LoadedProject mLoaded;
+    glm::dvec3 mGroundOrigin;
+    std::string mWhat;
+    std::atomic<bool> mDone{false};
+    std::optional<Result<PackedColliders>> mResult;
+    std::thread mWorker;
+};
+
+}  // namespace grass::editor
