@@ -31,6 +31,10 @@ std::string freshMeshFolder(const fs::path& projectFolder, const std::string& st
     }
 }
 
+// Farther than this from the scene's origin a mesh collider's float positions are coarser
+// than a millimetre: one from a georeferenced file the ground does not share the frame of.
+constexpr float FAR_COLLIDER_M = 1.0e4f;
+
 // `stem`, or "stem 2", "stem 3", … : a name no collider of `project` has.
 std::string freshColliderName(const core::Project& project, const std::string& stem) {
     const auto taken = [&](const std::string& name) {
@@ -83,6 +87,16 @@ Result<void> addMeshCollider(EditorState& s, const fs::path& meshFile) {
     const float side = std::max({bounds.size().x, bounds.size().y, bounds.size().z});
     if (!(side > 0.0f) || !std::isfinite(side))
         return makeError(absolute.string(), "the mesh has no extent to collide with");
+    // A mesh far out in a georeferenced frame the ground does not share: its 32-bit positions
+    // there are too coarse to draw or pack it (0.5 m apart at 5000 km).
+    if (const float away = glm::length(bounds.centre()); away > FAR_COLLIDER_M) {
+        char reason[200];
+        std::snprintf(reason, sizeof reason,
+                      "lies %.0f km from the scene's origin, where 32-bit positions are %.2g m "
+                      "apart: move it near its file's origin and add it again",
+                      double(away) / 1000.0, double(std::nextafter(away, 2.0f * away) - away));
+        return makeError(absolute.string(), reason);
+    }
     core::ColliderDesc collider;
     collider.shape = core::ColliderShape::Mesh;
     collider.name = freshColliderName(loaded.project, absolute.stem().string());

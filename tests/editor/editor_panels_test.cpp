@@ -312,6 +312,15 @@ TEST(EditorPanels, AMeshColliderIsAddedFromItsFileAndCopiedIntoTheProject) {
     EXPECT_EQ(project.colliders.size(), 1u);
     EXPECT_FALSE(fs::exists(folder.path() / "meshes/truncated"));
 
+    // A mesh far out in a georeferenced frame the (procedural) ground does not share: its
+    // positions are too coarse there to draw or pack, refused with where it lies.
+    const auto far =
+        editor::addMeshCollider(editor.state, sourceDir() / "tests/data/gltf/far_quad.gltf");
+    ASSERT_FALSE(far.ok());
+    EXPECT_NE(far.error().str().find("5437 km from the scene's origin"), std::string::npos)
+        << far.error().str();
+    EXPECT_EQ(project.colliders.size(), 1u);
+
     // A project never saved has no folder to keep the mesh in: saved first.
     editor.state.doc.loaded.folder.clear();
     const auto unsaved =
