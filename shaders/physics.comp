@@ -20,6 +20,15 @@ uniform uint substepCount;
 uniform uint windCount;
 uniform uint colliderCount;
 uniform float gravityLoadScale;  // 0: no load buffer bound
+// The editor's rest detection (editor/app/live_scene.h): a step marks `motionSeen` when it moves
+// a tip by more than stillTipMove of its blade's height, or lets a crushed blade recover (η falls
+// by more than half the step's pure decay, etaDecayStep: no collider pressed it). 0: not asked,
+// and no buffer is bound.
+uniform float stillTipMove;
+uniform float etaDecayStep;
+layout(std430, binding = 10) buffer MotionReportBuffer {
+    uint motionSeen;
+};
 
 const float ETA_MAX = 1.0e4;
 // See VALIDATION_ITERATIONS in core/physics/physics.cpp: passes 2–3 converge to a fixed point.
@@ -254,4 +263,14 @@ void main() {
         physicsBlades[index] = blade;
     if (bladeEta != originalEta)
         eta[index] = bladeEta;
+    // Read before it is written, so that a moving field writes the mark about once a group.
+    if (stillTipMove > 0.0 && motionSeen == 0u) {
+        vec3 tipMove = blade.v2W.xyz - original.v2W.xyz;
+        float reach = stillTipMove * blade.v1H.w;
+        // Written so that a NaN counts as motion, as on the CPU (tipsMoved, anyRecovering).
+        bool tipMoved = !(dot(tipMove, tipMove) <= reach * reach);
+        bool recovering = bladeEta != 0.0 && !(bladeEta >= originalEta - 0.5 * etaDecayStep);
+        if (tipMoved || recovering)
+            motionSeen = 1u;
+    }
 }

@@ -836,7 +836,9 @@ void Editor::render(int width, int height) {
     // The picture is drawn only when what it shows changed (app/view_redraw.h).
     // The GPU physics steps the drawn blades in place; the CPU's steps reach the picture as
     // uploads (the renderer's content generation), and only when they moved the blades.
-    const std::size_t gpuSteps = mLive.physics && !mLive.physics->cpu ? mLive.physics->steps : 0;
+    // Those computed: a resting field's clock goes on without a step, and is not drawn again.
+    const std::size_t gpuSteps =
+        mLive.physics && !mLive.physics->cpu ? mLive.physics->computedSteps : 0;
     ViewInputs inputs =
         viewInputsOf(*mLive.renderer, mState.mapsChanged, gpuSteps, mCamera, {w, h, samples},
                      mState.view.options, mState.doc.project(), *mLive.scene);

@@ -78,6 +78,7 @@ bool anyRecovering(const core::FieldSimulation& cpu,
 void LivePhysics::wake() {
     resting = false;
     stillSteps = 0;
+    gpuStepsUnanswered = 0;
 }
 
 bool LivePhysics::followSnow(const core::SnowParams& snow, const core::Scene& field) {
@@ -109,6 +110,16 @@ void LivePhysics::weighSnowAgain(const core::Scene& field) {
 
 double LivePhysics::advanceTo(double targetS, int maxSteps, double budgetMs) {
     const double dtS = scene.params.dtS;
+    // The GPU's answer for the steps of the frames before (their fence has passed by now on a
+    // GPU that keeps up), then this frame's steps are marked while the field could rest.
+    if (gpu && !resting) {
+        if (const std::optional<bool> motion = gpu->takeMotion()) {
+            stillSteps = *motion ? 0 : stillSteps + gpuStepsUnanswered;
+            gpuStepsUnanswered = 0;
+            resting = timeIndependent && stillSteps >= REST_AFTER_STEPS;
+        }
+        gpu->reportMotion(timeIndependent ? GPU_STILL_TIP_MOVE : 0.0f);
+    }
     if (resting) {
         // The clock goes on; the blades, where the last step left them, would stay there.
         const auto due = static_cast<std::size_t>(std::floor(targetS / dtS + 1e-6));
@@ -130,13 +141,17 @@ double LivePhysics::advanceTo(double targetS, int maxSteps, double budgetMs) {
             for (std::size_t layer = 0; layer < cpu->layerCount(); ++layer)
                 etaBefore[layer].assign(cpu->eta(layer).begin(), cpu->eta(layer).end());
         }
-        if (cpu)
+        if (cpu) {
             cpu->step(scene, static_cast<float>(timeS()));
-        else
+        } else {
             gpu->step(scene, static_cast<float>(timeS()));
+            ++gpuStepsUnanswered;
+        }
         ++steps;
         ++computedSteps;
     }
+    if (gpu && stepped > 0)
+        moved = true;  // stepped in place: drawn again until the field rests
     // The CPU's blades go up once, after the frame's steps, and only the layers they moved.
     if (cpu && stepped > 0) {
         moved = false;
@@ -173,9 +188,10 @@ void LivePhysics::regrown(std::size_t layer, const core::Scene& field,
     if (cpu) {
         cpu->resetPatches(layer, field, patches);
         shownTips.clear();  // the renderer has the patches at rest: compare anew
-        wake();
-    } else
+    } else {
         gpu->uploadRegrown(layer, field, patches);
+    }
+    wake();
 }
 
 // Auto: the CPU on software GL, the GPU elsewhere.
@@ -287,6 +303,7 @@ Result<void> resetPhysics(Live& live) {
     if (!gpu)
         return gpu.error();
     live.physics->gpu = std::move(*gpu);
+    live.physics->wake();
     return {};
 }
 

@@ -66,7 +66,7 @@ struct LivePhysics {
     double droppedS = 0.0;  // simulated time skipped since the field was built
     // Whether the last frame that stepped moved the blades (tipsMoved, on the CPU): while the
     // timeline plays a field that stands still, the picture is full and drawn once (Editor).
-    // Always true on the GPU, whose blades are stepped in place and never read back.
+    // On the GPU, whose blades are stepped in place and never read back, true until it rests.
     bool moved = true;
     std::vector<std::vector<glm::vec3>> shownTips;  // per layer (CPU): the tips uploaded
     std::vector<std::vector<float>> etaBefore;      // per layer (CPU): η before the frame's steps
@@ -78,7 +78,17 @@ struct LivePhysics {
     // REST_AFTER_STEPS steps in a row. A new project from a mesh has no wind:
     // played, its blades settle under gravity in about a second, and stepping them on (82,913
     // blades of an 8.4 M-triangle mesh: 6.5 ms a frame) changed nothing on screen.
+    //
+    // On the GPU the steps themselves mark whether they moved a tip by more than
+    // GPU_STILL_TIP_MOVE of its height or let a crushed blade recover (physics.comp, read a frame
+    // later behind a fence: ScenePhysicsGpu::takeMotion), and the field rests after
+    // REST_AFTER_STEPS unmarked steps in a row: a still step moves each tip at most a sixtieth
+    // of STILL_TIP_SHARE, so the steps before the rest moved it less than that share in all.
+    // Before 2026-12-07 a field on the GPU never rested: the editor stepped and drew a still
+    // field every frame while the timeline played.
     static constexpr std::size_t REST_AFTER_STEPS = 60;
+    static constexpr float GPU_STILL_TIP_MOVE = STILL_TIP_SHARE / float(REST_AFTER_STEPS);
+    std::size_t gpuStepsUnanswered = 0;  // GPU steps since takeMotion last answered
     bool timeIndependent = false;  // set when built (bringUpLive)
     bool resting = false;
     std::size_t stillSteps = 0;     // steps in a row that moved no tip

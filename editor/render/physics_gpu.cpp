@@ -1,6 +1,7 @@
 #include "render/physics_gpu.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "util/assert.h"
@@ -117,12 +118,23 @@ void PhysicsGpu::step(gl::BufferRef bladeBuffer, std::size_t bladeCount,
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, mColliderGroups.id());
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, mSubsteps.id());
+    const bool reporting = static_cast<bool>(mMotionReport);
+    mProgram.set("stillTipMove", reporting ? mStillTipMove : 0.0f);
+    mProgram.set("etaDecayStep",
+                 std::isfinite(params.etaDecayPerS) ? params.etaDecayPerS * params.dtS : 0.0f);
+    if (reporting)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, mMotionReport.id());
     const core::DispatchGrid grid = core::dispatchGrid(bladeCount, mGroupSize);
     glDispatchCompute(grid.x, grid.y, 1);
     // Blades feed the cull and the draws (texel fetches) and read-backs; η feeds the next step
     // (SSBO reads).
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void PhysicsGpu::setMotionReport(gl::BufferRef report, float stillTipMove) {
+    mMotionReport = report;
+    mStillTipMove = stillTipMove;
 }
 
 std::vector<std::string> PhysicsGpu::allocated() const {

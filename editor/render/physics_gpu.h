@@ -53,6 +53,11 @@ public:
               const std::vector<core::WindSource>& wind,
               const std::vector<core::SphereCollider>& colliders, float timeS,
               float gravityLoadScale = 0.0f);
+    // Rest detection (the editor's: app/live_scene.h): while `report` is a buffer, each step
+    // sets its first uint to 1 when it moved a tip by more than `stillTipMove` of its blade's
+    // height or let a crushed blade recover (η falling by more than half the step's pure decay).
+    // No buffer (the default): nothing is marked.
+    void setMotionReport(gl::BufferRef report, float stillTipMove);
     // The optional inputs that hold GPU buffers (issue 10: none without their feature): "wind",
     // "colliders", "snow_load".
     std::vector<std::string> allocated() const;
@@ -75,6 +80,8 @@ private:
     gl::Buffer mColliderGroups;
     gl::Buffer mSubsteps;
     gl::Buffer mGravityLoad;
+    gl::BufferRef mMotionReport;
+    float mStillTipMove = 0.0f;
 };
 
 }  // namespace grass::render

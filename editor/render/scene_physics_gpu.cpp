@@ -61,6 +61,32 @@ void ScenePhysicsGpu::step(const core::ScenePhysics& physics, float timeS) {
         layer.physics.step(layer.blades, layer.bladeCount, physics.params, physics.wind,
                            physics.colliders, timeS, load.scale);
     }
+    if (mMotion.id() != 0)
+        mMotionFence.place();
+}
+
+void ScenePhysicsGpu::reportMotion(float stillTipMove) {
+    const bool on = stillTipMove > 0.0f;
+    if (on && mMotion.id() == 0) {
+        const std::uint32_t clear = 0;
+        mMotion = gl::Buffer(std::as_bytes(std::span(&clear, 1)), "physics motion report");
+    } else if (!on) {
+        mMotion = gl::Buffer();
+        mMotionFence.reset();
+    }
+    for (Layer& layer : mLayers)
+        layer.physics.setMotionReport(on ? gl::BufferRef(mMotion) : gl::BufferRef(), stillTipMove);
+}
+
+std::optional<bool> ScenePhysicsGpu::takeMotion() {
+    if (mMotion.id() == 0 || !mMotionFence.passed())
+        return std::nullopt;
+    mMotionFence.reset();
+    std::uint32_t seen = 0;
+    glGetNamedBufferSubData(mMotion.id(), 0, sizeof seen, &seen);
+    const std::uint32_t clear = 0;
+    mMotion.update(std::as_bytes(std::span(&clear, 1)));
+    return seen != 0;
 }
 
 std::size_t ScenePhysicsGpu::capEta(float etaMax) {

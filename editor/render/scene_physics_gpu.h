@@ -3,9 +3,11 @@
 // go up once, every step runs on the GPU, and readBack brings blades and η down once at the end.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "gl/buffer.h"
+#include "gl/fence.h"
 #include "gl/gl_ref.h"
 #include "render/physics_gpu.h"
 #include "scene/scene_physics.h"
@@ -34,6 +36,18 @@ public:
     std::size_t capEta(float etaMax);
     // Copies blades into `scene` and η into `simulation` (which must be the scene's).
     void readBack(core::Scene& scene, core::SceneSimulation& simulation) const;
+    // η of layer `layer`'s blades (a read-back, for tests and tools).
+    std::vector<float> readEta(std::size_t layer) const {
+        return mLayers.at(layer).physics.readEta();
+    }
+    // Rest detection (the editor's: app/live_scene.h): with `stillTipMove` > 0 every layer's
+    // steps mark whether they moved a tip by more than that share of its blade's height or let a
+    // crushed blade recover (PhysicsGpu::setMotionReport); 0 stops it and frees the mark.
+    void reportMotion(float stillTipMove);
+    // Whether the steps since the last answer moved the field, once the GPU has run them (a
+    // fence: the caller never waits); nothing before, and those steps count towards the next
+    // answer. An answer clears the mark.
+    std::optional<bool> takeMotion();
 
 private:
     struct Layer {
@@ -44,6 +58,8 @@ private:
         bool loadUploaded = false;  // the snow load per metre (ScenePhysics) is on the GPU
     };
     std::vector<Layer> mLayers;
+    gl::Buffer mMotion;      // one uint: a step since the last answer moved the field
+    gl::Fence mMotionFence;  // after the last step that marks it
 };
 
 }  // namespace grass::render

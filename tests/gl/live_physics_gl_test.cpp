@@ -79,90 +79,149 @@ TEST_F(LivePhysicsTest, CpuAndGpuMoveTheRenderersBladesAlike) {
     EXPECT_EQ(std::memcmp(copy.data(), rest.data(), patch * sizeof(core::Blade)), 0);
 }
 
+// Plays the live field frame by frame (a tenth of a second each) until it rests, 10 s at most,
+// then 2 s more, in which it must compute no step, keep its clock and leave the renderer's blades
+// as they were. Returns the time played; negative when it never rested.
+double playUntilItRests(editor::Live& live, const char* what) {
+    editor::LivePhysics& physics = *live.physics;
+    EXPECT_TRUE(physics.timeIndependent);
+    double t = 0.0;
+    for (; t < 10.0 && !physics.resting; t += 0.1)
+        EXPECT_EQ(physics.advanceTo(t, 1000), 0.0);
+    if (!physics.resting) {
+        ADD_FAILURE() << what << ": still stepping after " << t << " s";
+        return -1.0;
+    }
+    std::printf("[ live physics ] %s rests after %.1f s (%zu steps)\n", what, t,
+                physics.computedSteps);
+    const std::size_t computed = physics.computedSteps;
+    const std::vector<core::Blade> shown = rendererBlades(live, 0);
+    for (double until = t + 2.0; t < until; t += 0.1)
+        EXPECT_EQ(physics.advanceTo(t, 1000), 0.0);
+    EXPECT_EQ(physics.computedSteps, computed) << what << ": a resting field computes no step";
+    EXPECT_NEAR(physics.timeS(), t - 0.1, physics.scene.params.dtS) << "its clock goes on";
+    EXPECT_FALSE(physics.moved) << what << ": nor is it drawn again";
+    const std::vector<core::Blade> after = rendererBlades(live, 0);
+    EXPECT_EQ(std::memcmp(shown.data(), after.data(), shown.size() * sizeof(core::Blade)), 0);
+    return t;
+}
+
+// The windy project, whose wind depends on time, never rests.
+void expectTheWindyFieldNeverRests(editor::PhysicsDevice device) {
+    auto windy = core::loadProject(sourceDir() / "tests/data/projects/windy");
+    ASSERT_TRUE(windy.ok()) << windy.error().str();
+    editor::Live blown = liveOn(*windy, device);
+    EXPECT_FALSE(blown.physics->timeIndependent);
+    for (double s = 0.1; s < 3.0; s += 0.1)
+        blown.physics->advanceTo(s, 1000);
+    EXPECT_FALSE(blown.physics->resting);
+    EXPECT_TRUE(blown.physics->moved);
+}
+
 // A field that nothing moves rests on the CPU: tests/data/projects/tiny has no wind and no
 // collider, its blades settle under gravity, and after REST_AFTER_STEPS still steps the clock
-// goes on without computing a step, the renderer's blades as they were. A re-grow wakes it. The
-// windy project, whose wind depends on time, never rests.
+// goes on without computing a step, the renderer's blades as they were. A re-grow wakes it.
 TEST_F(LivePhysicsTest, AFieldThatNothingMovesRestsUntilItsBladesAreMoved) {
     auto tiny = core::loadProject(sourceDir() / "tests/data/projects/tiny");
     ASSERT_TRUE(tiny.ok()) << tiny.error().str();
     editor::Live live = liveOn(*tiny, editor::PhysicsDevice::Cpu);
     ASSERT_TRUE(live.physics && live.physics->cpu);
     editor::LivePhysics& physics = *live.physics;
-    EXPECT_TRUE(physics.timeIndependent);
-    double t = 0.0;
-    for (; t < 10.0 && !physics.resting; t += 0.1)
-        EXPECT_EQ(physics.advanceTo(t, 1000), 0.0);
-    ASSERT_TRUE(physics.resting) << "still stepping after " << t << " s";
-    std::printf("[ live physics ] the tiny field rests after %.1f s (%zu steps)\n", t,
-                physics.computedSteps);
-    const std::size_t computed = physics.computedSteps;
-    const std::vector<core::Blade> shown = rendererBlades(live, 0);
-    for (double until = t + 2.0; t < until; t += 0.1)
-        EXPECT_EQ(physics.advanceTo(t, 1000), 0.0);
-    EXPECT_EQ(physics.computedSteps, computed) << "a resting field computes no step";
-    EXPECT_NEAR(physics.timeS(), t - 0.1, physics.scene.params.dtS) << "its clock goes on";
-    EXPECT_FALSE(physics.moved);
-    const std::vector<core::Blade> after = rendererBlades(live, 0);
-    EXPECT_EQ(std::memcmp(shown.data(), after.data(), shown.size() * sizeof(core::Blade)), 0);
+    const double t = playUntilItRests(live, "the tiny field on the CPU");
+    ASSERT_GT(t, 0.0);
     // Resting changes nothing a step would have: one more computed step moves no tip.
+    const std::size_t computed = physics.computedSteps;
     physics.wake();
     physics.advanceTo(t + 0.05, 1000);
     EXPECT_GT(physics.computedSteps, computed);
     EXPECT_FALSE(physics.moved) << "the rest was a fixed point of the step";
     physics.regrown(0, *live.scene, {0});
     EXPECT_FALSE(physics.resting) << "a re-grow wakes it";
-
-    auto windy = core::loadProject(sourceDir() / "tests/data/projects/windy");
-    ASSERT_TRUE(windy.ok()) << windy.error().str();
-    editor::Live blown = liveOn(*windy, editor::PhysicsDevice::Cpu);
-    EXPECT_FALSE(blown.physics->timeIndependent);
-    for (double s = 0.1; s < 3.0; s += 0.1)
-        blown.physics->advanceTo(s, 1000);
-    EXPECT_FALSE(blown.physics->resting);
+    expectTheWindyFieldNeverRests(editor::PhysicsDevice::Cpu);
 }
 
-// The largest η over the live field's first layer (CPU).
+// The same on the GPU, whose blades are stepped in place and never read back: its steps mark
+// whether they moved the field (physics.comp, read a frame later behind a fence), and a field
+// that nothing moves rests there too. Before 2026-12-07 it never did: the editor stepped and
+// drew a still field every frame while the timeline played.
+TEST_F(LivePhysicsTest, AFieldThatNothingMovesRestsOnTheGpuToo) {
+    auto tiny = core::loadProject(sourceDir() / "tests/data/projects/tiny");
+    ASSERT_TRUE(tiny.ok()) << tiny.error().str();
+    editor::Live live = liveOn(*tiny, editor::PhysicsDevice::Gpu);
+    ASSERT_TRUE(live.physics && live.physics->gpu);
+    editor::LivePhysics& physics = *live.physics;
+    double t = playUntilItRests(live, "the tiny field on the GPU");
+    ASSERT_GT(t, 0.0);
+    // It rested where it had settled: a second more of steps moves no tip by the share.
+    const std::vector<core::Blade> shown = rendererBlades(live, 0);
+    physics.wake();
+    for (double until = t + 1.0; t < until; t += 0.1)
+        physics.advanceTo(t, 1000);
+    const std::vector<core::Blade> later = rendererBlades(live, 0);
+    float moved = 0.0f;
+    for (std::size_t i = 0; i < shown.size(); ++i)
+        if (shown[i].h() > 0.0f)
+            moved = std::max(moved, glm::length(later[i].v2() - shown[i].v2()) / shown[i].h());
+    EXPECT_LE(moved, editor::STILL_TIP_SHARE);
+    physics.regrown(0, *live.scene, {0});
+    EXPECT_FALSE(physics.resting) << "a re-grow wakes it";
+    expectTheWindyFieldNeverRests(editor::PhysicsDevice::Gpu);
+}
+
+// The largest η over the live field's first layer, on either device.
 float largestEta(const editor::LivePhysics& physics) {
-    const std::span<const float> eta = physics.cpu->eta(0);
+    const std::vector<float> eta =
+        physics.cpu ? std::vector<float>(physics.cpu->eta(0).begin(), physics.cpu->eta(0).end())
+                    : physics.gpu->readEta(0);
     return eta.empty() ? 0.0f : *std::max_element(eta.begin(), eta.end());
 }
 
-// projects/winter played on: its rocks hold the blades under them crushed for good, and the field
-// must rest as a field without rocks does (it never did: η rose under the rocks every step, so
-// the editor stepped 473 blades' worth of nothing every frame and drew the reduced picture of a
-// moving field). Its trail must not rest: once the ball is gone, the crushed blades recover.
-TEST_F(LivePhysicsTest, BladesAStillColliderHoldsDownLetTheFieldRestButATrailDoesNot) {
+// A ball sunk into a plane's grass (a rock) holds the blades under it crushed for good, and the
+// field must rest as a field without it does; once the ball is gone its trail must not rest
+// until the crushed blades have recovered (η 0 everywhere).
+void expectAStillBallLetsTheFieldRestButNotItsTrail(editor::PhysicsDevice device) {
     core::LoadedProject loaded = planeFieldProject({2.0f, 4, 60.0f, 0.3f, 0.5f});
-    addBall(loaded, {0.0f, 0.15f, 0.0f}, 0.4f);  // sunk into the grass: a rock
-    editor::Live live = liveOn(loaded, editor::PhysicsDevice::Cpu);
-    ASSERT_TRUE(live.physics && live.physics->cpu);
+    addBall(loaded, {0.0f, 0.15f, 0.0f}, 0.4f);
+    editor::Live live = liveOn(loaded, device);
+    ASSERT_TRUE(live.physics);
     editor::LivePhysics& physics = *live.physics;
     EXPECT_TRUE(physics.timeIndependent);
     double t = 0.0;
     for (; t < 30.0 && !physics.resting; t += 0.1)
         physics.advanceTo(t, 1000);
-    ASSERT_TRUE(physics.resting) << "still stepping after " << t << " s";
+    ASSERT_TRUE(physics.resting) << physics.deviceLabel() << ": still stepping after " << t << " s";
     EXPECT_GT(largestEta(physics), 1.0f) << "the blades under the ball rest crushed";
     std::printf(
-        "[ live physics ] the field under a still ball rests after %.1f s, largest eta %.1f\n", t,
-        double(largestEta(physics)));
-    // The rest is a fixed point of the step: one more computed frame moves no tip.
-    physics.wake();
-    physics.advanceTo(t + 0.1, 1000);
-    EXPECT_FALSE(physics.moved);
-
+        "[ live physics ] on the %s the field under a still ball rests after %.1f s, "
+        "largest eta %.1f\n",
+        physics.deviceLabel().c_str(), t, double(largestEta(physics)));
+    if (physics.cpu) {
+        // The rest is a fixed point of the step: one more computed frame moves no tip.
+        physics.wake();
+        physics.advanceTo(t + 0.1, 1000);
+        EXPECT_FALSE(physics.moved);
+    }
     // The ball lifted away: the crushed blades recover, standing still at first (stiffness held
-    // at the floor while η decays), and the field rests only once they have (η 0 everywhere).
+    // at the floor while η decays), and the field rests only once they have.
     physics.scene.colliders.clear();
     physics.wake();
-    const float decayPerS = physics.scene.params.etaDecayPerS;
-    const double recovered = t + largestEta(physics) / decayPerS;
+    const double recovered = t + largestEta(physics) / physics.scene.params.etaDecayPerS;
     for (t += 0.2; t < recovered + 30.0 && !physics.resting; t += 0.1)
         physics.advanceTo(t, 1000);
-    ASSERT_TRUE(physics.resting) << "still stepping after " << t << " s";
+    ASSERT_TRUE(physics.resting) << physics.deviceLabel() << ": still stepping after " << t << " s";
     EXPECT_GE(t, recovered - 1.0) << "rested before η could decay";
     EXPECT_EQ(largestEta(physics), 0.0f) << "a recovering blade let the field rest";
+}
+
+// projects/winter played on: its rocks hold the blades under them crushed for good (it never
+// rested: η rose under the rocks every step, so the editor stepped 473 blades' worth of nothing
+// every frame and drew the reduced picture of a moving field).
+TEST_F(LivePhysicsTest, BladesAStillColliderHoldsDownLetTheFieldRestButATrailDoesNot) {
+    expectAStillBallLetsTheFieldRestButNotItsTrail(editor::PhysicsDevice::Cpu);
+}
+
+TEST_F(LivePhysicsTest, BladesAStillColliderHoldsDownLetTheFieldRestOnTheGpuButATrailDoesNot) {
+    expectAStillBallLetsTheFieldRestButNotItsTrail(editor::PhysicsDevice::Gpu);
 }
 
 // The lowest tip (v2.y) among the blades whose root lies within `radiusM` of the plane's centre.
