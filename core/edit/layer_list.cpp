@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "util/free_name.h"
+
 namespace grass::core {
 
 namespace {
@@ -14,11 +16,7 @@ bool hasName(const std::vector<GrassLayer>& layers, const std::string& name) {
 }  // namespace
 
 std::string freeLayerName(const std::vector<GrassLayer>& layers, const std::string& base) {
-    if (!hasName(layers, base))
-        return base;
-    for (std::size_t n = 2;; ++n)
-        if (std::string name = base + " " + std::to_string(n); !hasName(layers, name))
-            return name;
+    return freeName(layers, base);
 }
 
 bool addLayer(Project& project) {

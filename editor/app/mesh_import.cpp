@@ -12,6 +12,7 @@
 #include "mesh/mesh_frame.h"
 #include "scene/scene.h"
 #include "scene/scene_props.h"
+#include "util/free_name.h"
 #include "util/path_inside.h"
 
 namespace grass::editor {
@@ -34,19 +35,6 @@ std::string freshMeshFolder(const fs::path& projectFolder, const std::string& st
 // Farther than this from the scene's origin a mesh collider's float positions are coarser
 // than a millimetre: one from a georeferenced file the ground does not share the frame of.
 constexpr float FAR_COLLIDER_M = 1.0e4f;
-
-// `stem`, or "stem 2", "stem 3", … : a name no collider of `project` has.
-std::string freshColliderName(const core::Project& project, const std::string& stem) {
-    const auto taken = [&](const std::string& name) {
-        return std::any_of(project.colliders.begin(), project.colliders.end(),
-                           [&](const core::ColliderDesc& c) { return c.name == name; });
-    };
-    const std::string base = stem.empty() ? "collider" : stem;
-    std::string name = base;
-    for (int n = 2; taken(name); ++n)
-        name = base + " " + std::to_string(n);
-    return name;
-}
 
 std::string formatScale(float scale) {
     char text[32];
@@ -99,7 +87,8 @@ Result<void> addMeshCollider(EditorState& s, const fs::path& meshFile) {
     }
     core::ColliderDesc collider;
     collider.shape = core::ColliderShape::Mesh;
-    collider.name = freshColliderName(loaded.project, absolute.stem().string());
+    const std::string stem = absolute.stem().string();
+    collider.name = core::freeName(loaded.project.colliders, stem.empty() ? "collider" : stem);
     // A prop of the scene's scale: its own size when that is between a hundredth and half of
     // the scene (a rock modelled in metres), else a tenth of the scene (a model in centimetres
     // or kilometres), said in the note.

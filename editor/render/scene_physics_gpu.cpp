@@ -67,6 +67,8 @@ void ScenePhysicsGpu::step(const core::ScenePhysics& physics, float timeS) {
 
 void ScenePhysicsGpu::reportMotion(float stillTipMove) {
     const bool on = stillTipMove > 0.0f;
+    if (!on && mMotion.id() == 0)
+        return;  // off already (each frame of a windy field asks this)
     if (on && mMotion.id() == 0) {
         const std::uint32_t clear = 0;
         mMotion = gl::Buffer(std::as_bytes(std::span(&clear, 1)), "physics motion report");

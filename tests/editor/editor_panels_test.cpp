@@ -303,30 +303,23 @@ TEST(EditorPanels, AMeshColliderIsAddedFromItsFileAndCopiedIntoTheProject) {
     ASSERT_TRUE(editor::undo(editor.state));
     EXPECT_EQ(project.colliders.size(), 1u);
 
+    // Refused: the file of tests/data/gltf added, the reason must say `why`; nothing changes.
+    const auto expectRefused = [&](const char* file, const char* why) {
+        const auto added =
+            editor::addMeshCollider(editor.state, sourceDir() / "tests/data/gltf" / file);
+        ASSERT_FALSE(added.ok()) << file;
+        EXPECT_NE(added.error().str().find(why), std::string::npos) << added.error().str();
+        EXPECT_EQ(project.colliders.size(), 1u) << file;
+    };
     // A broken file changes nothing, copies nothing, and says which file and why.
-    const auto broken =
-        editor::addMeshCollider(editor.state, sourceDir() / "tests/data/gltf/truncated.gltf");
-    ASSERT_FALSE(broken.ok());
-    EXPECT_NE(broken.error().str().find("truncated.gltf"), std::string::npos)
-        << broken.error().str();
-    EXPECT_EQ(project.colliders.size(), 1u);
+    expectRefused("truncated.gltf", "truncated.gltf");
     EXPECT_FALSE(fs::exists(folder.path() / "meshes/truncated"));
-
     // A mesh far out in a georeferenced frame the (procedural) ground does not share: its
     // positions are too coarse there to draw or pack, refused with where it lies.
-    const auto far =
-        editor::addMeshCollider(editor.state, sourceDir() / "tests/data/gltf/far_quad.gltf");
-    ASSERT_FALSE(far.ok());
-    EXPECT_NE(far.error().str().find("5437 km from the scene's origin"), std::string::npos)
-        << far.error().str();
-    EXPECT_EQ(project.colliders.size(), 1u);
-
+    expectRefused("far_quad.gltf", "5437 km from the scene's origin");
     // A project never saved has no folder to keep the mesh in: saved first.
     editor.state.doc.loaded.folder.clear();
-    const auto unsaved =
-        editor::addMeshCollider(editor.state, sourceDir() / "tests/data/gltf/cube.glb");
-    ASSERT_FALSE(unsaved.ok());
-    EXPECT_NE(unsaved.error().str().find("save the project first"), std::string::npos);
+    expectRefused("cube.glb", "save the project first");
 }
 
 // Issue 26 item 1: File › New from mesh… asks first about unsaved changes, then asks the Editor

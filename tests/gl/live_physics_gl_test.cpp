@@ -79,6 +79,13 @@ TEST_F(LivePhysicsTest, CpuAndGpuMoveTheRenderersBladesAlike) {
     EXPECT_EQ(std::memcmp(copy.data(), rest.data(), patch * sizeof(core::Blade)), 0);
 }
 
+// tests/data/projects/tiny live on `device`: no wind, no collider.
+editor::Live tinyLiveOn(editor::PhysicsDevice device) {
+    auto tiny = core::loadProject(sourceDir() / "tests/data/projects/tiny");
+    EXPECT_TRUE(tiny.ok()) << tiny.error().str();
+    return tiny.ok() ? liveOn(*tiny, device) : editor::Live{};
+}
+
 // Plays the live field frame by frame (a tenth of a second each) until it rests, 10 s at most,
 // then 2 s more, in which it must compute no step, keep its clock and leave the renderer's blades
 // as they were. Returns the time played; negative when it never rested.
@@ -122,9 +129,7 @@ void expectTheWindyFieldNeverRests(editor::PhysicsDevice device) {
 // collider, its blades settle under gravity, and after REST_AFTER_STEPS still steps the clock
 // goes on without computing a step, the renderer's blades as they were. A re-grow wakes it.
 TEST_F(LivePhysicsTest, AFieldThatNothingMovesRestsUntilItsBladesAreMoved) {
-    auto tiny = core::loadProject(sourceDir() / "tests/data/projects/tiny");
-    ASSERT_TRUE(tiny.ok()) << tiny.error().str();
-    editor::Live live = liveOn(*tiny, editor::PhysicsDevice::Cpu);
+    editor::Live live = tinyLiveOn(editor::PhysicsDevice::Cpu);
     ASSERT_TRUE(live.physics && live.physics->cpu);
     editor::LivePhysics& physics = *live.physics;
     const double t = playUntilItRests(live, "the tiny field on the CPU");
@@ -145,9 +150,7 @@ TEST_F(LivePhysicsTest, AFieldThatNothingMovesRestsUntilItsBladesAreMoved) {
 // that nothing moves rests there too. Before 2026-12-07 it never did: the editor stepped and
 // drew a still field every frame while the timeline played.
 TEST_F(LivePhysicsTest, AFieldThatNothingMovesRestsOnTheGpuToo) {
-    auto tiny = core::loadProject(sourceDir() / "tests/data/projects/tiny");
-    ASSERT_TRUE(tiny.ok()) << tiny.error().str();
-    editor::Live live = liveOn(*tiny, editor::PhysicsDevice::Gpu);
+    editor::Live live = tinyLiveOn(editor::PhysicsDevice::Gpu);
     ASSERT_TRUE(live.physics && live.physics->gpu);
     editor::LivePhysics& physics = *live.physics;
     double t = playUntilItRests(live, "the tiny field on the GPU");
