@@ -248,7 +248,11 @@ Response Context::interact(Rect rect, Rect clip, Layer layer, Id id, Sense sense
     r.mSecondaryClicked = sense.click && r.mHovered && buttonReleased(PointerButton::Secondary);
     if (mActiveId == id) {
         mActiveSeen = true;
-        if (sense.drag && (buttonDown() || buttonPressed())) {
+        // A drag's release carries its last stretch of motion: at a low frame rate that comes
+        // with the release (the app feeds one pass per button event), and a quick flick's whole
+        // motion does. A click (no farther than clickMaxDistance) moves nothing as it ends.
+        const bool releasingADrag = buttonReleased() && mPressMovedFar;
+        if (sense.drag && (buttonDown() || buttonPressed() || releasingADrag)) {
             r.mDragged = true;
             r.mDragDelta = buttonPressed() ? Vec2(0.0f) : mPointerDelta;
         }

@@ -24,7 +24,8 @@ public:
     bool clicked() const { return mClicked; }
     bool doubleClicked() const { return mDoubleClicked; }
     bool secondaryClicked() const { return mSecondaryClicked; }
-    // Pressed on this widget and still held (widgets that sense drags).
+    // Pressed on this widget and still held (widgets that sense drags), or released this pass
+    // after moving farther than a click (the drag's last stretch, with dragStopped()).
     bool dragged() const { return mDragged; }
     bool dragStarted() const { return mDragStarted; }
     bool dragStopped() const { return mDragStopped; }

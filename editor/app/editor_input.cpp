@@ -35,6 +35,21 @@ void moveCamera(InputState input, bool drag, bool wheel, int viewportHeight,
     camera.farPlane = camera.distance * 20.0f + 100.0f;
 }
 
+// A change of the left button during the frame, for the viewport's tools: where it happened (UI
+// points), whether the UI took it, and the viewport's rect in that pass.
+struct LeftButtonStep {
+    ui::Vec2 at;
+    bool down = false;
+    bool uiTook = false;
+    ui::Rect central;
+};
+
+// The viewport's pointer at `at` (UI points) for a viewport at `central`.
+void placePointer(ViewportPointer& pointer, ui::Vec2 at, ui::Rect central, float ppp) {
+    pointer.pixel = glm::vec2(at.x - central.min.x, at.y - central.min.y) * ppp;
+    pointer.viewportSize = glm::vec2(central.width(), central.height()) * ppp;
+}
+
 PixelRect toPixels(ui::Rect r, float ppp, int framebufferHeight) {
     PixelRect p;
     p.x = int(std::lround(r.min.x * ppp));
@@ -55,24 +70,30 @@ void Editor::runInput(InputState input, int width, int height) {
     mView = PixelRect{0, 0, width, height};
     bool uiPointer = false, uiKeyboard = false;
     bool pressOnUi = false;  // a press this frame that a panel took (not the viewport's)
+    std::vector<LeftButtonStep> leftSteps;
+    ui::Rect central;
+    float ppp = 1.0f;
     ViewportPointer pointer;
     mState.view.camera = mCamera;
     if (mUi) {
         // One UI pass per button event (input_passes.h), the last one drawn.
         std::vector<ui::Input> passes = mUi->passes(*mWindow, input, mWindow->nowS());
         for (std::size_t i = 0; i + 1 < passes.size(); ++i) {
-            const bool press = passes[i].buttonDown[0] && !mUi->context().buttonDown();
+            const bool wasDown = mUi->context().buttonDown();
+            const bool down = passes[i].buttonDown[0];
+            const ui::Vec2 eventAt = passes[i].pointerPos;
             mUi->beginFrame(std::move(passes[i]));
-            buildPanels(mUi->context(), mState);
+            const ui::Rect passCentral = buildPanels(mUi->context(), mState);
             const bool uiWantsPointer = mUi->context().endFrame().wantsPointer;
-            pressOnUi = pressOnUi || (press && uiWantsPointer);
+            pressOnUi = pressOnUi || (down && !wasDown && uiWantsPointer);
+            if (down != wasDown)
+                leftSteps.push_back({eventAt, down, uiWantsPointer, passCentral});
         }
         mUi->beginFrame(std::move(passes.back()));
-        const ui::Rect central = buildPanels(mUi->context(), mState);
-        const float ppp = mUi->pixelsPerPoint();
+        central = buildPanels(mUi->context(), mState);
+        ppp = mUi->pixelsPerPoint();
         const ui::Vec2 at = mUi->context().pointerPos();
-        pointer.pixel = glm::vec2(at.x - central.min.x, at.y - central.min.y) * ppp;
-        pointer.viewportSize = glm::vec2(central.width(), central.height()) * ppp;
+        placePointer(pointer, at, central, ppp);
         pointer.inside = input.cursorInside && central.contains(at);
         drawViewportOverlay(mUi->context(), central, ppp, mState, mCamera, pointer);
         const ui::Output& out = mUi->endFrame(*mWindow);
@@ -88,39 +109,77 @@ void Editor::runInput(InputState input, int width, int height) {
         mState.transient.status.uiMs =
             std::chrono::duration<double, std::milli>(Clock::now() - uiStart).count();
     }
+    // A button that went down or came up during the frame was held for part of it: at 1–3
+    // frames a second a whole flick (press, move, release) fits in one frame, and a drag's last
+    // stretch comes with its release. Both move the camera (dragDx holds the motion up to the
+    // release) and reach the tools (one step per left-button change, at its place).
+    bool leftHeld = input.leftDown, middleHeld = input.middleDown, rightHeld = input.rightDown;
+    for (const ButtonEvent& e : input.buttonEvents) {
+        leftHeld = leftHeld || e.button == 0;
+        rightHeld = rightHeld || e.button == 1;
+        middleHeld = middleHeld || e.button == 2;
+    }
     // The viewport's tools: a press on the mesh (brush) or on an object (gizmo) makes the drag
     // theirs; the camera orbits with the right button meanwhile.
     bool toolUsed = false;
+    bool leftIsTools = mToolDrag || mState.view.toolDragActive;
+    bool pressStepped = false;  // a press went to the tools at its own place (a step below)
     if (mUi) {
-        pointer.inside = pointer.inside && !uiPointer && !mCameraDrag;
-        pointer.down = input.leftDown;
-        pointer.pressed = input.leftPressed && !pressOnUi;
-        pointer.released = !input.leftDown;
         pointer.ctrl = input.modifiers.ctrl;
         pointer.shift = input.modifiers.shift;
         pointer.pressure = input.pressure;
-        toolUsed = runViewportTool(mState, mCamera, pointer);
-        if (toolUsed && pointer.pressed)
-            mToolDrag = true;
-        if (!input.leftDown)
-            mToolDrag = false;
-        if (mToolDrag || mState.view.toolDragActive)
-            input.leftDown = false;
-        if (mState.view.tool != ViewportTool::Camera && input.rightDown)
-            input.leftDown = true;
+        const auto runTool = [&](const ViewportPointer& p) {
+            const bool used = runViewportTool(mState, mCamera, p);
+            if (used && p.pressed)
+                mToolDrag = true;
+            if (!p.down)
+                mToolDrag = false;
+            leftIsTools = leftIsTools || mToolDrag || mState.view.toolDragActive;
+            return used;
+        };
+        for (const LeftButtonStep& step : leftSteps) {
+            ViewportPointer p = pointer;
+            placePointer(p, step.at, step.central, ppp);
+            p.inside = input.cursorInside && step.central.contains(step.at) && !step.uiTook &&
+                       !mCameraDrag;
+            p.down = step.down;
+            p.pressed = step.down && !step.uiTook;
+            p.released = !step.down;
+            runTool(p);
+            pressStepped = pressStepped || step.down;
+        }
+        pointer.inside = pointer.inside && !uiPointer && !mCameraDrag;
+        pointer.down = input.leftDown;
+        pointer.pressed = input.leftPressed && !pressOnUi && !pressStepped;
+        pointer.released = !input.leftDown;
+        toolUsed = runTool(pointer);
+        if (leftIsTools)
+            leftHeld = false;
+        if (mState.view.tool != ViewportTool::Camera && rightHeld)
+            leftHeld = true;
     }
-    const bool anyDown = input.leftDown || input.middleDown || input.rightDown;
-    if (!mUi || !anyDown)
-        mCameraDrag = anyDown && !toolUsed;
-    else if (!mCameraDrag && !uiPointer && !mToolDrag && mUi->context().activeId().value == 0)
-        mCameraDrag = true;
+    InputState cameraInput = input;
+    cameraInput.leftDown = leftHeld;
+    cameraInput.middleDown = middleHeld;
+    cameraInput.rightDown = rightHeld;
+    const bool anyDown = (input.leftDown && leftHeld) || input.middleDown || input.rightDown;
+    const bool anyHeld = leftHeld || middleHeld || rightHeld;
+    // The camera's drag this frame: one it held already, or one a press on the viewport began
+    // (judged where the press happened when the frame had its event, else where the pointer is).
+    bool cameraDrag = false;
+    if (!mUi)
+        cameraDrag = anyHeld && !toolUsed;
+    else
+        cameraDrag = mCameraDrag || (anyHeld && !(pressStepped ? pressOnUi : uiPointer) &&
+                                     !leftIsTools && mUi->context().activeId().value == 0);
+    mCameraDrag = cameraDrag && anyDown;
     // A focused field owns the keyboard: an F typed into it is text, not "frame the scene".
     if (uiKeyboard)
-        input.frameRequested = false;
-    moveCamera(input, mCameraDrag, !uiPointer, mView.h, *mLive.scene,
+        input.frameRequested = cameraInput.frameRequested = false;
+    moveCamera(cameraInput, cameraDrag, !uiPointer, mView.h, *mLive.scene,
                selectionBounds(mState, float(mState.view.timeline.timeS())), mCamera);
     // What keeps the viewport's picture reduced (adaptive quality, Editor::chooseQuality).
-    mInteracting = (mCameraDrag && anyDown) || (input.scrollSteps != 0.0 && !uiPointer) ||
+    mInteracting = (cameraDrag && anyHeld) || (input.scrollSteps != 0.0 && !uiPointer) ||
                    mToolDrag || mState.view.toolDragActive ||
                    (mUi && mUi->context().activeId().value != 0);
     // The file browser is a dialog: while it is open no key reaches the viewport behind it (a

@@ -189,6 +189,27 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
             }
             p.now.leftDown = false;
             p.emit();
+        } else if (command == "stroke") {
+            // A left drag as the window delivers it at a low frame rate: the press and the first
+            // stretch of motion in the first frame, the last stretch and the release in the last
+            // (each change an event at its place); N = 1: a whole flick inside one frame.
+            double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+            int steps = 0;
+            if (!(in >> x0 >> y0 >> x1 >> y1 >> steps) || !finite({x0, y0, x1, y1}) || steps < 1 ||
+                steps > MAX_WAIT_FRAMES)
+                return fail("stroke: expected X0 Y0 X1 Y1 N (N frames, at least 1)");
+            p.moveTo(x0, y0);
+            p.now.buttonEvents.push_back({0, true, {float(x0), float(y0)}, -1.0});
+            p.now.leftDown = p.now.leftPressed = true;
+            for (int i = 1; i <= steps; ++i) {
+                const double f = double(i) / steps;
+                p.moveTo(x0 + f * (x1 - x0), y0 + f * (y1 - y0));
+                if (i == steps) {
+                    p.now.buttonEvents.push_back({0, false, {float(x1), float(y1)}, -1.0});
+                    p.now.leftDown = false;
+                }
+                p.emit();
+            }
         } else if (command == "hold") {
             std::string what;
             in >> what;

@@ -9,6 +9,9 @@
 //   move X Y                 the pointer moves to (X, Y): one frame
 //   press [left|right|middle]   / release [...]   one frame each (default left)
 //   drag X0 Y0 X1 Y1 N       press at (X0, Y0), move to (X1, Y1) over N frames, release
+//   stroke X0 Y0 X1 Y1 N     the same drag as a slow window delivers it: the press comes with
+//                            the first frame's motion, the release with the last's (N = 1: a
+//                            whole flick inside one frame)
 //   click X Y / doubleclick X Y   one or two left clicks inside one frame (as at a low frame rate)
 //   hold ctrl|shift|none     modifiers held from now on (hold ctrl+shift for both)
 //   key [ctrl+][shift+]NAME  one key press: a letter, digit, [ ], enter, escape, tab, f

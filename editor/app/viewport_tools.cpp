@@ -58,6 +58,10 @@ bool runPaint(EditorState& s, const core::OrbitCamera& camera, const ViewportPoi
     if (!stroking && !(p.pressed && p.inside))
         return false;
     if (stroking && (!p.down || p.released)) {
+        // The stroke reaches where the button came up: at 1–3 frames a second the last frame
+        // saw the pointer a long way before it (a hit where the last one was paints nothing).
+        if (const auto hit = pickSurface(*s.tools, camera, p))
+            queue(s, painter.layer(), painter.paintTo(hit->posWorld, p.pressure));
         endStroke(s);
         return true;
     }
@@ -159,10 +163,22 @@ bool validSelection(const EditorState& s) {
                                       : o.index < s.doc.loaded.project.colliders.size();
 }
 
+// The gizmo's drag with the pointer at `pixel`: the selection moved by its delta from where the
+// drag began, as an ongoing edit (the drag's end makes it one step).
+void dragSelectionTo(EditorState& s, glm::vec2 pixel, float timeS) {
+    if (validSelection(s))
+        apply(s, EditProject{.after = movedByGizmo(s, *s.view.place.selected,
+                                                   s.view.gizmoDrag->update(pixel), timeS),
+                             .ongoing = true});
+}
+
 bool runPlace(EditorState& s, const core::OrbitCamera& camera, const ViewportPointer& p) {
     const float timeS = float(s.view.timeline.timeS());
     if (s.view.gizmoDrag) {
         if (!p.down || p.released) {
+            // The object goes where the button came up (the drag's delta depends on the pointer
+            // alone, so the same place again changes nothing).
+            dragSelectionTo(s, p.pixel, timeS);
             s.view.gizmoDrag.reset();
             s.view.toolDragActive = false;
             // The drag ends as one step; the renderer's props and the GPU physics are built
@@ -172,12 +188,7 @@ bool runPlace(EditorState& s, const core::OrbitCamera& camera, const ViewportPoi
                                  .effect = moved ? EditEffect::Regrow : EditEffect::Live});
             return true;
         }
-        core::GizmoSnap snap = s.view.place.snap;
-        snap.enabled = snap.enabled || p.ctrl;
-        if (validSelection(s))
-            apply(s, EditProject{.after = movedByGizmo(s, *s.view.place.selected,
-                                                       s.view.gizmoDrag->update(p.pixel), timeS),
-                                 .ongoing = true});
+        dragSelectionTo(s, p.pixel, timeS);
         return true;
     }
     if (!(p.pressed && p.inside))

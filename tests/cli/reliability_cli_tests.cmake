@@ -44,6 +44,10 @@ if(TARGET grass-editor)
     # Quick clicks, a double-click and typing all reach the project (issue 24); about 30 s.
     editor_window_test(editor_real_input editor_real_input_test.sh 120
         "real input: name typed, quick click, double-click" ${GRASS_CLI_TMP}/editor-real-input)
+    # A gizmo drag inside one frame (press, motion and release by xdotool within milliseconds)
+    # moves the ball as far as the same drag over frames; about 20 s.
+    editor_window_test(editor_real_flick editor_real_flick_test.sh 120
+        "real flick: the ball went down" ${GRASS_CLI_TMP}/editor-real-flick)
     # The artist's own mesh (issue 26): File › New from mesh…, a typed path in the file browser,
     # Save As by Ctrl+S, a refused typed value, Ctrl+O and the recent list; about 50 s.
     editor_window_test(editor_real_import editor_real_import_test.sh 150

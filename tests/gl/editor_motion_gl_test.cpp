@@ -19,25 +19,6 @@
 namespace grass::test {
 namespace {
 
-// A ball above a small field, seen from the front: 900 × 560, its marker at (615, 189) and its
-// radius about 50 px on screen.
-void writeBallProject(const std::filesystem::path& dir) {
-    std::ofstream(dir / "project.json") << R"({"format": "grass-project", "version": 2,
-  "name": "ball", "mesh": {"procedural": "plane", "size": 2, "resolution": 2},
-  "layers": [{"name": "grass", "density": 20}],
-  "colliders": [{"name": "ball", "shape": "sphere", "position": [0, 0.8, 0], "radius": 0.3}],
-  "cameras": [{"name": "main", "position": [0.0, 1.6, 3.2], "target": [0, 0.4, 0]}],
-  "render": {"width": 900, "height": 560, "geometry": "strips", "msaa": 0}})";
-}
-
-// The colliders of the project `dir` holds (saved by the script's Ctrl+S); none when it cannot
-// be read, which fails the test.
-std::vector<core::ColliderDesc> savedColliders(const std::filesystem::path& dir) {
-    auto saved = core::loadProject(dir / "project.json");
-    EXPECT_TRUE(saved.ok()) << saved.error().str();
-    return saved.ok() ? saved->project.colliders : std::vector<core::ColliderDesc>{};
-}
-
 // Where the ball's upper half stands before any drag (25 px left of its marker, 24 px above):
 // the red and blue of that pixel of a 900-pixel-wide screenshot, {-1, -1} when unreadable.
 // Blue well above red: the sky shows there; about equal: the grey ball.

@@ -9,6 +9,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
+
+#include "project/project.h"
 
 namespace grass::test {
 
@@ -28,6 +31,25 @@ inline void writeTinyProject(const std::filesystem::path& folder, const std::str
         << R"(
   "render": {"width": )"
         << width << ", \"height\": " << height << R"(, "geometry": "strips", "msaa": 0}})";
+}
+
+// A ball above a small field, seen from the front: 900 × 560, its marker at (615, 189) and its
+// radius about 50 px on screen.
+inline void writeBallProject(const std::filesystem::path& dir) {
+    std::ofstream(dir / "project.json") << R"({"format": "grass-project", "version": 2,
+  "name": "ball", "mesh": {"procedural": "plane", "size": 2, "resolution": 2},
+  "layers": [{"name": "grass", "density": 20}],
+  "colliders": [{"name": "ball", "shape": "sphere", "position": [0, 0.8, 0], "radius": 0.3}],
+  "cameras": [{"name": "main", "position": [0.0, 1.6, 3.2], "target": [0, 0.4, 0]}],
+  "render": {"width": 900, "height": 560, "geometry": "strips", "msaa": 0}})";
+}
+
+// The colliders of the project `dir` holds (saved by the script's Ctrl+S); none when it cannot
+// be read, which fails the test.
+inline std::vector<core::ColliderDesc> savedColliders(const std::filesystem::path& dir) {
+    auto saved = core::loadProject(dir / "project.json");
+    EXPECT_TRUE(saved.ok()) << saved.error().str();
+    return saved.ok() ? saved->project.colliders : std::vector<core::ColliderDesc>{};
 }
 
 // Runs the editor on `dir` with `script` and `flags` under Xvfb; returns its output. With

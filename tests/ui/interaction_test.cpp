@@ -103,7 +103,12 @@ TEST(UiInteraction, SliderDragMovesByValuePerPointAndClampsAtBothEnds) {
     h.moveTo({handleX - 1000.0f, y});
     h.frame(build);
     EXPECT_FLOAT_EQ(value, 0.0f);
+    // The release ends the drag (its pass still takes the drag's last stretch); after it, the
+    // slider is no longer dragged.
     h.release();
+    h.frame(build);
+    EXPECT_TRUE(r.dragStopped());
+    EXPECT_FLOAT_EQ(value, 0.0f);
     h.frame(build);
     EXPECT_FALSE(r.dragged());
 }
@@ -192,6 +197,50 @@ TEST(UiInteraction, DragValueChangesBySpeedTimesDelta) {
     EXPECT_EQ(blades, 101);
     h.release();
     h.frame(build);
+}
+
+// At a low frame rate a drag's last stretch arrives with its release (the editor runs one pass
+// per button event, the release's at its own place), and a flick's whole motion does: the value
+// moves by it. A click that ends a point or two from its press moves nothing.
+TEST(UiInteraction, DragValueTakesTheStretchThatCameWithTheRelease) {
+    UiHarness h;
+    float height = 1.0f;
+    Response r;
+    const auto build = [&](Ui& ui) { r = ui.dragValue("Height", height, 0.01f, 0.0f, 1.5f); };
+    h.frame(build);
+    Vec2 p = r.rect().centre();
+    // Held over two frames, released 20 points on.
+    h.moveTo(p);
+    h.press();
+    h.frame(build);
+    p.x += 10.0f;
+    h.moveTo(p);
+    h.frame(build);
+    p.x += 20.0f;
+    h.moveTo(p);
+    h.release();
+    h.frame(build);
+    EXPECT_NEAR(height, 1.3f, 1e-5f) << "the stretch that came with the release was lost";
+    // A flick: the press's pass, then the release's 25 points away.
+    p = r.rect().centre();
+    h.moveTo(p);
+    h.frame(build);
+    h.press();
+    h.frame(build);
+    h.moveTo(p - Vec2(25.0f, 0.0f));
+    h.release();
+    h.frame(build);
+    EXPECT_NEAR(height, 1.05f, 1e-5f) << "the flick's motion was lost";
+    // A click released 2 points from its press: no drag, no change.
+    const float beforeClick = height;
+    h.moveTo(p);
+    h.frame(build);
+    h.press();
+    h.frame(build);
+    h.moveTo(p + Vec2(2.0f, 0.0f));
+    h.release();
+    h.frame(build);
+    EXPECT_EQ(height, beforeClick) << "a click moved the value";
 }
 
 TEST(UiInteraction, ComboBoxOpensOnClickAndPickChangesValue) {
