@@ -78,10 +78,10 @@ Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded,
     return remakeSceneProps(loaded, {}, {}, groundOrigin);
 }
 
-Result<std::vector<SceneProp>> remakeSceneProps(const LoadedProject& loaded,
-                                                std::vector<SceneProp> props,
-                                                const std::vector<ColliderDesc>& madeFor,
-                                                glm::dvec3 groundOrigin) {
+Result<std::vector<SceneProp>> remakeSceneProps(
+    const LoadedProject& loaded, std::vector<SceneProp> props,
+    const std::vector<ColliderDesc>& madeFor, glm::dvec3 groundOrigin,
+    const std::map<std::string, MovableSurfaceMesh>* readAhead) {
     const auto& colliders = loaded.project.colliders;
     std::vector<bool> taken(std::min(props.size(), madeFor.size()), false);
     std::vector<SceneProp> remade;
@@ -94,9 +94,15 @@ Result<std::vector<SceneProp>> remakeSceneProps(const LoadedProject& loaded,
                (taken[old] || madeFor[old].shape != collider.shape ||
                 (collider.shape == ColliderShape::Mesh && madeFor[old].file != collider.file)))
             ++old;
+        const MovableSurfaceMesh* known = nullptr;
+        if (readAhead && collider.shape == ColliderShape::Mesh)
+            if (const auto found = readAhead->find(collider.file); found != readAhead->end())
+                known = &found->second;
         if (old < taken.size()) {
             taken[old] = true;
             prop.mesh = std::move(props[old].mesh);
+        } else if (known) {
+            prop.mesh = *known;
         } else {
             auto mesh = colliderPropMesh(loaded, i, groundOrigin);
             if (!mesh)

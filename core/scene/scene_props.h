@@ -4,6 +4,7 @@
 // physics never reads these meshes: it collides with the packed spheres (scene_physics.h).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -57,9 +58,11 @@ Result<std::vector<SceneProp>> loadSceneProps(const LoadedProject& loaded,
 // The same after colliders were added or deleted: `props`, made for the colliders `madeFor`,
 // give up their meshes to the colliders of the same shape (and mesh file) in order, so only a
 // new collider's mesh is made or read (the editor adding a ball reads no rock's file again).
-Result<std::vector<SceneProp>> remakeSceneProps(const LoadedProject& loaded,
-                                                std::vector<SceneProp> props,
-                                                const std::vector<ColliderDesc>& madeFor,
-                                                glm::dvec3 groundOrigin = glm::dvec3(0.0));
+// `readAhead`, when given, holds meshes already read by collider file (the editor's add mesh…
+// reads its file on a worker): a new collider of such a file is given a copy, read no more.
+Result<std::vector<SceneProp>> remakeSceneProps(
+    const LoadedProject& loaded, std::vector<SceneProp> props,
+    const std::vector<ColliderDesc>& madeFor, glm::dvec3 groundOrigin = glm::dvec3(0.0),
+    const std::map<std::string, MovableSurfaceMesh>* readAhead = nullptr);
 
 }  // namespace grass::core

@@ -26,34 +26,19 @@ ColliderPackingJob::ColliderPackingJob(core::LoadedProject loaded, glm::dvec3 gr
       mGroundOrigin(groundOrigin),
       mWhat(packingWhat(mLoaded.project, known)) {
     // The worker packs into a copy: the live packings stay the window's.
-    mWorker = std::thread([this, packings = known, whenDone = std::move(whenDone)]() mutable {
-        // buildScenePhysics packs what `packings` lacks, as a fresh build would, and keeps it.
-        auto built = core::buildScenePhysics(mLoaded, mGroundOrigin, &packings);
-        if (built)
-            mResult.emplace(PackedColliders{std::move(packings), std::move(built->notes)});
-        else
-            mResult.emplace(built.error());
-        mDone.store(true);
-        if (whenDone)
-            whenDone();
-    });
-}
-
-ColliderPackingJob::~ColliderPackingJob() {
-    if (mWorker.joinable())
-        mWorker.join();
-}
-
-void ColliderPackingJob::wait() {
-    if (mWorker.joinable())
-        mWorker.join();
+    mJob = std::make_unique<WorkerJob<Result<PackedColliders>>>(
+        [this, packings = known]() mutable -> Result<PackedColliders> {
+            // buildScenePhysics packs what `packings` lacks, as a fresh build would, and keeps it.
+            auto built = core::buildScenePhysics(mLoaded, mGroundOrigin, &packings);
+            if (!built)
+                return built.error();
+            return PackedColliders{std::move(packings), std::move(built->notes)};
+        },
+        std::move(whenDone));
 }
 
 Result<PackedColliders> ColliderPackingJob::take() {
-    wait();
-    Result<PackedColliders> result = std::move(*mResult);
-    mResult.reset();
-    return result;
+    return mJob->take();
 }
 
 }  // namespace grass::editor

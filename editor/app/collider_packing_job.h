@@ -6,15 +6,14 @@
 // again for it, and its blades restarted from rest.
 #pragma once
 
-#include <atomic>
 #include <functional>
-#include <optional>
+#include <memory>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "app/worker_job.h"
 #include "project/project.h"
 #include "scene/scene_physics.h"
 #include "util/result.h"
@@ -34,12 +33,11 @@ public:
     // `groundOrigin`. `whenDone` is called on the worker once done() (EditorState::wakeFrame).
     ColliderPackingJob(core::LoadedProject loaded, glm::dvec3 groundOrigin,
                        const core::ColliderPackings& known, std::function<void()> whenDone = {});
-    ~ColliderPackingJob();  // waits for the worker
     ColliderPackingJob(const ColliderPackingJob&) = delete;
     ColliderPackingJob& operator=(const ColliderPackingJob&) = delete;
 
-    bool done() const { return mDone.load(); }
-    void wait();
+    bool done() const { return mJob->done(); }
+    void wait() { mJob->wait(); }
     // The colliders it was started for and the ground origin it read them in.
     const std::vector<core::ColliderDesc>& colliders() const { return mLoaded.project.colliders; }
     glm::dvec3 groundOrigin() const { return mGroundOrigin; }
@@ -53,9 +51,7 @@ private:
     core::LoadedProject mLoaded;
     glm::dvec3 mGroundOrigin;
     std::string mWhat;
-    std::atomic<bool> mDone{false};
-    std::optional<Result<PackedColliders>> mResult;
-    std::thread mWorker;
+    std::unique_ptr<WorkerJob<Result<PackedColliders>>> mJob;  // last: reads the members above
 };
 
 }  // namespace grass::editor

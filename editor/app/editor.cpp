@@ -471,6 +471,7 @@ bool Editor::applyRequests() {
 void Editor::followMotionEdits() {
     EditorState& state = mState;
     collectColliderPacking();
+    collectColliderImport();
     if (!mLive.scene || state.busy() || state.regrowing())
         return;
     const core::Project& project = state.doc.project();

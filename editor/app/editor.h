@@ -27,10 +27,12 @@
 #include "app/idle_wait.h"
 #include "app/input_script.h"
 #include "app/live_scene.h"
+#include "app/mesh_import.h"
 #include "app/panels.h"
 #include "app/session_stats.h"
 #include "app/view_redraw.h"
 #include "app/window.h"
+#include "app/worker_job.h"
 #include "gl/framebuffer.h"
 #include "scene/camera.h"
 #include "util/result.h"
@@ -108,6 +110,11 @@ private:
     bool packCollidersInBackground(const core::Project& project);
     // Takes a finished packing into the live field's packings.
     void collectColliderPacking();
+    // Colliders › add mesh… (EditorState::addColliderRequested): the file read, checked and
+    // copied on a worker (mesh_import.h importColliderMesh); once done the collider is added,
+    // its mesh kept for its prop (LiveMotion::readAheadProps). The window reads no glTF.
+    void startColliderImport();
+    void collectColliderImport();
     // The same project's field, grown again: it replaces the live one, the clock goes on.
     void adoptLive(Live next);
     // The view framed on the live surface (after a new mesh, unit or up axis).
@@ -168,6 +175,8 @@ private:
     // The colliders a packing failed for: not packed again in the background (the re-grow packs
     // them and reports the error) until they change.
     std::optional<std::vector<core::ColliderDesc>> mPackingFailedFor;
+    std::unique_ptr<WorkerJob<Result<ImportedCollider>>> mColliderImport;
+    std::filesystem::path mColliderImportFolder;  // the project folder it copies into
     std::unique_ptr<gl::Framebuffer> mTarget;
     // What mTarget's picture was drawn from (app/view_redraw.h); whether this frame drew it.
     std::optional<ViewInputs> mDrawnView;

@@ -40,6 +40,51 @@ void Editor::applyImports() {
     }
     if (!s.importMapRequested.empty())
         importMapImage(s, std::exchange(s.importMapRequested, {}));
+    if (!s.addColliderRequested.empty())
+        startColliderImport();
+}
+
+void Editor::startColliderImport() {
+    EditorState& s = mState;
+    if (mColliderImport) {
+        s.transient.message =
+            "not taken: " + s.addColliderRequested +
+            " (the last mesh chosen is still being read: add it once that one is in)";
+        s.addColliderRequested.clear();
+        return;
+    }
+    const fs::path file = std::exchange(s.addColliderRequested, {});
+    auto request = colliderImportRequest(s, file);
+    if (!request) {
+        s.transient.message = "cannot add a collider: " + request.error().str();
+        return;
+    }
+    mColliderImportFolder = request->folder;
+    mColliderImport = std::make_unique<WorkerJob<Result<ImportedCollider>>>(
+        [request = std::move(*request)] { return importColliderMesh(request); }, s.wakeFrame);
+    s.transient.message = "reading " + file.filename().string() + " …";
+    if (mReplay)  // scripts and screenshots: added in this frame, whatever the machine's speed
+        collectColliderImport();
+}
+
+void Editor::collectColliderImport() {
+    if (!mColliderImport || (!mColliderImport->done() && !mReplay))
+        return;
+    auto imported = std::exchange(mColliderImport, nullptr)->take();
+    EditorState& s = mState;
+    if (!imported) {
+        s.transient.message = "cannot add a collider: " + imported.error().str();
+        return;
+    }
+    // Another project opened meanwhile: the copy is in the folder it was meant for, unused.
+    if (s.doc.loaded.folder != mColliderImportFolder) {
+        s.transient.message = "not added: " + imported->collider.file + " belongs to " +
+                              mColliderImportFolder.string();
+        return;
+    }
+    core::MovableSurfaceMesh mesh = std::move(imported->mesh);
+    const std::string file = addImportedCollider(s, std::move(*imported));
+    mLive.motion.readAheadProps.insert_or_assign(file, std::move(mesh));
 }
 
 void Editor::adoptImportedMesh(GrownDocument imported, const fs::path& file) {

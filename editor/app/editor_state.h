@@ -228,6 +228,9 @@ struct EditorState {
     std::string newFromMeshRequested;
     std::string importMeshRequested;
     std::string importMapRequested;
+    // Colliders › add mesh…: the glTF chosen, read and copied into the project on a worker
+    // (Editor::collectColliderImport adds it).
+    std::string addColliderRequested;
     bool quitRequested = false;  // the user confirmed (or nothing was unsaved)
 };
 

@@ -331,8 +331,10 @@ Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool se
         const bool propsMove = core::sameProps(motion.colliders, project.colliders);
         std::vector<core::SceneProp> props;
         if (!propsMove) {
-            auto loadedProps = core::remakeSceneProps(loaded, live.scene->props, motion.colliders,
-                                                      live.scene->groundOrigin);
+            auto loadedProps =
+                core::remakeSceneProps(loaded, live.scene->props, motion.colliders,
+                                       live.scene->groundOrigin, &motion.readAheadProps);
+            motion.readAheadProps.clear();
             if (!loadedProps)
                 return loadedProps.error();
             props = std::move(*loadedProps);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -136,6 +137,10 @@ struct LiveMotion {
     // (their props shelter the snow) and the blades they held were let go then.
     std::vector<core::ColliderDesc> settledColliders;
     core::ColliderPackings packings;
+    // Mesh colliders' meshes read already, by file (add mesh… reads its file on a worker): the
+    // next followMotion makes their props from these instead of reading the files on the
+    // window's thread, then lets them go.
+    std::map<std::string, core::MovableSurfaceMesh> readAheadProps;
     // Whether every mesh collider of `wanted` has its packing here: then following them
     // packs nothing (which could take seconds on the window's thread).
     bool packed(const std::vector<core::ColliderDesc>& wanted) const;

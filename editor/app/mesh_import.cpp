@@ -12,6 +12,7 @@
 #include "mesh/mesh_frame.h"
 #include "scene/scene.h"
 #include "scene/scene_props.h"
+#include "util/atomic_file.h"
 #include "util/free_name.h"
 #include "util/path_inside.h"
 
@@ -21,14 +22,44 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A free folder name under meshes/ for `stem`: meshes/rock, meshes/rock-2, ...
-std::string freshMeshFolder(const fs::path& projectFolder, const std::string& stem) {
-    const std::string base = "meshes/" + core::fileSafeName(stem);
+// Where the part `relative` of the asset `from` (assetFileSet) lies in its copy `to`: the main
+// file under the copy's name, the files it names at the same places relative to it.
+fs::path copiedPart(const fs::path& from, const fs::path& to, const fs::path& relative) {
+    return to.parent_path() / (relative == from.filename() ? to.filename() : relative);
+}
+
+// Whether two files hold the same bytes (false when either cannot be read).
+bool sameBytes(const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    if (fs::file_size(a, ec) != fs::file_size(b, ec) || ec)
+        return false;
+    const auto first = readFile(a);
+    const auto second = readFile(b);
+    return first && second && *first == *second;
+}
+
+// Whether `to` is a copy of `from` with every file it names, byte for byte.
+bool copiedAlready(const fs::path& from, const fs::path& to) {
+    for (const fs::path& relative : assetFileSet(from))
+        if (!sameBytes(from.parent_path() / relative, copiedPart(from, to, relative)))
+            return false;
+    return true;
+}
+
+// The folder under meshes/ for a copy of `file` named `stem`: meshes/rock, meshes/rock-2, ...,
+// the first that is free, or one that holds a copy of it already (`reused` then says so: the
+// same mesh added twice is copied once).
+std::string meshFolderFor(const fs::path& projectFolder, const fs::path& file, bool& reused) {
+    const std::string base = "meshes/" + core::fileSafeName(file.stem().string());
     std::error_code ec;
     for (int n = 1;; ++n) {
         const std::string candidate = n == 1 ? base : base + "-" + std::to_string(n);
         if (!fs::exists(projectFolder / candidate, ec))
             return candidate;
+        if (copiedAlready(file, projectFolder / candidate / file.filename())) {
+            reused = true;
+            return candidate;
+        }
     }
 }
 
@@ -48,27 +79,41 @@ Result<std::string> meshInProject(const fs::path& projectFolder, const fs::path&
                                   std::string* note) {
     if (!projectFolder.empty() && isInsideFolder(absolute, projectFolder))
         return realPath(absolute).lexically_relative(realPath(projectFolder)).generic_string();
-    const std::string folder = freshMeshFolder(projectFolder, absolute.stem().string());
+    bool reused = false;
+    const std::string folder = meshFolderFor(projectFolder, absolute, reused);
     std::string file = folder + "/" + absolute.filename().generic_string();
-    if (auto copied = copyAssetFiles(absolute, projectFolder / file); !copied)
-        return copied.error();
+    if (!reused)
+        if (auto copied = copyAssetFiles(absolute, projectFolder / file); !copied)
+            return copied.error();
     if (note)
         *note =
-            "copied " + absolute.filename().string() + " into " + (projectFolder / folder).string();
+            (reused ? "uses its copy in " : "copied " + absolute.filename().string() + " into ") +
+            (projectFolder / folder).string();
     return file;
 }
 
-Result<void> addMeshCollider(EditorState& s, const fs::path& meshFile) {
+Result<ColliderImportRequest> colliderImportRequest(const EditorState& s,
+                                                    const fs::path& meshFile) {
     const core::LoadedProject& loaded = s.doc.loaded;
     if (loaded.folder.empty())
         return makeError(meshFile.string(),
                          "save the project first: a collider's mesh is kept "
                          "in the project's folder");
-    const fs::path absolute = fs::absolute(meshFile).lexically_normal();
+    ColliderImportRequest request;
+    request.folder = loaded.folder;
+    request.project = loaded.project;
+    request.file = fs::absolute(meshFile).lexically_normal();
+    request.groundOrigin = s.scene ? s.scene->groundOrigin : glm::dvec3(0.0);
+    request.sceneDiagonalM = s.scene ? glm::length(s.scene->bounds.size()) : 10.0f;
+    request.standAt = newObjectPosition(s);
+    return request;
+}
+
+Result<ImportedCollider> importColliderMesh(const ColliderImportRequest& request) {
+    const fs::path& absolute = request.file;
     // Read as the project will read it, before anything is copied: a broken file changes
     // nothing.
-    const glm::dvec3 groundOrigin = s.scene ? s.scene->groundOrigin : glm::dvec3(0.0);
-    auto imported = core::readColliderMesh(loaded.project, absolute, groundOrigin);
+    auto imported = core::readColliderMesh(request.project, absolute, request.groundOrigin);
     if (!imported)
         return imported.error();
     const core::Bounds bounds = core::meshBounds(imported->mesh);
@@ -85,39 +130,56 @@ Result<void> addMeshCollider(EditorState& s, const fs::path& meshFile) {
                       double(away) / 1000.0, double(std::nextafter(away, 2.0f * away) - away));
         return makeError(absolute.string(), reason);
     }
-    core::ColliderDesc collider;
+    ImportedCollider result;
+    core::ColliderDesc& collider = result.collider;
     collider.shape = core::ColliderShape::Mesh;
-    const std::string stem = absolute.stem().string();
-    collider.name = core::freeName(loaded.project.colliders, stem.empty() ? "collider" : stem);
     // A prop of the scene's scale: its own size when that is between a hundredth and half of
     // the scene (a rock modelled in metres), else a tenth of the scene (a model in centimetres
     // or kilometres), said in the note.
-    const float scene = s.scene ? glm::length(s.scene->bounds.size()) : 10.0f;
-    std::string note;
+    const float scene = request.sceneDiagonalM;
+    std::string scaled;
     if (side > 0.5f * scene || side < 0.01f * scene) {
         collider.scale = 0.1f * scene / side;
-        note = "scaled by " + formatScale(collider.scale) + " to a tenth of the scene";
+        scaled = "scaled by " + formatScale(collider.scale) + " to a tenth of the scene";
     }
     // Its box's centre where a new ball would stand, above the scene's centre.
-    collider.position = newObjectPosition(s) - collider.scale * bounds.centre();
+    collider.position = request.standAt - collider.scale * bounds.centre();
     std::string copied;
-    auto file = meshInProject(loaded.folder, absolute, &copied);
+    auto file = meshInProject(request.folder, absolute, &copied);
     if (!file)
         return file.error();
     collider.file = std::move(*file);
-    core::Project project = loaded.project;
+    for (const std::string& part : {copied, scaled})
+        if (!part.empty())
+            result.note += (result.note.empty() ? "" : "; ") + part;
+    result.mesh = std::move(imported->mesh);
+    return result;
+}
+
+std::string addImportedCollider(EditorState& s, ImportedCollider imported) {
+    core::ColliderDesc& collider = imported.collider;
+    const std::string stem = fs::path(collider.file).stem().string();
+    collider.name = core::freeName(s.doc.project().colliders, stem.empty() ? "collider" : stem);
+    core::Project project = s.doc.project();
     project.colliders.push_back(collider);
     apply(s, EditProject{.after = std::move(project),
                          .effect = EditEffect::Regrow,
                          .label = "add collider " + collider.name});
     s.view.place.selected =
         PlacedObject{PlacedKind::Collider, s.doc.project().colliders.size() - 1};
-    std::string details;
-    for (const std::string& part : {copied, note})
-        if (!part.empty())
-            details += (details.empty() ? "" : "; ") + part;
-    s.transient.message =
-        "added collider " + collider.name + (details.empty() ? "" : " (" + details + ")");
+    s.transient.message = "added collider " + collider.name +
+                          (imported.note.empty() ? "" : " (" + imported.note + ")");
+    return collider.file;
+}
+
+Result<void> addMeshCollider(EditorState& s, const fs::path& meshFile) {
+    auto request = colliderImportRequest(s, meshFile);
+    if (!request)
+        return request.error();
+    auto imported = importColliderMesh(*request);
+    if (!imported)
+        return imported.error();
+    addImportedCollider(s, std::move(*imported));
     return {};
 }
 
@@ -135,7 +197,7 @@ std::vector<fs::path> assetFileSet(const fs::path& file) {
 Result<void> copyAssetFiles(const fs::path& from, const fs::path& to) {
     for (const fs::path& relative : assetFileSet(from)) {
         const fs::path source = from.parent_path() / relative;
-        const fs::path target = to.parent_path() / (relative == from.filename() ? to.filename() : relative);
+        const fs::path target = copiedPart(from, to, relative);
         std::error_code ec;
         if (!fs::exists(source, ec) || fs::exists(target, ec))
             continue;  // a missing part is the loader's to report; a file there is kept

@@ -65,6 +65,33 @@ Result<std::string> meshInProject(const std::filesystem::path& projectFolder,
 // project's folder when it lies elsewhere (meshInProject); sized to the scene when its own size
 // is far from it; its box centred where a new ball would stand; selected; the status line says
 // what was done. A project without a folder yet (never saved) is asked to be saved first.
+// The editor runs it in two halves, the reading and copying on a worker (a prop of tens of
+// megabytes takes seconds to read): colliderImportRequest and addImportedCollider on the
+// window, importColliderMesh between them on the worker. addMeshCollider runs all three.
 Result<void> addMeshCollider(EditorState& state, const std::filesystem::path& meshFile);
+
+// What adding a mesh collider needs of the window's state, copied when the file is chosen.
+struct ColliderImportRequest {
+    std::filesystem::path folder;  // the project's
+    core::Project project;         // whose ground's unit and frame the mesh is read in
+    std::filesystem::path file;    // absolute
+    glm::dvec3 groundOrigin{0.0};
+    float sceneDiagonalM = 10.0f;
+    glm::vec3 standAt{0.0f};  // where a new ball would stand (newObjectPosition)
+};
+// The collider ready to be added (named when it is, among the colliders of that moment), what
+// was done to bring it in, and its mesh as read (the prop's, so the window reads it no more).
+struct ImportedCollider {
+    core::ColliderDesc collider;
+    std::string note;
+    core::MovableSurfaceMesh mesh;
+};
+// An error (naming the file) for a project never saved.
+Result<ColliderImportRequest> colliderImportRequest(const EditorState& state,
+                                                    const std::filesystem::path& meshFile);
+// Reads, checks, places and copies the mesh; touches no window state (a worker runs it).
+Result<ImportedCollider> importColliderMesh(const ColliderImportRequest& request);
+// Adds it to the open project as one undo step, selected; returns the collider's file.
+std::string addImportedCollider(EditorState& state, ImportedCollider imported);
 
 }  // namespace grass::editor

@@ -71,8 +71,7 @@ void choose(EditorState& s, BrowsePurpose purpose, const fs::path& path) {
             break;
         case BrowsePurpose::AddCollider:
             s.transient.meshFolder = path.parent_path();
-            if (auto added = addMeshCollider(s, path); !added)
-                s.transient.message = "cannot add a collider: " + added.error().str();
+            s.addColliderRequested = path.string();
             break;
     }
 }

@@ -14,6 +14,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "app/autosave.h"
@@ -22,6 +23,7 @@
 #include "app/mesh_import.h"
 #include "app/panels.h"
 #include "app/viewport_tools.h"
+#include "app/worker_job.h"
 #include "maps/map_image.h"
 #include "physics/wind.h"
 #include "quality/quality_presets.h"
@@ -267,6 +269,13 @@ TEST(EditorPanels, AMeshColliderIsAddedFromItsFileAndCopiedIntoTheProject) {
     EXPECT_EQ(editor::browseTitle(editor.state.transient.browser->purpose()), "Add mesh collider");
     editor.clickStartingWith("cube.glb", true);
     EXPECT_FALSE(editor.state.transient.browser.has_value());
+    // The browser asks the Editor, which reads and copies the file on a worker and then adds
+    // it (EditorMotion.AMeshColliderAddedIsPackedWithoutGrowingTheField runs that); here the
+    // same three halves run at once.
+    const std::string chosen = std::exchange(editor.state.addColliderRequested, {});
+    EXPECT_EQ(fs::path(chosen).filename(), "cube.glb");
+    EXPECT_TRUE(project.colliders.empty()) << "added on the window's thread";
+    ASSERT_TRUE(editor::addMeshCollider(editor.state, chosen));
     ASSERT_EQ(project.colliders.size(), 1u) << editor.state.transient.message;
     const core::ColliderDesc& cube = project.colliders[0];
     EXPECT_EQ(cube.shape, core::ColliderShape::Mesh);
@@ -295,11 +304,14 @@ TEST(EditorPanels, AMeshColliderIsAddedFromItsFileAndCopiedIntoTheProject) {
     ASSERT_TRUE(props.ok()) << props.error().str();
     EXPECT_EQ(props->size(), 1u);
 
-    // The same file again: another name and another copy, none overwritten.
+    // The same file again: another name, the same copy (not copied twice).
     ASSERT_TRUE(editor::addMeshCollider(editor.state, sourceDir() / "tests/data/gltf/cube.glb"));
     ASSERT_EQ(project.colliders.size(), 2u);
     EXPECT_EQ(project.colliders[1].name, "cube 2");
-    EXPECT_EQ(project.colliders[1].file, "meshes/cube-2/cube.glb");
+    EXPECT_EQ(project.colliders[1].file, "meshes/cube/cube.glb");
+    EXPECT_FALSE(fs::exists(folder.path() / "meshes/cube-2"));
+    EXPECT_NE(editor.state.transient.message.find("uses its copy in"), std::string::npos)
+        << editor.state.transient.message;
     ASSERT_TRUE(editor::undo(editor.state));
     EXPECT_EQ(project.colliders.size(), 1u);
 
@@ -320,6 +332,37 @@ TEST(EditorPanels, AMeshColliderIsAddedFromItsFileAndCopiedIntoTheProject) {
     // A project never saved has no folder to keep the mesh in: saved first.
     editor.state.doc.loaded.folder.clear();
     expectRefused("cube.glb", "save the project first");
+}
+
+// Colliders › add mesh… in the halves the Editor runs: the request taken on the window, the
+// file read and copied on a worker (WorkerJob), the collider added once it is in, named among
+// the colliders of that moment (a cube added meanwhile makes it "cube 2"), with its mesh as read
+// for the prop.
+TEST(EditorPanels, AMeshColliderReadOnAWorkerIsNamedWhenItIsAdded) {
+    const ScratchFolder folder("editor-add-mesh-collider-worker");
+    EditorDriver editor(folder.path());
+    const fs::path cube = sourceDir() / "tests/data/gltf/cube.glb";
+    auto request = editor::colliderImportRequest(editor.state, cube);
+    ASSERT_TRUE(request.ok()) << request.error().str();
+    bool woken = false;
+    editor::WorkerJob<Result<editor::ImportedCollider>> job(
+        [request = *request] { return editor::importColliderMesh(request); },
+        [&woken] { woken = true; });
+    ASSERT_TRUE(editor::addMeshCollider(editor.state, cube));  // meanwhile, on the window
+    auto imported = job.take();
+    EXPECT_TRUE(job.done());
+    EXPECT_TRUE(woken) << "the window is not woken when the mesh is in";
+    ASSERT_TRUE(imported.ok()) << imported.error().str();
+    EXPECT_GT(imported->mesh->n_faces(), 0u);
+    EXPECT_EQ(editor::addImportedCollider(editor.state, std::move(*imported)),
+              "meshes/cube/cube.glb");
+    const auto& colliders = editor.state.doc.project().colliders;
+    ASSERT_EQ(colliders.size(), 2u);
+    EXPECT_EQ(colliders[0].name, "cube");
+    EXPECT_EQ(colliders[1].name, "cube 2");
+    EXPECT_EQ(colliders[1].position, colliders[0].position);
+    ASSERT_TRUE(editor.state.view.place.selected.has_value());
+    EXPECT_EQ(editor.state.view.place.selected->index, 1u);
 }
 
 // Issue 26 item 1: File › New from mesh… asks first about unsaved changes, then asks the Editor

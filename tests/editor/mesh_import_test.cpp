@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "scene/scene.h"
 #include "support/scratch_folder.h"
 #include "support/test_paths.h"
@@ -120,11 +122,25 @@ TEST(MeshImport, AMeshFromElsewhereIsCopiedInWithTheFilesItNames) {
     for (const char* file : {"stone.gltf", "stone.bin", "stone.png"})
         EXPECT_TRUE(fs::exists(project.path() / "meshes/stone" / file)) << file;
     EXPECT_NE(note.find("meshes/stone"), std::string::npos) << note;
-    // The project grows from its copy; a second import of the same name gets its own folder.
+    // The project grows from its copy; the same mesh imported again is named where its copy
+    // is (not copied twice), another mesh of the same name gets a folder of its own, with the
+    // files it names, and the first copy is left as it was.
     EXPECT_TRUE(core::buildScene(*next).ok());
-    auto again = editor::projectWithImportedMesh(*next, sourceDir() / STONE, nullptr);
+    auto again = editor::projectWithImportedMesh(*next, sourceDir() / STONE, &note);
     ASSERT_TRUE(again.ok());
-    EXPECT_EQ(again->project.mesh.file, "meshes/stone-2/stone.gltf");
+    EXPECT_EQ(again->project.mesh.file, "meshes/stone/stone.gltf");
+    EXPECT_EQ(note, "uses its copy in " + (project.path() / "meshes/stone").string());
+    EXPECT_FALSE(fs::exists(project.path() / "meshes/stone-2"));
+    const ScratchFolder elsewhere("import-copy-other");
+    for (const char* file : {"stone.gltf", "stone.bin", "stone.png"})
+        fs::copy_file(sourceDir() / STONE.parent_path() / file, elsewhere.path() / file);
+    std::ofstream(elsewhere.path() / "stone.png", std::ios::app) << "another picture";
+    auto other = editor::projectWithImportedMesh(*next, elsewhere.path() / "stone.gltf", nullptr);
+    ASSERT_TRUE(other.ok()) << other.error().str();
+    EXPECT_EQ(other->project.mesh.file, "meshes/stone-2/stone.gltf");
+    EXPECT_TRUE(fs::exists(project.path() / "meshes/stone-2/stone.png"));
+    EXPECT_NE(fs::file_size(project.path() / "meshes/stone/stone.png"),
+              fs::file_size(project.path() / "meshes/stone-2/stone.png"));
 }
 
 TEST(MeshImport, AMeshInsideTheProjectIsNamedWhereItIsAndKeepsTheUnits) {

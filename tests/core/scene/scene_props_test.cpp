@@ -2,6 +2,8 @@
 // puts its collider at a given time.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "mesh/surface_mesh.h"
 #include "scene/scene.h"
 #include "support/test_paths.h"
@@ -81,6 +83,30 @@ TEST(SceneProps, RemadePropsKeepTheMeshesTheyHave) {
     EXPECT_GT(remade->front().mesh->n_faces(), 0u);
     EXPECT_EQ(remade->back().mesh->n_faces(), rockFaces);
     EXPECT_EQ(remade->back().position, glm::vec3(1.0f, 0.0f, 2.0f));
+}
+
+// A mesh collider added by the editor's add mesh…, whose file was read on a worker: its prop is
+// made from that reading (the file is not read again, here not even there), and two colliders of
+// the file each get the mesh.
+TEST(SceneProps, ANewMeshColliderTakesTheMeshReadAhead) {
+    auto loaded = loadProject(test::sourceDir() / "tests/data/projects/rock");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+    auto props = loadSceneProps(*loaded);
+    ASSERT_TRUE(props.ok()) << props.error().str();
+    const std::size_t rockFaces = props->front().mesh->n_faces();
+    LoadedProject edited = *loaded;
+    edited.folder = test::scratchDir("scene_props_read_ahead");  // no file is there
+    ColliderDesc rock = loaded->project.colliders.front();
+    rock.file = "meshes/rock/rock.glb";
+    edited.project.colliders = {rock, rock};
+    ASSERT_FALSE(remakeSceneProps(edited, {}, {}).ok()) << "its file is missing";
+    std::map<std::string, MovableSurfaceMesh> readAhead;
+    readAhead.emplace(rock.file, props->front().mesh);
+    auto remade = remakeSceneProps(edited, {}, {}, glm::dvec3(0.0), &readAhead);
+    ASSERT_TRUE(remade.ok()) << remade.error().str();
+    ASSERT_EQ(remade->size(), 2u);
+    for (const SceneProp& prop : *remade)
+        EXPECT_EQ(prop.mesh->n_faces(), rockFaces);
 }
 
 }  // namespace
