@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 #include "app/editor_keys.h"
 #include "app/editor.h"
@@ -70,6 +71,10 @@ void Editor::runInput(InputState input, int width, int height) {
     mView = PixelRect{0, 0, width, height};
     bool uiPointer = false, uiKeyboard = false;
     bool pressOnUi = false;  // a press this frame that a panel took (not the viewport's)
+    // Whether the keys typed this frame are the viewport's: no field had the keyboard when the
+    // frame began, no dialog is open, no document is loading (applyEditorKeys waits then).
+    const bool keysForTheViewport = (!mUi || mUi->context().focusedId().value == 0) &&
+                                    !mState.transient.browser && !mState.loading();
     std::vector<LeftButtonStep> leftSteps;
     ui::Rect central;
     float ppp = 1.0f;
@@ -124,6 +129,16 @@ void Editor::runInput(InputState input, int width, int height) {
     bool toolUsed = false;
     bool leftIsTools = mToolDrag || mState.view.toolDragActive;
     bool pressStepped = false;  // a press went to the tools at its own place (a step below)
+    // A tool chosen by a key typed before the frame's first press (g, then a click on a marker,
+    // inside one slow frame) takes that press; the keys are applied again with the rest.
+    if (keysForTheViewport)
+        for (const ButtonEvent& e : input.buttonEvents)
+            if (e.button == 0 && e.down) {
+                applyToolChoiceKeys(mState,
+                                    std::string_view(input.typed)
+                                        .substr(0, std::min(e.typedBefore, input.typed.size())));
+                break;
+            }
     if (mUi) {
         pointer.ctrl = input.modifiers.ctrl;
         pointer.shift = input.modifiers.shift;

@@ -19,6 +19,9 @@ struct ButtonEvent {
     bool down = false;
     ui::Vec2 pos{0.0f};
     double timeS = 0.0;
+    // How much of the frame's typed text came before it (InputState::typed): a key and a click
+    // inside one slow frame keep their order.
+    std::size_t typedBefore = 0;
 };
 
 // More events than this in one frame (a stuck button, a flood) are folded into the last pass.

@@ -16,8 +16,16 @@ struct Player {
     std::vector<ScriptFrame> frames;
     std::string phase;
 
-    // One frame with `input`; per-frame fields start cleared again.
+    // Frames still to be merged into the next (`batch N`).
+    int merging = 0;
+
+    // One frame with `input`; per-frame fields start cleared again. While merging, the input
+    // stays for the next frame instead (all of it arrives in one, as at a low frame rate).
     void emit(const std::string& screenshot = {}) {
+        if (merging > 0 && screenshot.empty()) {
+            --merging;
+            return;
+        }
         frames.push_back(ScriptFrame{now, screenshot, 0.0, phase});
         now.dragDx = now.dragDy = now.scrollSteps = 0.0;
         now.leftPressed = now.escapePressed = now.frameRequested = false;
@@ -167,8 +175,8 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
             p.moveTo(x, y);
             const ui::Vec2 at{float(x), float(y)};
             for (int i = 0; i < (command == "click" ? 1 : 2); ++i) {
-                p.now.buttonEvents.push_back({0, true, at, -1.0});
-                p.now.buttonEvents.push_back({0, false, at, -1.0});
+                p.now.buttonEvents.push_back({0, true, at, -1.0, p.now.typed.size()});
+                p.now.buttonEvents.push_back({0, false, at, -1.0, p.now.typed.size()});
             }
             p.now.leftPressed = true;
             p.emit();
@@ -199,17 +207,24 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
                 steps > MAX_WAIT_FRAMES)
                 return fail("stroke: expected X0 Y0 X1 Y1 N (N frames, at least 1)");
             p.moveTo(x0, y0);
-            p.now.buttonEvents.push_back({0, true, {float(x0), float(y0)}, -1.0});
+            p.now.buttonEvents.push_back(
+                {0, true, {float(x0), float(y0)}, -1.0, p.now.typed.size()});
             p.now.leftDown = p.now.leftPressed = true;
             for (int i = 1; i <= steps; ++i) {
                 const double f = double(i) / steps;
                 p.moveTo(x0 + f * (x1 - x0), y0 + f * (y1 - y0));
                 if (i == steps) {
-                    p.now.buttonEvents.push_back({0, false, {float(x1), float(y1)}, -1.0});
+                    p.now.buttonEvents.push_back(
+                        {0, false, {float(x1), float(y1)}, -1.0, p.now.typed.size()});
                     p.now.leftDown = false;
                 }
                 p.emit();
             }
+        } else if (command == "batch") {
+            int count = 0;
+            if (!(in >> count) || count < 2 || count > MAX_WAIT_FRAMES)
+                return fail("batch: expected N, the frames to merge into one (at least 2)");
+            p.merging = count - 1;
         } else if (command == "hold") {
             std::string what;
             in >> what;

@@ -13,6 +13,8 @@
 //                            the first frame's motion, the release with the last's (N = 1: a
 //                            whole flick inside one frame)
 //   click X Y / doubleclick X Y   one or two left clicks inside one frame (as at a low frame rate)
+//   batch N                  the input of the next N frames arrives in one frame (a key and a
+//                            click quicker than a slow frame: batch 2, key g, click X Y)
 //   hold ctrl|shift|none     modifiers held from now on (hold ctrl+shift for both)
 //   key [ctrl+][shift+]NAME  one key press: a letter, digit, [ ], enter, escape, tab, f
 //   type TEXT                typed text (the rest of the line)

@@ -375,20 +375,44 @@ bool runViewportTool(EditorState& state, const core::OrbitCamera& camera,
     return false;
 }
 
-void applyToolKeys(EditorState& state, std::string_view typed) {
+void applyToolChoiceKeys(EditorState& state, std::string_view typed) {
     for (const char c : typed) {
-        core::BrushSettings& brush = state.view.paint.brush;
         switch (c) {
-        case '[': brush.radiusM = std::max(brush.radiusM / 1.25f, 1e-4f); state.view.paint.radiusChosen = true; break;
-        case ']': brush.radiusM = std::min(brush.radiusM * 1.25f, 1e4f); state.view.paint.radiusChosen = true; break;
-        case 'b': state.view.tool = ViewportTool::Paint; break;
-        case 'g': state.view.tool = ViewportTool::Place; break;
-        case 'c': state.view.tool = ViewportTool::Camera; break;
-        case 'w': state.view.place.mode = core::GizmoMode::Translate; break;
-        case 'e': state.view.place.mode = core::GizmoMode::Rotate; break;
-        case 'r': state.view.place.mode = core::GizmoMode::Scale; break;
-        default: break;
+            case 'b':
+                state.view.tool = ViewportTool::Paint;
+                break;
+            case 'g':
+                state.view.tool = ViewportTool::Place;
+                break;
+            case 'c':
+                state.view.tool = ViewportTool::Camera;
+                break;
+            case 'w':
+                state.view.place.mode = core::GizmoMode::Translate;
+                break;
+            case 'e':
+                state.view.place.mode = core::GizmoMode::Rotate;
+                break;
+            case 'r':
+                state.view.place.mode = core::GizmoMode::Scale;
+                break;
+            default:
+                break;
         }
+    }
+}
+
+void applyToolKeys(EditorState& state, std::string_view typed) {
+    applyToolChoiceKeys(state, typed);
+    core::BrushSettings& brush = state.view.paint.brush;
+    for (const char c : typed) {
+        if (c == '[')
+            brush.radiusM = std::max(brush.radiusM / 1.25f, 1e-4f);
+        else if (c == ']')
+            brush.radiusM = std::min(brush.radiusM * 1.25f, 1e4f);
+        else
+            continue;
+        state.view.paint.radiusChosen = true;
     }
 }
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# A flick by real X input at about one frame a second: the gizmo (key g), a click on the ball's
-# marker, then its up arrow pressed, dragged 50 px down and released by xdotool within a few
+# A flick by real X input at about one frame a second: the gizmo (key g) and a click on the
+# ball's marker within milliseconds (one frame: the click must go to the gizmo), then its up arrow pressed, dragged 50 px down and released by xdotool within a few
 # milliseconds, all inside one frame, as a quick hand does on a software renderer; then Ctrl+S.
 # The saved ball must have gone down as far as the same drag spread over frames takes it
 # (tests/gl/slow_frame_input_gl_test.cpp: 0.8 m → 0.498 m). Before 2026-12-07 the viewport read
@@ -25,8 +25,7 @@ cat > "$work/p/project.json" <<'JSON'
 JSON
 start_editor
 
-act key g                                     # the gizmo
-act mousemove 615 189 click 1                 # the ball's marker: selected
+act key g mousemove 615 189 click 1           # the gizmo and a click on the ball's marker, in one frame
 act mousemove 615 150 mousedown 1 mousemove 615 175 mousemove 615 200 mouseup 1   # the flick
 act key ctrl+s
 sleep 2

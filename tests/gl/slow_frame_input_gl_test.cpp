@@ -6,7 +6,8 @@
 // (`drag`, a press and a release in frames of their own). Before, the camera and the viewport's
 // tools read only where the pointer was when the frame ended: a flick did not turn the camera
 // at all, a flick of the brush painted one dab where it was released, a gizmo flick grabbed
-// nothing at its press, and every drag lost the stretch that came with its release.
+// nothing at its press, and every drag lost the stretch that came with its release. Likewise a
+// key typed just before a click in the same frame chooses the tool of that click.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,6 +90,18 @@ TEST(EditorSlowFrames, AGizmoDragMovesTheBallAsFarWhateverFramesItsEventsCameIn)
         EXPECT_NEAR(quick.y, slow.y, 1e-4f) << frames << " frame(s)";
         EXPECT_NEAR(quick.z, slow.z, 1e-4f) << frames << " frame(s)";
     }
+}
+
+// A tool key and a click quicker than a frame (g, then a click on the ball's marker): the click
+// goes to the tool the key chose. Before, the keys of a frame were applied after its clicks, so
+// the camera took the click, nothing was selected and the drag after it orbited instead.
+TEST(EditorSlowFrames, AToolKeyTypedJustBeforeAClickChoosesTheToolOfThatClick) {
+    const auto colliders = savedColliders(
+        runOnBall("slow_key_then_click", std::string("wait 2\nbatch 2\nkey g\nclick 615 189\n"
+                                                     "wait 2\ndrag ") +
+                                             ARROW_DOWN + " 6\n" + SAVE));
+    ASSERT_EQ(colliders.size(), 1u);
+    EXPECT_LT(colliders[0].position.y, 0.7f) << "the click did not select the ball for the gizmo";
 }
 
 TEST(EditorSlowFrames, AFlickInsideOneFrameTurnsTheCameraAsASlowDragDoes) {
