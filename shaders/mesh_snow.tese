@@ -35,8 +35,14 @@ void main() {
     vSnowNoise = snowNoiseAt(posWorld);
     vSnowDrift = snowDriftAt(posWorld);
 #ifdef GRASS_SNOW_EXPOSURE_PER_VERTEX
-    vSnowExposure = exposureCoefficient(posWorld, normal, uSnowSamples, uSnowRadiusTexels);
+    // The coverage's exposure and the displacement's, over the same samples at once.
+    vec2 Fe = exposureCoefficients(posWorld, normal, uSnowSamples,
+                                   vec2(uSnowRadiusTexels, uSnowBoundaryRadiusTexels));
+    vSnowExposure = Fe.x;
+    vec3 displacement =
+        snowDisplacementFromExposure(snowBoundaryExposureOf(Fe.y), vSnowNoise, vSnowDrift);
+#else
+    vec3 displacement = snowDisplacement(posWorld, normal, vSnowNoise, vSnowDrift);
 #endif
-    gl_Position = uViewProj *
-                  vec4(posWorld + snowDisplacement(posWorld, normal, vSnowNoise, vSnowDrift), 1.0);
+    gl_Position = uViewProj * vec4(posWorld + displacement, 1.0);
 }

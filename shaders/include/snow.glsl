@@ -110,36 +110,85 @@ float snowStoredDepth(int ix, int iy) {
     return texelFetch(uSnowDepth, ivec2(ix, iy), 0).r * uSnowDepthRangeM;
 }
 
+// The jittered disc of Fe's samples about a point (exposureCoefficient): its centre on the depth
+// map, the point's depth, the slope term of the bias, and the disc's rotation; one sample's
+// direction and share of the radius (snowDiscSample); whether the surface stored where a
+// sample at `radiusTexels` lands leaves the point open to the sky (snowSampleExposed).
+struct SnowDisc {
+    vec3 c;
+    vec2 centre;
+    uint ix, iy;
+    float slope, texelM, n, rotation;
+};
+
+SnowDisc snowDiscAt(vec3 posWorld, vec3 normal, int samples) {
+    SnowDisc d;
+    d.c = snowMapCoords(posWorld);
+    float res = float(uSnowResolution);
+    d.centre = vec2(d.c.x * res, d.c.y * res);
+    d.ix = uint(snowTexelIndex(d.centre.x));
+    d.iy = uint(snowTexelIndex(d.centre.y));
+    float cosPhi = dot(normalize(normal), -uSnowForward);
+    float sinPhi = sqrt(max(0.0, 1.0 - cosPhi * cosPhi));
+    d.slope = sinPhi < SNOW_MAX_SLOPE_BIAS * cosPhi ? sinPhi / cosPhi : SNOW_MAX_SLOPE_BIAS;
+    d.texelM = uSnowSizeM / res;
+    d.n = float(samples);
+    d.rotation = 6.2831853 * hashToUnit(pcg3d(uvec3(d.ix, d.iy, 0u)).x);
+    return d;
+}
+
+void snowDiscSample(SnowDisc d, int k, out vec2 direction, out float share) {
+    float twoPi = 6.2831853;
+    uvec3 h = pcg3d(uvec3(d.ix, d.iy, uint(k) + 1u));
+    float fk = float(k);
+    share = sqrt((fk + hashToUnit(h.x)) / d.n);
+    float angle = d.rotation + fk * SNOW_GOLDEN_ANGLE + (hashToUnit(h.y) - 0.5) * (twoPi / d.n);
+    direction = vec2(cos(angle), sin(angle));
+}
+
+bool snowSampleExposed(SnowDisc d, vec2 direction, float share, float radiusTexels) {
+    float r = radiusTexels * share;
+    vec2 s = d.centre + r * direction;
+    float stored = snowStoredDepth(snowTexelIndex(s.x), snowTexelIndex(s.y));
+    float bias = uSnowBiasM + (r + SNOW_HALF_TEXEL_DIAGONAL) * d.texelM * d.slope;
+    return stored >= d.c.z - bias;
+}
+
 // Fe (paper eq. 1): the share of jittered samples around the point where nothing stands
 // between the point and the sky (core::exposureCoefficient).
 float exposureCoefficient(vec3 posWorld, vec3 normal, int samples, float radiusTexels) {
-    vec3 c = snowMapCoords(posWorld);
-    float res = float(uSnowResolution);
-    vec2 centre = vec2(c.x * res, c.y * res);
-    uint ix = uint(snowTexelIndex(centre.x));
-    uint iy = uint(snowTexelIndex(centre.y));
-    float cosPhi = dot(normalize(normal), -uSnowForward);
-    float sinPhi = sqrt(max(0.0, 1.0 - cosPhi * cosPhi));
-    float slope = sinPhi < SNOW_MAX_SLOPE_BIAS * cosPhi ? sinPhi / cosPhi : SNOW_MAX_SLOPE_BIAS;
-    float texelM = uSnowSizeM / res;
-    float twoPi = 6.2831853;
-    float n = float(samples);
-    float rotation = twoPi * hashToUnit(pcg3d(uvec3(ix, iy, 0u)).x);
+    SnowDisc d = snowDiscAt(posWorld, normal, samples);
     int exposed = 0;
+    for (int k = 0; k < 32; ++k) {  // constant bound: llvmpipe mis-compiles variable loop bounds
+        if (k >= samples)
+            break;
+        vec2 direction;
+        float share;
+        snowDiscSample(d, k, direction, share);
+        if (snowSampleExposed(d, direction, share, radiusTexels))
+            ++exposed;
+    }
+    return float(exposed) / d.n;
+}
+
+// Fe over two discs of the same samples at once (the coverage's and the displacement's
+// boundary disc, radii x and y): each what exposureCoefficient gives, with the samples' hashes
+// and directions worked out once (mesh_snow.tese, per tessellated vertex).
+vec2 exposureCoefficients(vec3 posWorld, vec3 normal, int samples, vec2 radiiTexels) {
+    SnowDisc d = snowDiscAt(posWorld, normal, samples);
+    ivec2 exposed = ivec2(0);
     for (int k = 0; k < 32; ++k) {  // constant bound, as above
         if (k >= samples)
             break;
-        uvec3 h = pcg3d(uvec3(ix, iy, uint(k) + 1u));
-        float fk = float(k);
-        float r = radiusTexels * sqrt((fk + hashToUnit(h.x)) / n);
-        float angle = rotation + fk * SNOW_GOLDEN_ANGLE + (hashToUnit(h.y) - 0.5) * (twoPi / n);
-        vec2 s = centre + r * vec2(cos(angle), sin(angle));
-        float stored = snowStoredDepth(snowTexelIndex(s.x), snowTexelIndex(s.y));
-        float bias = uSnowBiasM + (r + SNOW_HALF_TEXEL_DIAGONAL) * texelM * slope;
-        if (stored >= c.z - bias)
-            ++exposed;
+        vec2 direction;
+        float share;
+        snowDiscSample(d, k, direction, share);
+        if (snowSampleExposed(d, direction, share, radiiTexels.x))
+            ++exposed.x;
+        if (snowSampleExposed(d, direction, share, radiiTexels.y))
+            ++exposed.y;
     }
-    return float(exposed) / n;
+    return vec2(exposed) / d.n;
 }
 
 // The world position of the surface texel (ix, iy) holds at `depth` (core: texelWorld).
@@ -220,21 +269,32 @@ bool snowLies() {
     return uSnowEnabled != 0 && uSnowAmountM > 0.0;
 }
 
-// The smooth boundary of the displacement: exposure over the falloff disc, smoothstepped.
+// The smooth boundary of the displacement: exposure over the falloff disc, smoothstepped;
+// from that exposure when the caller has it already (exposureCoefficients' y).
+float snowBoundaryExposureOf(float boundaryDiscFe) {
+    return smoothstep(0.0, 1.0, boundaryDiscFe);
+}
+
 float snowBoundaryExposure(vec3 posWorld, vec3 normal) {
-    return smoothstep(0.0, 1.0,
-                      exposureCoefficient(posWorld, normal, uSnowSamples, uSnowBoundaryRadiusTexels));
+    return snowBoundaryExposureOf(
+        exposureCoefficient(posWorld, normal, uSnowSamples, uSnowBoundaryRadiusTexels));
 }
 
 // Vn = V + As·Fe·D·Zn·up (paper eq. 5 raised against the fall, not along N: core::
-// snowDisplacement says why), Zn = 0.5 + 0.5·noise ≥ 0; `noise` is snowNoiseAt(posWorld).
+// snowDisplacement says why), Zn = 0.5 + 0.5·noise ≥ 0; `noise` is snowNoiseAt(posWorld),
+// `FeBoundary` snowBoundaryExposure there (for a caller that has it: mesh_snow.tese).
+vec3 snowDisplacementFromExposure(float FeBoundary, float noise, float drift) {
+    if (!snowLies())
+        return vec3(0.0);
+    float Zn = 0.5 + 0.5 * noise;
+    return uSnowAmountM * (FeBoundary * drift) * Zn * uSnowUp;
+}
+
 // `drift` is snowDriftAt(posWorld), for a caller that needs it anyway (mesh_snow.tese).
 vec3 snowDisplacement(vec3 posWorld, vec3 normal, float noise, float drift) {
     if (!snowLies())
         return vec3(0.0);
-    float Zn = 0.5 + 0.5 * noise;
-    float Fe = snowBoundaryExposure(posWorld, normal);
-    return uSnowAmountM * (Fe * drift) * Zn * uSnowUp;
+    return snowDisplacementFromExposure(snowBoundaryExposure(posWorld, normal), noise, drift);
 }
 
 vec3 snowDisplacement(vec3 posWorld, vec3 normal, float noise) {
