@@ -45,6 +45,25 @@ struct LeftButtonStep {
     ui::Rect central;
 };
 
+// Where each change of the left button the UI passes saw (input_passes.h uiPasses: a change,
+// not a repeat) falls in the frame's left-button path: InputState::leftPath's index. Empty when
+// they do not match the steps (a flood of events folded into the last pass).
+std::vector<std::size_t> leftChangesInPath(const InputState& input, std::size_t steps) {
+    std::vector<std::size_t> at;
+    bool down = input.leftDown;
+    for (auto e = input.buttonEvents.rbegin(); e != input.buttonEvents.rend(); ++e)
+        if (e->button == 0)
+            down = !e->down;  // as the left button was before the frame's first event
+    for (const ButtonEvent& e : input.buttonEvents)
+        if (e.button == 0 && e.down != down) {
+            down = e.down;
+            at.push_back(std::min(e.pathBefore, input.leftPath.size()));
+        }
+    if (at.size() != steps)
+        at.clear();
+    return at;
+}
+
 // The viewport's pointer at `at` (UI points) for a viewport at `central`.
 void placePointer(ViewportPointer& pointer, ui::Vec2 at, ui::Rect central, float ppp) {
     pointer.pixel = glm::vec2(at.x - central.min.x, at.y - central.min.y) * ppp;
@@ -152,9 +171,23 @@ void Editor::runInput(InputState input, int width, int height) {
             leftIsTools = leftIsTools || mToolDrag || mState.view.toolDragActive;
             return used;
         };
-        for (const LeftButtonStep& step : leftSteps) {
+        // The left-button path in UI points, and the share of it each step takes: the points
+        // before its event, after the last step's.
+        const float toPoints = EditorUi::pointsPerScreenUnit(*mWindow);
+        const std::vector<std::size_t> pathAt = leftChangesInPath(input, leftSteps.size());
+        std::size_t pathTaken = 0;
+        const auto takePath = [&](ViewportPointer& p, std::size_t until, ui::Rect area) {
+            for (; pathTaken < until; ++pathTaken) {
+                const ui::Vec2 at = input.leftPath[pathTaken] * toPoints;
+                p.pathBefore.push_back(glm::vec2(at.x - area.min.x, at.y - area.min.y) * ppp);
+            }
+        };
+        for (std::size_t i = 0; i < leftSteps.size(); ++i) {
+            const LeftButtonStep& step = leftSteps[i];
             ViewportPointer p = pointer;
             placePointer(p, step.at, step.central, ppp);
+            if (!pathAt.empty())
+                takePath(p, pathAt[i], step.central);
             p.inside = input.cursorInside && step.central.contains(step.at) && !step.uiTook &&
                        !mCameraDrag;
             p.down = step.down;
@@ -167,6 +200,8 @@ void Editor::runInput(InputState input, int width, int height) {
         pointer.down = input.leftDown;
         pointer.pressed = input.leftPressed && !pressOnUi && !pressStepped;
         pointer.released = !input.leftDown;
+        if (pathAt.size() == leftSteps.size())
+            takePath(pointer, input.leftPath.size(), central);
         toolUsed = runTool(pointer);
         if (leftIsTools)
             leftHeld = false;

@@ -77,20 +77,27 @@ Result<std::unique_ptr<EditorUi>> EditorUi::create() {
     return self;
 }
 
-std::vector<ui::Input> EditorUi::passes(Window& window, const InputState& input, double timeS) {
+float EditorUi::pointsPerScreenUnit(Window& window) {
     int fbW = 0, fbH = 0, winW = 0, winH = 0;
     window.framebufferSize(&fbW, &fbH);
     window.windowSize(&winW, &winH);
-    // Points = pixels / content scale; cursor positions come in screen coordinates, which are
-    // pixels on X11 and points on macOS/Wayland, hence the framebuffer/window ratio.
-    const float ppp = window.contentScale();
     const float toPixels = winW > 0 ? float(fbW) / float(winW) : 1.0f;
+    return toPixels / window.contentScale();
+}
+
+std::vector<ui::Input> EditorUi::passes(Window& window, const InputState& input, double timeS) {
+    int fbW = 0, fbH = 0;
+    window.framebufferSize(&fbW, &fbH);
+    // Points = pixels / content scale; cursor positions come in screen coordinates
+    // (pointsPerScreenUnit).
+    const float ppp = window.contentScale();
+    const float toPoints = pointsPerScreenUnit(window);
     ui::Input in;
     in.pixelsPerPoint = ppp;
     in.screenRect = {{0.0f, 0.0f}, {float(fbW) / ppp, float(fbH) / ppp}};
     in.timeS = timeS;
     in.hasPointer = input.cursorInside;
-    in.pointerPos = ui::Vec2(float(input.cursorX), float(input.cursorY)) * toPixels / ppp;
+    in.pointerPos = ui::Vec2(float(input.cursorX), float(input.cursorY)) * toPoints;
     in.buttonDown = {input.leftDown, input.rightDown, input.middleDown};
     // One wheel step scrolls about three lines of 14 pt text, as most toolkits do.
     in.scrollDelta = ui::Vec2(float(input.scrollX), float(input.scrollSteps)) * 50.0f;
@@ -102,7 +109,7 @@ std::vector<ui::Input> EditorUi::passes(Window& window, const InputState& input,
             in.clipboardText = window.clipboard();
     std::vector<ButtonEvent> events = input.buttonEvents;
     for (ButtonEvent& e : events) {
-        e.pos = e.pos * toPixels / ppp;
+        e.pos = e.pos * toPoints;
         if (e.timeS < 0.0)
             e.timeS = timeS;  // a script's event: it happens now
     }

@@ -42,6 +42,9 @@ public:
     // final state with its keys, text and wheel. The clipboard is read from the OS only when a
     // paste key arrives (reading it is an X round trip).
     std::vector<ui::Input> passes(Window& window, const InputState& input, double timeS);
+    // Points per unit of the window's screen coordinates (its cursor positions): pixels on X11,
+    // points on macOS and Wayland, so the framebuffer/window ratio over the content scale.
+    static float pointsPerScreenUnit(Window& window);
     // Feeds one pass to the context (the fonts follow its pixels per point).
     void beginFrame(ui::Input pass);
     // Ends the frame, hands copied text to the OS clipboard and tessellates the shapes.

@@ -22,7 +22,13 @@ struct ButtonEvent {
     // How much of the frame's typed text came before it (InputState::typed): a key and a click
     // inside one slow frame keep their order.
     std::size_t typedBefore = 0;
+    // How many of the frame's InputState::leftPath points came before it.
+    std::size_t pathBefore = 0;
 };
+
+// A frame's left-button path keeps at most this many points (GLFW reports a motion event per
+// pointer move, ~100–1000 a second): a frame stalled for seconds keeps the start of the path.
+inline constexpr std::size_t MAX_LEFT_PATH_POINTS = 4096;
 
 // More events than this in one frame (a stuck button, a flood) are folded into the last pass.
 inline constexpr std::size_t MAX_UI_PASSES = 16;

@@ -32,6 +32,7 @@ struct Player {
         now.typed.clear();
         now.keys.clear();
         now.buttonEvents.clear();
+        now.leftPath.clear();
         now.dropped.clear();
         now.toggledCullTest = 0;
         now.nextTechnique = now.toggleLighting = false;
@@ -41,8 +42,35 @@ struct Player {
             now.dragDx += x - now.cursorX;
             now.dragDy += y - now.cursorY;
         }
+        if (now.leftDown)
+            now.leftPath.emplace_back(float(x), float(y));
         now.cursorX = x;
         now.cursorY = y;
+    }
+    // A left drag through `points` as the window delivers it at a low frame rate: the press at
+    // the first point, the moves to the others spread over `frameCount` frames, the release at the
+    // last with the last frame's moves (each button change an event at its place, the moves
+    // the pointer's path); one frame: a whole flick.
+    void slowStroke(const std::vector<ui::Vec2>& points, int frameCount) {
+        moveTo(points[0].x, points[0].y);
+        now.buttonEvents.push_back(
+            {0, true, points[0], -1.0, now.typed.size(), now.leftPath.size()});
+        now.leftDown = now.leftPressed = true;
+        const std::size_t moves = points.size() - 1;
+        const auto frameOf = [&](std::size_t move) {
+            return (move - 1) * std::size_t(frameCount) / moves;
+        };
+        for (std::size_t i = 1; i <= moves; ++i) {
+            moveTo(points[i].x, points[i].y);
+            if (i == moves) {
+                now.buttonEvents.push_back(
+                    {0, false, points[i], -1.0, now.typed.size(), now.leftPath.size()});
+                now.leftDown = false;
+            }
+            // The frame ends after the last move that falls into it.
+            if (i == moves || frameOf(i + 1) != frameOf(i))
+                emit();
+        }
     }
     bool* button(const std::string& name) {
         if (name.empty() || name == "left")
@@ -175,8 +203,10 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
             p.moveTo(x, y);
             const ui::Vec2 at{float(x), float(y)};
             for (int i = 0; i < (command == "click" ? 1 : 2); ++i) {
-                p.now.buttonEvents.push_back({0, true, at, -1.0, p.now.typed.size()});
-                p.now.buttonEvents.push_back({0, false, at, -1.0, p.now.typed.size()});
+                p.now.buttonEvents.push_back(
+                    {0, true, at, -1.0, p.now.typed.size(), p.now.leftPath.size()});
+                p.now.buttonEvents.push_back(
+                    {0, false, at, -1.0, p.now.typed.size(), p.now.leftPath.size()});
             }
             p.now.leftPressed = true;
             p.emit();
@@ -198,28 +228,28 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
             p.now.leftDown = false;
             p.emit();
         } else if (command == "stroke") {
-            // A left drag as the window delivers it at a low frame rate: the press and the first
-            // stretch of motion in the first frame, the last stretch and the release in the last
-            // (each change an event at its place); N = 1: a whole flick inside one frame.
             double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
             int steps = 0;
             if (!(in >> x0 >> y0 >> x1 >> y1 >> steps) || !finite({x0, y0, x1, y1}) || steps < 1 ||
                 steps > MAX_WAIT_FRAMES)
                 return fail("stroke: expected X0 Y0 X1 Y1 N (N frames, at least 1)");
-            p.moveTo(x0, y0);
-            p.now.buttonEvents.push_back(
-                {0, true, {float(x0), float(y0)}, -1.0, p.now.typed.size()});
-            p.now.leftDown = p.now.leftPressed = true;
+            std::vector<ui::Vec2> points{{float(x0), float(y0)}};
             for (int i = 1; i <= steps; ++i) {
                 const double f = double(i) / steps;
-                p.moveTo(x0 + f * (x1 - x0), y0 + f * (y1 - y0));
-                if (i == steps) {
-                    p.now.buttonEvents.push_back(
-                        {0, false, {float(x1), float(y1)}, -1.0, p.now.typed.size()});
-                    p.now.leftDown = false;
-                }
-                p.emit();
+                points.emplace_back(float(x0 + f * (x1 - x0)), float(y0 + f * (y1 - y0)));
             }
+            p.slowStroke(points, steps);
+        } else if (command == "strokepath") {
+            int steps = 0;
+            std::vector<ui::Vec2> points;
+            double x = 0, y = 0;
+            in >> steps;
+            while (in >> x >> y && finite({x, y}))
+                points.emplace_back(float(x), float(y));
+            if (steps < 1 || steps > MAX_WAIT_FRAMES || points.size() < 2 ||
+                std::size_t(steps) > points.size() - 1)
+                return fail("strokepath: expected N X0 Y0 X1 Y1 ... (N frames, 1 to the moves)");
+            p.slowStroke(points, steps);
         } else if (command == "batch") {
             int count = 0;
             if (!(in >> count) || count < 2 || count > MAX_WAIT_FRAMES)

@@ -12,6 +12,8 @@
 //   stroke X0 Y0 X1 Y1 N     the same drag as a slow window delivers it: the press comes with
 //                            the first frame's motion, the release with the last's (N = 1: a
 //                            whole flick inside one frame)
+//   strokepath N X0 Y0 X1 Y1 ...   the same through every point, the moves spread over N frames
+//                            (N = 1: a curved flick inside one frame)
 //   click X Y / doubleclick X Y   one or two left clicks inside one frame (as at a low frame rate)
 //   batch N                  the input of the next N frames arrives in one frame (a key and a
 //                            click quicker than a slow frame: batch 2, key g, click X Y)

@@ -57,6 +57,20 @@ bool runPaint(EditorState& s, const core::OrbitCamera& camera, const ViewportPoi
     const bool stroking = painter.active();
     if (!stroking && !(p.pressed && p.inside))
         return false;
+    // The stroke goes where the pointer went since the last frame, not straight to where it is
+    // (at 1–3 frames a second a curve drawn within a frame would be a chord); the dabs are laid
+    // now and grow with this frame's.
+    if (stroking)
+        for (const glm::vec2 pixel : p.pathBefore) {
+            ViewportPointer along = p;
+            along.pixel = pixel;
+            const auto hit = pickSurface(*s.tools, camera, along);
+            if (!hit) {
+                endStroke(s);  // off the mesh, as below
+                return true;
+            }
+            painter.addHits(std::span<const glm::vec3>(&hit->posWorld, 1));
+        }
     if (stroking && (!p.down || p.released)) {
         // The stroke reaches where the button came up: at 1–3 frames a second the last frame
         // saw the pointer a long way before it (a hit where the last one was paints nothing).

@@ -8,6 +8,7 @@
 #include <future>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -36,6 +37,9 @@ struct ViewportPointer {
     bool ctrl = false;
     bool shift = false;
     float pressure = 1.0f;
+    // Where the pointer went on its way to `pixel` since the tool last saw it, the button held
+    // (viewport pixels, in order): a brush stroke follows it however few frames come.
+    std::vector<glm::vec2> pathBefore;
 };
 
 struct PaintToolSettings {

@@ -30,6 +30,8 @@ struct WindowCallbacks {
             input.dragDx += x - input.cursorX;
             input.dragDy += y - input.cursorY;
         }
+        if (input.leftDown && input.leftPath.size() < MAX_LEFT_PATH_POINTS)
+            input.leftPath.emplace_back(float(x), float(y));
         input.cursorX = x;
         input.cursorY = y;
     }
@@ -64,9 +66,9 @@ struct WindowCallbacks {
                              : button == GLFW_MOUSE_BUTTON_MIDDLE ? 2
                                                                   : -1;
         if (uiButton >= 0)
-            input.buttonEvents.push_back({uiButton, down,
-                                          ui::Vec2(float(input.cursorX), float(input.cursorY)),
-                                          self(w)->nowS(), input.typed.size()});
+            input.buttonEvents.push_back(
+                {uiButton, down, ui::Vec2(float(input.cursorX), float(input.cursorY)),
+                 self(w)->nowS(), input.typed.size(), input.leftPath.size()});
         input.shiftDown = (mods & GLFW_MOD_SHIFT) != 0;
         input.modifiers = uiModifiers(mods);
     }
@@ -232,6 +234,7 @@ InputState Window::pollInput() {
     mInput.leftPressed = mInput.escapePressed = false;
     mInput.typed.clear();
     mInput.buttonEvents.clear();
+    mInput.leftPath.clear();
     mInput.keys.clear();
     mInput.dropped.clear();
     mInput.frameRequested = false;

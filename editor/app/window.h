@@ -32,6 +32,9 @@ struct InputState {
     // Every button change this frame, in order, at the window's screen coordinates and on
     // Window::nowS's clock (EditorUi turns them into UI passes, input_passes.h).
     std::vector<ButtonEvent> buttonEvents;
+    // Where the pointer went while the left button was held this frame, in order (screen
+    // coordinates): a brush stroke follows it however few frames it spans.
+    std::vector<ui::Vec2> leftPath;
     bool frameRequested = false;  // F key: frame the selected object, else the whole scene
     // Keys 1–4: toggle the orientation, frustum, distance, occlusion cull tests; T: next grass
     // technique (blades, billboards, hybrid); L: grass lighting on/off.
