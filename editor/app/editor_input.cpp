@@ -36,33 +36,17 @@ void moveCamera(InputState input, bool drag, bool wheel, int viewportHeight,
     camera.farPlane = camera.distance * 20.0f + 100.0f;
 }
 
-// A change of the left button during the frame, for the viewport's tools: where it happened (UI
-// points), whether the UI took it, and the viewport's rect in that pass.
+// A change of the left button during the frame, for the viewport's tools: the event (its place
+// in UI points, how much of the frame's typed text and left-button path came before it),
+// whether the UI took it, and the viewport's rect in that pass.
 struct LeftButtonStep {
     ui::Vec2 at;
     bool down = false;
+    std::size_t typedBefore = 0;
+    std::size_t pathBefore = 0;
     bool uiTook = false;
     ui::Rect central;
 };
-
-// Where each change of the left button the UI passes saw (input_passes.h uiPasses: a change,
-// not a repeat) falls in the frame's left-button path: InputState::leftPath's index. Empty when
-// they do not match the steps (a flood of events folded into the last pass).
-std::vector<std::size_t> leftChangesInPath(const InputState& input, std::size_t steps) {
-    std::vector<std::size_t> at;
-    bool down = input.leftDown;
-    for (auto e = input.buttonEvents.rbegin(); e != input.buttonEvents.rend(); ++e)
-        if (e->button == 0)
-            down = !e->down;  // as the left button was before the frame's first event
-    for (const ButtonEvent& e : input.buttonEvents)
-        if (e.button == 0 && e.down != down) {
-            down = e.down;
-            at.push_back(std::min(e.pathBefore, input.leftPath.size()));
-        }
-    if (at.size() != steps)
-        at.clear();
-    return at;
-}
 
 // The viewport's pointer at `at` (UI points) for a viewport at `central`.
 void placePointer(ViewportPointer& pointer, ui::Vec2 at, ui::Rect central, float ppp) {
@@ -101,17 +85,21 @@ void Editor::runInput(InputState input, int width, int height) {
     mState.view.camera = mCamera;
     if (mUi) {
         // One UI pass per button event (input_passes.h), the last one drawn.
-        std::vector<ui::Input> passes = mUi->passes(*mWindow, input, mWindow->nowS());
+        std::vector<std::size_t> sources;
+        std::vector<ui::Input> passes = mUi->passes(*mWindow, input, mWindow->nowS(), &sources);
         for (std::size_t i = 0; i + 1 < passes.size(); ++i) {
-            const bool wasDown = mUi->context().buttonDown();
-            const bool down = passes[i].buttonDown[0];
+            // Each pass but the last is one button's change (a repeat makes none).
+            const ButtonEvent& event = input.buttonEvents[sources[i]];
             const ui::Vec2 eventAt = passes[i].pointerPos;
             mUi->beginFrame(std::move(passes[i]));
             const ui::Rect passCentral = buildPanels(mUi->context(), mState);
             const bool uiWantsPointer = mUi->context().endFrame().wantsPointer;
-            pressOnUi = pressOnUi || (down && !wasDown && uiWantsPointer);
-            if (down != wasDown)
-                leftSteps.push_back({eventAt, down, uiWantsPointer, passCentral});
+            if (event.button != 0)
+                continue;
+            pressOnUi = pressOnUi || (event.down && uiWantsPointer);
+            leftSteps.push_back({eventAt, event.down, event.typedBefore,
+                                 std::min(event.pathBefore, input.leftPath.size()), uiWantsPointer,
+                                 passCentral});
         }
         mUi->beginFrame(std::move(passes.back()));
         central = buildPanels(mUi->context(), mState);
@@ -148,16 +136,6 @@ void Editor::runInput(InputState input, int width, int height) {
     bool toolUsed = false;
     bool leftIsTools = mToolDrag || mState.view.toolDragActive;
     bool pressStepped = false;  // a press went to the tools at its own place (a step below)
-    // A tool chosen by a key typed before the frame's first press (g, then a click on a marker,
-    // inside one slow frame) takes that press; the keys are applied again with the rest.
-    if (keysForTheViewport)
-        for (const ButtonEvent& e : input.buttonEvents)
-            if (e.button == 0 && e.down) {
-                applyToolChoiceKeys(mState,
-                                    std::string_view(input.typed)
-                                        .substr(0, std::min(e.typedBefore, input.typed.size())));
-                break;
-            }
     if (mUi) {
         pointer.ctrl = input.modifiers.ctrl;
         pointer.shift = input.modifiers.shift;
@@ -174,20 +152,27 @@ void Editor::runInput(InputState input, int width, int height) {
         // The left-button path in UI points, and the share of it each step takes: the points
         // before its event, after the last step's.
         const float toPoints = EditorUi::pointsPerScreenUnit(*mWindow);
-        const std::vector<std::size_t> pathAt = leftChangesInPath(input, leftSteps.size());
         std::size_t pathTaken = 0;
+        // A tool chosen by a key typed before a press of the same frame (g, then a click on a
+        // marker, inside one slow frame) takes that press; the keys are applied again, in order
+        // with the rest, after the frame's presses (choosing a tool twice chooses it once).
+        std::size_t typedTaken = 0;
         const auto takePath = [&](ViewportPointer& p, std::size_t until, ui::Rect area) {
             for (; pathTaken < until; ++pathTaken) {
                 const ui::Vec2 at = input.leftPath[pathTaken] * toPoints;
                 p.pathBefore.push_back(glm::vec2(at.x - area.min.x, at.y - area.min.y) * ppp);
             }
         };
-        for (std::size_t i = 0; i < leftSteps.size(); ++i) {
-            const LeftButtonStep& step = leftSteps[i];
+        for (const LeftButtonStep& step : leftSteps) {
+            if (keysForTheViewport && step.down && step.typedBefore > typedTaken) {
+                const std::size_t until = std::min(step.typedBefore, input.typed.size());
+                applyToolChoiceKeys(
+                    mState, std::string_view(input.typed).substr(typedTaken, until - typedTaken));
+                typedTaken = until;
+            }
             ViewportPointer p = pointer;
             placePointer(p, step.at, step.central, ppp);
-            if (!pathAt.empty())
-                takePath(p, pathAt[i], step.central);
+            takePath(p, step.pathBefore, step.central);
             p.inside = input.cursorInside && step.central.contains(step.at) && !step.uiTook &&
                        !mCameraDrag;
             p.down = step.down;
@@ -200,8 +185,7 @@ void Editor::runInput(InputState input, int width, int height) {
         pointer.down = input.leftDown;
         pointer.pressed = input.leftPressed && !pressOnUi && !pressStepped;
         pointer.released = !input.leftDown;
-        if (pathAt.size() == leftSteps.size())
-            takePath(pointer, input.leftPath.size(), central);
+        takePath(pointer, input.leftPath.size(), central);
         toolUsed = runTool(pointer);
         if (leftIsTools)
             leftHeld = false;

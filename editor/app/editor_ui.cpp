@@ -85,7 +85,8 @@ float EditorUi::pointsPerScreenUnit(Window& window) {
     return toPixels / window.contentScale();
 }
 
-std::vector<ui::Input> EditorUi::passes(Window& window, const InputState& input, double timeS) {
+std::vector<ui::Input> EditorUi::passes(Window& window, const InputState& input, double timeS,
+                                        std::vector<std::size_t>* sources) {
     int fbW = 0, fbH = 0;
     window.framebufferSize(&fbW, &fbH);
     // Points = pixels / content scale; cursor positions come in screen coordinates
@@ -113,7 +114,7 @@ std::vector<ui::Input> EditorUi::passes(Window& window, const InputState& input,
         if (e.timeS < 0.0)
             e.timeS = timeS;  // a script's event: it happens now
     }
-    return uiPasses(in, events);
+    return uiPasses(in, events, sources);
 }
 
 void EditorUi::beginFrame(ui::Input pass) {

@@ -41,7 +41,10 @@ public:
     // This frame's input as UI passes (input_passes.h): one per button event, then the frame's
     // final state with its keys, text and wheel. The clipboard is read from the OS only when a
     // paste key arrives (reading it is an X round trip).
-    std::vector<ui::Input> passes(Window& window, const InputState& input, double timeS);
+    // `sources` as uiPasses gives them: the InputState::buttonEvents index of each pass but the
+    // last.
+    std::vector<ui::Input> passes(Window& window, const InputState& input, double timeS,
+                                  std::vector<std::size_t>* sources = nullptr);
     // Points per unit of the window's screen coordinates (its cursor positions): pixels on X11,
     // points on macOS and Wayland, so the framebuffer/window ratio over the content scale.
     static float pointsPerScreenUnit(Window& window);

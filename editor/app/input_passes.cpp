@@ -2,14 +2,18 @@
 
 namespace grass::editor {
 
-std::vector<ui::Input> uiPasses(const ui::Input& last, const std::vector<ButtonEvent>& events) {
+std::vector<ui::Input> uiPasses(const ui::Input& last, const std::vector<ButtonEvent>& events,
+                                std::vector<std::size_t>* sources) {
     std::vector<ui::Input> passes;
+    if (sources)
+        sources->clear();
     // The buttons as they were before the first event: each event flips one.
     std::array<bool, ui::POINTER_BUTTON_COUNT> down = last.buttonDown;
     for (auto e = events.rbegin(); e != events.rend(); ++e)
         if (e->button >= 0 && e->button < ui::POINTER_BUTTON_COUNT)
             down[std::size_t(e->button)] = !e->down;
-    for (const ButtonEvent& e : events) {
+    for (std::size_t index = 0; index < events.size(); ++index) {
+        const ButtonEvent& e = events[index];
         if (e.button < 0 || e.button >= ui::POINTER_BUTTON_COUNT ||
             passes.size() + 1 >= MAX_UI_PASSES)
             continue;
@@ -27,6 +31,8 @@ std::vector<ui::Input> uiPasses(const ui::Input& last, const std::vector<ButtonE
         pass.buttonDown = down;
         pass.modifiers = last.modifiers;
         passes.push_back(std::move(pass));
+        if (sources)
+            sources->push_back(index);
     }
     passes.push_back(last);
     // A flood beyond MAX_UI_PASSES leaves the last pass to settle the buttons as they are now.

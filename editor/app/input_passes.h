@@ -35,7 +35,9 @@ inline constexpr std::size_t MAX_UI_PASSES = 16;
 
 // The UI passes for a frame whose final input is `last` (buttons as they are now, the pointer
 // where it is now, keys, text, wheel) and whose button events are `events`, in order. With no
-// events (or only events that change nothing), one pass: `last`.
-std::vector<ui::Input> uiPasses(const ui::Input& last, const std::vector<ButtonEvent>& events);
+// events (or only events that change nothing), one pass: `last`. `sources`, when given,
+// receives for each pass but the last the index in `events` of the event it came from.
+std::vector<ui::Input> uiPasses(const ui::Input& last, const std::vector<ButtonEvent>& events,
+                                std::vector<std::size_t>* sources = nullptr);
 
 }  // namespace grass::editor

@@ -63,6 +63,21 @@ TEST(InputPasses, AClickInsideOneFrameIsAPressPassAndAReleasePassAtItsPlace) {
     EXPECT_EQ(passes[2].keys.size(), 1u);
 }
 
+// Each pass but the last names the event it came from, so the editor can read what else the
+// event carries (the typed text and pointer path before it); an event that changes nothing (a
+// second press of a held button) makes no pass and is named by none.
+TEST(InputPasses, EachPassNamesTheEventItCameFrom) {
+    ui::Input last;
+    std::vector<ButtonEvent> events = clicks({10.0f, 20.0f}, 1, 2.0, 0.0);
+    events.insert(events.begin() + 1, ButtonEvent{0, true, {11.0f, 20.0f}, 2.01});  // a repeat
+    events.push_back({1, true, {30.0f, 40.0f}, 2.1});  // the right button
+    std::vector<std::size_t> sources{99};
+    const auto passes = uiPasses(last, events, &sources);
+    ASSERT_EQ(passes.size(), 4u);
+    EXPECT_EQ(sources, (std::vector<std::size_t>{0, 2, 3}));
+    EXPECT_EQ(passes[2].pointerPos, ui::Vec2(30.0f, 40.0f));
+}
+
 TEST(InputPasses, AQuickClickTogglesACheckboxThatTheFrameAloneMisses) {
     for (const bool withPasses : {false, true}) {
         UiHarness h;

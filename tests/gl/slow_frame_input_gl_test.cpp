@@ -95,14 +95,18 @@ TEST(EditorSlowFrames, AGizmoDragMovesTheBallAsFarWhateverFramesItsEventsCameIn)
 
 // A tool key and a click quicker than a frame (g, then a click on the ball's marker): the click
 // goes to the tool the key chose. Before, the keys of a frame were applied after its clicks, so
-// the camera took the click, nothing was selected and the drag after it orbited instead.
+// the camera took the click, nothing was selected and the drag after it orbited instead. The
+// same holds for a key between two clicks of one frame (a click on the sky first).
 TEST(EditorSlowFrames, AToolKeyTypedJustBeforeAClickChoosesTheToolOfThatClick) {
-    const auto colliders = savedColliders(
-        runOnBall("slow_key_then_click", std::string("wait 2\nbatch 2\nkey g\nclick 615 189\n"
-                                                     "wait 2\ndrag ") +
-                                             ARROW_DOWN + " 6\n" + SAVE));
-    ASSERT_EQ(colliders.size(), 1u);
-    EXPECT_LT(colliders[0].position.y, 0.7f) << "the click did not select the ball for the gizmo";
+    for (const std::string& before : {std::string(), std::string("click 800 80\n")}) {
+        const auto colliders = savedColliders(runOnBall(
+            "slow_key_then_click", "wait 2\nbatch " + std::to_string(before.empty() ? 2 : 3) +
+                                       "\n" + before + "key g\nclick 615 189\nwait 2\ndrag " +
+                                       ARROW_DOWN + " 6\n" + SAVE));
+        ASSERT_EQ(colliders.size(), 1u) << before;
+        EXPECT_LT(colliders[0].position.y, 0.7f)
+            << "the click did not select the ball for the gizmo; before it: " << before;
+    }
 }
 
 TEST(EditorSlowFrames, AFlickInsideOneFrameTurnsTheCameraAsASlowDragDoes) {
