@@ -296,18 +296,22 @@ Result<bool> Editor::frame() {
     // Statistics cost atomics and a wait when read: only the frame before a status update
     // collects them, and they are read once, after it.
     const bool statusDue = mFrame == 0 || Clock::now() - mLastStatus > STATUS_EVERY;
-    // Exact pass timings wait for each pass on software GL (gl/timer_query.h): a reduced frame,
-    // which keeps a budget, goes without them and the status bar keeps the last full frame's.
-    // The full picture the window then rests on must measure them: often the only frame drawn
-    // before the rest, it was rarely a status frame, and the status bar showed the figures of a
-    // picture minutes and views before. On software GL every full picture measures them (the
-    // meadow, 30 frames drawn one after the other, two runs each: median 131.5 and 133.2 ms
-    // measured, 134.9 and 139.2 not); elsewhere, where reading the statistics back stalls the
-    // GPU, the full picture after reduced ones (input stopped, playback paused) and one after a
-    // frame that drew nothing (an edit, a re-grow taken in) do, and the rest at status updates.
+    // Exact pass timings wait for each pass on software GL (gl/timer_query.h). The full picture
+    // the window then rests on must measure them: often the only frame drawn before the rest, it
+    // was rarely a status frame, and the status bar showed the figures of a picture minutes and
+    // views before. On software GL every full picture measures them (the meadow, 30 frames
+    // drawn one after the other, two runs each: median 131.5 and 133.2 ms measured, 134.9 and
+    // 139.2 not); elsewhere, where reading the statistics back stalls the GPU, the full picture
+    // after reduced ones (input stopped, playback paused) and one after a frame that drew
+    // nothing (an edit, a re-grow taken in) do, and the rest at status updates. A reduced
+    // picture measures them at status updates too: the status bar says what the picture shown
+    // draws and costs. Before, it kept the last full picture's while the picture was reduced,
+    // which is always while a windy field plays: "64,033 drawn" of a view long left, or 0 when
+    // the window had opened playing.
     const bool fullQuality = mState.view.quality.level() == 0;
-    const bool timingsDue = fullQuality && (statusDue || mState.view.softwareRenderer ||
-                                            mLastDrawnReduced || !mViewDrawn);
+    const bool timingsDue =
+        statusDue ||
+        (fullQuality && (mState.view.softwareRenderer || mLastDrawnReduced || !mViewDrawn));
     mState.view.options.cull.collectStats = timingsDue;
     render(width, height);
     if (mViewDrawn) {

@@ -38,6 +38,10 @@ bool Editor::finishScript(Clock::time_point lastFrame) {
     // Whether the status bar's stage timings are those of the picture shown.
     std::printf("status timings of frame %d, last full picture drawn in frame %d\n", mTimingsFrame,
                 mLastFullPictureFrame);
+    // The status bar's blade counts, and whether the picture shown was reduced.
+    const FrameStatus& status = mState.transient.status;
+    std::printf("status bar: %zu blades, %zu drawn, picture %s\n", status.blades,
+                status.timings.cull.drawn, status.reduced.empty() ? "full" : "reduced");
     return false;
 }
 

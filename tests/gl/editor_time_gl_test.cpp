@@ -104,6 +104,22 @@ std::pair<int, int> statusTimingsFrames(const std::string& log) {
     return {timings, full};
 }
 
+// "status bar: B blades, D drawn, picture full|reduced".
+struct StatusBarCounts {
+    bool found = false, reduced = false;
+    std::size_t blades = 0, drawn = 0;
+};
+StatusBarCounts statusBarCounts(const std::string& log) {
+    StatusBarCounts counts;
+    char picture[16] = "";
+    const std::size_t at = log.find("status bar: ");
+    counts.found = at != std::string::npos &&
+                   std::sscanf(log.c_str() + at, "status bar: %zu blades, %zu drawn, picture %15s",
+                               &counts.blades, &counts.drawn, picture) == 3;
+    counts.reduced = std::string(picture) == "reduced";
+    return counts;
+}
+
 // Playback of a field that moves (a breeze) counts as interaction: with a budget no frame meets
 // (5 ms, the least allowed), a playing editor draws the reduced picture for as long as it plays
 // (it opens playing), and Space (pause) brings back the full one once the settle time has passed
@@ -115,6 +131,14 @@ TEST(EditorTime, PlaybackKeepsTheReducedPictureUntilPaused) {
     const std::string playing = runEditor(dir, "wait-s 3\n", "--frame-budget-ms 5");
     EXPECT_EQ(playing.find(returned), std::string::npos)
         << "the picture refined while the timeline played:\n" << playing;
+    // While it plays the status bar counts the blades of the reduced picture it shows (at a
+    // budget no frame meets, the ladder's last rungs draw one blade in 16; a quarter of the
+    // field leaves room). Before, it kept those of the full picture the window had opened with.
+    const StatusBarCounts whilePlaying = statusBarCounts(playing);
+    ASSERT_TRUE(whilePlaying.found) << playing;
+    EXPECT_TRUE(whilePlaying.reduced) << playing;
+    EXPECT_GT(whilePlaying.drawn, 0u) << playing;
+    EXPECT_LE(whilePlaying.drawn, whilePlaying.blades / 4) << playing;
     const std::string paused = runEditor(dir, "wait-s 3\nkey space\nwait-s 2\n", "--frame-budget-ms 5");
     EXPECT_NE(paused.find(returned), std::string::npos)
         << "pausing did not bring back the full picture:\n" << paused;
