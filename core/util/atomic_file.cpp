@@ -9,6 +9,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <stdio.h>  // renameat2
+
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -113,6 +115,43 @@ Result<void> commitTemporaryFile(const fs::path& temporary, const fs::path& targ
     if (ec)
         return refuse(makeError(target.string(), "cannot replace the file: " + ec.message()));
     return {};
+}
+
+Result<bool> copyFileAtomic(const fs::path& source, const fs::path& target) {
+    std::error_code ec;
+    if (fs::exists(target, ec))
+        return false;
+    const fs::path temporary = temporaryPathFor(target);
+    const auto refuse = [&](const std::string& reason) -> Result<bool> {
+        fs::remove(temporary, ec);
+        return makeError(target.string(), "cannot copy " + source.string() + " (" + reason + ")");
+    };
+    if (!fs::copy_file(source, temporary, ec))
+        return refuse(ec.message());
+    if (auto synced = syncFile(temporary); !synced)
+        return refuse(synced.error().message);
+    if (fs::file_size(temporary, ec) != fs::file_size(source, ec) || ec)
+        return refuse("the copy came out short (disk full?)");
+    // Renamed only where no file is: a copy that another finished first must not be replaced
+    // under the reader that chose it.
+    if (::renameat2(AT_FDCWD, temporary.c_str(), AT_FDCWD, target.c_str(), RENAME_NOREPLACE) == 0)
+        return true;
+    if (errno == EEXIST) {
+        fs::remove(temporary, ec);
+        return false;
+    }
+    // A file system without the flag (some network ones): look, then rename.
+    if (errno == EINVAL || errno == ENOSYS) {
+        if (fs::exists(target, ec)) {
+            fs::remove(temporary, ec);
+            return false;
+        }
+        fs::rename(temporary, target, ec);
+        if (!ec)
+            return true;
+        return refuse(ec.message());
+    }
+    return refuse(std::strerror(errno));
 }
 
 Result<void> writeFileAtomic(const fs::path& target, std::string_view bytes) {

@@ -31,6 +31,14 @@ Result<void> commitTemporaryFile(const std::filesystem::path& temporary,
                                  const std::filesystem::path& target,
                                  std::uint64_t minimumBytes = 1);
 
+// Copies `source` to `target` through a temporary in the target's folder and never replaces a
+// file: true when copied, false when `target` was there already (it is kept as it was, and the
+// copy made meanwhile is removed). Two copies to one target at once (the editor's collider
+// worker and an Import mesh… of the same file) leave one whole file, never a mixture, never an
+// error; a killed copy leaves no half of one under the target's name.
+Result<bool> copyFileAtomic(const std::filesystem::path& source,
+                            const std::filesystem::path& target);
+
 // Fails early (before long work) when `target` cannot be a file to write: it is a folder or its
 // folder does not exist. `example` names a valid file in the message ("report.json").
 Result<void> checkFileWritable(const std::filesystem::path& target, std::string_view example);

@@ -82,9 +82,18 @@ Result<std::string> meshInProject(const fs::path& projectFolder, const fs::path&
     bool reused = false;
     const std::string folder = meshFolderFor(projectFolder, absolute, reused);
     std::string file = folder + "/" + absolute.filename().generic_string();
-    if (!reused)
-        if (auto copied = copyAssetFiles(absolute, projectFolder / file); !copied)
+    if (!reused) {
+        // The folder was free when chosen; a file found there now came in meanwhile, from
+        // another import of the same name (the collider's worker and Import mesh… at once). The
+        // same bytes serve both; others would make the project name a mesh it did not choose.
+        bool keptAny = false;
+        if (auto copied = copyAssetFiles(absolute, projectFolder / file, &keptAny); !copied)
             return copied.error();
+        if (keptAny && !copiedAlready(absolute, projectFolder / file))
+            return makeError(absolute.string(), "another mesh was copied into " +
+                                                    (projectFolder / folder).string() +
+                                                    " at the same moment: add this one again");
+    }
     if (note)
         *note =
             (reused ? "uses its copy in " : "copied " + absolute.filename().string() + " into ") +
@@ -194,16 +203,19 @@ std::vector<fs::path> assetFileSet(const fs::path& file) {
     return files;
 }
 
-Result<void> copyAssetFiles(const fs::path& from, const fs::path& to) {
+Result<void> copyAssetFiles(const fs::path& from, const fs::path& to, bool* keptAny) {
     for (const fs::path& relative : assetFileSet(from)) {
         const fs::path source = from.parent_path() / relative;
         const fs::path target = copiedPart(from, to, relative);
         std::error_code ec;
-        if (!fs::exists(source, ec) || fs::exists(target, ec))
-            continue;  // a missing part is the loader's to report; a file there is kept
+        if (!fs::exists(source, ec))
+            continue;  // a missing part is the loader's to report
         fs::create_directories(target.parent_path(), ec);
-        if (!fs::copy_file(source, target, ec))
-            return makeError(target.string(), "cannot copy " + source.string() + " (" + ec.message() + ")");
+        auto copied = copyFileAtomic(source, target);
+        if (!copied)
+            return copied.error();
+        if (!*copied && keptAny)
+            *keptAny = true;  // a file there is kept
     }
     return {};
 }

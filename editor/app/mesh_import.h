@@ -24,9 +24,12 @@ inline constexpr std::size_t NEW_MESH_PROJECT_BLADES = 40000;
 // `file` and, for a .gltf, the buffers and images it names: paths relative to the file's folder.
 std::vector<std::filesystem::path> assetFileSet(const std::filesystem::path& file);
 
-// Copies `from` to `to` with the files it names at the same places relative to it; files
-// already at the destination are kept. The error names the file that could not be copied.
-Result<void> copyAssetFiles(const std::filesystem::path& from, const std::filesystem::path& to);
+// Copies `from` to `to` with the files it names at the same places relative to it, each
+// through a temporary (copyFileAtomic, util/atomic_file.h); files already at the destination are
+// kept, and `keptAny` (when given) is set if one was. The error names the file that could not be
+// copied.
+Result<void> copyAssetFiles(const std::filesystem::path& from, const std::filesystem::path& to,
+                            bool* keptAny = nullptr);
 
 // A new, unsaved project around `meshFile` (its folder is the mesh's, so the mesh needs no copy
 // until it is saved elsewhere). The error names the file and why it cannot be read. `read`, when

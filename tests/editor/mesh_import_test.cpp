@@ -6,7 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <latch>
+#include <map>
+#include <thread>
+#include <utility>
+#include <vector>
 
 #include "scene/scene.h"
 #include "support/scratch_folder.h"
@@ -141,6 +147,93 @@ TEST(MeshImport, AMeshFromElsewhereIsCopiedInWithTheFilesItNames) {
     EXPECT_TRUE(fs::exists(project.path() / "meshes/stone-2/stone.png"));
     EXPECT_NE(fs::file_size(project.path() / "meshes/stone/stone.png"),
               fs::file_size(project.path() / "meshes/stone-2/stone.png"));
+}
+
+// The same mesh brought in twice at once (Colliders › add mesh… reads and copies on a worker
+// while the window imports the same file): both succeed, and each names a whole copy the moment
+// it names it (the first's, or one of its own when it met the first's half made). Before, the
+// second could name the first's files while they were being written, or fail on them ("cannot
+// copy … File exists").
+TEST(MeshImport, TheSameMeshBroughtInTwiceAtOnceNamesAWholeCopy) {
+    // A buffer of 8 MB: its copy takes long enough for the other import to meet it.
+    const ScratchFolder source("import-twice-source");
+    for (const char* file : {"stone.gltf", "stone.bin", "stone.png"})
+        fs::copy_file(sourceDir() / STONE.parent_path() / file, source.path() / file);
+    std::ofstream(source.path() / "stone.bin", std::ios::app | std::ios::binary)
+        << std::string(8 << 20, '\0');
+    const fs::path stone = source.path() / "stone.gltf";
+    for (int round = 0; round < 10; ++round) {
+        const ScratchFolder project("import-twice-" + std::to_string(round));
+        // What an import names, and the sizes of the files in its folder when it is named.
+        struct Named {
+            Result<std::string> file = std::string();
+            std::map<std::string, std::uintmax_t> sizes;
+        };
+        const auto bringIn = [&](Named& named) {
+            named.file = editor::meshInProject(project.path(), stone, nullptr);
+            if (!named.file)
+                return;
+            // The other import's temporaries (".stone.tmp-…") may come and go meanwhile.
+            std::error_code ec;
+            for (fs::directory_iterator it((project.path() / *named.file).parent_path(), ec), end;
+                 !ec && it != end; it.increment(ec))
+                if (const std::string name = it->path().filename().string(); name[0] != '.')
+                    named.sizes[name] = fs::file_size(it->path(), ec);
+        };
+        Named first, second;
+        std::latch start(2);  // both threads begin together: their copies overlap
+        std::thread worker([&] {
+            start.arrive_and_wait();
+            bringIn(second);
+        });
+        start.arrive_and_wait();
+        bringIn(first);
+        worker.join();
+        const std::map<std::string, std::uintmax_t> whole{
+            {"stone.gltf", fs::file_size(stone)},
+            {"stone.bin", fs::file_size(source.path() / "stone.bin")},
+            {"stone.png", fs::file_size(source.path() / "stone.png")}};
+        for (const Named* named : {&first, &second}) {
+            ASSERT_TRUE(named->file.ok()) << named->file.error().str();
+            EXPECT_EQ(named->sizes, whole) << "round " << round << ": " << *named->file;
+        }
+        // Both done: no temporary is left.
+        for (const auto& entry : fs::recursive_directory_iterator(project.path()))
+            EXPECT_NE(entry.path().filename().string()[0], '.') << entry.path();
+    }
+}
+
+// Two different meshes of one name at once: each is named where its own bytes are, or refused
+// saying to add it again; never named where the other's bytes lie.
+TEST(MeshImport, TwoMeshesOfOneNameAtOnceNeverShareACopy) {
+    const ScratchFolder elsewhere("import-same-name-other");
+    for (const char* file : {"stone.gltf", "stone.bin", "stone.png"})
+        fs::copy_file(sourceDir() / STONE.parent_path() / file, elsewhere.path() / file);
+    std::ofstream(elsewhere.path() / "stone.png", std::ios::app) << "another picture";
+    const fs::path ours = sourceDir() / STONE, theirs = elsewhere.path() / "stone.gltf";
+    for (int round = 0; round < 10; ++round) {
+        const ScratchFolder project("import-same-name-" + std::to_string(round));
+        Result<std::string> first = std::string(), second = std::string();
+        std::latch start(2);
+        std::thread worker([&] {
+            start.arrive_and_wait();
+            second = editor::meshInProject(project.path(), theirs, nullptr);
+        });
+        start.arrive_and_wait();
+        first = editor::meshInProject(project.path(), ours, nullptr);
+        worker.join();
+        for (const auto& [named, source] : {std::pair{&first, ours}, std::pair{&second, theirs}}) {
+            if (!named->ok()) {
+                EXPECT_NE(named->error().message.find("add this one again"), std::string::npos)
+                    << named->error().str();
+                continue;
+            }
+            const fs::path copy = project.path() / **named;
+            EXPECT_EQ(fs::file_size(copy.parent_path() / "stone.png"),
+                      fs::file_size(source.parent_path() / "stone.png"))
+                << "round " << round << ": " << **named << " holds the other mesh's picture";
+        }
+    }
 }
 
 TEST(MeshImport, AMeshInsideTheProjectIsNamedWhereItIsAndKeepsTheUnits) {

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -91,6 +92,65 @@ TEST(AtomicFile, EachWriteHasATemporaryOfItsOwn) {
     const std::string written((std::istreambuf_iterator<char>(in)), {});
     ASSERT_EQ(written.size(), 200000u);
     EXPECT_EQ(written, std::string(200000, written.front()));
+}
+
+std::string fileBytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// Nothing in `dir` but `names`: no temporary left behind.
+void expectOnly(const fs::path& dir, std::vector<std::string> names) {
+    std::vector<std::string> found;
+    for (const auto& entry : fs::directory_iterator(dir))
+        found.push_back(entry.path().filename().string());
+    std::sort(found.begin(), found.end());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(found, names);
+}
+
+// A copy (a mesh brought into a project) goes through a temporary and never replaces a file.
+TEST(AtomicFile, ACopyNeverReplacesAFileAndLeavesNoTemporary) {
+    const fs::path dir = test::scratchDir("atomic-copy");
+    std::ofstream(dir / "a.glb", std::ios::binary) << std::string(100000, 'a');
+    std::ofstream(dir / "b.glb", std::ios::binary) << "another mesh";
+    fs::create_directories(dir / "to");
+    auto copied = copyFileAtomic(dir / "a.glb", dir / "to/rock.glb");
+    ASSERT_TRUE(copied.ok()) << copied.error().str();
+    EXPECT_TRUE(*copied);
+    EXPECT_EQ(fileBytes(dir / "to/rock.glb"), fileBytes(dir / "a.glb"));
+    auto again = copyFileAtomic(dir / "b.glb", dir / "to/rock.glb");
+    ASSERT_TRUE(again.ok()) << again.error().str();
+    EXPECT_FALSE(*again) << "a file there is kept";
+    EXPECT_EQ(fileBytes(dir / "to/rock.glb"), fileBytes(dir / "a.glb"));
+    // A source that cannot be read: an error naming the target and the source, nothing made.
+    auto missing = copyFileAtomic(dir / "gone.glb", dir / "to/gone.glb");
+    ASSERT_FALSE(missing.ok());
+    EXPECT_EQ(missing.error().path, (dir / "to/gone.glb").string());
+    EXPECT_NE(missing.error().message.find("gone.glb"), std::string::npos)
+        << missing.error().message;
+    expectOnly(dir / "to", {"rock.glb"});
+}
+
+// Two copies to one target at once (two threads, as the editor's import worker and its window):
+// one is whole under the name, the other is told it found a file there; no error, no mixture.
+TEST(AtomicFile, TwoCopiesToOneTargetAtOnceLeaveOneWholeFile) {
+    const fs::path dir = test::scratchDir("atomic-copy-race");
+    std::ofstream(dir / "a.glb", std::ios::binary) << std::string(1 << 20, 'a');
+    std::ofstream(dir / "b.glb", std::ios::binary) << std::string(1 << 20, 'b');
+    for (int round = 0; round < 20; ++round) {
+        const fs::path to = dir / ("round" + std::to_string(round));
+        fs::create_directories(to);
+        Result<bool> first = false, second = false;
+        std::thread other([&] { second = copyFileAtomic(dir / "b.glb", to / "rock.glb"); });
+        first = copyFileAtomic(dir / "a.glb", to / "rock.glb");
+        other.join();
+        ASSERT_TRUE(first.ok()) << first.error().str();
+        ASSERT_TRUE(second.ok()) << second.error().str();
+        EXPECT_NE(*first, *second) << "round " << round << ": exactly one copy is the file";
+        EXPECT_EQ(fileBytes(to / "rock.glb"), fileBytes(dir / (*first ? "a.glb" : "b.glb")));
+        expectOnly(to, {"rock.glb"});
+    }
 }
 
 TEST(AtomicFile, TemporaryNamesAreFoundAgain) {
