@@ -304,13 +304,15 @@ Result<bool> Editor::frame() {
     // 139.2 not); elsewhere, where reading the statistics back stalls the GPU, the full picture
     // after reduced ones (input stopped, playback paused) and one after a frame that drew
     // nothing (an edit, a re-grow taken in) do, and the rest at status updates. A reduced
-    // picture measures them at status updates too: the status bar says what the picture shown
-    // draws and costs. Before, it kept the last full picture's while the picture was reduced,
-    // which is always while a windy field plays: "64,033 drawn" of a view long left, or 0 when
-    // the window had opened playing.
+    // picture measures them at status updates too (the first drawn at or after one: a frame
+    // whose time moved no physics step shows the last picture again): the status bar says what
+    // the picture shown draws and costs. Before, it kept the last full picture's while the
+    // picture was reduced, which is always while a windy field plays: "64,033 drawn" of a view
+    // long left, or 0 when the window had opened playing.
+    mTimingsWanted = mTimingsWanted || statusDue;
     const bool fullQuality = mState.view.quality.level() == 0;
     const bool timingsDue =
-        statusDue ||
+        mTimingsWanted ||
         (fullQuality && (mState.view.softwareRenderer || mLastDrawnReduced || !mViewDrawn));
     mState.view.options.cull.collectStats = timingsDue;
     render(width, height);
@@ -318,8 +320,10 @@ Result<bool> Editor::frame() {
         mLastDrawnReduced = !fullQuality;
         if (fullQuality)
             mLastFullPictureFrame = mFrame;
-        if (timingsDue)
+        if (timingsDue) {
             mTimingsFrame = mFrame;
+            mTimingsWanted = false;
+        }
     }
     auto more = writeOutputs(width, height);
     if (!more || !*more)

@@ -189,6 +189,8 @@ private:
     // The frames that drew the last full picture and the status bar's timings (the script summary).
     int mLastFullPictureFrame = -1;
     int mTimingsFrame = -1;
+    // A status update came and no picture drawn since has measured its figures.
+    bool mTimingsWanted = false;
     // The window's event count after this frame's input was read: a frame that drew nothing new
     // and saw no event since waits for one (Editor::frame).
     std::uint64_t mEventsAtPoll = 0;
