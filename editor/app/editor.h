@@ -23,6 +23,7 @@
 
 #include "app/collider_packing_job.h"
 #include "app/document_job.h"
+#include "app/editor_keys.h"
 #include "app/editor_ui.h"
 #include "app/idle_wait.h"
 #include "app/input_script.h"
@@ -95,7 +96,10 @@ private:
     bool closeRequested();
     // Panels, overlay and the viewport's tools and camera; the keys unless the UI took them.
     void runInput(InputState input, int width, int height);
-    void applyKeys(const InputState& input);
+    // The frame's keys not applied before one of its presses (`taken`, editor_keys.h).
+    void applyKeys(const InputState& input, KeysTaken taken);
+    // A key's change, for the console (nothing when empty).
+    static void logKeyChange(const std::string& changed);
     // New, Open, Recover and re-grows; true when the user quit.
     bool applyRequests();
     // The field grown again after an edit (DocumentAction::Regrow), and taken in once grown.

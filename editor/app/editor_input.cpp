@@ -42,7 +42,7 @@ void moveCamera(InputState input, bool drag, bool wheel, int viewportHeight,
 struct LeftButtonStep {
     ui::Vec2 at;
     bool down = false;
-    std::size_t typedBefore = 0;
+    KeysTaken keysBefore;
     std::size_t pathBefore = 0;
     bool uiTook = false;
     ui::Rect central;
@@ -79,6 +79,7 @@ void Editor::runInput(InputState input, int width, int height) {
     const bool keysForTheViewport = (!mUi || mUi->context().focusedId().value == 0) &&
                                     !mState.transient.browser && !mState.loading();
     std::vector<LeftButtonStep> leftSteps;
+    KeysTaken keysTaken;  // the keys applied before the frame's presses
     ui::Rect central;
     float ppp = 1.0f;
     ViewportPointer pointer;
@@ -97,8 +98,11 @@ void Editor::runInput(InputState input, int width, int height) {
             if (event.button != 0)
                 continue;
             pressOnUi = pressOnUi || (event.down && uiWantsPointer);
-            leftSteps.push_back({eventAt, event.down, event.typedBefore,
-                                 std::min(event.pathBefore, input.leftPath.size()), uiWantsPointer,
+            leftSteps.push_back({eventAt,
+                                 event.down,
+                                 {event.keysBefore, event.typedBefore},
+                                 std::min(event.pathBefore, input.leftPath.size()),
+                                 uiWantsPointer,
                                  passCentral});
         }
         mUi->beginFrame(std::move(passes.back()));
@@ -153,10 +157,10 @@ void Editor::runInput(InputState input, int width, int height) {
         // before its event, after the last step's.
         const float toPoints = EditorUi::pointsPerScreenUnit(*mWindow);
         std::size_t pathTaken = 0;
-        // A tool chosen by a key typed before a press of the same frame (g, then a click on a
-        // marker, inside one slow frame) takes that press; the keys are applied again, in order
-        // with the rest, after the frame's presses (choosing a tool twice chooses it once).
-        std::size_t typedTaken = 0;
+        // The keys pressed before a press of the same frame act before it: a tool chosen by a
+        // key (g, then a click on a marker, inside one slow frame) takes that press, a Delete
+        // removes what was selected before the click selects another, an undo undoes what came
+        // before the click. The rest act after the frame's presses (applyKeys).
         const auto takePath = [&](ViewportPointer& p, std::size_t until, ui::Rect area) {
             for (; pathTaken < until; ++pathTaken) {
                 const ui::Vec2 at = input.leftPath[pathTaken] * toPoints;
@@ -164,19 +168,17 @@ void Editor::runInput(InputState input, int width, int height) {
             }
         };
         for (const LeftButtonStep& step : leftSteps) {
-            if (keysForTheViewport && step.down && step.typedBefore > typedTaken) {
-                const std::size_t until = std::min(step.typedBefore, input.typed.size());
-                applyToolChoiceKeys(
-                    mState, std::string_view(input.typed).substr(typedTaken, until - typedTaken));
-                typedTaken = until;
-            }
+            if (keysForTheViewport && step.down)
+                logKeyChange(applyKeysUpTo(mState, input, true, keysTaken, step.keysBefore));
             ViewportPointer p = pointer;
             placePointer(p, step.at, step.central, ppp);
             takePath(p, step.pathBefore, step.central);
+            // A key before it opened a dialog (Ctrl+O, Ctrl+N): the press is not the tools'.
+            const bool dialogOpened = mState.transient.browser || mState.transient.quitDialog;
             p.inside = input.cursorInside && step.central.contains(step.at) && !step.uiTook &&
-                       !mCameraDrag;
+                       !mCameraDrag && !dialogOpened;
             p.down = step.down;
-            p.pressed = step.down && !step.uiTook;
+            p.pressed = step.down && !step.uiTook && !dialogOpened;
             p.released = !step.down;
             runTool(p);
             pressStepped = pressStepped || step.down;
@@ -219,12 +221,16 @@ void Editor::runInput(InputState input, int width, int height) {
     // The file browser is a dialog: while it is open no key reaches the viewport behind it (a
     // Delete there would remove the selected collider, a T change the technique).
     if (!uiKeyboard && !mState.transient.browser)
-        applyKeys(input);
+        applyKeys(input, keysTaken);
 }
 
-void Editor::applyKeys(const InputState& input) {
-    if (const std::string changed = applyEditorKeys(mState, input, mUi != nullptr); !changed.empty())
+void Editor::logKeyChange(const std::string& changed) {
+    if (!changed.empty())
         std::fprintf(stderr, "grass-editor: %s\n", changed.c_str());
+}
+
+void Editor::applyKeys(const InputState& input, KeysTaken taken) {
+    logKeyChange(applyEditorKeys(mState, input, mUi != nullptr, taken));
     // With the UI, Escape belongs to it (closing popups and text edits): one press must not
     // also quit. File → Quit and the window's close button remain.
     if (input.escapePressed && !mUi)

@@ -1,5 +1,7 @@
 #include "app/editor_keys.h"
 
+#include <algorithm>
+
 #include "app/commands.h"
 #include "app/panels.h"
 #include "app/viewport_tools.h"
@@ -40,19 +42,27 @@ std::string applyRenderKeys(const InputState& input, EditorState& state) {
 
 }  // namespace
 
-std::string applyEditorKeys(EditorState& state, const InputState& input, bool withUi) {
+std::string applyKeysUpTo(EditorState& state, const InputState& input, bool withUi,
+                          KeysTaken& taken, KeysTaken until) {
     // While a New, Open or import grows its field the document stays as it is: the keys that
     // edit, save or replace it wait with the panels (the camera still moves).
     if (state.loading())
         return {};
-    std::string changed = applyRenderKeys(input, state);
-    applyToolKeys(state, input.typed);
+    until.keys = std::min(until.keys, input.keys.size());
+    until.typed = std::min(until.typed, input.typed.size());
+    const std::string_view typed =
+        taken.typed < until.typed
+            ? std::string_view(input.typed).substr(taken.typed, until.typed - taken.typed)
+            : std::string_view();
+    std::string changed;
+    applyToolKeys(state, typed);
     // Space plays and pauses the timeline, as in Blender and most players.
-    if (input.typed.find(' ') != std::string::npos) {
+    if (typed.find(' ') != std::string_view::npos) {
         state.view.timeJump = state.view.timeline.toggle();
         changed = state.view.timeline.playing() ? "playing" : "paused";
     }
-    for (const ui::KeyEvent& key : input.keys) {
+    for (std::size_t k = taken.keys; k < until.keys; ++k) {
+        const ui::KeyEvent& key = input.keys[k];
         // Delete removes the selected wind source or collider (the keyboard is the viewport's
         // here: a focused text field keeps its Delete).
         if (key.key == ui::Key::Delete && !key.modifiers.ctrl)
@@ -73,7 +83,19 @@ std::string applyEditorKeys(EditorState& state, const InputState& input, bool wi
         else if (key.key == ui::Key::O && withUi)
             openBrowser(state, BrowsePurpose::OpenProject);
     }
+    taken.keys = std::max(taken.keys, until.keys);
+    taken.typed = std::max(taken.typed, until.typed);
     return changed;
+}
+
+std::string applyEditorKeys(EditorState& state, const InputState& input, bool withUi,
+                            KeysTaken taken) {
+    if (state.loading())
+        return {};
+    const std::string rendered = applyRenderKeys(input, state);
+    const std::string changed =
+        applyKeysUpTo(state, input, withUi, taken, {input.keys.size(), input.typed.size()});
+    return changed.empty() ? rendered : changed;
 }
 
 }  // namespace grass::editor

@@ -24,6 +24,9 @@ struct ButtonEvent {
     std::size_t typedBefore = 0;
     // How many of the frame's InputState::leftPath points came before it.
     std::size_t pathBefore = 0;
+    // How many of the frame's key presses (InputState::keys) came before it: a Delete and a
+    // click inside one slow frame keep their order too.
+    std::size_t keysBefore = 0;
 };
 
 // A frame's left-button path keeps at most this many points (GLFW reports a motion event per

@@ -54,7 +54,7 @@ struct Player {
     void slowStroke(const std::vector<ui::Vec2>& points, int frameCount) {
         moveTo(points[0].x, points[0].y);
         now.buttonEvents.push_back(
-            {0, true, points[0], -1.0, now.typed.size(), now.leftPath.size()});
+            {0, true, points[0], -1.0, now.typed.size(), now.leftPath.size(), now.keys.size()});
         now.leftDown = now.leftPressed = true;
         const std::size_t moves = points.size() - 1;
         const auto frameOf = [&](std::size_t move) {
@@ -63,8 +63,8 @@ struct Player {
         for (std::size_t i = 1; i <= moves; ++i) {
             moveTo(points[i].x, points[i].y);
             if (i == moves) {
-                now.buttonEvents.push_back(
-                    {0, false, points[i], -1.0, now.typed.size(), now.leftPath.size()});
+                now.buttonEvents.push_back({0, false, points[i], -1.0, now.typed.size(),
+                                            now.leftPath.size(), now.keys.size()});
                 now.leftDown = false;
             }
             // The frame ends after the last move that falls into it.
@@ -203,10 +203,10 @@ Result<std::vector<ScriptFrame>> parseInputScript(const std::string& text,
             p.moveTo(x, y);
             const ui::Vec2 at{float(x), float(y)};
             for (int i = 0; i < (command == "click" ? 1 : 2); ++i) {
-                p.now.buttonEvents.push_back(
-                    {0, true, at, -1.0, p.now.typed.size(), p.now.leftPath.size()});
-                p.now.buttonEvents.push_back(
-                    {0, false, at, -1.0, p.now.typed.size(), p.now.leftPath.size()});
+                p.now.buttonEvents.push_back({0, true, at, -1.0, p.now.typed.size(),
+                                              p.now.leftPath.size(), p.now.keys.size()});
+                p.now.buttonEvents.push_back({0, false, at, -1.0, p.now.typed.size(),
+                                              p.now.leftPath.size(), p.now.keys.size()});
             }
             p.now.leftPressed = true;
             p.emit();

@@ -68,7 +68,7 @@ struct WindowCallbacks {
         if (uiButton >= 0)
             input.buttonEvents.push_back(
                 {uiButton, down, ui::Vec2(float(input.cursorX), float(input.cursorY)),
-                 self(w)->nowS(), input.typed.size(), input.leftPath.size()});
+                 self(w)->nowS(), input.typed.size(), input.leftPath.size(), input.keys.size()});
         input.shiftDown = (mods & GLFW_MOD_SHIFT) != 0;
         input.modifiers = uiModifiers(mods);
     }

@@ -7,7 +7,8 @@
 // tools read only where the pointer was when the frame ended: a flick did not turn the camera
 // at all, a flick of the brush painted one dab where it was released, a gizmo flick grabbed
 // nothing at its press, and every drag lost the stretch that came with its release. Likewise a
-// key typed just before a click in the same frame chooses the tool of that click.
+// key typed just before a click in the same frame chooses the tool of that click, and a Delete
+// just before one removes what was selected before it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,6 +16,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "editor_runs.h"
@@ -74,6 +77,20 @@ constexpr const char* SELECT_BALL = "wait 2\nkey g\nwait 2\nclick 615 189\nwait 
 constexpr const char* ARROW_DOWN = "615 150 615 200";
 constexpr const char* SAVE = "wait 3\nkey ctrl+s\nwait 2\n";
 
+// A second ball, "second", 0.6 m left of the first, its marker at (515, 189).
+void addSecondBall(const std::filesystem::path& dir) {
+    const std::filesystem::path file = dir / "project.json";
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    const std::string first = R"("radius": 0.3})";
+    const std::size_t at = text.find(first);
+    ASSERT_NE(at, std::string::npos) << text;
+    text.insert(at + first.size(), R"(,
+    {"name": "second", "shape": "sphere", "position": [-0.6, 0.8, 0], "radius": 0.3})");
+    std::ofstream(file) << text;
+}
+constexpr const char* SECOND_BALL_CLICK = "click 515 189\n";
+
 TEST(EditorSlowFrames, AGizmoDragMovesTheBallAsFarWhateverFramesItsEventsCameIn) {
     const auto moved = [](const std::string& name, const std::string& drag) {
         const auto colliders =
@@ -107,6 +124,38 @@ TEST(EditorSlowFrames, AToolKeyTypedJustBeforeAClickChoosesTheToolOfThatClick) {
         EXPECT_LT(colliders[0].position.y, 0.7f)
             << "the click did not select the ball for the gizmo; before it: " << before;
     }
+}
+
+// A Delete and a click quicker than a frame: two balls, the first selected (g, a click on its
+// marker); then, inside one frame, Delete and a click on the second's marker. The Delete removes
+// the ball selected before it and the click selects the second, which stays. Before, a frame's
+// keys acted after its clicks: the click selected the second ball and the Delete removed it.
+TEST(EditorSlowFrames, ADeleteJustBeforeAClickRemovesWhatWasSelectedBeforeTheClick) {
+    const auto dir = scratchDir("slow_delete_then_click");
+    writeBallProject(dir);
+    addSecondBall(dir);
+    runEditor(
+        dir,
+        std::string(SELECT_BALL) + "batch 2\nkey delete\n" + SECOND_BALL_CLICK + "wait 2\n" + SAVE,
+        "", /*wallClock=*/false);
+    const auto colliders = savedColliders(dir);
+    ASSERT_EQ(colliders.size(), 1u) << "nothing was deleted";
+    EXPECT_EQ(colliders[0].name, "second") << "the Delete removed the ball the click selected";
+}
+
+// Ctrl+O and a click on the ball's marker inside one frame: the key opens the file browser, a
+// dialog, and the click behind it selects nothing; the drag after the browser is closed (its
+// × button) orbits the camera and leaves the ball where it was. Before, the click selected
+// the ball behind the browser, and that drag moved it.
+TEST(EditorSlowFrames, AClickAfterAKeyThatOpensADialogIsNotTheToolsInTheSameFrame) {
+    const auto colliders =
+        savedColliders(runOnBall("slow_open_then_click",
+                                 "wait 2\nkey g\nwait 2\nbatch 2\nkey ctrl+o\nclick "
+                                 "615 189\nwait 2\nclick 758 70\nwait 2\ndrag " +
+                                     std::string(ARROW_DOWN) + " 6\n" + SAVE));
+    ASSERT_EQ(colliders.size(), 1u);
+    EXPECT_FLOAT_EQ(colliders[0].position.y, 0.8f)
+        << "the click behind the dialog selected the ball";
 }
 
 TEST(EditorSlowFrames, AFlickInsideOneFrameTurnsTheCameraAsASlowDragDoes) {
