@@ -74,37 +74,67 @@ void Editor::runInput(InputState input, int width, int height) {
     mView = PixelRect{0, 0, width, height};
     bool uiPointer = false, uiKeyboard = false;
     bool pressOnUi = false;  // a press this frame that a panel took (not the viewport's)
-    // Whether the keys typed this frame are the viewport's: no field had the keyboard when the
-    // frame began, no dialog is open, no document is loading (applyEditorKeys waits then).
-    const bool keysForTheViewport = (!mUi || mUi->context().focusedId().value == 0) &&
-                                    !mState.transient.browser && !mState.loading();
+    // The frame's keys and text that are the viewport's, in order: those typed while no field
+    // had the keyboard (each piece of a frame reaches the UI in a pass of its own, before the
+    // click that follows it: input_passes.h), no dialog is open and no document is loading
+    // (applyEditorKeys waits then). Without the UI, all of them.
+    const bool keysMayBeTheViewports = !mState.transient.browser && !mState.loading();
+    InputState viewportKeys = input;
+    bool keysAllTheViewports = true;  // no piece went to a field (the render keys' flags go too)
+    if (mUi) {
+        viewportKeys.typed.clear();
+        viewportKeys.keys.clear();
+    }
+    const auto takeKeys = [&](const ui::Input& piece, bool theViewports) {
+        if (piece.text.empty() && piece.keys.empty())
+            return;
+        keysAllTheViewports = keysAllTheViewports && theViewports;
+        if (!theViewports)
+            return;
+        for (ui::KeyEvent key : piece.keys) {
+            if (key.textBefore != std::string::npos)
+                key.textBefore += viewportKeys.typed.size();
+            viewportKeys.keys.push_back(key);
+        }
+        viewportKeys.typed += piece.text;
+    };
+    const auto noFieldHasTheKeyboard = [&] { return mUi->context().focusedId().value == 0; };
     std::vector<LeftButtonStep> leftSteps;
-    KeysTaken keysTaken;  // the keys applied before the frame's presses
+    KeysTaken keysTaken;  // the viewport's keys applied before the frame's presses
     ui::Rect central;
     float ppp = 1.0f;
     ViewportPointer pointer;
     mState.view.camera = mCamera;
     if (mUi) {
-        // One UI pass per button event (input_passes.h), the last one drawn.
-        std::vector<std::size_t> sources;
+        // One UI pass per button event and per piece of keys typed before one (input_passes.h),
+        // the last one drawn.
+        std::vector<PassSource> sources;
         std::vector<ui::Input> passes = mUi->passes(*mWindow, input, mWindow->nowS(), &sources);
         for (std::size_t i = 0; i + 1 < passes.size(); ++i) {
-            // Each pass but the last is one button's change (a repeat makes none).
-            const ButtonEvent& event = input.buttonEvents[sources[i]];
+            // Each pass but the last is one button's change (a repeat makes none) or the keys
+            // typed before it.
+            const ButtonEvent& event = input.buttonEvents[sources[i].event];
             const ui::Vec2 eventAt = passes[i].pointerPos;
+            if (sources[i].keysBefore)
+                takeKeys(passes[i], keysMayBeTheViewports && noFieldHasTheKeyboard());
             mUi->beginFrame(std::move(passes[i]));
             const ui::Rect passCentral = buildPanels(mUi->context(), mState);
             const bool uiWantsPointer = mUi->context().endFrame().wantsPointer;
-            if (event.button != 0)
+            if (event.button != 0 || sources[i].keysBefore)
                 continue;
             pressOnUi = pressOnUi || (event.down && uiWantsPointer);
             leftSteps.push_back({eventAt,
                                  event.down,
-                                 {event.keysBefore, event.typedBefore},
+                                 {viewportKeys.keys.size(), viewportKeys.typed.size()},
                                  std::min(event.pathBefore, input.leftPath.size()),
                                  uiWantsPointer,
                                  passCentral});
         }
+        // The last piece is the viewport's when no field had the keyboard before or after it.
+        const bool lastKeysMayBeTheViewports = keysMayBeTheViewports && noFieldHasTheKeyboard();
+        ui::Input lastKeys;
+        lastKeys.text = passes.back().text;
+        lastKeys.keys = passes.back().keys;
         mUi->beginFrame(std::move(passes.back()));
         central = buildPanels(mUi->context(), mState);
         ppp = mUi->pixelsPerPoint();
@@ -115,6 +145,7 @@ void Editor::runInput(InputState input, int width, int height) {
         const ui::Output& out = mUi->endFrame(*mWindow);
         uiPointer = out.wantsPointer;
         uiKeyboard = out.wantsKeyboard;
+        takeKeys(lastKeys, lastKeysMayBeTheViewports && !uiKeyboard);
         mPanelsChangeInS = out.repaintAfterS;
         mView = toPixels(central, out.pixelsPerPoint, height);
         // A camera bookmark chosen in the panel: the view goes there.
@@ -168,8 +199,8 @@ void Editor::runInput(InputState input, int width, int height) {
             }
         };
         for (const LeftButtonStep& step : leftSteps) {
-            if (keysForTheViewport && step.down)
-                logKeyChange(applyKeysUpTo(mState, input, true, keysTaken, step.keysBefore));
+            if (step.down)
+                logKeyChange(applyKeysUpTo(mState, viewportKeys, true, keysTaken, step.keysBefore));
             ViewportPointer p = pointer;
             placePointer(p, step.at, step.central, ppp);
             takePath(p, step.pathBefore, step.central);
@@ -209,9 +240,13 @@ void Editor::runInput(InputState input, int width, int height) {
         cameraDrag = mCameraDrag || (anyHeld && !(pressStepped ? pressOnUi : uiPointer) &&
                                      !leftIsTools && mUi->context().activeId().value == 0);
     mCameraDrag = cameraDrag && anyDown;
-    // A focused field owns the keyboard: an F typed into it is text, not "frame the scene".
-    if (uiKeyboard)
+    // A focused field owns the keyboard: an F typed into it is text, not "frame the scene"; the
+    // same for the other render keys' flags (the window sets them per frame, not per key).
+    if (uiKeyboard || !keysAllTheViewports) {
         input.frameRequested = cameraInput.frameRequested = false;
+        viewportKeys.toggledCullTest = 0;
+        viewportKeys.nextTechnique = viewportKeys.toggleLighting = false;
+    }
     moveCamera(cameraInput, cameraDrag, !uiPointer, mView.h, *mLive.scene,
                selectionBounds(mState, float(mState.view.timeline.timeS())), mCamera);
     // What keeps the viewport's picture reduced (adaptive quality, Editor::chooseQuality).
@@ -220,8 +255,8 @@ void Editor::runInput(InputState input, int width, int height) {
                    (mUi && mUi->context().activeId().value != 0);
     // The file browser is a dialog: while it is open no key reaches the viewport behind it (a
     // Delete there would remove the selected collider, a T change the technique).
-    if (!uiKeyboard && !mState.transient.browser)
-        applyKeys(input, keysTaken);
+    if (!mState.transient.browser)
+        applyKeys(viewportKeys, keysTaken);
 }
 
 void Editor::logKeyChange(const std::string& changed) {

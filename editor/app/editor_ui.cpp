@@ -86,7 +86,7 @@ float EditorUi::pointsPerScreenUnit(Window& window) {
 }
 
 std::vector<ui::Input> EditorUi::passes(Window& window, const InputState& input, double timeS,
-                                        std::vector<std::size_t>* sources) {
+                                        std::vector<PassSource>* sources) {
     int fbW = 0, fbH = 0;
     window.framebufferSize(&fbW, &fbH);
     // Points = pixels / content scale; cursor positions come in screen coordinates

@@ -12,10 +12,11 @@
 #include <string_view>
 #include <vector>
 
+#include "app/input_passes.h"
+#include "gl/ui_renderer.h"
 #include "ui/context.h"
 #include "ui/font.h"
 #include "ui/mesh.h"
-#include "gl/ui_renderer.h"
 #include "util/result.h"
 
 namespace grass::editor {
@@ -42,9 +43,9 @@ public:
     // final state with its keys, text and wheel. The clipboard is read from the OS only when a
     // paste key arrives (reading it is an X round trip).
     // `sources` as uiPasses gives them: the InputState::buttonEvents index of each pass but the
-    // last.
+    // last, and whether it is the event's or the keys typed before it.
     std::vector<ui::Input> passes(Window& window, const InputState& input, double timeS,
-                                  std::vector<std::size_t>* sources = nullptr);
+                                  std::vector<PassSource>* sources = nullptr);
     // Points per unit of the window's screen coordinates (its cursor positions): pixels on X11,
     // points on macOS and Wayland, so the framebuffer/window ratio over the content scale.
     static float pointsPerScreenUnit(Window& window);

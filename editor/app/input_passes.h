@@ -36,11 +36,24 @@ inline constexpr std::size_t MAX_LEFT_PATH_POINTS = 4096;
 // More events than this in one frame (a stuck button, a flood) are folded into the last pass.
 inline constexpr std::size_t MAX_UI_PASSES = 16;
 
+// Where a pass but the last comes from: the event (its index in `events`) and whether the pass
+// is that event's or carries the keys and text typed before it (since the event before).
+struct PassSource {
+    std::size_t event = 0;
+    bool keysBefore = false;
+    bool operator==(const PassSource&) const = default;
+};
+
 // The UI passes for a frame whose final input is `last` (buttons as they are now, the pointer
 // where it is now, keys, text, wheel) and whose button events are `events`, in order. With no
-// events (or only events that change nothing), one pass: `last`. `sources`, when given,
-// receives for each pass but the last the index in `events` of the event it came from.
+// events (or only events that change nothing), one pass: `last`. The keys and text typed before
+// an event (ButtonEvent::keysBefore, typedBefore) come in a pass of their own just before the
+// event's, with the buttons as they were, so that they reach the field that had the keyboard
+// then, not one the event's click gives it to (at a frame a second, "35" typed into a number box
+// and a click elsewhere arrive in one frame: the click ended the entry, and the 35 was lost);
+// the last pass has the rest. `sources`, when given, receives where each pass but the last
+// comes from.
 std::vector<ui::Input> uiPasses(const ui::Input& last, const std::vector<ButtonEvent>& events,
-                                std::vector<std::size_t>* sources = nullptr);
+                                std::vector<PassSource>* sources = nullptr);
 
 }  // namespace grass::editor

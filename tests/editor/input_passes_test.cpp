@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "ui/text_edit.h"
 #include "ui/ui_harness.h"
 
@@ -71,11 +74,69 @@ TEST(InputPasses, EachPassNamesTheEventItCameFrom) {
     std::vector<ButtonEvent> events = clicks({10.0f, 20.0f}, 1, 2.0, 0.0);
     events.insert(events.begin() + 1, ButtonEvent{0, true, {11.0f, 20.0f}, 2.01});  // a repeat
     events.push_back({1, true, {30.0f, 40.0f}, 2.1});  // the right button
-    std::vector<std::size_t> sources{99};
+    std::vector<PassSource> sources{{99, true}};
     const auto passes = uiPasses(last, events, &sources);
     ASSERT_EQ(passes.size(), 4u);
-    EXPECT_EQ(sources, (std::vector<std::size_t>{0, 2, 3}));
+    EXPECT_EQ(sources, (std::vector<PassSource>{{0, false}, {2, false}, {3, false}}));
     EXPECT_EQ(passes[2].pointerPos, ui::Vec2(30.0f, 40.0f));
+}
+
+// Keys and text typed before a click come in a pass of their own just before its press, with the
+// buttons as they were, each key's place counted in its own piece; the last pass has the rest.
+TEST(InputPasses, TheKeysTypedBeforeAClickComeInAPassOfTheirOwnBeforeIt) {
+    ui::Input last;
+    last.pointerPos = {100.0f, 100.0f};
+    last.text = "35x";
+    last.keys = {ui::KeyEvent{ui::Key::Backspace, {}, 1}, ui::KeyEvent{ui::Key::Enter, {}, 3}};
+    std::vector<ButtonEvent> events = clicks({10.0f, 20.0f}, 1, 2.0, 0.0);
+    for (ButtonEvent& e : events) {
+        e.typedBefore = 2;  // "35" and the Backspace between its digits came before the click
+        e.keysBefore = 1;
+    }
+    std::vector<PassSource> sources;
+    const auto passes = uiPasses(last, events, &sources);
+    ASSERT_EQ(passes.size(), 4u);
+    EXPECT_EQ(sources, (std::vector<PassSource>{{0, true}, {0, false}, {1, false}}));
+    EXPECT_EQ(passes[0].text, "35");
+    ASSERT_EQ(passes[0].keys.size(), 1u);
+    EXPECT_EQ(passes[0].keys[0].key, ui::Key::Backspace);
+    EXPECT_EQ(passes[0].keys[0].textBefore, 1u);
+    EXPECT_FALSE(passes[0].buttonDown[0]) << "typed before the press";
+    EXPECT_TRUE(passes[1].buttonDown[0]);
+    EXPECT_TRUE(passes[1].text.empty() && passes[1].keys.empty());
+    EXPECT_EQ(passes[3].text, "x");
+    ASSERT_EQ(passes[3].keys.size(), 1u);
+    EXPECT_EQ(passes[3].keys[0].key, ui::Key::Enter);
+    EXPECT_EQ(passes[3].keys[0].textBefore, 1u);
+    EXPECT_EQ(passes[3].pointerPos, last.pointerPos);
+}
+
+// A name typed into a field and a click elsewhere inside one slow frame: the field takes the
+// text before the click ends its entry. Before, the text came with the frame's last pass, after
+// the click had taken the keyboard from the field, and was lost.
+TEST(InputPasses, TextTypedJustBeforeAClickElsewhereReachesTheFieldThatHadTheKeyboard) {
+    UiHarness h;
+    std::string name = "grass";
+    bool committed = false;
+    const auto build = [&](ui::Ui& ui) {
+        bool now = false;
+        ui::textEdit(ui, "name", name, 150.0f, &now);
+        committed = committed || now;
+        ui.label("elsewhere");
+    };
+    const ui::Output& first = h.frame(build);
+    const auto box = findText(first, "grass");
+    const auto elsewhere = findText(first, "elsewhere");
+    ASSERT_TRUE(box && elsewhere);
+    h.clickAt(box->max + ui::Vec2(2.0f, 0.0f), build);  // the cursor after the text
+    h.moveTo(elsewhere->centre());
+    h.input.text = "land";
+    std::vector<ButtonEvent> events = clicks(elsewhere->centre(), 1, h.input.timeS, 0.0);
+    for (ButtonEvent& e : events)
+        e.typedBefore = 4;
+    frameWithEvents(h, events, build);
+    EXPECT_EQ(name, "grassland");
+    EXPECT_TRUE(committed) << "the click elsewhere ends the entry";
 }
 
 TEST(InputPasses, AQuickClickTogglesACheckboxThatTheFrameAloneMisses) {

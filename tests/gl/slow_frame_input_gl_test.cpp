@@ -21,6 +21,7 @@
 #include <string>
 
 #include "editor_runs.h"
+#include "project/project.h"
 #include "support/test_paths.h"
 #include "util/image_file.h"
 
@@ -156,6 +157,21 @@ TEST(EditorSlowFrames, AClickAfterAKeyThatOpensADialogIsNotTheToolsInTheSameFram
     ASSERT_EQ(colliders.size(), 1u);
     EXPECT_FLOAT_EQ(colliders[0].position.y, 0.8f)
         << "the click behind the dialog selected the ball";
+}
+
+// "35" typed into the layer's density box (a click opened it for typing) and a click on the sky
+// inside one frame: the box takes the 35 before the click ends its entry. Before, the frame's
+// text came after its clicks, when the box had lost the keyboard, and the 35 was lost (the
+// density stayed 20; typed in a frame before the click it was taken).
+TEST(EditorSlowFrames, ANumberTypedJustBeforeAClickElsewhereIsTaken) {
+    const auto dir = runOnBall("slow_type_then_click",
+                               "wait 2\nclick 198 339\nwait 2\nbatch "
+                               "2\ntype 35\nclick 800 80\nwait 2\n" +
+                                   std::string(SAVE));
+    const auto saved = core::loadProject(dir / "project.json");
+    ASSERT_TRUE(saved.ok()) << saved.error().str();
+    ASSERT_EQ(saved->project.layers.size(), 1u);
+    EXPECT_FLOAT_EQ(saved->project.layers[0].scatter.density, 35.0f);
 }
 
 TEST(EditorSlowFrames, AFlickInsideOneFrameTurnsTheCameraAsASlowDragDoes) {
