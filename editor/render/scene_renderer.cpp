@@ -233,6 +233,7 @@ FrameTimings SceneRenderer::lastTimings() const {
 }
 
 void SceneRenderer::reloadProps() {
+    ++mOccluderGeometry;
     mProps.clear();
     mProps.reserve(mScene->props.size());
     for (const auto& prop : mScene->props)

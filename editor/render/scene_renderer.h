@@ -156,8 +156,11 @@ private:
     std::unique_ptr<SnowPass> mSnow;
     std::unique_ptr<SnowPass> mSunShadow;  // the sun's depth map, made when shadows are first on
     bool mSnowLies = false;  // this frame: snow on with an amount > 0
-    void renderSnowMap(const RenderOptions& options);
+    // Whether the map was drawn (false: the last one, of the same view and occluders, is kept).
+    bool renderSnowMap(const RenderOptions& options);
     void drawOccluders(const gl::Program& program, float timeS);
+    // What drawOccluders draws at `timeS`, for the depth maps to tell whether theirs is still it.
+    Occluders occluders(float timeS) const;
     // The frame's framebuffer, when the cull can read the occlusion depth from it
     // (floatDepthOf), else 0.
     GLuint mFrameDepth = 0;
@@ -188,6 +191,7 @@ private:
     bool mStatsFrame = false;
     std::vector<std::string> mPasses;
     std::uint64_t mContentGeneration = 0;
+    std::uint64_t mOccluderGeometry = 0;  // moved on by reloadProps (Occluders::geometry)
 };
 
 }  // namespace grass::render

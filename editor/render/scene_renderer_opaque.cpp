@@ -24,8 +24,8 @@ void SceneRenderer::runSnowPass(const RenderOptions& options, int width, int hei
     const float snowAmountM = core::snowAmountAt(options.snow, options.timeS);
     mSnowLies = options.snow.enabled != 0u && snowAmountM > 0.0f;
     if (mSnowLies) {
-        renderSnowMap(options);
-        mPasses.push_back("snow_depth");
+        // A map kept from an earlier frame (nothing it shows moved) is named apart.
+        mPasses.push_back(renderSnowMap(options) ? "snow_depth" : "snow_depth_kept");
         // The surfaces whiten and rise; the cull buries short blades and whitens the tips.
         if (mSnow->bind(options.snow, snowAmountM))
             mPasses.push_back("snow_drift");
@@ -57,15 +57,22 @@ void SceneRenderer::drawOpaquePass(const glm::mat4& viewProj, const RenderOption
 
 // The depth map along the snowfall over the terrain and the props where they stand now: the
 // view covers both, so a ball above the ground shelters what lies under it.
-void SceneRenderer::renderSnowMap(const RenderOptions& options) {
+bool SceneRenderer::renderSnowMap(const RenderOptions& options) {
     if (!mSnow) {
         auto pass = SnowPass::create();
         GRASS_ASSERT(pass.ok());  // the shader ships with the program; a load failure is a bug
         mSnow = std::make_unique<SnowPass>(std::move(*pass));
     }
     const core::OrthoSnowView view = core::sceneSnowView(*mScene, options.snow, options.timeS);
-    mSnow->run(view, options.snow.mapResolution,
-               [&](const gl::Program& program) { drawOccluders(program, options.timeS); });
+    return mSnow->run(view, options.snow.mapResolution, occluders(options.timeS),
+                      [&](const gl::Program& program) { drawOccluders(program, options.timeS); });
+}
+
+Occluders SceneRenderer::occluders(float timeS) const {
+    Occluders now{mOccluderGeometry, {}};
+    for (std::size_t i = 0; i < mProps.size(); ++i)
+        now.models.push_back(mScene->props[i].modelAt(timeS));
+    return now;
 }
 
 // The terrain and the props where they stand at timeS, each with the program's uModel set.
@@ -91,11 +98,12 @@ void SceneRenderer::runSunShadowPass(const RenderOptions& options, LightingBlock
     }
     const int resolution = std::clamp(options.sun.shadowResolution, 1, 16384);
     const core::OrthoSnowView view = core::sceneSunView(*mScene, options.sun, options.timeS);
-    mSunShadow->run(view, resolution,
-                    [&](const gl::Program& program) { drawOccluders(program, options.timeS); });
+    const bool drawn =
+        mSunShadow->run(view, resolution, occluders(options.timeS),
+                        [&](const gl::Program& program) { drawOccluders(program, options.timeS); });
     glBindTextureUnit(SUN_SHADOW_UNIT, mSunShadow->depthTexture().id());
     core::enableSunShadows(block, view, resolution);
-    mPasses.push_back("sun_shadow");
+    mPasses.push_back(drawn ? "sun_shadow" : "sun_shadow_kept");
 }
 
 // Under snow the surfaces are tessellated and displaced (mesh_snow.*) and whitened (mesh.frag

@@ -17,11 +17,23 @@ Result<SnowPass> SnowPass::create() {
 
 void SnowPass::run(const core::OrthoSnowView& view, int resolution,
                    const std::function<void(const gl::Program&)>& draw) {
+    mDrawn.reset();
+    run(view, resolution, Occluders{}, draw);
+    mDrawn.reset();
+}
+
+bool SnowPass::run(const core::OrthoSnowView& view, int resolution, const Occluders& occluders,
+                   const std::function<void(const gl::Program&)>& draw) {
+    if (resolution == mResolution && view == mView && mDrawn == occluders) {
+        mViewBlock.upload(snowViewBlock(view, resolution));
+        return false;
+    }
     if (resolution != mResolution) {
         mDepth = gl::makeDepthTarget(resolution, resolution, "snow depth map");
         mResolution = resolution;
     }
     mView = view;
+    mDrawn = occluders;
     const float clearDepth = 1.0f;  // nothing above: every point is exposed
     glClearNamedFramebufferfv(mDepth.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
     const gl::ScopedFramebuffer depthPass(mDepth.framebuffer, resolution, resolution);
@@ -33,6 +45,7 @@ void SnowPass::run(const core::OrthoSnowView& view, int resolution,
     mProgram.use();
     draw(mProgram);
     glEnable(GL_MULTISAMPLE);
+    return true;
 }
 
 bool SnowPass::bind(const core::SnowParams& params, float amountM) {

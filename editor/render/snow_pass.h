@@ -3,8 +3,12 @@
 // find where the sky reaches (shaders/include/snow.glsl). Runs only when snow is on.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
 
 #include "gl/framebuffer.h"
 #include "gl/gl_ref.h"
@@ -18,13 +22,26 @@
 
 namespace grass::render {
 
+// What a depth map's occluders were when drawn: the geometry (a count the renderer moves on
+// whenever it loads other meshes) and where each prop stood.
+struct Occluders {
+    std::uint64_t geometry = 0;
+    std::vector<glm::mat4> models;
+    bool operator==(const Occluders&) const = default;
+};
+
 class SnowPass {
 public:
     static Result<SnowPass> create();
 
     // Renders the depth map of `view` at `resolution`²; `draw(program)` draws every occluder
     // with the program's uModel set. Uploads the view's SnowViewBlock. Restores the framebuffer
-    // and viewport.
+    // and viewport. A map of the same view, resolution and `occluders` as the last is kept, not
+    // drawn again (a still scene under snow redrew it every frame: 6–9 ms of projects/winter's
+    // frame on llvmpipe); returns whether it drew.
+    bool run(const core::OrthoSnowView& view, int resolution, const Occluders& occluders,
+             const std::function<void(const gl::Program&)>& draw);
+    // The same, always drawn (occluders the caller does not describe).
     void run(const core::OrthoSnowView& view, int resolution,
              const std::function<void(const gl::Program&)>& draw);
     // What shaders/include/snow.glsl reads, for every program drawn after it: uploads the
@@ -53,6 +70,7 @@ private:
     gl::DepthTarget mDepth;
     int mResolution = 0;
     core::OrthoSnowView mView;
+    std::optional<Occluders> mDrawn;  // the occluders of the map held (none: nothing drawn yet)
 };
 
 }  // namespace grass::render

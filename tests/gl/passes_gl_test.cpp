@@ -10,8 +10,9 @@
 #include "gl/framebuffer.h"
 #include "gl_context_fixture.h"
 #include "render/physics_gpu.h"
-#include "scene/scene.h"
 #include "render/scene_renderer.h"
+#include "scene/scene.h"
+#include "scene/scene_props.h"
 #include "support/plane_project.h"
 
 namespace grass::test {
@@ -83,16 +84,27 @@ TEST_F(PassesGlTest, AFrameRunsAndAllocatesOnlyWhatItsFeaturesUse) {
               (Names{"snow_depth", "opaque_snow", "occlusion_prepass", "cull_snow", "blades"}));
     EXPECT_EQ(snowy.allocated, (Names{"snow_map", "snow_programs", "tip_snow"}));
 
+    // The depth map of a scene nothing moved in is kept, not drawn again, until the snowfall's
+    // view changes (its direction here).
+    const Ran still = frames.draw(options);
+    const Names kept{"snow_depth_kept", "opaque_snow", "occlusion_prepass", "cull_snow", "blades"};
+    EXPECT_EQ(still.passes, kept);
+    options.timeS = 5.0f;  // later, nothing moving: kept too
+    EXPECT_EQ(frames.draw(options).passes, kept);
+    options.snow.fallDirection = {0.3f, -1.0f, 0.0f};
+    EXPECT_EQ(frames.draw(options).passes, snowy.passes) << "another view draws its map";
+    EXPECT_EQ(frames.draw(options).passes, kept);
+
     // Drift (issue 30 item 2) runs its pass only while the snow drifts.
     options.snow.drift = 0.5f;
     options.snow.driftFollowsWind = 0u;
     options.snow.driftDirection = {1.0f, 0.0f, 0.0f};
     const Ran drifting = frames.draw(options);
-    EXPECT_EQ(drifting.passes, (Names{"snow_depth", "snow_drift", "opaque_snow",
+    EXPECT_EQ(drifting.passes, (Names{"snow_depth_kept", "snow_drift", "opaque_snow",
                                       "occlusion_prepass", "cull_snow", "blades"}));
     EXPECT_EQ(drifting.allocated, (Names{"snow_map", "snow_drift", "snow_programs", "tip_snow"}));
     options.snow.drift = 0.0f;
-    EXPECT_EQ(frames.draw(options).passes, snowy.passes) << "no drift runs no drift pass again";
+    EXPECT_EQ(frames.draw(options).passes, kept) << "no drift runs no drift pass again";
 
     options.snow.enabled = 0u;
     EXPECT_EQ(frames.draw(options).passes, plain.passes) << "snow off runs no snow pass again";
@@ -113,8 +125,69 @@ TEST_F(PassesGlTest, AFrameRunsAndAllocatesOnlyWhatItsFeaturesUse) {
     const Ran shaded = frames.draw(options);
     EXPECT_EQ(shaded.passes, (Names{"sun_shadow", "opaque", "occlusion_depth", "cull", "blades"}));
     EXPECT_EQ(shaded.allocated.back(), "sun_shadow_map");
+    EXPECT_EQ(frames.draw(options).passes,
+              (Names{"sun_shadow_kept", "opaque", "occlusion_depth", "cull", "blades"}))
+        << "the sun's map of a still scene is kept";
     options.sun.shadows = false;
     EXPECT_EQ(frames.draw(options).passes, plain.passes) << "shadows off run no shadow pass";
+}
+
+// The snow's depth map of the renderer's last frame, as stored (depth / depth range).
+std::vector<float> snowDepth(const render::SceneRenderer& renderer) {
+    const render::SnowPass* pass = renderer.snowPass();
+    EXPECT_NE(pass, nullptr);
+    if (!pass)
+        return {};
+    GLint side = 0;
+    glGetTextureLevelParameteriv(pass->depthTexture().id(), 0, GL_TEXTURE_WIDTH, &side);
+    std::vector<float> depth(std::size_t(side) * std::size_t(side));
+    glGetTextureImage(pass->depthTexture().id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                      GLsizei(depth.size() * sizeof(float)), depth.data());
+    return depth;
+}
+
+// A kept snow map is the map of the props where they stand: a ball moved by the gizmo draws the
+// map again, and it is the map a fresh renderer draws of the moved scene.
+TEST_F(PassesGlTest, ASnowMapIsKeptOnlyWhileThePropsStayWhereTheyWere) {
+    PlaneField field;
+    field.sizeM = 2.0f;
+    field.density = 20.0f;
+    core::LoadedProject loaded = planeFieldProject(field);
+    core::ColliderDesc ball;
+    ball.name = "ball";
+    ball.position = {0.0f, 0.4f, 0.0f};
+    ball.radiusM = 0.3f;
+    loaded.project.colliders.push_back(ball);
+    auto scene = core::buildScene(loaded);
+    ASSERT_TRUE(scene.ok()) << scene.error().str();
+    auto renderer = render::SceneRenderer::create(*scene);
+    ASSERT_TRUE(renderer.ok()) << renderer.error().str();
+    render::RenderOptions options = render::renderOptionsFor(loaded.project, true);
+    options.snow.enabled = 1u;
+    options.snow.amountM = 0.1f;
+    options.snow.mapResolution = 128;
+    const core::OrbitCamera camera =
+        core::OrbitCamera::lookAt({0.0f, 2.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, 0.8f);
+    gl::Framebuffer framebuffer(64, 64, 0);
+    const auto firstPass = [&](render::SceneRenderer& r) {
+        r.render(camera, 64, 64, framebuffer, options);
+        const render::FrameTimings timings = r.lastTimings();
+        return timings.passes.empty() ? std::string() : timings.passes.front();
+    };
+    EXPECT_EQ(firstPass(**renderer), "snow_depth");
+    const std::vector<float> before = snowDepth(**renderer);
+    EXPECT_EQ(firstPass(**renderer), "snow_depth_kept");
+    ball.position.x = 0.5f;
+    core::placeSceneProp(scene->props.front(), ball);
+    EXPECT_EQ(firstPass(**renderer), "snow_depth") << "the ball moved";
+    const std::vector<float> moved = snowDepth(**renderer);
+    EXPECT_NE(moved, before) << "the ball's shadow in the map moved with it";
+    auto fresh = render::SceneRenderer::create(*scene);
+    ASSERT_TRUE(fresh.ok()) << fresh.error().str();
+    EXPECT_EQ(firstPass(**fresh), "snow_depth");
+    EXPECT_EQ(snowDepth(**fresh), moved);
+    EXPECT_EQ(firstPass(**renderer), "snow_depth_kept");
+    EXPECT_EQ(snowDepth(**renderer), moved);
 }
 
 TEST_F(PassesGlTest, PhysicsHoldsNoWindOrColliderBuffersWithoutThem) {
