@@ -28,7 +28,9 @@ struct FrameTimings {
     // Per-test counts, filled only when the frame ran with RenderOptions::cull.collectStats.
     CullStats cull;
     // The passes the frame ran, in order (issue 10: a pass a scene does not use does not run):
-    // snow_depth, opaque (or opaque_snow: tessellated under snow), occlusion_depth (the frame's
+    // sun_shadow (or sun_shadow_kept: the map of an earlier frame, nothing it shows moved),
+    // snow_depth (or snow_depth_kept), snow_drift, opaque (or opaque_snow: tessellated under
+    // snow), occlusion_depth (the frame's
     // depth resolved for the occlusion test) or occlusion_prepass (the opaque scene drawn again
     // for it: under snow, or into a framebuffer whose depth cannot be resolved), cull (or
     // cull_snow), blades, billboards, stem_sets.
