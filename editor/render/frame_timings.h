@@ -30,10 +30,9 @@ struct FrameTimings {
     // The passes the frame ran, in order (issue 10: a pass a scene does not use does not run):
     // sun_shadow (or sun_shadow_kept: the map of an earlier frame, nothing it shows moved),
     // snow_depth (or snow_depth_kept), snow_drift, opaque (or opaque_snow: tessellated under
-    // snow), occlusion_depth (the frame's
-    // depth resolved for the occlusion test) or occlusion_prepass (the opaque scene drawn again
-    // for it: under snow, or into a framebuffer whose depth cannot be resolved), cull (or
-    // cull_snow), blades, billboards, stem_sets.
+    // snow), occlusion_depth (the frame's depth resolved for the occlusion test) or
+    // occlusion_prepass (the opaque scene drawn again for it: under snow, or into a framebuffer
+    // whose depth cannot be resolved), cull (or cull_snow), blades, billboards, stem_sets.
     std::vector<std::string> passes;
     // What the renderer holds on the GPU beyond the terrain, props and blades, allocated on
     // first use: snow_map, snow_programs, tip_snow, billboards, stem_sets.
