@@ -9,6 +9,9 @@ bool onlyMotionChanged(const Project& before, const Project& after) {
     Project unmoved = after;
     unmoved.wind = before.wind;
     unmoved.colliders = before.colliders;
+    unmoved.physics = before.physics;
+    unmoved.physics.gravity = after.physics.gravity;
+    unmoved.physics.gravityMode = after.physics.gravityMode;
     return unmoved == before;
 }
 

@@ -9,10 +9,12 @@
 
 namespace grass::core {
 
-// Whether `after` differs from `before` at most in its wind sources and its colliders (any
-// change: added, deleted, moved, another mesh or packing). The grown field is then the same,
-// unless a layer clears the ground under the colliders (placementFollowsColliders) and they
-// changed.
+// Whether `after` differs from `before` at most in its wind sources, its colliders (any
+// change: added, deleted, moved, another mesh or packing) and how the physics steps (the step,
+// the substeps and their limits, η's decay, the front gravity, the crushed floor: what a quality
+// preset changes). The grown field is then the same, unless a layer clears the ground under the
+// colliders (placementFollowsColliders) and they changed. The gravity is the field's: blades
+// grow leaning under it.
 bool onlyMotionChanged(const Project& before, const Project& after);
 
 // Whether two collider lists hold the same props: as many colliders, each of the same shape,

@@ -484,6 +484,9 @@ void Editor::followMotionEdits() {
         return;
     const core::Project& project = state.doc.project();
     const LiveMotion& motion = mLive.motion;
+    // A preset's substeps whatever else the project changed since the field grew (its LOD and
+    // segments are the renderer's, live too): before, they grew the whole field again.
+    followPhysicsSteps(mLive, project.physics);
     const bool toFollow = project.wind != motion.wind || project.colliders != motion.colliders ||
                           motion.settledColliders != motion.colliders;
     if (!toFollow && !state.rebuildPending)

@@ -98,6 +98,14 @@ void LivePhysics::releaseHeldBlades() {
     wake();
 }
 
+void LivePhysics::followParams(const core::PhysicsParams& params) {
+    const double atS = timeS();
+    scene.params = params;
+    if (params.dtS > 0.0f)
+        steps = static_cast<std::size_t>(std::llround(atS / double(params.dtS)));
+    wake();
+}
+
 void LivePhysics::weighSnowAgain(const core::Scene& field) {
     scene.snowLoadPerMetre.clear();
     scene.snowWeigher.reset();
@@ -252,6 +260,7 @@ Result<Live> bringUpLive(GrownField grown, const std::function<Result<void>(core
     Live live;
     live.builtFrom = std::move(grown.loaded);
     live.motion.wind = live.builtFrom.project.wind;
+    live.motion.physics = live.builtFrom.project.physics;
     live.motion.colliders = live.builtFrom.project.colliders;
     live.motion.settledColliders = live.motion.colliders;
     live.motion.packings = std::move(grown.packings);
@@ -314,6 +323,17 @@ bool LiveMotion::packed(const std::vector<core::ColliderDesc>& wanted) const {
     });
 }
 
+bool followPhysicsSteps(Live& live, const core::PhysicsParams& physics) {
+    LiveMotion& motion = live.motion;
+    if (physics == motion.physics || physics.gravity != motion.physics.gravity ||
+        physics.gravityMode != motion.physics.gravityMode)
+        return false;
+    if (live.physics)
+        live.physics->followParams(physics);
+    motion.physics = physics;
+    return true;
+}
+
 Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool settled) {
     const core::Project& project = loaded.project;
     LiveMotion& motion = live.motion;
@@ -357,6 +377,7 @@ Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool se
         motion.colliders = project.colliders;
         changed = true;
     }
+    changed = followPhysicsSteps(live, project.physics) || changed;
     // Where the colliders stood, the blades they held rise; the props shelter the snow: where
     // they moved, the blades carry another load.
     if (settled && motion.settledColliders != motion.colliders) {

@@ -125,6 +125,9 @@ struct LivePhysics {
     // now stand are crushed again by the next step. Trails below it keep their η.
     static constexpr float RELEASED_ETA = 1.0f;
     void releaseHeldBlades();
+    // Steps on with `params` (a quality preset's substeps): the blades keep their motion, and the
+    // physics' time stays where it was in another step's count.
+    void followParams(const core::PhysicsParams& params);
 };
 
 // What the live physics and the colliders' props follow now: the project's wind sources and
@@ -133,6 +136,7 @@ struct LivePhysics {
 struct LiveMotion {
     std::vector<core::WindDesc> wind;
     std::vector<core::ColliderDesc> colliders;
+    core::PhysicsParams physics;  // how the live physics steps (core::onlyMotionChanged)
     // The colliders as of the last edit that ended: the snow's loads were weighed under them
     // (their props shelter the snow) and the blades they held were let go then.
     std::vector<core::ColliderDesc> settledColliders;
@@ -197,6 +201,11 @@ Result<Live> bringUpLive(GrownField grown,
 // Puts every layer's blades back at rest on the GPU and restarts the simulation from there
 // (keeping its step count).
 Result<void> resetPhysics(Live& live);
+
+// How the physics steps (a quality preset's substeps, its step) followed at once: the live
+// physics steps on with `physics`, the blades as they are. Not when the gravity changed (the
+// field grows leaning under it: that is a re-grow). Returns whether anything changed.
+bool followPhysicsSteps(Live& live, const core::PhysicsParams& physics);
 
 // After an edit of `loaded` that changed only what moves the field (core::onlyMotionChanged
 // against live.builtFrom): the live physics takes its wind sources and colliders (built as

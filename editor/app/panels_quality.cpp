@@ -54,12 +54,13 @@ void qualityRows(ui::Ui& ui, EditorState& s) {
                 .onHoverText("Set the measured quality knobs to a preset: draft, balanced, high "
                              "or reference; custom means they match none");
         r.changed() && selected > 0) {
-        const core::PhysicsParams physicsBefore = project.physics;
         const float aoCellsBefore = project.lighting.aoCellSigmas;
         core::applyQuality(core::qualitySettings(core::QualityPreset(selected - 1)), project);
-        // The live simulation was built with the old substeps, and the blades' ambient occlusion
-        // is baked with the AO kernel's cells when they grow: re-grow them.
-        if (project.physics != physicsBefore || project.lighting.aoCellSigmas != aoCellsBefore)
+        // The blades' ambient occlusion is baked with the AO kernel's cells when they grow:
+        // re-grow them. The physics' substeps are followed live (followPhysicsSteps): draft,
+        // balanced and high share one AO kernel, and switching between them grew the whole
+        // field again for the substeps alone.
+        if (project.lighting.aoCellSigmas != aoCellsBefore)
             s.transient.draft.regrow = true;
     }
     // Only the knobs this scene uses: a blades-only field pays nothing for billboards.

@@ -9,8 +9,7 @@
 #include <variant>
 #include <vector>
 
-#include "app/edit_actions.h"
-#include "app/panels.h"
+#include "panel_driver.h"
 #include "snow/snow_drift.h"
 #include "support/scratch_folder.h"
 #include "support/test_fonts.h"
@@ -20,71 +19,9 @@
 namespace grass::test {
 namespace {
 
-// The editor on the tiny growth project, as main.cpp runs it: panels, then a history step once
-// no widget is active. A tall screen keeps the Snow section, last in the panel, unscrolled.
-struct SnowPanelDriver {
-    SnowPanelDriver() : ctx(testFonts()) {
-        auto loaded = core::loadProject(sourceDir() / "tests/data/projects/growth_tiny");
-        EXPECT_TRUE(loaded.ok()) << loaded.error().str();
-        state.doc.loaded = std::move(*loaded);
-        state.view.options = editor::viewRenderOptions(state);
-        editor::resetHistory(state);
-        input.screenRect = {{0.0f, 0.0f}, {1280.0f, 3000.0f}};
-        input.hasPointer = true;
-        input.pointerPos = {1000.0f, 700.0f};
-    }
-
-    const ui::Output& frame() {
-        ctx.beginFrame(input);
-        editor::buildPanels(ctx, state);
-        const ui::Output& out = ctx.endFrame();
-        editor::recordProjectEdit(state, ctx.activeId().value != 0);
-        // What the viewport draws next, derived from the project as main.cpp does each frame.
-        state.view.options = editor::viewRenderOptions(state);
-        input.keys.clear();
-        input.text.clear();
-        input.timeS += 1.0 / 60.0;
-        return out;
-    }
-
-    // Where the topmost text shape reading exactly `text` starts, plus a few points inside.
-    ui::Vec2 find(std::string_view text) {
-        std::optional<ui::Vec2> at;
-        const ui::Output& out = frame();
-        for (const ui::ClippedShape& shape : out.shapes)
-            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && t->text == text)
-                at = t->pos + ui::Vec2(3.0f, 6.0f);
-        EXPECT_TRUE(at.has_value()) << "nothing reads \"" << text << "\"";
-        return at.value_or(ui::Vec2(-100.0f, -100.0f));
-    }
-
-    // Hover, press, release on the text.
-    void click(std::string_view text) {
-        input.pointerPos = find(text);
-        frame();
-        input.buttonDown[0] = true;
-        frame();
-        input.buttonDown[0] = false;
-        frame();
-    }
-
-    // Presses on the text (a drag value's box) and drags `dx` points right over four frames.
-    void drag(std::string_view text, float dx) {
-        input.pointerPos = find(text);
-        frame();
-        input.buttonDown[0] = true;
-        frame();
-        for (int i = 0; i < 4; ++i) {
-            input.pointerPos.x += 0.25f * dx;
-            frame();
-        }
-        input.buttonDown[0] = false;
-        frame();
-    }
-
-    ui::Context ctx;
-    ui::Input input;
-    editor::EditorState state;
+// The editor on the tiny growth project (panel_driver.h).
+struct SnowPanelDriver : PanelDriver {
+    SnowPanelDriver() : PanelDriver(sourceDir() / "tests/data/projects/growth_tiny") {}
 
     // The project's snow as the viewport draws it: the drift's direction resolved from the
     // project's winds (core::snowWithWindDrift), everything else as the project says.

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "app/live_scene.h"
 #include "gl/headless_context.h"
 #include "gl_context_fixture.h"
+#include "scene/motion_edit.h"
 #include "scene/scene_physics.h"
 #include "support/density_dab.h"
 #include "support/gltf_writer.h"
@@ -271,6 +273,39 @@ TEST_F(LivePhysicsTest, AMovedBallPushesTheBladesWithoutTheFieldGrowingAgain) {
                     editor::physicsDeviceName(device), double(before), double(after));
         EXPECT_GT(before, 0.25f) << "the field stood before the ball came";
         EXPECT_LT(after, 0.1f) << "the moved ball did not crush the blades under it";
+    }
+}
+
+// A quality preset's substeps (or another step) are followed live: the physics steps on with
+// them from the time it had reached, the field keeps its blades. Before, the editor grew the
+// field again for them.
+TEST_F(LivePhysicsTest, AnotherPhysicsStepIsFollowedWithoutTheFieldGrowingAgain) {
+    core::LoadedProject loaded = planeFieldProject({2.0f, 4, 60.0f, 0.3f, 0.5f});
+    loaded.project.wind.push_back(core::WindDesc{});
+    for (const auto device : {editor::PhysicsDevice::Cpu, editor::PhysicsDevice::Gpu}) {
+        editor::Live live = liveOn(loaded, device);
+        ASSERT_TRUE(live.physics);
+        editor::LivePhysics& physics = *live.physics;
+        physics.advanceTo(0.5, 1000);
+        const core::Scene* field = live.scene.get();
+        core::LoadedProject stepped = loaded;
+        stepped.project.physics.maxSubstepS = 1.0f / 240.0f;
+        stepped.project.physics.dtS = 1.0f / 30.0f;
+        ASSERT_TRUE(core::onlyMotionChanged(loaded.project, stepped.project));
+        auto followed = editor::followMotion(live, stepped, /*settled=*/true);
+        ASSERT_TRUE(followed.ok()) << followed.error().str();
+        EXPECT_TRUE(*followed);
+        EXPECT_TRUE(physics.scene.params == stepped.project.physics);
+        EXPECT_NEAR(physics.timeS(), 0.5, 1e-6) << "the physics' time stays where it was";
+        EXPECT_FALSE(*editor::followMotion(live, stepped, true)) << "nothing more to follow";
+        const std::size_t computedBefore = physics.computedSteps;
+        physics.advanceTo(1.01, 1000);
+        EXPECT_GT(physics.computedSteps, computedBefore);
+        EXPECT_EQ(physics.steps, 30u) << "1.01 s in whole steps of 1/30 s (60 of the old 1/60 s)";
+        EXPECT_EQ(live.scene.get(), field);
+        for (const core::Blade& blade : rendererBlades(live, 0))
+            EXPECT_TRUE(std::isfinite(blade.v2W.x) && std::isfinite(blade.v2W.y))
+                << "a blade blew up";
     }
 }
 

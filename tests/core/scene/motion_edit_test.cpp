@@ -77,6 +77,23 @@ TEST(MotionEdit, WhatTheFieldIsGrownFromIsNoMotionEdit) {
     EXPECT_FALSE(onlyMotionChanged(before, snowy));
 }
 
+// A quality preset changes how the physics steps (draft 1/30 s substeps, balanced 1/60, high
+// 1/240, one AO kernel for all three): the field is the same, and the live physics follows it.
+// Before, each such choice grew the whole field again and its blades restarted from rest.
+TEST(MotionEdit, HowThePhysicsStepsIsAMotionEdit) {
+    const Project before = windAndBall();
+    Project stepped = before;
+    stepped.physics.maxSubstepS = 1.0f / 240.0f;
+    stepped.physics.maxSubsteps = 4;
+    stepped.physics.dtS = 1.0f / 30.0f;
+    stepped.physics.etaDecayPerS = 0.2f;
+    stepped.physics.crushedRecoveryFloor = 0.2f;
+    EXPECT_TRUE(onlyMotionChanged(before, stepped));
+    Project down = stepped;
+    down.physics.gravityMode = GravityMode::Centre;  // the field leans another way as it grows
+    EXPECT_FALSE(onlyMotionChanged(before, down));
+}
+
 TEST(MotionEdit, PlacementFollowsCollidersOnlyWhereALayerClearsTheGroundUnderThem) {
     Project project = windAndBall();
     EXPECT_FALSE(placementFollowsColliders(project));
