@@ -389,7 +389,8 @@ bool runViewportTool(EditorState& state, const core::OrbitCamera& camera,
     return false;
 }
 
-void applyToolChoiceKeys(EditorState& state, std::string_view typed) {
+// The keys of `typed` that choose a tool or a gizmo mode ('b' 'g' 'c' 'w' 'e' 'r').
+static void applyToolChoiceKeys(EditorState& state, std::string_view typed) {
     for (const char c : typed) {
         switch (c) {
             case 'b':

@@ -94,10 +94,6 @@ bool runViewportTool(EditorState& state, const core::OrbitCamera& camera,
 // grow the brush, 'w' 'e' 'r' pick the gizmo's translate / rotate / scale, 'b' the brush,
 // 'g' the gizmo, 'c' the camera.
 void applyToolKeys(EditorState& state, std::string_view typed);
-// Only the keys of `typed` that choose a tool or a gizmo mode ('b' 'g' 'c' 'w' 'e' 'r'): applied
-// before a press that came after them in the same frame, so the press goes to the tool they
-// chose; applying them again with the rest (applyToolKeys) changes nothing more.
-void applyToolChoiceKeys(EditorState& state, std::string_view typed);
 
 // The brush ring lying on the mesh, the objects' markers, radii and directions, and the gizmo of
 // the selected one, drawn over the viewport `view` (points); pixelsPerPoint maps pixels to points.

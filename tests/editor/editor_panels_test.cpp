@@ -25,6 +25,7 @@
 #include "app/viewport_tools.h"
 #include "app/worker_job.h"
 #include "maps/map_image.h"
+#include "panel_driver.h"
 #include "physics/wind.h"
 #include "quality/quality_presets.h"
 #include "scene/scene_physics.h"
@@ -61,15 +62,8 @@ struct EditorDriver {
         input.pointerPos = {1000.0f, 700.0f};
     }
 
-    const ui::Output& frame() {
-        ctx.beginFrame(input);
-        editor::buildPanels(ctx, state);
-        const ui::Output& out = ctx.endFrame();
-        input.keys.clear();
-        input.text.clear();
-        input.timeS += 1.0 / 60.0;
-        return out;
-    }
+    // No history step each frame: a test records one where it wants it (recordProjectEdit).
+    const ui::Output& frame() { return panelFrame(ctx, input, state, false); }
 
     // Every text drawn in the next frame.
     std::set<std::string> shownTexts() {

@@ -17,6 +17,24 @@
 
 namespace grass::test {
 
+// One frame of the panels with `input`, whose per-frame events are then cleared; with
+// `recordHistory`, a history step once no widget is active and the viewport's options derived
+// from the project again, as main.cpp does each frame.
+inline const ui::Output& panelFrame(ui::Context& ctx, ui::Input& input, editor::EditorState& state,
+                                    bool recordHistory) {
+    ctx.beginFrame(input);
+    editor::buildPanels(ctx, state);
+    const ui::Output& out = ctx.endFrame();
+    if (recordHistory) {
+        editor::recordProjectEdit(state, ctx.activeId().value != 0);
+        state.view.options = editor::viewRenderOptions(state);
+    }
+    input.keys.clear();
+    input.text.clear();
+    input.timeS += 1.0 / 60.0;
+    return out;
+}
+
 // A tall screen keeps the last sections of the panel unscrolled.
 struct PanelDriver {
     explicit PanelDriver(const std::filesystem::path& project) : ctx(testFonts()) {
@@ -31,18 +49,7 @@ struct PanelDriver {
         input.pointerPos = {1000.0f, 700.0f};
     }
 
-    const ui::Output& frame() {
-        ctx.beginFrame(input);
-        editor::buildPanels(ctx, state);
-        const ui::Output& out = ctx.endFrame();
-        editor::recordProjectEdit(state, ctx.activeId().value != 0);
-        // What the viewport draws next, derived from the project as main.cpp does each frame.
-        state.view.options = editor::viewRenderOptions(state);
-        input.keys.clear();
-        input.text.clear();
-        input.timeS += 1.0 / 60.0;
-        return out;
-    }
+    const ui::Output& frame() { return panelFrame(ctx, input, state, true); }
 
     // Where the topmost text shape reading exactly `text` starts, plus a few points inside.
     ui::Vec2 find(std::string_view text) {
