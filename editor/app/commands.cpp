@@ -79,6 +79,7 @@ struct Applier {
         if (!edit)
             return false;
         s.transient.message = std::string(undoing ? "undid " : "redid ") + edit->label;
+        s.transient.loggedMessage.clear();  // another undo of a stroke says so again
         bool done = true;
         if (const auto* project = std::get_if<core::ProjectEdit>(&edit->change)) {
             s.doc.loaded.project = undoing ? project->before : project->after;

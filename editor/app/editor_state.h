@@ -159,6 +159,10 @@ struct Transient {
     // and the Messages window the status bar's message opens.
     std::vector<std::string> messageLog;
     std::string loggedMessage;
+    // The UI time the message was logged: for a few seconds after, the status bar makes room for
+    // it before the figures (panels.cpp, statusBar). Clearing loggedMessage says the message
+    // anew, for a user action that may repeat its text (a second Ctrl+S, another undo).
+    double messageLoggedAtS = -1e9;
     bool messagesWindow = false;
     // A failed save stays on screen: routine messages (autosaved) do not replace it until a
     // save succeeds.

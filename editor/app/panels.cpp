@@ -26,6 +26,8 @@ namespace {
 
 // Height of the status bar under the viewport, points.
 constexpr float STATUS_BAR_HEIGHT = 26.0f;
+// How long a new status message comes before the figures (statusBar).
+constexpr double FRESH_MESSAGE_S = 6.0;
 constexpr float SIDE_PANEL_WIDTH = 330.0f;
 
 // File › Open Recent: the projects opened or saved last, newest first; a project whose file
@@ -202,27 +204,51 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
         // message pushed the grass time off a 1280 px window); a failed save keeps half the bar
         // whatever the figures; a message with no room left is not shown (Help › Messages has
         // it). A click shows every message whole.
-        const std::string movingNote = s.transient.status.reduced.empty()
-                                           ? ""
-                                           : "moving: " + s.transient.status.reduced + "   ";
+        // For its first seconds a message comes before the figures too: at 1280 px a playing
+        // field's "moving: …" and "physics behind" notes left it no room, so Ctrl+S said nothing
+        // at all. Then the "moving" note is said short (the viewport's badge says it too) and
+        // the figures make way, least wanted first; the message takes up to half the bar.
+        const auto width = [&](std::string_view line) {
+            return ctx.fonts().textSize(line, style.textSizePt).x;
+        };
+        const bool freshMessage =
+            !s.transient.message.empty() &&
+            ctx.input().timeS - s.transient.messageLoggedAtS < FRESH_MESSAGE_S;
+        const float messageWanted =
+            s.transient.messageIsSaveError
+                ? 0.5f * rect.width()
+                : (freshMessage ? std::min(width(s.transient.message + "   "), 0.5f * rect.width())
+                                : 0.0f);
+        std::string movingNote = s.transient.status.reduced.empty()
+                                     ? ""
+                                     : "moving: " + s.transient.status.reduced + "   ";
         // The machine cannot step the physics as fast as time passes: said in orange, before the
         // figures (after them it was the first thing a narrow window cut).
         char behindNote[96] = "";
         if (const double dropped = s.transient.status.physicsDroppedS; dropped > 0.0)
             std::snprintf(behindNote, sizeof behindNote, "physics behind: skipping %.1f s per s   ",
                           dropped);
-        const auto width = [&](std::string_view line) {
-            return ctx.fonts().textSize(line, style.textSizePt).x;
-        };
         // Less the bar's inset, the message's trailing spaces and the row's spacing after each
         // item.
         const int items = 2 + (movingNote.empty() ? 0 : 1) + (behindNote[0] != '\0' ? 1 : 0);
         const float margin = 8.0f + width("   ") + float(items) * style.itemSpacing.x;
-        const std::string text = fitStatusFigures(
-            figures, rect.width() - margin - width(movingNote + behindNote), width);
+        const auto notesCrowdTheMessage = [&] {
+            return width(movingNote + behindNote + figures.front().text) >
+                   rect.width() - margin - messageWanted;
+        };
+        if (messageWanted > 0.0f && !movingNote.empty() && notesCrowdTheMessage())
+            movingNote = "moving   ";
+        if (messageWanted > 0.0f && behindNote[0] != '\0' && notesCrowdTheMessage())
+            std::snprintf(behindNote, sizeof behindNote, "physics behind   ");
+        // The blade counts stay whole whatever the message.
+        const float messageFirst = std::clamp(
+            rect.width() - margin - width(movingNote + behindNote + figures.front().text), 0.0f,
+            messageWanted);
+        const float figureRoom = rect.width() - margin - messageFirst;
+        const std::string text =
+            fitStatusFigures(figures, figureRoom - width(movingNote + behindNote), width);
         const float figuresWidth = width(movingNote + behindNote + text);
-        const float room = std::max(s.transient.messageIsSaveError ? 0.5f * rect.width() : 0.0f,
-                                    rect.width() - margin - figuresWidth);
+        const float room = std::max(messageFirst, rect.width() - margin - figuresWidth);
         constexpr float LEAST_MESSAGE_WIDTH = 80.0f;
         if (!s.transient.message.empty() && room >= LEAST_MESSAGE_WIDTH) {
             const std::string shownText =
@@ -343,6 +369,7 @@ bool saveTo(EditorState& s, const std::string& file) {
     s.doc.history.markSaved();
     rememberRecent(s, path);
     s.transient.message = "saved " + path.string();
+    s.transient.loggedMessage.clear();  // a second save says so again
     s.transient.messageIsSaveError = false;
     return true;
 }

@@ -19,6 +19,7 @@ void logMessage(EditorState& s, double timeS) {
     if (t.message.empty() || t.message == t.loggedMessage)
         return;
     t.loggedMessage = t.message;
+    t.messageLoggedAtS = timeS;
     char stamp[32];
     std::snprintf(stamp, sizeof stamp, "%.1f s  ", timeS);
     t.messageLog.push_back(stamp + t.message);

@@ -951,6 +951,15 @@ TEST(EditorPanels, PicturesAndExportsGoWhereTheyCanBeWritten) {
               folder.path() / "screenshot-2.png");
 }
 
+// The first text of a frame starting with `prefix` (the status bar's figures: "N blades · …").
+std::optional<ui::TextShape> textStarting(const ui::Output& out, std::string_view prefix) {
+    for (const ui::ClippedShape& shape : out.shapes)
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape);
+            t && t->text.starts_with(prefix))
+            return *t;
+    return std::nullopt;
+}
+
 // Issue 26 item 4: every status message is logged; a click on the status line shows them whole.
 TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
     const ScratchFolder folder("editor-messages");
@@ -968,17 +977,11 @@ TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
     // window's edge at 1280 px while the picture was reduced), cut to the room the figures
     // leave: they end inside the window (cut to half the line, a new project's message pushed
     // the grass time off it).
-    // The first text of a frame starting with `prefix` (the figures: "N blades · …").
-    const auto textStarting = [](const ui::Output& out, std::string_view prefix) {
-        std::optional<ui::TextShape> found;
-        for (const ui::ClippedShape& shape : out.shapes)
-            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape);
-                t && !found && t->text.starts_with(prefix))
-                found = *t;
-        return found;
-    };
     const std::string figuresStart =
         std::to_string(editor.state.transient.status.blades) + " blades";
+    // Some seconds on: a new message comes before the figures (below,
+    // TheStatusBarMakesRoomForANewMessage).
+    editor.input.timeS += 7.0;
     const ui::Output& withMessage = editor.frame();
     std::optional<ui::TextShape> status = textStarting(withMessage, "cannot import /a/very");
     std::optional<ui::TextShape> figures = textStarting(withMessage, figuresStart);
@@ -1032,6 +1035,61 @@ TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
         if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && !t->text.ends_with("   "))
             joined += t->text + " ";  // the status line's message ends with three spaces
     EXPECT_NE(joined.find("the file is not glTF"), std::string::npos) << joined;
+}
+
+// A new message comes before the figures for its first seconds. At 1280 points, while a field
+// played reduced with its physics behind (always, on llvmpipe), the "moving: …" and "physics
+// behind" notes and the figures left no room, and Ctrl+S said nothing at all; a second Ctrl+S,
+// with the same text, was not said again either.
+TEST(EditorPanels, TheStatusBarMakesRoomForANewMessage) {
+    const ScratchFolder folder("editor-fresh-message");
+    EditorDriver editor(folder.path());
+    editor::FrameStatus& status = editor.state.transient.status;
+    status.blades = 58942;
+    status.fps = 2.0;
+    status.physicsDevice = "cpu";
+    status.physicsMs = 11.2;
+    status.reduced = "MSAA off, 1/16 blades, LOD, 1/2 res";
+    status.physicsDroppedS = 0.9;
+    const auto endX = [](const ui::TextShape& text) {
+        return text.pos.x + testFonts().textSize(text.text, text.sizePt).x;
+    };
+    const std::string saved = "saved " + (folder.path() / "project.json").string();
+    for (int save = 0; save < 2; ++save) {
+        ASSERT_TRUE(editor::saveTo(editor.state, (folder.path() / "project.json").string()));
+        const ui::Output& out = editor.frame();
+        const std::optional<ui::TextShape> message = textStarting(out, "saved ");
+        const std::optional<ui::TextShape> figures = textStarting(out, "58942 blades");
+        const std::optional<ui::TextShape> behind = textStarting(out, "physics behind");
+        ASSERT_TRUE(message) << "save " << save << ": the message has no room";
+        EXPECT_EQ(message->text, saved + "   ") << "whole";
+        ASSERT_TRUE(figures && behind) << [&] {
+            std::string all;
+            for (const ui::ClippedShape& shape : out.shapes)
+                if (const auto* t = std::get_if<ui::TextShape>(&shape.shape))
+                    all += "[" + t->text + "]";
+            return all;
+        }();
+        EXPECT_LT(endX(*message), behind->pos.x);
+        EXPECT_LT(endX(*behind), figures->pos.x);
+        EXPECT_LE(endX(*figures), editor.input.screenRect.max.x) << figures->text;
+        // The viewport's badge says "reduced while moving"; the bar says the notes short
+        // meanwhile.
+        EXPECT_TRUE(textStarting(out, "moving   ")) << "the note said short";
+        // Some seconds later the figures and the whole note have their room back.
+        editor.input.timeS += 7.0;
+        const ui::Output& later = editor.frame();
+        EXPECT_TRUE(textStarting(later, "moving: MSAA off, 1/16 blades"));
+        EXPECT_TRUE(textStarting(later, "physics behind: skipping 0.9 s per s"));
+        const std::optional<ui::TextShape> laterFigures = textStarting(later, "58942 blades");
+        ASSERT_TRUE(laterFigures);
+        EXPECT_TRUE(laterFigures->text.ends_with("2 fps")) << laterFigures->text;
+        EXPECT_LE(endX(*laterFigures), editor.input.screenRect.max.x);
+    }
+    std::size_t savesLogged = 0;
+    for (const std::string& line : editor.state.transient.messageLog)
+        savesLogged += line.find(saved) != std::string::npos ? 1 : 0;
+    EXPECT_EQ(savesLogged, 2u) << "each save said";
 }
 
 // Issue 26 item 4: Help › Keyboard shortcuts shows every key of the editor's table.
