@@ -206,8 +206,8 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
         // it). A click shows every message whole.
         // For its first seconds a message comes before the figures too: at 1280 px a playing
         // field's "moving: …" and "physics behind" notes left it no room, so Ctrl+S said nothing
-        // at all. Then the "moving" note is said short (the viewport's badge says it too) and
-        // the figures make way, least wanted first; the message takes up to half the bar.
+        // at all. Then the notes are said short and the figures make way, least wanted first;
+        // the message takes up to half the bar.
         const auto width = [&](std::string_view line) {
             return ctx.fonts().textSize(line, style.textSizePt).x;
         };
@@ -232,14 +232,20 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
         // item.
         const int items = 2 + (movingNote.empty() ? 0 : 1) + (behindNote[0] != '\0' ? 1 : 0);
         const float margin = 8.0f + width("   ") + float(items) * style.itemSpacing.x;
-        const auto notesCrowdTheMessage = [&] {
+        // The notes are said short where they, the blade counts and the message wanted leave
+        // no room (a new message, or a narrow window: at 900 points "physics behind" ran off the
+        // window's edge with the blade counts after it); with no room even then the "moving"
+        // note goes, which the viewport's badge says too.
+        const auto notesDoNotFit = [&](float message) {
             return width(movingNote + behindNote + figures.front().text) >
-                   rect.width() - margin - messageWanted;
+                   rect.width() - margin - message;
         };
-        if (messageWanted > 0.0f && !movingNote.empty() && notesCrowdTheMessage())
+        if (!movingNote.empty() && notesDoNotFit(messageWanted))
             movingNote = "moving   ";
-        if (messageWanted > 0.0f && behindNote[0] != '\0' && notesCrowdTheMessage())
+        if (behindNote[0] != '\0' && notesDoNotFit(messageWanted))
             std::snprintf(behindNote, sizeof behindNote, "physics behind   ");
+        if (notesDoNotFit(0.0f))
+            movingNote.clear();
         // The blade counts stay whole whatever the message.
         const float messageFirst = std::clamp(
             rect.width() - margin - width(movingNote + behindNote + figures.front().text), 0.0f,

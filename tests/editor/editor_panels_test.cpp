@@ -1090,6 +1090,21 @@ TEST(EditorPanels, TheStatusBarMakesRoomForANewMessage) {
     for (const std::string& line : editor.state.transient.messageLog)
         savesLogged += line.find(saved) != std::string::npos ? 1 : 0;
     EXPECT_EQ(savesLogged, 2u) << "each save said";
+    // A narrow window says the notes short, then without "moving" (the viewport's badge says
+    // it): the warning and the blade counts stay whole inside it. Before, at 900 points the
+    // warning ran off the edge mid-word, the blade counts after it.
+    for (const float windowWidth : {900.0f, 700.0f}) {
+        editor.input.screenRect = {{0.0f, 0.0f}, {windowWidth, 720.0f}};
+        const ui::Output& narrow = editor.frame();
+        const std::optional<ui::TextShape> figures = textStarting(narrow, "58942 blades");
+        const std::optional<ui::TextShape> behind = textStarting(narrow, "physics behind");
+        ASSERT_TRUE(figures && behind) << windowWidth;
+        EXPECT_LT(endX(*behind), figures->pos.x);
+        EXPECT_LE(endX(*figures), windowWidth) << figures->text;
+        if (const std::optional<ui::TextShape> moving = textStarting(narrow, "moving")) {
+            EXPECT_LT(endX(*moving), behind->pos.x);
+        }
+    }
 }
 
 // Issue 26 item 4: Help › Keyboard shortcuts shows every key of the editor's table.
