@@ -9,6 +9,7 @@
 #include "mesh/gltf_loader.h"
 #include "project/json_reader.h"
 #include "util/atomic_file.h"
+#include "util/content_digest.h"
 #include "util/path_inside.h"
 
 namespace grass::core {
@@ -89,6 +90,7 @@ Result<LoadedProject> loadProject(const fs::path& path) {
     if (!project)
         return project.error();
     loaded.project = std::move(*project);
+    loaded.fileDigest = contentDigest(*text);
     // A save of this project killed mid-write left its temporary next to the file it was
     // replacing: the next start clears them (the files themselves are whole, old or new).
     removeStaleTemporaries(loaded.folder);

@@ -314,6 +314,9 @@ struct LoadedProject {
     Project project;
     std::filesystem::path folder;
     std::filesystem::path file;
+    // The digest of `file`'s bytes as read (util/content_digest.h), or as the editor last wrote
+    // them: its Save asks before replacing a file another program has changed since.
+    std::optional<std::uint64_t> fileDigest = std::nullopt;
 };
 Result<LoadedProject> loadProject(const std::filesystem::path& path);
 

@@ -249,9 +249,11 @@ std::optional<core::LoadedProject> findAutosave(const core::LoadedProject& loade
     auto side = core::loadProject(file);
     if (!side)
         return std::nullopt;  // half-written or damaged: nothing to offer
-    // Saved as the real project's file, relative to the same folder.
+    // Saved as the real project's file, relative to the same folder; that file as read now is
+    // what a Save of the recovered work replaces.
     side->file = loaded.file;
     side->folder = loaded.folder;
+    side->fileDigest = loaded.fileDigest;
     return std::move(*side);
 }
 

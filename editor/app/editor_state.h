@@ -152,6 +152,9 @@ struct Transient {
     std::filesystem::path recentFile;
     // The "Unsaved changes" window, and what it is about (with the path for Open).
     bool quitDialog = false;
+    // A Save found the project's file changed on disk by another program: the window that asks
+    // whether to replace it is open (panels_changed_on_disk.cpp).
+    bool changedOnDisk = false;
     LeaveAction leaveAction = LeaveAction::Quit;
     std::string leaveOpenPath;
     std::string message;  // last file operation's result, shown in the status bar

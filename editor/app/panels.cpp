@@ -19,6 +19,7 @@
 #include "ui/text_wrap.h"
 #include "ui/ui.h"
 #include "ui/window.h"
+#include "util/content_digest.h"
 
 namespace grass::editor {
 
@@ -337,11 +338,25 @@ render::RenderOptions viewRenderOptions(const EditorState& s) {
     return options;
 }
 
-bool saveTo(EditorState& s, const std::string& file) {
+bool saveTo(EditorState& s, const std::string& file, bool replaceChangedFile) {
     namespace fs = std::filesystem;
     const fs::path path(file);
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
     std::error_code ec;
+    // Another program (a text editor, a second editor window, a checkout) changed the project's
+    // file since it was read or written here: replacing it silently would lose that work. A
+    // file gone from disk has nothing to lose.
+    if (!replaceChangedFile && s.doc.loaded.fileDigest && !s.doc.loaded.file.empty() &&
+        fs::equivalent(path, s.doc.loaded.file, ec)) {
+        if (const std::optional<std::uint64_t> now = fileDigest(path);
+            now && *now != *s.doc.loaded.fileDigest) {
+            s.transient.message = "not saved: " + path.string() +
+                                  " was changed by another program since it was opened here";
+            s.transient.loggedMessage.clear();
+            s.transient.changedOnDisk = true;
+            return false;
+        }
+    }
     fs::create_directories(folder, ec);
     // A refused save says what failed and the way out (a read-only folder, a full disk).
     const auto refuse = [&](const Error& error) {
@@ -371,6 +386,8 @@ bool saveTo(EditorState& s, const std::string& file) {
     removeUnsavedSlot(s.doc.unsavedSlot);
     s.doc.loaded.file = path;
     s.doc.loaded.folder = folder;
+    s.doc.loaded.fileDigest = fileDigest(path);  // what a later Save expects to find
+    s.transient.changedOnDisk = false;
     s.doc.dirty = false;
     s.doc.history.markSaved();
     rememberRecent(s, path);
@@ -458,6 +475,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
     loadingWindow(ctx, central, s);
     fileBrowserWindow(ctx, s);
     quitDialogWindow(ctx, s);
+    changedOnDiskWindow(ctx, s);
     exportWindow(ctx, s);
     shortcutsWindow(ctx, s);
     messagesWindow(ctx, s);

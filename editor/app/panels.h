@@ -32,8 +32,13 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& state);
 
 // Saves to `file` (atomic), updating the state's file, folder and dirty flag; the message says
 // what happened. Into another folder, the project's files (core::projectAssetPaths) are copied
-// along first.
-bool saveTo(EditorState& state, const std::string& file);
+// along first. The project's own file, changed on disk by another program since it was opened
+// or saved here, is not replaced unless `replaceChangedFile`: the "Changed on disk" window asks
+// instead (changedOnDiskWindow).
+bool saveTo(EditorState& state, const std::string& file, bool replaceChangedFile = false);
+// The window a Save refused for a project file changed on disk opens: replace it, save
+// elsewhere, or cancel (panels_changed_on_disk.cpp).
+void changedOnDiskWindow(ui::Context& ctx, EditorState& state);
 // Asks to quit, start a new project or open another (`openPath`): straight away when nothing is
 // unsaved, else through the confirmation window.
 void askLeave(EditorState& state, LeaveAction action, const std::string& openPath = {});

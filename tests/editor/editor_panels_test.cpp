@@ -193,6 +193,68 @@ TEST(EditorPanels, AFailedSaveStaysInTheStatusBarUntilASaveSucceeds) {
     EXPECT_EQ(editor.state.transient.message.rfind("autosaved to ", 0), 0u) << editor.state.transient.message;
 }
 
+// A project file another program changed since it was opened here (a text editor, a second
+// editor window, a checkout) is not replaced by Save without asking: before, Ctrl+S wrote over
+// it and that work was gone. Replace it, Save As… or Cancel.
+TEST(EditorPanels, ASaveAsksBeforeReplacingAProjectFileChangedOnDisk) {
+    const ScratchFolder folder("editor-changed-on-disk");
+    EditorDriver editor(folder.path());
+    const fs::path file = folder.path() / "project.json";
+    const auto text = [&] {
+        std::ifstream in(file);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    ASSERT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    // Another program renames the project in the file.
+    auto theirs = core::loadProject(file);
+    ASSERT_TRUE(theirs.ok());
+    theirs->project.name = "theirs";
+    ASSERT_TRUE(core::saveProject(theirs->project, file).ok());
+    const std::string theirText = text();
+    editor.state.doc.loaded.project.name = "mine";
+    EXPECT_FALSE(editor::saveTo(editor.state, file.string()));
+    EXPECT_EQ(text(), theirText) << "replaced without asking";
+    EXPECT_TRUE(editor.state.transient.changedOnDisk);
+    EXPECT_NE(editor.state.transient.message.find("changed by another program"), std::string::npos)
+        << editor.state.transient.message;
+    // Cancel keeps both; a second Save asks again.
+    editor.click("Cancel");
+    EXPECT_FALSE(editor.state.transient.changedOnDisk);
+    EXPECT_EQ(text(), theirText);
+    EXPECT_FALSE(editor::saveTo(editor.state, file.string()));
+    editor.click("Replace it");
+    EXPECT_FALSE(editor.state.transient.changedOnDisk);
+    auto saved = core::loadProject(file);
+    ASSERT_TRUE(saved.ok());
+    EXPECT_EQ(saved->project.name, "mine");
+    EXPECT_FALSE(editor.state.doc.dirty);
+    // The editor's own save is not a change by another program; a file gone has nothing to lose.
+    editor.state.doc.loaded.project.name = "mine again";
+    EXPECT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    fs::remove(file);
+    EXPECT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    // Save As… from the window: the changed file stays, the browser asks where.
+    theirs->project.name = "theirs again";
+    ASSERT_TRUE(core::saveProject(theirs->project, file).ok());
+    EXPECT_FALSE(editor::saveTo(editor.state, file.string()));
+    editor.click("Save As…");
+    ASSERT_TRUE(editor.state.transient.browser.has_value());
+    EXPECT_EQ(editor.state.transient.browser->purpose(), editor::BrowsePurpose::SaveProject);
+    EXPECT_FALSE(editor.state.transient.changedOnDisk);
+    EXPECT_EQ(core::loadProject(file)->project.name, "theirs again");
+    // Quitting with unsaved changes: "Save and quit" asks too, and replacing the file quits.
+    editor.state.transient.browser.reset();
+    editor.state.doc.dirty = true;
+    editor::askQuit(editor.state);
+    ASSERT_TRUE(editor.state.transient.quitDialog);
+    editor.click("Save and quit");
+    EXPECT_TRUE(editor.state.transient.changedOnDisk);
+    EXPECT_FALSE(editor.state.quitRequested);
+    editor.click("Replace it");
+    EXPECT_TRUE(editor.state.quitRequested);
+    EXPECT_EQ(core::loadProject(file)->project.name, "mine again");
+}
+
 TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
     const ScratchFolder folder("editor-open");
     EditorDriver editor(folder.path());
