@@ -279,7 +279,13 @@ Result<bool> Editor::frame() {
         return true;
     }
     runInput(input, width, height);
-    recordProjectEdit(mState, mUi && mUi->context().activeId().value != 0);
+    const bool widgetActive = mUi && mUi->context().activeId().value != 0;
+    recordProjectEdit(mState, widgetActive);
+    // The project's file edited by another program (a text editor) while nothing here is
+    // unsaved: taken as an edit, which grows the field again below with the others.
+    followProjectFileOnDisk(mState, mFileWatch,
+                            std::chrono::duration<double>(tick - mStartTime).count(),
+                            widgetActive || mState.view.toolDragActive);
     if (applyRequests())
         return false;
     autosaveWhenDue();

@@ -30,6 +30,7 @@
 #include "app/live_scene.h"
 #include "app/mesh_import.h"
 #include "app/panels.h"
+#include "app/project_file_watch.h"
 #include "app/session_stats.h"
 #include "app/view_redraw.h"
 #include "app/window.h"
@@ -228,6 +229,7 @@ private:
     };
     std::optional<OverlayShown> mOverlayShown;
     double mAutosaveDueS = 0.0;
+    ProjectFileWatch mFileWatch;  // project.json edited by another program (a text editor)
     std::optional<double> mPanelsChangeInS;  // the last frame's ui::Output::repaintAfterS
     Clock::time_point mStartTime, mLastStatus, mLastTick;
     int mFramesSinceStatus = 0;  // for the status bar's frame rate

@@ -22,6 +22,7 @@
 #include "app/editor_keys.h"
 #include "app/mesh_import.h"
 #include "app/panels.h"
+#include "app/project_file_watch.h"
 #include "app/viewport_tools.h"
 #include "app/worker_job.h"
 #include "maps/map_image.h"
@@ -253,6 +254,69 @@ TEST(EditorPanels, ASaveAsksBeforeReplacingAProjectFileChangedOnDisk) {
     editor.click("Replace it");
     EXPECT_TRUE(editor.state.quitRequested);
     EXPECT_EQ(core::loadProject(file)->project.name, "mine again");
+}
+
+// The project's file edited in a text editor while the editor has it open: the change is taken
+// as one undoable edit once the file loads, the document counting as saved; with unsaved changes
+// here it is said and left (Save then asks). Before, the editor never looked at the file again.
+TEST(EditorPanels, AProjectFileEditedElsewhereIsTakenAsAnEdit) {
+    const ScratchFolder folder("editor-file-watch");
+    EditorDriver editor(folder.path());
+    const fs::path file = folder.path() / "project.json";
+    ASSERT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    editor::ProjectFileWatch watch;
+    double nowS = 0.0;
+    const auto look = [&] {
+        nowS += editor::PROJECT_FILE_LOOK_S;
+        return editor::followProjectFileOnDisk(editor.state, watch, nowS, false);
+    };
+    EXPECT_FALSE(look()) << "the editor's own save is no change";
+    auto edited = core::loadProject(file);
+    ASSERT_TRUE(edited.ok());
+    const float density = edited->project.layers.front().scatter.density;
+    edited->project.layers.front().scatter.density = density + 5.0f;
+    ASSERT_TRUE(core::saveProject(edited->project, file).ok());
+    // Not while an edit is under way here (a drag, a text entry): taken when it ends.
+    EXPECT_FALSE(editor::followProjectFileOnDisk(editor.state, watch, nowS + 5.0, true));
+    ASSERT_TRUE(look()) << editor.state.transient.message;
+    EXPECT_EQ(editor.state.doc.project().layers.front().scatter.density, density + 5.0f);
+    EXPECT_TRUE(editor.state.rebuildPending) << "the field grows again for it";
+    EXPECT_FALSE(editor.state.doc.dirty) << "the document is the file";
+    EXPECT_NE(editor.state.transient.message.find("on disk"), std::string::npos);
+    EXPECT_FALSE(look()) << "taken once";
+    // A Save after it replaces nothing of the other program's.
+    EXPECT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    EXPECT_FALSE(editor.state.transient.changedOnDisk);
+    // Ctrl+Z goes back to the project before, which is now unsaved.
+    ASSERT_TRUE(editor::undo(editor.state));
+    EXPECT_EQ(editor.state.doc.project().layers.front().scatter.density, density);
+    EXPECT_TRUE(editor.state.doc.dirty);
+    // With unsaved changes here the file is said, not taken, and Save asks before replacing it.
+    edited->project.name = "renamed elsewhere";
+    ASSERT_TRUE(core::saveProject(edited->project, file).ok());
+    EXPECT_FALSE(look());
+    EXPECT_NE(editor.state.doc.project().name, "renamed elsewhere");
+    EXPECT_NE(editor.state.transient.message.find("unsaved changes here are kept"),
+              std::string::npos)
+        << editor.state.transient.message;
+    EXPECT_FALSE(editor::saveTo(editor.state, file.string()));
+    EXPECT_TRUE(editor.state.transient.changedOnDisk);
+    editor.state.transient.changedOnDisk = false;
+    // Back to no unsaved changes (redo): the file is taken.
+    ASSERT_TRUE(editor::redo(editor.state));
+    ASSERT_FALSE(editor.state.doc.dirty);
+    EXPECT_TRUE(look());
+    EXPECT_EQ(editor.state.doc.project().name, "renamed elsewhere");
+    // A file that does not load (half typed) is said with its error and taken once it loads.
+    { std::ofstream(file) << "{\"format\": \"grass-project\", "; }
+    EXPECT_FALSE(look());
+    EXPECT_NE(editor.state.transient.message.find("does not load"), std::string::npos)
+        << editor.state.transient.message;
+    EXPECT_EQ(editor.state.doc.project().name, "renamed elsewhere");
+    edited->project.name = "fixed";
+    ASSERT_TRUE(core::saveProject(edited->project, file).ok());
+    EXPECT_TRUE(look());
+    EXPECT_EQ(editor.state.doc.project().name, "fixed");
 }
 
 TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {

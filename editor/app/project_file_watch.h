@@ -1,0 +1,37 @@
+// The project's file edited by another program while the editor has it open (a text editor: the
+// project format is documented for hand-editing, docs/project-format.md): the editor takes the
+// change as one undoable edit, so the field follows the file as it is saved there, the view and
+// the timeline staying where they are. A document with unsaved changes of its own is left as it
+// is (said once; its Save then asks before replacing the file: panels.h, saveTo); a file that
+// does not load is said with its error, once per version, and taken as soon as it loads.
+// GL-free: the Editor calls it every frame.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+
+#include "app/editor_state.h"
+
+namespace grass::editor {
+
+struct ProjectFileWatch {
+    std::filesystem::path file;  // the file the stamp below is of
+    std::filesystem::file_time_type modified{};
+    std::uintmax_t size = 0;
+    double nextLookS = 0.0;
+    std::optional<std::uint64_t> saidDigest;  // the version last said (not taken)
+};
+
+// How often the file's time and size are looked at; it is read only when they changed.
+inline constexpr double PROJECT_FILE_LOOK_S = 1.0;
+
+// At most every PROJECT_FILE_LOOK_S of `nowS`, and not while `editUnderWay` (a drag, a text
+// entry) or a job replaces or reads the document: when the project's file holds another
+// project than the one last read or written here, takes it as an edit labelled "changes made
+// on disk" (the field re-grows as after any edit; Ctrl+Z goes back) and the document counts as
+// saved. Returns whether it took one.
+bool followProjectFileOnDisk(EditorState& state, ProjectFileWatch& watch, double nowS,
+                             bool editUnderWay);
+
+}  // namespace grass::editor
