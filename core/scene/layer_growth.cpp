@@ -83,6 +83,10 @@ std::string& layerMapFile(GrassLayer& layer, LayerMap which) {
                                       : layer.cutMap;
 }
 
+const std::string& layerMapFile(const GrassLayer& layer, LayerMap which) {
+    return layerMapFile(const_cast<GrassLayer&>(layer), which);
+}
+
 const MapImage& layerMap(const LayerMaps& maps, LayerMap which) {
     return layerMap(const_cast<LayerMaps&>(maps), which);
 }

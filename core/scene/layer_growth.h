@@ -47,6 +47,7 @@ constexpr const char* layerMapName(LayerMap which) {
 }
 // The project's file name of a layer's map (empty: none painted yet).
 std::string& layerMapFile(GrassLayer& layer, LayerMap which);
+const std::string& layerMapFile(const GrassLayer& layer, LayerMap which);
 
 // What a layer's field is grown from, kept next to it so repaints can re-grow parts of it.
 struct LayerSource {

@@ -454,6 +454,10 @@ bool Editor::applyRequests() {
         state.recoveryOffer.reset();
     }
     followMotionEdits();
+    // Files of the field changed on disk: grown again from them, which the project's motion
+    // alone (followMotionEdits) never asks for.
+    if (std::exchange(state.regrowFromDisk, false))
+        state.rebuildPending = true;
     // Re-grow once the edit has ended, not on every frame of a drag. A re-grow still running
     // for an earlier edit is stopped: its field would only be replaced (on a large mesh the
     // edit's field came a whole re-grow later). It ends at its next stage beside the new one,
@@ -561,7 +565,10 @@ void Editor::startRegrow() {
     // An edit of the layers keeps the surface: the field grows on the mesh at hand, not on the
     // file read again (seconds for a large mesh, each edit). The worker copies that mesh; the
     // live scene it reads stays until finishRegrow (nothing else replaces it meanwhile).
-    mRegrowOnSameSurface = mLive.scene && core::sameSurface(mLive.builtFrom, mState.doc.loaded);
+    // A surface file changed on disk (re-exported from a modeller) is read again.
+    const bool surfaceChangedOnDisk = std::exchange(mState.surfaceChangedOnDisk, false);
+    mRegrowOnSameSurface = mLive.scene && !surfaceChangedOnDisk &&
+                           core::sameSurface(mLive.builtFrom, mState.doc.loaded);
     auto work = [loaded = mState.doc.loaded, withPhysics = !mSettings.noPhysics,
                  surface = mRegrowOnSameSurface ? mLive.scene.get() : nullptr](
                     DocumentJob& job) -> Result<GrownDocument> {

@@ -197,6 +197,13 @@ struct EditorState {
     std::uint64_t mapsChanged = 0;
     // The scene must be re-grown from the document once no widget is being dragged.
     bool rebuildPending = false;
+    // The field's files (a map, the surface) were changed on disk: it grows again from them,
+    // whatever the project says (project_file_watch.h); with the surface's file, the re-grow
+    // reads it again instead of growing on the mesh at hand.
+    bool regrowFromDisk = false;
+    bool surfaceChangedOnDisk = false;
+    // A Save wrote the project's files here: the watch of them takes their new times as its own.
+    bool assetsWrittenHere = false;
 
     // The running (or last) export. While it runs the scene must stay as it is: tools, undo and
     // re-grows wait (busy()).

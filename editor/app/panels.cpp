@@ -387,6 +387,7 @@ bool saveTo(EditorState& s, const std::string& file, bool replaceChangedFile) {
     s.doc.loaded.file = path;
     s.doc.loaded.folder = folder;
     s.doc.loaded.fileDigest = fileDigest(path);  // what a later Save expects to find
+    s.assetsWrittenHere = true;                  // the painted maps: no change by another program
     s.transient.changedOnDisk = false;
     s.doc.dirty = false;
     s.doc.history.markSaved();

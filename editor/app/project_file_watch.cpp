@@ -1,15 +1,100 @@
 #include "app/project_file_watch.h"
 
+#include <optional>
 #include <string>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 #include "app/commands.h"
+#include "scene/layer_growth.h"
 #include "util/atomic_file.h"
 #include "util/content_digest.h"
 
 namespace grass::editor {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+std::optional<FileStamp> stampOf(const fs::path& file) {
+    std::error_code timeError;
+    std::error_code sizeError;
+    FileStamp stamp{fs::last_write_time(file, timeError), fs::file_size(file, sizeError)};
+    if (timeError || sizeError)
+        return std::nullopt;  // gone, or being replaced
+    return stamp;
+}
+
+// A file the field is grown from: the surface's glTF, or a layer's map.
+struct WatchedAsset {
+    fs::path path;
+    std::string name;                                           // as the project names it
+    std::optional<std::pair<std::size_t, core::LayerMap>> map;  // none: the surface
+};
+
+std::vector<WatchedAsset> watchedAssets(const core::LoadedProject& loaded) {
+    std::vector<WatchedAsset> assets;
+    const auto add = [&](const std::string& relative,
+                         std::optional<std::pair<std::size_t, core::LayerMap>> map) {
+        if (relative.empty())
+            return;
+        if (auto path = core::resolveAssetPath(loaded.folder, relative, "watch"))
+            assets.push_back({*path, relative, map});
+    };
+    if (loaded.project.mesh.isFile)
+        add(loaded.project.mesh.file, std::nullopt);
+    for (std::size_t i = 0; i < loaded.project.layers.size(); ++i)
+        for (const core::LayerMap map : core::ALL_LAYER_MAPS)
+            add(core::layerMapFile(loaded.project.layers[i], map), std::pair(i, map));
+    return assets;
+}
+
+// The maps and the surface changed on disk since they were last looked at. Returns whether the
+// field is to grow again from them.
+bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
+    if (std::exchange(s.assetsWrittenHere, false))
+        watch.assets.clear();  // a Save wrote the painted maps: stamped afresh below
+    std::vector<std::string> taken;
+    std::vector<std::string> kept;
+    bool surface = false;
+    for (const WatchedAsset& asset : watchedAssets(s.doc.loaded)) {
+        const std::optional<FileStamp> stamp = stampOf(asset.path);
+        if (!stamp)
+            continue;
+        const auto [known, firstSeen] = watch.assets.try_emplace(asset.path, *stamp);
+        if (firstSeen || known->second == *stamp)
+            continue;
+        // Painting here not saved yet: Save writes it over the file, so the field keeps it.
+        if (asset.map && s.doc.paintedMaps.count(*asset.map)) {
+            if (watch.assetsSaid[asset.path] != *stamp)
+                kept.push_back(asset.name);
+            watch.assetsSaid[asset.path] = *stamp;
+            continue;
+        }
+        known->second = *stamp;
+        watch.assetsSaid.erase(asset.path);
+        taken.push_back(asset.name);
+        surface = surface || !asset.map;
+    }
+    if (!kept.empty()) {
+        s.transient.message = kept.front() + (kept.size() > 1 ? " and others" : "") +
+                              " changed on disk: the painting here is kept (Save writes it over)";
+        s.transient.loggedMessage.clear();
+    }
+    if (taken.empty())
+        return false;
+    s.regrowFromDisk = true;
+    s.surfaceChangedOnDisk = s.surfaceChangedOnDisk || surface;
+    s.transient.message =
+        "growing the field again from " + taken.front() +
+        (taken.size() > 1 ? " and " + std::to_string(taken.size() - 1) + " more" : "") +
+        ", changed on disk";
+    s.transient.loggedMessage.clear();
+    return true;
+}
+
+}  // namespace
 
 bool followProjectFileOnDisk(EditorState& s, ProjectFileWatch& watch, double nowS,
                              bool editUnderWay) {
@@ -18,17 +103,13 @@ bool followProjectFileOnDisk(EditorState& s, ProjectFileWatch& watch, double now
         s.transient.changedOnDisk || nowS < watch.nextLookS)
         return false;
     watch.nextLookS = nowS + PROJECT_FILE_LOOK_S;
-    std::error_code timeError;
-    std::error_code sizeError;
-    const fs::file_time_type modified = fs::last_write_time(doc.loaded.file, timeError);
-    const std::uintmax_t size = fs::file_size(doc.loaded.file, sizeError);
-    if (timeError || sizeError)
+    const std::optional<FileStamp> stamp = stampOf(doc.loaded.file);
+    if (!stamp)
         return false;  // gone or being replaced: a Save writes it again
-    if (watch.file == doc.loaded.file && watch.modified == modified && watch.size == size)
-        return false;
+    if (watch.file == doc.loaded.file && watch.stamp == *stamp)
+        return followAssetsOnDisk(s, watch);
     watch.file = doc.loaded.file;
-    watch.modified = modified;
-    watch.size = size;
+    watch.stamp = *stamp;
     // Read and parsed, not loaded (core::loadProject also clears stale temporaries of saves
     // from the project's folders: not a watcher's business while workers copy files there).
     const auto text = readFile(doc.loaded.file, MAX_JSON_FILE_BYTES);
@@ -36,7 +117,7 @@ bool followProjectFileOnDisk(EditorState& s, ProjectFileWatch& watch, double now
         return false;
     const std::optional<std::uint64_t> digest = contentDigest(*text);
     if (digest == doc.loaded.fileDigest)
-        return false;  // the editor's own save, or a touch
+        return followAssetsOnDisk(s, watch);  // the editor's own save, or a touch
     const std::string name = doc.loaded.file.filename().string();
     // Each version of the file is said once, however often it is looked at.
     const auto say = [&](const std::string& message) {

@@ -256,6 +256,17 @@ TEST(EditorPanels, ASaveAsksBeforeReplacingAProjectFileChangedOnDisk) {
     EXPECT_EQ(core::loadProject(file)->project.name, "mine again");
 }
 
+// The project's files looked at as the Editor looks at them, a look a second.
+struct WatchLooks {
+    editor::EditorState& state;
+    editor::ProjectFileWatch watch{};
+    double nowS = 0.0;
+    bool operator()() {
+        nowS += editor::PROJECT_FILE_LOOK_S;
+        return editor::followProjectFileOnDisk(state, watch, nowS, false);
+    }
+};
+
 // The project's file edited in a text editor while the editor has it open: the change is taken
 // as one undoable edit once the file loads, the document counting as saved; with unsaved changes
 // here it is said and left (Save then asks). Before, the editor never looked at the file again.
@@ -264,12 +275,7 @@ TEST(EditorPanels, AProjectFileEditedElsewhereIsTakenAsAnEdit) {
     EditorDriver editor(folder.path());
     const fs::path file = folder.path() / "project.json";
     ASSERT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
-    editor::ProjectFileWatch watch;
-    double nowS = 0.0;
-    const auto look = [&] {
-        nowS += editor::PROJECT_FILE_LOOK_S;
-        return editor::followProjectFileOnDisk(editor.state, watch, nowS, false);
-    };
+    WatchLooks look{editor.state};
     EXPECT_FALSE(look()) << "the editor's own save is no change";
     auto edited = core::loadProject(file);
     ASSERT_TRUE(edited.ok());
@@ -277,7 +283,7 @@ TEST(EditorPanels, AProjectFileEditedElsewhereIsTakenAsAnEdit) {
     edited->project.layers.front().scatter.density = density + 5.0f;
     ASSERT_TRUE(core::saveProject(edited->project, file).ok());
     // Not while an edit is under way here (a drag, a text entry): taken when it ends.
-    EXPECT_FALSE(editor::followProjectFileOnDisk(editor.state, watch, nowS + 5.0, true));
+    EXPECT_FALSE(editor::followProjectFileOnDisk(editor.state, look.watch, look.nowS + 5.0, true));
     ASSERT_TRUE(look()) << editor.state.transient.message;
     EXPECT_EQ(editor.state.doc.project().layers.front().scatter.density, density + 5.0f);
     EXPECT_TRUE(editor.state.rebuildPending) << "the field grows again for it";
@@ -317,6 +323,53 @@ TEST(EditorPanels, AProjectFileEditedElsewhereIsTakenAsAnEdit) {
     ASSERT_TRUE(core::saveProject(edited->project, file).ok());
     EXPECT_TRUE(look());
     EXPECT_EQ(editor.state.doc.project().name, "fixed");
+}
+
+// A map changed on disk (painted in another program, written by `grass paint`) grows the field
+// again from it, and a surface re-exported from a modeller is read again; unsaved painting of
+// that map here is kept and said; the maps a Save writes are not changes by another program.
+TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere) {
+    const ScratchFolder folder("editor-asset-watch");
+    EditorDriver editor(folder.path());
+    fs::copy_file(sourceDir() / "tests/data/gltf/cube.glb", folder.path() / "ground.glb");
+    editor.state.doc.loaded.project.mesh.isFile = true;
+    editor.state.doc.loaded.project.mesh.file = "ground.glb";
+    const fs::path file = folder.path() / "project.json";
+    ASSERT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    WatchLooks look{editor.state};
+    editor.state.regrowFromDisk = false;
+    EXPECT_FALSE(look()) << "first seen: stamped only";
+    const fs::path soil = folder.path() / "maps/soil.png";
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.9f), soil).ok());
+    EXPECT_TRUE(look());
+    EXPECT_TRUE(editor.state.regrowFromDisk);
+    EXPECT_FALSE(editor.state.surfaceChangedOnDisk);
+    EXPECT_NE(editor.state.transient.message.find("maps/soil.png"), std::string::npos)
+        << editor.state.transient.message;
+    EXPECT_FALSE(editor.state.doc.dirty) << "the file is the project's already";
+    editor.state.regrowFromDisk = false;
+    EXPECT_FALSE(look()) << "taken once";
+    // The surface re-exported: read again by the re-grow, not taken from the mesh at hand.
+    fs::copy_file(sourceDir() / "tests/data/gltf/box_meshopt.glb", folder.path() / "ground.glb",
+                  fs::copy_options::overwrite_existing);
+    EXPECT_TRUE(look());
+    EXPECT_TRUE(editor.state.regrowFromDisk);
+    EXPECT_TRUE(editor.state.surfaceChangedOnDisk);
+    editor.state.regrowFromDisk = editor.state.surfaceChangedOnDisk = false;
+    // Painting here not saved: kept and said, once.
+    editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.2f), soil).ok());
+    EXPECT_FALSE(look());
+    EXPECT_FALSE(editor.state.regrowFromDisk);
+    EXPECT_NE(editor.state.transient.message.find("painting here is kept"), std::string::npos)
+        << editor.state.transient.message;
+    editor.state.transient.message = "later";
+    EXPECT_FALSE(look());
+    EXPECT_EQ(editor.state.transient.message, "later") << "said once";
+    // The Save writes the painting over it: its own write is no change.
+    ASSERT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    EXPECT_FALSE(look());
+    EXPECT_FALSE(editor.state.regrowFromDisk);
 }
 
 TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {

@@ -9,12 +9,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "editor_runs.h"
 #include "gl_context_fixture.h"
+#include "maps/map_image.h"
 #include "project/project.h"
 #include "support/test_paths.h"
 
@@ -308,6 +311,47 @@ TEST(EditorTime, AnEditWhileTheFieldGrowsAgainStopsThatGrowing) {
         run.log.find("grew the field again: " + std::to_string(2 * run.firstBlades) + " blades"),
         std::string::npos)
         << run.log;
+}
+
+// Files of the project changed by another program while the editor plays: project.json saved
+// from a text editor (density 20 → 40, and a density map named) is taken as an edit, and the
+// field grows again with twice the blades; then that map saved again at half (as `grass paint`
+// or an image editor saves one; copies prepared before, each moved into place as an editor
+// saves) grows it again from the map, with about half. Before, the editor never looked at its
+// files again once open.
+TEST(EditorTime, FilesChangedByAnotherProgramAreFollowed) {
+    const auto dir = scratchDir("editor_follow_files");
+    writeTinyProject(dir, "tiny", 900, 560);
+    std::filesystem::create_directories(dir / "maps");
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 1.0f), dir / "maps/d.png").ok());
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.5f), dir / "half.png").ok());
+    auto edited = core::loadProject(dir);
+    ASSERT_TRUE(edited.ok()) << edited.error().str();
+    edited->project.layers.front().scatter.density *= 2.0f;
+    edited->project.layers.front().densityMap = "maps/d.png";
+    ASSERT_TRUE(core::saveProject(edited->project, dir / "edited.json").ok());
+    std::ofstream(dir / "script.txt") << "wait-s 7\n";
+    const std::string d = dir.string();
+    const std::string inner = "(sleep 2; cp " + d + "/edited.json " + d + "/p.tmp && mv " + d +
+                              "/p.tmp " + d + "/project.json; sleep 2.5; cp " + d + "/half.png " +
+                              d + "/m.tmp && mv " + d + "/m.tmp " + d + "/maps/d.png) & " +
+                              GRASS_EDITOR_EXE + " " + d + " --no-physics --wall-clock --script " +
+                              d + "/script.txt > " + d + "/log.txt 2>&1";
+    const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' sh -c '" + inner + "'";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    std::ifstream in(dir / "log.txt");
+    const std::string log((std::istreambuf_iterator<char>(in)), {});
+    const long first = bladesIn(log, ", ([0-9]+) blades, geometry ");
+    std::vector<long> regrown;
+    const std::regex grew("grew the field again: ([0-9]+) blades");
+    for (auto it = std::sregex_iterator(log.begin(), log.end(), grew); it != std::sregex_iterator();
+         ++it)
+        regrown.push_back(std::stol((*it)[1]));
+    ASSERT_GT(first, 0) << log;
+    ASSERT_EQ(regrown.size(), 2u) << log;
+    EXPECT_EQ(regrown[0], 2 * first) << log;
+    EXPECT_GT(regrown[1], regrown[0] / 4) << log;
+    EXPECT_LT(regrown[1], regrown[0] * 3 / 4) << "the half map: " << log;
 }
 
 #ifdef GRASS_CLOSE_WINDOW_EXE
