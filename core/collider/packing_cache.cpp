@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "util/atomic_file.h"
+#include "util/content_digest.h"
 #include "util/json_text.h"
 
 namespace grass::core {
@@ -20,20 +21,17 @@ using Json = nlohmann::ordered_json;
 // 4096 spheres take about 300 KB; anything far larger is not ours.
 constexpr std::uintmax_t MAX_CACHE_BYTES = 16u << 20u;
 
+// FNV-1a (util/content_digest.h) over pieces of several kinds.
 class Fnv1a {
 public:
     void bytes(const void* data, std::size_t size) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i) {
-            mHash ^= p[i];
-            mHash *= 0x100000001B3ULL;
-        }
+        mHash = contentDigest(std::string_view(static_cast<const char*>(data), size), mHash);
     }
     void u64(std::uint64_t value) { bytes(&value, sizeof value); }
     std::uint64_t value() const { return mHash; }
 
 private:
-    std::uint64_t mHash = 0xCBF29CE484222325ULL;
+    std::uint64_t mHash = FNV1A_OFFSET;
 };
 
 const Json* member(const Json& object, const char* name) {

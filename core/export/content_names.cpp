@@ -18,7 +18,6 @@ using nlohmann::json;
 namespace {
 
 constexpr std::size_t HASH_DIGITS = 16;
-constexpr std::uint64_t FNV_PRIME = 1099511628211ull;
 
 bool isLowerHex(char c) {
     return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
@@ -45,16 +44,12 @@ bool isEntryPoint(const fs::path& file) {
 }  // namespace
 
 std::uint64_t contentHash(std::span<const std::byte> bytes, std::uint64_t seed) {
-    std::uint64_t hash = seed;
-    for (const std::byte b : bytes) {
-        hash ^= static_cast<std::uint64_t>(b);
-        hash *= FNV_PRIME;
-    }
-    return hash;
+    return contentDigest(
+        std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), seed);
 }
 
 std::uint64_t contentHash(std::string_view bytes, std::uint64_t seed) {
-    return contentHash(std::as_bytes(std::span(bytes.data(), bytes.size())), seed);
+    return contentDigest(bytes, seed);
 }
 
 std::string contentAddressedName(std::string_view prefix, std::uint64_t hash,

@@ -13,10 +13,13 @@
 #include <string>
 #include <string_view>
 
+#include "util/content_digest.h"
+
 namespace grass::core {
 
-// 64-bit FNV-1a, continued from `seed` (chain calls to hash several pieces as one).
-inline constexpr std::uint64_t FNV_OFFSET = 14695981039346656037ull;
+// 64-bit FNV-1a, continued from `seed` (chain calls to hash several pieces as one):
+// util/content_digest.h's.
+inline constexpr std::uint64_t FNV_OFFSET = FNV1A_OFFSET;
 std::uint64_t contentHash(std::span<const std::byte> bytes, std::uint64_t seed = FNV_OFFSET);
 std::uint64_t contentHash(std::string_view bytes, std::uint64_t seed = FNV_OFFSET);
 

@@ -4,11 +4,12 @@
 
 namespace grass {
 
-std::uint64_t contentDigest(std::string_view bytes) {
-    std::uint64_t digest = 0xcbf29ce484222325ULL;  // FNV-1a 64's offset basis and prime
+std::uint64_t contentDigest(std::string_view bytes, std::uint64_t seed) {
+    constexpr std::uint64_t FNV1A_PRIME = 1099511628211ull;
+    std::uint64_t digest = seed;
     for (const char byte : bytes) {
         digest ^= static_cast<unsigned char>(byte);
-        digest *= 0x100000001b3ULL;
+        digest *= FNV1A_PRIME;
     }
     return digest;
 }

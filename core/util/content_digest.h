@@ -12,7 +12,11 @@
 
 namespace grass {
 
-std::uint64_t contentDigest(std::string_view bytes);
+// 64-bit FNV-1a of `bytes`, continued from `seed` (chain calls to hash several pieces as one):
+// the one implementation the export's content-addressed names and the sphere-packing cache's
+// key use too.
+inline constexpr std::uint64_t FNV1A_OFFSET = 14695981039346656037ull;
+std::uint64_t contentDigest(std::string_view bytes, std::uint64_t seed = FNV1A_OFFSET);
 
 // The digest of the file's bytes, or none when it cannot be read (gone, not a regular file,
 // over the JSON cap).

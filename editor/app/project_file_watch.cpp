@@ -1,5 +1,6 @@
 #include "app/project_file_watch.h"
 
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -16,6 +17,14 @@ namespace grass::editor {
 namespace fs = std::filesystem;
 
 namespace {
+
+// Said in the status line and on the terminal: a refused file's error is long, and the status
+// line cuts it (Help › Messages has it whole too).
+void tell(EditorState& s, std::string message) {
+    std::fprintf(stderr, "grass-editor: %s\n", message.c_str());
+    s.transient.message = std::move(message);
+    s.transient.loggedMessage.clear();
+}
 
 std::optional<FileStamp> stampOf(const fs::path& file) {
     std::error_code timeError;
@@ -78,19 +87,16 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
         surface = surface || !asset.map;
     }
     if (!kept.empty()) {
-        s.transient.message = kept.front() + (kept.size() > 1 ? " and others" : "") +
-                              " changed on disk: the painting here is kept (Save writes it over)";
-        s.transient.loggedMessage.clear();
+        tell(s, kept.front() + (kept.size() > 1 ? " and others" : "") +
+                    " changed on disk: the painting here is kept (Save writes it over)");
     }
     if (taken.empty())
         return false;
     s.regrowFromDisk = true;
     s.surfaceChangedOnDisk = s.surfaceChangedOnDisk || surface;
-    s.transient.message =
-        "growing the field again from " + taken.front() +
-        (taken.size() > 1 ? " and " + std::to_string(taken.size() - 1) + " more" : "") +
-        ", changed on disk";
-    s.transient.loggedMessage.clear();
+    tell(s, "growing the field again from " + taken.front() +
+                (taken.size() > 1 ? " and " + std::to_string(taken.size() - 1) + " more" : "") +
+                ", changed on disk");
     return true;
 }
 
@@ -123,8 +129,7 @@ bool followProjectFileOnDisk(EditorState& s, ProjectFileWatch& watch, double now
     const auto say = [&](const std::string& message) {
         if (digest == watch.saidDigest)
             return;
-        s.transient.message = message;
-        s.transient.loggedMessage.clear();
+        tell(s, message);
         watch.saidDigest = digest;
     };
     if (doc.dirty || doc.editChanged) {
@@ -149,8 +154,7 @@ bool followProjectFileOnDisk(EditorState& s, ProjectFileWatch& watch, double now
     // The document is the file again.
     doc.dirty = false;
     doc.history.markSaved();
-    s.transient.message = "took the changes made to " + name + " on disk (Ctrl+Z undoes them)";
-    s.transient.loggedMessage.clear();
+    tell(s, "took the changes made to " + name + " on disk (Ctrl+Z undoes them)");
     return true;
 }
 

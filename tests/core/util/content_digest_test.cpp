@@ -28,6 +28,15 @@ TEST(ContentDigest, AnyChangedByteChangesItAndTheSameBytesKeepIt) {
     EXPECT_NE(contentDigest(""), contentDigest(std::string(1, '\0')));
 }
 
+// FNV-1a 64's published test vectors: the export's content-addressed names and the packing
+// cache's keys, which use this digest, stay those already on users' disks.
+TEST(ContentDigest, IsFnv1a64AndChainsPieces) {
+    EXPECT_EQ(contentDigest(""), 0xcbf29ce484222325ULL);
+    EXPECT_EQ(contentDigest("a"), 0xaf63dc4c8601ec8cULL);
+    EXPECT_EQ(contentDigest("foobar"), 0x85944171f73967e8ULL);
+    EXPECT_EQ(contentDigest("bar", contentDigest("foo")), contentDigest("foobar"));
+}
+
 TEST(ContentDigest, ALoadedProjectRemembersTheBytesItWasReadFrom) {
     const ScratchFolder folder("content-digest");
     const auto file = folder.path() / "project.json";
