@@ -59,6 +59,13 @@ std::vector<WatchedAsset> watchedAssets(const core::LoadedProject& loaded) {
     return assets;
 }
 
+// The maps and the surface as they are now: what a re-grow about to start reads.
+void stampAssets(const core::LoadedProject& loaded, ProjectFileWatch& watch) {
+    for (const WatchedAsset& asset : watchedAssets(loaded))
+        if (const std::optional<FileStamp> stamp = stampOf(asset.path))
+            watch.assets[asset.path] = *stamp;
+}
+
 // The maps and the surface changed on disk since they were last looked at. Returns whether the
 // field is to grow again from them.
 bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
@@ -151,6 +158,9 @@ bool followProjectFileOnDisk(EditorState& s, ProjectFileWatch& watch, double now
     apply(s, EditProject{.after = std::move(*project),
                          .effect = EditEffect::Regrow,
                          .label = "changes made on disk"});
+    // The maps it names are read by the re-grow as they are now: a map changed after this
+    // look is a change of its own (first seen a second later, it would pass unnoticed).
+    stampAssets(doc.loaded, watch);
     // The document is the file again.
     doc.dirty = false;
     doc.history.markSaved();

@@ -370,6 +370,19 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     ASSERT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
     EXPECT_FALSE(look());
     EXPECT_FALSE(editor.state.regrowFromDisk);
+    // A map that project.json, edited elsewhere, names anew is the file the re-grow reads: saved
+    // again right after, that is a change too (stamped when the edit is taken, not a look later).
+    const fs::path light = folder.path() / "maps/light.png";
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.6f), light).ok());
+    auto edited = core::loadProject(file);
+    ASSERT_TRUE(edited.ok());
+    edited->project.layers.front().lightMap = "maps/light.png";
+    ASSERT_TRUE(core::saveProject(edited->project, file).ok());
+    ASSERT_TRUE(look()) << editor.state.transient.message;
+    editor.state.regrowFromDisk = false;
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.3f), light).ok());
+    EXPECT_TRUE(look());
+    EXPECT_TRUE(editor.state.regrowFromDisk);
 }
 
 TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {

@@ -330,11 +330,18 @@ TEST(EditorTime, FilesChangedByAnotherProgramAreFollowed) {
     edited->project.layers.front().scatter.density *= 2.0f;
     edited->project.layers.front().densityMap = "maps/d.png";
     ASSERT_TRUE(core::saveProject(edited->project, dir / "edited.json").ok());
-    std::ofstream(dir / "script.txt") << "wait-s 7\n";
+    std::ofstream(dir / "script.txt") << "wait-s 10\n";
     const std::string d = dir.string();
-    const std::string inner = "(sleep 2; cp " + d + "/edited.json " + d + "/p.tmp && mv " + d +
-                              "/p.tmp " + d + "/project.json; sleep 2.5; cp " + d + "/half.png " +
-                              d + "/m.tmp && mv " + d + "/m.tmp " + d + "/maps/d.png) & " +
+    // Each change once the editor has shown the field before it (its log line), so that a slow
+    // start under load cannot read the edited file first.
+    const auto after = [&](const std::string& line) {
+        return "n=0; until grep -q \"" + line + "\" " + d +
+               "/log.txt || [ $n -ge 60 ]; do sleep 0.25; n=$((n+1)); done; sleep 1.5; ";
+    };
+    const std::string inner = "(" + after("blades, geometry") + "cp " + d + "/edited.json " + d +
+                              "/p.tmp && mv " + d + "/p.tmp " + d + "/project.json; " +
+                              after("grew the field again") + "cp " + d + "/half.png " + d +
+                              "/m.tmp && mv " + d + "/m.tmp " + d + "/maps/d.png) & " +
                               GRASS_EDITOR_EXE + " " + d + " --no-physics --wall-clock --script " +
                               d + "/script.txt > " + d + "/log.txt 2>&1";
     const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' sh -c '" + inner + "'";
