@@ -1,6 +1,7 @@
 // The Editor's part of File › New from mesh…, Import mesh… and Import map image… (and of dropped
 // files): what needs the live field and the camera. The choice of paths and the copying are
 // mesh_import.h's, the map's pixels edit_actions.h's.
+#include <cstdio>
 #include <filesystem>
 #include <utility>
 
@@ -106,8 +107,15 @@ void Editor::adoptImportedMesh(GrownDocument imported, const fs::path& file) {
     adoptLive(std::move(*live));
     // Another surface, another place and size: the view moves to it.
     frameLiveSurface();
-    s.transient.message =
-        "imported " + file.string() + (imported.note.empty() ? "" : "; " + imported.note);
+    // Blades tall for the new surface are said before what was copied, which the status line
+    // would cut first, and on the terminal.
+    const std::string size =
+        bladeSizeNote(s.doc.project(), glm::length(mLive.scene->bounds.size()));
+    if (!size.empty())
+        std::fprintf(stderr, "grass-editor: %s: %s\n", file.filename().string().c_str(),
+                     size.c_str());
+    s.transient.message = "imported " + file.string() + (size.empty() ? "" : "; " + size) +
+                          (imported.note.empty() ? "" : "; " + imported.note);
 }
 
 }  // namespace grass::editor

@@ -276,4 +276,18 @@ Result<core::LoadedProject> projectWithImportedMesh(const core::LoadedProject& l
     return next;
 }
 
+std::string bladeSizeNote(const core::Project& project, float surfaceDiagonalM) {
+    float tallest = 0.0f;
+    for (const core::GrassLayer& layer : project.layers)
+        tallest = std::max(tallest, layer.scatter.blade.heightMax);
+    if (!(surfaceDiagonalM > 0.0f) || !(tallest > 0.1f * surfaceDiagonalM))
+        return {};
+    char note[200];
+    std::snprintf(note, sizeof note,
+                  "the blades, up to %.3g m, are tall for a surface %.3g m across: lower the "
+                  "layers' height, or File > New from mesh… sizes a field to it",
+                  static_cast<double>(tallest), static_cast<double>(surfaceDiagonalM));
+    return note;
+}
+
 }  // namespace grass::editor

@@ -269,5 +269,22 @@ TEST(MeshImport, CopyingAGltfTakesItsBuffersAndImagesAlong) {
     EXPECT_EQ(editor::assetFileSet(sourceDir() / STONE).size(), 3u);
 }
 
+// Import mesh… keeps the layers: blades tall for the new surface are said with the way out.
+// The meadow's (0.3–0.6 m) on Blender's Suzanne (bounds 3.67 m across) stood out as spikes
+// without a word; on the meadow's own 20 m hills, or a terrain, nothing is said.
+TEST(MeshImport, BladesTallForTheImportedSurfaceAreSaid) {
+    core::Project project;
+    project.layers.resize(2);
+    project.layers[0].scatter.blade.heightMax = 0.2f;
+    project.layers[1].scatter.blade.heightMax = 0.6f;
+    const std::string note = editor::bladeSizeNote(project, 3.67f);
+    EXPECT_NE(note.find("up to 0.6 m"), std::string::npos) << note;
+    EXPECT_NE(note.find("3.67 m across"), std::string::npos) << note;
+    EXPECT_NE(note.find("New from mesh"), std::string::npos) << note;
+    EXPECT_EQ(editor::bladeSizeNote(project, 28.3f), "");
+    EXPECT_EQ(editor::bladeSizeNote(project, 6.1f), "") << "a tenth of the diagonal is allowed";
+    EXPECT_EQ(editor::bladeSizeNote(project, 0.0f), "");
+}
+
 }  // namespace
 }  // namespace grass::test
