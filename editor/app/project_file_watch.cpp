@@ -35,27 +35,29 @@ std::optional<FileStamp> stampOf(const fs::path& file) {
     return stamp;
 }
 
-// A file the field is grown from: the surface's glTF, or a layer's map.
+// A file the field is grown from: the surface's glTF, a layer's map, the billboards' texture.
 struct WatchedAsset {
     fs::path path;
     std::string name;                                           // as the project names it
-    std::optional<std::pair<std::size_t, core::LayerMap>> map;  // none: the surface
+    std::optional<std::pair<std::size_t, core::LayerMap>> map;  // a layer's map
+    bool surface = false;
 };
 
 std::vector<WatchedAsset> watchedAssets(const core::LoadedProject& loaded) {
     std::vector<WatchedAsset> assets;
     const auto add = [&](const std::string& relative,
-                         std::optional<std::pair<std::size_t, core::LayerMap>> map) {
+                         std::optional<std::pair<std::size_t, core::LayerMap>> map, bool surface) {
         if (relative.empty())
             return;
         if (auto path = core::resolveAssetPath(loaded.folder, relative, "watch"))
-            assets.push_back({*path, relative, map});
+            assets.push_back({*path, relative, map, surface});
     };
     if (loaded.project.mesh.isFile)
-        add(loaded.project.mesh.file, std::nullopt);
+        add(loaded.project.mesh.file, std::nullopt, true);
     for (std::size_t i = 0; i < loaded.project.layers.size(); ++i)
         for (const core::LayerMap map : core::ALL_LAYER_MAPS)
-            add(core::layerMapFile(loaded.project.layers[i], map), std::pair(i, map));
+            add(core::layerMapFile(loaded.project.layers[i], map), std::pair(i, map), false);
+    add(loaded.project.billboards.texture, std::nullopt, false);
     return assets;
 }
 
@@ -91,7 +93,7 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
         known->second = *stamp;
         watch.assetsSaid.erase(asset.path);
         taken.push_back(asset.name);
-        surface = surface || !asset.map;
+        surface = surface || asset.surface;
     }
     if (!kept.empty()) {
         tell(s, kept.front() + (kept.size() > 1 ? " and others" : "") +

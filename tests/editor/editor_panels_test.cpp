@@ -383,6 +383,19 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.3f), light).ok());
     EXPECT_TRUE(look());
     EXPECT_TRUE(editor.state.regrowFromDisk);
+    // The billboards' texture repainted: grown again too (buildScene reads it), on the same
+    // surface.
+    editor.state.regrowFromDisk = editor.state.surfaceChangedOnDisk = false;
+    const fs::path texture = folder.path() / "tuft.png";
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.5f), texture).ok());
+    edited->project.billboards.texture = "tuft.png";
+    ASSERT_TRUE(core::saveProject(edited->project, file).ok());
+    ASSERT_TRUE(look());
+    editor.state.regrowFromDisk = false;
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.8f), texture).ok());
+    EXPECT_TRUE(look());
+    EXPECT_TRUE(editor.state.regrowFromDisk);
+    EXPECT_FALSE(editor.state.surfaceChangedOnDisk);
 }
 
 TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
