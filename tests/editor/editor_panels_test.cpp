@@ -35,6 +35,7 @@
 #include "support/test_fonts.h"
 #include "support/test_paths.h"
 #include "ui/font.h"
+#include "util/atomic_file.h"
 
 namespace grass::test {
 namespace {
@@ -202,8 +203,8 @@ TEST(EditorPanels, ASaveAsksBeforeReplacingAProjectFileChangedOnDisk) {
     EditorDriver editor(folder.path());
     const fs::path file = folder.path() / "project.json";
     const auto text = [&] {
-        std::ifstream in(file);
-        return std::string(std::istreambuf_iterator<char>(in), {});
+        auto bytes = readFile(file);
+        return bytes.ok() ? *bytes : std::string();
     };
     ASSERT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
     // Another program renames the project in the file.
