@@ -48,6 +48,9 @@ struct Document {
     bool editRegrows = false;
     // Maps painted since the last save, by layer; saving writes them (edit_actions.h).
     std::set<std::pair<std::size_t, core::LayerMap>> paintedMaps;
+    // The files of painted maps another program changed since (project_file_watch.h): a Save
+    // asks before writing the painting over them (saveTo). Cleared when the maps are written.
+    std::set<std::filesystem::path> paintedMapsChangedOnDisk;
     // Painted maps waiting, by layer name, for their layer to come (back): those of a removed
     // layer until an undo restores it, and those a duplicate starts from (edit_actions.h).
     std::map<std::pair<std::string, core::LayerMap>, core::MapImage> waitingMaps;
@@ -152,9 +155,11 @@ struct Transient {
     std::filesystem::path recentFile;
     // The "Unsaved changes" window, and what it is about (with the path for Open).
     bool quitDialog = false;
-    // A Save found the project's file changed on disk by another program: the window that asks
-    // whether to replace it is open (panels_changed_on_disk.cpp).
+    // A Save found the project's file, or a painted map's, changed on disk by another program:
+    // the window that asks whether to replace them is open (panels_changed_on_disk.cpp), naming
+    // the files ("… was changed by another program …").
     bool changedOnDisk = false;
+    std::string changedOnDiskSaid;
     LeaveAction leaveAction = LeaveAction::Quit;
     std::string leaveOpenPath;
     std::string message;  // last file operation's result, shown in the status bar
@@ -170,6 +175,10 @@ struct Transient {
     // A failed save stays on screen: routine messages (autosaved) do not replace it until a
     // save succeeds.
     bool messageIsSaveError = false;
+    // A message to act on that is not a failed save (the project's file edited elsewhere does
+    // not load): drawn in warning orange as long as it is the message shown, like a failed save,
+    // without holding off the routine messages after it.
+    std::string warningMessage;
     // File → Export…: the dialog's choices.
     bool exportDialog = false;
     bool shortcutsWindow = false;  // Help › Keyboard shortcuts

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "ui/menu.h"
 #include "ui/text_edit.h"
@@ -260,10 +261,10 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
         if (!s.transient.message.empty() && room >= LEAST_MESSAGE_WIDTH) {
             const std::string shownText =
                 ui::elideText(ctx.fonts(), style.textSizePt, s.transient.message, room);
-            const ui::Response shown = row.coloredLabel(shownText + "   ",
-                                                        s.transient.messageIsSaveError
-                                                            ? ui::Color32::rgb(255, 150, 60)
-                                                            : style.textWeak);
+            const bool warning =
+                s.transient.messageIsSaveError || s.transient.message == s.transient.warningMessage;
+            const ui::Response shown = row.coloredLabel(
+                shownText + "   ", warning ? ui::Color32::rgb(255, 150, 60) : style.textWeak);
             ui::Response click = row.interact(shown.rect(), row.makeId("message"),
                                               ui::Sense::clickOnly());
             if (click.onHoverText("Click to see every message in full").clicked())
@@ -343,15 +344,30 @@ bool saveTo(EditorState& s, const std::string& file, bool replaceChangedFile) {
     const fs::path path(file);
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
     std::error_code ec;
-    // Another program (a text editor, a second editor window, a checkout) changed the project's
-    // file since it was read or written here: replacing it silently would lose that work. A
-    // file gone from disk has nothing to lose.
-    if (!replaceChangedFile && s.doc.loaded.fileDigest && !s.doc.loaded.file.empty() &&
-        fs::equivalent(path, s.doc.loaded.file, ec)) {
-        if (const std::optional<std::uint64_t> now = fileDigest(path);
-            now && *now != *s.doc.loaded.fileDigest) {
-            s.transient.message = "not saved: " + path.string() +
-                                  " was changed by another program since it was opened here";
+    // Another program (a text editor, a second editor window, a checkout, an image editor)
+    // changed the project's file, or a map painted here, since it was read or written here:
+    // replacing it silently would lose that work. A file gone from disk has nothing to lose.
+    if (!replaceChangedFile) {
+        std::vector<std::string> changed;
+        if (s.doc.loaded.fileDigest && !s.doc.loaded.file.empty() &&
+            fs::equivalent(path, s.doc.loaded.file, ec)) {
+            if (const std::optional<std::uint64_t> now = fileDigest(path);
+                now && *now != *s.doc.loaded.fileDigest)
+                changed.push_back(path.string());
+        }
+        // Saved elsewhere, the painted maps go to new files.
+        if (!s.doc.loaded.folder.empty() && fs::equivalent(folder, s.doc.loaded.folder, ec))
+            for (const fs::path& map : s.doc.paintedMapsChangedOnDisk)
+                if (fs::exists(map, ec))
+                    changed.push_back(map.string());
+        if (!changed.empty()) {
+            std::string& said = s.transient.changedOnDiskSaid;
+            said = changed.front();
+            for (std::size_t i = 1; i < changed.size(); ++i)
+                said += (i + 1 == changed.size() ? " and " : ", ") + changed[i];
+            said += std::string(changed.size() > 1 ? " were" : " was") +
+                    " changed by another program since it was opened or saved here";
+            s.transient.message = "not saved: " + said;
             s.transient.loggedMessage.clear();
             s.transient.changedOnDisk = true;
             return false;

@@ -1,7 +1,7 @@
-// The project's file changed on disk since it was opened or saved here (another program wrote
-// it: a text editor, a second editor window, a checkout): a Save asks before replacing it, as a
-// text editor does, instead of losing that work without a word. Replace it, save elsewhere, or
-// keep both as they are.
+// The project's file, or a map painted here, changed on disk since it was opened or saved here
+// (another program wrote it: a text editor, a second editor window, a checkout, an image
+// editor): a Save asks before replacing it, as a text editor does, instead of losing that work
+// without a word. Replace it, save elsewhere, or keep both as they are.
 #include <string>
 
 #include "app/panels.h"
@@ -15,9 +15,8 @@ void changedOnDiskWindow(ui::Context& ctx, EditorState& s) {
     if (!s.transient.changedOnDisk)
         return;
     const ui::Rect screen = ctx.screenRect();
-    const std::string said = s.doc.loaded.file.string() +
-                             " was changed by another program since it was opened or saved here. "
-                             "Saving replaces those changes with the project shown.";
+    const std::string said =
+        s.transient.changedOnDiskSaid + ". Saving replaces those changes with the project shown.";
     // Tall enough for the text as it wraps (a long path takes lines of its own) and the buttons.
     constexpr float WIDTH = 460.0f;
     const ui::Style& style = ctx.style();

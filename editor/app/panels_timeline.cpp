@@ -111,10 +111,18 @@ void timelineStrip(ui::Context& ctx, ui::Rect rect, EditorState& s) {
     const std::vector<core::OwnedKey> keys = core::ownedKeys(s.doc.project());
     ui.horizontal([&](ui::Ui& row) {
         transportRow(row, s);
+        // The range and the key count as the room left allows: cut at a narrow window's edge,
+        // the line read "0.0" (at 800 points).
         char range[64];
         std::snprintf(range, sizeof range, "   %.2f – %.2f s, %zu keys", s.view.timeline.startS(),
                       s.view.timeline.endS(), keys.size());
-        row.coloredLabel(range, style.textWeak);
+        const auto fits = [&](const char* text) {
+            return ctx.fonts().textSize(text, style.textSizePt).x <= row.availableWidth();
+        };
+        if (!fits(range))
+            std::snprintf(range, sizeof range, "   %zu keys", keys.size());
+        if (fits(range))
+            row.coloredLabel(range, style.textWeak);
     });
     drawTrack(ui, s, keys);
     ui.popId();

@@ -35,7 +35,8 @@ std::optional<FileStamp> stampOf(const fs::path& file) {
     return stamp;
 }
 
-// A file the field is grown from: the surface's glTF, a layer's map, the billboards' texture.
+// A file the field is grown from: the surface's glTF, a layer's map, the billboards' texture, a
+// mesh collider's glTF.
 struct WatchedAsset {
     fs::path path;
     std::string name;                                           // as the project names it
@@ -58,6 +59,11 @@ std::vector<WatchedAsset> watchedAssets(const core::LoadedProject& loaded) {
         for (const core::LayerMap map : core::ALL_LAYER_MAPS)
             add(core::layerMapFile(loaded.project.layers[i], map), std::pair(i, map), false);
     add(loaded.project.billboards.texture, std::nullopt, false);
+    // A re-grow reads a collider's mesh again for its prop and packs it again (the packing cache
+    // is keyed by the file's bytes: core/collider/packing_cache.h).
+    for (const core::ColliderDesc& collider : loaded.project.colliders)
+        if (collider.shape == core::ColliderShape::Mesh)
+            add(collider.file, std::nullopt, false);
     return assets;
 }
 
@@ -83,11 +89,13 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
         const auto [known, firstSeen] = watch.assets.try_emplace(asset.path, *stamp);
         if (firstSeen || known->second == *stamp)
             continue;
-        // Painting here not saved yet: Save writes it over the file, so the field keeps it.
+        // Painting here not saved yet: the field keeps it, and a Save asks before writing it
+        // over the file.
         if (asset.map && s.doc.paintedMaps.count(*asset.map)) {
             if (watch.assetsSaid[asset.path] != *stamp)
                 kept.push_back(asset.name);
             watch.assetsSaid[asset.path] = *stamp;
+            s.doc.paintedMapsChangedOnDisk.insert(asset.path);
             continue;
         }
         known->second = *stamp;
@@ -96,8 +104,9 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
         surface = surface || asset.surface;
     }
     if (!kept.empty()) {
-        tell(s, kept.front() + (kept.size() > 1 ? " and others" : "") +
-                    " changed on disk: the painting here is kept (Save writes it over)");
+        tell(s,
+             kept.front() + (kept.size() > 1 ? " and others" : "") +
+                 " changed on disk: the painting here is kept (Save asks before writing it over)");
     }
     if (taken.empty())
         return false;
@@ -150,7 +159,10 @@ bool followProjectFileOnDisk(EditorState& s, ProjectFileWatch& watch, double now
     }
     auto project = core::parseProject(*text, doc.loaded.file.string());
     if (!project) {
-        say(name + " was changed on disk but does not load: " + project.error().str());
+        const std::string said =
+            name + " was changed on disk but does not load: " + project.error().str();
+        say(said);
+        s.transient.warningMessage = said;  // to be fixed there: said in orange while shown
         return false;
     }
     doc.loaded.fileDigest = digest;

@@ -28,12 +28,13 @@ struct ProjectFileWatch {
     FileStamp stamp;
     double nextLookS = 0.0;
     std::optional<std::uint64_t> saidDigest;  // the version last said (not taken)
-    // The surface's glTF file, the layers' maps and the billboards' texture as last looked at,
-    // by path; a file first seen is only stamped. A map changed on disk (painted in another
-    // program, written by `grass paint`) grows the field again from it, unless the editor holds
-    // unsaved painting of that map (then it is said, and Save writes the painting over it); a
-    // changed surface is read again. None is an undo step: the editor keeps no copy of the file
-    // as it was. (Mesh colliders' files are not followed: their props and packings stay.)
+    // The surface's glTF file, the layers' maps, the billboards' texture and the mesh colliders'
+    // glTF files as last looked at, by path; a file first seen is only stamped. A map changed on
+    // disk (painted in another program, written by `grass paint`) grows the field again from it,
+    // unless the editor holds unsaved painting of that map (then it is said, and Save asks
+    // before writing the painting over it); a changed surface is read again, a changed collider
+    // mesh made into its prop and packed again. None is an undo step: the editor keeps no copy
+    // of the file as it was.
     std::map<std::filesystem::path, FileStamp> assets;
     std::map<std::filesystem::path, FileStamp> assetsSaid;  // said and not taken
 };

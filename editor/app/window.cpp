@@ -137,6 +137,19 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
         return makeError("grass-editor", std::string("cannot create an OpenGL 4.5 core window: ") +
                                              (why ? why : "unknown reason"));
     }
+    {
+        // Dragged smaller than the panels are laid out for, the timeline and the status bar ran
+        // off the window's edge (window_size.h).
+        int fbWidth = 0, fbHeight = 0, createdWidth = 0, createdHeight = 0;
+        glfwGetFramebufferSize(handle, &fbWidth, &fbHeight);
+        glfwGetWindowSize(handle, &createdWidth, &createdHeight);
+        float scaleX = 1.0f, scaleY = 1.0f;
+        glfwGetWindowContentScale(handle, &scaleX, &scaleY);
+        const float unitsPerPoint =
+            fbWidth > 0 ? scaleX * float(createdWidth) / float(fbWidth) : std::max(scaleX, 1.0f);
+        const WindowSize least = leastWindowSize({createdWidth, createdHeight}, unitsPerPoint);
+        glfwSetWindowSizeLimits(handle, least.width, least.height, GLFW_DONT_CARE, GLFW_DONT_CARE);
+    }
     std::unique_ptr<Window> window(new Window());
     window->mWindow = handle;
     window->mOpenedS = glfwGetTime();

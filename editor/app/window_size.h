@@ -36,4 +36,19 @@ inline WindowSize fitWindowSize(WindowSize requested, int areaWidth, int areaHei
             std::max(1, int(std::floor(float(requested.height) * shrink)))};
 }
 
+// The least size the editor is laid out for, in points: narrower, the side panel took half the
+// window and the timeline's speed field ran off its edge (at 700 points); lower, the side
+// panel showed a handful of rows.
+inline constexpr WindowSize LEAST_WINDOW_POINTS{800, 480};
+
+// The window's size limit for the window system, in screen units: LEAST_WINDOW_POINTS at
+// `screenUnitsPerPoint` (the content scale, and on systems whose screen units are points, one),
+// but never more than the window as created, so that a window asked smaller (a test's or a
+// script's size, a small screen's fitted one) can keep the size it was given.
+inline WindowSize leastWindowSize(WindowSize created, float screenUnitsPerPoint) {
+    const float scale = screenUnitsPerPoint > 0.0f ? screenUnitsPerPoint : 1.0f;
+    return {std::min(created.width, int(std::lround(float(LEAST_WINDOW_POINTS.width) * scale))),
+            std::min(created.height, int(std::lround(float(LEAST_WINDOW_POINTS.height) * scale)))};
+}
+
 }  // namespace grass::editor

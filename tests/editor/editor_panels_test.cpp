@@ -257,6 +257,15 @@ TEST(EditorPanels, ASaveAsksBeforeReplacingAProjectFileChangedOnDisk) {
     EXPECT_EQ(core::loadProject(file)->project.name, "mine again");
 }
 
+// The first text of a frame starting with `prefix` (the status bar's figures: "N blades · …").
+std::optional<ui::TextShape> textStarting(const ui::Output& out, std::string_view prefix) {
+    for (const ui::ClippedShape& shape : out.shapes)
+        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape);
+            t && t->text.starts_with(prefix))
+            return *t;
+    return std::nullopt;
+}
+
 // The project's files looked at as the Editor looks at them, a look a second.
 struct WatchLooks {
     editor::EditorState& state;
@@ -319,6 +328,16 @@ TEST(EditorPanels, AProjectFileEditedElsewhereIsTakenAsAnEdit) {
     EXPECT_FALSE(look());
     EXPECT_NE(editor.state.transient.message.find("does not load"), std::string::npos)
         << editor.state.transient.message;
+    // In warning orange, as something to fix there; the routine message after it is not.
+    const ui::Color32 orange = ui::Color32::rgb(255, 150, 60);
+    const std::optional<ui::TextShape> broken =
+        textStarting(editor.frame(), "project.json was changed on disk but");
+    ASSERT_TRUE(broken);
+    EXPECT_EQ(broken->color, orange);
+    editor.state.transient.message = "autosaved";
+    const std::optional<ui::TextShape> routine = textStarting(editor.frame(), "autosaved");
+    ASSERT_TRUE(routine);
+    EXPECT_NE(routine->color, orange);
     EXPECT_EQ(editor.state.doc.project().name, "renamed elsewhere");
     edited->project.name = "fixed";
     ASSERT_TRUE(core::saveProject(edited->project, file).ok());
@@ -367,8 +386,20 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     editor.state.transient.message = "later";
     EXPECT_FALSE(look());
     EXPECT_EQ(editor.state.transient.message, "later") << "said once";
-    // The Save writes the painting over it: its own write is no change.
-    ASSERT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    // A Save asks before writing the painting over the other program's map, naming it...
+    EXPECT_FALSE(editor::saveTo(editor.state, file.string()));
+    EXPECT_TRUE(editor.state.transient.changedOnDisk);
+    EXPECT_NE(editor.state.transient.message.find("soil.png was changed by another program"),
+              std::string::npos)
+        << editor.state.transient.message;
+    const auto soilNow = core::loadMapImage(soil);
+    ASSERT_TRUE(soilNow.ok());
+    EXPECT_NEAR(soilNow->sample({0.5f, 0.5f}), 0.2f, 0.01f) << "the other program's map stays";
+    // Replace it (the window's first button): the painting is written, its own write no change.
+    ASSERT_TRUE(editor::saveTo(editor.state, file.string(), true))
+        << editor.state.transient.message;
+    EXPECT_FALSE(editor.state.transient.changedOnDisk);
+    EXPECT_TRUE(editor.state.doc.paintedMapsChangedOnDisk.empty());
     EXPECT_FALSE(look());
     EXPECT_FALSE(editor.state.regrowFromDisk);
     // A map that project.json, edited elsewhere, names anew is the file the re-grow reads: saved
@@ -397,6 +428,30 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     EXPECT_TRUE(look());
     EXPECT_TRUE(editor.state.regrowFromDisk);
     EXPECT_FALSE(editor.state.surfaceChangedOnDisk);
+    // A mesh collider's file re-exported: grown again too (its prop read and packed again).
+    editor.state.regrowFromDisk = false;
+    fs::copy_file(sourceDir() / "tests/data/gltf/cube.glb", folder.path() / "rock.glb");
+    core::ColliderDesc rock;
+    rock.shape = core::ColliderShape::Mesh;
+    rock.file = "rock.glb";
+    edited->project.colliders.push_back(rock);
+    ASSERT_TRUE(core::saveProject(edited->project, file).ok());
+    ASSERT_TRUE(look());
+    editor.state.regrowFromDisk = false;
+    fs::copy_file(sourceDir() / "tests/data/gltf/box_meshopt.glb", folder.path() / "rock.glb",
+                  fs::copy_options::overwrite_existing);
+    EXPECT_TRUE(look());
+    EXPECT_TRUE(editor.state.regrowFromDisk);
+    EXPECT_FALSE(editor.state.surfaceChangedOnDisk);
+    EXPECT_NE(editor.state.transient.message.find("rock.glb"), std::string::npos)
+        << editor.state.transient.message;
+    // A painted map changed elsewhere does not hold up a save into another folder: the painting
+    // goes to new files there.
+    editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
+    editor.state.doc.paintedMapsChangedOnDisk.insert(soil);
+    EXPECT_TRUE(editor::saveTo(editor.state, (folder.path() / "copy/project.json").string()))
+        << editor.state.transient.message;
+    EXPECT_FALSE(editor.state.transient.changedOnDisk);
 }
 
 TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
@@ -1157,15 +1212,6 @@ TEST(EditorPanels, PicturesAndExportsGoWhereTheyCanBeWritten) {
               folder.path() / "screenshot-2.png");
 }
 
-// The first text of a frame starting with `prefix` (the status bar's figures: "N blades · …").
-std::optional<ui::TextShape> textStarting(const ui::Output& out, std::string_view prefix) {
-    for (const ui::ClippedShape& shape : out.shapes)
-        if (const auto* t = std::get_if<ui::TextShape>(&shape.shape);
-            t && t->text.starts_with(prefix))
-            return *t;
-    return std::nullopt;
-}
-
 // Issue 26 item 4: every status message is logged; a click on the status line shows them whole.
 TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
     const ScratchFolder folder("editor-messages");
@@ -1241,6 +1287,33 @@ TEST(EditorPanels, TheStatusMessageOpensTheWholeLog) {
         if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && !t->text.ends_with("   "))
             joined += t->text + " ";  // the status line's message ends with three spaces
     EXPECT_NE(joined.find("the file is not glTF"), std::string::npos) << joined;
+}
+
+// The timeline strip's range and key count are said as the room left allows: at 800 points,
+// the window's least width, the line ran past the window's edge and read "0.0".
+TEST(EditorPanels, TheTimelineRangeIsSaidAsRoomAllows) {
+    const ScratchFolder folder("editor-timeline-range");
+    EditorDriver editor(folder.path());
+    const auto endX = [](const ui::TextShape& text) {
+        return text.pos.x + testFonts().textSize(text.text, text.sizePt).x;
+    };
+    bool shortened = false;
+    for (const float width : {1280.0f, 1000.0f, 900.0f, 800.0f, 700.0f}) {
+        editor.input.screenRect = {{0.0f, 0.0f}, {width, 720.0f}};
+        const ui::Output& out = editor.frame();
+        const std::optional<ui::TextShape> whole = textStarting(out, "   0.00 – ");
+        const std::optional<ui::TextShape> keys = textStarting(out, "   0 keys");
+        if (width == 1280.0f) {
+            ASSERT_TRUE(whole) << "a wide window says the range";
+        }
+        for (const auto& range : {whole, keys}) {
+            if (range) {
+                EXPECT_LE(endX(*range), width) << width << ": " << range->text;
+            }
+        }
+        shortened = shortened || (!whole && keys);
+    }
+    EXPECT_TRUE(shortened) << "a narrow window says the key count alone";
 }
 
 // A new message comes before the figures for its first seconds. At 1280 points, while a field

@@ -27,5 +27,15 @@ TEST(WindowSize, ALargerOneShrinksToTheWorkAreaKeepingItsShape) {
     EXPECT_NEAR(double(hiDpi.width) / hiDpi.height, 16.0 / 9.0, 0.01);
 }
 
+// The window cannot be made narrower than the panels are laid out for (800 × 480 points), at the
+// screen's scale, unless it was created smaller (a test's or a script's size).
+TEST(WindowSize, TheLeastSizeIsThePanelsUnlessCreatedSmaller) {
+    EXPECT_EQ(leastWindowSize({1280, 720}, 1.0f), (WindowSize{800, 480}));
+    EXPECT_EQ(leastWindowSize({2560, 1440}, 2.0f), (WindowSize{1600, 960})) << "HiDPI pixels";
+    EXPECT_EQ(leastWindowSize({640, 720}, 1.0f), (WindowSize{640, 480})) << "created narrower";
+    EXPECT_EQ(leastWindowSize({320, 240}, 1.0f), (WindowSize{320, 240}));
+    EXPECT_EQ(leastWindowSize({1280, 720}, 0.0f), (WindowSize{800, 480})) << "no scale known";
+}
+
 }  // namespace
 }  // namespace grass::editor
