@@ -13,7 +13,6 @@ void resetHistory(EditorState& s) {
     s.doc.history.clear();
     s.doc.committed = s.doc.loaded.project;
     s.doc.paintedMaps.clear();
-    s.doc.paintedMapsChangedOnDisk.clear();
     s.doc.waitingMaps.clear();
     s.view.gizmoDrag.reset();
     s.view.toolDragActive = false;
@@ -169,7 +168,6 @@ Result<void> savePaintedMaps(EditorState& s, const fs::path& folder) {
     // The map names written into the project are part of the save, not an edit to undo.
     s.doc.committed = s.doc.loaded.project;
     s.doc.paintedMaps.clear();
-    s.doc.paintedMapsChangedOnDisk.clear();
     return {};
 }
 

@@ -229,7 +229,6 @@ private:
     };
     std::optional<OverlayShown> mOverlayShown;
     double mAutosaveDueS = 0.0;
-    ProjectFileWatch mFileWatch;  // project.json edited by another program (a text editor)
     std::optional<double> mPanelsChangeInS;  // the last frame's ui::Output::repaintAfterS
     Clock::time_point mStartTime, mLastStatus, mLastTick;
     int mFramesSinceStatus = 0;  // for the status bar's frame rate

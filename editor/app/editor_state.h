@@ -21,6 +21,7 @@
 #include "app/document_job.h"
 #include "app/export_job.h"
 #include "app/file_browser.h"
+#include "app/file_watch_state.h"
 #include "app/recent_files.h"
 #include "app/viewport_tools.h"
 #include "edit/gizmo_drag.h"
@@ -48,9 +49,6 @@ struct Document {
     bool editRegrows = false;
     // Maps painted since the last save, by layer; saving writes them (edit_actions.h).
     std::set<std::pair<std::size_t, core::LayerMap>> paintedMaps;
-    // The files of painted maps another program changed since (project_file_watch.h): a Save
-    // asks before writing the painting over them (saveTo). Cleared when the maps are written.
-    std::set<std::filesystem::path> paintedMapsChangedOnDisk;
     // Painted maps waiting, by layer name, for their layer to come (back): those of a removed
     // layer until an undo restores it, and those a duplicate starts from (edit_actions.h).
     std::map<std::pair<std::string, core::LayerMap>, core::MapImage> waitingMaps;
@@ -213,6 +211,9 @@ struct EditorState {
     bool surfaceChangedOnDisk = false;
     // A Save wrote the project's files here: the watch of them takes their new times as its own.
     bool assetsWrittenHere = false;
+    // The project's files as the editor last looked at them (project_file_watch.h; the Editor
+    // looks every second).
+    ProjectFileWatch fileWatch;
 
     // The running (or last) export. While it runs the scene must stay as it is: tools, undo and
     // re-grows wait (busy()).

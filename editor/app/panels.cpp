@@ -3,6 +3,7 @@
 #include "app/autosave.h"
 #include "app/edit_actions.h"
 #include "app/mesh_import.h"
+#include "app/project_file_watch.h"
 #include "app/status_figures.h"
 
 #include <unistd.h>
@@ -357,9 +358,8 @@ bool saveTo(EditorState& s, const std::string& file, bool replaceChangedFile) {
         }
         // Saved elsewhere, the painted maps go to new files.
         if (!s.doc.loaded.folder.empty() && fs::equivalent(folder, s.doc.loaded.folder, ec))
-            for (const fs::path& map : s.doc.paintedMapsChangedOnDisk)
-                if (fs::exists(map, ec))
-                    changed.push_back(map.string());
+            for (const fs::path& map : paintedMapsChangedOnDisk(s, s.fileWatch))
+                changed.push_back(map.string());
         if (!changed.empty()) {
             std::string& said = s.transient.changedOnDiskSaid;
             said = changed.front();

@@ -1,5 +1,6 @@
 #include "app/project_file_watch.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -16,6 +17,15 @@ namespace grass::editor {
 
 namespace fs = std::filesystem;
 
+std::optional<FileStamp> stampOf(const fs::path& file) {
+    std::error_code timeError;
+    std::error_code sizeError;
+    FileStamp stamp{fs::last_write_time(file, timeError), fs::file_size(file, sizeError)};
+    if (timeError || sizeError)
+        return std::nullopt;  // gone, or being replaced
+    return stamp;
+}
+
 namespace {
 
 // Said in the status line and on the terminal: a refused file's error is long, and the status
@@ -24,15 +34,6 @@ void tell(EditorState& s, std::string message) {
     std::fprintf(stderr, "grass-editor: %s\n", message.c_str());
     s.transient.message = std::move(message);
     s.transient.loggedMessage.clear();
-}
-
-std::optional<FileStamp> stampOf(const fs::path& file) {
-    std::error_code timeError;
-    std::error_code sizeError;
-    FileStamp stamp{fs::last_write_time(file, timeError), fs::file_size(file, sizeError)};
-    if (timeError || sizeError)
-        return std::nullopt;  // gone, or being replaced
-    return stamp;
 }
 
 // A file the field is grown from: the surface's glTF, a layer's map, the billboards' texture, a
@@ -95,7 +96,6 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
             if (watch.assetsSaid[asset.path] != *stamp)
                 kept.push_back(asset.name);
             watch.assetsSaid[asset.path] = *stamp;
-            s.doc.paintedMapsChangedOnDisk.insert(asset.path);
             continue;
         }
         known->second = *stamp;
@@ -119,6 +119,25 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
 }
 
 }  // namespace
+
+std::vector<fs::path> paintedMapsChangedOnDisk(const EditorState& s,
+                                               const ProjectFileWatch& watch) {
+    std::vector<fs::path> changed;
+    // A Save wrote them just now: the watch takes their new stamps at its next look.
+    if (s.assetsWrittenHere)
+        return changed;
+    for (const WatchedAsset& asset : watchedAssets(s.doc.loaded)) {
+        if (!asset.map || !s.doc.paintedMaps.count(*asset.map))
+            continue;
+        // Never looked at yet: nothing known to lose.
+        const auto known = watch.assets.find(asset.path);
+        const std::optional<FileStamp> now = stampOf(asset.path);
+        if (known != watch.assets.end() && now && *now != known->second &&
+            std::find(changed.begin(), changed.end(), asset.path) == changed.end())
+            changed.push_back(asset.path);
+    }
+    return changed;
+}
 
 bool followProjectFileOnDisk(EditorState& s, ProjectFileWatch& watch, double nowS,
                              bool editUnderWay) {

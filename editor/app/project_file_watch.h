@@ -7,37 +7,12 @@
 // GL-free: the Editor calls it every frame.
 #pragma once
 
-#include <cstdint>
 #include <filesystem>
-#include <map>
-#include <optional>
+#include <vector>
 
 #include "app/editor_state.h"
 
 namespace grass::editor {
-
-// When a file was last written, as far as its time and size tell.
-struct FileStamp {
-    std::filesystem::file_time_type modified{};
-    std::uintmax_t size = 0;
-    bool operator==(const FileStamp&) const = default;
-};
-
-struct ProjectFileWatch {
-    std::filesystem::path file;  // the file the stamp below is of
-    FileStamp stamp;
-    double nextLookS = 0.0;
-    std::optional<std::uint64_t> saidDigest;  // the version last said (not taken)
-    // The surface's glTF file, the layers' maps, the billboards' texture and the mesh colliders'
-    // glTF files as last looked at, by path; a file first seen is only stamped. A map changed on
-    // disk (painted in another program, written by `grass paint`) grows the field again from it,
-    // unless the editor holds unsaved painting of that map (then it is said, and Save asks
-    // before writing the painting over it); a changed surface is read again, a changed collider
-    // mesh made into its prop and packed again. None is an undo step: the editor keeps no copy
-    // of the file as it was.
-    std::map<std::filesystem::path, FileStamp> assets;
-    std::map<std::filesystem::path, FileStamp> assetsSaid;  // said and not taken
-};
 
 // How often the file's time and size are looked at; it is read only when they changed.
 inline constexpr double PROJECT_FILE_LOOK_S = 1.0;
@@ -50,5 +25,12 @@ inline constexpr double PROJECT_FILE_LOOK_S = 1.0;
 // from them (regrowFromDisk, surfaceChangedOnDisk). Returns whether it took a change.
 bool followProjectFileOnDisk(EditorState& state, ProjectFileWatch& watch, double nowS,
                              bool editUnderWay);
+
+// The files of the maps painted here that another program changed since the watch last took
+// them (time or size other than its stamp): a Save asks before writing the painting over them.
+// Asked of the files themselves, so a map saved elsewhere in the second before a Save, or while
+// a job held the watch off, counts too.
+std::vector<std::filesystem::path> paintedMapsChangedOnDisk(const EditorState& state,
+                                                            const ProjectFileWatch& watch);
 
 }  // namespace grass::editor

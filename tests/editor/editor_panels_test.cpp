@@ -269,11 +269,10 @@ std::optional<ui::TextShape> textStarting(const ui::Output& out, std::string_vie
 // The project's files looked at as the Editor looks at them, a look a second.
 struct WatchLooks {
     editor::EditorState& state;
-    editor::ProjectFileWatch watch{};
     double nowS = 0.0;
     bool operator()() {
         nowS += editor::PROJECT_FILE_LOOK_S;
-        return editor::followProjectFileOnDisk(state, watch, nowS, false);
+        return editor::followProjectFileOnDisk(state, state.fileWatch, nowS, false);
     }
 };
 
@@ -293,7 +292,8 @@ TEST(EditorPanels, AProjectFileEditedElsewhereIsTakenAsAnEdit) {
     edited->project.layers.front().scatter.density = density + 5.0f;
     ASSERT_TRUE(core::saveProject(edited->project, file).ok());
     // Not while an edit is under way here (a drag, a text entry): taken when it ends.
-    EXPECT_FALSE(editor::followProjectFileOnDisk(editor.state, look.watch, look.nowS + 5.0, true));
+    EXPECT_FALSE(editor::followProjectFileOnDisk(editor.state, editor.state.fileWatch,
+                                                 look.nowS + 5.0, true));
     ASSERT_TRUE(look()) << editor.state.transient.message;
     EXPECT_EQ(editor.state.doc.project().layers.front().scatter.density, density + 5.0f);
     EXPECT_TRUE(editor.state.rebuildPending) << "the field grows again for it";
@@ -399,9 +399,18 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     ASSERT_TRUE(editor::saveTo(editor.state, file.string(), true))
         << editor.state.transient.message;
     EXPECT_FALSE(editor.state.transient.changedOnDisk);
-    EXPECT_TRUE(editor.state.doc.paintedMapsChangedOnDisk.empty());
     EXPECT_FALSE(look());
     EXPECT_FALSE(editor.state.regrowFromDisk);
+    // A map written elsewhere in the second before the Save, before the watch looked: asked too.
+    editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.4f), soil).ok());
+    EXPECT_FALSE(editor::saveTo(editor.state, file.string()));
+    EXPECT_TRUE(editor.state.transient.changedOnDisk);
+    ASSERT_TRUE(editor::saveTo(editor.state, file.string(), true));
+    // A second Save at once finds the painting it wrote: nothing to ask.
+    editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
+    EXPECT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    EXPECT_FALSE(look());
     // A map that project.json, edited elsewhere, names anew is the file the re-grow reads: saved
     // again right after, that is a change too (stamped when the edit is taken, not a look later).
     const fs::path light = folder.path() / "maps/light.png";
@@ -448,7 +457,8 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     // A painted map changed elsewhere does not hold up a save into another folder: the painting
     // goes to new files there.
     editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
-    editor.state.doc.paintedMapsChangedOnDisk.insert(soil);
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.7f), soil).ok());
+    ASSERT_FALSE(editor::paintedMapsChangedOnDisk(editor.state, editor.state.fileWatch).empty());
     EXPECT_TRUE(editor::saveTo(editor.state, (folder.path() / "copy/project.json").string()))
         << editor.state.transient.message;
     EXPECT_FALSE(editor.state.transient.changedOnDisk);
