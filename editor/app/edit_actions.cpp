@@ -14,6 +14,9 @@ void resetHistory(EditorState& s) {
     s.doc.committed = s.doc.loaded.project;
     s.doc.paintedMaps.clear();
     s.doc.waitingMaps.clear();
+    // Stamps of another document's files (or of this one's before it was opened again, maybe
+    // changed since) would make the first look take the files just read for changes.
+    s.fileWatch = {};
     s.view.gizmoDrag.reset();
     s.view.toolDragActive = false;
     s.view.place.selected.reset();

@@ -11,7 +11,8 @@
 
 namespace grass::editor {
 
-// Starts the history afresh (a project was opened or created).
+// Starts the history afresh (a project was opened or created), and the watch of the project's
+// files (project_file_watch.h): the field was just grown from them as they are.
 void resetHistory(EditorState& state);
 
 // The painted maps of `from` carried into `to` (a scene re-grown after a panel edit), which is

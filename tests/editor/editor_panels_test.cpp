@@ -464,6 +464,34 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     EXPECT_FALSE(editor.state.transient.changedOnDisk);
 }
 
+// A project opened again (or another one opened) is grown from its files as they are: the
+// stamps the watch took of them before are not compared with them. Before, a map changed while
+// another project was open was taken for a change at the first look after opening it again,
+// and the field just grown was grown again.
+TEST(EditorPanels, AProjectOpenedAgainIsNotTakenForAChangeOnDisk) {
+    const ScratchFolder folder("editor-watch-reopen");
+    EditorDriver editor(folder.path());
+    const fs::path soil = folder.path() / "maps/soil.png";
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.9f), soil).ok());
+    editor.state.doc.loaded.project.layers.front().soilMap = "maps/soil.png";
+    const fs::path file = folder.path() / "project.json";
+    ASSERT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    WatchLooks look{editor.state};
+    EXPECT_FALSE(look());
+    EXPECT_FALSE(look()) << "stamped";
+    // Changed while another project was open; then this one opened again (resetHistory is what
+    // every open, new and recovery does once its field is up).
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.3f), soil).ok());
+    editor::resetHistory(editor.state);
+    editor.state.regrowFromDisk = false;
+    EXPECT_FALSE(look());
+    EXPECT_FALSE(editor.state.regrowFromDisk);
+    // Changes after the opening are followed as ever.
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.5f), soil).ok());
+    EXPECT_TRUE(look());
+    EXPECT_TRUE(editor.state.regrowFromDisk);
+}
+
 TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
     const ScratchFolder folder("editor-open");
     EditorDriver editor(folder.path());
