@@ -70,7 +70,8 @@ std::string glbFileName(const Project& project, ExportFormat format) {
 // A glTF surface keeps its own material in the export (source_material.h).
 SourceMaterial terrainMaterialOf(const LoadedProject& loaded) {
     const MeshSource& mesh = loaded.project.mesh;
-    return mesh.isFile ? sourceMeshMaterial(loaded.folder / mesh.file) : SourceMaterial{};
+    return mesh.isFile && mesh.fileMaterial ? sourceMeshMaterial(loaded.folder / mesh.file)
+                                            : SourceMaterial{};
 }
 
 json colorJson(glm::vec3 color) {

@@ -92,6 +92,15 @@ void readUvAtlas(json::Reader& reader, json::Object& object, std::string_view ke
     json::checkAssetPath(reader, object.pointerTo(key), mesh.uvAtlas);
 }
 
+void readFileMaterial(json::Reader&, json::Object& object, std::string_view key, MeshSource& mesh) {
+    if (object.find(key))
+        object.readBool(key, mesh.fileMaterial);
+}
+
+Json fileMaterialJson(const MeshSource& mesh) {
+    return mesh.isFile && !mesh.fileMaterial ? Json(false) : Json();
+}
+
 Json uvAtlasJson(const MeshSource& mesh) {
     return mesh.isFile && !mesh.uvAtlas.empty() ? Json(mesh.uvAtlas) : Json();
 }
@@ -126,7 +135,7 @@ constexpr std::array MESH{
         {.key = "file",
          .typeText = "string",
          .allowedText = "a relative asset path ending in `.gltf` or `.glb`; when present, only "
-                        "`unit` and `up` may join it",
+                        "`unit`, `up`, `uv_atlas` and `file_material` may join it",
          .defaultText = "absent"},
         readMeshFile, meshFileJson),
     fileOnly(settings::custom<MeshSource>(
@@ -152,11 +161,19 @@ constexpr std::array MESH{
          .allowedText = "a relative asset path",
          .defaultText = "absent"},
         readUvAtlas, uvAtlasJson)),
+    fileOnly(settings::custom<MeshSource>(
+        {.key = "file_material",
+         .help = "draw and export the surface in the file's own material (its base colour and "
+                 "base-colour texture); `false`: in `render.ground_color`, as a procedural "
+                 "surface (for a file whose default white material shows between the blades)",
+         .typeText = "boolean",
+         .allowedText = "`true`, `false`",
+         .defaultText = "`true`"},
+        readFileMaterial, fileMaterialJson)),
     procedural(settings::custom<MeshSource>(
         {.key = "procedural",
          .typeText = "string",
-         .allowedText =
-             "`\"plane\"`, `\"hills\"`, `\"sphere\"`, `\"torus\"`, `\"moebius\"`"},
+         .allowedText = "`\"plane\"`, `\"hills\"`, `\"sphere\"`, `\"torus\"`, `\"moebius\"`"},
         readProceduralShape, proceduralShapeJson)),
     procedural(field<&MeshSource::procedural, &ProceduralMeshParams::size>(
         {.key = "size",

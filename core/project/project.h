@@ -49,6 +49,10 @@ struct MeshSource {
     // a generated atlas kept next to the project (core/mesh/uv_atlas_file.h); "" until a save
     // writes one.
     std::string uvAtlas;
+    // The surface is drawn (and exported) in the file's own material, its base colour and
+    // base-colour texture (scene/surface_look.h); false: in the project's ground colour, as a
+    // procedural surface is (a file whose default white material shows between the blades).
+    bool fileMaterial = true;
     bool operator==(const MeshSource&) const = default;
 };
 

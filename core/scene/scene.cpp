@@ -179,7 +179,10 @@ Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded,
     applyMeshFrame(imported->mesh, source.metresPerUnit, source.up);
     if (groundOrigin)
         *groundOrigin = imported->origin;
-    if (look) {
+    // Drawn in the project's ground colour instead: the file's look is not read for it (the
+    // UVs above still asked whether its texture needs them, so the painted maps keep their
+    // UVs whichever way the surface is drawn).
+    if (look && source.fileMaterial) {
         *look = std::move(readLook());
         if (notes)
             notes->insert(notes->end(), look->notes.begin(), look->notes.end());

@@ -1,5 +1,6 @@
 // The Surface section (issue 26 item 2): what the grass grows on. A glTF file shows its path,
-// its unit (mm, cm, m, in, ft, or metres per unit typed) and its up axis (+Y, +Z); a procedural
+// its unit (mm, cm, m, in, ft, or metres per unit typed), its up axis (+Y, +Z) and whether it
+// is drawn in its own material or the ground colour; a procedural
 // shape its shape and sizes. "Import mesh…" replaces it (mesh_import.h). A change re-grows the
 // field, and a new unit or up axis frames the view on the surface again: at a thousand times
 // the size, the old view would be inside it.
@@ -52,6 +53,11 @@ void fileRows(ui::Ui& ui, EditorState& s, core::MeshSource& mesh) {
     });
     if (mesh.metresPerUnit != before || mesh.up != s.doc.project().mesh.up)
         s.view.frameSurfacePending = true;
+    ui.checkbox(mesh.fileMaterial, "the file's material")
+        .onHoverText(
+            "Draw and export the surface in the file's own base colour and texture; "
+            "off: in the ground colour (Light), as a procedural surface "
+            "(project.json \"file_material\")");
 }
 
 void proceduralRows(ui::Ui& ui, core::MeshSource& mesh) {

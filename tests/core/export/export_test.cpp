@@ -435,6 +435,28 @@ TEST(Export, TerrainKeepsTheSourceMeshsMaterial) {
         EXPECT_DOUBLE_EQ(material.pbrMetallicRoughness.metallicFactor, 1.0) << "7 is not a factor: the default";
         EXPECT_TRUE(material.doubleSided);
     }
+    // Drawn in the ground colour instead ("file_material": false): exported in it too.
+    Built ground = buildProjectAt(dir / "project.json");
+    ground.loaded.project.mesh.fileMaterial = false;
+    ground.loaded.project.render.groundColor = {0.5f, 0.25f, 0.125f};
+    auto report = exportProject(ground.loaded, ground.scene,
+                                options(ExportFormat::Glb, 0, dir / "ground"), {});
+    ASSERT_TRUE(report.ok()) << report.error().str();
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skipImage, nullptr);
+    std::string error, warning;
+    ASSERT_TRUE(
+        loader.LoadBinaryFromFile(&model, &error, &warning, (dir / "ground/stone.glb").string()))
+        << error;
+    const auto terrain = std::find_if(model.meshes.begin(), model.meshes.end(),
+                                      [](const tinygltf::Mesh& m) { return m.name == "terrain"; });
+    ASSERT_NE(terrain, model.meshes.end());
+    const tinygltf::Material& material =
+        model.materials.at(std::size_t(terrain->primitives.at(0).material));
+    EXPECT_EQ(material.name, "terrain");
+    EXPECT_EQ(material.pbrMetallicRoughness.baseColorFactor,
+              (std::vector<double>{0.5, 0.25, 0.125, 1.0}));
 }
 
 // The source material's PNG and JPEG textures travel embedded (issue 25 item 2): from a file next

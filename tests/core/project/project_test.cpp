@@ -159,6 +159,27 @@ TEST(Project, FileMeshUnitAndUpRoundTrip) {
     EXPECT_EQ(serializeProject(plain).find("\"unit\""), std::string::npos) << "metres are the default";
 }
 
+// "file_material": false draws the surface in the ground colour; left out at its default.
+TEST(Project, FileMaterialIsReadWrittenAndOnlyForFiles) {
+    const auto off =
+        parseProject(document(R"("mesh": {"file": "e.glb", "file_material": false})"), SOURCE);
+    ASSERT_TRUE(off) << off.error().str();
+    EXPECT_FALSE(off->mesh.fileMaterial);
+    EXPECT_NE(serializeProject(*off).find(R"("file_material": false)"), std::string::npos);
+    const auto reread = parseProject(serializeProject(*off), SOURCE);
+    ASSERT_TRUE(reread);
+    EXPECT_EQ(*reread, *off);
+    Project plain;
+    plain.mesh.isFile = true;
+    plain.mesh.file = "t.glb";
+    EXPECT_EQ(serializeProject(plain).find("file_material"), std::string::npos)
+        << "true is the default";
+    expectError(document(R"("mesh": {"file": "t.glb", "file_material": "no"})"),
+                "/mesh/file_material", "must be true or false");
+    expectError(document(R"("mesh": {"procedural": "plane", "file_material": false})"),
+                "/mesh/file_material", "only allowed with \"file\"");
+}
+
 TEST(Project, FileMeshUnitAndUpAreCheckedAndOnlyForFiles) {
     expectError(document(R"("mesh": {"file": "t.glb", "unit": "parsec"})"), "/mesh/unit", "unknown unit");
     expectError(document(R"("mesh": {"file": "t.glb", "unit": 0})"), "/mesh/unit", "outside 1e-06 to 1e+06");

@@ -69,6 +69,16 @@ TEST(SurfaceLook, AProjectsSceneCarriesItAndAProceduralSurfaceHasNone) {
     EXPECT_FALSE(bare->look.baseColor.has_value());
     // A file without a material: nothing, so the ground colour is drawn.
     EXPECT_FALSE(surfaceLookOf(test::sourceDir() / "tests/data/gltf/quad.gltf", true).baseColor);
+    // The file's material turned off ("file_material": false): the ground colour too, on the
+    // same UVs (the painted maps keep theirs).
+    LoadedProject grounded = *loaded;
+    grounded.project.mesh.fileMaterial = false;
+    auto plain = buildScene(grounded);
+    ASSERT_TRUE(plain.ok()) << plain.error().str();
+    EXPECT_FALSE(plain->look.baseColor.has_value());
+    EXPECT_TRUE(plain->look.baseTexture.pixels.empty());
+    EXPECT_EQ(plain->paintUvs.generated, scene->paintUvs.generated);
+    EXPECT_EQ(plain->paintUvs.fingerprint, scene->paintUvs.fingerprint);
 }
 
 }  // namespace
