@@ -10,11 +10,12 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <glm/gtc/quaternion.hpp>
 #include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <tuple>
-#include <glm/gtc/quaternion.hpp>
-#include <nlohmann/json.hpp>
 
 #include "export/blade_instances.h"
 #include "export/gltf_export.h"
@@ -395,9 +396,28 @@ TEST(Export, MergedMeshBakesEveryBladeAndRespectsTheBudget) {
     EXPECT_EQ(written->files.at(0).path.filename(), "growth_tiny-merged.glb");
 }
 
+// The material of the terrain node of an exported .gltf or .glb, or why there is none.
+std::optional<tinygltf::Material> exportedTerrainMaterial(const fs::path& file) {
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skipImage, nullptr);
+    std::string error, warning;
+    const bool read = file.extension() == ".glb"
+                          ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
+                          : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
+    EXPECT_TRUE(read) << file << ": " << error;
+    const auto terrain = std::find_if(model.meshes.begin(), model.meshes.end(),
+                                      [](const tinygltf::Mesh& m) { return m.name == "terrain"; });
+    if (!read || terrain == model.meshes.end() || terrain->primitives.empty() ||
+        terrain->primitives[0].material < 0)
+        return std::nullopt;
+    return model.materials.at(std::size_t(terrain->primitives[0].material));
+}
+
 // The artist's own mesh keeps its material in the export (issue 25): the terrain node of a
 // project whose surface is a glTF file carries that file's material factors; a broken factor in
-// the source is left out rather than copied into an invalid export.
+// the source is left out rather than copied into an invalid export; drawn in the
+// ground colour instead, the export is too.
 TEST(Export, TerrainKeepsTheSourceMeshsMaterial) {
     const fs::path dir = test::scratchDir("export_material");
     nlohmann::json quad;
@@ -416,24 +436,16 @@ TEST(Export, TerrainKeepsTheSourceMeshsMaterial) {
     for (const ExportFormat format : {ExportFormat::Gltf, ExportFormat::Glb}) {
         auto report = exportProject(built.loaded, built.scene, options(format, 0, dir / "out"), {});
         ASSERT_TRUE(report.ok()) << report.error().str();
-        tinygltf::Model model;
-        tinygltf::TinyGLTF loader;
-        loader.SetImageLoader(skipImage, nullptr);
-        std::string error, warning;
-        ASSERT_TRUE(format == ExportFormat::Glb
-                        ? loader.LoadBinaryFromFile(&model, &error, &warning, (dir / "out/stone.glb").string())
-                        : loader.LoadASCIIFromFile(&model, &error, &warning, (dir / "out/grass.gltf").string()))
-            << error;
-        const auto terrain = std::find_if(model.meshes.begin(), model.meshes.end(),
-                                          [](const tinygltf::Mesh& m) { return m.name == "terrain"; });
-        ASSERT_NE(terrain, model.meshes.end());
-        const tinygltf::Material& material =
-            model.materials.at(std::size_t(terrain->primitives.at(0).material));
-        EXPECT_EQ(material.name, "terrain: mossy stone");
-        EXPECT_EQ(material.pbrMetallicRoughness.baseColorFactor, (std::vector<double>{0.2, 0.4, 0.6, 1.0}));
-        EXPECT_DOUBLE_EQ(material.pbrMetallicRoughness.roughnessFactor, 0.3);
-        EXPECT_DOUBLE_EQ(material.pbrMetallicRoughness.metallicFactor, 1.0) << "7 is not a factor: the default";
-        EXPECT_TRUE(material.doubleSided);
+        const std::optional<tinygltf::Material> material = exportedTerrainMaterial(
+            dir / (format == ExportFormat::Glb ? "out/stone.glb" : "out/grass.gltf"));
+        ASSERT_TRUE(material);
+        EXPECT_EQ(material->name, "terrain: mossy stone");
+        EXPECT_EQ(material->pbrMetallicRoughness.baseColorFactor,
+                  (std::vector<double>{0.2, 0.4, 0.6, 1.0}));
+        EXPECT_DOUBLE_EQ(material->pbrMetallicRoughness.roughnessFactor, 0.3);
+        EXPECT_DOUBLE_EQ(material->pbrMetallicRoughness.metallicFactor, 1.0)
+            << "7 is not a factor: the default";
+        EXPECT_TRUE(material->doubleSided);
     }
     // Drawn in the ground colour instead ("file_material": false): exported in it too.
     Built ground = buildProjectAt(dir / "project.json");
@@ -442,20 +454,11 @@ TEST(Export, TerrainKeepsTheSourceMeshsMaterial) {
     auto report = exportProject(ground.loaded, ground.scene,
                                 options(ExportFormat::Glb, 0, dir / "ground"), {});
     ASSERT_TRUE(report.ok()) << report.error().str();
-    tinygltf::Model model;
-    tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(skipImage, nullptr);
-    std::string error, warning;
-    ASSERT_TRUE(
-        loader.LoadBinaryFromFile(&model, &error, &warning, (dir / "ground/stone.glb").string()))
-        << error;
-    const auto terrain = std::find_if(model.meshes.begin(), model.meshes.end(),
-                                      [](const tinygltf::Mesh& m) { return m.name == "terrain"; });
-    ASSERT_NE(terrain, model.meshes.end());
-    const tinygltf::Material& material =
-        model.materials.at(std::size_t(terrain->primitives.at(0).material));
-    EXPECT_EQ(material.name, "terrain");
-    EXPECT_EQ(material.pbrMetallicRoughness.baseColorFactor,
+    const std::optional<tinygltf::Material> material =
+        exportedTerrainMaterial(dir / "ground/stone.glb");
+    ASSERT_TRUE(material);
+    EXPECT_EQ(material->name, "terrain");
+    EXPECT_EQ(material->pbrMetallicRoughness.baseColorFactor,
               (std::vector<double>{0.5, 0.25, 0.125, 1.0}));
 }
 
