@@ -396,7 +396,8 @@ TEST(Export, MergedMeshBakesEveryBladeAndRespectsTheBudget) {
     EXPECT_EQ(written->files.at(0).path.filename(), "growth_tiny-merged.glb");
 }
 
-// The material of the terrain node of an exported .gltf or .glb, or why there is none.
+// The material of the terrain node of an exported .gltf or .glb; none (and a failure) when the
+// file does not read.
 std::optional<tinygltf::Material> exportedTerrainMaterial(const fs::path& file) {
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
