@@ -129,18 +129,13 @@ bool exportMapImage(EditorState& s, const fs::path& file) {
     return true;
 }
 
-namespace {
-
-// Whether more than one map of the project reads `file`.
-bool mapFileShared(core::Project& project, const std::string& file) {
+bool mapFileShared(const core::Project& project, const std::string& file) {
     std::size_t readers = 0;
-    for (core::GrassLayer& layer : project.layers)
+    for (const core::GrassLayer& layer : project.layers)
         for (const core::LayerMap map : core::ALL_LAYER_MAPS)
             readers += core::layerMapFile(layer, map) == file ? 1 : 0;
     return readers > 1;
 }
-
-}  // namespace
 
 Result<void> savePaintedMaps(EditorState& s, const fs::path& folder) {
     if (!s.scene)

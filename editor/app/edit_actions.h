@@ -36,5 +36,7 @@ bool exportMapImage(EditorState& state, const std::filesystem::path& file);
 // file another map of the project also reads (a duplicated layer's) is left as it is: the
 // painted map goes to the layer's own default file instead.
 Result<void> savePaintedMaps(EditorState& state, const std::filesystem::path& folder);
+// Whether more than one map of the project reads `file` (then a painted one is saved elsewhere).
+bool mapFileShared(const core::Project& project, const std::string& file);
 
 }  // namespace grass::editor

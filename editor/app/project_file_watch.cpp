@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/edit_actions.h"
 #include "scene/layer_growth.h"
 #include "util/atomic_file.h"
 #include "util/content_digest.h"
@@ -127,7 +128,9 @@ std::vector<fs::path> paintedMapsChangedOnDisk(const EditorState& s,
     if (s.assetsWrittenHere)
         return changed;
     for (const WatchedAsset& asset : watchedAssets(s.doc.loaded)) {
-        if (!asset.map || !s.doc.paintedMaps.count(*asset.map))
+        // A file two maps read is not written over: the painting goes to a file of its own.
+        if (!asset.map || !s.doc.paintedMaps.count(*asset.map) ||
+            mapFileShared(s.doc.project(), asset.name))
             continue;
         // Never looked at yet: nothing known to lose.
         const auto known = watch.assets.find(asset.path);

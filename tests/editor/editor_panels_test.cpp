@@ -492,6 +492,32 @@ TEST(EditorPanels, AProjectOpenedAgainIsNotTakenForAChangeOnDisk) {
     EXPECT_TRUE(editor.state.regrowFromDisk);
 }
 
+// A map file two layers read (a duplicated layer's) is not written over by a Save: the painting
+// goes to the painted layer's own file. A change to the shared file is then nothing to ask about.
+TEST(EditorPanels, ASharedMapChangedOnDiskIsNotAskedAbout) {
+    const ScratchFolder folder("editor-watch-shared-map");
+    EditorDriver editor(folder.path());
+    const fs::path soil = folder.path() / "maps/soil.png";
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.9f), soil).ok());
+    core::Project& project = editor.state.doc.loaded.project;
+    project.layers.front().soilMap = "maps/soil.png";
+    project.layers.push_back(project.layers.front());
+    project.layers.back().name = "second";
+    const fs::path file = folder.path() / "project.json";
+    ASSERT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    WatchLooks look{editor.state};
+    EXPECT_FALSE(look());
+    editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.3f), soil).ok());
+    EXPECT_TRUE(editor::paintedMapsChangedOnDisk(editor.state, editor.state.fileWatch).empty());
+    EXPECT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    EXPECT_FALSE(editor.state.transient.changedOnDisk);
+    const auto kept = core::loadMapImage(soil);
+    ASSERT_TRUE(kept.ok());
+    EXPECT_NEAR(kept->sample({0.5f, 0.5f}), 0.3f, 0.01f)
+        << "the shared file is the other program's";
+}
+
 TEST(EditorPanels, OpenTypedPathAsksTheEditorToLoadIt) {
     const ScratchFolder folder("editor-open");
     EditorDriver editor(folder.path());
