@@ -158,6 +158,7 @@ struct Transient {
     // the files ("… was changed by another program …").
     bool changedOnDisk = false;
     std::string changedOnDiskSaid;
+    bool changedOnDiskProjectFile = false;  // project.json among them: it can be taken instead
     LeaveAction leaveAction = LeaveAction::Quit;
     std::string leaveOpenPath;
     std::string message;  // last file operation's result, shown in the status bar

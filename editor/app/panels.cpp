@@ -368,6 +368,7 @@ bool saveTo(EditorState& s, const std::string& file, bool replaceChangedFile) {
             said += std::string(changed.size() > 1 ? " were" : " was") +
                     " changed by another program since it was opened or saved here";
             s.transient.message = "not saved: " + said;
+            s.transient.changedOnDiskProjectFile = changed.front() == path.string();
             s.transient.loggedMessage.clear();
             s.transient.changedOnDisk = true;
             return false;

@@ -1,10 +1,12 @@
 // The project's file, or a map painted here, changed on disk since it was opened or saved here
 // (another program wrote it: a text editor, a second editor window, a checkout, an image
 // editor): a Save asks before replacing it, as a text editor does, instead of losing that work
-// without a word. Replace it, save elsewhere, or keep both as they are.
+// without a word. Replace it, save elsewhere, take the file's project instead (undoable), or keep
+// both as they are.
 #include <string>
 
 #include "app/panels.h"
+#include "app/project_file_watch.h"
 #include "ui/text_wrap.h"
 #include "ui/ui.h"
 #include "ui/window.h"
@@ -40,6 +42,17 @@ void changedOnDiskWindow(ui::Context& ctx, EditorState& s) {
                         .clicked()) {
                     s.transient.changedOnDisk = false;
                     openBrowser(s, BrowsePurpose::SaveProject);
+                }
+                // The other program's project wins; the changes made here stay in the undo
+                // history. Not for maps alone: they are grown from as they are once saved.
+                if (s.transient.changedOnDiskProjectFile &&
+                    row.button("Take the file's")
+                        .onHoverText("Take the project as the file holds it; Ctrl+Z brings back "
+                                     "the changes made here")
+                        .clicked()) {
+                    s.transient.changedOnDisk = false;
+                    s.transient.quitDialog = false;  // a pending quit or open waits for the user
+                    takeProjectFileFromDisk(s);
                 }
                 if (row.button("Cancel")
                         .onHoverText(

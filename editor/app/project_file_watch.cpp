@@ -119,6 +119,34 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
     return true;
 }
 
+// `project`, read from the project's file (whose bytes have `digest`), becomes the document as
+// one edit, "changes made on disk", which Ctrl+Z takes back. The document is the file then,
+// unless maps painted here are still unsaved.
+bool takeProject(EditorState& s, ProjectFileWatch& watch, core::Project project,
+                 std::optional<std::uint64_t> digest) {
+    Document& doc = s.doc;
+    doc.loaded.fileDigest = digest;
+    if (project == doc.project()) {
+        // The same project written another way (spaces, key order).
+        if (doc.paintedMaps.empty()) {
+            doc.dirty = false;
+            doc.history.markSaved();
+        }
+        return false;
+    }
+    apply(s, EditProject{.after = std::move(project),
+                         .effect = EditEffect::Regrow,
+                         .label = "changes made on disk"});
+    // The maps it names are read by the re-grow as they are now: a map changed after this
+    // look is a change of its own (first seen a second later, it would pass unnoticed).
+    stampAssets(doc.loaded, watch);
+    // The document is the file again.
+    doc.dirty = !doc.paintedMaps.empty();
+    if (!doc.dirty)
+        doc.history.markSaved();
+    return true;
+}
+
 }  // namespace
 
 std::vector<fs::path> paintedMapsChangedOnDisk(const EditorState& s,
@@ -187,20 +215,29 @@ bool followProjectFileOnDisk(EditorState& s, ProjectFileWatch& watch, double now
         s.transient.warningMessage = said;  // to be fixed there: said in orange while shown
         return false;
     }
-    doc.loaded.fileDigest = digest;
     watch.saidDigest.reset();
-    if (*project == doc.project())
-        return false;  // the same project written another way (spaces, key order)
-    apply(s, EditProject{.after = std::move(*project),
-                         .effect = EditEffect::Regrow,
-                         .label = "changes made on disk"});
-    // The maps it names are read by the re-grow as they are now: a map changed after this
-    // look is a change of its own (first seen a second later, it would pass unnoticed).
-    stampAssets(doc.loaded, watch);
-    // The document is the file again.
-    doc.dirty = false;
-    doc.history.markSaved();
+    if (!takeProject(s, watch, std::move(*project), digest))
+        return false;
     tell(s, "took the changes made to " + name + " on disk (Ctrl+Z undoes them)");
+    return true;
+}
+
+bool takeProjectFileFromDisk(EditorState& s) {
+    const std::string name = s.doc.loaded.file.filename().string();
+    const auto text = readFile(s.doc.loaded.file, MAX_JSON_FILE_BYTES);
+    if (!text) {
+        tell(s, "could not take " + name + " from disk: " + text.error().str());
+        s.transient.warningMessage = s.transient.message;
+        return false;
+    }
+    auto project = core::parseProject(*text, s.doc.loaded.file.string());
+    if (!project) {
+        tell(s, name + " on disk does not load: " + project.error().str());
+        s.transient.warningMessage = s.transient.message;
+        return false;
+    }
+    if (takeProject(s, s.fileWatch, std::move(*project), contentDigest(*text)))
+        tell(s, "took " + name + " as it is on disk (Ctrl+Z brings back the changes made here)");
     return true;
 }
 

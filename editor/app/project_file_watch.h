@@ -26,6 +26,12 @@ inline constexpr double PROJECT_FILE_LOOK_S = 1.0;
 bool followProjectFileOnDisk(EditorState& state, ProjectFileWatch& watch, double nowS,
                              bool editUnderWay);
 
+// The project's file as it is on disk taken over the document ("Take the file's" in the
+// Changed on disk window): one undoable edit, "changes made on disk", so the unsaved changes made
+// here stay one Ctrl+Z away; the document then counts as saved unless maps painted here are
+// not. A file that cannot be read or does not load is said (in warning orange) and taken not.
+bool takeProjectFileFromDisk(EditorState& state);
+
 // The files of the maps painted here that another program changed since the watch last took
 // them (time or size other than its stamp): a Save asks before writing the painting over them.
 // Asked of the files themselves, so a map saved elsewhere in the second before a Save, or while

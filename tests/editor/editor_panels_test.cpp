@@ -257,6 +257,54 @@ TEST(EditorPanels, ASaveAsksBeforeReplacingAProjectFileChangedOnDisk) {
     EXPECT_EQ(core::loadProject(file)->project.name, "mine again");
 }
 
+// "Take the file's" in the Changed on disk window: the other program's project wins as one
+// undoable edit, and Ctrl+Z brings back the changes made here (before, the only way was to open
+// the project again, losing them).
+TEST(EditorPanels, TheChangedFileCanBeTakenInsteadAndUndone) {
+    const ScratchFolder folder("editor-take-the-files");
+    EditorDriver editor(folder.path());
+    const fs::path file = folder.path() / "project.json";
+    ASSERT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
+    auto theirs = core::loadProject(file);
+    ASSERT_TRUE(theirs.ok());
+    theirs->project.name = "theirs";
+    ASSERT_TRUE(core::saveProject(theirs->project, file).ok());
+    editor::apply(editor.state, editor::EditProject{.after =
+                                                        [&] {
+                                                            core::Project mine =
+                                                                editor.state.doc.project();
+                                                            mine.name = "mine";
+                                                            return mine;
+                                                        }(),
+                                                    .effect = editor::EditEffect::Live,
+                                                    .label = "rename"});
+    ASSERT_TRUE(editor.state.doc.dirty);
+    EXPECT_FALSE(editor::saveTo(editor.state, file.string()));
+    ASSERT_TRUE(editor.state.transient.changedOnDisk);
+    editor.click("Take the file's");
+    EXPECT_FALSE(editor.state.transient.changedOnDisk);
+    EXPECT_EQ(editor.state.doc.project().name, "theirs");
+    EXPECT_FALSE(editor.state.doc.dirty) << "the document is the file";
+    EXPECT_TRUE(editor::saveTo(editor.state, file.string())) << "nothing to ask any more";
+    ASSERT_TRUE(editor::undo(editor.state));
+    EXPECT_EQ(editor.state.doc.project().name, "mine");
+    EXPECT_TRUE(editor.state.doc.dirty);
+    // A map alone changed elsewhere offers no such choice (the project file is the editor's).
+    editor.state.transient.changedOnDisk = false;
+    ASSERT_TRUE(editor::saveTo(editor.state, file.string()));
+    const fs::path soil = folder.path() / "maps/soil.png";
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.9f), soil).ok());
+    editor.state.doc.loaded.project.layers.front().soilMap = "maps/soil.png";
+    ASSERT_TRUE(editor::saveTo(editor.state, file.string()));
+    // The editor's look stamps the map as it is.
+    editor::followProjectFileOnDisk(editor.state, editor.state.fileWatch, 10.0, false);
+    editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.2f), soil).ok());
+    EXPECT_FALSE(editor::saveTo(editor.state, file.string()));
+    EXPECT_TRUE(editor.state.transient.changedOnDisk);
+    EXPECT_FALSE(editor.state.transient.changedOnDiskProjectFile);
+}
+
 // The first text of a frame starting with `prefix` (the status bar's figures: "N blades · …").
 std::optional<ui::TextShape> textStarting(const ui::Output& out, std::string_view prefix) {
     for (const ui::ClippedShape& shape : out.shapes)
