@@ -283,8 +283,7 @@ Result<bool> Editor::frame() {
     recordProjectEdit(mState, widgetActive);
     // The project's file edited by another program (a text editor) while nothing here is
     // unsaved: taken as an edit, which grows the field again below with the others.
-    followProjectFileOnDisk(mState, mState.fileWatch,
-                            std::chrono::duration<double>(tick - mStartTime).count(),
+    followProjectFileOnDisk(mState, std::chrono::duration<double>(tick - mStartTime).count(),
                             widgetActive || mState.view.toolDragActive);
     if (applyRequests())
         return false;

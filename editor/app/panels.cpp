@@ -356,9 +356,10 @@ bool saveTo(EditorState& s, const std::string& file, bool replaceChangedFile) {
                 now && *now != *s.doc.loaded.fileDigest)
                 changed.push_back(path.string());
         }
+        const bool projectFileChanged = !changed.empty();
         // Saved elsewhere, the painted maps go to new files.
         if (!s.doc.loaded.folder.empty() && fs::equivalent(folder, s.doc.loaded.folder, ec))
-            for (const fs::path& map : paintedMapsChangedOnDisk(s, s.fileWatch))
+            for (const fs::path& map : paintedMapsChangedOnDisk(s))
                 changed.push_back(map.string());
         if (!changed.empty()) {
             std::string& said = s.transient.changedOnDiskSaid;
@@ -368,7 +369,7 @@ bool saveTo(EditorState& s, const std::string& file, bool replaceChangedFile) {
             said += std::string(changed.size() > 1 ? " were" : " was") +
                     " changed by another program since it was opened or saved here";
             s.transient.message = "not saved: " + said;
-            s.transient.changedOnDiskProjectFile = changed.front() == path.string();
+            s.transient.changedOnDiskProjectFile = projectFileChanged;
             s.transient.loggedMessage.clear();
             s.transient.changedOnDisk = true;
             return false;

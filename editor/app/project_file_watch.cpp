@@ -122,8 +122,7 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
 // `project`, read from the project's file (whose bytes have `digest`), becomes the document as
 // one edit, "changes made on disk", which Ctrl+Z takes back. The document is the file then,
 // unless maps painted here are still unsaved.
-bool takeProject(EditorState& s, ProjectFileWatch& watch, core::Project project,
-                 std::optional<std::uint64_t> digest) {
+bool takeProject(EditorState& s, core::Project project, std::optional<std::uint64_t> digest) {
     Document& doc = s.doc;
     doc.loaded.fileDigest = digest;
     if (project == doc.project()) {
@@ -139,7 +138,7 @@ bool takeProject(EditorState& s, ProjectFileWatch& watch, core::Project project,
                          .label = "changes made on disk"});
     // The maps it names are read by the re-grow as they are now: a map changed after this
     // look is a change of its own (first seen a second later, it would pass unnoticed).
-    stampAssets(doc.loaded, watch);
+    stampAssets(doc.loaded, s.fileWatch);
     // The document is the file again.
     doc.dirty = !doc.paintedMaps.empty();
     if (!doc.dirty)
@@ -149,8 +148,8 @@ bool takeProject(EditorState& s, ProjectFileWatch& watch, core::Project project,
 
 }  // namespace
 
-std::vector<fs::path> paintedMapsChangedOnDisk(const EditorState& s,
-                                               const ProjectFileWatch& watch) {
+std::vector<fs::path> paintedMapsChangedOnDisk(const EditorState& s) {
+    const ProjectFileWatch& watch = s.fileWatch;
     std::vector<fs::path> changed;
     // A Save wrote them just now: the watch takes their new stamps at its next look.
     if (s.assetsWrittenHere)
@@ -170,9 +169,9 @@ std::vector<fs::path> paintedMapsChangedOnDisk(const EditorState& s,
     return changed;
 }
 
-bool followProjectFileOnDisk(EditorState& s, ProjectFileWatch& watch, double nowS,
-                             bool editUnderWay) {
+bool followProjectFileOnDisk(EditorState& s, double nowS, bool editUnderWay) {
     Document& doc = s.doc;
+    ProjectFileWatch& watch = s.fileWatch;
     if (doc.loaded.file.empty() || !doc.loaded.fileDigest || editUnderWay || s.busy() ||
         s.transient.changedOnDisk || nowS < watch.nextLookS)
         return false;
@@ -216,7 +215,7 @@ bool followProjectFileOnDisk(EditorState& s, ProjectFileWatch& watch, double now
         return false;
     }
     watch.saidDigest.reset();
-    if (!takeProject(s, watch, std::move(*project), digest))
+    if (!takeProject(s, std::move(*project), digest))
         return false;
     tell(s, "took the changes made to " + name + " on disk (Ctrl+Z undoes them)");
     return true;
@@ -236,7 +235,7 @@ bool takeProjectFileFromDisk(EditorState& s) {
         s.transient.warningMessage = s.transient.message;
         return false;
     }
-    if (takeProject(s, s.fileWatch, std::move(*project), contentDigest(*text)))
+    if (takeProject(s, std::move(*project), contentDigest(*text)))
         tell(s, "took " + name + " as it is on disk (Ctrl+Z brings back the changes made here)");
     return true;
 }

@@ -23,8 +23,7 @@ inline constexpr double PROJECT_FILE_LOOK_S = 1.0;
 // on disk" (the field re-grows as after any edit; Ctrl+Z goes back) and the document counts as
 // saved; else, when a map or the surface changed on disk, asks for the field to grow again
 // from them (regrowFromDisk, surfaceChangedOnDisk). Returns whether it took a change.
-bool followProjectFileOnDisk(EditorState& state, ProjectFileWatch& watch, double nowS,
-                             bool editUnderWay);
+bool followProjectFileOnDisk(EditorState& state, double nowS, bool editUnderWay);
 
 // The project's file as it is on disk taken over the document ("Take the file's" in the
 // Changed on disk window): one undoable edit, "changes made on disk", so the unsaved changes made
@@ -36,7 +35,6 @@ bool takeProjectFileFromDisk(EditorState& state);
 // them (time or size other than its stamp): a Save asks before writing the painting over them.
 // Asked of the files themselves, so a map saved elsewhere in the second before a Save, or while
 // a job held the watch off, counts too.
-std::vector<std::filesystem::path> paintedMapsChangedOnDisk(const EditorState& state,
-                                                            const ProjectFileWatch& watch);
+std::vector<std::filesystem::path> paintedMapsChangedOnDisk(const EditorState& state);
 
 }  // namespace grass::editor

@@ -137,23 +137,18 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
         return makeError("grass-editor", std::string("cannot create an OpenGL 4.5 core window: ") +
                                              (why ? why : "unknown reason"));
     }
-    {
-        // Dragged smaller than the panels are laid out for, the timeline and the status bar ran
-        // off the window's edge (window_size.h).
-        int fbWidth = 0, fbHeight = 0, createdWidth = 0, createdHeight = 0;
-        glfwGetFramebufferSize(handle, &fbWidth, &fbHeight);
-        glfwGetWindowSize(handle, &createdWidth, &createdHeight);
-        float scaleX = 1.0f, scaleY = 1.0f;
-        glfwGetWindowContentScale(handle, &scaleX, &scaleY);
-        const float unitsPerPoint =
-            fbWidth > 0 ? scaleX * float(createdWidth) / float(fbWidth) : std::max(scaleX, 1.0f);
-        const WindowSize least = leastWindowSize({createdWidth, createdHeight}, unitsPerPoint);
-        glfwSetWindowSizeLimits(handle, least.width, least.height, GLFW_DONT_CARE, GLFW_DONT_CARE);
-    }
     std::unique_ptr<Window> window(new Window());
     window->mWindow = handle;
     window->mOpenedS = glfwGetTime();
     glfwSetWindowUserPointer(handle, window.get());
+    // Dragged smaller than the panels are laid out for, the timeline and the status bar ran off
+    // the window's edge (window_size.h).
+    int createdWidth = 0, createdHeight = 0;
+    window->windowSize(&createdWidth, &createdHeight);
+    const float pointsPerUnit = EditorUi::pointsPerScreenUnit(*window);
+    const WindowSize least = leastWindowSize({createdWidth, createdHeight},
+                                             pointsPerUnit > 0.0f ? 1.0f / pointsPerUnit : 1.0f);
+    glfwSetWindowSizeLimits(handle, least.width, least.height, GLFW_DONT_CARE, GLFW_DONT_CARE);
     glfwSetCursorPosCallback(handle, WindowCallbacks::cursor);
     glfwSetMouseButtonCallback(handle, WindowCallbacks::button);
     glfwSetScrollCallback(handle, WindowCallbacks::scroll);

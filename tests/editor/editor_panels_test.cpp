@@ -297,7 +297,7 @@ TEST(EditorPanels, TheChangedFileCanBeTakenInsteadAndUndone) {
     editor.state.doc.loaded.project.layers.front().soilMap = "maps/soil.png";
     ASSERT_TRUE(editor::saveTo(editor.state, file.string()));
     // The editor's look stamps the map as it is.
-    editor::followProjectFileOnDisk(editor.state, editor.state.fileWatch, 10.0, false);
+    editor::followProjectFileOnDisk(editor.state, 10.0, false);
     editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
     ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.2f), soil).ok());
     EXPECT_FALSE(editor::saveTo(editor.state, file.string()));
@@ -320,7 +320,7 @@ struct WatchLooks {
     double nowS = 0.0;
     bool operator()() {
         nowS += editor::PROJECT_FILE_LOOK_S;
-        return editor::followProjectFileOnDisk(state, state.fileWatch, nowS, false);
+        return editor::followProjectFileOnDisk(state, nowS, false);
     }
 };
 
@@ -340,8 +340,7 @@ TEST(EditorPanels, AProjectFileEditedElsewhereIsTakenAsAnEdit) {
     edited->project.layers.front().scatter.density = density + 5.0f;
     ASSERT_TRUE(core::saveProject(edited->project, file).ok());
     // Not while an edit is under way here (a drag, a text entry): taken when it ends.
-    EXPECT_FALSE(editor::followProjectFileOnDisk(editor.state, editor.state.fileWatch,
-                                                 look.nowS + 5.0, true));
+    EXPECT_FALSE(editor::followProjectFileOnDisk(editor.state, look.nowS + 5.0, true));
     ASSERT_TRUE(look()) << editor.state.transient.message;
     EXPECT_EQ(editor.state.doc.project().layers.front().scatter.density, density + 5.0f);
     EXPECT_TRUE(editor.state.rebuildPending) << "the field grows again for it";
@@ -506,7 +505,7 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     // goes to new files there.
     editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
     ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.7f), soil).ok());
-    ASSERT_FALSE(editor::paintedMapsChangedOnDisk(editor.state, editor.state.fileWatch).empty());
+    ASSERT_FALSE(editor::paintedMapsChangedOnDisk(editor.state).empty());
     EXPECT_TRUE(editor::saveTo(editor.state, (folder.path() / "copy/project.json").string()))
         << editor.state.transient.message;
     EXPECT_FALSE(editor.state.transient.changedOnDisk);
@@ -557,7 +556,7 @@ TEST(EditorPanels, ASharedMapChangedOnDiskIsNotAskedAbout) {
     EXPECT_FALSE(look());
     editor.state.doc.paintedMaps.insert({0, core::LayerMap::Soil});
     ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.3f), soil).ok());
-    EXPECT_TRUE(editor::paintedMapsChangedOnDisk(editor.state, editor.state.fileWatch).empty());
+    EXPECT_TRUE(editor::paintedMapsChangedOnDisk(editor.state).empty());
     EXPECT_TRUE(editor::saveTo(editor.state, file.string())) << editor.state.transient.message;
     EXPECT_FALSE(editor.state.transient.changedOnDisk);
     const auto kept = core::loadMapImage(soil);
