@@ -7,23 +7,28 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "app/worker_job.h"
+#include "mesh/surface_mesh.h"
 #include "project/project.h"
 #include "scene/scene_physics.h"
 #include "util/result.h"
 
 namespace grass::editor {
 
-// The packings the job made, and what packing them said (the notes a build prints).
+// The packings the job made, and what packing them said (the notes a build prints); with the
+// meshes of the files it was asked to read for props (LiveMotion::readAheadProps).
 struct PackedColliders {
     core::ColliderPackings packings;
     std::vector<std::string> notes;
+    std::map<std::string, core::MovableSurfaceMesh> props;
 };
 
 class ColliderPackingJob {
@@ -31,8 +36,11 @@ public:
     // Packs (or reads from the cache) every mesh collider of `loaded` whose packing `known` does
     // not hold, as core::buildScenePhysics would for a scene whose ground origin is
     // `groundOrigin`. `whenDone` is called on the worker once done() (EditorState::wakeFrame).
+    // `propsToRead`: mesh files (as the project names them) whose meshes it reads for props too,
+    // so the window reads no glTF when their props are made again (files changed on disk).
     ColliderPackingJob(core::LoadedProject loaded, glm::dvec3 groundOrigin,
-                       const core::ColliderPackings& known, std::function<void()> whenDone = {});
+                       const core::ColliderPackings& known, std::function<void()> whenDone = {},
+                       std::set<std::string> propsToRead = {});
     ColliderPackingJob(const ColliderPackingJob&) = delete;
     ColliderPackingJob& operator=(const ColliderPackingJob&) = delete;
 

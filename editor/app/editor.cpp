@@ -491,13 +491,19 @@ void Editor::followMotionEdits() {
     collectColliderImport();
     if (!mLive.scene || state.busy() || state.regrowing())
         return;
+    // Not while a packing runs: it may have read a file before its change.
+    if (!state.colliderFilesChangedOnDisk.empty() && !mPackingJob) {
+        mLive.motion.forgetFiles(std::exchange(state.colliderFilesChangedOnDisk, {}));
+        mPackingFailedFor.reset();  // a file that did not pack may pack now
+    }
     const core::Project& project = state.doc.project();
     const LiveMotion& motion = mLive.motion;
     // A preset's substeps whatever else the project changed since the field grew (its LOD and
     // segments are the renderer's, live too): before, they grew the whole field again.
     followPhysicsSteps(mLive, project.physics);
     const bool toFollow = project.wind != motion.wind || project.colliders != motion.colliders ||
-                          motion.settledColliders != motion.colliders;
+                          motion.settledColliders != motion.colliders ||
+                          !motion.changedFiles.empty();
     if (!toFollow && !state.rebuildPending)
         return;
     const core::Project& grown = mLive.builtFrom.project;
@@ -525,7 +531,8 @@ bool Editor::packCollidersInBackground(const core::Project& project) {
         return false;
     mPackingFailedFor.reset();
     mPackingJob = std::make_unique<ColliderPackingJob>(mState.doc.loaded, mLive.scene->groundOrigin,
-                                                       mLive.motion.packings, mState.wakeFrame);
+                                                       mLive.motion.packings, mState.wakeFrame,
+                                                       mLive.motion.changedFiles);
     mState.transient.message = mPackingJob->what() + " …";
     if (!mReplay)
         return false;
@@ -542,7 +549,11 @@ void Editor::collectColliderPacking() {
     auto packed = job->take();
     if (!packed) {
         mPackingFailedFor = job->colliders();
+        // To fix in the file (a modeller's export half written, a broken glTF): said in orange,
+        // and whole on the terminal (the status line cuts it).
         mState.transient.message = "cannot pack a collider: " + packed.error().str();
+        mState.transient.warningMessage = mState.transient.message;
+        std::fprintf(stderr, "grass-editor: %s\n", mState.transient.message.c_str());
         return;
     }
     // Packings are named by file relative to the project's folder, read in the ground's frame:
@@ -550,8 +561,7 @@ void Editor::collectColliderPacking() {
     if (!mLive.scene || job->folder() != mLive.builtFrom.folder ||
         job->groundOrigin() != mLive.scene->groundOrigin)
         return;
-    for (auto& [key, packing] : packed->packings.byFile)
-        mLive.motion.packings.byFile.try_emplace(key, std::move(packing));
+    mLive.motion.takeReadAhead(std::move(packed->packings), std::move(packed->props));
     for (const std::string& note : packed->notes) {
         std::fprintf(stderr, "note: %s\n", note.c_str());
         mState.transient.message = note;

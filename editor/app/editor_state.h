@@ -210,6 +210,11 @@ struct EditorState {
     // reads it again instead of growing on the mesh at hand.
     bool regrowFromDisk = false;
     bool surfaceChangedOnDisk = false;
+    // Mesh colliders' files changed on disk (as the project names them), when nothing else the
+    // field grows from changed and no placement rule keeps blades off the colliders: they are
+    // packed again and their props made again while the field keeps its blades and their motion
+    // (Editor::followMotionEdits, LiveMotion::changedFiles).
+    std::set<std::string> colliderFilesChangedOnDisk;
     // A Save wrote the project's files here: the watch of them takes their new times as its own.
     bool assetsWrittenHere = false;
     // The project's files as the editor last looked at them (project_file_watch.h; the Editor

@@ -323,6 +323,21 @@ bool LiveMotion::packed(const std::vector<core::ColliderDesc>& wanted) const {
     });
 }
 
+void LiveMotion::forgetFiles(const std::set<std::string>& files) {
+    std::erase_if(packings.byFile,
+                  [&](const auto& entry) { return files.contains(std::get<0>(entry.first)); });
+    std::erase_if(readAheadProps, [&](const auto& entry) { return files.contains(entry.first); });
+    changedFiles.insert(files.begin(), files.end());
+}
+
+void LiveMotion::takeReadAhead(core::ColliderPackings packed,
+                               std::map<std::string, core::MovableSurfaceMesh> props) {
+    for (auto& [key, packing] : packed.byFile)
+        packings.byFile.try_emplace(key, std::move(packing));
+    for (auto& [file, mesh] : props)
+        readAheadProps.insert_or_assign(file, std::move(mesh));
+}
+
 bool followPhysicsSteps(Live& live, const core::PhysicsParams& physics) {
     LiveMotion& motion = live.motion;
     if (physics == motion.physics || physics.gravity != motion.physics.gravity ||
@@ -338,7 +353,8 @@ Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool se
     const core::Project& project = loaded.project;
     LiveMotion& motion = live.motion;
     bool changed = false;
-    if (project.wind != motion.wind || project.colliders != motion.colliders) {
+    const bool filesChanged = !motion.changedFiles.empty();
+    if (project.wind != motion.wind || project.colliders != motion.colliders || filesChanged) {
         // Both built before either is taken, so a file that cannot be read changes nothing.
         std::optional<core::ScenePhysics> built;
         if (live.physics) {
@@ -348,12 +364,18 @@ Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool se
                 return physics.error();
             built.emplace(std::move(*physics));
         }
-        const bool propsMove = core::sameProps(motion.colliders, project.colliders);
+        const bool propsMove =
+            !filesChanged && core::sameProps(motion.colliders, project.colliders);
         std::vector<core::SceneProp> props;
         if (!propsMove) {
+            // The props of changed files give up no mesh: theirs are made anew.
+            std::vector<core::ColliderDesc> madeFor = motion.colliders;
+            for (core::ColliderDesc& c : madeFor)
+                if (c.shape == core::ColliderShape::Mesh && motion.changedFiles.contains(c.file))
+                    c.file.clear();
             auto loadedProps =
-                core::remakeSceneProps(loaded, live.scene->props, motion.colliders,
-                                       live.scene->groundOrigin, &motion.readAheadProps);
+                core::remakeSceneProps(loaded, live.scene->props, madeFor, live.scene->groundOrigin,
+                                       &motion.readAheadProps);
             motion.readAheadProps.clear();
             if (!loadedProps)
                 return loadedProps.error();
@@ -375,6 +397,10 @@ Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool se
         }
         motion.wind = project.wind;
         motion.colliders = project.colliders;
+        motion.changedFiles.clear();
+        // A prop of another shape shelters the snow elsewhere.
+        if (filesChanged && live.physics && live.physics->scene.anySnowLoad())
+            live.physics->weighSnowAgain(*live.scene);
         changed = true;
     }
     changed = followPhysicsSteps(live, project.physics) || changed;

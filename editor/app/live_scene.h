@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <vector>
@@ -145,9 +146,20 @@ struct LiveMotion {
     // next followMotion makes their props from these instead of reading the files on the
     // window's thread, then lets them go.
     std::map<std::string, core::MovableSurfaceMesh> readAheadProps;
+    // Mesh colliders' files another program changed (a rock re-exported from a modeller) since
+    // their packings and props were made: the next followMotion makes their props again, from
+    // readAheadProps or the file, and builds the physics with their new packings.
+    std::set<std::string> changedFiles;
     // Whether every mesh collider of `wanted` has its packing here: then following them
     // packs nothing (which could take seconds on the window's thread).
     bool packed(const std::vector<core::ColliderDesc>& wanted) const;
+    // `files` (as the project names them) changed on disk: their packings are let go, so the
+    // next follow packs them again (ColliderPackingJob), and their props are made again.
+    void forgetFiles(const std::set<std::string>& files);
+    // What a worker packed and read (ColliderPackingJob), kept for the next follow: a packing
+    // held already stays, a prop's mesh replaces one read before.
+    void takeReadAhead(core::ColliderPackings packed,
+                       std::map<std::string, core::MovableSurfaceMesh> props);
 };
 
 // What a project becomes on the GPU; rebuilt whole when the project is re-grown or replaced.
@@ -211,7 +223,8 @@ bool followPhysicsSteps(Live& live, const core::PhysicsParams& physics);
 // against live.builtFrom): the live physics takes its wind sources and colliders (built as
 // core::buildScenePhysics builds them, the packings from live.motion) and the colliders' props
 // follow (moved, or made again when a collider was added, deleted or given another mesh:
-// core::sameProps), while the field keeps its blades, their motion and their trails. Called every
+// core::sameProps, or its file changed on disk: LiveMotion::changedFiles), while the field keeps
+// its blades, their motion and their trails. Called every
 // frame of a gizmo drag; `settled` (the edit has ended), when the colliders moved: the blades they
 // held are let go (LivePhysics::releaseHeldBlades) and the snow's loads are weighed again under
 // them where they now stand (~0.5 s for projects/winter), not on every frame of the drag. Returns

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <optional>
+#include <set>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -11,6 +12,7 @@
 #include "app/commands.h"
 #include "app/edit_actions.h"
 #include "scene/layer_growth.h"
+#include "scene/motion_edit.h"
 #include "util/atomic_file.h"
 #include "util/content_digest.h"
 
@@ -40,32 +42,35 @@ void tell(EditorState& s, std::string message) {
 // A file the field is grown from: the surface's glTF, a layer's map, the billboards' texture, a
 // mesh collider's glTF.
 struct WatchedAsset {
-    fs::path path;
-    std::string name;                                           // as the project names it
-    std::optional<std::pair<std::size_t, core::LayerMap>> map;  // a layer's map
+    fs::path path = {};
+    std::string name = {};                                           // as the project names it
+    std::optional<std::pair<std::size_t, core::LayerMap>> map = {};  // a layer's map
     bool surface = false;
+    bool collider = false;  // a mesh collider's
 };
 
 std::vector<WatchedAsset> watchedAssets(const core::LoadedProject& loaded) {
     std::vector<WatchedAsset> assets;
-    const auto add = [&](const std::string& relative,
-                         std::optional<std::pair<std::size_t, core::LayerMap>> map, bool surface) {
+    const auto add = [&](const std::string& relative, WatchedAsset asset) {
         if (relative.empty())
             return;
-        if (auto path = core::resolveAssetPath(loaded.folder, relative, "watch"))
-            assets.push_back({*path, relative, map, surface});
+        if (auto path = core::resolveAssetPath(loaded.folder, relative, "watch")) {
+            asset.path = *path;
+            asset.name = relative;
+            assets.push_back(std::move(asset));
+        }
     };
     if (loaded.project.mesh.isFile)
-        add(loaded.project.mesh.file, std::nullopt, true);
+        add(loaded.project.mesh.file, {.surface = true});
     for (std::size_t i = 0; i < loaded.project.layers.size(); ++i)
         for (const core::LayerMap map : core::ALL_LAYER_MAPS)
-            add(core::layerMapFile(loaded.project.layers[i], map), std::pair(i, map), false);
-    add(loaded.project.billboards.texture, std::nullopt, false);
-    // A re-grow reads a collider's mesh again for its prop and packs it again (the packing cache
-    // is keyed by the file's bytes: core/collider/packing_cache.h).
+            add(core::layerMapFile(loaded.project.layers[i], map), {.map = std::pair(i, map)});
+    add(loaded.project.billboards.texture, {});
+    // Packed again (the packing cache is keyed by the file's bytes: core/collider/
+    // packing_cache.h) and its prop read again.
     for (const core::ColliderDesc& collider : loaded.project.colliders)
         if (collider.shape == core::ColliderShape::Mesh)
-            add(collider.file, std::nullopt, false);
+            add(collider.file, {.collider = true});
     return assets;
 }
 
@@ -83,6 +88,7 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
         watch.assets.clear();  // a Save wrote the painted maps: stamped afresh below
     std::vector<std::string> taken;
     std::vector<std::string> kept;
+    std::set<std::string> colliderFiles;
     bool surface = false;
     for (const WatchedAsset& asset : watchedAssets(s.doc.loaded)) {
         const std::optional<FileStamp> stamp = stampOf(asset.path);
@@ -103,6 +109,8 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
         watch.assetsSaid.erase(asset.path);
         taken.push_back(asset.name);
         surface = surface || asset.surface;
+        if (asset.collider)
+            colliderFiles.insert(asset.name);
     }
     if (!kept.empty()) {
         tell(s,
@@ -111,6 +119,15 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
     }
     if (taken.empty())
         return false;
+    // Only colliders' meshes, which no blade's place depends on: packed again while the field
+    // keeps its blades and their motion. (A file both a collider and a map name is taken twice,
+    // so the sizes differ then.)
+    if (colliderFiles.size() == taken.size() && !core::placementFollowsColliders(s.doc.project())) {
+        s.colliderFilesChangedOnDisk.insert(colliderFiles.begin(), colliderFiles.end());
+        tell(s, taken.front() + (taken.size() > 1 ? " and others" : "") +
+                    " changed on disk: packing the collider again (the field keeps its blades)");
+        return true;
+    }
     s.regrowFromDisk = true;
     s.surfaceChangedOnDisk = s.surfaceChangedOnDisk || surface;
     tell(s, "growing the field again from " + taken.front() +

@@ -484,7 +484,9 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     EXPECT_TRUE(look());
     EXPECT_TRUE(editor.state.regrowFromDisk);
     EXPECT_FALSE(editor.state.surfaceChangedOnDisk);
-    // A mesh collider's file re-exported: grown again too (its prop read and packed again).
+    // A mesh collider's file re-exported: packed again and its prop read again, the field
+    // keeping its blades (Editor::followMotionEdits); grown again where a layer's placement
+    // clears the ground under the colliders.
     editor.state.regrowFromDisk = false;
     fs::copy_file(sourceDir() / "tests/data/gltf/cube.glb", folder.path() / "rock.glb");
     core::ColliderDesc rock;
@@ -497,9 +499,24 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     fs::copy_file(sourceDir() / "tests/data/gltf/box_meshopt.glb", folder.path() / "rock.glb",
                   fs::copy_options::overwrite_existing);
     EXPECT_TRUE(look());
+    EXPECT_FALSE(editor.state.regrowFromDisk);
+    EXPECT_EQ(editor.state.colliderFilesChangedOnDisk, std::set<std::string>{"rock.glb"});
+    EXPECT_NE(editor.state.transient.message.find("rock.glb changed on disk: packing"),
+              std::string::npos)
+        << editor.state.transient.message;
+    editor.state.colliderFilesChangedOnDisk.clear();
+    edited->project.layers.front().rules.clearColliders = true;
+    ASSERT_TRUE(core::saveProject(edited->project, file).ok());
+    ASSERT_TRUE(look());
+    editor.state.regrowFromDisk = false;
+    fs::copy_file(sourceDir() / "tests/data/gltf/cube.glb", folder.path() / "rock.glb",
+                  fs::copy_options::overwrite_existing);
+    EXPECT_TRUE(look());
     EXPECT_TRUE(editor.state.regrowFromDisk);
+    EXPECT_TRUE(editor.state.colliderFilesChangedOnDisk.empty());
     EXPECT_FALSE(editor.state.surfaceChangedOnDisk);
-    EXPECT_NE(editor.state.transient.message.find("rock.glb"), std::string::npos)
+    EXPECT_NE(editor.state.transient.message.find("growing the field again from rock.glb"),
+              std::string::npos)
         << editor.state.transient.message;
     // A painted map changed elsewhere does not hold up a save into another folder: the painting
     // goes to new files there.

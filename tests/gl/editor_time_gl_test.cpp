@@ -19,6 +19,7 @@
 #include "gl_context_fixture.h"
 #include "maps/map_image.h"
 #include "project/project.h"
+#include "support/gltf_writer.h"
 #include "support/test_paths.h"
 
 namespace grass::test {
@@ -313,6 +314,30 @@ TEST(EditorTime, AnEditWhileTheFieldGrowsAgainStopsThatGrowing) {
         << run.log;
 }
 
+// The log of the editor run on `dir` (its script: 10 s of wall clock, `flags` added) while a
+// shell beside it makes `changes` in order, each as soon as the log holds its line (then 1.5 s
+// later, so that a slow start under load cannot read the changed file first): a command run in
+// `dir`, as another program saving there would.
+struct FileChange {
+    std::string afterLine;
+    std::string command;
+};
+std::string runWhileFilesChange(const std::filesystem::path& dir,
+                                const std::vector<FileChange>& changes, const std::string& flags) {
+    std::ofstream(dir / "script.txt") << "wait-s 10\n";
+    const std::string d = dir.string();
+    std::string inner = "(cd " + d + "; ";
+    for (const FileChange& change : changes)
+        inner += "n=0; until grep -q \"" + change.afterLine + "\" log.txt || [ $n -ge 60 ]; do " +
+                 "sleep 0.25; n=$((n+1)); done; sleep 1.5; " + change.command + "; ";
+    inner += ") & " + std::string(GRASS_EDITOR_EXE) + " " + d + " " + flags +
+             " --wall-clock --script " + d + "/script.txt > " + d + "/log.txt 2>&1";
+    const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' sh -c '" + inner + "'";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    std::ifstream in(dir / "log.txt");
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
 // Files of the project changed by another program while the editor plays: project.json saved
 // from a text editor (density 20 → 40, and a density map named) is taken as an edit, and the
 // field grows again with twice the blades; then that map saved again at half (as `grass paint`
@@ -330,24 +355,11 @@ TEST(EditorTime, FilesChangedByAnotherProgramAreFollowed) {
     edited->project.layers.front().scatter.density *= 2.0f;
     edited->project.layers.front().densityMap = "maps/d.png";
     ASSERT_TRUE(core::saveProject(edited->project, dir / "edited.json").ok());
-    std::ofstream(dir / "script.txt") << "wait-s 10\n";
-    const std::string d = dir.string();
-    // Each change once the editor has shown the field before it (its log line), so that a slow
-    // start under load cannot read the edited file first.
-    const auto after = [&](const std::string& line) {
-        return "n=0; until grep -q \"" + line + "\" " + d +
-               "/log.txt || [ $n -ge 60 ]; do sleep 0.25; n=$((n+1)); done; sleep 1.5; ";
-    };
-    const std::string inner = "(" + after("blades, geometry") + "cp " + d + "/edited.json " + d +
-                              "/p.tmp && mv " + d + "/p.tmp " + d + "/project.json; " +
-                              after("grew the field again") + "cp " + d + "/half.png " + d +
-                              "/m.tmp && mv " + d + "/m.tmp " + d + "/maps/d.png) & " +
-                              GRASS_EDITOR_EXE + " " + d + " --no-physics --wall-clock --script " +
-                              d + "/script.txt > " + d + "/log.txt 2>&1";
-    const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' sh -c '" + inner + "'";
-    ASSERT_EQ(std::system(command.c_str()), 0) << command;
-    std::ifstream in(dir / "log.txt");
-    const std::string log((std::istreambuf_iterator<char>(in)), {});
+    const std::string log =
+        runWhileFilesChange(dir,
+                            {{"blades, geometry", "cp edited.json p.tmp && mv p.tmp project.json"},
+                             {"grew the field again", "cp half.png m.tmp && mv m.tmp maps/d.png"}},
+                            "--no-physics");
     const long first = bladesIn(log, ", ([0-9]+) blades, geometry ");
     std::vector<long> regrown;
     const std::regex grew("grew the field again: ([0-9]+) blades");
@@ -359,6 +371,42 @@ TEST(EditorTime, FilesChangedByAnotherProgramAreFollowed) {
     EXPECT_EQ(regrown[0], 2 * first) << log;
     EXPECT_GT(regrown[1], regrown[0] / 4) << log;
     EXPECT_LT(regrown[1], regrown[0] * 3 / 4) << "the half map: " << log;
+}
+
+// A mesh collider's file re-exported while the editor plays (a rock made a tall post in the
+// modeller, moved into place as exporters save) is packed again on a worker and its prop made
+// from the new mesh, while the field keeps its blades and their motion: the log says the
+// packing of the new mesh (another share of it covered) and never that the field grew again.
+// Before, the whole field grew again for it and its blades restarted from rest.
+TEST(EditorTime, AMeshColliderChangedOnDiskIsPackedAgainWithoutTheFieldGrowing) {
+    const auto dir = scratchDir("editor_follow_collider_file");
+    writeTinyProject(dir, "tiny", 900, 560, /*windy=*/true);
+    auto project = core::loadProject(dir);
+    ASSERT_TRUE(project.ok()) << project.error().str();
+    core::ColliderDesc rock;
+    rock.name = "rock";
+    rock.shape = core::ColliderShape::Mesh;
+    rock.file = "rock.gltf";
+    rock.sphereCount = 16;
+    project->project.colliders = {rock};
+    ASSERT_TRUE(core::saveProject(project->project, dir / "project.json").ok());
+    writeGltf(dir / "rock.gltf",
+              singleMeshAsset(boxPrimitive({-0.3f, 0.0f, -0.3f}, {0.3f, 0.4f, 0.3f})));
+    writeGltf(dir / "post.gltf",
+              singleMeshAsset(boxPrimitive({-0.1f, 0.0f, -0.1f}, {0.1f, 1.2f, 0.1f})));
+    const std::string log = runWhileFilesChange(
+        dir, {{"blades, geometry", "cp post.gltf r.tmp && mv r.tmp rock.gltf"}}, "");
+    EXPECT_EQ(log.find("grew the field again"), std::string::npos) << log;
+    EXPECT_NE(log.find("rock.gltf changed on disk: packing the collider again"), std::string::npos)
+        << log;
+    std::vector<std::string> covered;
+    const std::regex packed(
+        "note: collider rock: rock.gltf as .*, ([0-9.]+) % of the mesh covered");
+    for (auto it = std::sregex_iterator(log.begin(), log.end(), packed);
+         it != std::sregex_iterator(); ++it)
+        covered.push_back((*it)[1]);
+    ASSERT_EQ(covered.size(), 2u) << "packed when grown, and again: " << log;
+    EXPECT_NE(covered[0], covered[1]) << "the new mesh was packed: " << log;
 }
 
 #ifdef GRASS_CLOSE_WINDOW_EXE

@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "app/collider_packing_job.h"
 #include "app/live_scene.h"
 #include "gl/headless_context.h"
 #include "gl_context_fixture.h"
@@ -347,11 +348,8 @@ TEST_F(LivePhysicsTest, ABallAddedOrDeletedIsFollowedWithoutTheFieldGrowingAgain
     EXPECT_TRUE(live.motion.packed(added.project.colliders));
 }
 
-// A mesh collider (a rock) dragged in the editor is followed from the packing its field was grown
-// with: no frame of the drag reads its mesh or its packing cache (here both are gone), and its
-// spheres are those a fresh build of the moved rock would give.
-TEST_F(LivePhysicsTest, ADraggedRockIsFollowedWithoutReadingItsFiles) {
-    const std::filesystem::path dir = scratchDir("live_physics_rock");
+// A plane field in `dir` with a rock on it: a mesh collider of 16 spheres, its box in rock.gltf.
+core::LoadedProject rockProject(const std::filesystem::path& dir) {
     writeGltf(dir / "rock.gltf",
               singleMeshAsset(boxPrimitive({-0.3f, 0.0f, -0.2f}, {0.3f, 0.4f, 0.2f})));
     core::LoadedProject loaded = planeFieldProject({2.0f, 4, 60.0f, 0.3f, 0.5f}, dir);
@@ -361,6 +359,15 @@ TEST_F(LivePhysicsTest, ADraggedRockIsFollowedWithoutReadingItsFiles) {
     rock.file = "rock.gltf";
     rock.sphereCount = 16;
     loaded.project.colliders = {rock};
+    return loaded;
+}
+
+// A mesh collider (a rock) dragged in the editor is followed from the packing its field was grown
+// with: no frame of the drag reads its mesh or its packing cache (here both are gone), and its
+// spheres are those a fresh build of the moved rock would give.
+TEST_F(LivePhysicsTest, ADraggedRockIsFollowedWithoutReadingItsFiles) {
+    const std::filesystem::path dir = scratchDir("live_physics_rock");
+    core::LoadedProject loaded = rockProject(dir);
     core::LoadedProject moved = loaded;
     moved.project.colliders[0].position = {0.5f, 0.0f, 0.2f};
     auto expected = core::buildScenePhysics(moved);
@@ -373,6 +380,55 @@ TEST_F(LivePhysicsTest, ADraggedRockIsFollowedWithoutReadingItsFiles) {
     auto followed = editor::followMotion(live, moved, /*settled=*/false);
     ASSERT_TRUE(followed.ok()) << followed.error().str();
     EXPECT_TRUE(live.physics->scene.colliders == expected->colliders);
+}
+
+// A rock re-exported from a modeller while the editor plays (its file changed on disk,
+// project_file_watch.cpp) is packed again on a worker and its prop read there too, as the
+// Editor does (ColliderPackingJob); the next follow takes both: the physics holds the spheres a
+// fresh build of the new file gives, the prop is the new mesh, and the field is the one it was,
+// its blades in motion. Before, the whole field grew again and its blades restarted from rest.
+TEST_F(LivePhysicsTest, ARockChangedOnDiskIsPackedAgainWithoutTheFieldGrowingAgain) {
+    const std::filesystem::path dir = scratchDir("live_physics_rock_changed");
+    core::LoadedProject loaded = rockProject(dir);
+    editor::Live live = liveOn(loaded, editor::PhysicsDevice::Cpu);
+    ASSERT_TRUE(live.physics);
+    live.physics->advanceTo(0.5, 1000);
+    const core::Scene* field = live.scene.get();
+    const std::size_t steps = live.physics->steps;
+
+    // The rock made taller and narrower in the modeller.
+    writeGltf(dir / "rock.gltf",
+              singleMeshAsset(boxPrimitive({-0.1f, 0.0f, -0.1f}, {0.1f, 0.9f, 0.1f})));
+    auto expected = core::buildScenePhysics(loaded);
+    ASSERT_TRUE(expected.ok()) << expected.error().str();
+    ASSERT_FALSE(live.physics->scene.colliders == expected->colliders) << "the old packing";
+    EXPECT_FALSE(*editor::followMotion(live, loaded, true)) << "nothing is known to have changed";
+
+    live.motion.forgetFiles({"rock.gltf"});
+    EXPECT_FALSE(live.motion.packed(loaded.project.colliders));
+    editor::ColliderPackingJob job(loaded, live.scene->groundOrigin, live.motion.packings, {},
+                                   live.motion.changedFiles);
+    job.wait();
+    auto packed = job.take();
+    ASSERT_TRUE(packed.ok()) << packed.error().str();
+    ASSERT_EQ(packed->props.count("rock.gltf"), 1u) << "the prop's mesh read on the worker";
+    live.motion.takeReadAhead(std::move(packed->packings), std::move(packed->props));
+    ASSERT_TRUE(live.motion.packed(loaded.project.colliders));
+    // The window reads no file for it now.
+    std::filesystem::remove(dir / "rock.gltf");
+    std::filesystem::remove_all(dir / ".grass-cache");
+    auto followed = editor::followMotion(live, loaded, /*settled=*/true);
+    ASSERT_TRUE(followed.ok()) << followed.error().str();
+    EXPECT_TRUE(*followed);
+    EXPECT_TRUE(live.physics->scene.colliders == expected->colliders);
+    ASSERT_EQ(live.scene->props.size(), 1u);
+    const core::Bounds bounds = core::meshBounds(live.scene->props[0].mesh);
+    EXPECT_NEAR(bounds.max.y, 0.9f, 1e-5f);
+    EXPECT_NEAR(bounds.max.x, 0.1f, 1e-5f);
+    EXPECT_TRUE(live.motion.changedFiles.empty());
+    EXPECT_EQ(live.scene.get(), field) << "the same field";
+    EXPECT_EQ(live.physics->steps, steps) << "stepping on, not restarted";
+    EXPECT_FALSE(*editor::followMotion(live, loaded, true)) << "followed once";
 }
 
 // A ball that sat on the grass for a while and is then moved away by an edit lets go of the
