@@ -2,6 +2,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <system_error>
@@ -275,6 +278,35 @@ void markRecoveredMaps(EditorState& s) {
     s.transient.message = "recovered the autosaved work: save to keep it";
 }
 
+std::string timeAgo(double seconds) {
+    const auto count = [](double amount, const char* unit) {
+        const long whole = std::max(1L, std::lround(std::floor(amount)));
+        return std::to_string(whole) + " " + unit + (whole == 1 ? "" : "s") + " ago";
+    };
+    if (!(seconds >= 60.0))  // a clock set back says "just now" too
+        return "just now";
+    if (seconds < 3600.0)
+        return count(seconds / 60.0, "minute");
+    if (seconds < 48.0 * 3600.0)
+        return count(seconds / 3600.0, "hour");
+    return count(seconds / 86400.0, "day");
+}
+
+namespace {
+
+// " 5 minutes ago": when the side project `file` was written; empty when it cannot be read.
+std::string writtenAgo(const fs::path& file) {
+    std::error_code ec;
+    const fs::file_time_type written = fs::last_write_time(file, ec);
+    if (ec)
+        return {};
+    return " " +
+           timeAgo(
+               std::chrono::duration<double>(fs::file_time_type::clock::now() - written).count());
+}
+
+}  // namespace
+
 void recoveryWindow(ui::Context& ctx, EditorState& s) {
     if (!s.recoveryOffer)
         return;
@@ -283,6 +315,11 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
     // a saved project's that its folder refused (it names that project).
     const bool unsaved = s.recoveryOffer->file.empty();
     const fs::path origin = unsaved ? unsavedAutosaveOrigin(s.recoveryOffer->folder) : fs::path();
+    // Which work and when: the project open now may be another one (a never-saved project's
+    // autosave is offered whatever the editor opened), and an old autosave is told from a
+    // minute-old one.
+    const std::string ago = writtenAgo(unsaved ? s.recoveryOffer->folder / UNSAVED_SIDE_PROJECT
+                                               : autosavePath(*s.recoveryOffer));
     bool open = true;
     ui::window(
         ctx, "Recover unsaved work?", &open,
@@ -290,10 +327,14 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
             ui.label("The editor did not close cleanly last time.");
             if (!origin.empty()) {
                 ui.wrappedLabel("An autosave of " + origin.string() +
-                                " was kept in your unsaved folder (the project's folder could not be written).");
+                                " was kept in your unsaved folder" + ago +
+                                " (the project's folder could not be written).");
+            } else if (unsaved) {
+                ui.wrappedLabel("A new project that was never saved, \"" +
+                                s.recoveryOffer->project.name + "\", was autosaved" + ago + ".");
             } else {
-                ui.label(unsaved ? "A new project that was never saved was autosaved."
-                                 : "An autosave of this project has changes that were not saved.");
+                ui.wrappedLabel("An autosave of this project, written" + ago +
+                                ", has changes that were not saved.");
             }
             ui.horizontal([&](ui::Ui& row) {
                 if (row.button("Recover").onHoverText("Open the autosaved work (it stays unsaved until you save)").clicked())
@@ -310,7 +351,7 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
             });
         },
         ui::Rect::fromMinSize({screen.centre().x - 220.0f, screen.centre().y - 60.0f},
-                              {440.0f, origin.empty() ? 110.0f : 132.0f}));
+                              {440.0f, origin.empty() ? 132.0f : 154.0f}));
     if (!open)
         s.recoveryOffer.reset();  // decided later: the side files stay until a save
 }

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "app/panels.h"
 #include "util/result.h"
@@ -64,7 +65,12 @@ std::optional<core::LoadedProject> findAutosave(const core::LoadedProject& loade
 // writes them where they belong; the project counts as unsaved.
 void markRecoveredMaps(EditorState& state);
 
-// The "Recover unsaved work?" window while state.recoveryOffer is set.
+// How long ago `seconds` is, as the recovery offer says it: "just now", "5 minutes ago",
+// "3 hours ago", "2 days ago".
+std::string timeAgo(double seconds);
+
+// The "Recover unsaved work?" window while state.recoveryOffer is set: which work (the
+// project's name, or its file) and how long ago it was autosaved.
 void recoveryWindow(ui::Context& ctx, EditorState& state);
 
 }  // namespace grass::editor

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -1208,6 +1209,14 @@ TEST(EditorPanels, ANeverSavedProjectIsAutosavedIntoTheUsersFolderAndOfferedBack
     EXPECT_TRUE(offered->file.empty()) << "still never saved: Save asks where";
     EXPECT_EQ(offered->project.layers.front().soilMap, "maps/soil.autosave.png");
     EXPECT_TRUE(core::buildScene(*offered).ok()) << "it grows from the slot's files";
+    // The offer says which project and when: the editor may have opened another one.
+    editor.state.recoveryOffer = *offered;
+    std::string offer;
+    for (const std::string& text : editor.shownTexts())
+        offer += text + " ";
+    EXPECT_NE(offer.find("\"" + offered->project.name + "\","), std::string::npos) << offer;
+    EXPECT_NE(offer.find("just now."), std::string::npos) << offer;
+    editor.state.recoveryOffer.reset();
 
     // Saved: nothing left to recover.
     ASSERT_TRUE(editor::saveTo(editor.state, (folder.path() / "saved/project.json").string()));
@@ -1227,6 +1236,20 @@ TEST(EditorPanels, ANeverSavedProjectIsAutosavedIntoTheUsersFolderAndOfferedBack
     EXPECT_EQ(said.rfind("not autosaved: ", 0), 0u) << said;
     EXPECT_NE(said.find("Save As"), std::string::npos) << said;
     EXPECT_TRUE(editor.state.transient.messageIsSaveError) << "shown in the warning colour";
+}
+
+// How long ago an autosave was written, as the recovery offer says it.
+TEST(EditorPanels, TheRecoveryOfferSaysHowLongAgoInWholeUnits) {
+    EXPECT_EQ(editor::timeAgo(0.0), "just now");
+    EXPECT_EQ(editor::timeAgo(59.9), "just now");
+    EXPECT_EQ(editor::timeAgo(-30.0), "just now") << "a clock set back";
+    EXPECT_EQ(editor::timeAgo(std::nan("")), "just now");
+    EXPECT_EQ(editor::timeAgo(60.0), "1 minute ago");
+    EXPECT_EQ(editor::timeAgo(179.0), "2 minutes ago");
+    EXPECT_EQ(editor::timeAgo(3599.0), "59 minutes ago");
+    EXPECT_EQ(editor::timeAgo(3600.0), "1 hour ago");
+    EXPECT_EQ(editor::timeAgo(47.9 * 3600.0), "47 hours ago");
+    EXPECT_EQ(editor::timeAgo(3.5 * 86400.0), "3 days ago");
 }
 
 // A saved project whose folder refuses the autosave (read-only, full; here a folder stands where
