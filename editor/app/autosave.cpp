@@ -11,6 +11,7 @@
 
 #include "app/mesh_import.h"
 #include "maps/map_image.h"
+#include "ui/text_wrap.h"
 #include "ui/ui.h"
 #include "ui/window.h"
 #include "util/atomic_file.h"
@@ -320,22 +321,28 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
     // minute-old one.
     const std::string ago = writtenAgo(unsaved ? s.recoveryOffer->folder / UNSAVED_SIDE_PROJECT
                                                : autosavePath(*s.recoveryOffer));
+    const std::string said =
+        !origin.empty() ? "An autosave of " + origin.string() + " was kept in your unsaved folder" +
+                              ago + " (the project's folder could not be written)."
+        : unsaved
+            ? "A new project that was never saved, \"" + s.recoveryOffer->project.name +
+                  "\", was autosaved" + ago + "."
+            : "An autosave of this project, written" + ago + ", has changes that were not saved.";
+    // Tall enough for the text as it wraps (a long path takes lines), so the buttons below it
+    // are never cut off: the title, the first line, the wrapped ones, the buttons' row.
+    constexpr float WIDTH = 440.0f;
+    const ui::Style& style = ctx.style();
+    const float line = ctx.fonts().textSize("Ag", style.textSizePt).y + style.itemSpacing.y;
+    const std::size_t wrapped =
+        ui::wrapText(ctx.fonts(), style.textSizePt, said, WIDTH - 24.0f).size();
+    const float height =
+        style.interactHeight + 16.0f + float(1 + wrapped) * line + style.interactHeight + 16.0f;
     bool open = true;
     ui::window(
         ctx, "Recover unsaved work?", &open,
         [&](ui::Ui& ui) {
             ui.label("The editor did not close cleanly last time.");
-            if (!origin.empty()) {
-                ui.wrappedLabel("An autosave of " + origin.string() +
-                                " was kept in your unsaved folder" + ago +
-                                " (the project's folder could not be written).");
-            } else if (unsaved) {
-                ui.wrappedLabel("A new project that was never saved, \"" +
-                                s.recoveryOffer->project.name + "\", was autosaved" + ago + ".");
-            } else {
-                ui.wrappedLabel("An autosave of this project, written" + ago +
-                                ", has changes that were not saved.");
-            }
+            ui.wrappedLabel(said);
             ui.horizontal([&](ui::Ui& row) {
                 if (row.button("Recover").onHoverText("Open the autosaved work (it stays unsaved until you save)").clicked())
                     s.recoverRequested = true;
@@ -350,8 +357,8 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
                 }
             });
         },
-        ui::Rect::fromMinSize({screen.centre().x - 220.0f, screen.centre().y - 60.0f},
-                              {440.0f, origin.empty() ? 132.0f : 154.0f}));
+        ui::Rect::fromMinSize({screen.centre().x - 0.5f * WIDTH, screen.centre().y - 60.0f},
+                              {WIDTH, height}));
     if (!open)
         s.recoveryOffer.reset();  // decided later: the side files stay until a save
 }

@@ -207,8 +207,9 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
         state.recoveryOffer = findUnsavedAutosave();
     state.recoverRequested = e.mSettings.recover && state.recoveryOffer.has_value();
     e.resetTimeline();
-    std::fprintf(stderr, "grass-editor: %s, %zu blades, geometry %s\n",
-                 gl::rendererDescription().c_str(), e.mLive.scene->totalBlades(),
+    state.glRenderer = gl::rendererDescription();
+    std::fprintf(stderr, "grass-editor: %s, %zu blades, geometry %s\n", state.glRenderer.c_str(),
+                 e.mLive.scene->totalBlades(),
                  render::geometryPathLabel(state.view.options.geometry));
     e.mStartTime = e.mLastStatus = e.mLastTick = Clock::now();
     e.mTimelineStartS = state.view.timeline.timeS();

@@ -181,6 +181,7 @@ struct Transient {
     // File → Export…: the dialog's choices.
     bool exportDialog = false;
     bool shortcutsWindow = false;  // Help › Keyboard shortcuts
+    bool aboutWindow = false;      // Help › About grass
     std::string exportDir;
     int exportFormat = 0;  // core::ExportFormat
     int exportLod = 0;
@@ -190,6 +191,10 @@ struct EditorState {
     Document doc;
     ViewState view;
     Transient transient;
+
+    // The OpenGL renderer and version the window draws with ("llvmpipe (LLVM 15.0.6, 256 bits)
+    // | 4.5 (Core Profile) Mesa 22.3.6"), for Help › About and bug reports; set by the Editor.
+    std::string glRenderer;
 
     // The live field the document is drawn from (the Editor points these at its own).
     core::Scene* scene = nullptr;  // colours and shapes are read from it every frame

@@ -15,6 +15,7 @@
 #include "util/arg_parser.h"
 #include "util/image_file.h"
 #include "util/interrupt_stop.h"
+#include "util/version.h"
 
 namespace {
 
@@ -103,10 +104,16 @@ int main(int argc, char** argv) {
                 "show the viewport alone over the whole window (what `grass render` draws; "
                 "tests compare the two)",
                 &settings.noUi);
+    bool versionRequested = false;
+    parser.flag("--version", "print the version and exit", &versionRequested);
     if (auto parsed = parser.parse(std::vector<std::string>(argv + 1, argv + argc)); !parsed)
         return fail(parsed.error().str(), 2);
     if (parser.helpRequested()) {
         std::fputs(parser.help().c_str(), stdout);
+        return 0;
+    }
+    if (versionRequested) {
+        std::printf("grass-editor %s\n", std::string(core::versionText()).c_str());
         return 0;
     }
     settings.adaptive = !noAdaptive;

@@ -498,6 +498,7 @@ ui::Rect buildPanels(ui::Context& ctx, EditorState& s) {
     exportWindow(ctx, s);
     shortcutsWindow(ctx, s);
     messagesWindow(ctx, s);
+    aboutWindow(ctx, s);
     recoveryWindow(ctx, s);
     return central;
 }

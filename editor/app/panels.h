@@ -90,6 +90,9 @@ struct Shortcut {
 std::span<const Shortcut> keyboardShortcuts();
 void helpMenu(ui::Ui& bar, EditorState& state);
 void shortcutsWindow(ui::Context& ctx, EditorState& state);
+// Help › About grass: what the window says, line by line (its Copy button copies them).
+std::vector<std::string> aboutLines(const EditorState& state);
+void aboutWindow(ui::Context& ctx, EditorState& state);
 // Starts exporting the live scene with the dialog's choices.
 void startExport(EditorState& state);
 

@@ -1,12 +1,19 @@
 // Help › Keyboard shortcuts (issue 26 item 4): every key of the editor in one window, from the
-// one table the window and the test read (keyboardShortcuts, panels.h).
+// one table the window and the test read (keyboardShortcuts, panels.h). Help › About grass: the
+// version, the OpenGL renderer and where the guide and the autosaves are, to copy into a report.
 #include <algorithm>
 #include <array>
+#include <filesystem>
+#include <string>
+#include <system_error>
+#include <vector>
 
+#include "app/autosave.h"
 #include "app/panels.h"
 #include "ui/menu.h"
 #include "ui/ui.h"
 #include "ui/window.h"
+#include "util/version.h"
 
 namespace grass::editor {
 
@@ -55,7 +62,54 @@ void helpMenu(ui::Ui& bar, EditorState& s) {
             s.transient.shortcutsWindow = true;
         if (ui::menuItem(m, "Messages"))
             s.transient.messagesWindow = true;
+        m.separator();
+        if (ui::menuItem(m, "About grass"))
+            s.transient.aboutWindow = true;
     });
+}
+
+std::vector<std::string> aboutLines(const EditorState& s) {
+    std::vector<std::string> lines{
+        "grass-editor " + std::string(core::versionText()),
+        "An authoring editor for real-time grass fields.",
+        "OpenGL: " + (s.glRenderer.empty() ? std::string("not known yet") : s.glRenderer)};
+    // The guide where this build's sources are (the shaders and default projects are read
+    // there too); an installed copy without them says where the guide is kept.
+    const std::filesystem::path guide = std::filesystem::path(GRASS_SOURCE_DIR) / "docs/editing.md";
+    std::error_code ec;
+    lines.push_back("Guide: " + (std::filesystem::is_regular_file(guide, ec)
+                                     ? guide.string()
+                                     : std::string("docs/editing.md in grass's sources")));
+    const std::filesystem::path unsaved = unsavedAutosaveRoot();
+    lines.push_back("Never-saved projects autosave into: " +
+                    (unsaved.empty()
+                         ? std::string("nowhere (neither XDG_STATE_HOME nor HOME is set)")
+                         : unsaved.string()));
+    return lines;
+}
+
+void aboutWindow(ui::Context& ctx, EditorState& s) {
+    if (!s.transient.aboutWindow)
+        return;
+    const ui::Rect screen = ctx.screenRect();
+    const float width = std::max(300.0f, std::min(560.0f, screen.width() - 20.0f));
+    const std::vector<std::string> lines = aboutLines(s);
+    ui::window(
+        ctx, "About grass", &s.transient.aboutWindow,
+        [&](ui::Ui& ui) {
+            // First, as in Messages: long paths wrap onto more lines than a small window shows.
+            if (ui.button("Copy").onHoverText("Copy these lines (for a bug report)").clicked()) {
+                std::string all;
+                for (const std::string& line : lines)
+                    all += line + "\n";
+                ctx.output().copiedText = all;
+            }
+            ui.separator();
+            for (const std::string& line : lines)
+                ui.wrappedLabel(line);
+        },
+        ui::Rect::fromMinSize({screen.centre().x - 0.5f * width, screen.min.y + 80.0f},
+                              {width, 200.0f}));
 }
 
 void shortcutsWindow(ui::Context& ctx, EditorState& s) {

@@ -9,6 +9,7 @@
 
 #include "cli/commands.h"
 #include "util/nearest_name.h"
+#include "util/version.h"
 
 namespace {
 
@@ -68,7 +69,7 @@ int main(int argc, char** argv) {
         return 0;
     }
     if (args[0] == "--version") {
-        std::puts("grass 0.1.0");
+        std::printf("grass %s\n", std::string(grass::core::versionText()).c_str());
         return 0;
     }
     const std::string command = args[0];

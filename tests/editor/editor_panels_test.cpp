@@ -37,6 +37,7 @@
 #include "support/test_paths.h"
 #include "ui/font.h"
 #include "util/atomic_file.h"
+#include "util/version.h"
 
 namespace grass::test {
 namespace {
@@ -1177,6 +1178,19 @@ private:
     std::optional<std::string> mOld;
 };
 
+// Whether the recovery offer's Recover and Discard buttons are drawn whole, within what the
+// window shows.
+bool recoveryButtonsShown(EditorDriver& editor) {
+    const ui::Output& out = editor.frame();
+    int whole = 0;
+    for (const char* button : {"Recover", "Discard"})
+        for (const ui::ClippedShape& shape : out.shapes)
+            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape); t && t->text == button)
+                whole += shape.clip.contains(t->pos) &&
+                         shape.clip.contains(t->pos + ui::Vec2(0.0f, t->sizePt));
+    return whole == 2;
+}
+
 // A project never saved (New, New from mesh) has no folder of its own: its autosave goes to the
 // user's unsaved folder as a project of its own, the files it names copied along, and is offered
 // back after a crash (not while another editor that owns it runs); a save removes it. Before,
@@ -1216,7 +1230,19 @@ TEST(EditorPanels, ANeverSavedProjectIsAutosavedIntoTheUsersFolderAndOfferedBack
         offer += text + " ";
     EXPECT_NE(offer.find("\"" + offered->project.name + "\","), std::string::npos) << offer;
     EXPECT_NE(offer.find("just now."), std::string::npos) << offer;
+    EXPECT_TRUE(recoveryButtonsShown(editor));
     editor.state.recoveryOffer.reset();
+    // However many lines a long name wraps onto, the window (first shown, in a window system of
+    // its own) is tall enough for its buttons (before, its height was fixed and they went below
+    // its edge).
+    {
+        const ScratchFolder elsewhere("editor-unsaved-long-name");
+        EditorDriver fresh(elsewhere.path());
+        fresh.state.recoveryOffer = *offered;
+        for (int i = 0; i < 8; ++i)
+            fresh.state.recoveryOffer->project.name += "the meadow behind the old mill ";
+        EXPECT_TRUE(recoveryButtonsShown(fresh));
+    }
 
     // Saved: nothing left to recover.
     ASSERT_TRUE(editor::saveTo(editor.state, (folder.path() / "saved/project.json").string()));
@@ -1287,6 +1313,7 @@ TEST(EditorPanels, AProjectWhoseFolderRefusesTheAutosaveIsAutosavedIntoTheUsersF
     const std::set<std::string> shown = editor.shownTexts();
     EXPECT_TRUE(shown.count("An autosave of"));
     EXPECT_TRUE(shown.count(editor.state.doc.loaded.file.string() + " was")) << "the offer names the project";
+    EXPECT_TRUE(recoveryButtonsShown(editor));
     editor.state.recoveryOffer.reset();
 
     // Recovered, its Save As starts where the project was, which it saves onto without asking
@@ -1552,6 +1579,34 @@ TEST(EditorPanels, HelpListsEveryKeyboardShortcut) {
     }
     for (const char* key : {"Delete", "F", "Space", "Ctrl+Z", "Ctrl+S"})
         EXPECT_TRUE(shown.count(key)) << key;
+}
+
+// Help › About grass says the version, the OpenGL renderer, where the guide and the autosaves of
+// never-saved projects are; Copy puts those lines on the clipboard for a bug report.
+TEST(EditorPanels, HelpAboutSaysTheVersionAndRendererAndCopiesThem) {
+    const ScratchFolder folder("editor-about");
+    const ScratchFolder stateHome("editor-about-state");
+    const ScopedEnv state("XDG_STATE_HOME", stateHome.path().c_str());
+    EditorDriver editor(folder.path());
+    editor.state.glRenderer = "Test Renderer | 4.5 (Core Profile)";
+    editor.click("Help");
+    editor.click("About grass");
+    ASSERT_TRUE(editor.state.transient.aboutWindow);
+    const std::set<std::string> shown = editor.shownTexts();
+    std::string said;  // wrapped lines joined again
+    for (const std::string& text : shown)
+        said += text + " ";
+    EXPECT_TRUE(shown.count("grass-editor " + std::string(core::versionText()))) << said;
+    EXPECT_TRUE(shown.count("OpenGL: Test Renderer | 4.5 (Core Profile)")) << said;
+    EXPECT_TRUE(shown.count("Guide: " + (sourceDir() / "docs/editing.md").string())) << said;
+    EXPECT_NE(said.find((stateHome.path() / "grass/unsaved").string()), std::string::npos) << said;
+    EXPECT_NE(core::versionText(), "unknown") << "CMake's project version reaches the build";
+    editor.click("Copy");
+    const auto& copied = editor.ctx.output().copiedText;
+    ASSERT_TRUE(copied.has_value());
+    EXPECT_EQ(copied->rfind("grass-editor " + std::string(core::versionText()) + "\n", 0), 0u)
+        << *copied;
+    EXPECT_NE(copied->find("OpenGL: Test Renderer"), std::string::npos) << *copied;
 }
 
 // Issue 26 item 4: a setting's widget says what it is, what it accepts and where it is saved.
