@@ -58,4 +58,8 @@ std::string elideText(const FontAtlas& fonts, float sizePt, std::string_view tex
     return std::string(text.substr(0, fits)) + std::string(ellipsis);
 }
 
+float linesHeight(const FontAtlas& fonts, float sizePt, float spacing, std::size_t lines) {
+    return static_cast<float>(lines) * (fonts.textSize("Ag", sizePt).y + spacing);
+}
+
 }  // namespace grass::ui

@@ -16,6 +16,10 @@ namespace grass::ui {
 std::vector<std::string> wrapText(const FontAtlas& fonts, float sizePt, std::string_view text,
                                   float width);
 
+// The height of `lines` lines of text at sizePt, `spacing` apart (Style::itemSpacing.y): what
+// wrapText's lines take as labels, for a window sized to the text it wraps.
+float linesHeight(const FontAtlas& fonts, float sizePt, float spacing, std::size_t lines);
+
 // `text` whole when it is no wider than `width` points at sizePt, else its longest beginning
 // that fits with " …" after it (never cut inside a UTF-8 sequence): one line that must keep
 // its place, such as a status line.

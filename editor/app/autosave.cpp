@@ -332,11 +332,10 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
     // are never cut off: the title, the first line, the wrapped ones, the buttons' row.
     constexpr float WIDTH = 440.0f;
     const ui::Style& style = ctx.style();
-    const float line = ctx.fonts().textSize("Ag", style.textSizePt).y + style.itemSpacing.y;
     const std::size_t wrapped =
         ui::wrapText(ctx.fonts(), style.textSizePt, said, WIDTH - 24.0f).size();
     const float height =
-        style.interactHeight + 16.0f + float(1 + wrapped) * line + style.interactHeight + 16.0f;
+        70.0f + ui::linesHeight(ctx.fonts(), style.textSizePt, style.itemSpacing.y, 1 + wrapped);
     bool open = true;
     ui::window(
         ctx, "Recover unsaved work?", &open,

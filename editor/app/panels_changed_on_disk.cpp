@@ -22,10 +22,10 @@ void changedOnDiskWindow(ui::Context& ctx, EditorState& s) {
     // Tall enough for the text as it wraps (a long path takes lines of its own) and the buttons.
     constexpr float WIDTH = 460.0f;
     const ui::Style& style = ctx.style();
-    const float lineHeight = ctx.fonts().textSize("Ag", style.textSizePt).y + style.itemSpacing.y;
-    const auto lines =
-        static_cast<float>(ui::wrapText(ctx.fonts(), style.textSizePt, said, WIDTH - 24.0f).size());
-    const float height = 70.0f + lines * lineHeight;
+    const float height =
+        70.0f +
+        ui::linesHeight(ctx.fonts(), style.textSizePt, style.itemSpacing.y,
+                        ui::wrapText(ctx.fonts(), style.textSizePt, said, WIDTH - 24.0f).size());
     ui::window(
         ctx, "Changed on disk", &s.transient.changedOnDisk,
         [&](ui::Ui& ui) {
