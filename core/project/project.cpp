@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <string>
 #include <system_error>
+#include <vector>
 
 #include "mesh/gltf_loader.h"
 #include "project/json_reader.h"
@@ -58,6 +60,28 @@ Result<fs::path> resolveAssetPath(const fs::path& folder, const std::string& rel
     return joined;
 }
 
+namespace {
+
+// "; it holds the mesh ground.glb: …" for a folder without a project that holds a glTF file (the
+// first by name, of the folder's first 4096 entries): a mesh given its folder as a project, the
+// way to a project around it. Empty otherwise.
+std::string meshInFolderHint(const fs::path& folder) {
+    std::error_code ec;
+    std::vector<fs::path> meshes;
+    std::size_t looked = 0;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end && looked < 4096;
+         it.increment(ec), ++looked)
+        if (isGltfPath(it->path()) && it->is_regular_file(ec))
+            meshes.push_back(it->path());
+    if (meshes.empty())
+        return {};
+    const fs::path mesh = *std::min_element(meshes.begin(), meshes.end());
+    return "; it holds the mesh " + mesh.filename().string() + ": `grass-editor " + mesh.string() +
+           "` makes a project around it, `grass render " + mesh.string() + "` draws a field on it";
+}
+
+}  // namespace
+
 Result<LoadedProject> loadProject(const fs::path& path) {
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
@@ -67,7 +91,8 @@ Result<LoadedProject> loadProject(const fs::path& path) {
         loaded.file = path / PROJECT_FILE_NAME;
         if (!fs::exists(loaded.file, ec))
             return makeError(path.string(), std::string("this folder has no ") + PROJECT_FILE_NAME +
-                                                " (a project folder holds one)");
+                                                " (a project folder holds one)" +
+                                                meshInFolderHint(path));
     } else if (!fs::exists(status)) {
         return makeError(path.string(), "no such project file or folder");
     } else {

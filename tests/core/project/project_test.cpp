@@ -358,6 +358,24 @@ TEST(Project, FolderWithoutProjectJsonIsRejected) {
     ASSERT_FALSE(loaded);
     EXPECT_NE(loaded.error().str().find(dir.string()), std::string::npos) << loaded.error().str();
     EXPECT_NE(loaded.error().str().find("project.json"), std::string::npos) << loaded.error().str();
+    EXPECT_EQ(loaded.error().str().find("holds the mesh"), std::string::npos) << "it holds none";
+}
+
+// A folder holding a mesh and no project (a glTF given its folder as a project): the error says
+// the way to a project around the mesh, naming the first by name.
+TEST(Project, FolderWithAMeshAndNoProjectSaysHowToGrowOnTheMesh) {
+    const fs::path dir = test::scratchDir("project_mesh_folder");
+    std::ofstream(dir / "notes.txt") << "not a mesh";
+    for (const char* name : {"rock.glb", "ground.gltf"})
+        fs::copy_file(test::sourceDir() / "tests/data/gltf/cube.glb", dir / name);
+    const auto loaded = loadProject(dir);
+    ASSERT_FALSE(loaded);
+    const std::string said = loaded.error().str();
+    EXPECT_NE(said.find("has no project.json"), std::string::npos) << said;
+    EXPECT_NE(said.find("it holds the mesh ground.gltf: `grass-editor " +
+                        (dir / "ground.gltf").string() + "` makes a project around it"),
+              std::string::npos)
+        << said;
 }
 
 TEST(Project, MissingFileIsReported) {
