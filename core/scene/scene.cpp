@@ -190,9 +190,7 @@ Result<MovableSurfaceMesh> loadProjectMesh(const LoadedProject& loaded,
     return std::move(imported->mesh);
 }
 
-// What the placement rules measure against: the project's gravity and the colliders' surfaces
-// where they stand at time 0.
-static RuleWorld ruleWorldOf(const Project& project, const std::vector<SceneProp>& props) {
+RuleWorld ruleWorldOf(const Project& project, const std::vector<SceneProp>& props) {
     RuleWorld world;
     world.gravity = project.physics.gravity;
     world.gravityMode = project.physics.gravityMode;
@@ -559,9 +557,16 @@ Result<void> rebakeAoOnly(LayerField& layer, const std::vector<std::uint32_t>& p
 Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted, float texelMarginM,
                                        const GrassLightingDesc& lighting, ShadingUpdate update) {
     const glm::vec3 margin(std::max(texelMarginM, 0.0f));
+    return regrowLayerPatches(
+        layer,
+        patchesWithRootsIn(layer.source, layer, {painted.min - margin, painted.max + margin}),
+        lighting, update);
+}
+
+Result<RegrowReport> regrowLayerPatches(LayerField& layer, std::vector<std::uint32_t> patches,
+                                        const GrassLightingDesc& lighting, ShadingUpdate update) {
     RegrowReport report;
-    report.patches =
-        patchesWithRootsIn(layer.source, layer, {painted.min - margin, painted.max + margin});
+    report.patches = std::move(patches);
     report.bladesAddedOrRemoved = regrowPatches(layer.source, report.patches, layer);
     report.shadedPatches = report.patches;
     if (report.bladesAddedOrRemoved > 0) {

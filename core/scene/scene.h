@@ -175,6 +175,10 @@ enum class ShadingUpdate {
     RegrownOnly,
 };
 
+// What the placement rules measure against: the project's gravity and the colliders' surfaces
+// (`props`, placed as the project's colliders stand) at time 0.
+RuleWorld ruleWorldOf(const Project& project, const std::vector<SceneProp>& props);
+
 // After layer.source.maps changed inside `painted` (a box on the surface, e.g. a brush stroke's
 // touched texels): re-grows the patches with a root within `texelMarginM` of it (a texel's
 // bilinear footprint on the surface) and, when that added or removed blades (density paints),
@@ -183,6 +187,10 @@ enum class ShadingUpdate {
 Result<RegrowReport> regrowLayerRegion(LayerField& layer, const Bounds& painted, float texelMarginM,
                                        const GrassLightingDesc& lighting,
                                        ShadingUpdate update = ShadingUpdate::Exact);
+// The same for the patches `patches` (indices into layer.patched.patches, sorted, unique).
+Result<RegrowReport> regrowLayerPatches(LayerField& layer, std::vector<std::uint32_t> patches,
+                                        const GrassLightingDesc& lighting,
+                                        ShadingUpdate update = ShadingUpdate::Exact);
 
 // Cut and regrow (issue 30 item 10): at scene time timeS the layer's cut blades have grown back
 // by regrowRate·timeS of their height, in steps of REGROWTH_STEP_SHARE; re-grows the patches
