@@ -54,12 +54,12 @@ bool bendingIsOff(const BendingCues& cues) {
     return !(cues.slope > 0.0f) && !(cues.neighboursDeg > 0.0f) && !(cues.sway > 0.0f);
 }
 
-std::vector<float> neighbourShade(const ScatterCandidates& candidates,
-                                  std::span<const float> ruleFactors, float sigmaM) {
+namespace {
+
+// The grid of `candidates`' growable roots with their rule factors, cells 3σ wide.
+CellGrid shadeGrid(const ScatterCandidates& candidates, std::span<const float> ruleFactors,
+                   float sigmaM) {
     const std::vector<Blade>& blades = candidates.blades;
-    std::vector<float> shade(blades.size(), 0.0f);
-    if (!(sigmaM > 0.0f) || blades.empty())
-        return shade;
     CellGrid grid;
     grid.cell = KERNEL_REACH_SIGMAS * sigmaM;
     std::vector<std::pair<std::uint64_t, std::uint32_t>> byCell;
@@ -82,45 +82,99 @@ std::vector<float> neighbourShade(const ScatterCandidates& candidates,
     grid.find.reserve(grid.cellKeys.size());
     for (std::size_t c = 0; c < grid.cellKeys.size(); ++c)
         grid.find.emplace(grid.cellKeys[c], grid.cellRanges[c]);
+    return grid;
+}
 
+// The ranges of the 27 cells around grid cell `at` that hold roots, in one fixed order (so a
+// root's shade sums its neighbours in the same order whichever cells are shaded).
+void rangesAround(const CellGrid& grid, glm::ivec3 at, std::vector<CellGrid::Range>& around) {
+    around.clear();
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const auto found = grid.find.find(CellGrid::key(at + glm::ivec3(dx, dy, dz)));
+                if (found != grid.find.end())
+                    around.push_back(found->second);
+            }
+}
+
+// The shade of every root of grid cell `c`, handed to `put(candidate, shade)`.
+template <typename Put>
+void shadeCell(const CellGrid& grid, std::size_t c, float sigmaM,
+               std::vector<CellGrid::Range>& around, const Put& put) {
     const float reach2 = grid.cell * grid.cell;
     const float inv2s2 = 1.0f / (2.0f * sigmaM * sigmaM);
     const float norm = 1.0f / (2.0f * PI * sigmaM * sigmaM);
+    const CellGrid::Range home = grid.cellRanges[c];
+    // The 27 look-ups of a cell serve every root in it.
+    rangesAround(grid, grid.cellOf(grid.roots[home.begin].p), around);
+    for (std::uint32_t r = home.begin; r < home.end; ++r) {
+        const CellGrid::Root& root = grid.roots[r];
+        const float invH = 1.0f / root.h;
+        float density = 0.0f;
+        for (const CellGrid::Range range : around)
+            for (std::uint32_t n = range.begin; n < range.end; ++n) {
+                const CellGrid::Root& other = grid.roots[n];
+                const glm::vec3 d = other.p - root.p;
+                const float r2 = glm::dot(d, d);
+                if (r2 >= reach2 || n == r)
+                    continue;
+                const float taller = std::min(other.h * invH, MAX_NEIGHBOUR_HEIGHT_RATIO);
+                density += other.rule * taller * std::exp(-r2 * inv2s2);
+            }
+        put(root.index, 1.0f - std::exp(-NEIGHBOUR_CROSS_SECTION_M2 * density * norm));
+    }
+}
+
+}  // namespace
+
+std::vector<float> neighbourShade(const ScatterCandidates& candidates,
+                                  std::span<const float> ruleFactors, float sigmaM) {
+    std::vector<float> shade(candidates.blades.size(), 0.0f);
+    if (!(sigmaM > 0.0f) || candidates.blades.empty())
+        return shade;
+    const CellGrid grid = shadeGrid(candidates, ruleFactors, sigmaM);
     ThreadPool& pool = ThreadPool::shared();
-    // By cell: the 27 look-ups of a cell serve every root in it.
     pool.run(grid.cellKeys.size(), (pool.workerCount() + 1) * 8,
              [&](std::size_t firstCell, std::size_t endCell) {
-        std::vector<CellGrid::Range> around;
-        for (std::size_t c = firstCell; c < endCell; ++c) {
-            const CellGrid::Range home = grid.cellRanges[c];
-            const glm::ivec3 at = grid.cellOf(grid.roots[home.begin].p);
-            around.clear();
-            for (int dz = -1; dz <= 1; ++dz)
-                for (int dy = -1; dy <= 1; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx) {
-                        const auto found = grid.find.find(CellGrid::key(at + glm::ivec3(dx, dy, dz)));
-                        if (found != grid.find.end())
-                            around.push_back(found->second);
-                    }
-            for (std::uint32_t r = home.begin; r < home.end; ++r) {
-                const CellGrid::Root& root = grid.roots[r];
-                const float invH = 1.0f / root.h;
-                float density = 0.0f;
-                for (const CellGrid::Range range : around)
-                    for (std::uint32_t n = range.begin; n < range.end; ++n) {
-                        const CellGrid::Root& other = grid.roots[n];
-                        const glm::vec3 d = other.p - root.p;
-                        const float r2 = glm::dot(d, d);
-                        if (r2 >= reach2 || n == r)
-                            continue;
-                        const float taller = std::min(other.h * invH, MAX_NEIGHBOUR_HEIGHT_RATIO);
-                        density += other.rule * taller * std::exp(-r2 * inv2s2);
-                    }
-                shade[root.index] = 1.0f - std::exp(-NEIGHBOUR_CROSS_SECTION_M2 * density * norm);
-            }
-        }
-    });
+                 std::vector<CellGrid::Range> around;
+                 for (std::size_t c = firstCell; c < endCell; ++c)
+                     shadeCell(grid, c, sigmaM, around,
+                               [&](std::uint32_t i, float value) { shade[i] = value; });
+             });
     return shade;
+}
+
+std::vector<std::pair<std::uint32_t, float>> neighbourShadeAround(
+    const ScatterCandidates& candidates, std::span<const float> ruleFactors, float sigmaM,
+    std::span<const std::uint32_t> changed) {
+    std::vector<std::pair<std::uint32_t, float>> shaded;
+    if (!(sigmaM > 0.0f) || candidates.blades.empty() || changed.empty())
+        return shaded;
+    const CellGrid grid = shadeGrid(candidates, ruleFactors, sigmaM);
+    // The cells within one of a changed candidate's: its neighbours lie there (cells are 3σ).
+    std::vector<std::size_t> cells;
+    std::unordered_map<std::uint64_t, std::size_t> cellIndex;
+    cellIndex.reserve(grid.cellKeys.size());
+    for (std::size_t c = 0; c < grid.cellKeys.size(); ++c)
+        cellIndex.emplace(grid.cellKeys[c], c);
+    for (const std::uint32_t i : changed) {
+        const glm::ivec3 at = grid.cellOf(candidates.blades[i].v0());
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    if (const auto found =
+                            cellIndex.find(CellGrid::key(at + glm::ivec3(dx, dy, dz)));
+                        found != cellIndex.end())
+                        cells.push_back(found->second);
+    }
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    std::vector<CellGrid::Range> around;
+    for (const std::size_t c : cells)
+        shadeCell(grid, c, sigmaM, around,
+                  [&](std::uint32_t i, float value) { shaded.emplace_back(i, value); });
+    return shaded;
 }
 
 glm::vec3 downhillAt(glm::vec3 normal, glm::vec3 p, const RuleWorld& world) {
@@ -159,6 +213,18 @@ std::vector<CandidateBend> candidateBends(const BendingCues& cues,
     for (std::size_t i = 0; i < bends.size(); ++i)
         bends[i] = candidateBend(cues, candidates.blades[i], shade[i], world);
     return bends;
+}
+
+void updateCandidateBends(const BendingCues& cues, const ScatterCandidates& candidates,
+                          std::span<const float> ruleFactors, const RuleWorld& world,
+                          std::span<const std::uint32_t> changed,
+                          std::vector<CandidateBend>& bends) {
+    // Only the neighbours' shade reads the rule factors.
+    if (bendingIsOff(cues) || !(cues.neighboursDeg > 0.0f))
+        return;
+    for (const auto& [i, shade] :
+         neighbourShadeAround(candidates, ruleFactors, cues.neighbourRadiusM, changed))
+        bends[i] = candidateBend(cues, candidates.blades[i], shade, world);
 }
 
 void leanTowardsFront(Blade& blade, float leanRad) {

@@ -12,7 +12,9 @@
 // at height t moves with 2t(1 − t)·Δv1 + t²·Δv2 (physics_test pins it).
 #pragma once
 
+#include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -45,6 +47,13 @@ bool bendingIsOff(const BendingCues& cues);
 std::vector<float> neighbourShade(const ScatterCandidates& candidates,
                                   std::span<const float> ruleFactors, float sigmaM);
 
+// The shade neighbourShade gives, bit for bit, of the candidates whose neighbours include a
+// candidate of `changed` (all within 3σ of one): after those candidates' rule factors changed
+// (a collider moved), the others keep theirs. Pairs of (candidate, shade), in no order.
+std::vector<std::pair<std::uint32_t, float>> neighbourShadeAround(
+    const ScatterCandidates& candidates, std::span<const float> ruleFactors, float sigmaM,
+    std::span<const std::uint32_t> changed);
+
 // The unit downhill direction in the tangent plane of a surface with unit `normal` at `p`
 // (gravity's pull projected onto it); zero on level ground and on overhangs' tops.
 glm::vec3 downhillAt(glm::vec3 normal, glm::vec3 p, const RuleWorld& world);
@@ -61,6 +70,15 @@ std::vector<CandidateBend> candidateBends(const BendingCues& cues,
                                           const ScatterCandidates& candidates,
                                           std::span<const float> ruleFactors,
                                           const RuleWorld& world);
+
+// `bends` (candidateBends of the same cues under other rule factors) made what candidateBends
+// gives under `ruleFactors`, after only the candidates `changed` took other factors: the bends
+// of those within reach of them are made again, the rest cannot have changed. An empty `bends`
+// (bending off) stays empty.
+void updateCandidateBends(const BendingCues& cues, const ScatterCandidates& candidates,
+                          std::span<const float> ruleFactors, const RuleWorld& world,
+                          std::span<const std::uint32_t> changed,
+                          std::vector<CandidateBend>& bends);
 
 // The rest blade of height h and width w at candidate `c`, leaned `growthLeanRad` by the
 // growth model and then by `bend`: θ turned by π when its front faces uphill, the lean summed

@@ -55,8 +55,15 @@ Result<std::vector<std::pair<std::size_t, RegrowReport>>> followColliderPlacemen
         LayerSource& source = field.source;
         std::vector<float> factors =
             placementFactors(scene.mesh, source.candidates, layer.rules, world);
-        std::vector<CandidateBend> bends =
-            candidateBends(layer.bending, source.candidates, factors, world);
+        // The bends read the factors only through the neighbours' shade: those within reach of
+        // a changed factor are made again (the whole layer's took seconds at a million blades).
+        std::vector<std::uint32_t> changedFactors;
+        for (std::uint32_t c = 0; c < factors.size(); ++c)
+            if (source.ruleFactors.empty() || source.ruleFactors[c] != factors[c])
+                changedFactors.push_back(c);
+        std::vector<CandidateBend> bends = source.bends;
+        updateCandidateBends(layer.bending, source.candidates, factors, world, changedFactors,
+                             bends);
         std::vector<std::uint32_t> patches =
             changedPatches(field, source.ruleFactors, factors, source.bends, bends);
         source.ruleFactors = std::move(factors);

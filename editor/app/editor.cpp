@@ -519,10 +519,24 @@ void Editor::followMotionEdits() {
         state.transient.message = "cannot move the colliders: " + followed.error().str();
         return;
     }
-    // Blades cleared from under the colliders grow where the colliders left, and not where
-    // they now stand, only once the field grows again: when the edit ends.
-    if (!(grown.colliders != project.colliders && core::placementFollowsColliders(project)))
+    // Blades cleared from under the colliders grow back where the colliders left, and go where
+    // they now stand, once the edit ends: in the patches that changed alone.
+    if (grown.colliders == project.colliders || !core::placementFollowsColliders(project)) {
         state.rebuildPending = false;
+        return;
+    }
+    if (!settled)
+        return;
+    const auto start = Clock::now();
+    auto placed = followColliderPlacement(mLive, project);
+    if (!placed) {  // the whole field grows again instead, and says what is wrong
+        std::fprintf(stderr, "grass-editor: %s\n", placed.error().str().c_str());
+        return;
+    }
+    ++state.mapsChanged;
+    state.rebuildPending = false;
+    std::fprintf(stderr, "grass-editor: grew %zu patches again around the colliders, %.2f s\n",
+                 *placed, std::chrono::duration<double>(Clock::now() - start).count());
 }
 
 bool Editor::packCollidersInBackground(const core::Project& project) {

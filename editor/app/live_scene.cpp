@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "gl/headless_context.h"
+#include "scene/collider_placement.h"
 #include "scene/motion_edit.h"
 #include "scene/scene_snow.h"
 #include "snow/snow_drift.h"
@@ -416,6 +417,21 @@ Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool se
         motion.settledColliders = motion.colliders;
     }
     return changed;
+}
+
+Result<std::size_t> followColliderPlacement(Live& live, const core::Project& project) {
+    auto changed = core::followColliderPlacement(*live.scene, project);
+    if (!changed)
+        return changed.error();
+    std::size_t patches = 0;
+    for (const auto& [layer, report] : *changed) {
+        live.renderer->uploadRegrown(layer, report);
+        if (live.physics)
+            live.physics->regrown(layer, *live.scene, report.patches);
+        patches += report.patches.size();
+    }
+    live.builtFrom.project.colliders = project.colliders;
+    return patches;
 }
 
 }  // namespace grass::editor

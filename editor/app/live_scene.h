@@ -231,4 +231,13 @@ bool followPhysicsSteps(Live& live, const core::PhysicsParams& physics);
 // whether anything changed; errors: a collider's file could not be read.
 Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool settled);
 
+// Once an edit that moved, added or deleted colliders has ended (followMotion placed their props)
+// in a project whose layers clear the ground under colliders (core::placementFollowsColliders):
+// the blades grow back where the colliders left and go where they now stand, in the patches that
+// changed alone (core::followColliderPlacement: the field a fresh build would grow), uploaded
+// to the renderer and restarted at rest in the physics; the rest of the field keeps its motion.
+// The live field then counts as grown for these colliders (builtFrom). Returns the number of
+// patches grown again. Before, the whole field grew again on a worker once the drag ended.
+Result<std::size_t> followColliderPlacement(Live& live, const core::Project& project);
+
 }  // namespace grass::editor

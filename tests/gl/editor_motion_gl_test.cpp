@@ -7,6 +7,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <regex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -119,6 +121,36 @@ TEST(EditorMotion, AMeshColliderAddedIsPackedWithoutGrowingTheField) {
     ASSERT_EQ(colliders.size(), 2u) << log;
     EXPECT_EQ(colliders[1].shape, core::ColliderShape::Mesh);
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / colliders[1].file));
+}
+
+// A ball dragged over a layer that clears the ground near colliders (clear_colliders, 1 m of
+// clearance): once the drag ends, the blades grow back where it was and go where it now is in
+// the patches around it alone (core::followColliderPlacement), the rest of the field keeping its
+// motion; before, the whole field grew again on release and every blade restarted from rest.
+TEST(EditorMotion, ADraggedBallOverClearedGroundGrowsOnlyThePatchesAroundIt) {
+    const auto dir = scratchDir("editor_motion_cleared");
+    writeBallProject(dir);
+    {
+        std::ifstream in(dir / "project.json");
+        std::string text((std::istreambuf_iterator<char>(in)), {});
+        const std::string layer = R"("name": "grass", "density": 20)";
+        text.replace(
+            text.find(layer), layer.size(),
+            std::string(layer) + R"(, "rules": {"clearance": 1.0, "clear_colliders": true})");
+        std::ofstream(dir / "project.json") << text;
+    }
+    const std::string log = runEditor(
+        dir, std::string(SELECT_BALL) + "drag 615 150 615 200 6\nwait 3\nkey ctrl+s\nwait 2\n", "",
+        /*wallClock=*/false);
+    EXPECT_EQ(log.find("grew the field again"), std::string::npos) << log;
+    std::smatch grew;
+    ASSERT_TRUE(std::regex_search(log, grew,
+                                  std::regex("grew ([0-9]+) patches again around the colliders")))
+        << log;
+    EXPECT_GT(std::stoi(grew[1]), 0) << log;
+    const std::vector<core::ColliderDesc> colliders = savedColliders(dir);
+    ASSERT_EQ(colliders.size(), 1u);
+    EXPECT_LT(colliders[0].position.y, 0.7f) << "the drag did not move the ball";
 }
 
 // Ctrl+Z of a render setting shows the setting as it was and grows nothing again: before

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <cmath>
 
 #include "blade/bezier.h"
@@ -179,6 +181,38 @@ TEST(BendingCues, ShadeGrowsWithDensityAndNeighbourHeightAndIsZeroAlone) {
     const ScatterCandidates dense = lattice(300.0f, 0.6f, 0.4f, 0.4f);
     std::vector<float> removed(dense.blades.size(), 0.0f);
     EXPECT_EQ(neighbourShade(dense, removed, sigma)[0], 0.0f);
+}
+
+// After some candidates' rule factors changed (a collider moved), the shade of those within
+// reach of them, made again alone, is bit for bit what the whole field's shade gives; the rest
+// is as before.
+TEST(BendingCues, ShadeAroundChangedCandidatesIsTheWholeFieldsShade) {
+    const float sigma = 0.1f;
+    const ScatterCandidates field = lattice(300.0f, 2.0f, 0.4f, 0.4f);
+    std::vector<float> before(field.blades.size(), 1.0f);
+    std::vector<float> after = before;
+    std::vector<std::uint32_t> changed;
+    for (std::uint32_t i = 0; i < field.blades.size(); ++i)
+        if (glm::length(field.blades[i].v0() - glm::vec3(0.5f, 0.0f, 0.3f)) < 0.25f) {
+            after[i] = 0.0f;
+            changed.push_back(i);
+        }
+    ASSERT_GT(changed.size(), 5u);
+    const std::vector<float> first = neighbourShade(field, before, sigma);
+    std::vector<float> shade = first;
+    const auto around = neighbourShadeAround(field, after, sigma, changed);
+    EXPECT_LT(around.size(), field.blades.size() / 4) << "only the neighbourhood";
+    for (const auto& [i, value] : around)
+        shade[i] = value;
+    const std::vector<float> whole = neighbourShade(field, after, sigma);
+    ASSERT_EQ(shade.size(), whole.size());
+    std::size_t differ = 0, moved = 0;
+    for (std::size_t i = 0; i < whole.size(); ++i) {
+        differ += std::memcmp(&shade[i], &whole[i], sizeof(float)) != 0;
+        moved += whole[i] != first[i] ? 1 : 0;
+    }
+    EXPECT_EQ(differ, 0u);
+    EXPECT_GT(moved, changed.size()) << "the change reached neighbours beyond the changed";
 }
 
 TEST(BendingCues, ADenseFieldLeansMoreInItsMiddleThanAtItsEdge) {
