@@ -504,7 +504,7 @@ void Editor::followMotionEdits() {
     followPhysicsSteps(mLive, project.physics);
     const bool toFollow = project.wind != motion.wind || project.colliders != motion.colliders ||
                           motion.settledColliders != motion.colliders ||
-                          !motion.changedFiles.empty();
+                          !motion.changedFiles.empty() || motion.placementOfOldShapes;
     if (!toFollow && !state.rebuildPending)
         return;
     const core::Project& grown = mLive.builtFrom.project;
@@ -521,7 +521,8 @@ void Editor::followMotionEdits() {
     }
     // Blades cleared from under the colliders grow back where the colliders left, and go where
     // they now stand, once the edit ends: in the patches that changed alone.
-    if (grown.colliders == project.colliders || !core::placementFollowsColliders(project)) {
+    if ((grown.colliders == project.colliders && !motion.placementOfOldShapes) ||
+        !core::placementFollowsColliders(project)) {
         state.rebuildPending = false;
         return;
     }

@@ -216,9 +216,10 @@ struct EditorState {
     bool regrowFromDisk = false;
     bool surfaceChangedOnDisk = false;
     // Mesh colliders' files changed on disk (as the project names them), when nothing else the
-    // field grows from changed and no placement rule keeps blades off the colliders: they are
-    // packed again and their props made again while the field keeps its blades and their motion
-    // (Editor::followMotionEdits, LiveMotion::changedFiles).
+    // field grows from changed: they are packed again and their props made again while the
+    // field keeps its blades and their motion, and where a layer clears the ground under the
+    // colliders the patches around them grow again (Editor::followMotionEdits,
+    // LiveMotion::changedFiles).
     std::set<std::string> colliderFilesChangedOnDisk;
     // A Save wrote the project's files here: the watch of them takes their new times as its own.
     bool assetsWrittenHere = false;

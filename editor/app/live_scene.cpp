@@ -399,6 +399,7 @@ Result<bool> followMotion(Live& live, const core::LoadedProject& loaded, bool se
         motion.wind = project.wind;
         motion.colliders = project.colliders;
         motion.changedFiles.clear();
+        motion.placementOfOldShapes = motion.placementOfOldShapes || filesChanged;
         // A prop of another shape shelters the snow elsewhere.
         if (filesChanged && live.physics && live.physics->scene.anySnowLoad())
             live.physics->weighSnowAgain(*live.scene);
@@ -431,6 +432,7 @@ Result<std::size_t> followColliderPlacement(Live& live, const core::Project& pro
         patches += report.patches.size();
     }
     live.builtFrom.project.colliders = project.colliders;
+    live.motion.placementOfOldShapes = false;
     return patches;
 }
 

@@ -150,6 +150,9 @@ struct LiveMotion {
     // their packings and props were made: the next followMotion makes their props again, from
     // readAheadProps or the file, and builds the physics with their new packings.
     std::set<std::string> changedFiles;
+    // Props were made again from changed files since the field's placement was grown: where a
+    // layer clears the ground under the colliders, followColliderPlacement takes their shapes.
+    bool placementOfOldShapes = false;
     // Whether every mesh collider of `wanted` has its packing here: then following them
     // packs nothing (which could take seconds on the window's thread).
     bool packed(const std::vector<core::ColliderDesc>& wanted) const;

@@ -12,7 +12,6 @@
 #include "app/commands.h"
 #include "app/edit_actions.h"
 #include "scene/layer_growth.h"
-#include "scene/motion_edit.h"
 #include "util/atomic_file.h"
 #include "util/content_digest.h"
 
@@ -119,10 +118,11 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
     }
     if (taken.empty())
         return false;
-    // Only colliders' meshes, which no blade's place depends on: packed again while the field
-    // keeps its blades and their motion. (A file both a collider and a map name is taken twice,
-    // so the sizes differ then.)
-    if (colliderFiles.size() == taken.size() && !core::placementFollowsColliders(s.doc.project())) {
+    // Only colliders' meshes: packed again while the field keeps its blades and their motion,
+    // and where a layer clears the ground under them, grown again around them alone (Editor::
+    // followMotionEdits). (A file both a collider and a map name is taken twice, so the sizes
+    // differ then.)
+    if (colliderFiles.size() == taken.size()) {
         s.colliderFilesChangedOnDisk.insert(colliderFiles.begin(), colliderFiles.end());
         tell(s, taken.front() + (taken.size() > 1 ? " and others" : "") +
                     " changed on disk: packing the collider again (the field keeps its blades)");

@@ -487,8 +487,9 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     EXPECT_TRUE(editor.state.regrowFromDisk);
     EXPECT_FALSE(editor.state.surfaceChangedOnDisk);
     // A mesh collider's file re-exported: packed again and its prop read again, the field
-    // keeping its blades (Editor::followMotionEdits); grown again where a layer's placement
-    // clears the ground under the colliders.
+    // keeping its blades (Editor::followMotionEdits), where a layer's placement clears the
+    // ground under the colliders too (the patches around them grow again then); with a map
+    // changed beside it, the field grows again.
     editor.state.regrowFromDisk = false;
     fs::copy_file(sourceDir() / "tests/data/gltf/cube.glb", folder.path() / "rock.glb");
     core::ColliderDesc rock;
@@ -514,10 +515,17 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     fs::copy_file(sourceDir() / "tests/data/gltf/cube.glb", folder.path() / "rock.glb",
                   fs::copy_options::overwrite_existing);
     EXPECT_TRUE(look());
+    EXPECT_FALSE(editor.state.regrowFromDisk);
+    EXPECT_EQ(editor.state.colliderFilesChangedOnDisk, std::set<std::string>{"rock.glb"});
+    editor.state.colliderFilesChangedOnDisk.clear();
+    fs::copy_file(sourceDir() / "tests/data/gltf/box_meshopt.glb", folder.path() / "rock.glb",
+                  fs::copy_options::overwrite_existing);
+    ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.35f), light).ok());
+    EXPECT_TRUE(look());
     EXPECT_TRUE(editor.state.regrowFromDisk);
     EXPECT_TRUE(editor.state.colliderFilesChangedOnDisk.empty());
     EXPECT_FALSE(editor.state.surfaceChangedOnDisk);
-    EXPECT_NE(editor.state.transient.message.find("growing the field again from rock.glb"),
+    EXPECT_NE(editor.state.transient.message.find("growing the field again from"),
               std::string::npos)
         << editor.state.transient.message;
     // A painted map changed elsewhere does not hold up a save into another folder: the painting
