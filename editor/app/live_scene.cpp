@@ -431,6 +431,7 @@ Result<std::size_t> followColliderPlacement(Live& live, const core::Project& pro
             live.physics->regrown(layer, *live.scene, report.patches);
         patches += report.patches.size();
     }
+    live.renderer->billboardsChanged();
     live.builtFrom.project.colliders = project.colliders;
     live.motion.placementOfOldShapes = false;
     return patches;

@@ -75,6 +75,12 @@ public:
     // upload a frame; core/scene/field_simulation.h). Same slot count as the layer's.
     void uploadBlades(std::size_t layer, std::span<const core::Blade> blades);
     void uploadRegrown(std::size_t layer, const core::RegrowReport& report);
+    // The scene's billboards follow other placement (core::followColliderPlacement): made to
+    // follow the layers again when next drawn, even where no blade grew again.
+    void billboardsChanged() {
+        ++mContentGeneration;
+        mBillboardsStale = true;
+    }
     // The map the terrain shows as a colour overlay (values 0..1 in its UV space; a map without
     // texels shows 1 everywhere), uploaded now; null: no overlay. The editor calls it when the
     // painted map or the choice of map changes.
