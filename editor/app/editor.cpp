@@ -532,6 +532,7 @@ void Editor::followMotionEdits() {
     auto placed = followColliderPlacement(mLive, project);
     if (!placed) {  // the whole field grows again instead, and says what is wrong
         std::fprintf(stderr, "grass-editor: %s\n", placed.error().str().c_str());
+        state.rebuildPending = true;
         return;
     }
     ++state.mapsChanged;
