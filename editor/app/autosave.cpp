@@ -127,7 +127,7 @@ Result<void> writeUnsavedAutosave(EditorState& s) {
     return writeSideFiles(s, slot, slot / UNSAVED_SIDE_PROJECT);
 }
 
-std::optional<core::LoadedProject> findUnsavedAutosave() {
+std::optional<core::LoadedProject> findUnsavedAutosave(const fs::path& except) {
     const fs::path root = unsavedAutosaveRoot();
     std::error_code ec;
     if (root.empty() || !fs::is_directory(root, ec))
@@ -136,6 +136,8 @@ std::optional<core::LoadedProject> findUnsavedAutosave() {
     fs::file_time_type newestTime{};
     for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec)) {
         const fs::path slot = it->path();
+        if (!except.empty() && slot == except)
+            continue;
         const fs::path side = slot / UNSAVED_SIDE_PROJECT;
         // A slot whose editor still runs is that editor's own.
         std::error_code sideError;
@@ -352,7 +354,11 @@ void recoveryWindow(ui::Context& ctx, EditorState& s) {
                     } else {
                         removeAutosave(s.doc.loaded);
                     }
-                    s.recoveryOffer.reset();
+                    // An older never-saved autosave is offered next, so every one left by a
+                    // session that did not close cleanly is asked about (before, one a start).
+                    s.recoveryOffer = s.offersUnsavedAutosaves
+                                          ? findUnsavedAutosave(s.doc.unsavedSlot)
+                                          : std::nullopt;
                 }
             });
         },

@@ -46,7 +46,8 @@ Result<void> writeUnsavedAutosave(EditorState& state);
 // The newest autosave of a never-saved project whose editor is gone (its process ended without
 // a clean close): a never-saved document (file empty) whose folder is the slot, so the files
 // it names resolve there.
-std::optional<core::LoadedProject> findUnsavedAutosave();
+// `except`: a slot not to offer (the open document's own).
+std::optional<core::LoadedProject> findUnsavedAutosave(const std::filesystem::path& except = {});
 // A saved project whose folder cannot be written autosaves into a slot too (autosaveNow); the
 // slot records the project file it came from, which the recovery offer names.
 Result<void> writeUnsavedOrigin(const std::filesystem::path& slot, const std::filesystem::path& projectFile);

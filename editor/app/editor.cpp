@@ -203,7 +203,8 @@ Result<std::unique_ptr<Editor>> Editor::open(EditorSettings settings) {
     state.recoveryOffer = findAutosave(state.doc.loaded);
     // A never-saved project's autosave, left by a session that ended without a clean close, is
     // offered whatever project this session opens (it has no folder to be found by).
-    if (!state.recoveryOffer && !e.mReplay)
+    state.offersUnsavedAutosaves = !e.mReplay;
+    if (!state.recoveryOffer && state.offersUnsavedAutosaves)
         state.recoveryOffer = findUnsavedAutosave();
     state.recoverRequested = e.mSettings.recover && state.recoveryOffer.has_value();
     e.resetTimeline();

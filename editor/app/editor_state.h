@@ -252,6 +252,9 @@ struct EditorState {
     // An autosave left by a session that did not close cleanly, offered back at start; the
     // Editor adopts it when the user picks Recover.
     std::optional<core::LoadedProject> recoveryOffer;
+    // Whether never-saved projects' autosaves (the user's unsaved folder) are offered: not to a
+    // replayed script, whose run must not depend on what the user left there.
+    bool offersUnsavedAutosaves = true;
 
     // Requests for the Editor, which owns the scene and the window.
     bool recoverRequested = false;

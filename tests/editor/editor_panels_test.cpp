@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -1270,6 +1271,51 @@ TEST(EditorPanels, ANeverSavedProjectIsAutosavedIntoTheUsersFolderAndOfferedBack
     EXPECT_EQ(said.rfind("not autosaved: ", 0), 0u) << said;
     EXPECT_NE(said.find("Save As"), std::string::npos) << said;
     EXPECT_TRUE(editor.state.transient.messageIsSaveError) << "shown in the warning colour";
+}
+
+// Two never-saved projects left by sessions that did not close cleanly: the newer is offered
+// first, and once discarded the older is offered in the same session (before, one a start); the
+// open document's own slot is never offered, nor anything to a replayed script.
+TEST(EditorPanels, EveryLeftAutosaveIsOfferedInTurn) {
+    const ScratchFolder folder("editor-autosaves-in-turn");
+    const ScratchFolder stateHome("editor-autosaves-in-turn-state");
+    const ScopedEnv state("XDG_STATE_HOME", stateHome.path().c_str());
+    EditorDriver editor(folder.path());
+    const fs::path root = stateHome.path() / "grass/unsaved";
+    const auto leave = [&](const std::string& slot, const std::string& name, int ageS) {
+        core::Project project = editor.state.doc.project();
+        project.name = name;
+        fs::create_directories(root / slot);
+        const fs::path side = root / slot / "project.autosave.json";
+        ASSERT_TRUE(core::saveProject(project, side).ok());
+        fs::last_write_time(side, fs::file_time_type::clock::now() - std::chrono::seconds(ageS));
+    };
+    // Slots of processes that are gone (no process has these ids).
+    leave("999991-1", "older", 600);
+    leave("999992-1", "newer", 60);
+    leave("999993-1", "mine", 1);
+    editor.state.doc.unsavedSlot = root / "999993-1";  // the open document's own, newest
+    editor.state.recoveryOffer = editor::findUnsavedAutosave(editor.state.doc.unsavedSlot);
+    ASSERT_TRUE(editor.state.recoveryOffer);
+    EXPECT_EQ(editor.state.recoveryOffer->project.name, "newer");
+    editor.click("Discard");
+    EXPECT_FALSE(fs::exists(root / "999992-1"));
+    ASSERT_TRUE(editor.state.recoveryOffer) << "the older one is offered next";
+    EXPECT_EQ(editor.state.recoveryOffer->project.name, "older");
+    editor.frame();  // the window of the next offer, first shown
+    editor.click("Discard");
+    EXPECT_FALSE(fs::exists(root / "999991-1"));
+    EXPECT_FALSE(editor.state.recoveryOffer) << "the document's own slot is not offered";
+    EXPECT_TRUE(fs::exists(root / "999993-1"));
+    // A replayed script is offered none.
+    leave("999994-1", "another", 30);
+    leave("999995-1", "last", 40);
+    editor.state.offersUnsavedAutosaves = false;
+    editor.state.recoveryOffer = editor::findUnsavedAutosave(editor.state.doc.unsavedSlot);
+    ASSERT_TRUE(editor.state.recoveryOffer);
+    editor.click("Discard");
+    EXPECT_FALSE(editor.state.recoveryOffer);
+    EXPECT_TRUE(fs::exists(root / "999995-1"));
 }
 
 // How long ago an autosave was written, as the recovery offer says it.
