@@ -98,14 +98,14 @@ void rangesAround(const CellGrid& grid, glm::ivec3 at, std::vector<CellGrid::Ran
             }
 }
 
-// The shade of every root of grid cell `c`, handed to `put(candidate, shade)`.
+// The shade of every root of the grid cell holding roots `home`, handed to
+// `put(candidate, shade)`.
 template <typename Put>
-void shadeCell(const CellGrid& grid, std::size_t c, float sigmaM,
+void shadeCell(const CellGrid& grid, CellGrid::Range home, float sigmaM,
                std::vector<CellGrid::Range>& around, const Put& put) {
     const float reach2 = grid.cell * grid.cell;
     const float inv2s2 = 1.0f / (2.0f * sigmaM * sigmaM);
     const float norm = 1.0f / (2.0f * PI * sigmaM * sigmaM);
-    const CellGrid::Range home = grid.cellRanges[c];
     // The 27 look-ups of a cell serve every root in it.
     rangesAround(grid, grid.cellOf(grid.roots[home.begin].p), around);
     for (std::uint32_t r = home.begin; r < home.end; ++r) {
@@ -139,7 +139,7 @@ std::vector<float> neighbourShade(const ScatterCandidates& candidates,
              [&](std::size_t firstCell, std::size_t endCell) {
                  std::vector<CellGrid::Range> around;
                  for (std::size_t c = firstCell; c < endCell; ++c)
-                     shadeCell(grid, c, sigmaM, around,
+                     shadeCell(grid, grid.cellRanges[c], sigmaM, around,
                                [&](std::uint32_t i, float value) { shade[i] = value; });
              });
     return shade;
@@ -153,26 +153,20 @@ std::vector<std::pair<std::uint32_t, float>> neighbourShadeAround(
         return shaded;
     const CellGrid grid = shadeGrid(candidates, ruleFactors, sigmaM);
     // The cells within one of a changed candidate's: its neighbours lie there (cells are 3σ).
-    std::vector<std::size_t> cells;
-    std::unordered_map<std::uint64_t, std::size_t> cellIndex;
-    cellIndex.reserve(grid.cellKeys.size());
-    for (std::size_t c = 0; c < grid.cellKeys.size(); ++c)
-        cellIndex.emplace(grid.cellKeys[c], c);
-    for (const std::uint32_t i : changed) {
-        const glm::ivec3 at = grid.cellOf(candidates.blades[i].v0());
-        for (int dz = -1; dz <= 1; ++dz)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx)
-                    if (const auto found =
-                            cellIndex.find(CellGrid::key(at + glm::ivec3(dx, dy, dz)));
-                        found != cellIndex.end())
-                        cells.push_back(found->second);
-    }
-    std::sort(cells.begin(), cells.end());
-    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    std::vector<CellGrid::Range> cells;
     std::vector<CellGrid::Range> around;
-    for (const std::size_t c : cells)
-        shadeCell(grid, c, sigmaM, around,
+    for (const std::uint32_t i : changed) {
+        rangesAround(grid, grid.cellOf(candidates.blades[i].v0()), around);
+        cells.insert(cells.end(), around.begin(), around.end());
+    }
+    const auto byBegin = [](CellGrid::Range a, CellGrid::Range b) { return a.begin < b.begin; };
+    std::sort(cells.begin(), cells.end(), byBegin);
+    cells.erase(
+        std::unique(cells.begin(), cells.end(),
+                    [](CellGrid::Range a, CellGrid::Range b) { return a.begin == b.begin; }),
+        cells.end());
+    for (const CellGrid::Range home : cells)
+        shadeCell(grid, home, sigmaM, around,
                   [&](std::uint32_t i, float value) { shaded.emplace_back(i, value); });
     return shaded;
 }

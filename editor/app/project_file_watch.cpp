@@ -120,8 +120,8 @@ bool followAssetsOnDisk(EditorState& s, ProjectFileWatch& watch) {
         return false;
     // Only colliders' meshes: packed again while the field keeps its blades and their motion,
     // and where a layer clears the ground under them, grown again around them alone (Editor::
-    // followMotionEdits). (A file both a collider and a map name is taken twice, so the sizes
-    // differ then.)
+    // followMotionEdits). A file is taken once, as what watches it first: one that is the
+    // surface or a map as well as a collider's grows the field again.
     if (colliderFiles.size() == taken.size()) {
         s.colliderFilesChangedOnDisk.insert(colliderFiles.begin(), colliderFiles.end());
         tell(s, taken.front() + (taken.size() > 1 ? " and others" : "") +

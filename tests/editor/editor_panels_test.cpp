@@ -492,16 +492,25 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     // ground under the colliders too (the patches around them grow again then); with a map
     // changed beside it, the field grows again.
     editor.state.regrowFromDisk = false;
-    fs::copy_file(sourceDir() / "tests/data/gltf/cube.glb", folder.path() / "rock.glb");
+    // The rock's file exported again from the modeller as `source`.
+    const auto reexportRock = [&](const char* source) {
+        fs::copy_file(sourceDir() / "tests/data/gltf" / source, folder.path() / "rock.glb",
+                      fs::copy_options::overwrite_existing);
+    };
+    reexportRock("cube.glb");
+    // Two rocks of one file, as projects/winter has.
     core::ColliderDesc rock;
     rock.shape = core::ColliderShape::Mesh;
     rock.file = "rock.glb";
+    rock.name = "big rock";
+    edited->project.colliders.push_back(rock);
+    rock.name = "small rock";
+    rock.position.x = 1.0f;
     edited->project.colliders.push_back(rock);
     ASSERT_TRUE(core::saveProject(edited->project, file).ok());
     ASSERT_TRUE(look());
     editor.state.regrowFromDisk = false;
-    fs::copy_file(sourceDir() / "tests/data/gltf/box_meshopt.glb", folder.path() / "rock.glb",
-                  fs::copy_options::overwrite_existing);
+    reexportRock("box_meshopt.glb");
     EXPECT_TRUE(look());
     EXPECT_FALSE(editor.state.regrowFromDisk);
     EXPECT_EQ(editor.state.colliderFilesChangedOnDisk, std::set<std::string>{"rock.glb"});
@@ -513,14 +522,12 @@ TEST(EditorPanels, AMapOrSurfaceChangedOnDiskGrowsTheFieldAgainUnlessPaintedHere
     ASSERT_TRUE(core::saveProject(edited->project, file).ok());
     ASSERT_TRUE(look());
     editor.state.regrowFromDisk = false;
-    fs::copy_file(sourceDir() / "tests/data/gltf/cube.glb", folder.path() / "rock.glb",
-                  fs::copy_options::overwrite_existing);
+    reexportRock("cube.glb");
     EXPECT_TRUE(look());
     EXPECT_FALSE(editor.state.regrowFromDisk);
     EXPECT_EQ(editor.state.colliderFilesChangedOnDisk, std::set<std::string>{"rock.glb"});
     editor.state.colliderFilesChangedOnDisk.clear();
-    fs::copy_file(sourceDir() / "tests/data/gltf/box_meshopt.glb", folder.path() / "rock.glb",
-                  fs::copy_options::overwrite_existing);
+    reexportRock("box_meshopt.glb");
     ASSERT_TRUE(core::saveMapImage(core::makeConstantMap(8, 8, 0.35f), light).ok());
     EXPECT_TRUE(look());
     EXPECT_TRUE(editor.state.regrowFromDisk);
