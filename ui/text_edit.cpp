@@ -500,13 +500,13 @@ namespace {
 // measured at the widest of the range's ends and the value, so the track keeps its width while
 // the value changes.
 float sliderTrackWidth(const Ui& row, std::string_view label, float value, float min, float max,
-                       int decimals) {
+                       int decimals, int valueDecimals) {
     constexpr float MIN_TRACK_WIDTH = 48.0f;
     const Style& s = row.style();
     const FontAtlas& fonts = row.context().fonts();
-    float text = 0.0f;
-    for (const float number : {min, max, value})
-        text = std::max(text, fonts.textSize(formatNumber(number, decimals), s.textSizePt).x);
+    float text = fonts.textSize(formatNumber(value, valueDecimals), s.textSizePt).x;
+    for (const float end : {min, max})
+        text = std::max(text, fonts.textSize(formatNumber(end, decimals), s.textSizePt).x);
     const float box = std::max(s.dragValueMinWidth, text + 2.0f * s.buttonPadding.x);
     const std::string_view shown = shownLabel(label);
     const float labelWidth =
@@ -523,9 +523,13 @@ Response sliderWithEntry(Ui& ui, std::string_view label, float& value, float min
     ui.horizontal([&](Ui& row) {
         row.pushId(label);
         const int decimals = options.decimals >= 0 ? options.decimals : rangeDecimals(min, max);
+        // A logarithmic track spans orders of magnitude: the box keeps the value's significant
+        // digits (the slider's own value text follows the same rule).
+        const bool logarithmic = options.logarithmic && min > 0.0f && max > min;
+        const int boxDecimals = logarithmic ? significantDecimals(value, decimals) : decimals;
         SliderOptions trackOnly = options;
         trackOnly.showValue = false;
-        trackOnly.trackWidth = sliderTrackWidth(row, label, value, min, max, decimals);
+        trackOnly.trackWidth = sliderTrackWidth(row, label, value, min, max, decimals, boxDecimals);
         // The track and the box are both unlabelled: separate salts keep their ids apart.
         row.pushId("track");
         result = row.slider("", value, min, max, trackOnly);
@@ -533,7 +537,7 @@ Response sliderWithEntry(Ui& ui, std::string_view label, float& value, float min
         // The box drags at the track's rate: the full range over the track width.
         const float speed = (max - min) / std::max(trackOnly.trackWidth, 1.0f);
         const Response box = dragValueWithEntry(row, "", value, speed, std::min(min, max),
-                                                std::max(min, max), decimals, check);
+                                                std::max(min, max), boxDecimals, check);
         row.popId();
         if (!label.empty()) {
             row.label(label);

@@ -44,8 +44,11 @@ Response sliderImpl(Ui& ui, std::string_view label, double& value, double min, d
     const Style& s = ui.style();
     const FontAtlas& fonts = ui.context().fonts();
     const SliderMapping map{min, max, options.logarithmic && min > 0.0 && max > min};
-    const int decimals =
+    const int rangeDigits =
         integer ? 0 : (options.decimals >= 0 ? options.decimals : autoDecimals(min, max));
+    // A logarithmic track spans orders of magnitude: its value keeps its significant digits.
+    const int decimals =
+        map.logarithmic && !integer ? significantDecimals(value, rangeDigits) : rangeDigits;
     const std::string valueText = options.showValue ? numberText(value, decimals) : std::string();
     const Vec2 valueSize = fonts.textSize(valueText, s.textSizePt);
     const Vec2 labelSize = fonts.textSize(shown, s.textSizePt);

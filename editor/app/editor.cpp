@@ -646,7 +646,11 @@ void Editor::finishRegrow() {
         }
     }
     if (!grown) {
+        // To act on (the field on screen is the one before the edit, the project holds the
+        // edit): said in orange, and whole on the terminal (the status line cuts it).
         state.transient.message = "cannot grow the field: " + grown.error().str();
+        state.transient.warningMessage = state.transient.message;
+        std::fprintf(stderr, "grass-editor: %s\n", state.transient.message.c_str());
         return;
     }
     if (std::exchange(state.view.frameSurfacePending, false))

@@ -104,12 +104,23 @@ void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
     for (const std::string_view key : {"height", "width", "stiffness"})
         regrowRow(ui, s, core::settings::blade(), key, layer.scatter.blade);
     // The format takes any density; the scene refuses one that would grow more blades than a
-    // scene may hold: a typed one is refused in its box, with the count.
+    // scene may hold (all its layers together, as core::buildScene counts them): a typed one is
+    // refused in its box, with the count, and a dragged one is not taken, said in the status
+    // bar (before, the slider's lowest step on a 60 km mesh asked for 1e10 blades: the field
+    // could not grow, and the project kept a density it could not grow from).
     const double area = s.scene ? s.scene->area : 0.0;
-    const auto densityLimit = [&](double typed) -> std::string {
+    double otherLayersBlades = 0.0;
+    for (std::size_t other = 0; other < s.transient.draft.project.layers.size(); ++other)
+        if (other != index)
+            otherLayersBlades +=
+                core::estimateLayerBlades(s.transient.draft.project.layers[other].scatter, area);
+    double lastAsked = 0.0;
+    const auto densityLimit = [&](double asked) -> std::string {
+        lastAsked = asked;
         core::ScatterParams scatter = layer.scatter;
-        scatter.density = static_cast<float>(typed);
-        const double blades = core::estimateLayerBlades(scatter, area);
+        scatter.density = static_cast<float>(asked);
+        const double blades = core::estimateLayerBlades(scatter, area) + otherLayersBlades;
+        // Written so that a NaN estimate is refused too.
         if (blades <= core::MAX_SCENE_BLADES)
             return {};
         char reason[160];
@@ -118,7 +129,14 @@ void layerBody(ui::Ui& ui, EditorState& s, std::size_t index) {
                       blades, area, core::MAX_SCENE_BLADES);
         return reason;
     };
-    regrow(s, settingWidget(ui, rows, "density", layer, nullptr, densityLimit));
+    std::string refusedDrag;
+    regrow(s, settingWidget(ui, rows, "density", layer, nullptr, densityLimit, &refusedDrag));
+    if (!refusedDrag.empty()) {
+        char asked[64];
+        std::snprintf(asked, sizeof asked, "density not changed: %.3g /m² ", lastAsked);
+        s.transient.message = asked + refusedDrag;
+        s.transient.warningMessage = s.transient.message;
+    }
     for (const std::string_view key : {"root_color", "tip_color"})
         if (settingWidget(ui, rows, key, layer).changed() && field)
             core::takeLayerLook(*field, layer);

@@ -69,7 +69,8 @@ std::string labelFor(std::string_view key, std::string_view label, std::string_v
 }
 
 ui::Response number(ui::Ui& ui, std::string_view label, float& value, const NumberRule& rule,
-                    const UiHint& hint, std::string_view unit, const ui::NumberCheck& limit) {
+                    const UiHint& hint, std::string_view unit, const ui::NumberCheck& limit,
+                    std::string* refused) {
     const float before = value;
     const Track track = trackFor(rule, hint);
     const bool slider = hint.slider && std::isfinite(track.min) && std::isfinite(track.max);
@@ -85,7 +86,18 @@ ui::Response number(ui::Ui& ui, std::string_view label, float& value, const Numb
                                      check)
                : ui::dragValueWithEntry(ui, label, value, hint.speed, track.min, track.max,
                                         hint.decimals, check);
-    return keepWithin(rule, before, value, r);
+    keepWithin(rule, before, value, r);
+    // A drag bypasses the box's check: a step `limit` refuses is undone (a typed value it
+    // refused never reached `value`). On a 60 km sphere the density slider's lowest step, 1 /m²,
+    // asked for 1e10 blades: the field could not grow, and the project kept the value.
+    if (limit && value != before) {
+        if (std::string reason = limit(value); !reason.empty()) {
+            value = before;
+            if (refused)
+                *refused = std::move(reason);
+        }
+    }
+    return r;
 }
 
 ui::Response integer(ui::Ui& ui, std::string_view label, int& value, std::int64_t min,

@@ -30,11 +30,14 @@ using core::settings::UiHint;
 std::string labelFor(std::string_view key, std::string_view label, std::string_view unit);
 
 // `unit` names the unit in a refused entry's reason.
-// `limit`, when given, refuses typed values the format allows but the scene cannot take (a
-// density that would grow more blades than a scene may hold).
+// `limit`, when given, refuses values the format allows but the scene cannot take (a density
+// that would grow more blades than a scene may hold): a typed one in its box, a dragged one by
+// undoing the drag's step, as a step outside the row's range is, with `limit`'s reason in
+// `refused` (when given) for the panel to say.
 ui::Response number(ui::Ui& ui, std::string_view label, float& value,
                     const core::json::NumberRule& rule, const UiHint& hint,
-                    std::string_view unit = {}, const ui::NumberCheck& limit = {});
+                    std::string_view unit = {}, const ui::NumberCheck& limit = {},
+                    std::string* refused = nullptr);
 ui::Response integer(ui::Ui& ui, std::string_view label, int& value, std::int64_t min,
                      std::int64_t max);
 ui::Response flag(ui::Ui& ui, std::string_view label, bool& value);
@@ -51,12 +54,13 @@ ui::Response choice(ui::Ui& ui, std::string_view label, std::size_t& index,
 }  // namespace setting_widget
 
 // The widget of `row` editing `value`; `hint` replaces the row's (a range bounded by another
-// setting, as snow amount by max amount). Custom rows and text have no generic widget: the
-// panel draws those itself (this returns an unchanged Response).
+// setting, as snow amount by max amount); `limit` and `refused` as for setting_widget::number.
+// Custom rows and text have no generic widget: the panel draws those itself (this returns an
+// unchanged Response).
 template <class S>
 ui::Response settingWidget(ui::Ui& ui, const core::settings::Setting<S>& row, S& value,
                            const core::settings::UiHint* hint = nullptr,
-                           const ui::NumberCheck& limit = {}) {
+                           const ui::NumberCheck& limit = {}, std::string* refused = nullptr) {
     namespace w = setting_widget;
     namespace s = core::settings;
     const std::string label = w::labelFor(row.key, row.label, row.unit);
@@ -65,7 +69,8 @@ ui::Response settingWidget(ui::Ui& ui, const core::settings::Setting<S>& row, S&
         [&](const auto& access) -> ui::Response {
             using A = std::remove_cvref_t<decltype(access)>;
             if constexpr (std::is_same_v<A, s::Ref<S, float>>) {
-                return w::number(ui, label, access.get(value), row.rule, uiHint, row.unit, limit);
+                return w::number(ui, label, access.get(value), row.rule, uiHint, row.unit, limit,
+                                 refused);
             } else if constexpr (std::is_same_v<A, s::Ref<S, int>>) {
                 return w::integer(ui, label, access.get(value), row.intMin, row.intMax);
             } else if constexpr (std::is_same_v<A, s::Ref<S, std::uint32_t>>) {
@@ -115,10 +120,10 @@ template <class S>
 ui::Response settingWidget(ui::Ui& ui, std::span<const core::settings::Setting<S>> table,
                            std::string_view key, S& value,
                            const core::settings::UiHint* hint = nullptr,
-                           const ui::NumberCheck& limit = {}) {
+                           const ui::NumberCheck& limit = {}, std::string* refused = nullptr) {
     const core::settings::Setting<S>* row = core::settings::findSetting(table, key);
     GRASS_ASSERT(row != nullptr);
-    return settingWidget(ui, *row, value, hint, limit);
+    return settingWidget(ui, *row, value, hint, limit, refused);
 }
 
 }  // namespace grass::editor

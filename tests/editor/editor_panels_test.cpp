@@ -1785,6 +1785,71 @@ TEST(EditorPanels, PlacementRulesAreEditedInTheLayer) {
     EXPECT_FALSE(d.state.doc.project().layers[0].rules.clearColliders);
 }
 
+// A density the scene cannot hold is not taken from a drag either (a typed one is refused in its
+// box): on a 60 km sphere (1.16e10 m²) the density slider's lowest step, 1 /m², asked for 1e10
+// blades; the field could not grow, and the project kept the density, which it could then not
+// grow from. And the slider's box reads such a mesh's density, below 1 /m², with its digits
+// (it read "0").
+TEST(EditorPanels, ADensityDragTheSceneCannotHoldIsNotTaken) {
+    const ScratchFolder folder("editor-density-limit");
+    EditorDriver d(folder.path());
+    d.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 4000.0f}};
+    d.scene.area = 1.16e10;
+    core::Project sparse = d.state.doc.project();
+    sparse.layers.front().scatter.density = 3.45e-6f;
+    editor::apply(d.state, editor::EditProject{.after = sparse});
+    // Presses on the slider's track left of the density box and drags right.
+    const auto dragTrack = [&] {
+        std::optional<ui::Vec2> label, box;
+        const ui::Output& out = d.frame();
+        for (const ui::ClippedShape& shape : out.shapes)
+            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape);
+                t && t->text == "density /m²")
+                label = t->pos;
+        ASSERT_TRUE(label.has_value());
+        for (const ui::ClippedShape& shape : out.shapes)
+            if (const auto* t = std::get_if<ui::TextShape>(&shape.shape);
+                t && t->pos.x < label->x && std::abs(t->pos.y - label->y) < 4.0f)
+                box = t->pos;
+        ASSERT_TRUE(box.has_value()) << "no density box";
+        d.input.pointerPos = *box + ui::Vec2(-60.0f, 6.0f);
+        d.frame();
+        d.input.buttonDown[0] = true;
+        d.frame();
+        for (int i = 0; i < 4; ++i) {
+            d.input.pointerPos.x += 5.0f;
+            d.frame();
+        }
+        d.input.buttonDown[0] = false;
+        d.frame();
+    };
+    EXPECT_TRUE(d.shownTexts().contains("0.00000345"));
+    dragTrack();
+    EXPECT_EQ(d.state.doc.project().layers.front().scatter.density, 3.45e-6f);
+    const std::string& said = d.state.transient.message;
+    EXPECT_TRUE(said.starts_with("density not changed: ")) << said;
+    EXPECT_NE(said.find("a scene holds at most 2e+07"), std::string::npos) << said;
+    EXPECT_EQ(d.state.transient.warningMessage, said) << "said in orange";
+    // The other layers count: a second layer of the scene's whole budget leaves this one none.
+    d.scene.area = 4.0;
+    core::Project full = d.state.doc.project();
+    full.layers.push_back(full.layers.front());
+    full.layers.back().name = "full";
+    full.layers.back().scatter.density = float(core::MAX_SCENE_BLADES / 4.0);
+    editor::apply(d.state, editor::EditProject{.after = full});
+    d.state.transient.message.clear();
+    dragTrack();
+    EXPECT_EQ(d.state.doc.project().layers.front().scatter.density, 3.45e-6f);
+    EXPECT_TRUE(said.starts_with("density not changed: ")) << said;
+    // On the project's own 2 m plane alone the same drag is taken.
+    full.layers.pop_back();
+    editor::apply(d.state, editor::EditProject{.after = full});
+    d.state.transient.message.clear();
+    dragTrack();
+    EXPECT_GT(d.state.doc.project().layers.front().scatter.density, 1.0f);
+    EXPECT_TRUE(said.empty()) << said;
+}
+
 // Every text of the side panel, with every section and sub-section open and the brush's settings
 // showing, lies within the panel at its default width: a row wider than the panel cut its last
 // words off ("density /m²" read "density /m", the budget's unit was lost).

@@ -23,5 +23,21 @@ TEST(NumberText, DropsTheDecimalsBeyondSevenSignificantDigits) {
     EXPECT_EQ(shownDecimals(9999.5, 6), 3);
 }
 
+// A logarithmic slider's value below 1 keeps three significant digits: a 60 km mesh's
+// 3.45e-6 blades /m² read "0" on the density slider of whole blades.
+TEST(NumberText, SmallValuesKeepTheirSignificantDigits) {
+    EXPECT_EQ(numberText(3.45e-6, significantDecimals(3.45e-6, 0)), "0.00000345");
+    EXPECT_EQ(numberText(-0.0123456, significantDecimals(-0.0123456, 2)), "-0.0123");
+    EXPECT_EQ(numberText(0.5, significantDecimals(0.5, 0)), "0.500");
+    // Never fewer decimals than asked, and values of 1 and more as before.
+    EXPECT_EQ(numberText(0.25, significantDecimals(0.25, 4)), "0.2500");
+    EXPECT_EQ(numberText(144.0, significantDecimals(144.0, 0)), "144");
+    EXPECT_EQ(numberText(1000000.0, significantDecimals(1000000.0, 2)), "1000000");
+    EXPECT_EQ(numberText(0.0, significantDecimals(0.0, 0)), "0");
+    // Below 1e-10 a value reads 0, not 40 zeros.
+    EXPECT_EQ(significantDecimals(1e-30, 0), MAX_SIGNIFICANT_DECIMALS);
+    EXPECT_EQ(significantDecimals(1e-30, 12), 12);
+}
+
 }  // namespace
 }  // namespace grass::ui
