@@ -655,6 +655,14 @@ Result<Scene> regrowOnSameSurface(const LoadedProject& loaded, const Scene& prev
     return scene;
 }
 
+float physicsScaleFor(const BladeRanges& blade) {
+    const BladeRanges reference;
+    const float height = 0.5f * (blade.heightMin + blade.heightMax);
+    const float referenceHeight = 0.5f * (reference.heightMin + reference.heightMax);
+    const float scale = height / referenceHeight;
+    return std::isfinite(scale) && scale > 0.0f ? scale : 1.0f;
+}
+
 Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, const SurfaceMesh& mesh,
                                      std::size_t targetBlades) {
     const double area = surfaceArea(mesh);
@@ -681,6 +689,9 @@ Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, cons
     layer.scatter.blade.heightMax = 1.3f * height;
     layer.scatter.blade.widthMin = 0.03f * height;
     layer.scatter.blade.widthMax = 0.05f * height;
+    // Gravity follows them (physicsScaleFor): at 9.81 a 1 m box's 8 cm blades lay flat within
+    // seconds of play, and a 60 km sphere's 3 km blades stood rigid.
+    project.physics.gravity.w *= physicsScaleFor(layer.scatter.blade);
     // Billboards follow the field's size too: the default density per m² on a large mesh (a
     // model in millimetres) asked for millions of them, refused in terms of a setting the user
     // of --mesh never gave. One billboard per 16 blades at most.

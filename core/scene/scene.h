@@ -245,8 +245,16 @@ bool sameSurface(const LoadedProject& built, const LoadedProject& next);
 Result<Scene> regrowOnSameSurface(const LoadedProject& project, const Scene& previous,
                                   std::stop_token stop = {}, const BuildProgress& progress = {});
 
+// How much a force must be scaled for blades of `blade`'s size to bend as the default blades
+// (BladeRanges{}) do under it: their mean height over the default's. The physics is a
+// displacement-rate model (SPEC §3, core/physics/physics.h): a force F holds a blade of
+// stiffness k about F/k metres off its rest tip whatever the blade's height, so the same
+// gravity lays short blades flat and leaves tall ones rigid.
+float physicsScaleFor(const BladeRanges& blade);
+
 // A default project growing grass on a loaded glTF file: density scaled so the field has about
-// `targetBlades` blades whatever the file's units, blade size relative to the mesh, and a
+// `targetBlades` blades whatever the file's units, blade size relative to the mesh, gravity
+// scaled with the blades (physicsScaleFor) so they droop as the default field's do, and a
 // camera framing its bounds (issue 3: `grass render --mesh`). Null when the mesh has no area.
 Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, const SurfaceMesh& mesh,
                                      std::size_t targetBlades);

@@ -1909,6 +1909,38 @@ TEST(EditorPanels, EveryTextOfTheSidePanelIsReadWholeAtItsDefaultWidth) {
     }
 }
 
+// An added wind bends the field's blades visibly, whatever their size: its strength follows the
+// blades (core::physicsScaleFor) and its core its reach. At the default 1 m/s it held the
+// meadow's blades 2 cm off their rest tips, and a 60 km sphere's 3 km blades not at all.
+TEST(EditorPanels, AnAddedWindBendsBladesOfAnySize) {
+    const ScratchFolder folder("editor-wind-scale");
+    EditorDriver d(folder.path());
+    d.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 4000.0f}};
+    const std::vector<core::WindDesc>& wind = d.state.doc.loaded.project.wind;
+    const auto addWind = [&] {
+        d.click("Wind (" + std::to_string(wind.size()) + ")");
+        d.click("add wind");
+        editor::recordProjectEdit(d.state, false);
+        ASSERT_FALSE(wind.empty());
+    };
+    addWind();
+    ASSERT_EQ(d.state.doc.project().layers.front().scatter.blade, core::BladeRanges{});
+    EXPECT_FLOAT_EQ(wind.back().source.strength, 20.0f) << "the meadow's breeze on default blades";
+    EXPECT_FLOAT_EQ(wind.back().source.coreRadiusM, 0.1f * wind.back().source.radiusM);
+    // Blades ten times as tall (a mesh's field in kilometres is a thousand times): ten times the
+    // strength. Two layers: their mean.
+    core::Project tall = d.state.doc.project();
+    tall.layers.front().scatter.blade.heightMin = 2.5f;
+    tall.layers.front().scatter.blade.heightMax = 5.5f;
+    tall.layers.push_back(tall.layers.front());
+    tall.layers.back().name = "short";
+    tall.layers.back().scatter.blade = core::BladeRanges{};
+    editor::apply(d.state, editor::EditProject{.after = tall});
+    d.click("Wind (1)");  // closed again: addWind opens it
+    addWind();
+    EXPECT_FLOAT_EQ(wind.back().source.strength, 20.0f * 0.5f * (10.0f + 1.0f));
+}
+
 // Undoing back to what was saved leaves nothing unsaved: the title's * goes and quitting asks
 // nothing (before, any edit kept the project unsaved until the next save, its undo too).
 TEST(EditorPanels, UndoingBackToTheSavedProjectLeavesNothingUnsaved) {
