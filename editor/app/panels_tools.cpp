@@ -2,6 +2,7 @@
 // colliders, keying their motion) and the timeline (play, pause, step, loop, speed, scrub).
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -53,10 +54,17 @@ void brushSettings(ui::Ui& ui, EditorState& s) {
             .onHoverText("The brush moves the map's value toward the set value; "
                          "Ctrl paints toward 1 minus it");
     });
-    if (ui::sliderWithEntry(ui, "radius  [ ]", b.radiusM, 0.01f, 100.0f,
+    // The radius the ring shows: before the user chooses one, the scene's default (the panel
+    // read 1.00 m while the ring on a 1 m box had a radius of 9 cm, and [ started from 1 m).
+    sizeBrushToScene(s);
+    const BrushRadiusRange radii = brushRadiusRange(s);
+    char radiusTip[128];
+    std::snprintf(radiusTip, sizeof radiusTip,
+                  "Brush radius in metres (%g to %g on this scene); [ and ] shrink and grow it",
+                  double(radii.min), double(radii.max));
+    if (ui::sliderWithEntry(ui, "radius  [ ]", b.radiusM, radii.min, radii.max,
                             {.logarithmic = true, .decimals = 2})
-            .onHoverText(ui::withTypingHint(
-                "Brush radius in metres (0.01 to 100); [ and ] shrink and grow it"))
+            .onHoverText(ui::withTypingHint(radiusTip))
             .changed())
         s.view.paint.radiusChosen = true;
     ui::sliderWithEntry(ui, "strength", b.strength, 0.0f, 1.0f, {.decimals = 2})

@@ -89,10 +89,8 @@ bool runPaint(EditorState& s, const core::OrbitCamera& camera, const ViewportPoi
     if (!stroking) {
         if (s.view.paint.layer >= s.scene->layers.size())
             return true;
-        if (!s.view.paint.radiusChosen) {
-            s.view.paint.brush.radiusM = DEFAULT_RADIUS_SHARE * glm::length(s.scene->bounds.size());
-            s.view.paint.radiusChosen = true;
-        }
+        sizeBrushToScene(s);
+        s.view.paint.radiusChosen = true;
         const core::GrassLayer& layer = s.doc.loaded.project.layers[s.view.paint.layer];
         painter.begin(s.view.paint.layer, s.view.paint.map, layer.mapResolution,
                       effectiveBrush(s.view.paint.brush, p.ctrl));
@@ -417,16 +415,39 @@ static void applyToolChoiceKeys(EditorState& state, std::string_view typed) {
     }
 }
 
+BrushRadiusRange brushRadiusRange(const EditorState& state) {
+    BrushRadiusRange range;
+    const float diagonal = state.scene ? glm::length(state.scene->bounds.size()) : 0.0f;
+    if (std::isfinite(diagonal) && diagonal > 0.0f) {
+        range.min = std::min(range.min, 1e-4f * diagonal);
+        range.max = std::max(range.max, diagonal);
+    }
+    return range;
+}
+
+float brushRadius(const EditorState& state) {
+    const BrushRadiusRange range = brushRadiusRange(state);
+    const float radius = state.view.paint.radiusChosen || !state.scene
+                             ? state.view.paint.brush.radiusM
+                             : DEFAULT_RADIUS_SHARE * glm::length(state.scene->bounds.size());
+    return std::clamp(radius, range.min, range.max);
+}
+
+void sizeBrushToScene(EditorState& state) {
+    state.view.paint.brush.radiusM = brushRadius(state);
+}
+
 void applyToolKeys(EditorState& state, std::string_view typed) {
     applyToolChoiceKeys(state, typed);
     core::BrushSettings& brush = state.view.paint.brush;
+    const BrushRadiusRange range = brushRadiusRange(state);
     for (const char c : typed) {
-        if (c == '[')
-            brush.radiusM = std::max(brush.radiusM / 1.25f, 1e-4f);
-        else if (c == ']')
-            brush.radiusM = std::min(brush.radiusM * 1.25f, 1e4f);
-        else
+        if (c != '[' && c != ']')
             continue;
+        // From the radius the ring shows (before a first choice, the scene's default).
+        sizeBrushToScene(state);
+        brush.radiusM = std::clamp(c == '[' ? brush.radiusM / 1.25f : brush.radiusM * 1.25f,
+                                   range.min, range.max);
         state.view.paint.radiusChosen = true;
     }
 }
@@ -463,9 +484,7 @@ void drawViewportOverlay(ui::Context& ctx, ui::Rect view, float ppp, const Edito
     };
     if (s.view.tool == ViewportTool::Paint && s.tools && (pointer.inside || s.tools->painter.active())) {
         if (const auto hit = pickSurface(*s.tools, camera, pointer)) {
-            const float radius = s.view.paint.radiusChosen
-                                     ? s.view.paint.brush.radiusM
-                                     : DEFAULT_RADIUS_SHARE * glm::length(s.scene->bounds.size());
+            const float radius = brushRadius(s);
             std::vector<ui::Vec2> points;
             for (const glm::vec3 p : core::surfacePointsOnRing(s.tools->bvh(), hit->posWorld,
                                                                hit->normal, radius, RING_POINTS))

@@ -90,6 +90,20 @@ std::optional<core::RayHit> pickSurface(const SceneTools& tools, const core::Orb
 bool runViewportTool(EditorState& state, const core::OrbitCamera& camera,
                      const ViewportPointer& pointer);
 
+// The brush radius's range: 0.01 to 100 m, widened to a ten-thousandth and the whole of the
+// scene's diagonal (a part modelled in millimetres, a 60 km sphere).
+struct BrushRadiusRange {
+    float min = 0.01f;
+    float max = 100.0f;
+};
+BrushRadiusRange brushRadiusRange(const EditorState& state);
+// The radius the brush paints with: the one chosen, else (until the user chooses one) a
+// twentieth of the scene's diagonal, within the range.
+float brushRadius(const EditorState& state);
+// Sets the brush's radius to brushRadius, so that the panel shows, and [ and ] start from, the
+// radius the ring shows.
+void sizeBrushToScene(EditorState& state);
+
 // Keys of the tools when the UI does not want the keyboard: '[' and ']' (typed text) shrink and
 // grow the brush, 'w' 'e' 'r' pick the gizmo's translate / rotate / scale, 'b' the brush,
 // 'g' the gizmo, 'c' the camera.

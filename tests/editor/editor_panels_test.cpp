@@ -37,6 +37,7 @@
 #include "support/test_fonts.h"
 #include "support/test_paths.h"
 #include "ui/font.h"
+#include "ui/number_text.h"
 #include "util/atomic_file.h"
 #include "util/version.h"
 
@@ -1907,6 +1908,27 @@ TEST(EditorPanels, EveryTextOfTheSidePanelIsReadWholeAtItsDefaultWidth) {
         for (const std::string& text : cut)
             ADD_FAILURE() << tool << ": " << text;
     }
+}
+
+// The brush's radius in the panel is the one its ring shows: before the user chooses one, the
+// scene's default (a twentieth of its diagonal), where the panel read the stored 1.00 m; and
+// the range follows the scene (a 60 km sphere's default, 5 km, was beyond the slider's 100 m).
+TEST(EditorPanels, TheBrushRadiusShownIsTheOneThatPaints) {
+    const ScratchFolder folder("editor-brush-radius");
+    EditorDriver d(folder.path());
+    d.input.screenRect = {{0.0f, 0.0f}, {1280.0f, 4000.0f}};
+    d.click("brush (b)");
+    const float diagonal = glm::length(d.scene.bounds.size());
+    const double radius = 0.05 * double(diagonal);
+    const std::string shown = ui::numberText(radius, ui::significantDecimals(radius, 2));
+    ASSERT_NE(shown, "1.00");
+    EXPECT_TRUE(d.shownTexts().contains(shown)) << shown;
+    EXPECT_FLOAT_EQ(d.state.view.paint.brush.radiusM, editor::brushRadius(d.state));
+    EXPECT_FALSE(d.state.view.paint.radiusChosen) << "shown, not chosen: another scene resizes it";
+    // A 60 km scene: its default radius, 5.2 km, within the slider's range.
+    d.scene.bounds = {glm::vec3(-30000.0f), glm::vec3(30000.0f)};
+    EXPECT_TRUE(d.shownTexts().contains("5196.15"));
+    EXPECT_GE(editor::brushRadiusRange(d.state).max, 5196.15f);
 }
 
 // An added wind bends the field's blades visibly, whatever their size: its strength follows the

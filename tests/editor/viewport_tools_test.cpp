@@ -168,11 +168,25 @@ TEST(ViewportTools, APressOffTheMeshPaintsNothing) {
 
 TEST(ViewportTools, BracketKeysResizeTheBrush) {
     ToolDriver d;
+    // Before a radius is chosen the keys start from the one the ring shows, a twentieth of the
+    // scene's diagonal (they started from the stored 1 m, which the ring did not show).
+    const float sceneDefault = 0.05f * glm::length(d.state.scene->bounds.size());
+    ASSERT_NE(sceneDefault, 1.0f);
+    EXPECT_FLOAT_EQ(editor::brushRadius(d.state), sceneDefault);
+    editor::applyToolKeys(d.state, "]");
+    EXPECT_FLOAT_EQ(d.state.view.paint.brush.radiusM, 1.25f * sceneDefault);
+    EXPECT_TRUE(d.state.view.paint.radiusChosen);
     d.state.view.paint.brush.radiusM = 1.0f;
     editor::applyToolKeys(d.state, "]]");
     EXPECT_FLOAT_EQ(d.state.view.paint.brush.radiusM, 1.5625f);
     editor::applyToolKeys(d.state, "[");
     EXPECT_FLOAT_EQ(d.state.view.paint.brush.radiusM, 1.25f);
+    // Within the scene's range, whatever the keys.
+    const editor::BrushRadiusRange range = editor::brushRadiusRange(d.state);
+    editor::applyToolKeys(d.state, std::string(80, '['));
+    EXPECT_FLOAT_EQ(d.state.view.paint.brush.radiusM, range.min);
+    editor::applyToolKeys(d.state, std::string(80, ']'));
+    EXPECT_FLOAT_EQ(d.state.view.paint.brush.radiusM, range.max);
     editor::applyToolKeys(d.state, "b");
     EXPECT_EQ(d.state.view.tool, editor::ViewportTool::Paint);
     editor::applyToolKeys(d.state, "gr");
