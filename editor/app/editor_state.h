@@ -171,6 +171,9 @@ struct Transient {
     // anew, for a user action that may repeat its text (a second Ctrl+S, another undo).
     double messageLoggedAtS = -1e9;
     bool messagesWindow = false;
+    // The room the status bar's message had when it was pressed (0: not pressed), which it
+    // keeps until the release (panels.cpp, statusBar).
+    float messagePressedWidth = 0.0f;
     // A failed save stays on screen: routine messages (autosaved) do not replace it until a
     // save succeeds.
     bool messageIsSaveError = false;

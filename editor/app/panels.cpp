@@ -257,17 +257,26 @@ void statusBar(ui::Context& ctx, ui::Rect rect, EditorState& s) {
         const std::string text =
             fitStatusFigures(figures, figureRoom - width(movingNote + behindNote), width);
         const float figuresWidth = width(movingNote + behindNote + text);
-        const float room = std::max(messageFirst, rect.width() - margin - figuresWidth);
+        float room = std::max(messageFirst, rect.width() - margin - figuresWidth);
         constexpr float LEAST_MESSAGE_WIDTH = 80.0f;
-        if (!s.transient.message.empty() && room >= LEAST_MESSAGE_WIDTH) {
+        // While the message is pressed it keeps the width it was pressed at: the press itself
+        // lowers the viewport's quality, whose "moving" note then took the message's room (a
+        // field at rest, a narrow bar), and the release found no message to end the click on.
+        const ui::Id messageId = row.makeId("message");
+        const bool messagePressed =
+            ctx.activeId() == messageId && s.transient.messagePressedWidth > 0.0f;
+        if (messagePressed)
+            room = std::max(room, s.transient.messagePressedWidth);
+        if (!s.transient.message.empty() && (room >= LEAST_MESSAGE_WIDTH || messagePressed)) {
             const std::string shownText =
                 ui::elideText(ctx.fonts(), style.textSizePt, s.transient.message, room);
             const bool warning =
                 s.transient.messageIsSaveError || s.transient.message == s.transient.warningMessage;
             const ui::Response shown = row.coloredLabel(
                 shownText + "   ", warning ? ui::Color32::rgb(255, 150, 60) : style.textWeak);
-            ui::Response click = row.interact(shown.rect(), row.makeId("message"),
-                                              ui::Sense::clickOnly());
+            ui::Response click = row.interact(shown.rect(), messageId, ui::Sense::clickOnly());
+            s.transient.messagePressedWidth =
+                ctx.activeId() == messageId && ctx.input().buttonDown[0] ? room : 0.0f;
             if (click.onHoverText("Click to see every message in full").clicked())
                 s.transient.messagesWindow = true;
         }

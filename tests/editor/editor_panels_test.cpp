@@ -1910,6 +1910,49 @@ TEST(EditorPanels, EveryTextOfTheSidePanelIsReadWholeAtItsDefaultWidth) {
     }
 }
 
+// A click on the status bar's message opens the Messages window even when the press lowers the
+// viewport's quality: the "moving" note that then comes took the message's room on a field at
+// rest in a narrow bar, and the release found no message to end the click on (seen in the
+// window: clicks on "cannot grow the field: …" did nothing until the field moved anyway).
+TEST(EditorPanels, AClickOnTheMessageOpensTheMessagesWhateverThePressChanges) {
+    const ScratchFolder folder("editor-message-click");
+    EditorDriver d(folder.path());
+    ui::Input& input = d.input;
+    editor::Transient& t = d.state.transient;
+    t.message = "cannot grow the field: the limit is 20 million blades per scene";
+    t.status.blades = 40000;
+    t.status.physicsDevice = "cpu";
+    t.status.physicsMs = 5.0;
+    t.status.atRest = true;
+    t.status.playing = true;
+    d.frame();
+    input.timeS += 10.0;  // no longer a fresh message, which the bar makes room for
+    const std::string note = "MSAA off, 1/2 blades";
+    const auto messageAt = [&](float width, const std::string& reduced) {
+        input.screenRect = {{0.0f, 0.0f}, {width, 720.0f}};
+        t.status.reduced = reduced;
+        return textStarting(d.frame(), "cannot grow");
+    };
+    // The narrowest bar that shows the message at rest: with the note it has no room.
+    float width = 600.0f;
+    while (width < 1600.0f && !messageAt(width, ""))
+        width += 2.0f;
+    const std::optional<ui::TextShape> message = messageAt(width, "");
+    ASSERT_TRUE(message.has_value()) << "no width shows the message";
+    ASSERT_FALSE(messageAt(width, note).has_value()) << width << " points: the note leaves room";
+    messageAt(width, "");
+    input.pointerPos = message->pos + ui::Vec2(3.0f, 6.0f);
+    d.frame();
+    input.buttonDown[0] = true;
+    d.frame();
+    t.status.reduced = note;  // the press lowers the quality
+    d.frame();
+    input.buttonDown[0] = false;
+    d.frame();
+    EXPECT_TRUE(t.messagesWindow) << "at " << width << " points";
+    EXPECT_EQ(t.messagePressedWidth, 0.0f) << "released";
+}
+
 // The brush's radius in the panel is the one its ring shows: before the user chooses one, the
 // scene's default (a twentieth of its diagonal), where the panel read the stored 1.00 m; and
 // the range follows the scene (a 60 km sphere's default, 5 km, was beyond the slider's 100 m).
