@@ -17,10 +17,9 @@ using settings::Kind;
 
 // Blades per clump: beyond this a clump is a carpet, and a typo (12000 for 12) would stall.
 constexpr int MAX_BLADES_PER_CLUMP = 10000;
-// Blades up to 100 m tall and 10 m wide (ours are 0.15-0.9 m): far beyond, the float positions
-// of a blade's control points lose the bits its length is kept to (1e30 broke it by 100 %).
-constexpr NumberRule BLADE_HEIGHT_RULE{0.0, 100.0, true, false};
-constexpr NumberRule BLADE_WIDTH_RULE{0.0, 10.0, true, false};
+// project.h says why blades are bounded.
+constexpr NumberRule BLADE_HEIGHT_RULE{0.0, MAX_BLADE_HEIGHT_M, true, false};
+constexpr NumberRule BLADE_WIDTH_RULE{0.0, MAX_BLADE_WIDTH_M, true, false};
 // τ = 1 would divide by zero in the triangle-tip shape (1 − τ).
 constexpr NumberRule TIP_START_RULE{0.0, 1.0, false, true};
 

@@ -127,17 +127,24 @@ Result<LoadedProject> loadProject(const fs::path& path) {
     return loaded;
 }
 
-Result<void> saveProject(const Project& project, const fs::path& file) {
+Result<void> checkProjectSaves(const Project& project, const fs::path& file) {
     std::error_code ec;
     if (fs::is_directory(file, ec))
         return makeError(file.string(), std::string("is a folder; save to ") +
                                             (file / PROJECT_FILE_NAME).string());
     if (file.extension() != ".json")
         return makeError(file.string(), "a project file name must end in .json");
-    const std::string text = serializeProject(project);
     // Never write a file this build would refuse to load.
-    if (auto check = parseProject(text, file.string()); !check)
-        return makeError(check.error().path, "not saved: " + check.error().message);
+    if (auto check = parseProject(serializeProject(project), file.string()); !check)
+        return makeError(check.error().path, "would not load again: " + check.error().message);
+    return {};
+}
+
+Result<void> saveProject(const Project& project, const fs::path& file) {
+    if (auto saves = checkProjectSaves(project, file); !saves)
+        return saves;
+    const std::string text = serializeProject(project);
+    std::error_code ec;
     if (file.has_parent_path()) {
         fs::create_directories(file.parent_path(), ec);
         if (ec)

@@ -36,6 +36,13 @@ inline constexpr std::size_t MAX_LAYERS = 256;
 inline constexpr std::size_t MAX_CAMERAS = 256;
 inline constexpr std::size_t MAX_WIND_SOURCES = 256;
 inline constexpr std::size_t MAX_COLLIDERS = 256;
+// Blades up to 100 m tall and 10 m wide (ours are 0.15-0.9 m): far beyond, the float positions
+// of a blade's control points lose the bits its length is kept to (1e30 broke it by 100 %).
+inline constexpr float MAX_BLADE_HEIGHT_M = 100.0f;
+inline constexpr float MAX_BLADE_WIDTH_M = 10.0f;
+// Camera distances (the LOD and thinning distances) beyond 100 km are typos, and push the LOD
+// bands out of float range.
+inline constexpr float MAX_CAMERA_DISTANCE_M = 1e5f;
 
 // Where the surface comes from: a procedural shape by name, or a glTF file.
 struct MeshSource {
@@ -330,6 +337,10 @@ Result<Project> parseProject(std::string_view jsonText, const std::string& sourc
 std::string serializeProject(const Project& project);
 // Atomic save to a .json file.
 Result<void> saveProject(const Project& project, const std::filesystem::path& file);
+// What saveProject refuses before it writes anything (a folder or a name without .json, a value
+// the loader would refuse): for a save that copies files first, so that a refused save leaves
+// no half-made project folder behind.
+Result<void> checkProjectSaves(const Project& project, const std::filesystem::path& file);
 
 // Every file the project names (mesh, maps, billboard texture, collider meshes), as written:
 // relative to the project folder, each once, in document order. What "Save As" to another

@@ -13,8 +13,8 @@ using json::Json;
 using settings::field;
 using settings::Kind;
 
-// Camera distances beyond 100 km are typos (and push the LOD bands out of float range).
-constexpr json::NumberRule DISTANCE_OR_OFF{0.0, 1e5};
+// project.h says why camera distances are bounded.
+constexpr json::NumberRule DISTANCE_OR_OFF{0.0, MAX_CAMERA_DISTANCE_M};
 constexpr int MAX_IMAGE_SIDE = 16384;
 // The cull shader's work-group is 32 blades; a patch is whole groups.
 constexpr std::uint32_t PATCH_GRANULE = 32;

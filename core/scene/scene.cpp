@@ -664,7 +664,7 @@ float physicsScaleFor(const BladeRanges& blade) {
 }
 
 Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, const SurfaceMesh& mesh,
-                                     std::size_t targetBlades) {
+                                     std::size_t targetBlades, std::vector<std::string>* notes) {
     const double area = surfaceArea(mesh);
     const Bounds bounds = meshBounds(mesh);
     if (!(area > 0.0))
@@ -684,9 +684,22 @@ Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, cons
     // than a small fraction of the object, so a bunny gets fur-like grass and a terrain a lawn.
     const float spacing = static_cast<float>(std::sqrt(area / static_cast<double>(targetBlades)));
     const float diagonal = glm::length(bounds.size());
-    const float height = std::min(6.0f * spacing, 0.06f * diagonal);
-    layer.scatter.blade.heightMin = 0.7f * height;
-    layer.scatter.blade.heightMax = 1.3f * height;
+    float height = std::min(6.0f * spacing, 0.06f * diagonal);
+    // Within what project.json takes, so that the project saves: a 105 km mesh asked for blades
+    // of 2.3 to 4.2 km, which the editor then could not save. Such a mesh is most often in
+    // other units than metres.
+    constexpr float HEIGHT_SPREAD = 1.3f;  // the tallest blade over the mean
+    if (const float tallest = MAX_BLADE_HEIGHT_M / HEIGHT_SPREAD; height > tallest) {
+        if (notes)
+            notes->push_back("blades are at most " + number(MAX_BLADE_HEIGHT_M) +
+                             " m tall, on this mesh of " + number(diagonal) +
+                             " m across (they would be " + number(HEIGHT_SPREAD * height) +
+                             " m): if its unit is not the metre, "
+                             "say which it is (--unit, or \"unit\" in project.json's \"mesh\")");
+        height = tallest;
+    }
+    layer.scatter.blade.heightMin = (2.0f - HEIGHT_SPREAD) * height;
+    layer.scatter.blade.heightMax = HEIGHT_SPREAD * height;
     layer.scatter.blade.widthMin = 0.03f * height;
     layer.scatter.blade.widthMax = 0.05f * height;
     // Gravity follows them (physicsScaleFor): at 9.81 a 1 m box's 8 cm blades lay flat within
@@ -697,8 +710,13 @@ Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, cons
     // of --mesh never gave. One billboard per 16 blades at most.
     // Distances follow it as well: at the default 100 m a kilometre-wide terrain seen whole
     // would thin to nothing, and its blades would all draw at the lowest detail.
-    project.render.thinningDistanceM = std::max(project.render.thinningDistanceM, 4.0f * diagonal);
-    project.render.lodDistanceM = std::max(project.render.lodDistanceM, 0.5f * diagonal);
+    // Both within what project.json takes (100 km).
+    project.render.thinningDistanceM =
+        std::clamp(4.0f * diagonal, project.render.thinningDistanceM,
+                   std::max(project.render.thinningDistanceM, MAX_CAMERA_DISTANCE_M));
+    project.render.lodDistanceM =
+        std::clamp(0.5f * diagonal, project.render.lodDistanceM,
+                   std::max(project.render.lodDistanceM, MAX_CAMERA_DISTANCE_M));
     StarBillboardParams& billboards = project.billboards.placement;
     billboards.density = std::min(
         billboards.density, static_cast<float>(static_cast<double>(targetBlades) / 16.0 / area));

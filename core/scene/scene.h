@@ -255,8 +255,11 @@ float physicsScaleFor(const BladeRanges& blade);
 // A default project growing grass on a loaded glTF file: density scaled so the field has about
 // `targetBlades` blades whatever the file's units, blade size relative to the mesh, gravity
 // scaled with the blades (physicsScaleFor) so they droop as the default field's do, and a
-// camera framing its bounds (issue 3: `grass render --mesh`). Null when the mesh has no area.
+// camera framing its bounds (issue 3: `grass render --mesh`). Every value within what
+// project.json takes (blades at most MAX_BLADE_HEIGHT_M tall: said in `notes`, when given, as
+// the mesh's notes are, without the file's name). Null when the mesh has no area.
 Result<LoadedProject> projectForMesh(const std::filesystem::path& meshFile, const SurfaceMesh& mesh,
-                                     std::size_t targetBlades);
+                                     std::size_t targetBlades,
+                                     std::vector<std::string>* notes = nullptr);
 
 }  // namespace grass::core

@@ -227,7 +227,8 @@ Result<core::LoadedProject> newProjectFromMesh(const fs::path& meshFile, std::si
         core::loadGltf(meshFile, core::GltfPlacement::GroundNearOrigin, 1.0, glm::dvec3(0.0), stop);
     if (!imported)
         return imported.error();
-    auto loaded = core::projectForMesh(meshFile, imported->mesh, targetBlades);
+    // Its notes go with the mesh's, said once the field has grown.
+    auto loaded = core::projectForMesh(meshFile, imported->mesh, targetBlades, &imported->notes);
     if (!loaded)
         return loaded.error();
     loaded->file.clear();  // not saved yet: Save asks where

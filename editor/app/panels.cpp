@@ -384,7 +384,6 @@ bool saveTo(EditorState& s, const std::string& file, bool replaceChangedFile) {
             return false;
         }
     }
-    fs::create_directories(folder, ec);
     // A refused save says what failed and the way out (a read-only folder, a full disk).
     const auto refuse = [&](const Error& error) {
         s.transient.message =
@@ -392,6 +391,12 @@ bool saveTo(EditorState& s, const std::string& file, bool replaceChangedFile) {
         s.transient.messageIsSaveError = true;
         return false;
     };
+    // A project the file would not hold is refused before its folder is made and its files
+    // copied there (a Save As of a field the format refused left the mesh and its UV atlas in
+    // a new folder without a project.json).
+    if (auto saves = core::checkProjectSaves(s.doc.loaded.project, path); !saves)
+        return refuse(saves.error());
+    fs::create_directories(folder, ec);
     // Asset paths are relative to the project's folder: saved elsewhere, the project must take
     // its files along (mesh, maps, textures), or it would name files that are not there.
     // Files already at the destination are kept; the copy happens before project.json is

@@ -77,8 +77,8 @@ Result<core::LoadedProject> loadMeshInput(const RenderArgs& args, core::Scene* s
     if (!imported)
         return imported.error();
     core::applyMeshFrame(imported->mesh, metresPerUnit, up);
-    auto loaded =
-        core::projectForMesh(args.mesh, imported->mesh, static_cast<std::size_t>(args.blades));
+    auto loaded = core::projectForMesh(args.mesh, imported->mesh,
+                                       static_cast<std::size_t>(args.blades), &imported->notes);
     if (!loaded)
         return loaded.error();
     loaded->project.mesh.metresPerUnit = metresPerUnit;

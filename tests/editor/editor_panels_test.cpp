@@ -1910,6 +1910,25 @@ TEST(EditorPanels, EveryTextOfTheSidePanelIsReadWholeAtItsDefaultWidth) {
     }
 }
 
+// A save the project file cannot hold is refused before anything is written: a Save As of a
+// field whose blades project.json refuses left the mesh and its files in a new folder with no
+// project.json.
+TEST(EditorPanels, ASaveRefusedForAValueLeavesNoFolderBehind) {
+    const ScratchFolder folder("editor-save-refused"), elsewhere("editor-save-refused-to");
+    EditorDriver d(folder.path());
+    core::Project tall = d.state.doc.project();
+    tall.layers.front().scatter.blade.heightMax = 2.0f * core::MAX_BLADE_HEIGHT_M;
+    editor::apply(d.state, editor::EditProject{.after = tall});
+    const fs::path to = elsewhere.path() / "copy";
+    EXPECT_FALSE(editor::saveTo(d.state, (to / "project.json").string()));
+    EXPECT_FALSE(fs::exists(to)) << "no folder made, no map copied";
+    const std::string& said = d.state.transient.message;
+    EXPECT_TRUE(said.starts_with("not saved: ")) << said;
+    EXPECT_NE(said.find("/layers/0/blade/height/1"), std::string::npos) << said;
+    EXPECT_EQ(said.find("not saved", 1), std::string::npos) << "said once: " << said;
+    EXPECT_TRUE(d.state.doc.dirty);
+}
+
 // A click on the status bar's message opens the Messages window even when the press lowers the
 // viewport's quality: the "moving" note that then comes took the message's room on a field at
 // rest in a narrow bar, and the release found no message to end the click on (seen in the
