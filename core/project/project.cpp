@@ -127,7 +127,10 @@ Result<LoadedProject> loadProject(const fs::path& path) {
     return loaded;
 }
 
-Result<void> checkProjectSaves(const Project& project, const fs::path& file) {
+namespace {
+
+// checkProjectSaves on the project's text, serialized once for the check and the write.
+Result<void> checkTextSaves(const std::string& text, const fs::path& file) {
     std::error_code ec;
     if (fs::is_directory(file, ec))
         return makeError(file.string(), std::string("is a folder; save to ") +
@@ -135,15 +138,21 @@ Result<void> checkProjectSaves(const Project& project, const fs::path& file) {
     if (file.extension() != ".json")
         return makeError(file.string(), "a project file name must end in .json");
     // Never write a file this build would refuse to load.
-    if (auto check = parseProject(serializeProject(project), file.string()); !check)
+    if (auto check = parseProject(text, file.string()); !check)
         return makeError(check.error().path, "would not load again: " + check.error().message);
     return {};
 }
 
+}  // namespace
+
+Result<void> checkProjectSaves(const Project& project, const fs::path& file) {
+    return checkTextSaves(serializeProject(project), file);
+}
+
 Result<void> saveProject(const Project& project, const fs::path& file) {
-    if (auto saves = checkProjectSaves(project, file); !saves)
-        return saves;
     const std::string text = serializeProject(project);
+    if (auto saves = checkTextSaves(text, file); !saves)
+        return saves;
     std::error_code ec;
     if (file.has_parent_path()) {
         fs::create_directories(file.parent_path(), ec);
